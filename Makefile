@@ -1,0 +1,318 @@
+# cvmesh - build, test, benchmark and install.
+#   make              library (static + shared) and the CLI into build/
+#   make demo         install missing packages, build, mesh a bundled geometry (.vtu + .svg)
+#   make check        install missing packages, build, run every test (see CHECK_STEPS below)
+#   make fuzz         run each libFuzzer target for FUZZ_LONG_TIME seconds (clang)
+#   make bench        benchmarks side by side with Triangle / scipy (tests/bench)
+#   make install PREFIX=/usr/local [DESTDIR=...]
+#   make amalgamation one-file build/amalgamation/cvmesh.c + cvmesh.h
+#   make clean
+# Variables: CC=gcc|clang, OPENMP=1|0, BUILD=build, SAN=1 (ASan+UBSan), TETGEN=0
+# (TetGen is for the future 3D work and is not linked yet), SHARED_DIR=../shared,
+# FUZZ_TIME=20 (seconds per fuzz target in make check), JOBS=<cores>.
+
+SHELL := /bin/bash
+
+VERSION_MAJOR := 0
+VERSION_MINOR := 1
+VERSION_PATCH := 0
+VERSION := $(VERSION_MAJOR).$(VERSION_MINOR).$(VERSION_PATCH)
+
+# GNU make's built-in default CC is "cc"; keep it unless the user chose one.
+CC ?= cc
+BUILD ?= build
+OPENMP ?= 1
+SAN ?= 0
+FUZZ ?= 0
+TETGEN ?= 0
+PREFIX ?= /usr/local
+SHARED_DIR ?= $(abspath ../shared)
+PYTHON ?= python3
+JOBS ?= $(shell nproc 2>/dev/null || echo 2)
+FUZZ_TIME ?= 20
+FUZZ_LONG_TIME ?= 600
+CLANG ?= clang
+
+WARN := -Wall -Wextra -Wpedantic -Werror
+OPT ?= -O2
+CFLAGS_BASE := -std=c99 $(OPT) -g $(WARN) -fvisibility=hidden -fPIC -Iinclude -Ilib \
+               -D_POSIX_C_SOURCE=200809L
+ifeq ($(OPENMP),1)
+  OMPFLAGS := -fopenmp
+  CFLAGS_BASE += -DCVM_OPENMP=1
+endif
+ifeq ($(SAN),1)
+  SANFLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
+endif
+ifeq ($(FUZZ),1)
+  SANFLAGS += -fsanitize=fuzzer-no-link
+endif
+ifneq ($(TETGEN),0)
+  $(error TETGEN=$(TETGEN): TetGen is for the future 3D work and is not linked yet; use TETGEN=0)
+endif
+ALL_CFLAGS := $(CFLAGS_BASE) $(OMPFLAGS) $(SANFLAGS) $(CFLAGS)
+LDLIBS_LIB := -lm $(OMPFLAGS)
+
+LIB_SRC := $(sort $(filter-out lib/cli/%,$(wildcard lib/*/*.c)))
+CLI_SRC := $(sort $(wildcard lib/cli/*.c))
+LIB_OBJ := $(LIB_SRC:%.c=$(BUILD)/obj/%.o)
+CLI_OBJ := $(CLI_SRC:%.c=$(BUILD)/obj/%.o)
+
+STATIC := $(BUILD)/lib/libcvmesh.a
+SONAME := libcvmesh.so.$(VERSION_MAJOR)
+SHARED := $(BUILD)/lib/libcvmesh.so.$(VERSION)
+CLI := $(BUILD)/bin/cvmesh
+
+TEST_SRC := $(sort $(wildcard tests/unit/*.c tests/unit/*/*.c))
+TEST_OBJ := $(TEST_SRC:%.c=$(BUILD)/obj/%.o)
+TEST_BIN := $(BUILD)/tests/unit_tests
+CHECK_CFLAGS = $(shell pkg-config --cflags check 2>/dev/null)
+CHECK_LIBS = $(shell pkg-config --libs check 2>/dev/null || echo -lcheck -lsubunit -lrt -lpthread)
+TEST_ENV = CVM_SHARED_DIR=$(SHARED_DIR) CVM_TEST_DATA=$(CURDIR)/tests/data
+
+# Fuzz targets: tests/fuzz/fuzz_<name>.c, seeds in tests/fuzz/corpus/<name>/.
+FUZZ_TARGETS := poly_read node_read cdt
+FUZZ_BINS := $(FUZZ_TARGETS:%=$(BUILD)/fuzz/fuzz_%)
+REPLAY_BINS := $(FUZZ_TARGETS:%=$(BUILD)/fuzz/replay_%)
+FUZZ_SUPPORT_OBJ := $(BUILD)/obj/tests/fuzz/mesh_oracle.o
+
+# Build steps of make check run with -j$(JOBS) unless make was given -j.
+PAR = $(if $(findstring -j,$(MAKEFLAGS))$(findstring j,$(firstword $(MAKEFLAGS))),,-j$(JOBS))
+
+STAGE := $(abspath $(BUILD))/stage
+EXAMPLES_C := $(sort $(wildcard examples/c/*.c))
+
+.PHONY: all lib cli tests deps demo check check-unit check-asan check-symbols check-cli \
+        check-examples check-python check-fortran check-clang check-noomp check-fuzz \
+        check-replay check-valgrind check-amalgamation fuzz fuzz-bins replay-bins bench \
+        install clean python fortran amalgamation
+
+all: lib cli
+
+lib: $(STATIC) $(SHARED)
+cli: $(CLI)
+tests: $(TEST_BIN)
+
+$(BUILD)/obj/%.o: %.c
+	@mkdir -p $(dir $@)
+	$(CC) $(ALL_CFLAGS) -MMD -MP -c $< -o $@
+
+$(STATIC): $(LIB_OBJ)
+	@mkdir -p $(dir $@)
+	rm -f $@
+	ar rcs $@ $^
+
+$(SHARED): $(LIB_OBJ)
+	@mkdir -p $(dir $@)
+	$(CC) -shared -Wl,-soname,$(SONAME) -Wl,--no-undefined $(SANFLAGS) -o $@ $^ $(LDLIBS_LIB)
+	ln -sf libcvmesh.so.$(VERSION) $(BUILD)/lib/$(SONAME)
+	ln -sf $(SONAME) $(BUILD)/lib/libcvmesh.so
+
+$(CLI): $(CLI_OBJ) $(STATIC)
+	@mkdir -p $(dir $@)
+	$(CC) $(SANFLAGS) -o $@ $(CLI_OBJ) $(STATIC) $(LDLIBS_LIB)
+
+$(BUILD)/obj/tests/%.o: tests/%.c
+	@mkdir -p $(dir $@)
+	$(CC) $(ALL_CFLAGS) $(CHECK_CFLAGS) -pthread -Itests/unit -MMD -MP -c $< -o $@
+
+$(TEST_BIN): $(TEST_OBJ) $(STATIC)
+	@mkdir -p $(dir $@)
+	$(CC) $(SANFLAGS) -pthread -o $@ $(TEST_OBJ) $(STATIC) $(CHECK_LIBS) $(LDLIBS_LIB)
+
+# ---- fuzzing ---------------------------------------------------------------
+# The oracle is shared with the unit tests but built without Check here.
+$(FUZZ_SUPPORT_OBJ): tests/unit/support/mesh_oracle.c
+	@mkdir -p $(dir $@)
+	$(CC) $(ALL_CFLAGS) -DCVMTEST_NO_CHECK -Itests/unit -MMD -MP -c $< -o $@
+
+# libFuzzer binaries (CC=clang FUZZ=1 SAN=1, see check-fuzz).
+$(BUILD)/fuzz/fuzz_%: $(BUILD)/obj/tests/fuzz/fuzz_%.o $(FUZZ_SUPPORT_OBJ) $(STATIC)
+	@mkdir -p $(dir $@)
+	$(CC) $(SANFLAGS) -fsanitize=fuzzer -o $@ $^ $(LDLIBS_LIB)
+
+# The same targets driven by tests/fuzz/regression_driver.c (any compiler).
+$(BUILD)/fuzz/replay_%: $(BUILD)/obj/tests/fuzz/fuzz_%.o $(BUILD)/obj/tests/fuzz/regression_driver.o \
+                        $(FUZZ_SUPPORT_OBJ) $(STATIC)
+	@mkdir -p $(dir $@)
+	$(CC) $(SANFLAGS) -o $@ $^ $(LDLIBS_LIB)
+
+fuzz-bins: $(FUZZ_BINS)
+replay-bins: $(REPLAY_BINS)
+
+# Seed corpus of a target: committed seeds, plus shared and test data for the readers.
+fuzz_seeds = tests/fuzz/corpus/$(1) \
+  $(if $(filter poly_read,$(1)),$(wildcard $(SHARED_DIR)/data/*.poly tests/data/*.poly)) \
+  $(if $(filter node_read,$(1)),$(wildcard tests/data/*.node))
+
+FUZZ_BUILD := $(BUILD)/fuzzer
+FUZZ_MAKE = $(MAKE) $(PAR) --no-print-directory BUILD=$(FUZZ_BUILD) CC=$(CLANG) SAN=1 FUZZ=1 OPENMP=0
+
+# run_fuzz(target, seconds): fresh work corpus seeded from the committed one;
+# the log goes to a file and is shown only on failure.
+define run_fuzz
+	@rm -rf $(FUZZ_BUILD)/corpus/$(1) && mkdir -p $(FUZZ_BUILD)/corpus/$(1) $(FUZZ_BUILD)/artifacts/$(1)
+	@cp -r $(call fuzz_seeds,$(1)) $(FUZZ_BUILD)/corpus/$(1)/ 2>/dev/null || true
+	@echo "fuzz: $(1) for $(2) s"
+	@ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
+	  $(FUZZ_BUILD)/fuzz/fuzz_$(1) -max_total_time=$(2) -timeout=20 -rss_limit_mb=2048 \
+	  -max_len=4096 -print_final_stats=1 -artifact_prefix=$(FUZZ_BUILD)/artifacts/$(1)/ \
+	  $(FUZZ_BUILD)/corpus/$(1) > $(FUZZ_BUILD)/fuzz_$(1).log 2>&1 \
+	  || { tail -n 60 $(FUZZ_BUILD)/fuzz_$(1).log; \
+	       echo "fuzz: $(1) FAILED; crashing input in $(FUZZ_BUILD)/artifacts/$(1)/"; exit 1; }
+	@grep -E '^stat::number_of_executed_units' $(FUZZ_BUILD)/fuzz_$(1).log | sed 's/^/fuzz: $(1) /' || true
+
+endef
+
+check-fuzz:
+	@mkdir -p $(FUZZ_BUILD)
+	$(FUZZ_MAKE) fuzz-bins
+	$(foreach t,$(FUZZ_TARGETS),$(call run_fuzz,$(t),$(FUZZ_TIME)))
+
+fuzz:
+	@mkdir -p $(FUZZ_BUILD)
+	$(FUZZ_MAKE) fuzz-bins
+	$(foreach t,$(FUZZ_TARGETS),$(call run_fuzz,$(t),$(FUZZ_LONG_TIME)))
+
+# Replay every seed (and shared data) through the fuzz targets without libFuzzer.
+check-replay: replay-bins
+	@set -e; for t in $(FUZZ_TARGETS); do \
+	  case $$t in \
+	    poly_read) extra="$(wildcard $(SHARED_DIR)/data/*.poly tests/data/*.poly)";; \
+	    node_read) extra="$(wildcard tests/data/*.node)";; \
+	    *) extra="";; \
+	  esac; \
+	  ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
+	    $(BUILD)/fuzz/replay_$$t tests/fuzz/corpus/$$t $$extra; \
+	done
+
+# ---- packages, demo --------------------------------------------------------
+# Install missing system packages (Debian 12) when root; otherwise print the line.
+deps:
+	@sh .ci/deps.sh
+
+demo: deps
+	$(MAKE) $(PAR) --no-print-directory all
+	@mkdir -p $(BUILD)/demo
+	$(CLI) triangulate $(SHARED_DIR)/data/naca0012.poly -o $(BUILD)/demo/naca0012.vtu --svg $(BUILD)/demo/naca0012.svg --quality
+	@echo "demo: wrote $(BUILD)/demo/naca0012.vtu and $(BUILD)/demo/naca0012.svg"
+
+# ---- make check ------------------------------------------------------------
+# Each step prints "== step ==" and its time; the first failure stops the run.
+CHECK_STEPS := build check-unit check-symbols check-cli check-examples check-asan \
+               check-clang check-noomp check-fuzz check-python check-fortran
+
+check: deps
+	@start=$$(date +%s); set -e; \
+	for step in $(CHECK_STEPS); do \
+	  t0=$$(date +%s); echo "== $$step =="; \
+	  if [ $$step = build ]; then $(MAKE) $(PAR) --no-print-directory all tests; \
+	  else $(MAKE) --no-print-directory $$step; fi; \
+	  echo "== $$step: ok ($$(( $$(date +%s) - t0 )) s)"; \
+	done; \
+	echo "check: all steps passed in $$(( $$(date +%s) - start )) s"; \
+	grep -h '^100%: Checks:' $(BUILD)/unit.log | tail -n 1
+
+check-unit: $(TEST_BIN)
+	set -o pipefail; $(TEST_ENV) $(TEST_BIN) 2>&1 | tee $(BUILD)/unit.log
+
+check-asan:
+	$(MAKE) $(PAR) --no-print-directory BUILD=$(BUILD)/asan SAN=1 OPENMP=0 tests replay-bins
+	$(TEST_ENV) ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 CK_TIMEOUT_MULTIPLIER=4 \
+	  $(BUILD)/asan/tests/unit_tests
+	$(MAKE) --no-print-directory BUILD=$(BUILD)/asan SAN=1 OPENMP=0 check-replay
+
+check-valgrind:
+	$(MAKE) $(PAR) --no-print-directory BUILD=$(BUILD)/valgrind OPENMP=0 tests
+	$(TEST_ENV) CK_FORK=no CK_TIMEOUT_MULTIPLIER=20 valgrind -q --error-exitcode=1 --leak-check=full \
+	  --errors-for-leak-kinds=definite,indirect $(BUILD)/valgrind/tests/unit_tests
+
+check-clang:
+	$(MAKE) $(PAR) --no-print-directory BUILD=$(BUILD)/clang CC=$(CLANG) all tests
+	$(TEST_ENV) $(BUILD)/clang/tests/unit_tests
+
+check-noomp:
+	$(MAKE) $(PAR) --no-print-directory BUILD=$(BUILD)/noomp OPENMP=0 all tests
+	@if readelf -d $(BUILD)/noomp/lib/libcvmesh.so.$(VERSION) | grep -q -E 'gomp|omp\.so'; then \
+	  echo "check-noomp: OPENMP=0 library still links an OpenMP runtime"; exit 1; fi
+	$(TEST_ENV) $(BUILD)/noomp/tests/unit_tests
+
+check-symbols: $(SHARED)
+	sh .ci/check_symbols.sh $(SHARED) .ci/exported_symbols.txt
+
+check-cli: $(CLI)
+	@if [ ! -f tests/cli/run.sh ]; then echo "check-cli: tests/cli/run.sh is missing"; exit 1; fi
+	sh tests/cli/run.sh $(CLI) $(SHARED_DIR)
+
+# Build every example against an installed copy found through pkg-config, then run it.
+check-examples:
+	rm -rf $(STAGE)
+	$(MAKE) --no-print-directory install PREFIX=$(STAGE)
+	@mkdir -p $(BUILD)/examples
+	@set -e; for src in $(EXAMPLES_C); do \
+	  name=$$(basename $$src .c); \
+	  flags=$$(PKG_CONFIG_PATH=$(STAGE)/lib/pkgconfig pkg-config --cflags --libs cvmesh); \
+	  echo "cc $$src $$flags"; \
+	  $(CC) -std=c99 $(WARN) $$src $$flags -Wl,-rpath,$(STAGE)/lib -o $(BUILD)/examples/$$name; \
+	  (cd $(BUILD)/examples && ./$$name) || { echo "check-examples: $$name failed"; exit 1; }; \
+	done
+
+# Bindings: their engineers own these scripts; skipped until they exist.
+check-python:
+	@if [ -f bindings/python/check.sh ]; then \
+	  CVM_BUILD=$(abspath $(BUILD)) CC=$(CC) PYTHON=$(PYTHON) bash bindings/python/check.sh; \
+	else echo "check-python: skipped (bindings/python/check.sh not present yet)"; fi
+
+check-fortran:
+	@if [ -f bindings/fortran/check.sh ]; then \
+	  CVM_BUILD=$(abspath $(BUILD)) CC=$(CC) bash bindings/fortran/check.sh; \
+	else echo "check-fortran: skipped (bindings/fortran/check.sh not present yet)"; fi
+
+bench: all
+	sh tests/bench/run.sh $(BUILD) $(SHARED_DIR)
+
+# ---- amalgamation ----------------------------------------------------------
+# One cvmesh.c: internal headers in dependency order, then every library .c,
+# with the quoted includes of internal headers removed (each is already inlined).
+AMALG := $(BUILD)/amalgamation
+AMALG_HDRS := $(wildcard lib/common/*.h) $(wildcard lib/geom/*.h) $(wildcard lib/delaunay/*.h) \
+              $(wildcard lib/io/*.h) $(filter-out $(wildcard lib/common/*.h lib/geom/*.h \
+              lib/delaunay/*.h lib/io/*.h lib/cli/*.h),$(wildcard lib/*/*.h))
+
+amalgamation: $(AMALG)/cvmesh.c $(AMALG)/cvmesh.h
+
+$(AMALG)/cvmesh.h: include/cvmesh.h
+	@mkdir -p $(dir $@)
+	cp $< $@
+
+$(AMALG)/cvmesh.c: $(AMALG_HDRS) $(LIB_SRC) Makefile
+	@mkdir -p $(dir $@)
+	@{ echo "/* cvmesh.c - amalgamation of cvmesh $(VERSION): generated by make amalgamation, do not edit. */"; \
+	   echo "#ifndef _POSIX_C_SOURCE"; echo "#define _POSIX_C_SOURCE 200809L"; echo "#endif"; \
+	   echo '#include "cvmesh.h"'; \
+	   for f in $(AMALG_HDRS) $(LIB_SRC); do \
+	     echo "/* ---- $$f ---- */"; \
+	     grep -v -E '^[[:space:]]*#[[:space:]]*include[[:space:]]+"' $$f; \
+	   done; } > $@.tmp && mv $@.tmp $@
+	@echo "amalgamation: wrote $@ and $(AMALG)/cvmesh.h"
+
+check-amalgamation: amalgamation
+	$(CC) -std=c99 $(WARN) -O2 -D_POSIX_C_SOURCE=200809L $(OMPFLAGS) -I$(AMALG) -c $(AMALG)/cvmesh.c -o $(AMALG)/cvmesh.o
+
+# ---- install, clean --------------------------------------------------------
+install: all
+	install -d $(DESTDIR)$(PREFIX)/include $(DESTDIR)$(PREFIX)/lib/pkgconfig $(DESTDIR)$(PREFIX)/bin
+	install -m 644 include/cvmesh.h $(DESTDIR)$(PREFIX)/include/
+	install -m 644 $(STATIC) $(DESTDIR)$(PREFIX)/lib/
+	install -m 755 $(SHARED) $(DESTDIR)$(PREFIX)/lib/
+	ln -sf libcvmesh.so.$(VERSION) $(DESTDIR)$(PREFIX)/lib/$(SONAME)
+	ln -sf $(SONAME) $(DESTDIR)$(PREFIX)/lib/libcvmesh.so
+	install -m 755 $(CLI) $(DESTDIR)$(PREFIX)/bin/
+	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@VERSION@|$(VERSION)|' -e 's|@LIBS@|-lm $(OMPFLAGS)|' \
+	  .ci/cvmesh.pc.in > $(DESTDIR)$(PREFIX)/lib/pkgconfig/cvmesh.pc
+
+clean:
+	rm -rf $(BUILD)
+
+-include $(LIB_OBJ:.o=.d) $(CLI_OBJ:.o=.d) $(TEST_OBJ:.o=.d) $(FUZZ_SUPPORT_OBJ:.o=.d) \
+         $(wildcard $(BUILD)/obj/tests/fuzz/*.d)

@@ -1,0 +1,349 @@
+/*
+ * cvmesh.i - SWIG interface that wraps include/cvmesh.h as the Python module
+ * cvmesh.capi; the Pythonic layer (cvmesh/__init__.py) is built on it.
+ *
+ * The header is wrapped whole (%include at the end), so a new public function
+ * appears in Python without a change here as long as it follows the house
+ * conventions (STYLE.md sections 2, 4, 6):
+ *   - it returns cvm_status: an error raises a cvmesh.Error subclass carrying
+ *     cvm_mesh_errmsg() of its cvm_mesh argument (typemaps below); OK returns
+ *     None (or its outputs); an incomplete status (>= 100) emits
+ *     cvmesh.IncompleteWarning, except for calls listed with CVMPY_LONG_CALL,
+ *     which return the status as an int (0 or >= 100) before their outputs;
+ *   - its handle parameter is named m, its outputs come first and use the
+ *     names typemapped here (out, *_out, dst + dst_len) or cvmesh_numpy.i;
+ *   - a long call (one that reports progress) is listed with CVMPY_LONG_CALL
+ *     so that it releases the GIL and returns its status.
+ * A function with a cvm_mesh parameter that does not return cvm_status must
+ * be given a helper below (as cvm_mesh_free and cvm_mesh_errmsg are).
+ */
+%module(package="cvmesh") capi
+
+%feature("autodoc", "1");
+
+%{
+#include "cvmesh.h"
+#include <string.h>
+%}
+
+%include <stdint.i>
+%include "cvmesh_numpy.i"
+
+/* ---- status -> exception ---------------------------------------------- */
+
+%{
+/* cvmesh._errors._from_status(status, message, kind, index): an exception
+ * instance of the class for that status family. */
+static PyObject *cvmpy_errors_module = NULL;
+
+static PyObject *cvmpy_errors(void)
+{
+    if (!cvmpy_errors_module)
+        cvmpy_errors_module = PyImport_ImportModule("cvmesh._errors");
+    return cvmpy_errors_module;
+}
+
+/* Raise the exception for error status s; its message is cvm_mesh_errmsg(m)
+ * when m is given and has one, else cvm_status_str(s). */
+static void cvmpy_set_error(cvm_status s, const cvm_mesh *m)
+{
+    const char *msg = m ? cvm_mesh_errmsg(m) : NULL;
+    cvm_entity kind = CVM_ENT_NONE;
+    int64_t index = -1;
+    PyObject *mod, *exc;
+    if (!msg || !*msg)
+        msg = cvm_status_str(s);
+    if (m && cvm_mesh_error_item(&kind, &index, m) != CVM_OK) {
+        kind = CVM_ENT_NONE;
+        index = -1;
+    }
+    mod = cvmpy_errors();
+    if (!mod) {
+        PyErr_Clear();
+        PyErr_Format(PyExc_RuntimeError, "cvmesh status %d: %s", (int)s, msg);
+        return;
+    }
+    exc = PyObject_CallMethod(mod, "_from_status", "isiL", (int)s, msg, (int)kind,
+                              (long long)index);
+    if (!exc)
+        return; /* the exception of the failed call stands */
+    PyErr_SetObject((PyObject *)Py_TYPE(exc), exc);
+    Py_DECREF(exc);
+}
+
+/* Python result of a call that returned s, or NULL with an exception set.
+ * An error leaves NULL *without* an exception: the argout typemap of the
+ * handle (which knows cvm_mesh_errmsg) or the "ret" typemap raises it.
+ * An exception already pending (raised by the progress callback, e.g.
+ * KeyboardInterrupt) wins over everything. */
+static PyObject *cvmpy_status_result(cvm_status s, int long_call)
+{
+    if (PyErr_Occurred())
+        return NULL;
+    if (cvm_status_is_error(s))
+        return NULL;
+    if (long_call)
+        return PyLong_FromLong((long)s);
+    if (s != CVM_OK) {
+        PyObject *mod = cvmpy_errors();
+        PyObject *cls = mod ? PyObject_GetAttrString(mod, "IncompleteWarning") : NULL;
+        int bad;
+        if (!cls)
+            return NULL;
+        bad = PyErr_WarnFormat(cls, 1, "%s", cvm_status_str(s));
+        Py_DECREF(cls);
+        if (bad)
+            return NULL;
+    }
+    Py_RETURN_NONE;
+}
+%}
+
+%typemap(out) cvm_status {
+    $result = cvmpy_status_result($1, 0);
+}
+/* Raise a status error that no handle argument has raised yet. */
+%typemap(ret) cvm_status {
+    if (!$result && !PyErr_Occurred())
+        cvmpy_set_error($1, NULL);
+}
+/* The handle knows the message: raise here, after the call. */
+%typemap(argout) cvm_mesh *m, const cvm_mesh *m {
+    if (!$result && !PyErr_Occurred() && cvm_status_is_error(result))
+        cvmpy_set_error(result, $1);
+}
+
+/* CVMPY_LONG_CALL(name): release the GIL around the call and return the
+ * status as an int; the progress callback re-acquires the GIL. Naming a
+ * function that the header does not (yet) declare is harmless. */
+%define CVMPY_LONG_CALL(NAME)
+%exception NAME {
+    Py_BEGIN_ALLOW_THREADS
+    $action
+    Py_END_ALLOW_THREADS
+}
+%typemap(out) cvm_status NAME {
+    $result = cvmpy_status_result($1, 1);
+}
+%enddef
+
+CVMPY_LONG_CALL(cvm_mesh_triangulate)
+CVMPY_LONG_CALL(cvm_mesh_refine)
+CVMPY_LONG_CALL(cvm_mesh_read)
+CVMPY_LONG_CALL(cvm_mesh_write)
+CVMPY_LONG_CALL(cvm_mesh_check)
+
+/* ---- scalar outputs ---------------------------------------------------- */
+
+/* CVMPY_OUT_SCALAR(CTYPE, NAME, TO_PY): CTYPE *NAME becomes a return value. */
+%define CVMPY_OUT_SCALAR(CTYPE, NAME, TO_PY)
+%typemap(in, numinputs=0) CTYPE *NAME (CTYPE tmp) {
+    memset(&tmp, 0, sizeof tmp);
+    $1 = &tmp;
+}
+%typemap(argout) CTYPE *NAME {
+    if ($result) {
+        PyObject *o = TO_PY(tmp$argnum);
+        if (!o) {
+            Py_DECREF($result);
+            $result = NULL;
+        } else {
+            $result = SWIG_Python_AppendOutput($result, o);
+        }
+    }
+}
+%enddef
+
+CVMPY_OUT_SCALAR(size_t, out, PyLong_FromSize_t)
+CVMPY_OUT_SCALAR(size_t, nattr_out, PyLong_FromSize_t)
+CVMPY_OUT_SCALAR(double, out, PyFloat_FromDouble)
+CVMPY_OUT_SCALAR(int64_t, index_out, PyLong_FromLongLong)
+CVMPY_OUT_SCALAR(cvm_entity, kind_out, PyLong_FromLong)
+
+%{
+/* (lo, hi, default, is_integer) */
+static PyObject *cvmpy_bounds_tuple(cvm_bounds b)
+{
+    return Py_BuildValue("dddi", b.lo, b.hi, b.def, (int)b.is_integer);
+}
+%}
+CVMPY_OUT_SCALAR(cvm_bounds, out, cvmpy_bounds_tuple)
+
+/* cvm_mesh_create(&m): returns the handle. Python does not free it on its
+ * own: call cvm_mesh_free(), or use cvmesh.Mesh, which does. */
+%typemap(in, numinputs=0) cvm_mesh **out (cvm_mesh *tmp = NULL) {
+    $1 = &tmp;
+}
+%typemap(argout) cvm_mesh **out {
+    if ($result)
+        $result = SWIG_Python_AppendOutput($result,
+                                           SWIG_NewPointerObj(tmp$argnum, $descriptor(cvm_mesh *), 0));
+}
+
+/* ---- helpers for functions outside the conventions --------------------- */
+
+%ignore cvm_mesh_free;
+%rename(cvm_mesh_free) cvmpy_mesh_free;
+%rename(cvm_mesh_errmsg) cvmpy_mesh_errmsg;
+%rename(cvm_mesh_set_progress) cvmpy_set_progress;
+%rename(cvm_mesh_insert_points) cvmpy_insert_points;
+%ignore cvm_mesh_errmsg;
+%ignore cvm_mesh_set_progress;
+%ignore cvm_mesh_insert_points;
+/* Allocation hooks are C function pointers; there is nothing to pass from Python. */
+%ignore cvm_mesh_create_with_allocator;
+%ignore cvm_malloc_fn;
+%ignore cvm_realloc_fn;
+%ignore cvm_free_fn;
+
+%{
+/* Progress callbacks installed through this module, keyed by handle address,
+ * so each callable stays alive as long as it is installed. */
+static PyObject *cvmpy_callbacks = NULL;
+
+/*
+ * The C callback behind every Python progress callback. It runs with the GIL
+ * released by the long call, so it takes the GIL, calls payload(stage,
+ * fraction) if payload is not NULL, and asks the library to stop when the
+ * callable returned a true value, raised, or when a signal handler raised
+ * (Ctrl-C: PyErr_CheckSignals), leaving the exception for the wrapper to
+ * re-raise once the call has returned.
+ */
+static int cvmpy_progress_trampoline(void *payload, cvm_stage stage, double fraction)
+{
+    PyGILState_STATE g = PyGILState_Ensure();
+    int stop = 0;
+    if (PyErr_Occurred()) {
+        stop = 1;
+    } else {
+        if (payload) {
+            PyObject *r = PyObject_CallFunction((PyObject *)payload, "id", (int)stage, fraction);
+            if (!r) {
+                stop = 1;
+            } else {
+                int t = PyObject_IsTrue(r);
+                Py_DECREF(r);
+                stop = t != 0; /* -1: __bool__ raised */
+            }
+        }
+        if (!stop && PyErr_CheckSignals() != 0)
+            stop = 1;
+    }
+    PyGILState_Release(g);
+    return stop;
+}
+
+static void cvmpy_forget_callback(const cvm_mesh *m)
+{
+    PyObject *key;
+    if (!cvmpy_callbacks || !m)
+        return;
+    key = PyLong_FromVoidPtr((void *)m);
+    if (!key) {
+        PyErr_Clear();
+        return;
+    }
+    if (PyDict_DelItem(cvmpy_callbacks, key) < 0)
+        PyErr_Clear(); /* was not there */
+    Py_DECREF(key);
+}
+%}
+
+%inline %{
+/* Free a handle (None is a no-op) and drop its progress callback. */
+void cvmpy_mesh_free(cvm_mesh *handle)
+{
+    cvmpy_forget_callback(handle);
+    cvm_mesh_free(handle);
+}
+
+/* Message of the last failing call on handle ("" after success). */
+const char *cvmpy_mesh_errmsg(const cvm_mesh *handle)
+{
+    return cvm_mesh_errmsg(handle);
+}
+%}
+
+%typemap(in) PyObject *callback {
+    $1 = $input;
+}
+%inline %{
+/*
+ * Install callback(stage, fraction) -> bool as the progress callback of m,
+ * called about every every_n operations of long calls; a true result stops
+ * the call (CVM_INCOMPLETE_CANCELLED), an exception stops it and is re-raised.
+ * callback None with every_n >= 1 still lets Ctrl-C (KeyboardInterrupt) stop
+ * long calls; every_n < 1 removes the callback.
+ */
+cvm_status cvmpy_set_progress(cvm_mesh *m, PyObject *callback, int64_t every_n)
+{
+    cvm_status s;
+    PyObject *key;
+    int on = every_n >= 1;
+    if (callback != Py_None && !PyCallable_Check(callback)) {
+        PyErr_SetString(PyExc_TypeError, "progress callback must be callable or None");
+        return CVM_E_ARGUMENT;
+    }
+    s = cvm_mesh_set_progress(m, on ? cvmpy_progress_trampoline : NULL, every_n,
+                              on && callback != Py_None ? (void *)callback : NULL);
+    if (s != CVM_OK || !m)
+        return s;
+    if (!cvmpy_callbacks && !(cvmpy_callbacks = PyDict_New()))
+        return CVM_E_NOMEM;
+    key = PyLong_FromVoidPtr((void *)m);
+    if (!key)
+        return CVM_E_NOMEM;
+    if (on && callback != Py_None) {
+        if (PyDict_SetItem(cvmpy_callbacks, key, callback) < 0)
+            s = CVM_E_NOMEM;
+    } else if (PyDict_DelItem(cvmpy_callbacks, key) < 0) {
+        PyErr_Clear();
+    }
+    Py_DECREF(key);
+    return s;
+}
+%}
+
+%typemap(in, numinputs=0) PyObject **ids_out (PyObject *tmp = NULL) {
+    $1 = &tmp;
+}
+%typemap(argout) PyObject **ids_out {
+    if ($result) {
+        $result = SWIG_Python_AppendOutput($result, tmp$argnum);
+        tmp$argnum = NULL;
+    }
+}
+%typemap(freearg) PyObject **ids_out { Py_XDECREF(tmp$argnum); }
+%typemap(out) cvm_status cvmpy_insert_points {
+    $result = cvmpy_status_result($1, 1);
+}
+%inline %{
+/*
+ * cvm_mesh_insert_points() returning (status, ids): ids is a new int32 array
+ * of one entry per point (CVM_REJECTED = -1 for a rejected point). The GIL is
+ * released during the insertion.
+ */
+cvm_status cvmpy_insert_points(PyObject **ids_out, cvm_mesh *m, const double *xy, size_t count,
+                               double min_dist)
+{
+    cvm_status s;
+    npy_intp n = (npy_intp)count;
+    cvm_index *ids;
+    PyArrayObject *a = (PyArrayObject *)PyArray_ZEROS(1, &n, NPY_INT32, 0);
+    if (!a)
+        return CVM_E_NOMEM;
+    ids = (cvm_index *)PyArray_DATA(a);
+    Py_BEGIN_ALLOW_THREADS
+    s = cvm_mesh_insert_points(ids, m, xy, count, min_dist);
+    Py_END_ALLOW_THREADS
+    *ids_out = (PyObject *)a;
+    return s;
+}
+%}
+
+/* ---- the API ------------------------------------------------------------ */
+
+#define CVM_API
+/* cvm_bounds.def: 'def' is a Python keyword. */
+%rename(default) cvm_bounds::def;
+%include "cvmesh.h"

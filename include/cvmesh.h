@@ -1,0 +1,647 @@
+/*
+ * cvmesh.h - the entire stable API of cvmesh, a BSD-3-Clause library that
+ * generates triangle meshes whose Delaunay primal and Voronoi (power) dual are
+ * both of high quality.
+ *
+ * Introduction
+ * ------------
+ * 1. Create a handle:            cvm_mesh_create(&m).
+ * 2. Give it input:              cvm_mesh_set_points(m, xy, n, 2), then optionally
+ *                                cvm_mesh_set_segments(), cvm_mesh_set_holes(),
+ *                                cvm_mesh_set_regions(); or cvm_mesh_read(m, "a.poly").
+ * 3. Choose options:             cvm_mesh_set_option(m, CVM_OPT_..., value).
+ * 4. Mesh:                       cvm_mesh_triangulate(m) (Delaunay or constrained
+ *                                Delaunay), then cvm_mesh_insert_points() to add points.
+ * 5. Read the output:            cvm_mesh_count(&n, m, CVM_ENT_TRIANGLE), then
+ *                                cvm_mesh_copy_cells(buf, len, m, CVM_ENT_TRIANGLE),
+ *                                or write it with cvm_mesh_write(m, "out.vtu").
+ * 6. Free it:                    cvm_mesh_free(m).
+ * Every call returns a cvm_status; cvm_mesh_errmsg(m) says what went wrong and
+ * names the offending input. Indices are 0-based everywhere.
+ *
+ * Threads: one call at a time per handle; different handles may be used from
+ * different threads at once. The library has no global mutable state.
+ * Geometry: every topological decision uses exact adaptive predicates with
+ * symbolic perturbation; coordinates computed by the library (Steiner points)
+ * are ordinary doubles.
+ */
+#ifndef CVMESH_H
+#define CVMESH_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#if defined(_WIN32) && defined(CVM_BUILDING_DLL)
+#  define CVM_API __declspec(dllexport)
+#elif defined(_WIN32) && defined(CVM_USING_DLL)
+#  define CVM_API __declspec(dllimport)
+#elif defined(__GNUC__) && __GNUC__ >= 4
+#  define CVM_API __attribute__((visibility("default")))
+#else
+#  define CVM_API
+#endif
+
+/* ------------------------------------------------------------------------ */
+/* Version                                                                   */
+/* ------------------------------------------------------------------------ */
+
+#define CVM_VERSION_MAJOR 0
+#define CVM_VERSION_MINOR 1
+#define CVM_VERSION_PATCH 0
+#define CVM_VERSION_NUMBER \
+    (CVM_VERSION_MAJOR * 10000 + CVM_VERSION_MINOR * 100 + CVM_VERSION_PATCH)
+
+/**
+ * Version of the library actually linked, as MAJOR*10000 + MINOR*100 + PATCH.
+ * Thread-safety: callable from any thread.
+ * @return the version number; equals CVM_VERSION_NUMBER of the header it was built with.
+ * @since 0.1
+ */
+CVM_API int32_t cvm_version_number(void);
+
+/**
+ * Version of the library as a static string "MAJOR.MINOR.PATCH".
+ * Ownership: the string is static; do not free it.
+ * Thread-safety: callable from any thread.
+ * @since 0.1
+ */
+CVM_API const char *cvm_version_string(void);
+
+/* ------------------------------------------------------------------------ */
+/* Types                                                                     */
+/* ------------------------------------------------------------------------ */
+
+/** Index of a vertex, cell or input item; 0-based. */
+typedef int32_t cvm_index;
+
+/** Marker that cvm_mesh_insert_points() writes for a point it rejected. */
+#define CVM_REJECTED ((cvm_index)-1)
+
+/** Opaque mesh handle; see cvm_mesh_create(). */
+typedef struct cvm_mesh cvm_mesh;
+
+/**
+ * Status of a call. CVM_OK is 0. Values 1..99 are errors (nothing useful was
+ * produced; the handle keeps its previous state unless the function says
+ * otherwise). Values 100 and up mean "stopped early: the result is valid but
+ * incomplete". Test with cvm_status_is_error(). Values never change.
+ */
+typedef enum cvm_status {
+    CVM_OK = 0,
+    CVM_E_NULL_ARG = 1,            /**< a required pointer argument is NULL */
+    CVM_E_ARGUMENT = 2,            /**< an argument is out of its domain (e.g. dim, entity kind) */
+    CVM_E_OPTION_KEY = 3,          /**< unknown option key */
+    CVM_E_OPTION_RANGE = 4,        /**< option value outside cvm_option_bounds() */
+    CVM_E_STATE = 5,               /**< call made in the wrong order (e.g. insert before triangulate) */
+    CVM_E_UNSUPPORTED = 6,         /**< feature not available in this build or version */
+    CVM_E_INPUT_NONFINITE = 10,    /**< NaN or infinite coordinate, hole, region or value */
+    CVM_E_INPUT_INDEX = 11,        /**< an index names an item that does not exist */
+    CVM_E_INPUT_DUPLICATE = 12,    /**< duplicate points (only with CVM_OPT_REJECT_DUPLICATES) */
+    CVM_E_INPUT_DEGENERATE = 13,   /**< zero-length segment, all points collinear, too few points */
+    CVM_E_INPUT_INTERSECTING = 14, /**< two segments cross (only with CVM_OPT_SPLIT_INTERSECTIONS = 0) */
+    CVM_E_INPUT_NOT_CLOSED = 15,   /**< boundary is open: a hole or the exterior leaks into the domain */
+    CVM_E_INPUT_EMPTY = 16,        /**< no input points, or nothing left of the domain */
+    CVM_E_INPUT_OUTSIDE = 17,      /**< a hole or region point lies outside the triangulated domain */
+    CVM_E_IO_OPEN = 30,            /**< a file could not be opened or created */
+    CVM_E_IO_READ = 31,            /**< reading failed (short read, device error) */
+    CVM_E_IO_WRITE = 32,           /**< writing failed (disk full, rename failed); no partial file left */
+    CVM_E_IO_FORMAT = 33,          /**< malformed file content; the message gives file and line */
+    CVM_E_NOMEM = 40,              /**< out of memory; the handle stays usable and freeable */
+    CVM_E_BUFFER_TOO_SMALL = 41,   /**< caller's buffer too short; nothing was written */
+    CVM_E_TOO_LARGE = 42,          /**< sizes exceed what cvm_index can address */
+    CVM_E_INTERNAL = 99,           /**< internal consistency check failed; a bug: please report */
+    CVM_INCOMPLETE_TIME_LIMIT = 100, /**< stopped at CVM_OPT_TIME_LIMIT_S; result valid, incomplete */
+    CVM_INCOMPLETE_CANCELLED = 101,  /**< the progress callback asked to stop; result valid, incomplete */
+    CVM_INCOMPLETE_STEINER_LIMIT = 102 /**< stopped at CVM_OPT_MAX_STEINER; result valid, incomplete */
+} cvm_status;
+
+/**
+ * Fixed English text for a status code, e.g. "out of memory".
+ * Ownership: static string. Thread-safety: callable from any thread.
+ * @return never NULL; "unknown status" for a value not listed above.
+ * @since 0.1
+ */
+CVM_API const char *cvm_status_str(cvm_status s);
+
+/**
+ * 1 if @p s is an error (1..99), 0 for CVM_OK and the CVM_INCOMPLETE_* values.
+ * Thread-safety: callable from any thread.
+ * @since 0.1
+ */
+CVM_API int cvm_status_is_error(cvm_status s);
+
+/** Kinds of mesh entities, for counts, copies and error reports. Values never change. */
+typedef enum cvm_entity {
+    CVM_ENT_NONE = 0,
+    CVM_ENT_VERTEX = 1,       /**< mesh vertices (input points less duplicates, then Steiner points) */
+    CVM_ENT_TRIANGLE = 2,     /**< triangles of the domain, 3 vertex ids each, counter-clockwise */
+    CVM_ENT_EDGE = 3,         /**< edges of the domain triangles, 2 vertex ids each */
+    CVM_ENT_SEGMENT = 4,      /**< constrained edges of the output (input segments and their pieces) */
+    CVM_ENT_INPUT_POINT = 5,  /**< points as given to cvm_mesh_set_points() */
+    CVM_ENT_INPUT_SEGMENT = 6,/**< segments as given to cvm_mesh_set_segments() */
+    CVM_ENT_HOLE = 7,         /**< hole seed points */
+    CVM_ENT_REGION = 8,       /**< region seed points */
+    CVM_ENT_DUPLICATE = 9,    /**< input points merged into an earlier identical point */
+    CVM_ENT_FILE_LINE = 10,   /**< a line of an input file (error reports only) */
+    CVM_ENT_OPTION = 11,      /**< an option key (error reports only) */
+    CVM_ENT_TETRAHEDRON = 12, /**< reserved for the 3D kernel */
+    CVM_ENT_FACET = 13        /**< reserved for the 3D kernel */
+} cvm_entity;
+
+/* ------------------------------------------------------------------------ */
+/* Handle lifecycle and errors                                               */
+/* ------------------------------------------------------------------------ */
+
+/**
+ * Create an empty mesh handle that uses the C library's malloc/realloc/free.
+ *
+ * @param out  receives the handle; set to NULL on failure.
+ * Ownership:  the caller owns *out and releases it with cvm_mesh_free().
+ * Thread-safety: callable from any thread.
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG   out is NULL
+ *         CVM_E_NOMEM
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_mesh_create(cvm_mesh **out);
+
+/** Allocation hooks of cvm_mesh_create_with_allocator(); same contract as malloc/realloc/free. */
+typedef void *(*cvm_malloc_fn)(void *payload, size_t size);
+typedef void *(*cvm_realloc_fn)(void *payload, void *ptr, size_t size);
+typedef void (*cvm_free_fn)(void *payload, void *ptr);
+
+/**
+ * Create an empty mesh handle whose every allocation goes through the given
+ * functions (the handle itself included).
+ *
+ * @param out       receives the handle; set to NULL on failure.
+ * @param alloc_fn  malloc-like; may return NULL, which cvmesh reports as CVM_E_NOMEM.
+ * @param realloc_fn realloc-like; on NULL the old block must stay valid.
+ * @param free_fn   free-like; must accept NULL.
+ * @param payload   passed unchanged to each function; may be NULL.
+ * Ownership:  the functions and payload must outlive the handle.
+ * Thread-safety: the functions are called only from calls on this handle.
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG  out, alloc_fn, realloc_fn or free_fn is NULL
+ *         CVM_E_NOMEM
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_mesh_create_with_allocator(cvm_mesh **out, cvm_malloc_fn alloc_fn,
+                                                  cvm_realloc_fn realloc_fn, cvm_free_fn free_fn,
+                                                  void *payload);
+
+/**
+ * Free a mesh handle and everything it owns. NULL is a no-op.
+ * Views obtained from @p m become invalid.
+ * @since 0.1
+ */
+CVM_API void cvm_mesh_free(cvm_mesh *m);
+
+/**
+ * Message describing the last failing (or incomplete) call on @p m, naming the
+ * offending input, e.g. "segment 17 (points 4-9) crosses segment 22 (points 5-11)".
+ * Ownership: owned by @p m; valid until the next call on @p m.
+ * @return "" when the last call succeeded; "no mesh handle" when m is NULL.
+ * @since 0.1
+ */
+CVM_API const char *cvm_mesh_errmsg(const cvm_mesh *m);
+
+/**
+ * The input item named by the last error on @p m, for programs.
+ *
+ * @param kind_out   receives the entity kind (CVM_ENT_NONE when no item is named).
+ * @param index_out  receives its 0-based index (a file line is 1-based, as editors count).
+ * @return CVM_OK, or CVM_E_NULL_ARG when any pointer is NULL.
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_mesh_error_item(cvm_entity *kind_out, int64_t *index_out, const cvm_mesh *m);
+
+/* ------------------------------------------------------------------------ */
+/* Input                                                                     */
+/* ------------------------------------------------------------------------ */
+
+/**
+ * Set the input points. Clears any triangulation and the point markers and
+ * attributes; segments, holes and regions are kept.
+ *
+ * @param m      mesh handle; not NULL.
+ * @param coords dim*count coordinates, point i at coords[dim*i ..].
+ * @param count  number of points; may be 0.
+ * @param dim    2. (3 is reserved for the 3D kernel and returns CVM_E_UNSUPPORTED.)
+ * Ownership:    copied; the caller keeps @p coords.
+ * Units:        any consistent length unit.
+ * Thread-safety: one call at a time on @p m.
+ * Atomicity:    on error the previous input is kept unchanged.
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG          m is NULL, or coords is NULL while count > 0
+ *         CVM_E_ARGUMENT          dim is not 2 or 3
+ *         CVM_E_UNSUPPORTED       dim is 3
+ *         CVM_E_INPUT_NONFINITE   a coordinate is NaN or infinite (message gives the point)
+ *         CVM_E_TOO_LARGE         count exceeds INT32_MAX/4
+ *         CVM_E_NOMEM
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_mesh_set_points(cvm_mesh *m, const double *coords, size_t count, int dim);
+
+/**
+ * Set an integer boundary marker for each input point (as Triangle's .node markers).
+ * @param markers count values; count must equal the number of input points (0 removes them).
+ * Ownership: copied.
+ * @return CVM_OK, CVM_E_NULL_ARG, CVM_E_ARGUMENT (count differs from the point count), CVM_E_NOMEM
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_mesh_set_point_markers(cvm_mesh *m, const int32_t *markers, size_t count);
+
+/**
+ * Set @p nattr attributes per input point (interpolated linearly onto points
+ * inserted on segments, as Triangle does).
+ * @param attrs  count*nattr values, point i at attrs[nattr*i ..]; count equals the point count.
+ * Ownership: copied.
+ * @return CVM_OK, CVM_E_NULL_ARG, CVM_E_ARGUMENT, CVM_E_INPUT_NONFINITE (names the point), CVM_E_NOMEM
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_mesh_set_point_attributes(cvm_mesh *m, const double *attrs, size_t count,
+                                                 size_t nattr);
+
+/**
+ * Set the constraint segments of a planar straight-line graph (PSLG).
+ * With segments present, cvm_mesh_triangulate() builds the constrained
+ * Delaunay triangulation and removes triangles outside the domain (those
+ * reachable from the convex hull without crossing a segment, unless
+ * CVM_OPT_KEEP_CONVEX_HULL is set) and in holes.
+ *
+ * @param segs   2*count point indices into the input points.
+ * @param count  number of segments; 0 removes all segments.
+ * Ownership:    copied. Indices are checked by cvm_mesh_triangulate(), since
+ *               points may be set after segments.
+ * Atomicity:    on error the previous segments are kept unchanged.
+ * @return CVM_OK, CVM_E_NULL_ARG, CVM_E_TOO_LARGE, CVM_E_NOMEM
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_mesh_set_segments(cvm_mesh *m, const cvm_index *segs, size_t count);
+
+/**
+ * Set a boundary marker per segment (written to outputs, used by the refiners
+ * to choose fronts). @p count equals the segment count, or 0 to remove.
+ * @return CVM_OK, CVM_E_NULL_ARG, CVM_E_ARGUMENT, CVM_E_NOMEM
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_mesh_set_segment_markers(cvm_mesh *m, const int32_t *markers, size_t count);
+
+/**
+ * Set hole seed points: every triangle reachable from a hole point without
+ * crossing a segment is removed.
+ * @param xy  2*count coordinates. Ownership: copied.
+ * @return CVM_OK, CVM_E_NULL_ARG, CVM_E_INPUT_NONFINITE (names the hole), CVM_E_NOMEM
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_mesh_set_holes(cvm_mesh *m, const double *xy, size_t count);
+
+/**
+ * Set regional attributes: region k is seeded at (r[4k], r[4k+1]); every
+ * triangle reachable from it without crossing a segment gets attribute r[4k+2];
+ * r[4k+3] is a maximum triangle area for the refiners (<= 0 means none).
+ * Triangles in no region get attribute 0. Later regions win over earlier ones.
+ * Ownership: copied.
+ * @return CVM_OK, CVM_E_NULL_ARG, CVM_E_INPUT_NONFINITE (names the region), CVM_E_NOMEM
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_mesh_set_regions(cvm_mesh *m, const double *r, size_t count);
+
+/**
+ * Read a Triangle .poly (PSLG) or .node (point set) file into the input of @p m,
+ * replacing points, markers, attributes, segments, holes and regions.
+ * Comments (#), 0- or 1-based numbering, markers, attributes, holes and
+ * regional attributes are understood. A .poly whose point count is 0 takes its
+ * points from the .node file of the same stem, as Triangle does.
+ *
+ * @param path  file name; the format follows the extension (.poly or .node).
+ * Atomicity:   on error the previous input is kept unchanged.
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG, CVM_E_IO_OPEN, CVM_E_IO_READ
+ *         CVM_E_IO_FORMAT        malformed content (message gives file:line)
+ *         CVM_E_INPUT_NONFINITE  a NaN/Inf coordinate (message gives file:line)
+ *         CVM_E_UNSUPPORTED      unknown extension
+ *         CVM_E_NOMEM
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_mesh_read(cvm_mesh *m, const char *path);
+
+/* ------------------------------------------------------------------------ */
+/* Options                                                                   */
+/* ------------------------------------------------------------------------ */
+
+/**
+ * Option keys, numbered in blocks of 100 per module; never renumbered.
+ * Each value is a double; integer options must be given as whole numbers.
+ */
+typedef enum cvm_option {
+    /** Delaunay kernel (100..199). */
+    /** 1: duplicate input points fail with CVM_E_INPUT_DUPLICATE; 0 (default): they are merged
+     *  and counted as CVM_ENT_DUPLICATE. Integer, bounds [0, 1]. */
+    CVM_OPT_REJECT_DUPLICATES = 100,
+    /** 1 (default): crossing input segments are split at their intersection point (a new vertex);
+     *  0: they fail with CVM_E_INPUT_INTERSECTING naming both segments. Integer, [0, 1]. */
+    CVM_OPT_SPLIT_INTERSECTIONS = 101,
+    /** 1: keep every triangle of the convex hull (holes are still removed); 0 (default):
+     *  remove triangles outside the segments. Integer, [0, 1]. */
+    CVM_OPT_KEEP_CONVEX_HULL = 102,
+    /** 1 (default): with no segments the result is the Delaunay triangulation of the convex
+     *  hull. Reserved for later kernels; integer, [1, 1]. */
+    CVM_OPT_CONVEX_HULL_IF_NO_SEGMENTS = 103,
+
+    /** Refinement (200..299): reserved for the refiners. */
+    /** Minimum angle, degrees, default 30, bounds [0, 40]. Read by the refiners. */
+    CVM_OPT_MIN_ANGLE_DEG = 200,
+    /** Maximum triangle area, squared length units, 0 = none (default), bounds [0, 1e300]. */
+    CVM_OPT_MAX_AREA = 201,
+
+    /** Run control (400..499). */
+    /** Time limit, seconds on a monotonic clock, 0 = none (default), bounds [0, 1e9].
+     *  The one documented source of non-determinism. */
+    CVM_OPT_TIME_LIMIT_S = 400,
+    /** Seed of the handle's random stream, integer, default 1, bounds [0, 2^53]. */
+    CVM_OPT_SEED = 401,
+    /** Maximum Steiner points a refinement may add, integer, 0 = none (default), [0, 2^31-1]. */
+    CVM_OPT_MAX_STEINER = 402,
+    /** Threads for parallel stages, integer, 0 = OpenMP default (default), [0, 1024].
+     *  Output does not depend on it. */
+    CVM_OPT_THREADS = 403
+} cvm_option;
+
+/** Bounds of an option; the one frozen struct of the ABI. */
+typedef struct cvm_bounds {
+    double lo;          /**< smallest accepted value */
+    double hi;          /**< largest accepted value */
+    double def;         /**< default */
+    int32_t is_integer; /**< 1: value must be a whole number */
+} cvm_bounds;
+
+/**
+ * Bounds and default of option @p key.
+ * Thread-safety: callable from any thread.
+ * @return CVM_OK, CVM_E_NULL_ARG, CVM_E_OPTION_KEY
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_option_bounds(cvm_bounds *out, cvm_option key);
+
+/**
+ * Set option @p key of @p m. Values are never clamped.
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG, CVM_E_OPTION_KEY
+ *         CVM_E_OPTION_RANGE  value outside the bounds, NaN, or not whole for an integer option
+ *                             (the message quotes the bounds)
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_mesh_set_option(cvm_mesh *m, cvm_option key, double value);
+
+/**
+ * Read option @p key of @p m.
+ * @return CVM_OK, CVM_E_NULL_ARG, CVM_E_OPTION_KEY
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_mesh_get_option(double *out, const cvm_mesh *m, cvm_option key);
+
+/** Stages reported to a progress callback. */
+typedef enum cvm_stage {
+    CVM_STAGE_READ = 1,
+    CVM_STAGE_SORT = 2,
+    CVM_STAGE_INSERT = 3,
+    CVM_STAGE_RECOVER_SEGMENTS = 4,
+    CVM_STAGE_CARVE = 5,
+    CVM_STAGE_WRITE = 6,
+    CVM_STAGE_REFINE = 7,
+    CVM_STAGE_SMOOTH = 8,
+    CVM_STAGE_OPTIMISE_DUAL = 9
+} cvm_stage;
+
+/**
+ * Progress callback: @p fraction in [0, 1] of the current stage. Return 0 to
+ * go on, non-zero to stop the run (CVM_INCOMPLETE_CANCELLED). It must not call
+ * any function on the handle that called it.
+ */
+typedef int (*cvm_progress_fn)(void *payload, cvm_stage stage, double fraction);
+
+/**
+ * Install a progress callback, called about every @p every_n elementary
+ * operations (point insertions, segment recoveries) of long calls. The time
+ * limit CVM_OPT_TIME_LIMIT_S is checked at the same points (every 1024
+ * operations when no callback is set). fn NULL or every_n < 1 removes it.
+ * What a stop leaves is documented by each long call.
+ * @return CVM_OK, CVM_E_NULL_ARG (m NULL)
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_mesh_set_progress(cvm_mesh *m, cvm_progress_fn fn, int64_t every_n,
+                                         void *payload);
+
+/* ------------------------------------------------------------------------ */
+/* Meshing                                                                   */
+/* ------------------------------------------------------------------------ */
+
+/**
+ * Triangulate the input: the Delaunay triangulation of the points, or with
+ * segments the constrained Delaunay triangulation of the PSLG with exterior
+ * and holes removed and regional attributes assigned. Duplicate points are
+ * merged (vertex ids then skip them; see cvm_mesh_copy_input_map()). An input
+ * point lying exactly in the interior of a segment splits it. Replaces any
+ * previous triangulation.
+ *
+ * Stops: triangulation cannot stop half-way; on a time limit or cancellation
+ * the mesh is left empty (count 0) and CVM_INCOMPLETE_* is returned.
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG
+ *         CVM_E_INPUT_EMPTY        no points, or carving left no triangle
+ *         CVM_E_INPUT_DEGENERATE   fewer than 3 distinct points, all points collinear, or a
+ *                                  zero-length segment (message gives segment k)
+ *         CVM_E_INPUT_INDEX        a segment names a point that does not exist
+ *         CVM_E_INPUT_DUPLICATE    duplicate points with CVM_OPT_REJECT_DUPLICATES
+ *         CVM_E_INPUT_INTERSECTING crossing segments with CVM_OPT_SPLIT_INTERSECTIONS = 0
+ *         CVM_E_INPUT_NOT_CLOSED   removing the exterior or a hole removed every triangle
+ *                                  (the boundary does not close)
+ *         CVM_E_INPUT_OUTSIDE      a hole point lies outside the convex hull
+ *         CVM_E_NOMEM, CVM_E_INTERNAL
+ *         CVM_INCOMPLETE_TIME_LIMIT, CVM_INCOMPLETE_CANCELLED
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_mesh_triangulate(cvm_mesh *m);
+
+/**
+ * Insert points into the current triangulation (Bowyer-Watson cavity,
+ * respecting segments: a cavity never crosses a constrained edge). A point
+ * outside the domain, on an existing vertex, or closer than @p min_dist to an
+ * existing vertex is rejected. A point exactly on a segment splits it.
+ *
+ * @param ids_out  count entries: the new vertex id of each point, or CVM_REJECTED;
+ *                 may be NULL.
+ * @param xy       2*count coordinates. Ownership: read only during the call.
+ * @param min_dist reject a point closer than this to an existing vertex; 0 rejects only
+ *                 exact coincidence. Units: length.
+ * Stops: points inserted before a stop stay; the rest get CVM_REJECTED.
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG, CVM_E_STATE (no triangulation yet)
+ *         CVM_E_INPUT_NONFINITE  a coordinate (message gives the point) or min_dist is not finite
+ *         CVM_E_ARGUMENT         min_dist < 0
+ *         CVM_E_NOMEM  (points inserted before it stay; their ids are written)
+ *         CVM_INCOMPLETE_TIME_LIMIT, CVM_INCOMPLETE_CANCELLED
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_mesh_insert_points(cvm_index *ids_out, cvm_mesh *m, const double *xy,
+                                          size_t count, double min_dist);
+
+/**
+ * Re-verify @p m with exact predicates: every triangle counter-clockwise,
+ * adjacency symmetric, each edge in at most two triangles, every input segment
+ * a union of mesh edges, every interior non-constrained edge locally Delaunay
+ * (in-circle), Euler characteristic consistent with the boundary.
+ * @return CVM_OK, CVM_E_NULL_ARG, CVM_E_STATE (nothing triangulated),
+ *         CVM_E_INTERNAL (message names the failed check and the triangle or edge)
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_mesh_check(cvm_mesh *m);
+
+/* ------------------------------------------------------------------------ */
+/* Output                                                                    */
+/* ------------------------------------------------------------------------ */
+
+/**
+ * Number of entities of a kind: vertices, triangles, edges, segments (of the
+ * output), input points/segments, holes, regions, merged duplicates.
+ * @return CVM_OK, CVM_E_NULL_ARG, CVM_E_ARGUMENT (kind has no count)
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_mesh_count(size_t *out, const cvm_mesh *m, cvm_entity kind);
+
+/**
+ * Copy vertex coordinates: 2 doubles per vertex.
+ * @param dst_len  capacity of dst in doubles; must be >= 2 * vertex count.
+ * @return CVM_OK, CVM_E_NULL_ARG, CVM_E_BUFFER_TOO_SMALL (nothing written)
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_mesh_copy_points(double *dst, size_t dst_len, const cvm_mesh *m);
+
+/**
+ * Copy connectivity: CVM_ENT_TRIANGLE (3 ids each, counter-clockwise),
+ * CVM_ENT_EDGE (2 ids, sorted by (lower, higher) id), CVM_ENT_SEGMENT (2 ids).
+ * Order is deterministic for given input and options.
+ * @param dst_len capacity in cvm_index entries.
+ * @return CVM_OK, CVM_E_NULL_ARG, CVM_E_ARGUMENT (kind), CVM_E_BUFFER_TOO_SMALL, CVM_E_NOMEM
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_mesh_copy_cells(cvm_index *dst, size_t dst_len, const cvm_mesh *m,
+                                       cvm_entity kind);
+
+/**
+ * Copy the neighbours of each triangle: 3 per triangle, neighbour k lies
+ * across the edge opposite vertex k, -1 on the domain boundary.
+ * @return CVM_OK, CVM_E_NULL_ARG, CVM_E_BUFFER_TOO_SMALL
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_mesh_copy_neighbors(cvm_index *dst, size_t dst_len, const cvm_mesh *m);
+
+/**
+ * Copy integer markers: CVM_ENT_VERTEX (input marker, or the marker of the
+ * segment a Steiner point lies on, else 0), CVM_ENT_SEGMENT (segment marker).
+ * @return CVM_OK, CVM_E_NULL_ARG, CVM_E_ARGUMENT, CVM_E_BUFFER_TOO_SMALL
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_mesh_copy_markers(int32_t *dst, size_t dst_len, const cvm_mesh *m,
+                                         cvm_entity kind);
+
+/**
+ * Copy the regional attribute of each triangle (0 outside every region).
+ * @return CVM_OK, CVM_E_NULL_ARG, CVM_E_BUFFER_TOO_SMALL
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_mesh_copy_triangle_attributes(double *dst, size_t dst_len,
+                                                     const cvm_mesh *m);
+
+/**
+ * Copy the point attributes of each vertex: nattr per vertex (see
+ * cvm_mesh_set_point_attributes()); *nattr_out receives nattr.
+ * @return CVM_OK, CVM_E_NULL_ARG, CVM_E_BUFFER_TOO_SMALL
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_mesh_copy_point_attributes(double *dst, size_t dst_len, size_t *nattr_out,
+                                                  const cvm_mesh *m);
+
+/**
+ * For each input point, the mesh vertex it became (a duplicate maps to the
+ * vertex of its first occurrence). count = CVM_ENT_INPUT_POINT.
+ * @return CVM_OK, CVM_E_NULL_ARG, CVM_E_STATE, CVM_E_BUFFER_TOO_SMALL
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_mesh_copy_input_map(cvm_index *dst, size_t dst_len, const cvm_mesh *m);
+
+/**
+ * Read-only view of the vertex coordinates (2 doubles per vertex), without a copy.
+ * Ownership: owned by @p m; valid until the next call that modifies @p m, or cvm_mesh_free().
+ * @return CVM_OK, CVM_E_NULL_ARG
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_mesh_view_points(const double **ptr_out, size_t *count_out,
+                                        const cvm_mesh *m);
+
+/**
+ * Write the mesh; the format follows the extension of @p path:
+ * .vtu (VTK XML unstructured grid), .msh (Gmsh 4.1 ASCII, segments tagged by
+ * marker as physical groups), .node (writes PREFIX.node, PREFIX.ele and
+ * PREFIX.edge beside each other, 0-based), .svg (a picture).
+ * Every file is written to a temporary name and renamed, so a failure never
+ * leaves a partial file.
+ * @return CVM_OK, CVM_E_NULL_ARG, CVM_E_STATE (nothing triangulated),
+ *         CVM_E_UNSUPPORTED (extension), CVM_E_IO_OPEN, CVM_E_IO_WRITE, CVM_E_NOMEM
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_mesh_write(cvm_mesh *m, const char *path);
+
+/* ------------------------------------------------------------------------ */
+/* Quality                                                                   */
+/* ------------------------------------------------------------------------ */
+
+/** Scalar quality measures of cvm_mesh_get_measure(). Values never change. */
+typedef enum cvm_measure {
+    CVM_MEASURE_MIN_ANGLE_DEG = 1,      /**< smallest triangle angle, degrees */
+    CVM_MEASURE_MAX_ANGLE_DEG = 2,      /**< largest triangle angle, degrees */
+    CVM_MEASURE_REGULAR_PCT = 3,        /**< % of angles in [55, 65] degrees */
+    CVM_MEASURE_OBTUSE_PCT = 4,         /**< % of triangles not containing their circumcentre
+                                             (an angle > 90 degrees: not well-centred) */
+    CVM_MEASURE_DEGREE6_PCT = 5,        /**< % of interior vertices of degree 6 */
+    CVM_MEASURE_MIN_DUAL_EDGE_RATIO = 6,/**< smallest Voronoi edge length over its primal edge
+                                             length, over interior edges */
+    CVM_MEASURE_MIN_EDGE = 7,           /**< shortest edge length */
+    CVM_MEASURE_MAX_EDGE = 8,           /**< longest edge length */
+    CVM_MEASURE_AREA = 9,               /**< total area */
+    CVM_MEASURE_MIN_AREA = 10           /**< smallest triangle area */
+} cvm_measure;
+
+/** Histograms of cvm_mesh_copy_histogram(). */
+typedef enum cvm_histogram {
+    CVM_HIST_ANGLE_DEG = 1, /**< 18 bins of 10 degrees: [0,10), ..., [170,180] */
+    CVM_HIST_DEGREE = 2     /**< 16 bins: interior vertex degree 0..14, and >= 15 */
+} cvm_histogram;
+
+/**
+ * Compute measure @p which of the current mesh (fresh each call; O(triangles)).
+ * @return CVM_OK, CVM_E_NULL_ARG, CVM_E_ARGUMENT (unknown measure), CVM_E_STATE (no triangles),
+ *         CVM_E_NOMEM
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_mesh_get_measure(double *out, cvm_mesh *m, cvm_measure which);
+
+/**
+ * Copy histogram @p which as counts (doubles, so one typemap serves all outputs).
+ * @param dst_len  capacity; CVM_HIST_ANGLE_DEG needs 18, CVM_HIST_DEGREE 16.
+ * @return CVM_OK, CVM_E_NULL_ARG, CVM_E_ARGUMENT, CVM_E_STATE, CVM_E_BUFFER_TOO_SMALL, CVM_E_NOMEM
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_mesh_copy_histogram(double *dst, size_t dst_len, cvm_mesh *m,
+                                           cvm_histogram which);
+
+#ifdef __cplusplus
+}
+#endif
+#endif /* CVMESH_H */

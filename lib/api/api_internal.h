@@ -1,0 +1,51 @@
+/*
+ * api_internal.h - the cvm_mesh handle behind include/cvmesh.h: the user's
+ * input (copied on set), options, and the triangulation built from them.
+ */
+#ifndef CVM_API_INTERNAL_H
+#define CVM_API_INTERNAL_H
+
+#include "common/common_internal.h"
+#include "delaunay/delaunay_internal.h"
+#include "io/io_internal.h"
+
+/* Options live in one table; index with cvm__option_slot(). */
+#define CVM__NOPTIONS 16
+
+struct cvm_mesh {
+    cvm__ctx ctx;
+    double opt[CVM__NOPTIONS];
+
+    /* input (owned copies) */
+    cvm__pslg in;
+
+    /* output */
+    int triangulated;        /* 1 once cvm_mesh_triangulate() succeeded */
+    cvm__tri2 tri;           /* vertices: input less duplicates, then Steiner points */
+    int32_t *input_map;      /* in.np entries: input point -> vertex */
+    size_t n_dup;
+    int32_t *vmark;          /* marker per vertex (tri.nv), grown with Steiner points */
+    double *vattr;           /* nattr per vertex, or NULL */
+    size_t cap_vmark, cap_vattr;
+    /* regional attributes per triangle live in tri.ta (NULL without regions) */
+};
+
+/* Slot of key in opt[], or -1 if the key is unknown. */
+int cvm__option_slot(cvm_option key);
+/* Fill opt[] with defaults. */
+void cvm__options_default(double *opt);
+/* Value of an option of m. */
+double cvm__opt(const cvm_mesh *m, cvm_option key);
+
+/* Begin a public call on m: clears the last error. */
+#define CVM__BEGIN(m) cvm__clear_error(&(m)->ctx)
+
+/* Forget the triangulation (input kept). */
+void cvm__mesh_drop_output(cvm_mesh *m);
+
+/* Gather the domain triangles (and edges, segments) of m into freshly
+ * allocated arrays of mo (freed with cvm__mesh_out_free). */
+cvm_status cvm__mesh_out_build(cvm_mesh *m, cvm__mesh_out *mo, int want_edges, int want_quality);
+void cvm__mesh_out_free(cvm_mesh *m, cvm__mesh_out *mo);
+
+#endif

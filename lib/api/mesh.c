@@ -1,0 +1,323 @@
+/* mesh.c - the cvm_mesh handle: creation, destruction, errors and the input setters. */
+#include <math.h>
+#include <string.h>
+
+#include "api_internal.h"
+
+static cvm_status create(cvm_mesh **out, cvm__ctx *proto)
+{
+    cvm_mesh *m = proto->alloc_fn(proto->payload, sizeof *m);
+    if (!m)
+        return CVM_E_NOMEM;
+    memset(m, 0, sizeof *m);
+    m->ctx = *proto;
+    cvm__options_default(m->opt);
+    cvm__tri2_init(&m->tri, &m->ctx);
+    *out = m;
+    return CVM_OK;
+}
+
+cvm_status cvm_mesh_create(cvm_mesh **out)
+{
+    cvm__ctx proto;
+    if (!out)
+        return CVM_E_NULL_ARG;
+    *out = NULL;
+    cvm__ctx_init_default(&proto);
+    return create(out, &proto);
+}
+
+cvm_status cvm_mesh_create_with_allocator(cvm_mesh **out, cvm_malloc_fn alloc_fn,
+                                          cvm_realloc_fn realloc_fn, cvm_free_fn free_fn,
+                                          void *payload)
+{
+    cvm__ctx proto;
+    if (!out)
+        return CVM_E_NULL_ARG;
+    *out = NULL;
+    if (!alloc_fn || !realloc_fn || !free_fn)
+        return CVM_E_NULL_ARG;
+    cvm__ctx_init_default(&proto);
+    proto.alloc_fn = alloc_fn;
+    proto.realloc_fn = realloc_fn;
+    proto.free_fn = free_fn;
+    proto.payload = payload;
+    return create(out, &proto);
+}
+
+void cvm__mesh_drop_output(cvm_mesh *m)
+{
+    cvm__tri2_clear(&m->tri);
+    m->triangulated = 0;
+    cvm__free(&m->ctx, m->input_map);
+    m->input_map = NULL;
+    m->n_dup = 0;
+}
+
+void cvm_mesh_free(cvm_mesh *m)
+{
+    cvm_free_fn f;
+    void *payload;
+    if (!m)
+        return;
+    cvm__pslg_free(&m->ctx, &m->in);
+    cvm__tri2_destroy(&m->tri);
+    cvm__free(&m->ctx, m->input_map);
+    cvm__free(&m->ctx, m->vmark);
+    cvm__free(&m->ctx, m->vattr);
+    f = m->ctx.free_fn;
+    payload = m->ctx.payload;
+    f(payload, m);
+}
+
+const char *cvm_mesh_errmsg(const cvm_mesh *m)
+{
+    if (!m)
+        return "no mesh handle";
+    return m->ctx.errmsg;
+}
+
+cvm_status cvm_mesh_error_item(cvm_entity *kind_out, int64_t *index_out, const cvm_mesh *m)
+{
+    if (!kind_out || !index_out || !m)
+        return CVM_E_NULL_ARG;
+    *kind_out = m->ctx.err_kind;
+    *index_out = m->ctx.err_index;
+    return CVM_OK;
+}
+
+cvm_status cvm_mesh_set_progress(cvm_mesh *m, cvm_progress_fn fn, int64_t every_n, void *payload)
+{
+    if (!m)
+        return CVM_E_NULL_ARG;
+    CVM__BEGIN(m);
+    if (!fn || every_n < 1) {
+        m->ctx.progress_fn = NULL;
+        m->ctx.progress_every = 0;
+        m->ctx.progress_payload = NULL;
+        return CVM_OK;
+    }
+    m->ctx.progress_fn = fn;
+    m->ctx.progress_every = every_n;
+    m->ctx.progress_payload = payload;
+    return CVM_OK;
+}
+
+/* Copy n*k doubles after checking they are finite; kind/what name the item. */
+static cvm_status copy_finite(cvm_mesh *m, double **dst, const double *src, size_t n, size_t k,
+                              cvm_entity kind, const char *what)
+{
+    size_t i, bytes;
+    double *p;
+    for (i = 0; i < n * k; i++)
+        if (!isfinite(src[i]))
+            return cvm__error(&m->ctx, CVM_E_INPUT_NONFINITE, kind, (int64_t)(i / k),
+                              "%s %lu has a non-finite value (component %lu)", what,
+                              (unsigned long)(i / k), (unsigned long)(i % k));
+    if (!cvm__mul_ok(n, k * sizeof(double), &bytes))
+        return cvm__error(&m->ctx, CVM_E_TOO_LARGE, kind, -1, "too many %ss", what);
+    p = cvm__malloc(&m->ctx, bytes);
+    if (!p)
+        return cvm__nomem(&m->ctx);
+    if (bytes)
+        memcpy(p, src, bytes);
+    *dst = p;
+    return CVM_OK;
+}
+
+cvm_status cvm_mesh_set_points(cvm_mesh *m, const double *coords, size_t count, int dim)
+{
+    double *p = NULL;
+    cvm_status s;
+    if (!m)
+        return CVM_E_NULL_ARG;
+    CVM__BEGIN(m);
+    if (!coords && count > 0)
+        return cvm__error(&m->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "coords is NULL");
+    if (dim != 2 && dim != 3)
+        return cvm__error(&m->ctx, CVM_E_ARGUMENT, CVM_ENT_NONE, -1,
+                          "dim must be 2 (or 3 in a later version), got %d", dim);
+    if (dim == 3)
+        return cvm__error(&m->ctx, CVM_E_UNSUPPORTED, CVM_ENT_NONE, -1,
+                          "3D point sets are not supported yet: the 3D kernel is planned");
+    if (count > (size_t)INT32_MAX / 4)
+        return cvm__error(&m->ctx, CVM_E_TOO_LARGE, CVM_ENT_INPUT_POINT, -1,
+                          "%lu points exceed the limit of %ld", (unsigned long)count,
+                          (long)(INT32_MAX / 4));
+    if ((s = copy_finite(m, &p, coords, count, 2, CVM_ENT_INPUT_POINT, "point")))
+        return s;
+    cvm__free(&m->ctx, m->in.xy);
+    cvm__free(&m->ctx, m->in.pmark);
+    cvm__free(&m->ctx, m->in.pattr);
+    m->in.xy = p;
+    m->in.np = count;
+    m->in.pmark = NULL;
+    m->in.pattr = NULL;
+    m->in.nattr = 0;
+    cvm__mesh_drop_output(m);
+    return CVM_OK;
+}
+
+cvm_status cvm_mesh_set_point_markers(cvm_mesh *m, const int32_t *markers, size_t count)
+{
+    int32_t *p;
+    if (!m)
+        return CVM_E_NULL_ARG;
+    CVM__BEGIN(m);
+    if (count == 0) {
+        cvm__free(&m->ctx, m->in.pmark);
+        m->in.pmark = NULL;
+        return CVM_OK;
+    }
+    if (!markers)
+        return cvm__error(&m->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "markers is NULL");
+    if (count != m->in.np)
+        return cvm__error(&m->ctx, CVM_E_ARGUMENT, CVM_ENT_NONE, -1,
+                          "%lu markers given for %lu points", (unsigned long)count,
+                          (unsigned long)m->in.np);
+    p = cvm__malloc(&m->ctx, count * sizeof *p);
+    if (!p)
+        return cvm__nomem(&m->ctx);
+    memcpy(p, markers, count * sizeof *p);
+    cvm__free(&m->ctx, m->in.pmark);
+    m->in.pmark = p;
+    cvm__mesh_drop_output(m);
+    return CVM_OK;
+}
+
+cvm_status cvm_mesh_set_point_attributes(cvm_mesh *m, const double *attrs, size_t count,
+                                         size_t nattr)
+{
+    double *p = NULL;
+    cvm_status s;
+    if (!m)
+        return CVM_E_NULL_ARG;
+    CVM__BEGIN(m);
+    if (count == 0 || nattr == 0) {
+        cvm__free(&m->ctx, m->in.pattr);
+        m->in.pattr = NULL;
+        m->in.nattr = 0;
+        return CVM_OK;
+    }
+    if (!attrs)
+        return cvm__error(&m->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "attrs is NULL");
+    if (count != m->in.np)
+        return cvm__error(&m->ctx, CVM_E_ARGUMENT, CVM_ENT_NONE, -1,
+                          "attributes given for %lu points, but there are %lu points",
+                          (unsigned long)count, (unsigned long)m->in.np);
+    if ((s = copy_finite(m, &p, attrs, count, nattr, CVM_ENT_INPUT_POINT, "point attribute of point")))
+        return s;
+    cvm__free(&m->ctx, m->in.pattr);
+    m->in.pattr = p;
+    m->in.nattr = nattr;
+    cvm__mesh_drop_output(m);
+    return CVM_OK;
+}
+
+cvm_status cvm_mesh_set_segments(cvm_mesh *m, const cvm_index *segs, size_t count)
+{
+    int32_t *p;
+    if (!m)
+        return CVM_E_NULL_ARG;
+    CVM__BEGIN(m);
+    if (!segs && count > 0)
+        return cvm__error(&m->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "segs is NULL");
+    if (count > (size_t)INT32_MAX / 4)
+        return cvm__error(&m->ctx, CVM_E_TOO_LARGE, CVM_ENT_INPUT_SEGMENT, -1, "too many segments");
+    p = NULL;
+    if (count) {
+        p = cvm__malloc(&m->ctx, 2 * count * sizeof *p);
+        if (!p)
+            return cvm__nomem(&m->ctx);
+        memcpy(p, segs, 2 * count * sizeof *p);
+    }
+    cvm__free(&m->ctx, m->in.seg);
+    cvm__free(&m->ctx, m->in.smark);
+    m->in.seg = p;
+    m->in.nseg = count;
+    m->in.smark = NULL;
+    cvm__mesh_drop_output(m);
+    return CVM_OK;
+}
+
+cvm_status cvm_mesh_set_segment_markers(cvm_mesh *m, const int32_t *markers, size_t count)
+{
+    int32_t *p;
+    if (!m)
+        return CVM_E_NULL_ARG;
+    CVM__BEGIN(m);
+    if (count == 0) {
+        cvm__free(&m->ctx, m->in.smark);
+        m->in.smark = NULL;
+        return CVM_OK;
+    }
+    if (!markers)
+        return cvm__error(&m->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "markers is NULL");
+    if (count != m->in.nseg)
+        return cvm__error(&m->ctx, CVM_E_ARGUMENT, CVM_ENT_NONE, -1,
+                          "%lu markers given for %lu segments", (unsigned long)count,
+                          (unsigned long)m->in.nseg);
+    p = cvm__malloc(&m->ctx, count * sizeof *p);
+    if (!p)
+        return cvm__nomem(&m->ctx);
+    memcpy(p, markers, count * sizeof *p);
+    cvm__free(&m->ctx, m->in.smark);
+    m->in.smark = p;
+    cvm__mesh_drop_output(m);
+    return CVM_OK;
+}
+
+cvm_status cvm_mesh_set_holes(cvm_mesh *m, const double *xy, size_t count)
+{
+    double *p = NULL;
+    cvm_status s;
+    if (!m)
+        return CVM_E_NULL_ARG;
+    CVM__BEGIN(m);
+    if (!xy && count > 0)
+        return cvm__error(&m->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "xy is NULL");
+    if ((s = copy_finite(m, &p, xy ? xy : (const double *)&m->opt[0], count, 2, CVM_ENT_HOLE, "hole")))
+        return s;
+    cvm__free(&m->ctx, m->in.holes);
+    m->in.holes = p;
+    m->in.nholes = count;
+    cvm__mesh_drop_output(m);
+    return CVM_OK;
+}
+
+cvm_status cvm_mesh_set_regions(cvm_mesh *m, const double *r, size_t count)
+{
+    double *p = NULL;
+    cvm_status s;
+    if (!m)
+        return CVM_E_NULL_ARG;
+    CVM__BEGIN(m);
+    if (!r && count > 0)
+        return cvm__error(&m->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "r is NULL");
+    if ((s = copy_finite(m, &p, r ? r : (const double *)&m->opt[0], count, 4, CVM_ENT_REGION, "region")))
+        return s;
+    cvm__free(&m->ctx, m->in.regions);
+    m->in.regions = p;
+    m->in.nregions = count;
+    cvm__mesh_drop_output(m);
+    return CVM_OK;
+}
+
+cvm_status cvm_mesh_read(cvm_mesh *m, const char *path)
+{
+    cvm__pslg p;
+    cvm_status s;
+    if (!m)
+        return CVM_E_NULL_ARG;
+    CVM__BEGIN(m);
+    if (!path)
+        return cvm__error(&m->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "path is NULL");
+    memset(&p, 0, sizeof p);
+    s = cvm__read_file(&m->ctx, path, &p);
+    if (s)
+        return s;
+    cvm__pslg_free(&m->ctx, &m->in);
+    m->in = p;
+    cvm__mesh_drop_output(m);
+    return CVM_OK;
+}

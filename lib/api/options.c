@@ -1,0 +1,100 @@
+/* options.c - the option table: keys, bounds, defaults, get and set. */
+#include <math.h>
+#include <string.h>
+
+#include "api_internal.h"
+
+typedef struct option_def {
+    cvm_option key;
+    const char *name;
+    cvm_bounds b;
+} option_def;
+
+/* One row per key; slot = row index. Never reorder released keys' meaning. */
+static const option_def k_options[] = {
+    {CVM_OPT_REJECT_DUPLICATES, "REJECT_DUPLICATES", {0, 1, 0, 1}},
+    {CVM_OPT_SPLIT_INTERSECTIONS, "SPLIT_INTERSECTIONS", {0, 1, 1, 1}},
+    {CVM_OPT_KEEP_CONVEX_HULL, "KEEP_CONVEX_HULL", {0, 1, 0, 1}},
+    {CVM_OPT_CONVEX_HULL_IF_NO_SEGMENTS, "CONVEX_HULL_IF_NO_SEGMENTS", {1, 1, 1, 1}},
+    {CVM_OPT_MIN_ANGLE_DEG, "MIN_ANGLE_DEG", {0, 40, 30, 0}},
+    {CVM_OPT_MAX_AREA, "MAX_AREA", {0, 1e300, 0, 0}},
+    {CVM_OPT_TIME_LIMIT_S, "TIME_LIMIT_S", {0, 1e9, 0, 0}},
+    {CVM_OPT_SEED, "SEED", {0, 9007199254740992.0, 1, 1}},
+    {CVM_OPT_MAX_STEINER, "MAX_STEINER", {0, 2147483647.0, 0, 1}},
+    {CVM_OPT_THREADS, "THREADS", {0, 1024, 0, 1}},
+};
+
+#define NOPT (sizeof k_options / sizeof k_options[0])
+
+typedef char option_table_fits[(NOPT <= CVM__NOPTIONS) ? 1 : -1];
+
+int cvm__option_slot(cvm_option key)
+{
+    size_t i;
+    for (i = 0; i < NOPT; i++)
+        if (k_options[i].key == key)
+            return (int)i;
+    return -1;
+}
+
+void cvm__options_default(double *opt)
+{
+    size_t i;
+    memset(opt, 0, CVM__NOPTIONS * sizeof *opt);
+    for (i = 0; i < NOPT; i++)
+        opt[i] = k_options[i].b.def;
+}
+
+double cvm__opt(const cvm_mesh *m, cvm_option key)
+{
+    int s = cvm__option_slot(key);
+    return s >= 0 ? m->opt[s] : 0.0;
+}
+
+cvm_status cvm_option_bounds(cvm_bounds *out, cvm_option key)
+{
+    int s;
+    if (!out)
+        return CVM_E_NULL_ARG;
+    s = cvm__option_slot(key);
+    if (s < 0)
+        return CVM_E_OPTION_KEY;
+    *out = k_options[s].b;
+    return CVM_OK;
+}
+
+cvm_status cvm_mesh_set_option(cvm_mesh *m, cvm_option key, double value)
+{
+    int s;
+    const cvm_bounds *b;
+    if (!m)
+        return CVM_E_NULL_ARG;
+    CVM__BEGIN(m);
+    s = cvm__option_slot(key);
+    if (s < 0)
+        return cvm__error(&m->ctx, CVM_E_OPTION_KEY, CVM_ENT_OPTION, (int64_t)key,
+                          "unknown option key %d", (int)key);
+    b = &k_options[s].b;
+    if (!(value >= b->lo && value <= b->hi))
+        return cvm__error(&m->ctx, CVM_E_OPTION_RANGE, CVM_ENT_OPTION, (int64_t)key,
+                          "option %s = %.17g is outside its bounds [%.17g, %.17g]",
+                          k_options[s].name, value, b->lo, b->hi);
+    if (b->is_integer && value != floor(value))
+        return cvm__error(&m->ctx, CVM_E_OPTION_RANGE, CVM_ENT_OPTION, (int64_t)key,
+                          "option %s = %.17g must be a whole number in [%.17g, %.17g]",
+                          k_options[s].name, value, b->lo, b->hi);
+    m->opt[s] = value;
+    return CVM_OK;
+}
+
+cvm_status cvm_mesh_get_option(double *out, const cvm_mesh *m, cvm_option key)
+{
+    int s;
+    if (!out || !m)
+        return CVM_E_NULL_ARG;
+    s = cvm__option_slot(key);
+    if (s < 0)
+        return CVM_E_OPTION_KEY;
+    *out = m->opt[s];
+    return CVM_OK;
+}

@@ -1,0 +1,364 @@
+/* triangulate.c - cvm_mesh_triangulate (Delaunay / constrained Delaunay of the input), point insertion and checking. */
+#include <math.h>
+#include <string.h>
+
+#include "api_internal.h"
+
+/* Grow the per-vertex marker and attribute arrays to the kernel's vertex count. */
+static cvm_status grow_vertex_data(cvm_mesh *m)
+{
+    size_t nv = m->tri.nv, na = m->in.nattr;
+    if (nv > m->cap_vmark &&
+        cvm__grow(&m->ctx, (void **)&m->vmark, &m->cap_vmark, nv, sizeof(int32_t)))
+        return CVM_E_NOMEM;
+    if (na && nv * na > m->cap_vattr &&
+        cvm__grow(&m->ctx, (void **)&m->vattr, &m->cap_vattr, nv * na, sizeof(double)))
+        return CVM_E_NOMEM;
+    return CVM_OK;
+}
+
+static int32_t seg_marker(const cvm_mesh *m, int32_t seg)
+{
+    if (seg < 0 || (size_t)seg >= m->in.nseg)
+        return 0;
+    return m->in.smark ? m->in.smark[seg] : 1;
+}
+
+/* Marker and attributes of Steiner vertices from..nv-1 created on segment k. */
+static void steiner_data(cvm_mesh *m, size_t from, int32_t k)
+{
+    size_t v, na = m->in.nattr, i;
+    const int32_t *s = m->in.seg + 2 * (size_t)k;
+    const double *pa = m->in.xy + 2 * (size_t)s[0], *pb = m->in.xy + 2 * (size_t)s[1];
+    double len2 = (pb[0] - pa[0]) * (pb[0] - pa[0]) + (pb[1] - pa[1]) * (pb[1] - pa[1]);
+    for (v = from; v < m->tri.nv; v++) {
+        const double *p = m->tri.xy + 2 * v;
+        double t = len2 > 0 ? ((p[0] - pa[0]) * (pb[0] - pa[0]) + (p[1] - pa[1]) * (pb[1] - pa[1])) / len2 : 0;
+        m->vmark[v] = seg_marker(m, k);
+        if (t < 0)
+            t = 0;
+        if (t > 1)
+            t = 1;
+        for (i = 0; i < na; i++)
+            m->vattr[v * na + i] = (1 - t) * m->in.pattr[s[0] * na + i] + t * m->in.pattr[s[1] * na + i];
+    }
+}
+
+static size_t count_domain(const cvm__tri2 *T)
+{
+    size_t t, n = 0;
+    for (t = 0; t < T->nt; t++)
+        n += cvm__tri2_in_domain(T, (int32_t)t);
+    return n;
+}
+
+static cvm_status check_segments(cvm_mesh *m)
+{
+    size_t k;
+    for (k = 0; k < m->in.nseg; k++) {
+        int32_t a = m->in.seg[2 * k], b = m->in.seg[2 * k + 1];
+        if (a < 0 || b < 0 || (size_t)a >= m->in.np || (size_t)b >= m->in.np)
+            return cvm__error(&m->ctx, CVM_E_INPUT_INDEX, CVM_ENT_INPUT_SEGMENT, (int64_t)k,
+                              "segment %lu (points %ld-%ld) names a point that does not exist "
+                              "(there are %lu points)",
+                              (unsigned long)k, (long)a, (long)b, (unsigned long)m->in.np);
+    }
+    return CVM_OK;
+}
+
+static cvm_status recover_segments(cvm_mesh *m)
+{
+    cvm__tri2 *T = &m->tri;
+    size_t k;
+    int split = cvm__opt(m, CVM_OPT_SPLIT_INTERSECTIONS) != 0;
+    cvm_status s;
+    for (k = 0; k < m->in.nseg; k++) {
+        int32_t ia = m->in.seg[2 * k], ib = m->in.seg[2 * k + 1];
+        int32_t a = m->input_map[ia], b = m->input_map[ib], other = -1;
+        size_t nv0 = T->nv;
+        if (a == b)
+            return cvm__error(&m->ctx, CVM_E_INPUT_DEGENERATE, CVM_ENT_INPUT_SEGMENT, (int64_t)k,
+                              "segment %lu (points %ld-%ld) has zero length", (unsigned long)k,
+                              (long)ia, (long)ib);
+        s = cvm__tri2_insert_segment(T, a, b, (int32_t)k, split, &other);
+        if (s == CVM_E_INPUT_INTERSECTING) {
+            const int32_t *o = m->in.seg + 2 * (size_t)other;
+            return cvm__error(&m->ctx, s, CVM_ENT_INPUT_SEGMENT, (int64_t)k,
+                              "segment %lu (points %ld-%ld) crosses segment %ld (points %ld-%ld) in "
+                              "its interior",
+                              (unsigned long)k, (long)ia, (long)ib, (long)other, (long)o[0],
+                              (long)o[1]);
+        }
+        if (s == CVM_E_NOMEM)
+            return cvm__nomem(&m->ctx);
+        if (s)
+            return s;
+        if (T->nv > nv0) {
+            if (grow_vertex_data(m))
+                return cvm__nomem(&m->ctx);
+            steiner_data(m, nv0, (int32_t)k);
+        }
+        s = cvm__tick(&m->ctx, 1, CVM_STAGE_RECOVER_SEGMENTS, (double)k / (double)m->in.nseg);
+        if (s)
+            return cvm__error(&m->ctx, s, CVM_ENT_NONE, -1, "%s during segment recovery; the mesh is empty",
+                              s == CVM_INCOMPLETE_CANCELLED ? "cancelled" : "time limit reached");
+    }
+    return CVM_OK;
+}
+
+/* Locate a seed point: the domain triangle containing it, or -1 outside. */
+static int32_t seed_triangle(cvm_mesh *m, const double *p)
+{
+    int32_t t;
+    int j;
+    cvm__loc loc = cvm__tri2_locate(&m->tri, p, -1, &t, &j);
+    if (loc == CVM__LOC_OUTSIDE || t < 0)
+        return -1;
+    return t;
+}
+
+static cvm_status carve(cvm_mesh *m)
+{
+    cvm__tri2 *T = &m->tri;
+    size_t k;
+    int keep = cvm__opt(m, CVM_OPT_KEEP_CONVEX_HULL) != 0 || m->in.nseg == 0;
+    cvm_status s = cvm__tri2_flood_out(T, NULL, 0, !keep);
+    if (s)
+        return cvm__nomem(&m->ctx);
+    if (count_domain(T) == 0)
+        return cvm__error(&m->ctx, CVM_E_INPUT_NOT_CLOSED, CVM_ENT_NONE, -1,
+                          "removing the exterior removed every triangle: the segments do not "
+                          "enclose a region (open boundary)");
+    for (k = 0; k < m->in.nholes; k++) {
+        const double *h = m->in.holes + 2 * k;
+        int32_t t = seed_triangle(m, h);
+        if (t < 0)
+            return cvm__error(&m->ctx, CVM_E_INPUT_OUTSIDE, CVM_ENT_HOLE, (int64_t)k,
+                              "hole %lu at (%.17g, %.17g) lies outside the convex hull of the points",
+                              (unsigned long)k, h[0], h[1]);
+        if ((s = cvm__tri2_flood_out(T, &t, 1, 0)))
+            return cvm__nomem(&m->ctx);
+        if (count_domain(T) == 0)
+            return cvm__error(&m->ctx, CVM_E_INPUT_NOT_CLOSED, CVM_ENT_HOLE, (int64_t)k,
+                              "hole %lu at (%.17g, %.17g) removed every triangle: the boundary "
+                              "around it is not closed",
+                              (unsigned long)k, h[0], h[1]);
+    }
+    for (k = 0; k < m->in.nregions; k++) {
+        const double *r = m->in.regions + 4 * k;
+        int32_t t = seed_triangle(m, r);
+        if (t < 0 || !cvm__tri2_in_domain(T, t))
+            return cvm__error(&m->ctx, CVM_E_INPUT_OUTSIDE, CVM_ENT_REGION, (int64_t)k,
+                              "region %lu at (%.17g, %.17g) lies outside the domain",
+                              (unsigned long)k, r[0], r[1]);
+        if ((s = cvm__tri2_flood_attribute(T, t, r[2])))
+            return cvm__nomem(&m->ctx);
+    }
+    return CVM_OK;
+}
+
+/* Vertices on constrained edges with marker 0 take the segment's marker. */
+static void boundary_vertex_markers(cvm_mesh *m)
+{
+    const cvm__tri2 *T = &m->tri;
+    size_t t;
+    int j;
+    if (!T->te)
+        return;
+    for (t = 0; t < T->nt; t++) {
+        if (!cvm__tri2_in_domain(T, (int32_t)t))
+            continue;
+        for (j = 0; j < 3; j++) {
+            int32_t seg = T->te[3 * t + j];
+            int k;
+            if (seg < 0)
+                continue;
+            for (k = 1; k <= 2; k++) {
+                int32_t v = T->tv[3 * t + (j + k) % 3];
+                if (m->vmark[v] == 0)
+                    m->vmark[v] = seg_marker(m, seg);
+            }
+        }
+    }
+}
+
+static cvm_status triangulate(cvm_mesh *m)
+{
+    cvm__tri2 *T = &m->tri;
+    size_t i, n = m->in.np, na = m->in.nattr;
+    int32_t *dup_of = NULL;
+    cvm_status s;
+
+    if ((s = check_segments(m)))
+        return s;
+    if ((s = cvm__tri2_reserve_vertices(T, n)))
+        return s == CVM_E_NOMEM ? cvm__nomem(&m->ctx) : cvm__error(&m->ctx, s, CVM_ENT_NONE, -1, "too many points");
+    for (i = 0; i < n; i++) {
+        int32_t id;
+        if ((s = cvm__tri2_add_vertex(T, m->in.xy + 2 * i, &id)))
+            return cvm__nomem(&m->ctx);
+    }
+    dup_of = cvm__malloc(&m->ctx, n * sizeof *dup_of);
+    m->input_map = cvm__malloc(&m->ctx, n * sizeof *m->input_map);
+    if (!dup_of || !m->input_map) {
+        cvm__free(&m->ctx, dup_of);
+        return cvm__nomem(&m->ctx);
+    }
+    s = cvm__tri2_build(T, (uint64_t)cvm__opt(m, CVM_OPT_SEED), dup_of);
+    if (s) {
+        cvm__free(&m->ctx, dup_of);
+        return s;
+    }
+    m->n_dup = 0;
+    for (i = 0; i < n; i++) {
+        if (dup_of[i] < 0)
+            continue;
+        if (cvm__opt(m, CVM_OPT_REJECT_DUPLICATES) != 0) {
+            s = cvm__error(&m->ctx, CVM_E_INPUT_DUPLICATE, CVM_ENT_INPUT_POINT, (int64_t)i,
+                           "point %lu at (%.17g, %.17g) duplicates point %ld", (unsigned long)i,
+                           m->in.xy[2 * i], m->in.xy[2 * i + 1], (long)dup_of[i]);
+            cvm__free(&m->ctx, dup_of);
+            return s;
+        }
+        m->n_dup++;
+    }
+    cvm__tri2_compact(T, dup_of, m->input_map);
+    cvm__free(&m->ctx, dup_of);
+    if (grow_vertex_data(m))
+        return cvm__nomem(&m->ctx);
+    /* first occurrences win: write them last */
+    for (i = n; i-- > 0;) {
+        int32_t v = m->input_map[i];
+        size_t k;
+        m->vmark[v] = m->in.pmark ? m->in.pmark[i] : 0;
+        for (k = 0; k < na; k++)
+            m->vattr[(size_t)v * na + k] = m->in.pattr[i * na + k];
+    }
+    if (m->in.nseg) {
+        if ((s = recover_segments(m)))
+            return s;
+    }
+    if (m->in.nseg || m->in.nholes || m->in.nregions) {
+        if ((s = carve(m)))
+            return s;
+    }
+    boundary_vertex_markers(m);
+    return CVM_OK;
+}
+
+cvm_status cvm_mesh_triangulate(cvm_mesh *m)
+{
+    cvm_status s;
+    if (!m)
+        return CVM_E_NULL_ARG;
+    CVM__BEGIN(m);
+    cvm__mesh_drop_output(m);
+    if (m->in.np == 0)
+        return cvm__error(&m->ctx, CVM_E_INPUT_EMPTY, CVM_ENT_INPUT_POINT, -1, "no input points");
+    cvm__run_begin(&m->ctx, cvm__opt(m, CVM_OPT_TIME_LIMIT_S));
+    s = triangulate(m);
+    if (s) {
+        cvm__mesh_drop_output(m);
+        return s;
+    }
+    m->triangulated = 1;
+    return CVM_OK;
+}
+
+cvm_status cvm_mesh_insert_points(cvm_index *ids_out, cvm_mesh *m, const double *xy, size_t count,
+                                  double min_dist)
+{
+    cvm__tri2 *T;
+    size_t i;
+    cvm_status s = CVM_OK;
+    if (!m)
+        return CVM_E_NULL_ARG;
+    CVM__BEGIN(m);
+    T = &m->tri;
+    if (!xy && count > 0)
+        return cvm__error(&m->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "xy is NULL");
+    if (!m->triangulated)
+        return cvm__error(&m->ctx, CVM_E_STATE, CVM_ENT_NONE, -1,
+                          "no triangulation: call cvm_mesh_triangulate() first");
+    if (!isfinite(min_dist))
+        return cvm__error(&m->ctx, CVM_E_INPUT_NONFINITE, CVM_ENT_NONE, -1, "min_dist is not finite");
+    if (min_dist < 0)
+        return cvm__error(&m->ctx, CVM_E_ARGUMENT, CVM_ENT_NONE, -1, "min_dist %.17g is negative",
+                          min_dist);
+    for (i = 0; i < 2 * count; i++)
+        if (!isfinite(xy[i]))
+            return cvm__error(&m->ctx, CVM_E_INPUT_NONFINITE, CVM_ENT_INPUT_POINT, (int64_t)(i / 2),
+                              "point %lu has a non-finite %c", (unsigned long)(i / 2),
+                              i % 2 ? 'y' : 'x');
+    if (ids_out)
+        for (i = 0; i < count; i++)
+            ids_out[i] = CVM_REJECTED;
+    cvm__run_begin(&m->ctx, cvm__opt(m, CVM_OPT_TIME_LIMIT_S));
+    for (i = 0; i < count; i++) {
+        int32_t v, other;
+        cvm__ins res;
+        if ((s = cvm__tri2_add_vertex(T, xy + 2 * i, &v)))
+            return s == CVM_E_NOMEM ? cvm__nomem(&m->ctx)
+                                    : cvm__error(&m->ctx, s, CVM_ENT_INPUT_POINT, (int64_t)i, "too many vertices");
+        if (grow_vertex_data(m)) {
+            T->nv--;
+            return cvm__nomem(&m->ctx);
+        }
+        s = cvm__tri2_insert_vertex(T, v, T->last, CVM__INSF_DOMAIN_ONLY, min_dist, &res, &other);
+        if (s) {
+            T->nv--;
+            return s == CVM_E_NOMEM ? cvm__nomem(&m->ctx)
+                                    : cvm__error(&m->ctx, s, CVM_ENT_INPUT_POINT, (int64_t)i,
+                                                 "inserting point %lu failed", (unsigned long)i);
+        }
+        if (res != CVM__INS_DONE) {
+            T->nv--;
+            continue;
+        }
+        m->vmark[v] = 0;
+        if (m->in.nattr)
+            memset(m->vattr + (size_t)v * m->in.nattr, 0, m->in.nattr * sizeof(double));
+        if (ids_out)
+            ids_out[i] = v;
+        s = cvm__tick(&m->ctx, 1, CVM_STAGE_INSERT, (double)i / (double)count);
+        if (s)
+            return cvm__error(&m->ctx, s, CVM_ENT_INPUT_POINT, (int64_t)i,
+                              "%s after point %lu; points after it were not inserted",
+                              s == CVM_INCOMPLETE_CANCELLED ? "cancelled" : "time limit reached",
+                              (unsigned long)i);
+    }
+    return CVM_OK;
+}
+
+cvm_status cvm_mesh_check(cvm_mesh *m)
+{
+    const cvm__tri2 *T;
+    size_t t;
+    int j;
+    cvm_status s;
+    if (!m)
+        return CVM_E_NULL_ARG;
+    CVM__BEGIN(m);
+    if (!m->triangulated)
+        return cvm__error(&m->ctx, CVM_E_STATE, CVM_ENT_NONE, -1, "nothing triangulated");
+    if ((s = cvm__tri2_check(&m->tri)))
+        return s;
+    T = &m->tri;
+    /* the domain is bounded by constrained edges or by the convex hull */
+    for (t = 0; t < T->nt; t++) {
+        if (!cvm__tri2_in_domain(T, (int32_t)t))
+            continue;
+        for (j = 0; j < 3; j++) {
+            int32_t u = T->tn[3 * t + j] / 3;
+            if (cvm__tri2_in_domain(T, u) || cvm__tri2_edge_seg(T, (int32_t)t, j) >= 0)
+                continue;
+            if (cvm__tri2_is_ghost(T, u) && (m->in.nseg == 0 || cvm__opt(m, CVM_OPT_KEEP_CONVEX_HULL) != 0))
+                continue;
+            return cvm__error(&m->ctx, CVM_E_INTERNAL, CVM_ENT_TRIANGLE, (int64_t)t,
+                              "check failed: triangle slot %lu borders the outside across an "
+                              "unconstrained edge",
+                              (unsigned long)t);
+        }
+    }
+    return CVM_OK;
+}

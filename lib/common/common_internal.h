@@ -1,0 +1,86 @@
+/*
+ * common_internal.h - the per-handle context shared by every module: allocator
+ * hooks, the last error (status, message, offending item) and run control
+ * (progress callback, time limit, cancellation).
+ */
+#ifndef CVM_COMMON_INTERNAL_H
+#define CVM_COMMON_INTERNAL_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include "cvmesh.h"
+
+#define CVM__ERRMSG_LEN 512
+
+#if defined(__GNUC__)
+#  define CVM__PRINTF(f, a) __attribute__((format(printf, f, a)))
+#else
+#  define CVM__PRINTF(f, a)
+#endif
+
+/* Context owned by a handle; never shared between handles. */
+typedef struct cvm__ctx {
+    cvm_malloc_fn alloc_fn;
+    cvm_realloc_fn realloc_fn;
+    cvm_free_fn free_fn;
+    void *payload;
+
+    cvm_status status;          /* status of the last failing call */
+    cvm_entity err_kind;        /* item named by the last error */
+    int64_t err_index;
+    char errmsg[CVM__ERRMSG_LEN];
+
+    cvm_progress_fn progress_fn;
+    void *progress_payload;
+    int64_t progress_every;     /* < 1: no callback */
+    int64_t ops;                /* operations since the last check */
+    double deadline;            /* monotonic seconds; 0 = none */
+} cvm__ctx;
+
+/* Initialise with the C library allocator (payload ignored). */
+void cvm__ctx_init_default(cvm__ctx *ctx);
+
+/* Allocation through the handle's hooks. Each returns NULL on failure and
+ * never sets an error itself; callers return cvm__nomem(ctx). A size of 0
+ * allocates 1 byte so that NULL always means failure. */
+void *cvm__malloc(cvm__ctx *ctx, size_t size);
+void *cvm__calloc(cvm__ctx *ctx, size_t n, size_t size);
+void *cvm__realloc(cvm__ctx *ctx, void *p, size_t size);
+void cvm__free(cvm__ctx *ctx, void *p);
+/* Multiply n*size with overflow check; returns 0 on overflow. */
+int cvm__mul_ok(size_t n, size_t size, size_t *out);
+/* Grow *p (of element size elem) so that it holds at least need elements; the
+ * capacity *cap grows geometrically. Returns CVM_OK or CVM_E_NOMEM (and *p,
+ * *cap unchanged). */
+cvm_status cvm__grow(cvm__ctx *ctx, void **p, size_t *cap, size_t need, size_t elem);
+
+/* Record an error (or incomplete status) with a message naming item
+ * (kind, index); returns s so that callers can write return cvm__error(...). */
+cvm_status cvm__error(cvm__ctx *ctx, cvm_status s, cvm_entity kind, int64_t index,
+                      const char *fmt, ...) CVM__PRINTF(5, 6);
+/* Out of memory with a standard message. */
+cvm_status cvm__nomem(cvm__ctx *ctx);
+/* Forget the last error: called at the start of every public call. */
+void cvm__clear_error(cvm__ctx *ctx);
+
+/* Monotonic clock, seconds. */
+double cvm__now(void);
+
+/* Arm run control for one long call: time_limit_s 0 = none. */
+void cvm__run_begin(cvm__ctx *ctx, double time_limit_s);
+/* Count n elementary operations; every progress_every operations (1024 when
+ * no callback) call the callback and check the clock. Returns CVM_OK, or
+ * CVM_INCOMPLETE_CANCELLED / CVM_INCOMPLETE_TIME_LIMIT (without a message;
+ * the caller says what the stop left). */
+cvm_status cvm__tick(cvm__ctx *ctx, int64_t n, cvm_stage stage, double fraction);
+
+/* Small deterministic random stream (xoshiro256** seeded by splitmix64). */
+typedef struct cvm__rng { uint64_t s[4]; } cvm__rng;
+void cvm__rng_seed(cvm__rng *r, uint64_t seed);
+uint64_t cvm__rng_next(cvm__rng *r);
+/* Uniform in [0, n). */
+uint64_t cvm__rng_below(cvm__rng *r, uint64_t n);
+/* Uniform double in [0, 1). */
+double cvm__rng_uniform(cvm__rng *r);
+
+#endif

@@ -1,0 +1,119 @@
+/* ctx.c - allocation hooks and error recording of the per-handle context. */
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "common_internal.h"
+
+static void *default_malloc(void *payload, size_t size)
+{
+    (void)payload;
+    return malloc(size);
+}
+
+static void *default_realloc(void *payload, void *p, size_t size)
+{
+    (void)payload;
+    return realloc(p, size);
+}
+
+static void default_free(void *payload, void *p)
+{
+    (void)payload;
+    free(p);
+}
+
+void cvm__ctx_init_default(cvm__ctx *ctx)
+{
+    memset(ctx, 0, sizeof *ctx);
+    ctx->alloc_fn = default_malloc;
+    ctx->realloc_fn = default_realloc;
+    ctx->free_fn = default_free;
+}
+
+void *cvm__malloc(cvm__ctx *ctx, size_t size)
+{
+    return ctx->alloc_fn(ctx->payload, size ? size : 1);
+}
+
+void *cvm__calloc(cvm__ctx *ctx, size_t n, size_t size)
+{
+    size_t bytes;
+    void *p;
+    if (!cvm__mul_ok(n, size, &bytes))
+        return NULL;
+    p = cvm__malloc(ctx, bytes);
+    if (p)
+        memset(p, 0, bytes);
+    return p;
+}
+
+void *cvm__realloc(cvm__ctx *ctx, void *p, size_t size)
+{
+    if (!p)
+        return cvm__malloc(ctx, size);
+    return ctx->realloc_fn(ctx->payload, p, size ? size : 1);
+}
+
+void cvm__free(cvm__ctx *ctx, void *p)
+{
+    if (p)
+        ctx->free_fn(ctx->payload, p);
+}
+
+int cvm__mul_ok(size_t n, size_t size, size_t *out)
+{
+    if (size && n > (size_t)-1 / size)
+        return 0;
+    *out = n * size;
+    return 1;
+}
+
+cvm_status cvm__grow(cvm__ctx *ctx, void **p, size_t *cap, size_t need, size_t elem)
+{
+    size_t ncap, bytes;
+    void *q;
+    if (need <= *cap && *p)
+        return CVM_OK;
+    ncap = *cap < 16 ? 16 : *cap;
+    while (ncap < need) {
+        if (ncap > (size_t)-1 / 2)
+            return CVM_E_NOMEM;
+        ncap += ncap / 2 + 8;
+    }
+    if (!cvm__mul_ok(ncap, elem, &bytes))
+        return CVM_E_NOMEM;
+    q = cvm__realloc(ctx, *p, bytes);
+    if (!q)
+        return CVM_E_NOMEM;
+    *p = q;
+    *cap = ncap;
+    return CVM_OK;
+}
+
+cvm_status cvm__error(cvm__ctx *ctx, cvm_status s, cvm_entity kind, int64_t index,
+                      const char *fmt, ...)
+{
+    va_list ap;
+    ctx->status = s;
+    ctx->err_kind = kind;
+    ctx->err_index = index;
+    va_start(ap, fmt);
+    vsnprintf(ctx->errmsg, sizeof ctx->errmsg, fmt, ap);
+    va_end(ap);
+    return s;
+}
+
+cvm_status cvm__nomem(cvm__ctx *ctx)
+{
+    return cvm__error(ctx, CVM_E_NOMEM, CVM_ENT_NONE, -1, "out of memory");
+}
+
+void cvm__clear_error(cvm__ctx *ctx)
+{
+    ctx->status = CVM_OK;
+    ctx->err_kind = CVM_ENT_NONE;
+    ctx->err_index = -1;
+    ctx->errmsg[0] = '\0';
+}

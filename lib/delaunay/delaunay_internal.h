@@ -1,0 +1,189 @@
+/*
+ * delaunay_internal.h - the 2D triangulation kernel: a triangulation of the
+ * convex hull kept in compact arrays, closed by ghost triangles that share the
+ * vertex at infinity (CVM__GHOST), with Bowyer-Watson insertion, segment
+ * recovery (constrained Delaunay) and domain carving.
+ *
+ * Layout. Triangle t has vertices tv[3t..3t+2], counter-clockwise. Edge j of t
+ * is the edge opposite vertex j, i.e. (tv[3t+(j+1)%3], tv[3t+(j+2)%3]).
+ * tn[3t+j] = 3u+k says that edge j of t is edge k of triangle u. A ghost
+ * triangle has tv[3t+0] == CVM__GHOST... no: the ghost vertex may sit at any
+ * position; use cvm__tri2_is_ghost(). Dead (freed) triangles carry
+ * CVM__TF_DEAD and are chained through tn[3t] into the free list.
+ *
+ * Constrained edges: when te != NULL, te[3t+j] is the index of the input
+ * segment edge j of t lies on (>= 0), or -1. Both sides of an edge carry the
+ * same value. Triangles outside the domain (exterior, holes) stay in the
+ * structure with CVM__TF_OUT, so insertion is uniform; outputs skip them.
+ *
+ * Weights: when w != NULL, w[v] is the power weight of vertex v and every
+ * in-circle decision becomes the power test (regular triangulation).
+ *
+ * Determinism: every decision depends only on coordinates, weights and
+ * vertex indices (symbolic perturbation by index), never on addresses.
+ */
+#ifndef CVM_DELAUNAY_INTERNAL_H
+#define CVM_DELAUNAY_INTERNAL_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include "common/common_internal.h"
+
+#define CVM__GHOST (-1)
+
+enum {
+    CVM__TF_DEAD = 1,   /* slot is on the free list */
+    CVM__TF_OUT = 2,    /* outside the domain (exterior or hole) */
+    CVM__TF_MARK = 4,   /* scratch: in the current cavity / visited */
+    CVM__TF_MARK2 = 8   /* scratch */
+};
+
+typedef struct cvm__tri2 {
+    cvm__ctx *ctx;
+    /* vertices */
+    double *xy;        /* 2 per vertex */
+    int32_t *vtri;     /* a live triangle incident to each vertex, or -1 */
+    double *w;         /* NULL, or a weight per vertex */
+    size_t nv, cap_v;   /* w, when not NULL, has cap_v entries too */
+    /* triangles */
+    int32_t *tv;       /* 3 per triangle */
+    int32_t *tn;       /* 3 per triangle */
+    uint8_t *tf;       /* flags per triangle */
+    int32_t *te;       /* NULL, or 3 per triangle: input segment of each edge, -1 */
+    double *ta;        /* NULL, or a regional attribute per triangle (inherited on insertion) */
+    size_t nt, cap_t;  /* slots in use (live + dead), capacity */
+    int32_t free_head; /* first dead slot, -1 if none */
+    size_t n_dead;
+    int32_t last;      /* start of the next walk */
+    /* scratch for cavities */
+    int32_t *stack; size_t cap_stack;
+    int32_t *cav;   size_t cap_cav;   /* triangles of the cavity */
+    int32_t *bnd;   size_t cap_bnd;   /* boundary edges of the cavity, CVM__BND_STRIDE ints each */
+    double *bta;    size_t cap_bta;   /* attribute of the triangle behind each boundary edge */
+} cvm__tri2;
+
+static inline int cvm__tri2_is_ghost(const cvm__tri2 *T, int32_t t)
+{
+    const int32_t *v = T->tv + 3 * (size_t)t;
+    return v[0] == CVM__GHOST || v[1] == CVM__GHOST || v[2] == CVM__GHOST;
+}
+
+static inline int cvm__tri2_is_live(const cvm__tri2 *T, int32_t t)
+{
+    return !(T->tf[t] & CVM__TF_DEAD);
+}
+
+/* A real (non-ghost) live triangle inside the domain. */
+static inline int cvm__tri2_in_domain(const cvm__tri2 *T, int32_t t)
+{
+    return !(T->tf[t] & (CVM__TF_DEAD | CVM__TF_OUT)) && !cvm__tri2_is_ghost(T, t);
+}
+
+static inline int cvm__tri2_edge_seg(const cvm__tri2 *T, int32_t t, int j)
+{
+    return T->te ? T->te[3 * (size_t)t + j] : -1;
+}
+
+void cvm__tri2_init(cvm__tri2 *T, cvm__ctx *ctx);
+void cvm__tri2_destroy(cvm__tri2 *T);
+/* Drop every vertex and triangle, keep the capacity. */
+void cvm__tri2_clear(cvm__tri2 *T);
+
+/* Make room for need vertices: CVM_OK, CVM_E_NOMEM or CVM_E_TOO_LARGE. */
+cvm_status cvm__tri2_reserve_vertices(cvm__tri2 *T, size_t need);
+
+/* Append a vertex (not yet inserted into the triangulation). Returns CVM_OK
+ * or CVM_E_NOMEM / CVM_E_TOO_LARGE. *id_out receives its index. */
+cvm_status cvm__tri2_add_vertex(cvm__tri2 *T, const double *p, int32_t *id_out);
+
+/* Build the Delaunay triangulation of all vertices 0..nv-1 added so far,
+ * inserted in a biased randomised (BRIO) Hilbert order drawn from seed.
+ * dup_of (nv entries, caller's) receives for each vertex -1, or the vertex it
+ * duplicates exactly (a duplicate is not inserted and has vtri -1).
+ * Returns CVM_OK; CVM_E_INPUT_DEGENERATE (fewer than 3 distinct points, or all
+ * collinear: message says so); CVM_E_NOMEM; CVM_INCOMPLETE_* from the ticker
+ * (the triangulation is then cleared of triangles). */
+cvm_status cvm__tri2_build(cvm__tri2 *T, uint64_t seed, int32_t *dup_of);
+
+/* Results of locating a point. */
+typedef enum cvm__loc {
+    CVM__LOC_INSIDE = 0,   /* strictly inside triangle *t_out */
+    CVM__LOC_EDGE = 1,     /* on the interior of edge *j_out of *t_out */
+    CVM__LOC_VERTEX = 2,   /* on vertex tv[3*t+j] (j = *j_out) */
+    CVM__LOC_OUTSIDE = 3   /* outside the convex hull: *t_out is a ghost triangle whose
+                              hull edge sees p */
+} cvm__loc;
+
+/* Walk from triangle start (or T->last when start < 0) to p. */
+cvm__loc cvm__tri2_locate(cvm__tri2 *T, const double *p, int32_t start, int32_t *t_out,
+                          int *j_out);
+
+/* Outcome of cvm__tri2_insert_vertex(). */
+typedef enum cvm__ins {
+    CVM__INS_DONE = 0,      /* inserted */
+    CVM__INS_DUPLICATE = 1, /* coincides with vertex *other_out; not inserted */
+    CVM__INS_OUTSIDE = 2,   /* outside the hull or the domain (with CVM__INSF_DOMAIN_ONLY) */
+    CVM__INS_TOO_CLOSE = 3  /* closer than min_dist to vertex *other_out */
+} cvm__ins;
+
+enum {
+    CVM__INSF_DOMAIN_ONLY = 1 /* reject points outside the hull or in CVM__TF_OUT triangles */
+};
+
+/* Insert existing vertex v (added with cvm__tri2_add_vertex) by Bowyer-Watson.
+ * The cavity grows from the triangle containing v across non-constrained
+ * edges only. If v lies exactly on a constrained edge, that edge is split and
+ * both halves keep its segment index. hint: a triangle near v, or -1.
+ * min_dist > 0 rejects v when a vertex that would become its neighbour is
+ * closer than min_dist (in an unconstrained Delaunay triangulation the nearest
+ * vertex is always such a neighbour).
+ * Returns CVM_OK (see *res_out) or CVM_E_NOMEM (nothing changed). */
+cvm_status cvm__tri2_insert_vertex(cvm__tri2 *T, int32_t v, int32_t hint, int flags,
+                                   double min_dist, cvm__ins *res_out, int32_t *other_out);
+
+/* Insert vertex v, which the caller computed to lie on constrained edge j of
+ * triangle t (possibly inexactly, e.g. a segment intersection): the edge is
+ * split at v whatever the rounding, its halves keep the segment index.
+ * Returns CVM_OK or CVM_E_NOMEM. */
+cvm_status cvm__tri2_split_edge(cvm__tri2 *T, int32_t v, int32_t t, int j);
+
+/* Remove duplicate vertices (dup_of[v] >= 0) from the vertex arrays,
+ * renumbering the rest in order; map_out (nv entries) receives old -> new id
+ * (a duplicate maps to the new id of the vertex it duplicates). */
+void cvm__tri2_compact(cvm__tri2 *T, const int32_t *dup_of, int32_t *map_out);
+
+/* Allocate ta if needed (all 0). */
+cvm_status cvm__tri2_enable_attributes(cvm__tri2 *T);
+
+/* Set ta = value on every non-OUT real triangle reachable from seed without
+ * crossing a constrained edge. */
+cvm_status cvm__tri2_flood_attribute(cvm__tri2 *T, int32_t seed, double value);
+
+/* Make the segment a-b (vertex ids) a union of constrained edges carrying
+ * segment index seg: edges are recovered by removing crossed triangles and
+ * re-triangulating both sides (constrained Delaunay); a vertex lying exactly
+ * on a-b splits it. If a-b crosses an already constrained edge of segment s2:
+ * with split = 1 a vertex is added at the intersection (both segments split);
+ * with split = 0 returns CVM_E_INPUT_INTERSECTING naming seg and s2.
+ * Returns CVM_OK, CVM_E_INPUT_INTERSECTING, CVM_E_NOMEM. */
+cvm_status cvm__tri2_insert_segment(cvm__tri2 *T, int32_t a, int32_t b, int32_t seg, int split,
+                                    int32_t *other_seg_out);
+
+/* Mark CVM__TF_OUT every triangle reachable without crossing a constrained
+ * edge from each seed triangle (seeds: -1 entries ignored), plus all ghost
+ * triangles when exterior = 1 (carving from the hull). */
+cvm_status cvm__tri2_flood_out(cvm__tri2 *T, const int32_t *seeds, size_t nseeds, int exterior);
+
+/* Allocate te if needed (all -1). */
+cvm_status cvm__tri2_enable_constraints(cvm__tri2 *T);
+
+/* Exact in-circle (or power) test of vertex p against live real triangle t:
+ * +1 conflict, -1 not, with symbolic perturbation by index. */
+int cvm__tri2_conflict(const cvm__tri2 *T, int32_t t, int32_t p);
+
+/* Verify the structure and (constrained) Delaunay property with exact
+ * predicates; on failure sets a message naming the failed check and returns
+ * CVM_E_INTERNAL. */
+cvm_status cvm__tri2_check(cvm__tri2 *T);
+
+#endif

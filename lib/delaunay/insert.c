@@ -1,0 +1,268 @@
+/* insert.c - Bowyer-Watson insertion of one vertex, respecting constrained edges. */
+#include <math.h>
+
+#include "delaunay_internal.h"
+#include "tri2_store.h"
+#include "geom/geom_internal.h"
+
+/* A cavity boundary edge: a, b (counter-clockwise as seen from the cavity),
+ * the half-edge outside it, its segment, and the flags of the cavity triangle
+ * it belonged to. */
+enum { B_A = 0, B_B, B_OUTER, B_SEG, B_FLAGS, B_STRIDE };
+
+/* p strictly inside segment ab, given orient2d(a, b, p) == 0. */
+static int between(const double *a, const double *b, const double *p)
+{
+    if (a[0] != b[0])
+        return (p[0] > a[0] && p[0] < b[0]) || (p[0] < a[0] && p[0] > b[0]);
+    return (p[1] > a[1] && p[1] < b[1]) || (p[1] < a[1] && p[1] > b[1]);
+}
+
+static int on_edge(const cvm__tri2 *T, int32_t a, int32_t b, const double *p)
+{
+    const double *pa, *pb;
+    if (a < 0 || b < 0)
+        return 0;
+    pa = cvm__tri2_pt(T, a);
+    pb = cvm__tri2_pt(T, b);
+    return cvm__orient2d(pa, pb, p) == 0 && between(pa, pb, p);
+}
+
+static cvm_status push_int(cvm__tri2 *T, int32_t **arr, size_t *cap, size_t n, int32_t val)
+{
+    if (n >= *cap && cvm__grow(T->ctx, (void **)arr, cap, n + 1, sizeof(int32_t)))
+        return CVM_E_NOMEM;
+    (*arr)[n] = val;
+    return CVM_OK;
+}
+
+/* Unmark the cavity after a failure or a rejection. */
+static void unmark(cvm__tri2 *T, size_t ncav)
+{
+    size_t i;
+    for (i = 0; i < ncav; i++)
+        T->tf[T->cav[i]] &= (uint8_t)~CVM__TF_MARK;
+}
+
+/* Grow the cavity of p from t0 by depth-first search; fills T->cav and T->bnd. */
+static cvm_status grow_cavity(cvm__tri2 *T, int32_t p, int32_t t0, size_t *ncav_out,
+                              size_t *nbnd_out, int force_edge_t, int force_edge_j)
+{
+    const double *pp = cvm__tri2_pt(T, p);
+    size_t nstack = 0, ncav = 0, nbnd = 0;
+    cvm_status s;
+
+    T->tf[t0] |= CVM__TF_MARK;
+    if ((s = push_int(T, &T->cav, &T->cap_cav, ncav++, t0)) ||
+        (s = push_int(T, &T->stack, &T->cap_stack, nstack++, t0))) {
+        *ncav_out = ncav;
+        return s;
+    }
+    while (nstack) {
+        int32_t t = T->stack[--nstack];
+        int j;
+        for (j = 0; j < 3; j++) {
+            size_t h = 3 * (size_t)t + j;
+            int32_t nb = T->tn[h] / 3;
+            int32_t seg = T->te ? T->te[h] : -1;
+            int32_t a = T->tv[3 * (size_t)t + (j + 1) % 3], b = T->tv[3 * (size_t)t + (j + 2) % 3];
+            int cross;
+            if (T->tf[nb] & CVM__TF_MARK)
+                continue;
+            if (seg >= 0)
+                cross = (t == force_edge_t && j == force_edge_j) || on_edge(T, a, b, pp);
+            else
+                cross = cvm__tri2_conflict(T, nb, p) > 0;
+            if (cross) {
+                T->tf[nb] |= CVM__TF_MARK;
+                if ((s = push_int(T, &T->cav, &T->cap_cav, ncav++, nb)) ||
+                    (s = push_int(T, &T->stack, &T->cap_stack, nstack++, nb))) {
+                    *ncav_out = ncav;
+                    return s;
+                }
+            } else {
+                size_t need = (nbnd + 1) * B_STRIDE;
+                if (need > T->cap_bnd &&
+                    cvm__grow(T->ctx, (void **)&T->bnd, &T->cap_bnd, need, sizeof(int32_t))) {
+                    *ncav_out = ncav;
+                    return CVM_E_NOMEM;
+                }
+                if (T->ta) {
+                    if (nbnd + 1 > T->cap_bta &&
+                        cvm__grow(T->ctx, (void **)&T->bta, &T->cap_bta, nbnd + 1, sizeof(double))) {
+                        *ncav_out = ncav;
+                        return CVM_E_NOMEM;
+                    }
+                    T->bta[nbnd] = T->ta[t];
+                }
+                T->bnd[nbnd * B_STRIDE + B_A] = a;
+                T->bnd[nbnd * B_STRIDE + B_B] = b;
+                T->bnd[nbnd * B_STRIDE + B_OUTER] = T->tn[h];
+                T->bnd[nbnd * B_STRIDE + B_SEG] = seg;
+                T->bnd[nbnd * B_STRIDE + B_FLAGS] = T->tf[t] & CVM__TF_OUT;
+                nbnd++;
+            }
+        }
+    }
+    *ncav_out = ncav;
+    *nbnd_out = nbnd;
+    return CVM_OK;
+}
+
+/* Replace the marked cavity by the fan of p over its boundary. Room for the
+ * new triangles must be reserved. sa, sb, sseg: a constrained edge split by p
+ * (sseg -1 if none). */
+static void fill_fan(cvm__tri2 *T, int32_t p, size_t ncav, size_t nbnd, int32_t sa, int32_t sb,
+                     int32_t sseg)
+{
+    size_t i;
+    int32_t ghost_start = -1, first = -1;
+    if (T->w) {
+        /* vertices inside the cavity of a regular triangulation vanish */
+        for (i = 0; i < ncav; i++) {
+            const int32_t *v = T->tv + 3 * (size_t)T->cav[i];
+            int k;
+            for (k = 0; k < 3; k++)
+                if (v[k] >= 0)
+                    T->vtri[v[k]] = -1;
+        }
+    }
+    for (i = 0; i < ncav; i++)
+        cvm__tri2_kill(T, T->cav[i]);
+    for (i = 0; i < nbnd; i++) {
+        const int32_t *e = T->bnd + i * B_STRIDE;
+        int32_t n = cvm__tri2_new(T);
+        int32_t outer = e[B_OUTER];
+        size_t n3 = 3 * (size_t)n;
+        T->tv[n3] = p;
+        T->tv[n3 + 1] = e[B_A];
+        T->tv[n3 + 2] = e[B_B];
+        T->tf[n] = (uint8_t)e[B_FLAGS];
+        T->tn[n3] = outer;
+        T->tn[outer] = (int32_t)n3;
+        if (T->te) {
+            T->te[n3] = e[B_SEG];
+            if (sseg >= 0) {
+                if (e[B_A] == sa || e[B_A] == sb)
+                    T->te[n3 + 2] = sseg;
+                if (e[B_B] == sa || e[B_B] == sb)
+                    T->te[n3 + 1] = sseg;
+            }
+        }
+        if (T->ta)
+            T->ta[n] = T->bta[i];
+        if (e[B_A] >= 0)
+            T->vtri[e[B_A]] = n;
+        else
+            ghost_start = n;
+        if (first < 0)
+            first = n;
+        /* remember the new triangle in the boundary record for linking */
+        T->bnd[i * B_STRIDE + B_OUTER] = n;
+    }
+    for (i = 0; i < nbnd; i++) {
+        const int32_t *e = T->bnd + i * B_STRIDE;
+        int32_t n = e[B_OUTER];
+        int32_t nxt = e[B_B] >= 0 ? T->vtri[e[B_B]] : ghost_start;
+        cvm__tri2_link(T, n, 1, nxt, 2);
+    }
+    T->vtri[p] = first;
+    T->last = first;
+}
+
+static cvm_status insert_from(cvm__tri2 *T, int32_t v, int32_t t0, int fe_t, int fe_j,
+                              double min_dist, cvm__ins *res_out, int32_t *other_out)
+{
+    size_t ncav = 0, nbnd = 0, i;
+    int32_t sa = -1, sb = -1, sseg = -1;
+    cvm_status s = grow_cavity(T, v, t0, &ncav, &nbnd, fe_t, fe_j);
+    if (s) {
+        unmark(T, ncav);
+        return s;
+    }
+    if (min_dist > 0) {
+        const double *pp = cvm__tri2_pt(T, v);
+        double best = min_dist * min_dist;
+        int32_t who = -1;
+        for (i = 0; i < nbnd; i++) {
+            int32_t a = T->bnd[i * B_STRIDE + B_A];
+            const double *pa;
+            double d;
+            if (a < 0)
+                continue;
+            pa = cvm__tri2_pt(T, a);
+            d = (pa[0] - pp[0]) * (pa[0] - pp[0]) + (pa[1] - pp[1]) * (pa[1] - pp[1]);
+            if (d < best || (d == best && who >= 0 && a < who && d < min_dist * min_dist)) {
+                best = d;
+                who = a;
+            }
+        }
+        if (who >= 0) {
+            unmark(T, ncav);
+            *res_out = CVM__INS_TOO_CLOSE;
+            *other_out = who;
+            return CVM_OK;
+        }
+    }
+    if (nbnd > ncav && cvm__tri2_reserve_triangles(T, T->nt + (nbnd - ncav))) {
+        unmark(T, ncav);
+        return CVM_E_NOMEM;
+    }
+    /* a constrained edge crossed by the cavity is the one v splits */
+    if (T->te) {
+        for (i = 0; i < ncav && sseg < 0; i++) {
+            int32_t t = T->cav[i];
+            int j;
+            for (j = 0; j < 3; j++) {
+                size_t h = 3 * (size_t)t + j;
+                if (T->te[h] >= 0 && (T->tf[T->tn[h] / 3] & CVM__TF_MARK)) {
+                    sa = T->tv[3 * (size_t)t + (j + 1) % 3];
+                    sb = T->tv[3 * (size_t)t + (j + 2) % 3];
+                    sseg = T->te[h];
+                    break;
+                }
+            }
+        }
+    }
+    fill_fan(T, v, ncav, nbnd, sa, sb, sseg);
+    *res_out = CVM__INS_DONE;
+    *other_out = -1;
+    return CVM_OK;
+}
+
+cvm_status cvm__tri2_insert_vertex(cvm__tri2 *T, int32_t v, int32_t hint, int flags,
+                                   double min_dist, cvm__ins *res_out, int32_t *other_out)
+{
+    const double *pp = cvm__tri2_pt(T, v);
+    int32_t t;
+    int j;
+    cvm__loc loc = cvm__tri2_locate(T, pp, hint, &t, &j);
+
+    *other_out = -1;
+    if (t < 0)
+        return CVM_E_INTERNAL;
+    if (loc == CVM__LOC_VERTEX) {
+        *res_out = CVM__INS_DUPLICATE;
+        *other_out = T->tv[3 * (size_t)t + j];
+        return CVM_OK;
+    }
+    if (flags & CVM__INSF_DOMAIN_ONLY) {
+        int inside = loc != CVM__LOC_OUTSIDE && !(T->tf[t] & CVM__TF_OUT);
+        if (!inside && loc == CVM__LOC_EDGE) {
+            int32_t nb = T->tn[3 * (size_t)t + j] / 3;
+            inside = !cvm__tri2_is_ghost(T, nb) && !(T->tf[nb] & CVM__TF_OUT);
+        }
+        if (!inside) {
+            *res_out = CVM__INS_OUTSIDE;
+            return CVM_OK;
+        }
+    }
+    return insert_from(T, v, t, -1, -1, min_dist, res_out, other_out);
+}
+
+cvm_status cvm__tri2_split_edge(cvm__tri2 *T, int32_t v, int32_t t, int j)
+{
+    cvm__ins res;
+    int32_t other;
+    return insert_from(T, v, t, t, j, 0.0, &res, &other);
+}

@@ -1,0 +1,271 @@
+/* segment.c - recovery of constraint segments: constrained Delaunay triangulation by cavity re-triangulation (Anglada 1997; Shewchuk's pseudo-polygon method). */
+#include "delaunay_internal.h"
+#include "tri2_store.h"
+#include "cavity.h"
+#include "geom/geom_internal.h"
+
+typedef struct seg_work {
+    int32_t *pairs; size_t npairs, cap_pairs;    /* stack of (a, b) still to recover */
+    int32_t *cav; size_t ncav, cap_cav;          /* crossed triangles */
+    int32_t *left; size_t nleft, cap_left;       /* chain left of a->b, from a to b */
+    int32_t *right; size_t nright, cap_right;    /* chain right of a->b, from b to a */
+    int32_t *newtri; size_t nnew, cap_new;
+    int32_t *rng; size_t cap_rng;                /* ranges for the pseudo-polygon stack */
+} seg_work;
+
+static cvm_status push(cvm__tri2 *T, int32_t **arr, size_t *n, size_t *cap, int32_t v)
+{
+    if (*n >= *cap && cvm__grow(T->ctx, (void **)arr, cap, *n + 1, sizeof(int32_t)))
+        return CVM_E_NOMEM;
+    (*arr)[(*n)++] = v;
+    return CVM_OK;
+}
+
+static void set_constrained(cvm__tri2 *T, int32_t t, int j, int32_t seg)
+{
+    size_t h = 3 * (size_t)t + j;
+    T->te[h] = seg;
+    T->te[T->tn[h]] = seg;
+}
+
+/* x on the ray from a through b, given that the three are collinear. */
+static int ahead(const double *a, const double *b, const double *x)
+{
+    if (a[0] != b[0])
+        return (x[0] > a[0]) == (b[0] > a[0]) && x[0] != a[0];
+    return (x[1] > a[1]) == (b[1] > a[1]) && x[1] != a[1];
+}
+
+/* Triangulate the pseudo-polygon C[0..n) whose chain C[1..n-1) lies left of
+ * C[0] -> C[n-1], appending counter-clockwise triangles to w->newtri. */
+static cvm_status fill_pseudo_polygon(cvm__tri2 *T, seg_work *w, const int32_t *C, size_t n)
+{
+    size_t nr = 0;
+    cvm_status s;
+    if (n < 3)
+        return CVM_OK;
+    if ((s = push(T, &w->rng, &nr, &w->cap_rng, 0)) ||
+        (s = push(T, &w->rng, &nr, &w->cap_rng, (int32_t)(n - 1))))
+        return s;
+    while (nr) {
+        int32_t hi = w->rng[--nr], lo = w->rng[--nr], c = lo + 1, d;
+        const double *plo = cvm__tri2_pt(T, C[lo]), *phi = cvm__tri2_pt(T, C[hi]);
+        for (d = lo + 2; d < hi; d++) {
+            if (cvm__incircle_sos(plo, phi, cvm__tri2_pt(T, C[c]), cvm__tri2_pt(T, C[d]), C[lo],
+                                  C[hi], C[c], C[d]) > 0)
+                c = d;
+        }
+        if ((s = push(T, &w->newtri, &w->nnew, &w->cap_new, C[lo])) ||
+            (s = push(T, &w->newtri, &w->nnew, &w->cap_new, C[hi])) ||
+            (s = push(T, &w->newtri, &w->nnew, &w->cap_new, C[c])))
+            return s;
+        if (c - lo >= 2) {
+            if ((s = push(T, &w->rng, &nr, &w->cap_rng, lo)) ||
+                (s = push(T, &w->rng, &nr, &w->cap_rng, c)))
+                return s;
+        }
+        if (hi - c >= 2) {
+            if ((s = push(T, &w->rng, &nr, &w->cap_rng, c)) ||
+                (s = push(T, &w->rng, &nr, &w->cap_rng, hi)))
+                return s;
+        }
+    }
+    return CVM_OK;
+}
+
+enum { STEP_DONE, STEP_SPLIT, STEP_CROSS };
+
+/* Find, around a, the edge a-b or the first triangle the segment enters.
+ * Returns STEP_DONE (edge exists, now constrained), STEP_SPLIT (*v_out on the
+ * segment, edge a-v constrained), or STEP_CROSS with *t_out, *i_out: triangle
+ * (a, x, y) with a at i whose edge x-y the segment crosses. */
+static int start_at(cvm__tri2 *T, int32_t a, int32_t b, int32_t seg, int32_t *t_out, int *i_out,
+                    int32_t *v_out)
+{
+    const double *pa = cvm__tri2_pt(T, a), *pb = cvm__tri2_pt(T, b);
+    int32_t t0 = T->vtri[a], t = t0;
+    do {
+        const int32_t *tv = T->tv + 3 * (size_t)t;
+        int i = tv[0] == a ? 0 : tv[1] == a ? 1 : 2;
+        int32_t x = tv[(i + 1) % 3], y = tv[(i + 2) % 3];
+        if (x == b || y == b) {
+            set_constrained(T, t, x == b ? (i + 2) % 3 : (i + 1) % 3, seg);
+            return STEP_DONE;
+        }
+        if (x >= 0 && y >= 0) {
+            double ox = cvm__orient2d(pa, pb, cvm__tri2_pt(T, x));
+            double oy = cvm__orient2d(pa, pb, cvm__tri2_pt(T, y));
+            if (ox == 0 && ahead(pa, pb, cvm__tri2_pt(T, x))) {
+                set_constrained(T, t, (i + 2) % 3, seg);
+                *v_out = x;
+                return STEP_SPLIT;
+            }
+            if (oy == 0 && ahead(pa, pb, cvm__tri2_pt(T, y))) {
+                set_constrained(T, t, (i + 1) % 3, seg);
+                *v_out = y;
+                return STEP_SPLIT;
+            }
+            if (ox < 0 && oy > 0) {
+                *t_out = t;
+                *i_out = i;
+                return STEP_CROSS;
+            }
+        }
+        t = T->tn[3 * (size_t)t + (i + 1) % 3] / 3;
+    } while (t != t0);
+    return -1;
+}
+
+static cvm_status recover(cvm__tri2 *T, seg_work *w, int32_t a, int32_t b, int32_t seg, int split,
+                          int32_t *other_seg_out)
+{
+    const double *pa = cvm__tri2_pt(T, a), *pb = cvm__tri2_pt(T, b);
+    int32_t t, x, y, v = -1;
+    int i, r;
+    size_t h;
+    cvm_status s;
+
+    r = start_at(T, a, b, seg, &t, &i, &v);
+    if (r == STEP_DONE)
+        return CVM_OK;
+    if (r == STEP_SPLIT) {
+        if ((s = push(T, &w->pairs, &w->npairs, &w->cap_pairs, v)) ||
+            (s = push(T, &w->pairs, &w->npairs, &w->cap_pairs, b)))
+            return s;
+        return CVM_OK;
+    }
+    if (r != STEP_CROSS)
+        return cvm__error(T->ctx, CVM_E_INTERNAL, CVM_ENT_INPUT_SEGMENT, seg,
+                          "segment recovery: no triangle around vertex %ld faces vertex %ld",
+                          (long)a, (long)b);
+    w->ncav = w->nleft = w->nright = w->nnew = 0;
+    x = T->tv[3 * (size_t)t + (i + 1) % 3];
+    y = T->tv[3 * (size_t)t + (i + 2) % 3];
+    h = 3 * (size_t)t + i;
+    if ((s = push(T, &w->cav, &w->ncav, &w->cap_cav, t)) ||
+        (s = push(T, &w->left, &w->nleft, &w->cap_left, a)) ||
+        (s = push(T, &w->left, &w->nleft, &w->cap_left, y)) ||
+        (s = push(T, &w->right, &w->nright, &w->cap_right, x)))
+        return s;
+    for (;;) {
+        int32_t u, z;
+        int k, px, py;
+        double oz;
+        if (T->te[h] >= 0) {
+            int32_t s2 = T->te[h];
+            int32_t ht = (int32_t)(h / 3);
+            int hj = (int)(h % 3);
+            double p[2];
+            int32_t nv;
+            if (!split) {
+                *other_seg_out = s2;
+                return CVM_E_INPUT_INTERSECTING;
+            }
+            cvm__segment_intersection2d(pa, pb, cvm__tri2_pt(T, x), cvm__tri2_pt(T, y), p);
+            if ((s = cvm__tri2_add_vertex(T, p, &nv)))
+                return s;
+            if ((s = cvm__tri2_split_edge(T, nv, ht, hj))) {
+                T->nv--;
+                return s;
+            }
+            if ((s = push(T, &w->pairs, &w->npairs, &w->cap_pairs, nv)) ||
+                (s = push(T, &w->pairs, &w->npairs, &w->cap_pairs, b)) ||
+                (s = push(T, &w->pairs, &w->npairs, &w->cap_pairs, a)) ||
+                (s = push(T, &w->pairs, &w->npairs, &w->cap_pairs, nv)))
+                return s;
+            return CVM_OK;
+        }
+        u = T->tn[h] / 3;
+        k = T->tn[h] % 3;
+        z = T->tv[3 * (size_t)u + k];
+        if ((s = push(T, &w->cav, &w->ncav, &w->cap_cav, u)))
+            return s;
+        if (z == b)
+            break;
+        oz = cvm__orient2d(pa, pb, cvm__tri2_pt(T, z));
+        if (oz == 0) {
+            /* z lies on the segment: recover a-z first, then z-b */
+            if ((s = push(T, &w->pairs, &w->npairs, &w->cap_pairs, z)) ||
+                (s = push(T, &w->pairs, &w->npairs, &w->cap_pairs, b)) ||
+                (s = push(T, &w->pairs, &w->npairs, &w->cap_pairs, a)) ||
+                (s = push(T, &w->pairs, &w->npairs, &w->cap_pairs, z)))
+                return s;
+            return CVM_OK;
+        }
+        px = T->tv[3 * (size_t)u] == x ? 0 : T->tv[3 * (size_t)u + 1] == x ? 1 : 2;
+        py = T->tv[3 * (size_t)u] == y ? 0 : T->tv[3 * (size_t)u + 1] == y ? 1 : 2;
+        if (oz > 0) {
+            if ((s = push(T, &w->left, &w->nleft, &w->cap_left, z)))
+                return s;
+            y = z;
+            h = 3 * (size_t)u + py;
+        } else {
+            if ((s = push(T, &w->right, &w->nright, &w->cap_right, z)))
+                return s;
+            x = z;
+            h = 3 * (size_t)u + px;
+        }
+    }
+    /* left chain: a, L..., b (chain left of a->b); right chain: b, R reversed, a */
+    if ((s = push(T, &w->left, &w->nleft, &w->cap_left, b)))
+        return s;
+    if ((s = fill_pseudo_polygon(T, w, w->left, w->nleft)))
+        return s;
+    {
+        /* reverse the right chain in place and close it with b first, a last */
+        size_t lo = 0, hi = w->nright;
+        if ((s = push(T, &w->right, &w->nright, &w->cap_right, a)))
+            return s;
+        if ((s = push(T, &w->right, &w->nright, &w->cap_right, b)))
+            return s;
+        /* right = R0..Rk-1, a, b  ->  b, Rk-1..R0, a */
+        {
+            int32_t *R = w->right;
+            size_t n = w->nright, m;
+            int32_t bb = R[n - 1];
+            for (m = n - 1; m > 0; m--)
+                R[m] = R[m - 1];
+            R[0] = bb;
+            /* now b, R0..Rk-1, a: reverse the middle */
+            lo = 1;
+            hi = n - 2;
+            while (lo < hi) {
+                int32_t tmp = R[lo];
+                R[lo] = R[hi];
+                R[hi] = tmp;
+                lo++;
+                hi--;
+            }
+        }
+        if ((s = fill_pseudo_polygon(T, w, w->right, w->nright)))
+            return s;
+    }
+    return cvm__tri2_replace(T, w->cav, w->ncav, w->newtri, w->nnew / 3, a, b, seg);
+}
+
+cvm_status cvm__tri2_insert_segment(cvm__tri2 *T, int32_t a, int32_t b, int32_t seg, int split,
+                                    int32_t *other_seg_out)
+{
+    seg_work w = {0};
+    cvm_status s = CVM_OK;
+    *other_seg_out = -1;
+    if ((s = cvm__tri2_enable_constraints(T)))
+        return s;
+    if ((s = push(T, &w.pairs, &w.npairs, &w.cap_pairs, a)) ||
+        (s = push(T, &w.pairs, &w.npairs, &w.cap_pairs, b)))
+        goto done;
+    while (w.npairs) {
+        int32_t bb = w.pairs[--w.npairs], aa = w.pairs[--w.npairs];
+        s = recover(T, &w, aa, bb, seg, split, other_seg_out);
+        if (s)
+            break;
+    }
+done:
+    cvm__free(T->ctx, w.pairs);
+    cvm__free(T->ctx, w.cav);
+    cvm__free(T->ctx, w.left);
+    cvm__free(T->ctx, w.right);
+    cvm__free(T->ctx, w.newtri);
+    cvm__free(T->ctx, w.rng);
+    return s;
+}

@@ -1,0 +1,12 @@
+/* api_tests.h - TCases of the api suite (tests/unit/api/suite.c assembles them). */
+#ifndef CVMTEST_API_TESTS_H
+#define CVMTEST_API_TESTS_H
+#include <check.h>
+
+TCase *api_version_tcase(void);  /* test_version.c: version numbers and status codes */
+TCase *api_options_tcase(void);  /* test_options.c: option keys, bounds, rejection */
+TCase *api_args_tcase(void);     /* test_args.c: NULL arguments, call order, short buffers */
+TCase *api_oom_tcase(void);      /* test_oom.c: allocation failure k = 1, 2, ... */
+TCase *api_threads_tcase(void);  /* test_threads.c: handles on concurrent threads */
+
+#endif

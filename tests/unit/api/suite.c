@@ -1,0 +1,14 @@
+/* suite.c - the api suite: the public contract of include/cvmesh.h, one TCase per concern. */
+#include "suites.h"
+#include "api/api_tests.h"
+
+Suite *api_suite(void)
+{
+    Suite *s = suite_create("api");
+    suite_add_tcase(s, api_version_tcase());
+    suite_add_tcase(s, api_options_tcase());
+    suite_add_tcase(s, api_args_tcase());
+    suite_add_tcase(s, api_oom_tcase());
+    suite_add_tcase(s, api_threads_tcase());
+    return s;
+}

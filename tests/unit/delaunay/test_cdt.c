@@ -1,0 +1,239 @@
+/* test_cdt.c - constrained Delaunay triangulation of PSLGs (lib/delaunay/segment.c, cavity.c, carve.c). */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "delaunay/delaunay_tests.h"
+#include "support/mesh_oracle.h"
+
+static void expect_pslg(cvmtest_expect *e, const cvm_index *segs, size_t nseg, long euler, double area)
+{
+    cvmtest_expect_init(e);
+    e->segs = segs;
+    e->nseg = nseg;
+    e->check_euler = 1;
+    e->euler = euler;
+    e->check_area = 1;
+    e->area = area;
+    e->area_rel_tol = 1e-12;
+}
+
+/* A square [0,4]^2 with a square hole [1,3]^2 and random interior points. */
+START_TEST(square_with_hole_is_constrained_delaunay)
+{
+    double xy[2 * 208];
+    cvm_index segs[16] = {0, 1, 1, 2, 2, 3, 3, 0, 4, 5, 5, 6, 6, 7, 7, 4};
+    double box[16] = {0, 0, 4, 0, 4, 4, 0, 4, 1, 1, 3, 1, 3, 3, 1, 3};
+    double hole[2] = {2, 2};
+    cvmtest_expect e;
+    cvm_mesh *m;
+    size_t i, nseg_out;
+    memcpy(xy, box, sizeof box);
+    dtest_random_points(xy + 16, 200, 5);
+    for (i = 16; i < 2 * 208; i++)
+        xy[i] *= 4;
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_points(m, xy, 208, 2), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_segments(m, segs, 8), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_holes(m, hole, 1), CVM_OK);
+    ck_assert_msg(cvm_mesh_triangulate(m) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    expect_pslg(&e, segs, 8, 0, 16.0 - 4.0);
+    cvmtest_assert_valid_ex(m, &e);
+    ck_assert_int_eq(cvm_mesh_count(&nseg_out, m, CVM_ENT_SEGMENT), CVM_OK);
+    ck_assert_uint_ge(nseg_out, 8);
+    cvm_mesh_free(m);
+}
+END_TEST
+
+/* Long segments across a dense cloud: recovery must cross many triangles. */
+START_TEST(long_segments_cross_many_triangles)
+{
+    size_t n = 3000, i;
+    double *xy = malloc(2 * (n + 8) * sizeof *xy);
+    cvm_index segs[2 * 6] = {0, 1, 1, 2, 2, 3, 3, 0, 4, 5, 6, 7};
+    double fixed[16] = {0, 0, 1, 0, 1, 1, 0, 1, 0.01, 0.013, 0.99, 0.97, 0.02, 0.95, 0.97, 0.03};
+    cvmtest_expect e;
+    cvm_mesh *m;
+    memcpy(xy, fixed, sizeof fixed);
+    dtest_random_points(xy + 16, n, 21);
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_points(m, xy, n + 8, 2), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_segments(m, segs, 6), CVM_OK);
+    ck_assert_msg(cvm_mesh_triangulate(m) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    /* the two diagonals cross: split at a new vertex (default) */
+    expect_pslg(&e, segs, 6, 1, 1.0);
+    cvmtest_assert_valid_ex(m, &e);
+    {
+        size_t nv;
+        ck_assert_int_eq(cvm_mesh_count(&nv, m, CVM_ENT_VERTEX), CVM_OK);
+        ck_assert_uint_eq(nv, n + 8 + 1);
+    }
+    cvm_mesh_free(m);
+    (void)i;
+    free(xy);
+}
+END_TEST
+
+START_TEST(crossing_segments_rejected_when_asked)
+{
+    double xy[] = {0, 0, 1, 0, 1, 1, 0, 1};
+    cvm_index segs[] = {0, 1, 1, 2, 2, 3, 3, 0, 0, 2, 1, 3};
+    cvm_mesh *m;
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_points(m, xy, 4, 2), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_segments(m, segs, 6), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_SPLIT_INTERSECTIONS, 0), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_E_INPUT_INTERSECTING);
+    ck_assert_ptr_nonnull(strstr(cvm_mesh_errmsg(m), "segment 5"));
+    ck_assert_ptr_nonnull(strstr(cvm_mesh_errmsg(m), "segment 4"));
+    cvm_mesh_free(m);
+}
+END_TEST
+
+START_TEST(vertex_on_segment_splits_it)
+{
+    /* points 4..6 lie exactly on the bottom edge 0-1 and on the diagonal 0-2 */
+    double xy[] = {0, 0, 4, 0, 4, 4, 0, 4, 1, 0, 2, 0, 2, 2, 3, 1};
+    cvm_index segs[] = {0, 1, 1, 2, 2, 3, 3, 0, 0, 2};
+    cvmtest_expect e;
+    cvm_mesh *m;
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_points(m, xy, 8, 2), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_segments(m, segs, 5), CVM_OK);
+    ck_assert_msg(cvm_mesh_triangulate(m) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    expect_pslg(&e, segs, 5, 1, 16.0);
+    cvmtest_assert_valid_ex(m, &e);
+    cvm_mesh_free(m);
+}
+END_TEST
+
+START_TEST(bad_segments_are_named)
+{
+    double xy[] = {0, 0, 1, 0, 1, 1, 0, 1, 1, 0};
+    cvm_index bad_index[] = {0, 1, 1, 7};
+    cvm_index zero_len[] = {0, 1, 1, 2, 2, 2};
+    cvm_index dup_len[] = {0, 1, 4, 1};
+    cvm_mesh *m;
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_points(m, xy, 5, 2), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_segments(m, bad_index, 2), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_E_INPUT_INDEX);
+    ck_assert_ptr_nonnull(strstr(cvm_mesh_errmsg(m), "segment 1"));
+    ck_assert_int_eq(cvm_mesh_set_segments(m, zero_len, 3), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_E_INPUT_DEGENERATE);
+    ck_assert_ptr_nonnull(strstr(cvm_mesh_errmsg(m), "segment 2"));
+    /* point 4 duplicates point 1: segment 1 collapses after merging */
+    ck_assert_int_eq(cvm_mesh_set_segments(m, dup_len, 2), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_E_INPUT_DEGENERATE);
+    ck_assert_ptr_nonnull(strstr(cvm_mesh_errmsg(m), "segment 1"));
+    cvm_mesh_free(m);
+}
+END_TEST
+
+START_TEST(open_boundary_is_not_closed)
+{
+    double xy[] = {0, 0, 1, 0, 1, 1, 0, 1, 0.5, 0.5};
+    cvm_index open3[] = {0, 1, 1, 2, 2, 3};
+    double hole_out[2] = {5, 5};
+    cvm_index closed[] = {0, 1, 1, 2, 2, 3, 3, 0};
+    double hole_in[2] = {0.25, 0.5};
+    cvm_mesh *m;
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_points(m, xy, 5, 2), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_segments(m, open3, 3), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_E_INPUT_NOT_CLOSED);
+    ck_assert_int_eq(cvm_mesh_set_segments(m, closed, 4), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_holes(m, hole_out, 1), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_E_INPUT_OUTSIDE);
+    ck_assert_ptr_nonnull(strstr(cvm_mesh_errmsg(m), "hole 0"));
+    ck_assert_int_eq(cvm_mesh_set_holes(m, hole_in, 1), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_E_INPUT_NOT_CLOSED);
+    ck_assert_ptr_nonnull(strstr(cvm_mesh_errmsg(m), "hole 0"));
+    cvm_mesh_free(m);
+}
+END_TEST
+
+START_TEST(regions_get_attributes)
+{
+    /* two unit squares side by side sharing the segment 1-4 */
+    double xy[] = {0, 0, 1, 0, 2, 0, 2, 1, 1, 1, 0, 1};
+    cvm_index segs[] = {0, 1, 1, 2, 2, 3, 3, 4, 4, 5, 5, 0, 1, 4};
+    double regions[] = {0.5, 0.5, 7, 0, 1.5, 0.5, 9, 0};
+    double attr[16];
+    cvm_index tri[48];
+    double pts[12];
+    size_t nt, i;
+    cvm_mesh *m;
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_points(m, xy, 6, 2), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_segments(m, segs, 7), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_regions(m, regions, 2), CVM_OK);
+    ck_assert_msg(cvm_mesh_triangulate(m) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    cvmtest_assert_valid(m);
+    ck_assert_int_eq(cvm_mesh_count(&nt, m, CVM_ENT_TRIANGLE), CVM_OK);
+    ck_assert_uint_eq(nt, 4);
+    ck_assert_int_eq(cvm_mesh_copy_triangle_attributes(attr, 16, m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_copy_cells(tri, 48, m, CVM_ENT_TRIANGLE), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_copy_points(pts, 12, m), CVM_OK);
+    for (i = 0; i < nt; i++) {
+        double cx = (pts[2 * tri[3 * i]] + pts[2 * tri[3 * i + 1]] + pts[2 * tri[3 * i + 2]]) / 3;
+        ck_assert(attr[i] == (cx < 1 ? 7.0 : 9.0));
+    }
+    cvm_mesh_free(m);
+}
+END_TEST
+
+/* Star-shaped polygon with many nearly collinear, jagged edges and random holes-free interior. */
+START_TEST(jagged_star_polygon)
+{
+    size_t k = 400, i, n;
+    double *xy = malloc(2 * (k + 500) * sizeof *xy);
+    cvm_index *segs = malloc(2 * k * sizeof *segs);
+    cvmtest_expect e;
+    cvm_mesh *m;
+    double area = 0;
+    unsigned long long s = 77;
+    for (i = 0; i < k; i++) {
+        double a = 2 * M_PI * (double)i / (double)k, r;
+        s = s * 6364136223846793005ull + 1442695040888963407ull;
+        r = 0.5 + 0.5 * (double)(s >> 11) / 9007199254740992.0;
+        xy[2 * i] = r * cos(a);
+        xy[2 * i + 1] = r * sin(a);
+        segs[2 * i] = (cvm_index)i;
+        segs[2 * i + 1] = (cvm_index)((i + 1) % k);
+    }
+    for (i = 0; i < k; i++) {
+        size_t j = (i + 1) % k;
+        area += 0.5 * (xy[2 * i] * xy[2 * j + 1] - xy[2 * j] * xy[2 * i + 1]);
+    }
+    n = k;
+    dtest_random_points(xy + 2 * n, 500, 8);
+    for (i = 2 * n; i < 2 * (n + 500); i++)
+        xy[i] = 0.9 * (xy[i] - 0.5);
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_points(m, xy, n + 500, 2), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_segments(m, segs, k), CVM_OK);
+    ck_assert_msg(cvm_mesh_triangulate(m) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    expect_pslg(&e, segs, k, 1, area);
+    e.area_rel_tol = 1e-9;
+    cvmtest_assert_valid_ex(m, &e);
+    cvm_mesh_free(m);
+    free(xy);
+    free(segs);
+}
+END_TEST
+
+TCase *delaunay_cdt_tcase(void)
+{
+    TCase *tc = tcase_create("cdt");
+    tcase_set_timeout(tc, 120);
+    tcase_add_test(tc, square_with_hole_is_constrained_delaunay);
+    tcase_add_test(tc, long_segments_cross_many_triangles);
+    tcase_add_test(tc, crossing_segments_rejected_when_asked);
+    tcase_add_test(tc, vertex_on_segment_splits_it);
+    tcase_add_test(tc, bad_segments_are_named);
+    tcase_add_test(tc, open_boundary_is_not_closed);
+    tcase_add_test(tc, regions_get_attributes);
+    tcase_add_test(tc, jagged_star_polygon);
+    return tc;
+}

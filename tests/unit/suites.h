@@ -1,0 +1,12 @@
+/* suites.h - one Check suite per module; tests/unit/main.c runs them all. */
+#ifndef CVMTEST_SUITES_H
+#define CVMTEST_SUITES_H
+#include <check.h>
+
+Suite *geom_suite(void);     /* tests/unit/geom/suite.c */
+Suite *delaunay_suite(void); /* tests/unit/delaunay/suite.c */
+Suite *io_suite(void);       /* tests/unit/io/suite.c */
+Suite *api_suite(void);      /* tests/unit/api/suite.c */
+Suite *support_suite(void);  /* tests/unit/support/test_support.c: the test helpers themselves */
+
+#endif
