@@ -354,11 +354,30 @@ typedef enum cvm_option {
      *  hull. Reserved for later kernels; integer, [1, 1]. */
     CVM_OPT_CONVEX_HULL_IF_NO_SEGMENTS = 103,
 
-    /** Refinement (200..299): reserved for the refiners. */
-    /** Minimum angle, degrees, default 30, bounds [0, 40]. Read by the refiners. */
+    /** Refinement (200..299): read by cvm_mesh_refine(). */
+    /** Minimum angle requested from the refiners, degrees, default 30, bounds [0, 40].
+     *  Termination is guaranteed up to about 20.7 (diametral circles) or 25.7
+     *  (CVM_OPT_ENCROACH_LENS = 1) and observed in practice up to 33-34; above that,
+     *  bound the run with CVM_OPT_MAX_STEINER. Triangles at small input angles
+     *  (below about 60 degrees between segments) may stay below it. 0 = sizes only. */
     CVM_OPT_MIN_ANGLE_DEG = 200,
-    /** Maximum triangle area, squared length units, 0 = none (default), bounds [0, 1e300]. */
+    /** Maximum triangle area, squared length units, 0 = none (default), bounds [0, 1e300].
+     *  Combined with the sizing of cvm_mesh_refine(): a triangle must meet both. */
     CVM_OPT_MAX_AREA = 201,
+    /** Encroachment test of segments: 0 (default) diametral circle (a point p encroaches
+     *  segment ab when angle apb > 90 degrees); 1 diametral lens (angle apb >= 180 - 2 x
+     *  CVM_OPT_MIN_ANGLE_DEG, Shewchuk's lens): fewer segment splits, guarantee 25.7
+     *  degrees. Integer, [0, 1]. */
+    CVM_OPT_ENCROACH_LENS = 202,
+    /** 1 (default): every input vertex of a segment stays where it is; segments are
+     *  marched one by one. 0 (re-discretising smooth chains of segments as one curve,
+     *  moving their inner vertices) is reserved. Integer, bounds [1, 1]. */
+    CVM_OPT_KEEP_SEGMENT_VERTICES = 203,
+    /** 1 (default): before refining, each input segment is split by marching along it
+     *  with the sizing (pieces of about the local size, no 2:1 jumps); only when a sizing
+     *  is given. 0: segments are split only when encroached (Triangle's behaviour).
+     *  Integer, [0, 1]. */
+    CVM_OPT_MARCH_SEGMENTS = 204,
 
     /** Run control (400..499). */
     /** Time limit, seconds on a monotonic clock, 0 = none (default), bounds [0, 1e9].
@@ -504,6 +523,197 @@ CVM_API cvm_status cvm_mesh_insert_points(cvm_index *ids_out, cvm_mesh *m, const
 CVM_API cvm_status cvm_mesh_check(cvm_mesh *m);
 
 /* ------------------------------------------------------------------------ */
+/* Sizing and refinement                                                     */
+/* ------------------------------------------------------------------------ */
+
+/**
+ * Opaque sizing handle: the target edge length h(x, y) for cvm_mesh_refine().
+ * Sources combine by taking the minimum: h = min(uniform, every point source,
+ * every line source, the callback). A handle with no source sets no size bound.
+ * The handle has its own messages (cvm_sizing_errmsg()) and may be used by any
+ * number of refinements, one call at a time.
+ */
+typedef struct cvm_sizing cvm_sizing;
+
+/**
+ * User sizing function: the target edge length at (x, y), positive and finite.
+ * It must not call any function on the mesh being refined.
+ */
+typedef double (*cvm_sizing_fn)(void *payload, double x, double y);
+
+/**
+ * Create an empty sizing handle (no size bound).
+ *
+ * @param out  receives the handle; set to NULL on failure.
+ * Ownership:  the caller owns *out and releases it with cvm_sizing_free().
+ * Thread-safety: callable from any thread.
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG  out is NULL
+ *         CVM_E_NOMEM
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_sizing_create(cvm_sizing **out);
+
+/**
+ * Free a sizing handle. NULL is a no-op. Meshes refined with it are not affected.
+ * @since 0.1
+ */
+CVM_API void cvm_sizing_free(cvm_sizing *s);
+
+/**
+ * Message describing the last failing call on @p s, naming the offending source,
+ * e.g. "point source 2 has size -1 (must be positive and finite)".
+ * Ownership: owned by @p s; valid until the next call on @p s.
+ * @return "" when the last call succeeded; "no sizing handle" when s is NULL.
+ * @since 0.1
+ */
+CVM_API const char *cvm_sizing_errmsg(const cvm_sizing *s);
+
+/**
+ * Set a uniform target edge length (replaces an earlier uniform size).
+ *
+ * @param s  sizing handle; not NULL.
+ * @param h  target edge length; positive and finite.
+ * Units:    length.
+ * Atomicity: on error the handle is unchanged.
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG         s is NULL
+ *         CVM_E_INPUT_NONFINITE  h is NaN or infinite (message names "uniform size")
+ *         CVM_E_ARGUMENT         h <= 0 (message names "uniform size")
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_sizing_set_uniform(cvm_sizing *s, double h);
+
+/**
+ * Add a point source: h(p) = h + growth * |p - (x, y)|.
+ *
+ * @param x, y    source position.
+ * @param h       size at the source; positive and finite.
+ * @param growth  size increase per unit distance (dimensionless), finite and >= 0;
+ *                0 gives h everywhere. Typical: 0.1 .. 0.5.
+ * Units:    lengths; growth dimensionless.
+ * Atomicity: on error the handle is unchanged.
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG         s is NULL
+ *         CVM_E_INPUT_NONFINITE  a value is NaN or infinite (message names point source k)
+ *         CVM_E_ARGUMENT         h <= 0 or growth < 0 (message names point source k)
+ *         CVM_E_NOMEM
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_sizing_add_point_source(cvm_sizing *s, double x, double y, double h,
+                                               double growth);
+
+/**
+ * Add a line source on the segment (x0, y0)-(x1, y1): h(p) = h + growth * dist(p, segment).
+ * Parameters, units and atomicity as cvm_sizing_add_point_source(); the two ends may coincide.
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG         s is NULL
+ *         CVM_E_INPUT_NONFINITE  a value is NaN or infinite (message names line source k)
+ *         CVM_E_ARGUMENT         h <= 0 or growth < 0 (message names line source k)
+ *         CVM_E_NOMEM
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_sizing_add_line_source(cvm_sizing *s, double x0, double y0, double x1,
+                                              double y1, double h, double growth);
+
+/**
+ * Set (or, with fn NULL, remove) a user sizing function.
+ *
+ * @param fn       called with @p payload and a position; must return a positive finite
+ *                 size and be deterministic (same answer for the same position).
+ * @param payload  passed unchanged to fn; may be NULL.
+ * Ownership: fn and payload must stay valid while the handle is used.
+ * Errors of fn: a non-positive or non-finite value stops cvm_mesh_refine() (or
+ *               cvm_sizing_eval()) with CVM_E_ARGUMENT / CVM_E_INPUT_NONFINITE naming
+ *               "the sizing callback" and the position.
+ * @return CVM_OK, CVM_E_NULL_ARG (s is NULL)
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_sizing_set_callback(cvm_sizing *s, cvm_sizing_fn fn, void *payload);
+
+/**
+ * Automatic sizing from the geometry: LS(p) = min(lfs(p)/R, min over neighbours q of
+ * LS(q) + |q - p|/G), with lfs the local feature size of the domain being refined.
+ *
+ * @param R  refinement parameter (elements per feature size), positive and finite.
+ * @param G  grading, positive and finite.
+ * @return CVM_E_UNSUPPORTED in this version (message says so); CVM_E_NULL_ARG.
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_sizing_set_automatic(cvm_sizing *s, double R, double G);
+
+/**
+ * Evaluate the sizing at (x, y).
+ *
+ * @param out  receives the size; +infinity when the handle has no source (no bound).
+ * Thread-safety: one call at a time on @p s (it records the message of a failure).
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG         out or s is NULL
+ *         CVM_E_INPUT_NONFINITE  x or y is not finite, or the callback returned NaN/Inf
+ *         CVM_E_ARGUMENT         the callback returned a value <= 0
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_sizing_eval(double *out, cvm_sizing *s, double x, double y);
+
+/** Refinement algorithms of cvm_mesh_refine(). Values never change. */
+typedef enum cvm_algorithm {
+    CVM_ALGO_DELAUNAY = 1, /**< Delaunay refinement (Ruppert, Shewchuk): circumcentres */
+    CVM_ALGO_FRONTAL = 2,  /**< frontal-Delaunay (Engwirda): off-centres grown from the boundary */
+    CVM_ALGO_AFLR = 3      /**< advancing-front local reconnection (Marcum); reserved */
+} cvm_algorithm;
+
+/**
+ * Refine the triangulation of @p m by inserting Steiner points until every
+ * triangle meets CVM_OPT_MIN_ANGLE_DEG, CVM_OPT_MAX_AREA and the @p sizing
+ * (circumradius at most the mean size at its vertices for CVM_ALGO_DELAUNAY; mean
+ * edge length at most 1.5 x the size for CVM_ALGO_FRONTAL, which then finishes with
+ * a Delaunay-refinement pass so that both meet the same bounds). Segments are split
+ * where encroached (concentric shells near small input angles, as Triangle does), so
+ * every input segment stays a union of mesh edges; with no segments, or with
+ * CVM_OPT_KEEP_CONVEX_HULL, the convex hull edges become segments (with marker 0).
+ * Before refining, segments are marched with the sizing (CVM_OPT_MARCH_SEGMENTS).
+ * The result stays a constrained Delaunay triangulation. New vertices get the marker
+ * of the segment they lie on (else 0) and attributes interpolated along it (else 0).
+ * The report (CVM_MEASURE_REFINE_*) says what was asked and what was met.
+ *
+ * @param m       mesh handle, triangulated (cvm_mesh_triangulate()); not NULL.
+ * @param sizing  target sizes; may be NULL (angle and area bounds only). Read only
+ *                during the call; not kept.
+ * @param algo    CVM_ALGO_DELAUNAY or CVM_ALGO_FRONTAL.
+ * Options:  CVM_OPT_MIN_ANGLE_DEG, CVM_OPT_MAX_AREA, CVM_OPT_ENCROACH_LENS,
+ *           CVM_OPT_MARCH_SEGMENTS, CVM_OPT_MAX_STEINER, CVM_OPT_TIME_LIMIT_S; the
+ *           progress callback (stage CVM_STAGE_REFINE) can cancel.
+ * Stops:    on the Steiner limit, the time limit or cancellation the mesh is valid
+ *           (conforming, constrained Delaunay) with the points inserted so far.
+ * Determinism: same input, options and sizing give bit-identical output (except
+ *           where the time limit stops the run).
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG          m is NULL
+ *         CVM_E_STATE             nothing triangulated
+ *         CVM_E_ARGUMENT          unknown algo, or the sizing callback returned a value <= 0
+ *                                 (message names the callback and the position)
+ *         CVM_E_INPUT_NONFINITE   the sizing callback returned NaN or infinity (message
+ *                                 names the callback and the position)
+ *         CVM_E_UNSUPPORTED       algo is CVM_ALGO_AFLR (not in this version)
+ *         CVM_E_NOMEM             (the mesh keeps the points inserted before it and is valid)
+ *         CVM_INCOMPLETE_STEINER_LIMIT, CVM_INCOMPLETE_TIME_LIMIT, CVM_INCOMPLETE_CANCELLED
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_mesh_refine(cvm_mesh *m, const cvm_sizing *sizing, cvm_algorithm algo);
+
+/**
+ * Choose which segment markers start fronts (for CVM_ALGO_AFLR): the segments whose
+ * marker is in @p markers. count 0 (the default) means every segment.
+ *
+ * @param markers  count marker values. Ownership: copied.
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG  m is NULL, or markers is NULL while count > 0
+ *         CVM_E_NOMEM
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_mesh_set_front_markers(cvm_mesh *m, const int32_t *markers, size_t count);
+
+/* ------------------------------------------------------------------------ */
 /* Output                                                                    */
 /* ------------------------------------------------------------------------ */
 
@@ -615,7 +825,18 @@ typedef enum cvm_measure {
     CVM_MEASURE_MIN_EDGE = 7,           /**< shortest edge length */
     CVM_MEASURE_MAX_EDGE = 8,           /**< longest edge length */
     CVM_MEASURE_AREA = 9,               /**< total area */
-    CVM_MEASURE_MIN_AREA = 10           /**< smallest triangle area */
+    CVM_MEASURE_MIN_AREA = 10,          /**< smallest triangle area */
+    /* Report of the last cvm_mesh_refine() on the handle (0 before any refinement,
+       and after cvm_mesh_triangulate()): */
+    CVM_MEASURE_REFINE_STEINER = 11,    /**< vertices added (segment marching included) */
+    CVM_MEASURE_REFINE_UNMET_ANGLE = 12,/**< triangles left with an angle below the requested
+                                             minimum (small input angles included) */
+    CVM_MEASURE_REFINE_UNMET_SIZE = 13, /**< triangles left too big for the sizing or max area */
+    CVM_MEASURE_REFINE_SMALL_INPUT_ANGLE = 14, /**< of REFINE_UNMET_ANGLE, those left alone
+                                             because a small input angle subtends them */
+    CVM_MEASURE_REFINE_REQUESTED_ANGLE = 15, /**< the minimum angle the run asked for, degrees */
+    CVM_MEASURE_REFINE_MET_ANGLE = 16   /**< smallest angle over triangles not subtended by a
+                                             small input angle, degrees */
 } cvm_measure;
 
 /** Histograms of cvm_mesh_copy_histogram(). */

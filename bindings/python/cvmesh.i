@@ -14,8 +14,11 @@
  *     names typemapped here (out, *_out, dst + dst_len) or cvmesh_numpy.i;
  *   - a long call (one that reports progress) is listed with CVMPY_LONG_CALL
  *     so that it releases the GIL and returns its status.
- * A function with a cvm_mesh parameter that does not return cvm_status must
- * be given a helper below (as cvm_mesh_free and cvm_mesh_errmsg are).
+ * A handle parameter must be named as the typemaps below expect (cvm_mesh *m,
+ * cvm_sizing *s); a new handle type needs its argout typemap (3 lines). A
+ * function with a handle parameter that does not return cvm_status must be
+ * given a helper below (as the _free and _errmsg functions are), and a C
+ * callback needs a trampoline (as progress and sizing callbacks have).
  */
 %module(package="cvmesh") capi
 
@@ -43,20 +46,13 @@ static PyObject *cvmpy_errors(void)
     return cvmpy_errors_module;
 }
 
-/* Raise the exception for error status s; its message is cvm_mesh_errmsg(m)
- * when m is given and has one, else cvm_status_str(s). */
-static void cvmpy_set_error(cvm_status s, const cvm_mesh *m)
+/* Raise the exception for error status s with message msg (cvm_status_str(s)
+ * when msg is NULL or empty) naming input item (kind, index). */
+static void cvmpy_raise(cvm_status s, const char *msg, cvm_entity kind, int64_t index)
 {
-    const char *msg = m ? cvm_mesh_errmsg(m) : NULL;
-    cvm_entity kind = CVM_ENT_NONE;
-    int64_t index = -1;
     PyObject *mod, *exc;
     if (!msg || !*msg)
         msg = cvm_status_str(s);
-    if (m && cvm_mesh_error_item(&kind, &index, m) != CVM_OK) {
-        kind = CVM_ENT_NONE;
-        index = -1;
-    }
     mod = cvmpy_errors();
     if (!mod) {
         PyErr_Clear();
@@ -69,6 +65,18 @@ static void cvmpy_set_error(cvm_status s, const cvm_mesh *m)
         return; /* the exception of the failed call stands */
     PyErr_SetObject((PyObject *)Py_TYPE(exc), exc);
     Py_DECREF(exc);
+}
+
+/* Raise the exception for error status s of a call on mesh m (may be NULL). */
+static void cvmpy_set_error(cvm_status s, const cvm_mesh *m)
+{
+    cvm_entity kind = CVM_ENT_NONE;
+    int64_t index = -1;
+    if (m && cvm_mesh_error_item(&kind, &index, m) != CVM_OK) {
+        kind = CVM_ENT_NONE;
+        index = -1;
+    }
+    cvmpy_raise(s, m ? cvm_mesh_errmsg(m) : NULL, kind, index);
 }
 
 /* Python result of a call that returned s, or NULL with an exception set.
@@ -112,6 +120,10 @@ static PyObject *cvmpy_status_result(cvm_status s, int long_call)
     if (!$result && !PyErr_Occurred() && cvm_status_is_error(result))
         cvmpy_set_error(result, $1);
 }
+%typemap(argout) cvm_sizing *s, const cvm_sizing *s {
+    if (!$result && !PyErr_Occurred() && cvm_status_is_error(result))
+        cvmpy_raise(result, cvm_sizing_errmsg($1), CVM_ENT_NONE, -1);
+}
 
 /* CVMPY_LONG_CALL(name): release the GIL around the call and return the
  * status as an int; the progress callback re-acquires the GIL. Naming a
@@ -143,13 +155,7 @@ CVMPY_LONG_CALL(cvm_mesh_check)
 }
 %typemap(argout) CTYPE *NAME {
     if ($result) {
-        PyObject *o = TO_PY(tmp$argnum);
-        if (!o) {
-            Py_DECREF($result);
-            $result = NULL;
-        } else {
-            $result = SWIG_Python_AppendOutput($result, o);
-        }
+        $result = cvmpy_append($result, TO_PY(tmp$argnum));
     }
 }
 %enddef
@@ -169,20 +175,30 @@ static PyObject *cvmpy_bounds_tuple(cvm_bounds b)
 %}
 CVMPY_OUT_SCALAR(cvm_bounds, out, cvmpy_bounds_tuple)
 
-/* cvm_mesh_create(&m): returns the handle. Python does not free it on its
- * own: call cvm_mesh_free(), or use cvmesh.Mesh, which does. */
-%typemap(in, numinputs=0) cvm_mesh **out (cvm_mesh *tmp = NULL) {
+/* cvm_mesh_create(&m), cvm_sizing_create(&s): return the handle. Python does
+ * not free it on its own: call cvm_mesh_free() / cvm_sizing_free(), or use
+ * cvmesh.Mesh / cvmesh.Sizing, which do. */
+%define CVMPY_HANDLE_OUT(TYPE)
+%typemap(in, numinputs=0) TYPE **out (TYPE *tmp = NULL) {
     $1 = &tmp;
 }
-%typemap(argout) cvm_mesh **out {
+%typemap(argout) TYPE **out {
     if ($result)
-        $result = SWIG_Python_AppendOutput($result,
-                                           SWIG_NewPointerObj(tmp$argnum, $descriptor(cvm_mesh *), 0));
+        $result = cvmpy_append($result, SWIG_NewPointerObj(tmp$argnum, $descriptor(TYPE *), 0));
 }
+%enddef
+CVMPY_HANDLE_OUT(cvm_mesh)
+CVMPY_HANDLE_OUT(cvm_sizing)
 
 /* ---- helpers for functions outside the conventions --------------------- */
 
 %ignore cvm_mesh_free;
+%ignore cvm_sizing_free;
+%ignore cvm_sizing_errmsg;
+%ignore cvm_sizing_set_callback;
+%rename(cvm_sizing_free) cvmpy_sizing_free;
+%rename(cvm_sizing_errmsg) cvmpy_sizing_errmsg;
+%rename(cvm_sizing_set_callback) cvmpy_sizing_set_callback;
 %rename(cvm_mesh_free) cvmpy_mesh_free;
 %rename(cvm_mesh_errmsg) cvmpy_mesh_errmsg;
 %rename(cvm_mesh_set_progress) cvmpy_set_progress;
@@ -197,9 +213,32 @@ CVMPY_OUT_SCALAR(cvm_bounds, out, cvmpy_bounds_tuple)
 %ignore cvm_free_fn;
 
 %{
-/* Progress callbacks installed through this module, keyed by handle address,
- * so each callable stays alive as long as it is installed. */
-static PyObject *cvmpy_callbacks = NULL;
+/* Python callables installed as C callbacks, keyed by handle address (one
+ * dict per handle type), so each stays alive as long as it is installed. */
+static PyObject *cvmpy_progress_fns = NULL;
+static PyObject *cvmpy_sizing_fns = NULL;
+
+/* Keep fn (NULL: forget) for handle h in *registry; 0, or -1 with an exception. */
+static int cvmpy_keep(PyObject **registry, const void *h, PyObject *fn)
+{
+    PyObject *key;
+    int rc = 0;
+    if (!*registry) {
+        if (!fn)
+            return 0;
+        if (!(*registry = PyDict_New()))
+            return -1;
+    }
+    if (!(key = PyLong_FromVoidPtr((void *)h)))
+        return -1;
+    if (fn) {
+        rc = PyDict_SetItem(*registry, key, fn);
+    } else if (PyDict_DelItem(*registry, key) < 0) {
+        PyErr_Clear(); /* was not there */
+    }
+    Py_DECREF(key);
+    return rc;
+}
 
 /*
  * The C callback behind every Python progress callback. It runs with the GIL
@@ -233,19 +272,27 @@ static int cvmpy_progress_trampoline(void *payload, cvm_stage stage, double frac
     return stop;
 }
 
-static void cvmpy_forget_callback(const cvm_mesh *m)
+/*
+ * The C sizing function behind a Python sizing callback: takes the GIL (the
+ * refinement runs without it) and returns callback(x, y) as a float. When the
+ * callable raises, it returns NaN, which stops the refinement; the wrapper
+ * then re-raises the callable's exception.
+ */
+static double cvmpy_sizing_trampoline(void *payload, double x, double y)
 {
-    PyObject *key;
-    if (!cvmpy_callbacks || !m)
-        return;
-    key = PyLong_FromVoidPtr((void *)m);
-    if (!key) {
-        PyErr_Clear();
-        return;
+    PyGILState_STATE g = PyGILState_Ensure();
+    double h = Py_NAN;
+    if (!PyErr_Occurred()) {
+        PyObject *r = PyObject_CallFunction((PyObject *)payload, "dd", x, y);
+        if (r) {
+            h = PyFloat_AsDouble(r);
+            if (h == -1.0 && PyErr_Occurred())
+                h = Py_NAN;
+            Py_DECREF(r);
+        }
     }
-    if (PyDict_DelItem(cvmpy_callbacks, key) < 0)
-        PyErr_Clear(); /* was not there */
-    Py_DECREF(key);
+    PyGILState_Release(g);
+    return h;
 }
 %}
 
@@ -253,7 +300,8 @@ static void cvmpy_forget_callback(const cvm_mesh *m)
 /* Free a handle (None is a no-op) and drop its progress callback. */
 void cvmpy_mesh_free(cvm_mesh *handle)
 {
-    cvmpy_forget_callback(handle);
+    if (handle && cvmpy_keep(&cvmpy_progress_fns, handle, NULL) < 0)
+        PyErr_Clear();
     cvm_mesh_free(handle);
 }
 
@@ -278,29 +326,50 @@ const char *cvmpy_mesh_errmsg(const cvm_mesh *handle)
 cvm_status cvmpy_set_progress(cvm_mesh *m, PyObject *callback, int64_t every_n)
 {
     cvm_status s;
-    PyObject *key;
     int on = every_n >= 1;
+    PyObject *fn = on && callback != Py_None ? callback : NULL;
     if (callback != Py_None && !PyCallable_Check(callback)) {
         PyErr_SetString(PyExc_TypeError, "progress callback must be callable or None");
         return CVM_E_ARGUMENT;
     }
-    s = cvm_mesh_set_progress(m, on ? cvmpy_progress_trampoline : NULL, every_n,
-                              on && callback != Py_None ? (void *)callback : NULL);
-    if (s != CVM_OK || !m)
-        return s;
-    if (!cvmpy_callbacks && !(cvmpy_callbacks = PyDict_New()))
+    s = cvm_mesh_set_progress(m, on ? cvmpy_progress_trampoline : NULL, every_n, (void *)fn);
+    if (s == CVM_OK && cvmpy_keep(&cvmpy_progress_fns, m, fn) < 0)
         return CVM_E_NOMEM;
-    key = PyLong_FromVoidPtr((void *)m);
-    if (!key)
-        return CVM_E_NOMEM;
-    if (on && callback != Py_None) {
-        if (PyDict_SetItem(cvmpy_callbacks, key, callback) < 0)
-            s = CVM_E_NOMEM;
-    } else if (PyDict_DelItem(cvmpy_callbacks, key) < 0) {
-        PyErr_Clear();
-    }
-    Py_DECREF(key);
     return s;
+}
+%}
+
+%inline %{
+/* Free a sizing handle (None is a no-op) and drop its callback. */
+void cvmpy_sizing_free(cvm_sizing *handle)
+{
+    if (handle && cvmpy_keep(&cvmpy_sizing_fns, handle, NULL) < 0)
+        PyErr_Clear();
+    cvm_sizing_free(handle);
+}
+
+/* Message of the last failing call on a sizing handle. */
+const char *cvmpy_sizing_errmsg(const cvm_sizing *handle)
+{
+    return cvm_sizing_errmsg(handle);
+}
+
+/*
+ * Set callback(x, y) -> float as the sizing function of s (None removes it).
+ * An exception in the callback stops the refinement and is re-raised.
+ */
+cvm_status cvmpy_sizing_set_callback(cvm_sizing *s, PyObject *callback)
+{
+    cvm_status st;
+    PyObject *fn = callback != Py_None ? callback : NULL;
+    if (fn && !PyCallable_Check(fn)) {
+        PyErr_SetString(PyExc_TypeError, "sizing callback must be callable or None");
+        return CVM_E_ARGUMENT;
+    }
+    st = cvm_sizing_set_callback(s, fn ? cvmpy_sizing_trampoline : NULL, (void *)fn);
+    if (st == CVM_OK && cvmpy_keep(&cvmpy_sizing_fns, s, fn) < 0)
+        return CVM_E_NOMEM;
+    return st;
 }
 %}
 
@@ -309,7 +378,7 @@ cvm_status cvmpy_set_progress(cvm_mesh *m, PyObject *callback, int64_t every_n)
 }
 %typemap(argout) PyObject **ids_out {
     if ($result) {
-        $result = SWIG_Python_AppendOutput($result, tmp$argnum);
+        $result = cvmpy_append($result, tmp$argnum);
         tmp$argnum = NULL;
     }
 }

@@ -30,6 +30,39 @@
 #define NPY_NO_DEPRECATED_API NPY_1_7_API_VERSION
 #include <numpy/arrayobject.h>
 #include <limits.h>
+
+/* Append obj (a new reference, or NULL after a failed conversion) to the
+ * result of a wrapper: None is replaced by obj, a second value turns the
+ * result into a list. Returns NULL with an exception set when obj is NULL.
+ * (SWIG_Python_AppendOutput changed its signature and its handling of None
+ * in SWIG 4.3; this keeps both versions alike.) */
+static PyObject *cvmpy_append(PyObject *result, PyObject *obj)
+{
+    if (!obj) {
+        Py_XDECREF(result);
+        return NULL;
+    }
+    if (!result || result == Py_None) {
+        Py_XDECREF(result);
+        return obj;
+    }
+    if (!PyList_Check(result)) {
+        PyObject *list = PyList_New(1);
+        if (!list) {
+            Py_DECREF(result);
+            Py_DECREF(obj);
+            return NULL;
+        }
+        PyList_SET_ITEM(list, 0, result);
+        result = list;
+    }
+    if (PyList_Append(result, obj) < 0) {
+        Py_DECREF(result);
+        result = NULL;
+    }
+    Py_DECREF(obj);
+    return result;
+}
 %}
 
 %init %{
@@ -263,7 +296,7 @@ CVMPY_IN_ROWS(int32_t, markers, cvmpy_in_int32, 0, "markers")
 }
 %typemap(argout) (CTYPE *dst, size_t dst_len) {
     if ($result) {
-        $result = SWIG_Python_AppendOutput($result, (PyObject *)arr$argnum);
+        $result = cvmpy_append($result, (PyObject *)arr$argnum);
         arr$argnum = NULL;
     }
 }
@@ -278,7 +311,7 @@ CVMPY_OUT_ARRAY(int32_t, NPY_INT32)
  * would dangle after the next call that modifies it. */
 %typemap(in, numinputs=0) (const double **ptr_out, size_t *count_out)
     (const double *ptr = NULL, size_t cnt = 0) {
-    $1 = &ptr;
+    $1 = ($1_ltype)&ptr;
     $2 = &cnt;
 }
 %typemap(argout, fragment="cvmpy_numpy") (const double **ptr_out, size_t *count_out) {
@@ -288,13 +321,8 @@ CVMPY_OUT_ARRAY(int32_t, NPY_INT32)
         dims[0] = (npy_intp)cnt$argnum;
         dims[1] = 2;
         a = (PyArrayObject *)PyArray_SimpleNew(2, dims, NPY_DOUBLE);
-        if (!a) {
-            Py_DECREF($result);
-            $result = NULL;
-        } else {
-            if (cnt$argnum)
-                memcpy(PyArray_DATA(a), ptr$argnum, 2 * cnt$argnum * sizeof(double));
-            $result = SWIG_Python_AppendOutput($result, (PyObject *)a);
-        }
+        if (a && cnt$argnum)
+            memcpy(PyArray_DATA(a), ptr$argnum, 2 * cnt$argnum * sizeof(double));
+        $result = cvmpy_append($result, (PyObject *)a);
     }
 }

@@ -28,6 +28,11 @@ struct cvm_mesh {
     double *vattr;           /* nattr per vertex, or NULL */
     size_t cap_vmark, cap_vattr;
     /* regional attributes per triangle live in tri.ta (NULL without regions) */
+
+    /* refinement (lib/api/refine.c) */
+    double refine_report[6]; /* the last cvm_mesh_refine(): CVM_MEASURE_REFINE_* */
+    int32_t *front_marks;    /* cvm_mesh_set_front_markers() */
+    size_t n_front_marks;
 };
 
 /* Slot of key in opt[], or -1 if the key is unknown. */
@@ -47,5 +52,10 @@ void cvm__mesh_drop_output(cvm_mesh *m);
  * allocated arrays of mo (freed with cvm__mesh_out_free). */
 cvm_status cvm__mesh_out_build(cvm_mesh *m, cvm__mesh_out *mo, int want_edges, int want_quality);
 void cvm__mesh_out_free(cvm_mesh *m, cvm__mesh_out *mo);
+
+/* The CVM_MEASURE_REFINE_* values of the last refinement (lib/api/refine.c):
+ * CVM_OK, or CVM_E_ARGUMENT when which is not a refinement measure.
+ * cvm_mesh_get_measure() hands these measures to it. */
+cvm_status cvm__refine_measure(double *out, const cvm_mesh *m, cvm_measure which);
 
 #endif

@@ -52,6 +52,7 @@ void cvm__mesh_drop_output(cvm_mesh *m)
     cvm__free(&m->ctx, m->input_map);
     m->input_map = NULL;
     m->n_dup = 0;
+    memset(m->refine_report, 0, sizeof m->refine_report);
 }
 
 void cvm_mesh_free(cvm_mesh *m)
@@ -65,6 +66,7 @@ void cvm_mesh_free(cvm_mesh *m)
     cvm__free(&m->ctx, m->input_map);
     cvm__free(&m->ctx, m->vmark);
     cvm__free(&m->ctx, m->vattr);
+    cvm__free(&m->ctx, m->front_marks);
     f = m->ctx.free_fn;
     payload = m->ctx.payload;
     f(payload, m);

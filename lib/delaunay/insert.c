@@ -52,12 +52,12 @@ static cvm_status grow_cavity(cvm__tri2 *T, int32_t p, int32_t t0, size_t *ncav_
     size_t nstack = 0, ncav = 0, nbnd = 0;
     cvm_status s;
 
-    T->tf[t0] |= CVM__TF_MARK;
-    if ((s = push_int(T, &T->cav, &T->cap_cav, ncav++, t0)) ||
-        (s = push_int(T, &T->stack, &T->cap_stack, nstack++, t0))) {
-        *ncav_out = ncav;
+    *ncav_out = 0;
+    if ((s = push_int(T, &T->cav, &T->cap_cav, 0, t0)) ||
+        (s = push_int(T, &T->stack, &T->cap_stack, 0, t0)))
         return s;
-    }
+    T->tf[t0] |= CVM__TF_MARK;
+    ncav = nstack = 1;
     while (nstack) {
         int32_t t = T->stack[--nstack];
         int j;
@@ -74,12 +74,14 @@ static cvm_status grow_cavity(cvm__tri2 *T, int32_t p, int32_t t0, size_t *ncav_
             else
                 cross = cvm__tri2_conflict(T, nb, p) > 0;
             if (cross) {
-                T->tf[nb] |= CVM__TF_MARK;
-                if ((s = push_int(T, &T->cav, &T->cap_cav, ncav++, nb)) ||
-                    (s = push_int(T, &T->stack, &T->cap_stack, nstack++, nb))) {
+                if ((s = push_int(T, &T->cav, &T->cap_cav, ncav, nb)) ||
+                    (s = push_int(T, &T->stack, &T->cap_stack, nstack, nb))) {
                     *ncav_out = ncav;
                     return s;
                 }
+                T->tf[nb] |= CVM__TF_MARK;
+                ncav++;
+                nstack++;
             } else {
                 size_t need = (nbnd + 1) * B_STRIDE;
                 if (need > T->cap_bnd &&

@@ -49,7 +49,7 @@ cvm__loc cvm__tri2_locate(cvm__tri2 *T, const double *p, int32_t start, int32_t 
             int32_t nb = T->tn[3 * (size_t)t + j] / 3;
             if (nb == prev)
                 continue;
-            if (cvm__orient2d(cvm__tri2_pt(T, v[(j + 1) % 3]), cvm__tri2_pt(T, v[(j + 2) % 3]), p) < 0) {
+            if (cvm__orient2d_inline(cvm__tri2_pt(T, v[(j + 1) % 3]), cvm__tri2_pt(T, v[(j + 2) % 3]), p) < 0) {
                 prev = t;
                 t = nb;
                 moved = 1;

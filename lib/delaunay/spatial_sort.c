@@ -23,25 +23,24 @@ static uint32_t hilbert_d(uint32_t x, uint32_t y)
     return d;
 }
 
-/* Stable LSD radix sort of idx[lo..hi) by key, 16 bits per pass. */
-static void radix_sort(uint32_t *key, int32_t *idx, uint32_t *ktmp, int32_t *itmp, size_t n,
-                       size_t *count)
+/* Stable LSD radix sort of (key, idx) by the low `bits` bits of key, 12 bits per pass. */
+static void radix_sort(uint64_t *key, int32_t *idx, uint64_t *ktmp, int32_t *itmp, size_t n,
+                       size_t *count, int bits)
 {
-    int pass;
+    int shift;
     size_t i;
-    for (pass = 0; pass < 2; pass++) {
-        int shift = 16 * pass;
+    for (shift = 0; shift < bits; shift += 12) {
         size_t sum = 0;
-        memset(count, 0, 65536 * sizeof(size_t));
+        memset(count, 0, 4096 * sizeof(size_t));
         for (i = 0; i < n; i++)
-            count[(key[i] >> shift) & 0xFFFFu]++;
-        for (i = 0; i < 65536; i++) {
+            count[(key[i] >> shift) & 0xFFFu]++;
+        for (i = 0; i < 4096; i++) {
             size_t c = count[i];
             count[i] = sum;
             sum += c;
         }
         for (i = 0; i < n; i++) {
-            size_t dst = count[(key[i] >> shift) & 0xFFFFu]++;
+            size_t dst = count[(key[i] >> shift) & 0xFFFu]++;
             ktmp[dst] = key[i];
             itmp[dst] = idx[i];
         }
@@ -54,10 +53,11 @@ cvm_status cvm__brio_order(cvm__ctx *ctx, const double *xy, size_t n, uint64_t s
                            int32_t *order)
 {
     double lo[2], hi[2], sc[2];
-    size_t i, start, end;
-    uint32_t *key, *ktmp;
+    size_t i;
+    uint64_t *key, *ktmp;
     int32_t *itmp;
     size_t *count;
+    int rounds = 0;
     cvm__rng rng;
     cvm_status s = CVM_OK;
 
@@ -66,7 +66,7 @@ cvm_status cvm__brio_order(cvm__ctx *ctx, const double *xy, size_t n, uint64_t s
     key = cvm__malloc(ctx, n * sizeof *key);
     ktmp = cvm__malloc(ctx, n * sizeof *ktmp);
     itmp = cvm__malloc(ctx, n * sizeof *itmp);
-    count = cvm__malloc(ctx, 65536 * sizeof *count);
+    count = cvm__malloc(ctx, 4096 * sizeof *count);
     if (!key || !ktmp || !itmp || !count) {
         s = CVM_E_NOMEM;
         goto done;
@@ -85,37 +85,31 @@ cvm_status cvm__brio_order(cvm__ctx *ctx, const double *xy, size_t n, uint64_t s
     }
     for (i = 0; i < 2; i++) {
         double ext = hi[i] - lo[i];
-        /* scale in two steps so huge extents do not overflow */
         sc[i] = ext > 0 ? 65535.0 / ext : 0.0;
         if (!(sc[i] < 1e300))
             sc[i] = 0.0;
     }
-    /* random permutation (Fisher-Yates) */
+    /* BRIO: round r = rounds - (number of trailing zero bits of a random word),
+     * so the last round holds about half the points, the one before a quarter... */
+    while ((n >> rounds) > 256 && rounds < 15)
+        rounds++;
     cvm__rng_seed(&rng, seed);
-    for (i = 0; i < n; i++)
-        order[i] = (int32_t)i;
-    for (i = n - 1; i > 0; i--) {
-        size_t j = (size_t)cvm__rng_below(&rng, i + 1);
-        int32_t t = order[i];
-        order[i] = order[j];
-        order[j] = t;
-    }
-    /* rounds: the last holds about half the points, the one before a quarter, ... */
-    end = n;
-    while (end > 0) {
-        start = end / 2 < 256 ? 0 : end / 2;
-        if (end - start > 1) {
-            for (i = start; i < end; i++) {
-                const double *p = xy + 2 * (size_t)order[i];
-                double fx = (p[0] - lo[0]) * sc[0], fy = (p[1] - lo[1]) * sc[1];
-                uint32_t x = fx > 65535.0 ? 65535u : fx > 0 ? (uint32_t)fx : 0u;
-                uint32_t y = fy > 65535.0 ? 65535u : fy > 0 ? (uint32_t)fy : 0u;
-                key[i] = hilbert_d(x, y);
-            }
-            radix_sort(key + start, order + start, ktmp, itmp, end - start, count);
+    for (i = 0; i < n; i++) {
+        const double *p = xy + 2 * i;
+        double fx = (p[0] - lo[0]) * sc[0], fy = (p[1] - lo[1]) * sc[1];
+        uint32_t x = fx > 65535.0 ? 65535u : fx > 0 ? (uint32_t)fx : 0u;
+        uint32_t y = fy > 65535.0 ? 65535u : fy > 0 ? (uint32_t)fy : 0u;
+        uint64_t rnd = cvm__rng_next(&rng);
+        int tz = 0, r;
+        while (tz < rounds && !(rnd & 1)) {
+            rnd >>= 1;
+            tz++;
         }
-        end = start;
+        r = rounds - tz;
+        key[i] = ((uint64_t)r << 32) | hilbert_d(x, y);
+        order[i] = (int32_t)i;
     }
+    radix_sort(key, order, ktmp, itmp, n, count, 36);
 done:
     cvm__free(ctx, key);
     cvm__free(ctx, ktmp);

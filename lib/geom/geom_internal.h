@@ -17,6 +17,7 @@
 #ifndef CVM_GEOM_INTERNAL_H
 #define CVM_GEOM_INTERNAL_H
 
+#include <math.h>
 #include <stdint.h>
 
 /* Sign convention: > 0 when a, b, c are counter-clockwise, < 0 clockwise,
@@ -58,6 +59,61 @@ double cvm__orient3d(const double *a, const double *b, const double *c, const do
  * orient3d(a, b, c, d) > 0; 0 when cospherical. */
 double cvm__insphere(const double *a, const double *b, const double *c, const double *d,
                      const double *e);
+
+/*
+ * Exactness range: the sign is exact for all finite inputs as long as, within
+ * one call, every nonzero coordinate is at least 2^-100 times the largest
+ * coordinate magnitude (for the power tests, treat sqrt|w| as a coordinate).
+ * Scale alone never matters: the slow stages rescale by a power of two, so
+ * clusters at 1e-300 or 1e300 are exact too, and then the returned magnitude is
+ * saturated to a nonzero finite double of the right sign. Outside that range
+ * (say, the points (1e-200, 1) and (1, 1) in one orient2d) underflow inside the
+ * exact stage can, in principle, lose bits, as in Shewchuk's predicates.
+ */
+
+/* The stages behind the filters of cvm__orient2d and cvm__incircle (same
+ * results, no filter): for the inline versions below. */
+double cvm__orient2d_adapt(const double *a, const double *b, const double *c);
+double cvm__incircle_adapt(const double *a, const double *b, const double *c, const double *d);
+
+/* Filter bounds (Shewchuk 1997, epsilon = 2^-53). The floor added to each bound
+ * sends results small enough to have underflowed to the exact stages. */
+static const double cvm__o2d_errbound_a = (3.0 + 16.0 * 0x1p-53) * 0x1p-53;
+static const double cvm__icc_errbound_a = (10.0 + 96.0 * 0x1p-53) * 0x1p-53;
+static const double cvm__filter_floor = 0x1p-1020;
+
+/* cvm__orient2d with its filter inlined into the caller (hot loops). */
+static inline double cvm__orient2d_inline(const double *a, const double *b, const double *c)
+{
+    double acx = a[0] - c[0], bcx = b[0] - c[0];
+    double acy = a[1] - c[1], bcy = b[1] - c[1];
+    double detleft = acx * bcy, detright = acy * bcx;
+    double det = detleft - detright;
+    double errbound = cvm__o2d_errbound_a * (fabs(detleft) + fabs(detright)) + cvm__filter_floor;
+    if (det > errbound || -det > errbound)
+        return det;
+    return cvm__orient2d_adapt(a, b, c);
+}
+
+/* cvm__incircle with its filter inlined into the caller (hot loops). */
+static inline double cvm__incircle_inline(const double *a, const double *b, const double *c,
+                                          const double *d)
+{
+    double adx = a[0] - d[0], bdx = b[0] - d[0], cdx = c[0] - d[0];
+    double ady = a[1] - d[1], bdy = b[1] - d[1], cdy = c[1] - d[1];
+    double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy, alift = adx * adx + ady * ady;
+    double cdxady = cdx * ady, adxcdy = adx * cdy, blift = bdx * bdx + bdy * bdy;
+    double adxbdy = adx * bdy, bdxady = bdx * ady, clift = cdx * cdx + cdy * cdy;
+    double det = alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy)
+                 + clift * (adxbdy - bdxady);
+    double permanent = (fabs(bdxcdy) + fabs(cdxbdy)) * alift
+                       + (fabs(cdxady) + fabs(adxcdy)) * blift
+                       + (fabs(adxbdy) + fabs(bdxady)) * clift;
+    double errbound = cvm__icc_errbound_a * permanent + cvm__filter_floor;
+    if (det > errbound || -det > errbound)
+        return det;
+    return cvm__incircle_adapt(a, b, c, d);
+}
 
 /* Constructions: plain doubles, possibly inexact; every later decision about
  * their result is taken by the exact predicates above. */

@@ -37,6 +37,15 @@ typedef struct cvm__reader {
     void *self;
 } cvm__reader;
 
+/* A cvm__reader over the file at path (self is its FILE). Returns CVM_OK or
+ * CVM_E_IO_OPEN with the message "cannot open PATH: reason". Close it with
+ * cvm__file_reader_close(), which accepts a reader that failed to open. */
+cvm_status cvm__file_reader_open(cvm__ctx *ctx, cvm__reader *r, const char *path);
+void cvm__file_reader_close(cvm__reader *r);
+
+/* Thread-safe text of errno value err into buf. */
+void cvm__strerror(int err, char *buf, size_t len);
+
 /* Parse Triangle .poly (is_poly = 1) or .node (is_poly = 0) text from r.
  * name is used in messages ("square.poly:12: ..."). On error p is left zeroed
  * and the message gives name:line. Returns CVM_OK, CVM_E_IO_READ,
@@ -67,8 +76,41 @@ typedef struct cvm__mesh_out {
     const double *tquality; /* nt or NULL: per-triangle value for SVG colouring (min angle, degrees) */
 } cvm__mesh_out;
 
-/* A byte sink with atomic commit. */
+/* Output formats, chosen by the extension of a path (case-insensitive). */
+typedef enum cvm__format {
+    CVM__FMT_NONE = 0, /* unknown extension */
+    CVM__FMT_VTU = 1,  /* .vtu: VTK XML unstructured grid, ASCII */
+    CVM__FMT_MSH = 2,  /* .msh: Gmsh 4.1 ASCII */
+    CVM__FMT_NODE = 3, /* .node: PREFIX.node + PREFIX.ele + PREFIX.edge (needs mo->edge) */
+    CVM__FMT_SVG = 4   /* .svg: a picture (colours from mo->tquality when given) */
+} cvm__format;
+
+cvm__format cvm__format_of(const char *path);
+
+/* A byte sink with atomic commit: the text goes to a new temporary file
+ * PATH.tmp.XXXXXX beside PATH, which cvm__writer_commit() renames over PATH.
+ * When PATH (after symbolic links) exists and is not a regular file (a
+ * device such as /dev/null, a FIFO), it is written in place instead.
+ * Output errors are sticky: the put functions never fail by themselves, the
+ * first error is reported by cvm__writer_finish() or cvm__writer_commit(). */
 typedef struct cvm__writer cvm__writer;
+
+/* Create the temporary file. Returns CVM_OK, CVM_E_IO_OPEN ("cannot create
+ * PATH: reason") or CVM_E_NOMEM; *out is NULL on error. */
+cvm_status cvm__writer_open(cvm__writer **out, cvm__ctx *ctx, const char *path);
+void cvm__writer_puts(cvm__writer *w, const char *s);
+/* printf-like; use only for integers and strings (no %f/%g: locale). */
+void cvm__writer_printf(cvm__writer *w, const char *fmt, ...) CVM__PRINTF(2, 3);
+/* A double in the shortest form that reads back exactly, '.' as decimal point. */
+void cvm__writer_double(cvm__writer *w, double x);
+/* Flush, sync and close the temporary file; CVM_OK or CVM_E_IO_WRITE (the
+ * writer stays, to be committed or discarded). Idempotent. */
+cvm_status cvm__writer_finish(cvm__writer *w);
+/* Finish if needed, then rename the temporary file over PATH and free w.
+ * On error the temporary file is removed: CVM_E_IO_WRITE. */
+cvm_status cvm__writer_commit(cvm__writer *w);
+/* Close and remove the temporary file and free w; NULL is a no-op. */
+void cvm__writer_discard(cvm__writer *w);
 
 /* Write the mesh to path in the format its extension names (.vtu, .msh,
  * .node -> PREFIX.node/.ele/.edge, .svg). Returns CVM_OK, CVM_E_UNSUPPORTED,

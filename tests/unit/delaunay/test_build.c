@@ -130,11 +130,11 @@ START_TEST(points_on_a_line_then_one_off)
     size_t i, nt;
     cvm_mesh *m;
     for (i = 0; i < 50; i++) {
-        xy[2 * i] = (double)i * 0.1;
-        xy[2 * i + 1] = 0.3 * (double)i * 0.1;
+        xy[2 * i] = (double)i;
+        xy[2 * i + 1] = 3.0 * (double)i;
     }
-    xy[100] = 1.0;
-    xy[101] = 5.0;
+    xy[100] = 10.0;
+    xy[101] = 50.0;
     m = mesh_of(xy, 51, 1);
     assert_point_set_mesh(m, 51);
     ck_assert_int_eq(cvm_mesh_count(&nt, m, CVM_ENT_TRIANGLE), CVM_OK);

@@ -194,7 +194,7 @@ START_TEST(jagged_star_polygon)
     double area = 0;
     unsigned long long s = 77;
     for (i = 0; i < k; i++) {
-        double a = 2 * M_PI * (double)i / (double)k, r;
+        double a = 6.283185307179586 * (double)i / (double)k, r;
         s = s * 6364136223846793005ull + 1442695040888963407ull;
         r = 0.5 + 0.5 * (double)(s >> 11) / 9007199254740992.0;
         xy[2 * i] = r * cos(a);

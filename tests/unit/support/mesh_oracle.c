@@ -274,7 +274,9 @@ static int progresses(const double *cur, const double *w, const double *b, int a
     return w[ax] < cur[ax] && w[ax] >= b[ax];
 }
 
-/* Walk input segment k, vertices a-b, along mesh edges. */
+/* Walk input segment k, vertices a-b, along mesh edges. With output segments
+ * given, only those edges are followed; an exactly collinear next vertex is
+ * preferred, else the Steiner vertex nearest the line (rounded intersections). */
 static int check_segment(oracle *o, size_t k, cvm_index a, cvm_index b)
 {
     const double *pa = P(o, a), *pb = P(o, b);
@@ -283,23 +285,29 @@ static int check_segment(oracle *o, size_t k, cvm_index a, cvm_index b)
     size_t steps = 0;
     if (pa[ax] == pb[ax])
         return ofail(o, "input segment %zu (vertices %ld-%ld) has zero length", k, (long)a,
-                    (long)b);
+                     (long)b);
     while (cur != b) {
-        cvm_index exact = -1, steiner = -1;
+        cvm_index exact = -1, steiner = -1, loose = -1;
         double best = 0;
         size_t i;
         if (++steps > o->nv)
             return ofail(o, "input segment %zu: walk from %ld to %ld does not end", k, (long)a,
-                        (long)b);
+                         (long)b);
         for (i = o->adj_off[cur]; i < o->adj_off[cur + 1]; i++) {
             cvm_index w = o->adj[i];
             const double *pw = P(o, w);
+            int on_line;
             if (!progresses(P(o, cur), pw, pb, ax))
                 continue;
-            if (w == b || cvm__orient2d(pa, pb, pw) == 0) {
+            on_line = w == b || cvm__orient2d(pa, pb, pw) == 0;
+            if (o->cons && !is_constrained(o, cur, w)) {
+                if (on_line)
+                    loose = w;
+                continue;
+            }
+            if (on_line) {
                 exact = w;
-            } else if ((size_t)w >= o->n_orig &&
-                       (!o->cons || is_constrained(o, cur, w))) {
+            } else if ((size_t)w >= o->n_orig) {
                 double dist = fabs(cvm__orient2d(pa, pb, pw));
                 if (steiner < 0 || dist < best) {
                     steiner = w;
@@ -309,12 +317,12 @@ static int check_segment(oracle *o, size_t k, cvm_index a, cvm_index b)
         }
         if (exact < 0)
             exact = steiner;
+        if (exact < 0 && loose >= 0)
+            return ofail(o, "input segment %zu (vertices %ld-%ld): mesh edge %ld-%ld on it is not "
+                         "an output segment", k, (long)a, (long)b, (long)cur, (long)loose);
         if (exact < 0)
             return ofail(o, "input segment %zu (vertices %ld-%ld) is not a union of mesh edges: "
-                        "no edge continues it from vertex %ld", k, (long)a, (long)b, (long)cur);
-        if (o->cons && !is_constrained(o, cur, exact))
-            return ofail(o, "input segment %zu (vertices %ld-%ld): mesh edge %ld-%ld on it is not "
-                        "an output segment", k, (long)a, (long)b, (long)cur, (long)exact);
+                         "no edge continues it from vertex %ld", k, (long)a, (long)b, (long)cur);
         cur = exact;
     }
     return 1;

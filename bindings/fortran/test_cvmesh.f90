@@ -1,0 +1,181 @@
+! test_cvmesh.f90 - tests of the Fortran module cvmesh: status codes and
+! messages, 1-based and 0-based copies, (2, n) coordinates, version agreement.
+! Run by bindings/fortran/check.sh; prints "N passed, N failed" and exits
+! non-zero on a failure.
+program test_cvmesh
+    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+    use cvmesh
+    implicit none
+    integer :: passed = 0, failed = 0
+
+    call test_version()
+    call test_square_one_based()
+    call test_zero_based_copies()
+    call test_bad_segment_names_the_segment()
+    call test_nonfinite_point()
+    call test_option_range()
+    call test_insert_points()
+    call test_status_text()
+    call test_raw_interfaces()
+
+    print '(a, i0, a, i0, a)', 'fortran: ', passed, ' passed, ', failed, ' failed'
+    if (failed > 0) error stop 1
+
+contains
+
+    subroutine expect(ok, what)
+        logical, intent(in) :: ok
+        character(len=*), intent(in) :: what
+        if (ok) then
+            passed = passed + 1
+        else
+            failed = failed + 1
+            print '(2a)', 'FAILED: ', what
+        end if
+    end subroutine expect
+
+    ! Bitwise equality of two doubles (exact comparisons are intended here).
+    logical function same(a, b)
+        real(c_double), intent(in) :: a, b
+        same = transfer(a, 1_c_int64_t) == transfer(b, 1_c_int64_t)
+    end function same
+
+    subroutine square(mesh)
+        type(cvm_mesh_t), intent(inout) :: mesh
+        real(c_double) :: xy(2, 4)
+        integer(c_int32_t) :: segs(2, 4)
+        xy = reshape([0d0, 0d0, 1d0, 0d0, 1d0, 1d0, 0d0, 1d0], [2, 4])
+        segs = reshape([1, 2, 2, 3, 3, 4, 4, 1], [2, 4])
+        call mesh%create()
+        call mesh%set_points(xy)
+        call mesh%set_segments(segs)
+    end subroutine square
+
+    subroutine test_version()
+        call expect(cvm_version_number() == CVM_VERSION_NUMBER_H, 'version number agrees with the header')
+        call expect(len(cvm_version()) >= 5, 'version string')
+    end subroutine test_version
+
+    subroutine test_square_one_based()
+        type(cvm_mesh_t) :: mesh
+        integer(c_int32_t), allocatable :: tri(:, :), nb(:, :), seg(:, :)
+        real(c_double), allocatable :: pts(:, :)
+        integer :: status
+        call square(mesh)
+        call mesh%triangulate(status)
+        call expect(status == CVM_OK, 'square triangulates')
+        call mesh%get_points(pts)
+        call expect(all(shape(pts) == [2, 4]), 'points are (2, n)')
+        call expect(same(pts(1, 2), 1d0) .and. same(pts(2, 2), 0d0), 'point 2 is (1, 0)')
+        call mesh%get_triangles(tri)
+        call expect(all(shape(tri) == [3, 2]), 'two triangles (3, m)')
+        call expect(minval(tri) == 1 .and. maxval(tri) == 4, 'triangles are 1-based')
+        call mesh%get_neighbors(nb)
+        call expect(count(nb == 0) == 4 .and. count(nb == 1) == 1 .and. count(nb == 2) == 1, &
+                    'neighbours 1-based, 0 on the boundary')
+        call mesh%get_segments(seg)
+        call expect(size(seg, 2) == 4 .and. minval(seg) == 1, 'segments 1-based')
+        call expect(mesh%count(CVM_ENT_EDGE) == 5, 'five edges')
+        call mesh%check(status)
+        call expect(status == CVM_OK, 'check passes')
+        call mesh%destroy()
+        call mesh%destroy()
+        call expect(.not. c_associated(mesh%ptr), 'destroy twice is safe')
+    end subroutine test_square_one_based
+
+    subroutine test_zero_based_copies()
+        type(cvm_mesh_t) :: mesh
+        integer(c_int32_t), allocatable :: tri(:, :), nb(:, :)
+        call square(mesh)
+        call mesh%triangulate()
+        call mesh%get_triangles(tri, base=0)
+        call expect(minval(tri) == 0 .and. maxval(tri) == 3, 'base=0 gives C numbering')
+        call mesh%get_neighbors(nb, base=0)
+        call expect(count(nb == -1) == 4, 'base=0 neighbours: -1 on the boundary')
+    end subroutine test_zero_based_copies
+
+    subroutine test_bad_segment_names_the_segment()
+        type(cvm_mesh_t) :: mesh
+        real(c_double) :: xy(2, 3)
+        integer(c_int32_t) :: segs(2, 2)
+        integer :: status
+        xy = reshape([0d0, 0d0, 1d0, 0d0, 0d0, 1d0], [2, 3])
+        segs = reshape([1, 2, 2, 9], [2, 2])
+        call mesh%create()
+        call mesh%set_points(xy)
+        call mesh%set_segments(segs)
+        call mesh%triangulate(status)
+        call expect(status == CVM_E_INPUT_INDEX, 'bad index gives CVM_E_INPUT_INDEX')
+        call expect(cvm_is_error(status), 'it is an error')
+        call expect(index(mesh%errmsg(), 'segment 1') > 0, 'message names segment 1 (0-based): ' &
+                    //mesh%errmsg())
+    end subroutine test_bad_segment_names_the_segment
+
+    subroutine test_nonfinite_point()
+        type(cvm_mesh_t) :: mesh
+        real(c_double) :: xy(2, 3)
+        integer :: status
+        xy = reshape([0d0, 0d0, 1d0, 0d0, 0d0, 1d0], [2, 3])
+        xy(2, 3) = ieee_value(1d0, ieee_quiet_nan)
+        call mesh%create()
+        call mesh%set_points(xy, status)
+        call expect(status == CVM_E_INPUT_NONFINITE, 'NaN gives CVM_E_INPUT_NONFINITE')
+        call expect(index(mesh%errmsg(), 'point 2') > 0, 'message names point 2: '//mesh%errmsg())
+    end subroutine test_nonfinite_point
+
+    subroutine test_option_range()
+        type(cvm_mesh_t) :: mesh
+        real(c_double) :: v
+        integer :: status
+        call mesh%create()
+        call mesh%set_option(CVM_OPT_MIN_ANGLE_DEG, 90d0, status)
+        call expect(status == CVM_E_OPTION_RANGE, 'option out of range')
+        call mesh%set_option(CVM_OPT_SEED, 7d0)
+        call mesh%get_option(CVM_OPT_SEED, v)
+        call expect(same(v, 7d0), 'option read back')
+    end subroutine test_option_range
+
+    subroutine test_insert_points()
+        type(cvm_mesh_t) :: mesh
+        real(c_double) :: p(2, 3)
+        integer(c_int32_t), allocatable :: ids(:)
+        integer :: status
+        p = reshape([0.5d0, 0.5d0, 5d0, 5d0, 0.25d0, 0.5d0], [2, 3])
+        call square(mesh)
+        call mesh%insert_points(p, status)
+        call expect(status == CVM_E_STATE, 'insert before triangulate is a state error')
+        call mesh%triangulate()
+        call mesh%insert_points(p, status, ids=ids)
+        call expect(status == CVM_OK, 'insert_points')
+        call expect(all(ids == [5, 0, 6]), 'ids 1-based, 0 for the rejected point')
+        call expect(mesh%count(CVM_ENT_VERTEX) == 6, 'six vertices')
+    end subroutine test_insert_points
+
+    subroutine test_status_text()
+        call expect(cvm_status_text(CVM_E_NOMEM) == 'out of memory', 'status text')
+        call expect(.not. cvm_is_error(CVM_INCOMPLETE_CANCELLED), 'incomplete is not an error')
+    end subroutine test_status_text
+
+    subroutine test_raw_interfaces()
+        type(c_ptr) :: m
+        type(cvm_bounds) :: b
+        integer(c_size_t) :: n
+        integer(c_int32_t) :: cells(6)
+        integer(c_int) :: s
+        real(c_double) :: xy(2, 4)
+        xy = reshape([0d0, 0d0, 1d0, 0d0, 1d0, 1d0, 0d0, 1d0], [2, 4])
+        call expect(cvm_mesh_create(m) == CVM_OK, 'raw create')
+        call expect(cvm_mesh_set_points(m, xy, 4_c_size_t, 2_c_int) == CVM_OK, 'raw set_points')
+        call expect(cvm_mesh_triangulate(m) == CVM_OK, 'raw triangulate')
+        s = cvm_mesh_count(n, m, CVM_ENT_TRIANGLE)
+        call expect(s == CVM_OK .and. n == 2, 'raw count')
+        call expect(cvm_mesh_copy_cells(cells, 5_c_size_t, m, CVM_ENT_TRIANGLE) == &
+                    CVM_E_BUFFER_TOO_SMALL, 'raw copy into a short buffer')
+        call expect(cvm_mesh_copy_cells(cells, 6_c_size_t, m, CVM_ENT_TRIANGLE) == CVM_OK, 'raw copy')
+        call expect(minval(cells) == 0 .and. maxval(cells) == 3, 'raw copy is 0-based')
+        call cvm_mesh_free(m)
+        s = cvm_option_bounds(b, CVM_OPT_MIN_ANGLE_DEG)
+        call expect(s == CVM_OK .and. b%lo <= b%def .and. b%def <= b%hi, 'option bounds struct')
+    end subroutine test_raw_interfaces
+
+end program test_cvmesh

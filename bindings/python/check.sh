@@ -1,0 +1,70 @@
+#!/bin/sh
+# bindings/python/check.sh - build the Python binding and run tests/python.
+#  1. a venv in $BUILD/venv with numpy, pytest, swig (and meshio, matplotlib) from PyPI;
+#  2. a wheel built as users build it: `pip wheel` in an isolated build
+#     environment whose SWIG is the swig wheel, compiler warnings as errors;
+#     the wheel must contain the SWIG-generated cvmesh/capi.py; install, pytest;
+#  3. when Debian's SWIG is there ($SYSTEM_SWIG, default /usr/bin/swig, 4.1):
+#     rebuild with it, install, pytest again.
+# Usage: sh bindings/python/check.sh [--build-only]   (--build-only: step 1-2, no tests)
+# Environment: BUILD (default build, relative to the top), PYTHON (python3),
+#   SYSTEM_SWIG, PYTEST_ARGS.
+set -eu
+here=$(cd "$(dirname "$0")" && pwd)
+root=$(cd "$here/../.." && pwd)
+build=${BUILD:-build}
+case $build in /*) ;; *) build=$root/$build ;; esac
+venv=$build/venv
+dist=$build/python/dist
+PYTHON=${PYTHON:-python3}
+SYSTEM_SWIG=${SYSTEM_SWIG:-/usr/bin/swig}
+pipq="-q --disable-pip-version-check"
+
+if [ ! -x "$venv/bin/python" ]; then
+    echo "check-python: creating $venv"
+    "$PYTHON" -m venv "$venv"
+fi
+py=$venv/bin/python
+"$py" -m pip install $pipq numpy pytest swig "setuptools>=77"
+# optional: the tests of Mesh.to_meshio() and Mesh.plot() skip without them
+"$py" -m pip install $pipq meshio matplotlib || echo "check-python: meshio/matplotlib not installed; their tests will skip"
+
+# One build tree per SWIG, so no object of one build is reused by the other.
+build_wheel() {  # build_wheel TAG [pip options]
+    tag=$1
+    shift
+    rm -rf "$dist"
+    CVMESH_WERROR=1 CVMESH_BUILD_DIR=$build/python/$tag \
+        "$py" -m pip wheel $pipq --no-deps -w "$dist" "$@" "$here"
+    whl=$(ls "$dist"/cvmesh-*.whl)
+    "$py" - "$whl" <<'PYEOF'
+import sys, zipfile
+names = zipfile.ZipFile(sys.argv[1]).namelist()
+need = ["cvmesh/__init__.py", "cvmesh/_errors.py", "cvmesh/capi.py"]
+missing = [n for n in need if n not in names]
+if missing or not any(n.startswith("cvmesh/_capi") for n in names):
+    sys.exit("check-python: wheel %s lacks %s" % (sys.argv[1], missing or "the extension"))
+PYEOF
+    "$py" -m pip install $pipq --force-reinstall --no-deps "$whl"
+}
+
+run_tests() {  # run_tests LABEL
+    echo "check-python: tests/python ($1)"
+    (cd "$root" && "$venv/bin/pytest" -q -p no:cacheprovider ${PYTEST_ARGS:-} tests/python)
+}
+
+echo "check-python: building with the swig wheel (isolated build)"
+build_wheel swig-wheel
+[ "${1:-}" = --build-only ] && exit 0
+"$py" -c "import cvmesh, sys; print('check-python: cvmesh', cvmesh.version(), 'from', cvmesh.__file__)"
+run_tests "swig wheel $("$venv/bin/swig" -version | awk '/Version/ { print $3 }')"
+
+if [ -x "$SYSTEM_SWIG" ]; then
+    echo "check-python: building with $SYSTEM_SWIG"
+    CVMESH_SWIG=$SYSTEM_SWIG build_wheel system-swig --no-build-isolation
+    run_tests "$SYSTEM_SWIG $("$SYSTEM_SWIG" -version | awk '/Version/ { print $3 }')"
+    # leave the swig-wheel build installed, as users get it
+    build_wheel swig-wheel
+else
+    echo "check-python: $SYSTEM_SWIG not found; skipped the build with the system SWIG"
+fi

@@ -1,0 +1,681 @@
+"""cvmesh: triangle meshes whose Delaunay primal and Voronoi dual are both of
+high quality, from Python.
+
+    >>> import numpy as np, cvmesh
+    >>> square = np.array([[0, 0], [1, 0], [1, 1], [0, 1]], dtype=float)
+    >>> mesh = cvmesh.Mesh.from_pslg(square, [[0, 1], [1, 2], [2, 3], [3, 0]])
+    >>> mesh.triangulate()
+    <Status.OK: 0>
+    >>> mesh.triangles.shape
+    (2, 3)
+
+Arrays go in and come out as numpy arrays: coordinates float64 of shape
+(n, 2), connectivity int32 with 0-based indices. Every error of the library
+raises a subclass of cvmesh.Error carrying the library's message, which names
+the offending input. The flat C API is available as cvmesh.capi.
+"""
+
+import contextlib
+import dataclasses
+import enum
+import math
+import os
+import threading
+import warnings
+from collections import namedtuple
+
+import numpy as np
+
+from . import capi
+from ._errors import (ArgumentError, Error, FileError, IncompleteWarning,
+                      InputError, InternalError, NoMemoryError, OptionError,
+                      StateError, UnsupportedError, error_class)
+
+__all__ = [
+    "Mesh", "Sizing", "Quality", "Bounds", "Status", "Option", "Entity", "Measure",
+    "Histogram", "Stage", "Algorithm", "option_bounds", "version", "Error", "ArgumentError",
+    "OptionError", "InputError", "StateError", "UnsupportedError", "FileError",
+    "NoMemoryError", "InternalError", "IncompleteWarning", "error_class",
+]
+
+__version__ = capi.cvm_version_string()
+
+
+def _constants(prefixes, strip):
+    """{NAME: value} of the integer constants of capi whose names start with
+    one of prefixes, the first `strip` characters removed, sorted by value."""
+    found = {}
+    for name in dir(capi):
+        value = getattr(capi, name)
+        if isinstance(value, int) and name.startswith(prefixes):
+            found[name[strip:]] = value
+    return dict(sorted(found.items(), key=lambda kv: (kv[1], kv[0])))
+
+
+# Enumerations, built from the header's constants so new values appear
+# without a change here.
+Status = enum.IntEnum("Status", _constants(("CVM_OK", "CVM_E_", "CVM_INCOMPLETE_"), 4),
+                      module=__name__)
+Status.__doc__ = "cvm_status codes: OK, errors E_* (1..99), INCOMPLETE_* (>= 100)."
+Status.is_error = property(lambda self: 1 <= self.value < 100)
+Status.incomplete = property(lambda self: self.value >= 100)
+Option = enum.IntEnum("Option", _constants(("CVM_OPT_",), 8), module=__name__)
+Option.__doc__ = "Option keys (cvm_option); also usable as lower-case strings."
+Entity = enum.IntEnum("Entity", _constants(("CVM_ENT_",), 8), module=__name__)
+Entity.__doc__ = "Kinds of mesh entities (cvm_entity)."
+Measure = enum.IntEnum("Measure", _constants(("CVM_MEASURE_",), 12), module=__name__)
+Measure.__doc__ = "Scalar quality measures (cvm_measure)."
+Histogram = enum.IntEnum("Histogram", _constants(("CVM_HIST_",), 9), module=__name__)
+Histogram.__doc__ = "Quality histograms (cvm_histogram)."
+Stage = enum.IntEnum("Stage", _constants(("CVM_STAGE_",), 10), module=__name__)
+Stage.__doc__ = "Stages reported to a progress callback (cvm_stage)."
+Algorithm = enum.IntEnum("Algorithm", _constants(("CVM_ALGO_",), 9), module=__name__)
+Algorithm.__doc__ = "Refinement algorithms of Mesh.refine() (cvm_algorithm)."
+
+REJECTED = -1
+"""Id that insert_points() gives a point it rejected (CVM_REJECTED)."""
+
+Bounds = namedtuple("Bounds", "lo hi default is_integer")
+Bounds.__doc__ = "Bounds and default of an option (cvm_bounds)."
+
+# Histogram lengths (cvmesh.h: 18 angle bins, 16 degree bins).
+_HIST_BINS = {"ANGLE_DEG": 18, "DEGREE": 16}
+
+
+def version():
+    """Version string of the compiled library, e.g. '0.1.0'."""
+    return capi.cvm_version_string()
+
+
+def _option_key(key):
+    """Option from an Option, an int, or a name like 'min_angle_deg'."""
+    if isinstance(key, str):
+        try:
+            return Option[key.upper()]
+        except KeyError:
+            raise OptionError("unknown option %r; known: %s" % (
+                key, ", ".join(o.name.lower() for o in Option)),
+                Status.E_OPTION_KEY) from None
+    return int(key)
+
+
+def option_bounds(key):
+    """Bounds(lo, hi, default, is_integer) of an option key."""
+    lo, hi, default, is_integer = capi.cvm_option_bounds(_option_key(key))
+    return Bounds(lo, hi, default, bool(is_integer))
+
+
+def _status(code):
+    try:
+        return Status(code)
+    except ValueError:
+        return code
+
+
+def _stage(code):
+    try:
+        return Stage(code)
+    except ValueError:
+        return code
+
+
+def _unsupported(message):
+    return UnsupportedError(message, Status.E_UNSUPPORTED)
+
+
+def _quality_fields():
+    fields = [(m.name.lower(), float) for m in Measure]
+    fields += [("hist_" + h.name.lower(), np.ndarray) for h in Histogram]
+    return fields
+
+
+Quality = dataclasses.make_dataclass("Quality", _quality_fields(), frozen=True, eq=False)
+Quality.__module__ = __name__
+Quality.__doc__ = (
+    "Quality of a mesh (Mesh.quality()): one float per cvmesh.Measure, named\n"
+    "in lower case (min_angle_deg, max_angle_deg, regular_pct, obtuse_pct,\n"
+    "degree6_pct, min_dual_edge_ratio, min_edge, max_edge, area, min_area),\n"
+    "and one array of counts per cvmesh.Histogram (hist_angle_deg: 18 bins\n"
+    "of 10 degrees; hist_degree: interior vertex degree 0..14 and >= 15).\n"
+    "NaN marks a measure this build cannot compute.")
+Quality.as_dict = lambda self: dataclasses.asdict(self)
+
+
+class Mesh:
+    """A cvmesh handle: input (points, segments, holes, regions), options,
+    and the triangulation built from them.
+
+    Create one with Mesh.from_pslg(), Mesh.from_points() or Mesh.read(), or
+    Mesh(**options) and set the input. Options can be given as keywords
+    (Mesh(seed=3), mesh.triangulate(time_limit_s=1.0)) or with set_option().
+
+    One call at a time per mesh: calls from several threads are serialised,
+    and a progress callback must not call methods of the mesh it reports on.
+    Long calls (triangulate, insert_points, read, write, check) release the
+    GIL, and Ctrl-C stops them with KeyboardInterrupt, leaving a valid mesh.
+    """
+
+    #: operations between two progress checks when no callback is set
+    #: (keeps Ctrl-C working); None turns the checks off.
+    interrupt_every = 4096
+
+    def __init__(self, **options):
+        self._m = None
+        self._lock = threading.Lock()
+        self._owner = None
+        self._progress = None
+        self._progress_every = 0
+        self.last_status = Status.OK
+        self._m = capi.cvm_mesh_create()
+        self.set_options(**options)
+
+    # ---- construction ------------------------------------------------------
+
+    @classmethod
+    def from_points(cls, points, markers=None, attributes=None, **options):
+        """A mesh whose input is a point set; triangulate() gives its Delaunay
+        triangulation."""
+        mesh = cls(**options)
+        mesh.set_points(points, markers=markers, attributes=attributes)
+        return mesh
+
+    @classmethod
+    def from_pslg(cls, points, segments=None, holes=None, markers=None, regions=None,
+                  segment_markers=None, attributes=None, **options):
+        """A mesh whose input is a planar straight-line graph.
+
+        points: (n, 2) coordinates; segments: (m, 2) 0-based point indices;
+        holes: (k, 2) seed points of holes; markers: (n,) point markers;
+        regions: (r, 4) rows (x, y, attribute, max_area);
+        segment_markers: (m,) segment markers; attributes: (n, a) point attributes.
+        """
+        mesh = cls.from_points(points, markers=markers, attributes=attributes, **options)
+        if segments is not None:
+            mesh.set_segments(segments, markers=segment_markers)
+        if holes is not None:
+            mesh.set_holes(holes)
+        if regions is not None:
+            mesh.set_regions(regions)
+        return mesh
+
+    @classmethod
+    def read(cls, path, **options):
+        """A mesh whose input is read from a Triangle .poly or .node file."""
+        mesh = cls(**options)
+        mesh.load(path)
+        return mesh
+
+    # ---- lifetime ----------------------------------------------------------
+
+    def close(self):
+        """Free the C handle now (also done when the object is collected)."""
+        m, self._m = self._m, None
+        if m is not None and capi is not None:
+            capi.cvm_mesh_free(m)
+
+    def __del__(self):
+        if getattr(self, "_m", None) is not None:
+            self.close()
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+
+    def __repr__(self):
+        if self._m is None:
+            return "<cvmesh.Mesh (closed)>"
+        return "<cvmesh.Mesh: %d vertices, %d triangles>" % (
+            self.count(Entity.VERTEX), self.count(Entity.TRIANGLE))
+
+    @contextlib.contextmanager
+    def _handle(self):
+        """The C handle, held for one call at a time."""
+        me = threading.get_ident()
+        if self._owner == me:
+            raise StateError("a progress callback must not call methods of the mesh "
+                             "that is reporting to it", Status.E_STATE)
+        with self._lock:
+            if self._m is None:
+                raise StateError("the mesh is closed", Status.E_STATE)
+            self._owner = me
+            try:
+                yield self._m
+            finally:
+                self._owner = None
+
+    # ---- input -------------------------------------------------------------
+
+    def set_points(self, points, markers=None, attributes=None):
+        """Set the input points ((n, 2) array-like); clears any triangulation."""
+        with self._handle() as m:
+            capi.cvm_mesh_set_points(m, points)
+            if markers is not None:
+                capi.cvm_mesh_set_point_markers(m, markers)
+            if attributes is not None:
+                attributes = np.asarray(attributes, dtype=np.float64)
+                if attributes.ndim == 1:
+                    attributes = attributes.reshape(-1, 1)
+                capi.cvm_mesh_set_point_attributes(m, attributes)
+
+    def set_segments(self, segments, markers=None):
+        """Set the constraint segments ((m, 2) 0-based point indices)."""
+        with self._handle() as m:
+            capi.cvm_mesh_set_segments(m, segments)
+            if markers is not None:
+                capi.cvm_mesh_set_segment_markers(m, markers)
+
+    def set_holes(self, holes):
+        """Set hole seed points ((k, 2))."""
+        with self._handle() as m:
+            capi.cvm_mesh_set_holes(m, holes)
+
+    def set_regions(self, regions):
+        """Set regions: (r, 4) rows (x, y, attribute, max_area)."""
+        with self._handle() as m:
+            capi.cvm_mesh_set_regions(m, regions)
+
+    def load(self, path):
+        """Replace the input by a Triangle .poly or .node file."""
+        with self._handle() as m, self._progress_installed(m, None, None):
+            return self._finish(capi.cvm_mesh_read(m, os.fspath(path)))
+
+    # ---- options -----------------------------------------------------------
+
+    def set_option(self, key, value):
+        """Set an option (an Option, or its name such as 'min_angle_deg')."""
+        key = _option_key(key)
+        with self._handle() as m:
+            capi.cvm_mesh_set_option(m, key, float(value))
+
+    def get_option(self, key):
+        """Value of an option (a float)."""
+        key = _option_key(key)
+        with self._handle() as m:
+            return capi.cvm_mesh_get_option(m, key)
+
+    def set_options(self, **options):
+        """Set several options by name: mesh.set_options(seed=3, time_limit_s=2)."""
+        for key, value in options.items():
+            self.set_option(key, value)
+
+    @property
+    def options(self):
+        """{name: value} of every option of this mesh."""
+        return {o.name.lower(): self.get_option(o) for o in Option}
+
+    # ---- progress ----------------------------------------------------------
+
+    def set_progress(self, callback, every=1000):
+        """Call callback(stage, fraction) about every `every` operations of long
+        calls; a true result stops the call (Status.INCOMPLETE_CANCELLED) and an
+        exception stops it and propagates. None removes the callback."""
+        self._progress = callback
+        self._progress_every = int(every) if callback is not None else 0
+
+    @contextlib.contextmanager
+    def _progress_installed(self, m, callback, every):
+        """Install the progress callback of one long call: the given one, else
+        the one of set_progress(), else a check for Ctrl-C alone. It stays
+        installed after the call (uninstalling would clear the handle's error
+        message) and is replaced by the next long call."""
+        if callback is None:
+            callback, every = self._progress, every or self._progress_every
+        if callback is not None:
+            def target(stage, fraction, _cb=callback):
+                return _cb(_stage(stage), fraction)
+            capi.cvm_mesh_set_progress(m, target, int(every or 1000))
+        else:
+            capi.cvm_mesh_set_progress(m, None, int(self.interrupt_every or 0))
+        yield
+
+    def _finish(self, code):
+        """Record the status of a long call; warn when it stopped early on a
+        limit (a cancellation the caller asked for is not warned about)."""
+        status = _status(code)
+        self.last_status = status
+        if code >= 100 and code != Status.INCOMPLETE_CANCELLED:
+            warnings.warn("%s: %s" % (status.name if isinstance(status, Status) else status,
+                                      capi.cvm_status_str(code)),
+                          IncompleteWarning, stacklevel=3)
+        return status
+
+    # ---- meshing -----------------------------------------------------------
+
+    def triangulate(self, progress=None, every=None, **options):
+        """(Constrained) Delaunay triangulation of the input.
+
+        progress: callback(stage, fraction) -> bool for this call (see
+        set_progress); options: set before the call. Returns the Status:
+        OK, or INCOMPLETE_* when stopped (the mesh is then empty).
+        """
+        self.set_options(**options)
+        with self._handle() as m, self._progress_installed(m, progress, every):
+            return self._finish(capi.cvm_mesh_triangulate(m))
+
+    def insert_points(self, xy, min_dist=0.0, progress=None, every=None):
+        """Insert (k, 2) points into the triangulation; returns the int32 vertex
+        id of each point, or REJECTED (-1) for a point outside the domain or
+        closer than min_dist to an existing vertex."""
+        with self._handle() as m, self._progress_installed(m, progress, every):
+            code, ids = capi.cvm_mesh_insert_points(m, xy, float(min_dist))
+            self._finish(code)
+            return ids
+
+    def refine(self, algorithm="frontal", size=None, min_angle=None, max_area=None,
+               sizing=None, max_steiner=None, progress=None, every=None, **options):
+        """Refine the triangulation with Steiner points until every triangle
+        meets the minimum angle, the maximum area and the sizing.
+
+        algorithm: "frontal" (off-centres grown from the boundary) or
+        "delaunay" (circumcentres), or an Algorithm. size: target edge length,
+        a number or a callable size(x, y) (shortcut for a Sizing); sizing: a
+        Sizing. min_angle: degrees; max_area; max_steiner: limit on added
+        points. Triangulates first when nothing is triangulated yet. Returns
+        the Status (INCOMPLETE_* when a limit or the callback stopped it; the
+        mesh is then valid with the points inserted so far).
+        """
+        if not hasattr(capi, "cvm_mesh_refine"):
+            raise _unsupported(
+                "mesh refinement is not available in this version of the cvmesh library "
+                "(%s): cvm_mesh_refine() is not in cvmesh.h; use triangulate() and "
+                "insert_points()" % version())
+        if size is not None and sizing is not None:
+            raise ValueError("give size or sizing, not both")
+        if min_angle is not None:
+            options["min_angle_deg"] = min_angle
+        if max_area is not None:
+            options["max_area"] = max_area
+        if max_steiner is not None:
+            options["max_steiner"] = max_steiner
+        algo = _algorithm(algorithm)
+        self.set_options(**options)
+        if self.count(Entity.TRIANGLE) == 0:
+            self.triangulate(progress=progress, every=every)
+        own = None
+        if size is not None:
+            own = sizing = Sizing(callback=size) if callable(size) else Sizing(uniform=size)
+        try:
+            with contextlib.ExitStack() as stack:
+                s = stack.enter_context(sizing._handle()) if sizing is not None else None
+                m = stack.enter_context(self._handle())
+                stack.enter_context(self._progress_installed(m, progress, every))
+                return self._finish(capi.cvm_mesh_refine(m, s, algo))
+        finally:
+            if own is not None:
+                own.close()
+
+    def check(self):
+        """Re-verify the mesh with exact predicates; raises InternalError
+        naming the failed check, else returns True."""
+        with self._handle() as m, self._progress_installed(m, None, None):
+            self._finish(capi.cvm_mesh_check(m))
+        return True
+
+    # ---- output ------------------------------------------------------------
+
+    def count(self, kind):
+        """Number of entities of a kind (an Entity or its name, e.g. 'triangle')."""
+        if isinstance(kind, str):
+            kind = Entity[kind.upper()]
+        with self._handle() as m:
+            return capi.cvm_mesh_count(m, int(kind))
+
+    def _cells(self, kind, width):
+        with self._handle() as m:
+            n = capi.cvm_mesh_count(m, kind)
+            return capi.cvm_mesh_copy_cells(width * n, m, kind).reshape(n, width)
+
+    @property
+    def points(self):
+        """(n, 2) float64 vertex coordinates (a copy)."""
+        with self._handle() as m:
+            n = capi.cvm_mesh_count(m, Entity.VERTEX)
+            return capi.cvm_mesh_copy_points(2 * n, m).reshape(n, 2)
+
+    @property
+    def triangles(self):
+        """(m, 3) int32 vertex ids of the triangles, counter-clockwise."""
+        return self._cells(Entity.TRIANGLE, 3)
+
+    @property
+    def edges(self):
+        """(e, 2) int32 vertex ids of the edges, sorted."""
+        return self._cells(Entity.EDGE, 2)
+
+    @property
+    def segments(self):
+        """(s, 2) int32 vertex ids of the constrained edges of the output."""
+        return self._cells(Entity.SEGMENT, 2)
+
+    @property
+    def neighbors(self):
+        """(m, 3) int32: neighbour of each triangle across the edge opposite
+        vertex k, -1 on the boundary."""
+        with self._handle() as m:
+            n = capi.cvm_mesh_count(m, Entity.TRIANGLE)
+            return capi.cvm_mesh_copy_neighbors(3 * n, m).reshape(n, 3)
+
+    def _markers(self, kind):
+        with self._handle() as m:
+            n = capi.cvm_mesh_count(m, kind)
+            return capi.cvm_mesh_copy_markers(n, m, kind)
+
+    @property
+    def point_markers(self):
+        """(n,) int32 marker of each vertex."""
+        return self._markers(Entity.VERTEX)
+
+    @property
+    def segment_markers(self):
+        """(s,) int32 marker of each output segment."""
+        return self._markers(Entity.SEGMENT)
+
+    @property
+    def triangle_attributes(self):
+        """(m,) float64 regional attribute of each triangle."""
+        with self._handle() as m:
+            n = capi.cvm_mesh_count(m, Entity.TRIANGLE)
+            return capi.cvm_mesh_copy_triangle_attributes(n, m)
+
+    @property
+    def point_attributes(self):
+        """(n, a) float64 point attributes of each vertex."""
+        with self._handle() as m:
+            n = capi.cvm_mesh_count(m, Entity.VERTEX)
+            nattr = 0
+            while True:
+                try:
+                    values, nattr = capi.cvm_mesh_copy_point_attributes(n * nattr, m)
+                    return values.reshape(n, nattr)
+                except ArgumentError as e:
+                    # The buffer size depends on nattr, which only a successful
+                    # call reports: grow until it fits.
+                    if e.status != Status.E_BUFFER_TOO_SMALL or nattr > 4096:
+                        raise
+                    nattr = max(1, 2 * nattr)
+
+    @property
+    def input_map(self):
+        """(n_input,) int32: the vertex each input point became."""
+        with self._handle() as m:
+            n = capi.cvm_mesh_count(m, Entity.INPUT_POINT)
+            return capi.cvm_mesh_copy_input_map(n, m)
+
+    @property
+    def last_error(self):
+        """Message of the last failing call on this mesh ('' after success)."""
+        with self._handle() as m:
+            return capi.cvm_mesh_errmsg(m)
+
+    def quality(self):
+        """Quality measures and histograms of the current mesh (a Quality)."""
+        values = {}
+        with self._handle() as m:
+            for meas in Measure:
+                try:
+                    values[meas.name.lower()] = capi.cvm_mesh_get_measure(m, meas)
+                except (UnsupportedError, ArgumentError) as e:
+                    if e.status not in (Status.E_UNSUPPORTED, Status.E_ARGUMENT):
+                        raise
+                    values[meas.name.lower()] = math.nan  # not in this build
+            for hist in Histogram:
+                bins = _HIST_BINS.get(hist.name, 64)
+                values["hist_" + hist.name.lower()] = capi.cvm_mesh_copy_histogram(bins, m, hist)
+        return Quality(**values)
+
+    def write(self, path):
+        """Write the mesh; the format follows the extension: .vtu, .msh,
+        .node (with .ele and .edge), .svg."""
+        with self._handle() as m, self._progress_installed(m, None, None):
+            self._finish(capi.cvm_mesh_write(m, os.fspath(path)))
+
+    # ---- interoperability --------------------------------------------------
+
+    def to_meshio(self):
+        """A meshio.Mesh of the triangles (z = 0), with point markers and
+        triangle attributes as data. Needs the meshio package."""
+        try:
+            import meshio
+        except ImportError:
+            raise ImportError("Mesh.to_meshio() needs meshio: pip install meshio") from None
+        pts = self.points
+        pts3 = np.zeros((len(pts), 3))
+        pts3[:, :2] = pts
+        return meshio.Mesh(pts3, [("triangle", self.triangles)],
+                           point_data={"marker": self.point_markers},
+                           cell_data={"attribute": [self.triangle_attributes]})
+
+    def triangle_min_angles(self):
+        """(m,) float64 smallest angle of each triangle, degrees."""
+        p = self.points[self.triangles]  # (m, 3, 2)
+        angles = []
+        for k in range(3):
+            a = p[:, (k + 1) % 3] - p[:, k]
+            b = p[:, (k + 2) % 3] - p[:, k]
+            cross = np.abs(a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0])
+            angles.append(np.degrees(np.arctan2(cross, np.einsum("ij,ij->i", a, b))))
+        return np.min(angles, axis=0) if angles[0].size else np.zeros(0)
+
+    def plot(self, ax=None, color_by="quality", **kwargs):
+        """Draw the mesh with matplotlib (needs matplotlib); returns the Axes.
+
+        color_by: "quality" (smallest angle of each triangle, degrees),
+        "attribute" (regional attribute), or None (edges only).
+        """
+        try:
+            import matplotlib.pyplot as plt
+            import matplotlib.tri as mtri
+        except ImportError:
+            raise ImportError("Mesh.plot() needs matplotlib: pip install matplotlib") from None
+        if ax is None:
+            ax = plt.gca()
+        pts, tris = self.points, self.triangles
+        tri = mtri.Triangulation(pts[:, 0], pts[:, 1], tris)
+        if color_by is None:
+            ax.triplot(tri, **kwargs)
+        else:
+            if color_by == "quality":
+                values, label = self.triangle_min_angles(), "min angle (deg)"
+            elif color_by == "attribute":
+                values, label = self.triangle_attributes, "attribute"
+            else:
+                raise ValueError("color_by must be 'quality', 'attribute' or None")
+            kwargs.setdefault("edgecolors", "k")
+            kwargs.setdefault("linewidth", 0.2)
+            coll = ax.tripcolor(tri, facecolors=values, **kwargs)
+            ax.figure.colorbar(coll, ax=ax, label=label)
+        ax.set_aspect("equal")
+        return ax
+
+
+def _algorithm(name):
+    """Algorithm from an Algorithm, an int, or a name like 'frontal'."""
+    if isinstance(name, str):
+        try:
+            return Algorithm[name.upper()]
+        except KeyError:
+            raise ArgumentError("unknown refinement algorithm %r; known: %s" % (
+                name, ", ".join(a.name.lower() for a in Algorithm)),
+                Status.E_ARGUMENT) from None
+    return int(name)
+
+
+class Sizing:
+    """Target edge length h(x, y) for Mesh.refine(): the minimum of a uniform
+    size, point sources, line sources and a Python callback.
+
+        sizing = cvmesh.Sizing(uniform=0.1)
+        sizing.add_point_source(0.5, 0.5, h=0.01, growth=0.2)
+        mesh.refine(sizing=sizing, min_angle=28)
+
+    A callback size(x, y) -> float is called with the GIL taken from inside
+    the refinement (slow for large meshes; prefer sources). An exception it
+    raises stops the refinement and propagates.
+    """
+
+    def __init__(self, uniform=None, callback=None):
+        self._s = None
+        self._lock = threading.Lock()
+        self._callback = None
+        self._s = capi.cvm_sizing_create()
+        if uniform is not None:
+            self.set_uniform(uniform)
+        if callback is not None:
+            self.set_callback(callback)
+
+    def close(self):
+        """Free the C handle now (also done when the object is collected)."""
+        s, self._s = self._s, None
+        if s is not None and capi is not None:
+            capi.cvm_sizing_free(s)
+
+    def __del__(self):
+        if getattr(self, "_s", None) is not None:
+            self.close()
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+
+    @contextlib.contextmanager
+    def _handle(self):
+        with self._lock:
+            if self._s is None:
+                raise StateError("the sizing is closed", Status.E_STATE)
+            yield self._s
+
+    def set_uniform(self, h):
+        """Uniform target edge length h > 0 (replaces an earlier one)."""
+        with self._handle() as s:
+            capi.cvm_sizing_set_uniform(s, float(h))
+
+    def add_point_source(self, x, y, h, growth=0.0):
+        """h(p) = h + growth * |p - (x, y)|."""
+        with self._handle() as s:
+            capi.cvm_sizing_add_point_source(s, float(x), float(y), float(h), float(growth))
+
+    def add_line_source(self, x0, y0, x1, y1, h, growth=0.0):
+        """h(p) = h + growth * distance(p, segment (x0, y0)-(x1, y1))."""
+        with self._handle() as s:
+            capi.cvm_sizing_add_line_source(s, float(x0), float(y0), float(x1), float(y1),
+                                            float(h), float(growth))
+
+    def set_callback(self, callback):
+        """Use callback(x, y) -> size as one more source (None removes it)."""
+        with self._handle() as s:
+            capi.cvm_sizing_set_callback(s, callback)
+            self._callback = callback
+
+    def set_automatic(self, R, G):
+        """Sizing from the local feature size (R elements per feature, grading G)."""
+        with self._handle() as s:
+            capi.cvm_sizing_set_automatic(s, float(R), float(G))
+
+    def __call__(self, x, y):
+        """The target size at (x, y) (inf when there is no source)."""
+        with self._handle() as s:
+            return capi.cvm_sizing_eval(s, float(x), float(y))

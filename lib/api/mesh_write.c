@@ -1,0 +1,118 @@
+/* mesh_write.c - cvm_mesh_write: gathers the output arrays of a mesh (cvm__mesh_out) and hands them to lib/io. */
+#include <string.h>
+
+#include "output_internal.h"
+
+void cvm__mesh_out_free(cvm_mesh *m, cvm__mesh_out *mo)
+{
+    cvm__free(&m->ctx, (void *)mo->tri);
+    cvm__free(&m->ctx, (void *)mo->tattr);
+    cvm__free(&m->ctx, (void *)mo->edge);
+    cvm__free(&m->ctx, (void *)mo->emark);
+    cvm__free(&m->ctx, (void *)mo->seg);
+    cvm__free(&m->ctx, (void *)mo->smark);
+    cvm__free(&m->ctx, (void *)mo->tquality);
+    memset(mo, 0, sizeof *mo);
+}
+
+/* Triangles, their attributes and (want_quality) their smallest angles. */
+static cvm_status gather_triangles(cvm_mesh *m, cvm__mesh_out *mo, int want_quality)
+{
+    const cvm__tri2 *T = &m->tri;
+    size_t nt = cvm__domain_triangles(T), t, k = 0;
+    int32_t *tri = cvm__malloc(&m->ctx, (3 * nt + 1) * sizeof *tri);
+    double *ta = T->ta ? cvm__malloc(&m->ctx, (nt + 1) * sizeof *ta) : NULL;
+    double *q = want_quality ? cvm__malloc(&m->ctx, (nt + 1) * sizeof *q) : NULL;
+    mo->tri = tri;
+    mo->tattr = ta;
+    mo->tquality = q;
+    if (!tri || (T->ta && !ta) || (want_quality && !q))
+        return CVM_E_NOMEM;
+    for (t = 0; t < T->nt; t++) {
+        const int32_t *v = T->tv + 3 * t;
+        if (!cvm__tri2_in_domain(T, (int32_t)t))
+            continue;
+        memcpy(tri + 3 * k, v, 3 * sizeof *tri);
+        if (ta)
+            ta[k] = T->ta[t];
+        if (q)
+            q[k] = cvm__min_angle_deg(T->xy + 2 * (size_t)v[0], T->xy + 2 * (size_t)v[1],
+                                      T->xy + 2 * (size_t)v[2]);
+        k++;
+    }
+    mo->nt = nt;
+    return CVM_OK;
+}
+
+/* Edges (or only segments) with their markers: the segment's marker on a
+ * constrained edge; otherwise 1 on the domain boundary and 0 inside (the
+ * markers Triangle writes to .edge files). */
+static cvm_status gather_edges(cvm_mesh *m, cvm__mesh_out *mo, int segments)
+{
+    cvm__edges e;
+    int32_t *mark;
+    size_t k;
+    if (cvm__domain_edges(&m->ctx, &m->tri, segments, &e))
+        return CVM_E_NOMEM;
+    mark = cvm__malloc(&m->ctx, (e.n + 1) * sizeof *mark);
+    if (!mark) {
+        cvm__edges_free(&m->ctx, &e);
+        return CVM_E_NOMEM;
+    }
+    for (k = 0; k < e.n; k++)
+        mark[k] = e.seg[k] >= 0 ? cvm__segment_marker(m, e.seg[k]) : e.bnd[k] ? 1 : 0;
+    if (segments) {
+        mo->seg = e.ev;
+        mo->smark = mark;
+        mo->nseg = e.n;
+    } else {
+        mo->edge = e.ev;
+        mo->emark = mark;
+        mo->ne = e.n;
+    }
+    e.ev = NULL;
+    cvm__edges_free(&m->ctx, &e);
+    return CVM_OK;
+}
+
+cvm_status cvm__mesh_out_build(cvm_mesh *m, cvm__mesh_out *mo, int want_edges, int want_quality)
+{
+    memset(mo, 0, sizeof *mo);
+    mo->xy = m->tri.xy;
+    mo->nv = m->tri.nv;
+    mo->vmark = m->vmark;
+    mo->vattr = m->in.nattr ? m->vattr : NULL;
+    mo->nattr = mo->vattr ? m->in.nattr : 0;
+    if (gather_triangles(m, mo, want_quality) || gather_edges(m, mo, 1) ||
+        (want_edges && gather_edges(m, mo, 0))) {
+        cvm__mesh_out_free(m, mo);
+        return cvm__nomem(&m->ctx);
+    }
+    return CVM_OK;
+}
+
+cvm_status cvm_mesh_write(cvm_mesh *m, const char *path)
+{
+    cvm__mesh_out mo;
+    cvm__format fmt;
+    cvm_status s;
+    if (!m)
+        return CVM_E_NULL_ARG;
+    CVM__BEGIN(m);
+    if (!path)
+        return cvm__error(&m->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "path is NULL");
+    if (!m->triangulated)
+        return cvm__error(&m->ctx, CVM_E_STATE, CVM_ENT_NONE, -1,
+                          "nothing to write: call cvm_mesh_triangulate() first");
+    fmt = cvm__format_of(path);
+    if (fmt == CVM__FMT_NONE)
+        return cvm__error(&m->ctx, CVM_E_UNSUPPORTED, CVM_ENT_NONE, -1,
+                          "cannot write %s: unknown extension (expected .vtu, .msh, .node or .svg)",
+                          path);
+    if ((s = cvm__mesh_out_build(m, &mo, fmt == CVM__FMT_NODE,
+                                 fmt == CVM__FMT_SVG || fmt == CVM__FMT_VTU)))
+        return s;
+    s = cvm__write_file(&m->ctx, path, &mo);
+    cvm__mesh_out_free(m, &mo);
+    return s;
+}

@@ -1,0 +1,245 @@
+/*
+ * output.c - counts, copies and views of a mesh's output and input arrays.
+ *
+ * These functions take a const handle: they neither change the last error
+ * nor its message, so several may run at once on one handle. Output order:
+ * triangles in slot order of the kernel, edges and segments sorted by
+ * (lower, higher) vertex id (output_internal.h). A NULL dst is accepted only
+ * with dst_len 0 (then any non-empty copy reports CVM_E_BUFFER_TOO_SMALL).
+ */
+#include <string.h>
+
+#include "output_internal.h"
+
+int32_t cvm__segment_marker(const cvm_mesh *m, int32_t seg)
+{
+    if (seg < 0 || (size_t)seg >= m->in.nseg)
+        return 0;
+    return m->in.smark ? m->in.smark[seg] : 1;
+}
+
+/* The allocator of a const handle: allocation does not change the handle. */
+static cvm__ctx *alloc_ctx(const cvm_mesh *m)
+{
+    return (cvm__ctx *)&m->ctx;
+}
+
+static size_t n_vertices(const cvm_mesh *m)
+{
+    return m->triangulated ? m->tri.nv : 0;
+}
+
+static size_t n_triangles(const cvm_mesh *m)
+{
+    return m->triangulated ? cvm__domain_triangles(&m->tri) : 0;
+}
+
+/* Check dst against need entries. */
+static cvm_status room(const void *dst, size_t dst_len, size_t need)
+{
+    if (!dst && dst_len)
+        return CVM_E_NULL_ARG;
+    return dst_len < need ? CVM_E_BUFFER_TOO_SMALL : CVM_OK;
+}
+
+cvm_status cvm_mesh_count(size_t *out, const cvm_mesh *m, cvm_entity kind)
+{
+    size_t ne = 0, ns = 0;
+    if (!out || !m)
+        return CVM_E_NULL_ARG;
+    *out = 0;
+    switch (kind) {
+    case CVM_ENT_VERTEX: *out = n_vertices(m); return CVM_OK;
+    case CVM_ENT_TRIANGLE: *out = n_triangles(m); return CVM_OK;
+    case CVM_ENT_EDGE:
+    case CVM_ENT_SEGMENT:
+        if (m->triangulated)
+            cvm__domain_edge_counts(&m->tri, &ne, &ns);
+        *out = kind == CVM_ENT_EDGE ? ne : ns;
+        return CVM_OK;
+    case CVM_ENT_INPUT_POINT: *out = m->in.np; return CVM_OK;
+    case CVM_ENT_INPUT_SEGMENT: *out = m->in.nseg; return CVM_OK;
+    case CVM_ENT_HOLE: *out = m->in.nholes; return CVM_OK;
+    case CVM_ENT_REGION: *out = m->in.nregions; return CVM_OK;
+    case CVM_ENT_DUPLICATE: *out = m->triangulated ? m->n_dup : 0; return CVM_OK;
+    default: return CVM_E_ARGUMENT;
+    }
+}
+
+cvm_status cvm_mesh_copy_points(double *dst, size_t dst_len, const cvm_mesh *m)
+{
+    size_t nv;
+    cvm_status s;
+    if (!m)
+        return CVM_E_NULL_ARG;
+    nv = n_vertices(m);
+    if ((s = room(dst, dst_len, 2 * nv)))
+        return s;
+    if (nv)
+        memcpy(dst, m->tri.xy, 2 * nv * sizeof *dst);
+    return CVM_OK;
+}
+
+static cvm_status copy_triangles(cvm_index *dst, size_t dst_len, const cvm_mesh *m)
+{
+    const cvm__tri2 *T = &m->tri;
+    size_t t, k = 0;
+    cvm_status s = room(dst, dst_len, 3 * n_triangles(m));
+    if (s || !m->triangulated)
+        return s;
+    for (t = 0; t < T->nt; t++)
+        if (cvm__tri2_in_domain(T, (int32_t)t)) {
+            memcpy(dst + 3 * k, T->tv + 3 * t, 3 * sizeof *dst);
+            k++;
+        }
+    return CVM_OK;
+}
+
+static cvm_status copy_edges(cvm_index *dst, size_t dst_len, const cvm_mesh *m, int segments)
+{
+    size_t ne = 0, ns = 0;
+    cvm__edges e;
+    cvm_status s;
+    if (m->triangulated)
+        cvm__domain_edge_counts(&m->tri, &ne, &ns);
+    if ((s = room(dst, dst_len, 2 * (segments ? ns : ne))) || !m->triangulated)
+        return s;
+    if (cvm__domain_edges(alloc_ctx(m), &m->tri, segments, &e))
+        return CVM_E_NOMEM;
+    if (e.n)
+        memcpy(dst, e.ev, 2 * e.n * sizeof *dst);
+    cvm__edges_free(alloc_ctx(m), &e);
+    return CVM_OK;
+}
+
+cvm_status cvm_mesh_copy_cells(cvm_index *dst, size_t dst_len, const cvm_mesh *m, cvm_entity kind)
+{
+    if (!m)
+        return CVM_E_NULL_ARG;
+    switch (kind) {
+    case CVM_ENT_TRIANGLE: return copy_triangles(dst, dst_len, m);
+    case CVM_ENT_EDGE: return copy_edges(dst, dst_len, m, 0);
+    case CVM_ENT_SEGMENT: return copy_edges(dst, dst_len, m, 1);
+    default: return CVM_E_ARGUMENT;
+    }
+}
+
+cvm_status cvm_mesh_copy_neighbors(cvm_index *dst, size_t dst_len, const cvm_mesh *m)
+{
+    const cvm__tri2 *T;
+    int32_t *map;
+    size_t t, k = 0;
+    int j;
+    cvm_status s;
+    if (!m)
+        return CVM_E_NULL_ARG;
+    if ((s = room(dst, dst_len, 3 * n_triangles(m))) || !m->triangulated)
+        return s;
+    T = &m->tri;
+    if (cvm__domain_map(alloc_ctx(m), T, &map))
+        return CVM_E_NOMEM;
+    for (t = 0; t < T->nt; t++) {
+        if (map[t] < 0)
+            continue;
+        for (j = 0; j < 3; j++) {
+            int32_t a = T->tn[3 * t + (size_t)j];
+            dst[3 * k + (size_t)j] = a < 0 ? -1 : map[a / 3];
+        }
+        k++;
+    }
+    cvm__free(alloc_ctx(m), map);
+    return CVM_OK;
+}
+
+static cvm_status segment_markers(int32_t *dst, size_t dst_len, const cvm_mesh *m)
+{
+    size_t ne = 0, ns = 0, k;
+    cvm__edges e;
+    cvm_status s;
+    if (m->triangulated)
+        cvm__domain_edge_counts(&m->tri, &ne, &ns);
+    if ((s = room(dst, dst_len, ns)) || !m->triangulated)
+        return s;
+    if (cvm__domain_edges(alloc_ctx(m), &m->tri, 1, &e))
+        return CVM_E_NOMEM;
+    for (k = 0; k < e.n; k++)
+        dst[k] = cvm__segment_marker(m, e.seg[k]);
+    cvm__edges_free(alloc_ctx(m), &e);
+    return CVM_OK;
+}
+
+cvm_status cvm_mesh_copy_markers(int32_t *dst, size_t dst_len, const cvm_mesh *m, cvm_entity kind)
+{
+    size_t nv;
+    cvm_status s;
+    if (!m)
+        return CVM_E_NULL_ARG;
+    if (kind == CVM_ENT_SEGMENT)
+        return segment_markers(dst, dst_len, m);
+    if (kind != CVM_ENT_VERTEX)
+        return CVM_E_ARGUMENT;
+    nv = n_vertices(m);
+    if ((s = room(dst, dst_len, nv)))
+        return s;
+    if (nv && m->vmark)
+        memcpy(dst, m->vmark, nv * sizeof *dst);
+    else if (nv)
+        memset(dst, 0, nv * sizeof *dst);
+    return CVM_OK;
+}
+
+cvm_status cvm_mesh_copy_triangle_attributes(double *dst, size_t dst_len, const cvm_mesh *m)
+{
+    const cvm__tri2 *T;
+    size_t t, k = 0;
+    cvm_status s;
+    if (!m)
+        return CVM_E_NULL_ARG;
+    if ((s = room(dst, dst_len, n_triangles(m))) || !m->triangulated)
+        return s;
+    T = &m->tri;
+    for (t = 0; t < T->nt; t++)
+        if (cvm__tri2_in_domain(T, (int32_t)t))
+            dst[k++] = T->ta ? T->ta[t] : 0.0;
+    return CVM_OK;
+}
+
+cvm_status cvm_mesh_copy_point_attributes(double *dst, size_t dst_len, size_t *nattr_out,
+                                          const cvm_mesh *m)
+{
+    size_t nv, na;
+    cvm_status s;
+    if (!m || !nattr_out)
+        return CVM_E_NULL_ARG;
+    nv = n_vertices(m);
+    na = m->vattr ? m->in.nattr : 0;
+    *nattr_out = na;
+    if ((s = room(dst, dst_len, nv * na)))
+        return s;
+    if (nv && na)
+        memcpy(dst, m->vattr, nv * na * sizeof *dst);
+    return CVM_OK;
+}
+
+cvm_status cvm_mesh_copy_input_map(cvm_index *dst, size_t dst_len, const cvm_mesh *m)
+{
+    cvm_status s;
+    if (!m)
+        return CVM_E_NULL_ARG;
+    if (!m->triangulated)
+        return CVM_E_STATE;
+    if ((s = room(dst, dst_len, m->in.np)))
+        return s;
+    if (m->in.np)
+        memcpy(dst, m->input_map, m->in.np * sizeof *dst);
+    return CVM_OK;
+}
+
+cvm_status cvm_mesh_view_points(const double **ptr_out, size_t *count_out, const cvm_mesh *m)
+{
+    if (!ptr_out || !count_out || !m)
+        return CVM_E_NULL_ARG;
+    *count_out = n_vertices(m);
+    *ptr_out = *count_out ? m->tri.xy : NULL;
+    return CVM_OK;
+}

@@ -1,0 +1,252 @@
+/*
+ * quality.c - quality measures and histograms of the domain triangles
+ * (cvm_mesh_get_measure, cvm_mesh_copy_histogram).
+ *
+ * These are measures, not topology: plain doubles, no exact arithmetic.
+ * Angles come from atan2(|cross|, dot), which is accurate for small and
+ * large angles alike. A triangle is "obtuse" (not well-centred: its
+ * circumcentre lies outside it) when the dot product of the two edges at one
+ * of its corners is negative; a right triangle, whose circumcentre lies on
+ * its edge, is not counted. Interior vertices are vertices of domain
+ * triangles that lie on no boundary edge of the domain; interior edges have a
+ * domain triangle on both sides (constrained or not). The dual edge of an
+ * interior edge joins the circumcentres of its two triangles.
+ */
+#include <math.h>
+#include <string.h>
+
+#include "output_internal.h"
+
+#define RAD2DEG (180.0 / 3.14159265358979323846)
+#define NBIN_ANGLE 18
+#define NBIN_DEGREE 16
+
+typedef struct qstats {
+    size_t nt;
+    double min_angle, max_angle;
+    size_t n_regular, n_obtuse;
+    double min_edge, max_edge;     /* lengths */
+    double area, area_c, min_area; /* Neumaier sum and its compensation */
+    double angle_hist[NBIN_ANGLE];
+} qstats;
+
+/* Angle at a of triangle a, b, c, degrees; *dot receives the dot product. */
+static double corner(const double *a, const double *b, const double *c, double *dot)
+{
+    double ux = b[0] - a[0], uy = b[1] - a[1], vx = c[0] - a[0], vy = c[1] - a[1];
+    *dot = ux * vx + uy * vy;
+    return atan2(fabs(ux * vy - uy * vx), *dot) * RAD2DEG;
+}
+
+double cvm__min_angle_deg(const double *a, const double *b, const double *c)
+{
+    double d, x = corner(a, b, c, &d), y = corner(b, c, a, &d), z = corner(c, a, b, &d);
+    double mn = x < y ? x : y;
+    return mn < z ? mn : z;
+}
+
+static void add_area(qstats *q, double x)
+{
+    double t = q->area + x;
+    if (fabs(q->area) >= fabs(x))
+        q->area_c += (q->area - t) + x;
+    else
+        q->area_c += (x - t) + q->area;
+    q->area = t;
+}
+
+static void triangle_stats(const cvm__tri2 *T, qstats *q)
+{
+    size_t t;
+    memset(q, 0, sizeof *q);
+    q->min_angle = q->min_edge = q->min_area = HUGE_VAL;
+    for (t = 0; t < T->nt; t++) {
+        const double *p[3];
+        double obtuse = 0, area;
+        int k;
+        if (!cvm__tri2_in_domain(T, (int32_t)t))
+            continue;
+        for (k = 0; k < 3; k++)
+            p[k] = T->xy + 2 * (size_t)T->tv[3 * t + (size_t)k];
+        for (k = 0; k < 3; k++) {
+            double dot, a = corner(p[k], p[(k + 1) % 3], p[(k + 2) % 3], &dot);
+            double len = hypot(p[(k + 1) % 3][0] - p[k][0], p[(k + 1) % 3][1] - p[k][1]);
+            int bin = (int)(a / 10.0);
+            q->min_angle = a < q->min_angle ? a : q->min_angle;
+            q->max_angle = a > q->max_angle ? a : q->max_angle;
+            q->n_regular += a >= 55.0 && a <= 65.0;
+            q->angle_hist[bin < 0 ? 0 : bin >= NBIN_ANGLE ? NBIN_ANGLE - 1 : bin] += 1.0;
+            q->min_edge = len < q->min_edge ? len : q->min_edge;
+            q->max_edge = len > q->max_edge ? len : q->max_edge;
+            if (dot < 0)
+                obtuse = 1;
+        }
+        q->n_obtuse += obtuse != 0;
+        area = 0.5 * ((p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) -
+                      (p[1][1] - p[0][1]) * (p[2][0] - p[0][0]));
+        add_area(q, area);
+        q->min_area = area < q->min_area ? area : q->min_area;
+        q->nt++;
+    }
+}
+
+/* Degrees of the interior vertices: hist (NBIN_DEGREE bins), *n_interior. */
+static cvm_status degree_stats(cvm_mesh *m, double *hist, size_t *n_interior)
+{
+    const cvm__tri2 *T = &m->tri;
+    int32_t *deg = cvm__calloc(&m->ctx, T->nv + 1, sizeof *deg);
+    uint8_t *on_bnd = cvm__calloc(&m->ctx, T->nv + 1, 1);
+    size_t t, v;
+    int j;
+    if (!deg || !on_bnd) {
+        cvm__free(&m->ctx, deg);
+        cvm__free(&m->ctx, on_bnd);
+        return cvm__nomem(&m->ctx);
+    }
+    for (t = 0; t < T->nt; t++) {
+        if (!cvm__tri2_in_domain(T, (int32_t)t))
+            continue;
+        for (j = 0; j < 3; j++) {
+            int32_t a = T->tn[3 * t + (size_t)j], u = a < 0 ? -1 : a / 3;
+            int32_t v1 = T->tv[3 * t + (size_t)(j + 1) % 3], v2 = T->tv[3 * t + (size_t)(j + 2) % 3];
+            int bnd = u < 0 || !cvm__tri2_in_domain(T, u);
+            if (!bnd && (size_t)u < t)
+                continue; /* counted from u */
+            deg[v1]++;
+            deg[v2]++;
+            if (bnd)
+                on_bnd[v1] = on_bnd[v2] = 1;
+        }
+    }
+    memset(hist, 0, NBIN_DEGREE * sizeof *hist);
+    *n_interior = 0;
+    for (v = 0; v < T->nv; v++) {
+        if (deg[v] == 0 || on_bnd[v])
+            continue;
+        hist[deg[v] < NBIN_DEGREE - 1 ? deg[v] : NBIN_DEGREE - 1] += 1.0;
+        (*n_interior)++;
+    }
+    cvm__free(&m->ctx, deg);
+    cvm__free(&m->ctx, on_bnd);
+    return CVM_OK;
+}
+
+static void circumcentre(const cvm__tri2 *T, size_t t, double *cc)
+{
+    const double *a = T->xy + 2 * (size_t)T->tv[3 * t];
+    const double *b = T->xy + 2 * (size_t)T->tv[3 * t + 1];
+    const double *c = T->xy + 2 * (size_t)T->tv[3 * t + 2];
+    double bx = b[0] - a[0], by = b[1] - a[1], cx = c[0] - a[0], cy = c[1] - a[1];
+    double d = 2.0 * (bx * cy - by * cx), bb = bx * bx + by * by, ccn = cx * cx + cy * cy;
+    cc[0] = a[0] + (cy * bb - by * ccn) / d;
+    cc[1] = a[1] + (bx * ccn - cx * bb) / d;
+}
+
+/* Smallest |dual edge| / |primal edge| over interior edges; 0 when there is none. */
+static double dual_ratio(const cvm__tri2 *T)
+{
+    double best = HUGE_VAL;
+    size_t t;
+    int j;
+    for (t = 0; t < T->nt; t++) {
+        double ct[2];
+        int have = 0;
+        if (!cvm__tri2_in_domain(T, (int32_t)t))
+            continue;
+        for (j = 0; j < 3; j++) {
+            int32_t a = T->tn[3 * t + (size_t)j], u = a < 0 ? -1 : a / 3;
+            const double *p, *q;
+            double cu[2], r;
+            if (u < 0 || (size_t)u < t || !cvm__tri2_in_domain(T, u))
+                continue;
+            if (!have) {
+                circumcentre(T, t, ct);
+                have = 1;
+            }
+            circumcentre(T, (size_t)u, cu);
+            p = T->xy + 2 * (size_t)T->tv[3 * t + (size_t)(j + 1) % 3];
+            q = T->xy + 2 * (size_t)T->tv[3 * t + (size_t)(j + 2) % 3];
+            r = hypot(ct[0] - cu[0], ct[1] - cu[1]) / hypot(p[0] - q[0], p[1] - q[1]);
+            if (r < best)
+                best = r;
+        }
+    }
+    return best == HUGE_VAL ? 0.0 : best;
+}
+
+static cvm_status need_triangles(cvm_mesh *m)
+{
+    if (!m->triangulated || cvm__domain_triangles(&m->tri) == 0)
+        return cvm__error(&m->ctx, CVM_E_STATE, CVM_ENT_NONE, -1,
+                          "no triangles: call cvm_mesh_triangulate() first");
+    return CVM_OK;
+}
+
+cvm_status cvm_mesh_get_measure(double *out, cvm_mesh *m, cvm_measure which)
+{
+    qstats q;
+    double hist[NBIN_DEGREE];
+    size_t n_int;
+    cvm_status s;
+    if (!m)
+        return CVM_E_NULL_ARG;
+    CVM__BEGIN(m);
+    if (!out)
+        return cvm__error(&m->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "out is NULL");
+    if (cvm__refine_measure(out, m, which) == CVM_OK)
+        return CVM_OK; /* the report of the last refinement (lib/api/refine.c) */
+    if ((int)which < (int)CVM_MEASURE_MIN_ANGLE_DEG || (int)which > (int)CVM_MEASURE_MIN_AREA)
+        return cvm__error(&m->ctx, CVM_E_ARGUMENT, CVM_ENT_NONE, -1, "unknown measure %d",
+                          (int)which);
+    if ((s = need_triangles(m)))
+        return s;
+    if (which == CVM_MEASURE_DEGREE6_PCT) {
+        if ((s = degree_stats(m, hist, &n_int)))
+            return s;
+        *out = n_int ? 100.0 * hist[6] / (double)n_int : 0.0;
+        return CVM_OK;
+    }
+    if (which == CVM_MEASURE_MIN_DUAL_EDGE_RATIO) {
+        *out = dual_ratio(&m->tri);
+        return CVM_OK;
+    }
+    triangle_stats(&m->tri, &q);
+    switch (which) {
+    case CVM_MEASURE_MIN_ANGLE_DEG: *out = q.min_angle; break;
+    case CVM_MEASURE_MAX_ANGLE_DEG: *out = q.max_angle; break;
+    case CVM_MEASURE_REGULAR_PCT: *out = 100.0 * (double)q.n_regular / (3.0 * (double)q.nt); break;
+    case CVM_MEASURE_OBTUSE_PCT: *out = 100.0 * (double)q.n_obtuse / (double)q.nt; break;
+    case CVM_MEASURE_MIN_EDGE: *out = q.min_edge; break;
+    case CVM_MEASURE_MAX_EDGE: *out = q.max_edge; break;
+    case CVM_MEASURE_AREA: *out = q.area + q.area_c; break;
+    default: *out = q.min_area; break;
+    }
+    return CVM_OK;
+}
+
+cvm_status cvm_mesh_copy_histogram(double *dst, size_t dst_len, cvm_mesh *m, cvm_histogram which)
+{
+    qstats q;
+    size_t need, n_int;
+    cvm_status s;
+    if (!m)
+        return CVM_E_NULL_ARG;
+    CVM__BEGIN(m);
+    if (!dst)
+        return cvm__error(&m->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "dst is NULL");
+    if (which != CVM_HIST_ANGLE_DEG && which != CVM_HIST_DEGREE)
+        return cvm__error(&m->ctx, CVM_E_ARGUMENT, CVM_ENT_NONE, -1, "unknown histogram %d",
+                          (int)which);
+    if ((s = need_triangles(m)))
+        return s;
+    need = which == CVM_HIST_ANGLE_DEG ? NBIN_ANGLE : NBIN_DEGREE;
+    if (dst_len < need)
+        return cvm__error(&m->ctx, CVM_E_BUFFER_TOO_SMALL, CVM_ENT_NONE, -1,
+                          "histogram needs %lu entries, dst_len is %lu", (unsigned long)need,
+                          (unsigned long)dst_len);
+    if (which == CVM_HIST_DEGREE)
+        return degree_stats(m, dst, &n_int);
+    triangle_stats(&m->tri, &q);
+    memcpy(dst, q.angle_hist, sizeof q.angle_hist);
+    return CVM_OK;
+}

@@ -1,0 +1,166 @@
+/* refine.c - cvm_mesh_refine and its report: options in, lib/refine run, vertex markers and attributes out. */
+#include <string.h>
+
+#include "api_internal.h"
+#include "refine/refine_internal.h"
+
+enum { REP_STEINER, REP_UNMET_ANGLE, REP_UNMET_SIZE, REP_SMALL_ANGLE, REP_REQUESTED, REP_MET };
+
+static cvm_status refine_grow_vertex_data(cvm_mesh *m)
+{
+    size_t nv = m->tri.nv, na = m->in.nattr;
+    if (nv > m->cap_vmark &&
+        cvm__grow(&m->ctx, (void **)&m->vmark, &m->cap_vmark, nv, sizeof(int32_t)))
+        return CVM_E_NOMEM;
+    if (na && nv * na > m->cap_vattr &&
+        cvm__grow(&m->ctx, (void **)&m->vattr, &m->cap_vattr, nv * na, sizeof(double)))
+        return CVM_E_NOMEM;
+    return CVM_OK;
+}
+
+/* Vertex v (>= the first new one) lies on segment seg: take its marker and
+ * interpolate the attributes of the segment's input ends. */
+static void refine_segment_vertex(cvm_mesh *m, int32_t v, int32_t seg)
+{
+    size_t na = m->in.nattr, i;
+    const int32_t *s;
+    const double *pa, *pb, *p = m->tri.xy + 2 * (size_t)v;
+    double len2, t;
+    if (seg < 0 || (size_t)seg >= m->in.nseg)
+        return; /* a convex-hull segment: marker 0, attributes 0 */
+    s = m->in.seg + 2 * (size_t)seg;
+    m->vmark[v] = m->in.smark ? m->in.smark[seg] : 1;
+    pa = m->in.xy + 2 * (size_t)s[0];
+    pb = m->in.xy + 2 * (size_t)s[1];
+    len2 = (pb[0] - pa[0]) * (pb[0] - pa[0]) + (pb[1] - pa[1]) * (pb[1] - pa[1]);
+    t = len2 > 0 ? ((p[0] - pa[0]) * (pb[0] - pa[0]) + (p[1] - pa[1]) * (pb[1] - pa[1])) / len2 : 0;
+    t = t < 0 ? 0 : t > 1 ? 1 : t;
+    for (i = 0; i < na; i++)
+        m->vattr[(size_t)v * na + i] =
+            (1 - t) * m->in.pattr[(size_t)s[0] * na + i] + t * m->in.pattr[(size_t)s[1] * na + i];
+}
+
+/* Markers and attributes of the vertices nv0..nv-1 added by the refiner. */
+static cvm_status refine_vertex_data(cvm_mesh *m, size_t nv0)
+{
+    const cvm__tri2 *T = &m->tri;
+    size_t v, t, na = m->in.nattr;
+    if (refine_grow_vertex_data(m))
+        return CVM_E_NOMEM;
+    for (v = nv0; v < T->nv; v++) {
+        m->vmark[v] = 0;
+        if (na)
+            memset(m->vattr + v * na, 0, na * sizeof(double));
+    }
+    for (t = 0; t < T->nt && T->nv > nv0; t++) {
+        int j, k;
+        if (!cvm__tri2_in_domain(T, (int32_t)t))
+            continue;
+        for (j = 0; j < 3; j++) {
+            int32_t seg = T->te[3 * t + (size_t)j];
+            if (seg < 0)
+                continue;
+            for (k = 1; k <= 2; k++) {
+                int32_t u = T->tv[3 * t + (size_t)(j + k) % 3];
+                if ((size_t)u >= nv0)
+                    refine_segment_vertex(m, u, seg);
+            }
+        }
+    }
+    return CVM_OK;
+}
+
+static cvm_status refine_run(cvm_mesh *m, const cvm_sizing *sizing, cvm_algorithm algo)
+{
+    cvm__refine_params p;
+    cvm__refine_report rep;
+    int32_t *ends = NULL;
+    size_t k, nv0 = m->tri.nv;
+    cvm_status s, s2;
+    memset(&p, 0, sizeof p);
+    if (m->in.nseg) {
+        ends = cvm__malloc(&m->ctx, 2 * m->in.nseg * sizeof *ends);
+        if (!ends)
+            return cvm__nomem(&m->ctx);
+        for (k = 0; k < 2 * m->in.nseg; k++)
+            ends[k] = m->input_map[m->in.seg[k]];
+    }
+    p.algo = (int)algo;
+    p.min_angle_deg = cvm__opt(m, CVM_OPT_MIN_ANGLE_DEG);
+    p.max_area = cvm__opt(m, CVM_OPT_MAX_AREA);
+    p.max_steiner = (uint64_t)cvm__opt(m, CVM_OPT_MAX_STEINER);
+    p.lens = cvm__opt(m, CVM_OPT_ENCROACH_LENS) != 0;
+    p.march = cvm__opt(m, CVM_OPT_MARCH_SEGMENTS) != 0;
+    p.sizing = sizing;
+    p.seg_ends = ends;
+    p.nseg = m->in.nseg;
+    cvm__run_begin(&m->ctx, cvm__opt(m, CVM_OPT_TIME_LIMIT_S));
+    s = cvm__refine(&m->tri, &p, &rep);
+    cvm__free(&m->ctx, ends);
+    s2 = refine_vertex_data(m, nv0);
+    if (s2) {
+        /* the vertex arrays cannot follow the kernel: the mesh cannot be kept */
+        cvm__mesh_drop_output(m);
+        return cvm__error(&m->ctx, CVM_E_NOMEM, CVM_ENT_NONE, -1,
+                          "out of memory after refinement; the mesh was dropped");
+    }
+    m->refine_report[REP_STEINER] = (double)rep.steiner;
+    m->refine_report[REP_UNMET_ANGLE] = (double)rep.unmet_angle;
+    m->refine_report[REP_UNMET_SIZE] = (double)rep.unmet_size;
+    m->refine_report[REP_SMALL_ANGLE] = (double)rep.small_angle;
+    m->refine_report[REP_REQUESTED] = p.min_angle_deg;
+    m->refine_report[REP_MET] = rep.met_angle_deg;
+    return s;
+}
+
+cvm_status cvm_mesh_refine(cvm_mesh *m, const cvm_sizing *sizing, cvm_algorithm algo)
+{
+    if (!m)
+        return CVM_E_NULL_ARG;
+    CVM__BEGIN(m);
+    if (!m->triangulated)
+        return cvm__error(&m->ctx, CVM_E_STATE, CVM_ENT_NONE, -1,
+                          "no triangulation: call cvm_mesh_triangulate() first");
+    if (algo == CVM_ALGO_AFLR)
+        return cvm__error(&m->ctx, CVM_E_UNSUPPORTED, CVM_ENT_NONE, -1,
+                          "CVM_ALGO_AFLR (advancing-front local reconnection) is not available in "
+                          "this version; use CVM_ALGO_FRONTAL or CVM_ALGO_DELAUNAY");
+    if (algo != CVM_ALGO_DELAUNAY && algo != CVM_ALGO_FRONTAL)
+        return cvm__error(&m->ctx, CVM_E_ARGUMENT, CVM_ENT_NONE, -1, "unknown algorithm %d",
+                          (int)algo);
+    memset(m->refine_report, 0, sizeof m->refine_report);
+    return refine_run(m, sizing, algo);
+}
+
+cvm_status cvm_mesh_set_front_markers(cvm_mesh *m, const int32_t *markers, size_t count)
+{
+    int32_t *copy = NULL;
+    if (!m)
+        return CVM_E_NULL_ARG;
+    CVM__BEGIN(m);
+    if (!markers && count > 0)
+        return cvm__error(&m->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "markers is NULL");
+    if (count) {
+        size_t bytes;
+        if (!cvm__mul_ok(count, sizeof *copy, &bytes) || !(copy = cvm__malloc(&m->ctx, bytes)))
+            return cvm__nomem(&m->ctx);
+        memcpy(copy, markers, bytes);
+    }
+    cvm__free(&m->ctx, m->front_marks);
+    m->front_marks = copy;
+    m->n_front_marks = count;
+    return CVM_OK;
+}
+
+cvm_status cvm__refine_measure(double *out, const cvm_mesh *m, cvm_measure which)
+{
+    switch (which) {
+    case CVM_MEASURE_REFINE_STEINER: *out = m->refine_report[REP_STEINER]; return CVM_OK;
+    case CVM_MEASURE_REFINE_UNMET_ANGLE: *out = m->refine_report[REP_UNMET_ANGLE]; return CVM_OK;
+    case CVM_MEASURE_REFINE_UNMET_SIZE: *out = m->refine_report[REP_UNMET_SIZE]; return CVM_OK;
+    case CVM_MEASURE_REFINE_SMALL_INPUT_ANGLE: *out = m->refine_report[REP_SMALL_ANGLE]; return CVM_OK;
+    case CVM_MEASURE_REFINE_REQUESTED_ANGLE: *out = m->refine_report[REP_REQUESTED]; return CVM_OK;
+    case CVM_MEASURE_REFINE_MET_ANGLE: *out = m->refine_report[REP_MET]; return CVM_OK;
+    default: return CVM_E_ARGUMENT;
+    }
+}

@@ -1,0 +1,60 @@
+/*
+ * cli.h - pieces of the cvmesh program shared by its files. The program sees
+ * only the public API (include/cvmesh.h). Exit status: 0 success, 1 the
+ * input or an output could not be processed, 2 the command line is wrong.
+ */
+#ifndef CVM_CLI_H
+#define CVM_CLI_H
+
+#include <stdio.h>
+#include "cvmesh.h"
+
+#define CLI_EXIT_OK 0
+#define CLI_EXIT_FAIL 1
+#define CLI_EXIT_USAGE 2
+
+/* Subcommands, as bits: an option flag lists the subcommands that take it. */
+enum {
+    CLI_CMD_TRIANGULATE = 1u << 0
+};
+
+/* One flag that sets a library option (flags.c holds the one table). */
+typedef struct cli_option_flag {
+    const char *name;   /* "--seed" */
+    const char *arg;    /* metavariable ("S"), or NULL for a switch */
+    cvm_option key;
+    double value;       /* value a switch sets */
+    unsigned commands;  /* CLI_CMD_* bits */
+    const char *help;
+} cli_option_flag;
+
+/* An option value chosen on the command line, applied once the mesh exists. */
+typedef struct cli_setting {
+    const cli_option_flag *flag;
+    double value;
+} cli_setting;
+
+#define CLI_MAX_SETTINGS 32
+
+/* If argv[*i] is an option flag of cmd, record its setting (taking its value
+ * from "--flag=V" or the next argument) and return 1; return 0 if it is not
+ * one; return -1 after printing a usage error. */
+int cli_parse_option_flag(unsigned cmd, int argc, char **argv, int *i, cli_setting *set,
+                          int *nset);
+/* Apply settings to m; on error print it and return CLI_EXIT_USAGE. */
+int cli_apply_settings(cvm_mesh *m, const cli_setting *set, int nset);
+/* Print the option flags of cmd, one per line, for --help. */
+void cli_print_option_flags(FILE *f, unsigned cmd);
+
+/* Print the quality report of m (after triangulation) to f. Returns
+ * CLI_EXIT_OK, or CLI_EXIT_FAIL after printing the library's error. */
+int cli_print_quality(FILE *f, cvm_mesh *m);
+
+/* Monotonic seconds. */
+double cli_now(void);
+
+/* Subcommands: argv[0] is the subcommand's name. */
+int cli_triangulate(int argc, char **argv);
+void cli_triangulate_help(FILE *f);
+
+#endif

@@ -1,0 +1,189 @@
+/*
+ * cmd_triangulate.c - `cvmesh triangulate IN.poly|IN.node [-o OUT] [--svg PIC.svg]
+ * [--quality] [--timings] [option flags]`: read, triangulate, write, report.
+ */
+#include <string.h>
+
+#include "cli.h"
+
+typedef struct args {
+    const char *in, *out, *svg;
+    int quality, timings;
+    cli_setting set[CLI_MAX_SETTINGS];
+    int nset;
+} args;
+
+/* Time of the first segment-recovery progress report: splits triangulate
+ * into Delaunay insertion and segment recovery for --timings. */
+typedef struct phases {
+    double recover_start;
+} phases;
+
+void cli_triangulate_help(FILE *f)
+{
+    fprintf(f,
+            "usage: cvmesh triangulate IN.poly|IN.node [-o OUT] [--svg PIC.svg] [--quality]\n"
+            "                          [--timings] [option flags]\n"
+            "\n"
+            "Delaunay triangulation of the points of a .node file, or constrained Delaunay\n"
+            "triangulation of the planar straight-line graph of a .poly file (Triangle's\n"
+            "formats), with the exterior and holes removed and regional attributes assigned.\n"
+            "\n"
+            "  -o, --output OUT           write the mesh; the extension chooses the format:\n"
+            "                             .vtu (VTK XML), .msh (Gmsh 4.1), .svg (picture),\n"
+            "                             .node (OUT.node + .ele + .edge beside each other)\n"
+            "  --svg PIC.svg              also draw the mesh, coloured by smallest angle\n"
+            "  --quality                  print the quality report\n"
+            "  --timings                  print 'phase: seconds' for read, triangulate,\n"
+            "                             recover segments (from the first recovered segment,\n"
+            "                             with carving), write\n"
+            "  -h, --help                 print this help\n");
+    cli_print_option_flags(f, CLI_CMD_TRIANGULATE);
+    fprintf(f, "\nOn bad input the exit status is 1, one line names the file, line or item,\n"
+               "and no output file is written. Command-line errors exit with 2.\n");
+}
+
+static int has_ext(const char *path, const char *ext)
+{
+    size_t n = strlen(path), k = strlen(ext);
+    return n > k && strcmp(path + n - k, ext) == 0;
+}
+
+static int parse(args *a, int argc, char **argv)
+{
+    int i;
+    memset(a, 0, sizeof *a);
+    for (i = 1; i < argc; i++) {
+        const char *s = argv[i];
+        int r;
+        if (strcmp(s, "-h") == 0 || strcmp(s, "--help") == 0) {
+            cli_triangulate_help(stdout);
+            return -1;
+        }
+        if (strcmp(s, "-o") == 0 || strcmp(s, "--output") == 0 || strcmp(s, "--svg") == 0) {
+            if (i + 1 >= argc) {
+                fprintf(stderr, "cvmesh: %s needs a file name\n", s);
+                return CLI_EXIT_USAGE;
+            }
+            if (strcmp(s, "--svg") == 0)
+                a->svg = argv[++i];
+            else
+                a->out = argv[++i];
+            continue;
+        }
+        if (strcmp(s, "--quality") == 0) {
+            a->quality = 1;
+            continue;
+        }
+        if (strcmp(s, "--timings") == 0) {
+            a->timings = 1;
+            continue;
+        }
+        r = cli_parse_option_flag(CLI_CMD_TRIANGULATE, argc, argv, &i, a->set, &a->nset);
+        if (r < 0)
+            return CLI_EXIT_USAGE;
+        if (r > 0)
+            continue;
+        if (s[0] == '-' && s[1] != '\0') {
+            fprintf(stderr, "cvmesh: triangulate: unknown flag '%s' (see cvmesh triangulate --help)\n", s);
+            return CLI_EXIT_USAGE;
+        }
+        if (a->in) {
+            fprintf(stderr, "cvmesh: triangulate: more than one input file ('%s' and '%s')\n", a->in, s);
+            return CLI_EXIT_USAGE;
+        }
+        a->in = s;
+    }
+    if (!a->in) {
+        fprintf(stderr, "cvmesh: triangulate: no input file (see cvmesh triangulate --help)\n");
+        return CLI_EXIT_USAGE;
+    }
+    if (a->out && !has_ext(a->out, ".vtu") && !has_ext(a->out, ".msh") &&
+        !has_ext(a->out, ".node") && !has_ext(a->out, ".svg")) {
+        fprintf(stderr, "cvmesh: %s: unknown output format (use .vtu, .msh, .node or .svg)\n", a->out);
+        return CLI_EXIT_USAGE;
+    }
+    if (a->svg && !has_ext(a->svg, ".svg")) {
+        fprintf(stderr, "cvmesh: --svg %s: the file name must end in .svg\n", a->svg);
+        return CLI_EXIT_USAGE;
+    }
+    return CLI_EXIT_OK;
+}
+
+static int on_progress(void *payload, cvm_stage stage, double fraction)
+{
+    phases *ph = (phases *)payload;
+    (void)fraction;
+    if (stage == CVM_STAGE_RECOVER_SEGMENTS && ph->recover_start == 0)
+        ph->recover_start = cli_now();
+    return 0;
+}
+
+static int fail(cvm_mesh *m, const char *prefix)
+{
+    if (prefix)
+        fprintf(stderr, "cvmesh: %s: %s\n", prefix, cvm_mesh_errmsg(m));
+    else
+        fprintf(stderr, "cvmesh: %s\n", cvm_mesh_errmsg(m));
+    cvm_mesh_free(m);
+    return CLI_EXIT_FAIL;
+}
+
+static int run(const args *a)
+{
+    cvm_mesh *m;
+    phases ph = {0};
+    double t0, t_read, t_tri, t_write;
+    cvm_status s;
+    size_t ndup = 0;
+    int rc;
+    if (cvm_mesh_create(&m) != CVM_OK) {
+        fprintf(stderr, "cvmesh: out of memory\n");
+        return CLI_EXIT_FAIL;
+    }
+    if ((rc = cli_apply_settings(m, a->set, a->nset))) {
+        cvm_mesh_free(m);
+        return rc;
+    }
+    t0 = cli_now();
+    if (cvm_mesh_read(m, a->in) != CVM_OK)
+        return fail(m, NULL);
+    t_read = cli_now();
+    if (a->timings)
+        cvm_mesh_set_progress(m, on_progress, 1, &ph);
+    s = cvm_mesh_triangulate(m);
+    if (s != CVM_OK)
+        return fail(m, a->in);
+    t_tri = cli_now();
+    if (cvm_mesh_count(&ndup, m, CVM_ENT_DUPLICATE) == CVM_OK && ndup)
+        fprintf(stderr, "cvmesh: note: %s: %lu duplicate points merged\n", a->in, (unsigned long)ndup);
+    if (a->out && cvm_mesh_write(m, a->out) != CVM_OK)
+        return fail(m, NULL);
+    if (a->svg && cvm_mesh_write(m, a->svg) != CVM_OK)
+        return fail(m, NULL);
+    t_write = cli_now();
+    if (a->quality && (rc = cli_print_quality(stdout, m))) {
+        cvm_mesh_free(m);
+        return rc;
+    }
+    if (a->timings) {
+        double split = ph.recover_start > 0 ? ph.recover_start : t_tri;
+        printf("read: %.6f\n", t_read - t0);
+        printf("triangulate: %.6f\n", split - t_read);
+        printf("recover segments: %.6f\n", t_tri - split);
+        printf("write: %.6f\n", t_write - t_tri);
+    }
+    cvm_mesh_free(m);
+    return CLI_EXIT_OK;
+}
+
+int cli_triangulate(int argc, char **argv)
+{
+    args a;
+    int rc = parse(&a, argc, argv);
+    if (rc < 0)
+        return CLI_EXIT_OK;
+    if (rc)
+        return rc;
+    return run(&a);
+}

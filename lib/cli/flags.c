@@ -1,0 +1,109 @@
+/*
+ * flags.c - the one table that maps command-line flags to library option
+ * keys (STYLE section 5: no switch strings), with their parsing and help.
+ * A new option gets a row here; a new subcommand gets a CLI_CMD_* bit.
+ */
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli.h"
+
+#define TRI CLI_CMD_TRIANGULATE
+
+static const cli_option_flag k_flags[] = {
+    {"--keep-hull", NULL, CVM_OPT_KEEP_CONVEX_HULL, 1, TRI,
+     "keep every triangle of the convex hull (holes are still removed)"},
+    {"--no-split-intersections", NULL, CVM_OPT_SPLIT_INTERSECTIONS, 0, TRI,
+     "fail on crossing segments instead of splitting them"},
+    {"--reject-duplicates", NULL, CVM_OPT_REJECT_DUPLICATES, 1, TRI,
+     "fail on duplicate points instead of merging them"},
+    {"--seed", "S", CVM_OPT_SEED, 0, TRI, "seed of the random insertion order"},
+    {"--threads", "N", CVM_OPT_THREADS, 0, TRI, "threads for parallel stages (0: OpenMP default)"},
+    {"--time-limit", "SECONDS", CVM_OPT_TIME_LIMIT_S, 0, TRI, "give up after this time (0: none)"},
+};
+
+#define NFLAGS (sizeof k_flags / sizeof k_flags[0])
+
+/* The flag named by arg ("--seed" or "--seed=5"); *value_out points after '='. */
+static const cli_option_flag *find(unsigned cmd, const char *arg, const char **value_out)
+{
+    size_t i;
+    *value_out = NULL;
+    for (i = 0; i < NFLAGS; i++) {
+        size_t n = strlen(k_flags[i].name);
+        if (!(k_flags[i].commands & cmd) || strncmp(arg, k_flags[i].name, n) != 0)
+            continue;
+        if (arg[n] == '\0')
+            return &k_flags[i];
+        if (arg[n] == '=' && k_flags[i].arg) {
+            *value_out = arg + n + 1;
+            return &k_flags[i];
+        }
+    }
+    return NULL;
+}
+
+int cli_parse_option_flag(unsigned cmd, int argc, char **argv, int *i, cli_setting *set,
+                          int *nset)
+{
+    const char *val;
+    const cli_option_flag *f = find(cmd, argv[*i], &val);
+    char *end;
+    double v;
+    if (!f)
+        return 0;
+    if (*nset >= CLI_MAX_SETTINGS) {
+        fprintf(stderr, "cvmesh: too many option flags\n");
+        return -1;
+    }
+    if (!f->arg) {
+        v = f->value;
+    } else {
+        if (!val) {
+            if (*i + 1 >= argc) {
+                fprintf(stderr, "cvmesh: %s needs a value (%s)\n", f->name, f->arg);
+                return -1;
+            }
+            val = argv[++*i];
+        }
+        v = strtod(val, &end);
+        if (end == val || *end != '\0') {
+            fprintf(stderr, "cvmesh: %s expects a number, got '%s'\n", f->name, val);
+            return -1;
+        }
+    }
+    set[*nset].flag = f;
+    set[*nset].value = v;
+    (*nset)++;
+    return 1;
+}
+
+int cli_apply_settings(cvm_mesh *m, const cli_setting *set, int nset)
+{
+    int k;
+    for (k = 0; k < nset; k++) {
+        if (cvm_mesh_set_option(m, set[k].flag->key, set[k].value) != CVM_OK) {
+            fprintf(stderr, "cvmesh: %s %.17g: %s\n", set[k].flag->name, set[k].value,
+                    cvm_mesh_errmsg(m));
+            return CLI_EXIT_USAGE;
+        }
+    }
+    return CLI_EXIT_OK;
+}
+
+void cli_print_option_flags(FILE *f, unsigned cmd)
+{
+    size_t i;
+    for (i = 0; i < NFLAGS; i++) {
+        char left[64];
+        cvm_bounds b;
+        if (!(k_flags[i].commands & cmd))
+            continue;
+        snprintf(left, sizeof left, "%s%s%s", k_flags[i].name, k_flags[i].arg ? " " : "",
+                 k_flags[i].arg ? k_flags[i].arg : "");
+        fprintf(f, "  %-26s %s", left, k_flags[i].help);
+        if (k_flags[i].arg && cvm_option_bounds(&b, k_flags[i].key) == CVM_OK)
+            fprintf(f, " [default %.17g, range %.17g..%.17g]", b.def, b.lo, b.hi);
+        fputc('\n', f);
+    }
+}

@@ -1,0 +1,84 @@
+/* report.c - prints the quality report of --quality: counts, angles, regularity, degrees, dual edges. */
+#include "cli.h"
+
+#define BAR 40
+
+static void bars(FILE *f, const double *h, size_t n, const char *const *labels)
+{
+    size_t i, first = n, last = 0;
+    double top = 0;
+    for (i = 0; i < n; i++) {
+        if (h[i] > 0) {
+            if (first == n)
+                first = i;
+            last = i;
+        }
+        if (h[i] > top)
+            top = h[i];
+    }
+    for (i = first; i <= last && first < n; i++) {
+        int k, len = top > 0 ? (int)(BAR * h[i] / top + 0.5) : 0;
+        fprintf(f, "  %-9s %10.0f ", labels[i], h[i]);
+        for (k = 0; k < len; k++)
+            fputc('#', f);
+        fputc('\n', f);
+    }
+}
+
+int cli_print_quality(FILE *f, cvm_mesh *m)
+{
+    static const char *const angle_labels[18] = {
+        "0-10",    "10-20",   "20-30",   "30-40",   "40-50",   "50-60",
+        "60-70",   "70-80",   "80-90",   "90-100",  "100-110", "110-120",
+        "120-130", "130-140", "140-150", "150-160", "160-170", "170-180"};
+    static const char *const degree_labels[16] = {"0", "1", "2",  "3",  "4",  "5",  "6",  "7",
+                                                  "8", "9", "10", "11", "12", "13", "14", "15+"};
+    static const struct {
+        cvm_measure which;
+        const char *label, *fmt;
+    } rows[] = {
+        {CVM_MEASURE_MIN_ANGLE_DEG, "min angle", "%.6g deg"},
+        {CVM_MEASURE_MAX_ANGLE_DEG, "max angle", "%.6g deg"},
+        {CVM_MEASURE_REGULAR_PCT, "angles in [55, 65] deg", "%.2f %%"},
+        {CVM_MEASURE_OBTUSE_PCT, "obtuse (not well-centred)", "%.2f %%"},
+        {CVM_MEASURE_DEGREE6_PCT, "interior degree 6", "%.2f %%"},
+        {CVM_MEASURE_MIN_DUAL_EDGE_RATIO, "min dual edge ratio", "%.6g"},
+        {CVM_MEASURE_MIN_EDGE, "min edge", "%.6g"},
+        {CVM_MEASURE_MAX_EDGE, "max edge", "%.6g"},
+        {CVM_MEASURE_AREA, "area", "%.10g"},
+    };
+    static const struct {
+        cvm_entity kind;
+        const char *label;
+    } counts[] = {{CVM_ENT_VERTEX, "vertices"},
+                  {CVM_ENT_TRIANGLE, "triangles"},
+                  {CVM_ENT_EDGE, "edges"},
+                  {CVM_ENT_SEGMENT, "segments"},
+                  {CVM_ENT_DUPLICATE, "duplicates merged"}};
+    double angle[18], degree[16], v;
+    size_t i, n;
+    for (i = 0; i < sizeof counts / sizeof counts[0]; i++) {
+        if (cvm_mesh_count(&n, m, counts[i].kind) != CVM_OK)
+            n = 0;
+        fprintf(f, "%-28s %lu\n", counts[i].label, (unsigned long)n);
+    }
+    for (i = 0; i < sizeof rows / sizeof rows[0]; i++) {
+        if (cvm_mesh_get_measure(&v, m, rows[i].which) != CVM_OK) {
+            fprintf(stderr, "cvmesh: quality: %s\n", cvm_mesh_errmsg(m));
+            return CLI_EXIT_FAIL;
+        }
+        fprintf(f, "%-28s ", rows[i].label);
+        fprintf(f, rows[i].fmt, v);
+        fputc('\n', f);
+    }
+    if (cvm_mesh_copy_histogram(angle, 18, m, CVM_HIST_ANGLE_DEG) != CVM_OK ||
+        cvm_mesh_copy_histogram(degree, 16, m, CVM_HIST_DEGREE) != CVM_OK) {
+        fprintf(stderr, "cvmesh: quality: %s\n", cvm_mesh_errmsg(m));
+        return CLI_EXIT_FAIL;
+    }
+    fprintf(f, "angle histogram (degrees: angles)\n");
+    bars(f, angle, 18, angle_labels);
+    fprintf(f, "degree histogram (degree: interior vertices)\n");
+    bars(f, degree, 16, degree_labels);
+    return CLI_EXIT_OK;
+}

@@ -1,0 +1,147 @@
+/*
+ * write_svg.c - draws a mesh as an SVG picture: triangles filled by a colour
+ * ramp of their smallest angle (red 0 deg .. green 60 deg, from mo->tquality;
+ * uniform grey-blue without it), thin triangle edges, segments drawn thicker,
+ * y pointing up, the view fitted to the mesh, and a legend for the ramp.
+ * Coordinates are rounded to 0.01 px: this is a picture, not data.
+ */
+#include <math.h>
+#include <stdio.h>
+
+#include "formats.h"
+
+#define WIDTH 800.0
+#define MARGIN 10.0
+#define LEGEND 34.0
+
+typedef struct view {
+    double minx, maxy, scale;
+} view;
+
+/* v with 2 decimals into buf, without the C locale's decimal point. */
+static const char *px(char *buf, size_t len, double v)
+{
+    long long c = llround(v * 100.0);
+    const char *sign = c < 0 ? "-" : "";
+    if (c < 0)
+        c = -c;
+    snprintf(buf, len, "%s%lld.%02lld", sign, c / 100, c % 100);
+    return buf;
+}
+
+static void point(cvm__writer *w, const view *vw, const double *p, const char *sep)
+{
+    char bx[32], by[32];
+    cvm__writer_printf(w, "%s,%s%s", px(bx, sizeof bx, MARGIN + (p[0] - vw->minx) * vw->scale),
+                       px(by, sizeof by, MARGIN + (vw->maxy - p[1]) * vw->scale), sep);
+}
+
+/* RdYlGn-like ramp over [0, 60] degrees. */
+static void ramp(double q, int *rgb)
+{
+    static const int stops[5][3] = {
+        {215, 48, 39}, {252, 141, 89}, {254, 224, 139}, {145, 207, 96}, {26, 152, 80}};
+    double t = q / 60.0 * 4.0, f;
+    int i, k;
+    if (!(t > 0))
+        t = 0;
+    if (t > 4)
+        t = 4;
+    i = t >= 4 ? 3 : (int)t;
+    f = t - i;
+    for (k = 0; k < 3; k++)
+        rgb[k] = (int)lround(stops[i][k] + f * (stops[i + 1][k] - stops[i][k]));
+}
+
+static void fit(view *vw, const cvm__mesh_out *mo, double *w_out, double *h_out)
+{
+    double minx = 0, miny = 0, maxx = 1, maxy = 1, span;
+    size_t t;
+    int first = 1;
+    for (t = 0; t < 3 * mo->nt; t++) {
+        const double *p = mo->xy + 2 * (size_t)mo->tri[t];
+        if (first) {
+            minx = maxx = p[0];
+            miny = maxy = p[1];
+            first = 0;
+        }
+        minx = p[0] < minx ? p[0] : minx;
+        maxx = p[0] > maxx ? p[0] : maxx;
+        miny = p[1] < miny ? p[1] : miny;
+        maxy = p[1] > maxy ? p[1] : maxy;
+    }
+    span = maxx - minx > maxy - miny ? maxx - minx : maxy - miny;
+    if (!(span > 0) || !isfinite(span))
+        span = 1;
+    vw->minx = minx;
+    vw->maxy = maxy;
+    vw->scale = (WIDTH - 2 * MARGIN) / span;
+    *w_out = (maxx - minx) * vw->scale + 2 * MARGIN;
+    *h_out = (maxy - miny) * vw->scale + 2 * MARGIN;
+}
+
+static void legend(cvm__writer *w, double top)
+{
+    char bx[32], by[32];
+    int i, rgb[3];
+    for (i = 0; i < 12; i++) {
+        ramp(5.0 * i + 2.5, rgb);
+        cvm__writer_printf(w, "<rect x=\"%s\" y=\"%s\" width=\"20\" height=\"10\" fill=\"#%02x%02x%02x\"/>\n",
+                           px(bx, sizeof bx, MARGIN + 20.0 * i), px(by, sizeof by, top + 4), rgb[0],
+                           rgb[1], rgb[2]);
+    }
+    cvm__writer_printf(w, "<text x=\"%s\" y=\"%s\" font-family=\"sans-serif\" font-size=\"11\">"
+                          "smallest angle: 0 to 60 degrees (red to green)</text>\n",
+                       px(bx, sizeof bx, MARGIN + 250), px(by, sizeof by, top + 13));
+}
+
+cvm_status cvm__write_svg(cvm__writer *w, cvm__ctx *ctx, const cvm__mesh_out *mo)
+{
+    view vw;
+    double width, height, stroke, seg_stroke;
+    char bw[32], bh[32], bs[32];
+    size_t t, k;
+    (void)ctx;
+    fit(&vw, mo, &width, &height);
+    /* edges about a twentieth of a typical triangle's size, within [0.05, 1] px */
+    stroke = mo->nt ? 0.05 * sqrt(width * height / (double)mo->nt) : 1.0;
+    stroke = stroke < 0.05 ? 0.05 : stroke > 1.0 ? 1.0 : stroke;
+    seg_stroke = 3 * stroke < 1.5 ? 1.5 : 3 * stroke;
+    cvm__writer_printf(w, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+                          "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 %s %s\" "
+                          "width=\"%s\" height=\"%s\">\n",
+                       px(bw, sizeof bw, width), px(bh, sizeof bh, height + (mo->tquality ? LEGEND : 0)),
+                       bw, bh);
+    cvm__writer_printf(w, "<title>cvmesh: %lu vertices, %lu triangles, %lu segments</title>\n",
+                       (unsigned long)mo->nv, (unsigned long)mo->nt, (unsigned long)mo->nseg);
+    cvm__writer_puts(w, "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n");
+    cvm__writer_printf(w, "<g stroke=\"#303030\" stroke-width=\"%s\" stroke-linejoin=\"round\" fill=\"#c9d8ea\">\n",
+                       px(bs, sizeof bs, stroke < 0.01 ? 0.01 : stroke));
+    for (t = 0; t < mo->nt; t++) {
+        cvm__writer_puts(w, "<polygon points=\"");
+        for (k = 0; k < 3; k++)
+            point(w, &vw, mo->xy + 2 * (size_t)mo->tri[3 * t + k], k < 2 ? " " : "\"");
+        if (mo->tquality) {
+            int rgb[3];
+            ramp(mo->tquality[t], rgb);
+            cvm__writer_printf(w, " fill=\"#%02x%02x%02x\"", rgb[0], rgb[1], rgb[2]);
+        }
+        cvm__writer_puts(w, "/>\n");
+    }
+    cvm__writer_puts(w, "</g>\n");
+    if (mo->nseg) {
+        cvm__writer_printf(w, "<path fill=\"none\" stroke=\"#000000\" stroke-width=\"%s\" "
+                              "stroke-linecap=\"round\" d=\"",
+                           px(bs, sizeof bs, seg_stroke));
+        for (k = 0; k < mo->nseg; k++) {
+            cvm__writer_puts(w, k ? " M" : "M");
+            point(w, &vw, mo->xy + 2 * (size_t)mo->seg[2 * k], " L");
+            point(w, &vw, mo->xy + 2 * (size_t)mo->seg[2 * k + 1], "");
+        }
+        cvm__writer_puts(w, "\"/>\n");
+    }
+    if (mo->tquality)
+        legend(w, height);
+    cvm__writer_puts(w, "</svg>\n");
+    return CVM_OK;
+}

@@ -1,0 +1,285 @@
+/*
+ * writer.c - an output file that appears whole or not at all: text goes to a
+ * fresh temporary file beside the target, which is flushed, synced, closed
+ * and then renamed over the target; any failure removes the temporary file.
+ */
+#ifndef _POSIX_C_SOURCE
+#define _POSIX_C_SOURCE 200809L
+#endif
+#include <errno.h>
+#include <fcntl.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "io_text.h"
+
+struct cvm__writer {
+    cvm__ctx *ctx;
+    FILE *f;
+    char *path;     /* as the caller named it, for messages */
+    char *target;   /* the file replaced: path, or where its symbolic link leads */
+    char *tmp;      /* temporary file, NULL when writing in place */
+    int err;        /* errno of the first output error, 0 if none */
+    int finished;   /* 1 once the file is closed */
+    cvm_status status; /* result of cvm__writer_finish() */
+};
+
+static char *dup_str(cvm__ctx *ctx, const char *s)
+{
+    size_t n = strlen(s) + 1;
+    char *d = cvm__malloc(ctx, n);
+    if (d)
+        memcpy(d, s, n);
+    return d;
+}
+
+static uint64_t mix(uint64_t z)
+{
+    z += 0x9E3779B97F4A7C15ull;
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+}
+
+/* Write target + ".tmp." + 6 characters, different for each attempt. */
+static void tmp_name(char *buf, size_t len, const char *target, const void *w, unsigned attempt)
+{
+    static const char digits[] = "0123456789abcdefghijklmnopqrstuvwxyz";
+    double now = cvm__now();
+    uint64_t t, z;
+    char sfx[7];
+    int i;
+    memcpy(&t, &now, sizeof t);
+    z = mix(t ^ mix((uint64_t)getpid()) ^ mix((uint64_t)(uintptr_t)w) ^ mix(attempt));
+    for (i = 0; i < 6; i++) {
+        sfx[i] = digits[z % 36];
+        z /= 36;
+    }
+    sfx[6] = '\0';
+    snprintf(buf, len, "%s.tmp.%s", target, sfx);
+}
+
+static cvm_status os_error(cvm__writer *w, cvm_status s, const char *verb, int err)
+{
+    char why[128];
+    cvm__strerror(err, why, sizeof why);
+    return cvm__error(w->ctx, s, CVM_ENT_NONE, -1, "cannot %s %s: %s", verb, w->path, why);
+}
+
+/* Follow the symbolic links of w->path (at most 40) into w->target. */
+static cvm_status follow_links(cvm__writer *w)
+{
+    char link[4096];
+    int depth;
+    if (!(w->target = dup_str(w->ctx, w->path)))
+        return cvm__nomem(w->ctx);
+    for (depth = 0; depth < 40; depth++) {
+        struct stat st;
+        ssize_t n;
+        size_t dir = 0, i, len;
+        char *next;
+        if (lstat(w->target, &st) != 0 || !S_ISLNK(st.st_mode))
+            return CVM_OK;
+        n = readlink(w->target, link, sizeof link);
+        if (n < 0 || (size_t)n >= sizeof link)
+            return CVM_OK; /* cannot say: write through the link */
+        if (link[0] != '/')
+            for (i = 0; w->target[i]; i++)
+                if (w->target[i] == '/')
+                    dir = i + 1;
+        len = dir + (size_t)n;
+        if (!(next = cvm__malloc(w->ctx, len + 1)))
+            return cvm__nomem(w->ctx);
+        memcpy(next, w->target, dir);
+        memcpy(next + dir, link, (size_t)n);
+        next[len] = '\0';
+        cvm__free(w->ctx, w->target);
+        w->target = next;
+    }
+    return CVM_OK;
+}
+
+/* Decide the target: path itself, or the file its links lead to.
+ * *in_place = 1 when the target exists and is not a regular file, or is
+ * still a link (a loop). */
+static cvm_status resolve(cvm__writer *w, int *in_place)
+{
+    struct stat st;
+    cvm_status s = follow_links(w);
+    *in_place = 0;
+    if (s)
+        return s;
+    if (lstat(w->target, &st) == 0 && !S_ISREG(st.st_mode))
+        *in_place = 1;
+    return CVM_OK;
+}
+
+static cvm_status open_tmp(cvm__writer *w)
+{
+    size_t len = strlen(w->target) + 16;
+    unsigned attempt;
+    int fd = -1;
+    w->tmp = cvm__malloc(w->ctx, len);
+    if (!w->tmp)
+        return cvm__nomem(w->ctx);
+    for (attempt = 0; attempt < 100; attempt++) {
+        tmp_name(w->tmp, len, w->target, w, attempt);
+        fd = open(w->tmp, O_WRONLY | O_CREAT | O_EXCL, 0666);
+        if (fd >= 0 || errno != EEXIST)
+            break;
+    }
+    if (fd < 0) {
+        int err = errno;
+        cvm__free(w->ctx, w->tmp);
+        w->tmp = NULL;
+        return os_error(w, CVM_E_IO_OPEN, "create", err);
+    }
+    w->f = fdopen(fd, "w");
+    if (!w->f) {
+        int err = errno;
+        close(fd);
+        unlink(w->tmp);
+        cvm__free(w->ctx, w->tmp);
+        w->tmp = NULL;
+        return os_error(w, CVM_E_IO_OPEN, "create", err);
+    }
+    return CVM_OK;
+}
+
+static void free_writer(cvm__writer *w)
+{
+    cvm__ctx *ctx = w->ctx;
+    cvm__free(ctx, w->path);
+    cvm__free(ctx, w->target);
+    cvm__free(ctx, w->tmp);
+    cvm__free(ctx, w);
+}
+
+cvm_status cvm__writer_open(cvm__writer **out, cvm__ctx *ctx, const char *path)
+{
+    cvm__writer *w;
+    cvm_status s;
+    int in_place;
+    *out = NULL;
+    w = cvm__calloc(ctx, 1, sizeof *w);
+    if (!w)
+        return cvm__nomem(ctx);
+    w->ctx = ctx;
+    w->path = dup_str(ctx, path);
+    if (!w->path) {
+        free_writer(w);
+        return cvm__nomem(ctx);
+    }
+    if ((s = resolve(w, &in_place))) {
+        free_writer(w);
+        return s;
+    }
+    if (in_place) {
+        w->f = fopen(w->path, "w");
+        s = w->f ? CVM_OK : os_error(w, CVM_E_IO_OPEN, "open", errno);
+    } else {
+        s = open_tmp(w);
+    }
+    if (s) {
+        free_writer(w);
+        return s;
+    }
+    *out = w;
+    return CVM_OK;
+}
+
+static void note_error(cvm__writer *w)
+{
+    if (!w->err)
+        w->err = errno ? errno : EIO;
+}
+
+void cvm__writer_puts(cvm__writer *w, const char *s)
+{
+    if (w->err || !w->f)
+        return;
+    errno = 0;
+    if (fputs(s, w->f) == EOF)
+        note_error(w);
+}
+
+void cvm__writer_printf(cvm__writer *w, const char *fmt, ...)
+{
+    va_list ap;
+    int r;
+    if (w->err || !w->f)
+        return;
+    errno = 0;
+    va_start(ap, fmt);
+    r = vfprintf(w->f, fmt, ap);
+    va_end(ap);
+    if (r < 0)
+        note_error(w);
+}
+
+void cvm__writer_double(cvm__writer *w, double x)
+{
+    char buf[CVM__DOUBLE_BUF];
+    size_t n;
+    if (w->err || !w->f)
+        return;
+    if (isnan(x))
+        n = (size_t)snprintf(buf, sizeof buf, "nan");
+    else if (isinf(x))
+        n = (size_t)snprintf(buf, sizeof buf, x > 0 ? "inf" : "-inf");
+    else
+        n = cvm__format_double(buf, x);
+    errno = 0;
+    if (fwrite(buf, 1, n, w->f) != n)
+        note_error(w);
+}
+
+cvm_status cvm__writer_finish(cvm__writer *w)
+{
+    if (w->finished)
+        return w->status;
+    w->finished = 1;
+    errno = 0;
+    if (fflush(w->f) != 0)
+        note_error(w);
+    if (ferror(w->f))
+        note_error(w);
+    errno = 0;
+    if (!w->err && w->tmp && fsync(fileno(w->f)) != 0)
+        note_error(w);
+    errno = 0;
+    if (fclose(w->f) != 0)
+        note_error(w);
+    w->f = NULL;
+    w->status = w->err ? os_error(w, CVM_E_IO_WRITE, "write", w->err) : CVM_OK;
+    return w->status;
+}
+
+void cvm__writer_discard(cvm__writer *w)
+{
+    if (!w)
+        return;
+    if (w->f)
+        fclose(w->f);
+    if (w->tmp)
+        unlink(w->tmp);
+    free_writer(w);
+}
+
+cvm_status cvm__writer_commit(cvm__writer *w)
+{
+    cvm_status s = cvm__writer_finish(w);
+    if (!s && w->tmp && rename(w->tmp, w->target) != 0)
+        s = os_error(w, CVM_E_IO_WRITE, "replace", errno);
+    if (s) {
+        cvm__writer_discard(w);
+        return s;
+    }
+    free_writer(w);
+    return CVM_OK;
+}

@@ -1,0 +1,314 @@
+/* delaunay_refine.c - Delaunay refinement (Ruppert 1995, Shewchuk 1997): circumcentres of bad triangles, size problems first. */
+#include <math.h>
+
+#include "refine_internal.h"
+#include "geom/geom_internal.h"
+
+/* Size test of Delaunay refinement (issue 4): a triangle is too big when its
+ * circumradius exceeds the mean size at its three vertices times this. */
+#define DR_SIZE_FACTOR 1.0
+/* Miller-Pav-Walkington exemption (as Triangle): the two ends of the shortest
+ * edge are this close to equidistant from the apex of a small input angle. */
+#define DR_SHELL_TOL 0.001
+/* Input angles below this are "small" (cos 60 degrees = 0.5). */
+#define DR_SMALL_ANGLE_COS 0.5
+
+static const double *dr_pt(const cvm__refiner *R, int32_t v)
+{
+    return R->T->xy + 2 * (size_t)v;
+}
+
+/* Segment ids containing vertex u: its own segment for a vertex split onto
+ * one, else the segments of the constrained edges at u (at most max). */
+static size_t dr_segs_at(cvm__refiner *R, int32_t u, int32_t *out, size_t max)
+{
+    const cvm__tri2 *T = R->T;
+    int32_t t0 = T->vtri[u], t = t0;
+    size_t n = 0, steps = 0, k;
+    if (R->vseg[u] >= 0) {
+        out[0] = R->vseg[u];
+        return 1;
+    }
+    if (t0 < 0)
+        return 0;
+    do {
+        const int32_t *tv = T->tv + 3 * (size_t)t;
+        int i = tv[0] == u ? 0 : tv[1] == u ? 1 : 2;
+        int32_t seg = T->te[3 * (size_t)t + (size_t)(i + 2) % 3];
+        if (seg >= 0 && n < max) {
+            for (k = 0; k < n && out[k] != seg; k++)
+                ;
+            if (k == n)
+                out[n++] = seg;
+        }
+        t = T->tn[3 * (size_t)t + (size_t)(i + 1) % 3] / 3;
+    } while (t != t0 && ++steps <= T->nt);
+    return n;
+}
+
+/* A skinny triangle whose shortest edge u-w joins two different segments that
+ * meet at a small angle, with u and w on the same concentric shell around the
+ * join, is not split: splitting it cannot help (Miller, Pav, Walkington 2003;
+ * Triangle's testtriangle). */
+static int dr_exempt(cvm__refiner *R, int32_t u, int32_t w)
+{
+    int32_t su[8], sw[8];
+    size_t nu, nw, a, b;
+    if (R->vseg[u] == -1 || R->vseg[w] == -1)
+        return 0;
+    nu = dr_segs_at(R, u, su, 8);
+    nw = dr_segs_at(R, w, sw, 8);
+    for (a = 0; a < nu; a++)
+        for (b = 0; b < nw; b++)
+            if (su[a] == sw[b])
+                return 0;
+    for (a = 0; a < nu; a++)
+        for (b = 0; b < nw; b++) {
+            const int32_t *e1 = R->seg_ends + 2 * (size_t)su[a], *e2 = R->seg_ends + 2 * (size_t)sw[b];
+            int32_t J = (e1[0] == e2[0] || e1[0] == e2[1]) ? e1[0]
+                      : (e1[1] == e2[0] || e1[1] == e2[1]) ? e1[1] : -1;
+            const double *pj, *pu, *pw;
+            double ux, uy, wx, wy, d1, d2;
+            if (J < 0)
+                continue;
+            pj = dr_pt(R, J);
+            pu = dr_pt(R, u);
+            pw = dr_pt(R, w);
+            ux = pu[0] - pj[0];
+            uy = pu[1] - pj[1];
+            wx = pw[0] - pj[0];
+            wy = pw[1] - pj[1];
+            d1 = ux * ux + uy * uy;
+            d2 = wx * wx + wy * wy;
+            if (d1 < (1 + DR_SHELL_TOL) * d2 && d1 > (1 - DR_SHELL_TOL) * d2 &&
+                ux * wx + uy * wy > DR_SMALL_ANGLE_COS * sqrt(d1 * d2))
+                return 1;
+        }
+    return 0;
+}
+
+int cvm__rf_classify(cvm__refiner *R, int32_t t, double *key_out)
+{
+    const int32_t *tv = R->T->tv + 3 * (size_t)t;
+    const double *p0 = dr_pt(R, tv[0]), *p1 = dr_pt(R, tv[1]), *p2 = dr_pt(R, tv[2]);
+    double l[3], cross, lmin, r2, ls, sin2;
+    int jmin = 0, k;
+    l[0] = (p1[0] - p2[0]) * (p1[0] - p2[0]) + (p1[1] - p2[1]) * (p1[1] - p2[1]);
+    l[1] = (p2[0] - p0[0]) * (p2[0] - p0[0]) + (p2[1] - p0[1]) * (p2[1] - p0[1]);
+    l[2] = (p0[0] - p1[0]) * (p0[0] - p1[0]) + (p0[1] - p1[1]) * (p0[1] - p1[1]);
+    cross = (p1[0] - p0[0]) * (p2[1] - p0[1]) - (p1[1] - p0[1]) * (p2[0] - p0[0]);
+    for (k = 1; k < 3; k++)
+        if (l[k] < l[jmin])
+            jmin = k;
+    lmin = l[jmin];
+    if (!(cross > 0)) {
+        /* too thin for floating point: the worst shape there is */
+        *key_out = 0;
+        return dr_exempt(R, tv[(jmin + 1) % 3], tv[(jmin + 2) % 3]) ? 3 : 2;
+    }
+    r2 = l[0] * l[1] * l[2] / (4 * cross * cross);
+    ls = (R->vls[tv[0]] + R->vls[tv[1]] + R->vls[tv[2]]) / 3 * DR_SIZE_FACTOR;
+    {
+        double ratio = isfinite(ls) ? r2 / (ls * ls) : 0;
+        if (R->p->max_area > 0 && cross / 2 / R->p->max_area > ratio)
+            ratio = cross / 2 / R->p->max_area;
+        if (ratio > 1) {
+            *key_out = -ratio;
+            return 1;
+        }
+    }
+    sin2 = lmin * cross * cross / (l[0] * l[1] * l[2]);
+    *key_out = sin2;
+    if (sin2 >= R->sin2_min)
+        return 0;
+    return dr_exempt(R, tv[(jmin + 1) % 3], tv[(jmin + 2) % 3]) ? 3 : 2;
+}
+
+cvm_status cvm__rf_queue_star(cvm__refiner *R, int32_t v)
+{
+    size_t n = cvm__rf_star(R, v), k;
+    cvm_status s;
+    if (n == 0)
+        return cvm__nomem(R->ctx);
+    for (k = 0; k < n; k++) {
+        int32_t t = R->star[k];
+        double key;
+        int c;
+        if (!cvm__tri2_in_domain(R->T, t))
+            continue;
+        c = cvm__rf_classify(R, t, &key);
+        if ((c == 1 || c == 2) && (s = cvm__bq_push(&R->q, R->T, t, c == 1 ? 0 : 1, key)))
+            return cvm__nomem(R->ctx);
+    }
+    return CVM_OK;
+}
+
+/* Visibility walk from t towards x that stops at constrained edges. Returns
+ * the triangle whose closed interior holds x with *seg_t = -1, or the
+ * constrained edge (*seg_t, *seg_j) in the way (also when x lies on it);
+ * -1 when x coincides with a vertex or the walk fails. */
+static int32_t dr_walk(cvm__refiner *R, int32_t t, const double *x, int32_t *seg_t, int *seg_j)
+{
+    const cvm__tri2 *T = R->T;
+    int32_t prev = -1;
+    size_t steps = 0;
+    *seg_t = -1;
+    for (;;) {
+        const int32_t *tv = T->tv + 3 * (size_t)t;
+        double o[3];
+        int k, moved = 0, zeros = 0, zj = 0;
+        if (++steps > T->nt + 3)
+            return -1;
+        for (k = 0; k < 3; k++) {
+            int j = (int)((k + steps) % 3);
+            int32_t nb = T->tn[3 * (size_t)t + (size_t)j] / 3;
+            o[j] = cvm__orient2d(dr_pt(R, tv[(j + 1) % 3]), dr_pt(R, tv[(j + 2) % 3]), x);
+            if (o[j] >= 0 || nb == prev)
+                continue;
+            if (T->te[3 * (size_t)t + (size_t)j] >= 0) {
+                *seg_t = t;
+                *seg_j = j;
+                return t;
+            }
+            if (!cvm__tri2_in_domain(T, nb))
+                return -1;
+            prev = t;
+            t = nb;
+            moved = 1;
+            break;
+        }
+        if (moved)
+            continue;
+        for (k = 0; k < 3; k++) {
+            if (!(o[k] > 0) && !(o[k] < 0)) {
+                zeros++;
+                zj = k;
+            }
+            if (o[k] < 0)
+                return -1; /* only beyond the edge we came through: not convex here */
+        }
+        if (zeros >= 2)
+            return -1;
+        if (zeros == 1 && T->te[3 * (size_t)t + (size_t)zj] >= 0) {
+            *seg_t = t;
+            *seg_j = zj;
+        }
+        return t;
+    }
+}
+
+/* Split the subsegments in R->enc (x encroached them); *split_any set when one was split. */
+static cvm_status dr_split_encroached(cvm__refiner *R, int *split_any)
+{
+    size_t i, n = R->nenc, before = R->steiner;
+    cvm_status s;
+    for (i = 0; i < n; i++)
+        if ((s = cvm__rf_segq_push(R, R->enc[3 * i], R->enc[3 * i + 1], R->enc[3 * i + 2])))
+            return s;
+    s = cvm__rf_split_queued(R);
+    *split_any = R->steiner > before;
+    return s;
+}
+
+int cvm__rf_insert_free(cvm__refiner *R, int32_t t, const double *x, int32_t *v_out,
+                        cvm_status *s_out)
+{
+    cvm__tri2 *T = R->T;
+    int32_t tc, st, v, other;
+    int sj, split = 0;
+    cvm__ins res;
+    cvm_status s;
+    *v_out = -1;
+    *s_out = CVM_OK;
+    if (!isfinite(x[0]) || !isfinite(x[1]))
+        return CVM__RF_REJECT;
+    tc = dr_walk(R, t, x, &st, &sj);
+    if (tc < 0)
+        return CVM__RF_REJECT;
+    if (st >= 0) {
+        const int32_t *tv = T->tv + 3 * (size_t)st;
+        size_t before = R->steiner;
+        if ((s = cvm__rf_segq_push(R, tv[(sj + 1) % 3], tv[(sj + 2) % 3],
+                                   T->te[3 * (size_t)st + (size_t)sj])) ||
+            (s = cvm__rf_split_queued(R))) {
+            *s_out = s;
+            return CVM__RF_SPLIT;
+        }
+        return R->steiner > before ? CVM__RF_SPLIT : CVM__RF_REJECT;
+    }
+    if ((s = cvm__rf_may_insert(R)) || (s = cvm__tri2_add_vertex(T, x, &v))) {
+        *s_out = s == CVM_E_NOMEM ? cvm__nomem(R->ctx) : s;
+        return CVM__RF_REJECT;
+    }
+    if ((s = cvm__rf_cavity_encroached(R, v, tc))) {
+        T->nv--;
+        *s_out = s;
+        return CVM__RF_REJECT;
+    }
+    if (R->nenc) {
+        T->nv--;
+        *s_out = dr_split_encroached(R, &split);
+        return split ? CVM__RF_SPLIT : CVM__RF_REJECT;
+    }
+    s = cvm__tri2_insert_vertex(T, v, tc, CVM__INSF_DOMAIN_ONLY, 0.0, &res, &other);
+    if (s || res != CVM__INS_DONE) {
+        T->nv--;
+        *s_out = s == CVM_E_NOMEM ? cvm__nomem(R->ctx) : s;
+        return CVM__RF_REJECT;
+    }
+    *v_out = v;
+    *s_out = cvm__rf_new_vertex(R, v, -1);
+    return CVM__RF_DONE;
+}
+
+/* Queue every bad triangle of the domain with the current rules. */
+static cvm_status dr_queue_all(cvm__refiner *R)
+{
+    const cvm__tri2 *T = R->T;
+    size_t t;
+    cvm__bq_clear(&R->q);
+    for (t = 0; t < T->nt; t++) {
+        double key;
+        int c;
+        if (!cvm__tri2_in_domain(T, (int32_t)t))
+            continue;
+        c = cvm__rf_classify(R, (int32_t)t, &key);
+        if ((c == 1 || c == 2) && cvm__bq_push(&R->q, T, (int32_t)t, c == 1 ? 0 : 1, key))
+            return cvm__nomem(R->ctx);
+    }
+    return CVM_OK;
+}
+
+cvm_status cvm__rf_delaunay(cvm__refiner *R)
+{
+    cvm__bad_entry e;
+    cvm_status s;
+    R->queue_star = cvm__rf_queue_star;
+    if ((s = dr_queue_all(R)) || (s = cvm__rf_split_queued(R)))
+        return s;
+    while (cvm__bq_pop(&R->q, &e)) {
+        const int32_t *tv;
+        double key, c[2];
+        int32_t v;
+        int cls, r;
+        if (!cvm__bq_valid(R->T, &e))
+            continue;
+        cls = cvm__rf_classify(R, e.t, &key);
+        if (cls != 1 && cls != 2)
+            continue;
+        tv = R->T->tv + 3 * (size_t)e.t;
+        cvm__circumcenter2d(dr_pt(R, tv[0]), dr_pt(R, tv[1]), dr_pt(R, tv[2]), c);
+        r = cvm__rf_insert_free(R, e.t, c, &v, &s);
+        if (s)
+            return s;
+        if (r == CVM__RF_DONE)
+            s = cvm__rf_queue_star(R, v);
+        else if (r == CVM__RF_SPLIT && cvm__bq_valid(R->T, &e))
+            s = cvm__bq_push(&R->q, R->T, e.t, e.cls, e.key) ? cvm__nomem(R->ctx) : CVM_OK;
+        if (!s)
+            s = cvm__rf_split_queued(R);
+        if (s)
+            return s;
+    }
+    return CVM_OK;
+}

@@ -1,0 +1,238 @@
+/* refiner.c - the driver of a refinement run: set-up, per-vertex data, run control and the final report. */
+#include <math.h>
+#include <string.h>
+
+#include "refine_internal.h"
+#include "geom/geom_internal.h"
+
+size_t cvm__rf_star(cvm__refiner *R, int32_t v)
+{
+    const cvm__tri2 *T = R->T;
+    int32_t t0 = T->vtri[v], t = t0;
+    size_t n = 0;
+    if (t0 < 0)
+        return 0;
+    do {
+        const int32_t *tv = T->tv + 3 * (size_t)t;
+        int i = tv[0] == v ? 0 : tv[1] == v ? 1 : 2;
+        if (n >= R->cap_star &&
+            cvm__grow(R->ctx, (void **)&R->star, &R->cap_star, n + 1, sizeof *R->star))
+            return 0;
+        R->star[n++] = t;
+        t = T->tn[3 * (size_t)t + (i + 1) % 3] / 3;
+    } while (t != t0 && n <= T->nt);
+    return n;
+}
+
+int cvm__rf_find_edge(cvm__refiner *R, int32_t a, int32_t b, int32_t *t_out, int *j_out)
+{
+    const cvm__tri2 *T = R->T;
+    int32_t t0 = T->vtri[a], t = t0;
+    size_t steps = 0;
+    if (t0 < 0)
+        return 0;
+    do {
+        const int32_t *tv = T->tv + 3 * (size_t)t;
+        int i = tv[0] == a ? 0 : tv[1] == a ? 1 : 2;
+        if (tv[(i + 1) % 3] == b) {
+            *t_out = t;
+            *j_out = (i + 2) % 3;
+            return 1;
+        }
+        t = T->tn[3 * (size_t)t + (i + 1) % 3] / 3;
+    } while (t != t0 && ++steps <= T->nt);
+    return 0;
+}
+
+/* Make room in the per-vertex arrays for n vertices. */
+static cvm_status rf_reserve_vertices(cvm__refiner *R, size_t n)
+{
+    if (cvm__grow(R->ctx, (void **)&R->vls, &R->cap_vls, n, sizeof *R->vls) ||
+        cvm__grow(R->ctx, (void **)&R->vseg, &R->cap_vseg, n, sizeof *R->vseg))
+        return CVM_E_NOMEM;
+    return CVM_OK;
+}
+
+cvm_status cvm__rf_new_vertex(cvm__refiner *R, int32_t v, int32_t seg)
+{
+    const double *p = R->T->xy + 2 * (size_t)v;
+    cvm_status s;
+    if ((s = rf_reserve_vertices(R, (size_t)v + 1)))
+        return cvm__nomem(R->ctx);
+    R->vseg[v] = seg;
+    R->steiner++;
+    return cvm__sizing_at(R->p->sizing, p[0], p[1], &R->vls[v], R->ctx);
+}
+
+cvm_status cvm__rf_may_insert(cvm__refiner *R)
+{
+    cvm_status s;
+    double frac;
+    if (R->p->max_steiner && R->steiner >= R->p->max_steiner)
+        return cvm__error(R->ctx, CVM_INCOMPLETE_STEINER_LIMIT, CVM_ENT_NONE, -1,
+                          "refinement stopped at the Steiner limit (%lu points); the mesh is "
+                          "valid but some triangles may not meet the bounds",
+                          (unsigned long)R->steiner);
+    frac = R->p->max_steiner ? (double)R->steiner / (double)R->p->max_steiner
+                             : (double)R->steiner / (double)(R->steiner + R->q.n + 1);
+    s = cvm__tick(R->ctx, 1, CVM_STAGE_REFINE, frac);
+    if (s)
+        return cvm__error(R->ctx, s, CVM_ENT_NONE, -1,
+                          "refinement %s after %lu Steiner points; the mesh is valid but some "
+                          "triangles may not meet the bounds",
+                          s == CVM_INCOMPLETE_CANCELLED ? "was cancelled" : "reached the time limit",
+                          (unsigned long)R->steiner);
+    return CVM_OK;
+}
+
+/* Domain edges on the convex hull that no segment covers become segments of
+ * their own (ids after the input segments), so refinement never leaves the hull. */
+static cvm_status rf_constrain_hull(cvm__refiner *R)
+{
+    cvm__tri2 *T = R->T;
+    size_t t;
+    int j;
+    for (t = 0; t < T->nt; t++) {
+        if (!cvm__tri2_in_domain(T, (int32_t)t))
+            continue;
+        for (j = 0; j < 3; j++) {
+            size_t h = 3 * t + (size_t)j;
+            int32_t nb = T->tn[h] / 3;
+            size_t cap = 2 * R->nseg;
+            if (T->te[h] >= 0 || !cvm__tri2_is_ghost(T, nb))
+                continue;
+            if (R->nseg >= (size_t)INT32_MAX ||
+                cvm__grow(R->ctx, (void **)&R->seg_ends, &cap, 2 * R->nseg + 2, sizeof(int32_t)))
+                return cvm__nomem(R->ctx);
+            R->seg_ends[2 * R->nseg] = T->tv[h - (size_t)j + (size_t)(j + 1) % 3];
+            R->seg_ends[2 * R->nseg + 1] = T->tv[h - (size_t)j + (size_t)(j + 2) % 3];
+            T->te[h] = (int32_t)R->nseg;
+            T->te[T->tn[h]] = (int32_t)R->nseg;
+            R->nseg++;
+        }
+    }
+    return CVM_OK;
+}
+
+static cvm_status rf_setup(cvm__refiner *R, cvm__tri2 *T, const cvm__refine_params *p)
+{
+    size_t v, t;
+    double th = p->min_angle_deg * 3.14159265358979323846 / 180.0;
+    cvm_status s;
+    memset(R, 0, sizeof *R);
+    R->T = T;
+    R->ctx = T->ctx;
+    R->p = p;
+    R->queue_star = cvm__rf_queue_star;
+    cvm__bq_init(&R->q, R->ctx);
+    R->sin2_min = sin(th) * sin(th);
+    R->lens_cos2 = cos(2 * th) * cos(2 * th);
+    if ((s = cvm__tri2_enable_constraints(T)))
+        return cvm__nomem(R->ctx);
+    R->seg_ends = cvm__malloc(R->ctx, (2 * p->nseg + 2) * sizeof *R->seg_ends);
+    if (!R->seg_ends)
+        return cvm__nomem(R->ctx);
+    if (p->nseg)
+        memcpy(R->seg_ends, p->seg_ends, 2 * p->nseg * sizeof *R->seg_ends);
+    R->nseg = p->nseg;
+    if ((s = rf_constrain_hull(R)))
+        return s;
+    if (rf_reserve_vertices(R, T->nv + 1))
+        return cvm__nomem(R->ctx);
+    for (v = 0; v < T->nv; v++) {
+        const double *q = T->xy + 2 * v;
+        R->vseg[v] = -1;
+        if ((s = cvm__sizing_at(p->sizing, q[0], q[1], &R->vls[v], R->ctx)))
+            return s;
+    }
+    for (t = 0; t < T->nt; t++) {
+        int j;
+        if (!cvm__tri2_in_domain(T, (int32_t)t))
+            continue;
+        for (j = 0; j < 3; j++)
+            if (T->te[3 * t + (size_t)j] >= 0) {
+                R->vseg[T->tv[3 * t + (size_t)(j + 1) % 3]] = -2;
+                R->vseg[T->tv[3 * t + (size_t)(j + 2) % 3]] = -2;
+            }
+    }
+    return CVM_OK;
+}
+
+static void rf_teardown(cvm__refiner *R)
+{
+    cvm__bq_destroy(&R->q);
+    cvm__free(R->ctx, R->seg_ends);
+    cvm__free(R->ctx, R->vls);
+    cvm__free(R->ctx, R->vseg);
+    cvm__free(R->ctx, R->segq);
+    cvm__free(R->ctx, R->star);
+    cvm__free(R->ctx, R->cav);
+    cvm__free(R->ctx, R->enc);
+}
+
+/* Smallest angle of triangle t in degrees, from its coordinates. */
+static double rf_min_angle_deg(const cvm__tri2 *T, int32_t t)
+{
+    const int32_t *tv = T->tv + 3 * (size_t)t;
+    double best = 180.0;
+    int k;
+    for (k = 0; k < 3; k++) {
+        const double *o = T->xy + 2 * (size_t)tv[k];
+        const double *a = T->xy + 2 * (size_t)tv[(k + 1) % 3];
+        const double *b = T->xy + 2 * (size_t)tv[(k + 2) % 3];
+        double ux = a[0] - o[0], uy = a[1] - o[1], wx = b[0] - o[0], wy = b[1] - o[1];
+        double ang = atan2(fabs(ux * wy - uy * wx), ux * wx + uy * wy) * 180.0 / 3.14159265358979323846;
+        if (ang < best)
+            best = ang;
+    }
+    return best;
+}
+
+static void rf_report(cvm__refiner *R, cvm__refine_report *rep)
+{
+    const cvm__tri2 *T = R->T;
+    size_t t;
+    memset(rep, 0, sizeof *rep);
+    rep->steiner = R->steiner;
+    rep->met_angle_deg = 180.0;
+    for (t = 0; t < T->nt; t++) {
+        double key;
+        int c;
+        if (!cvm__tri2_in_domain(T, (int32_t)t))
+            continue;
+        c = cvm__rf_classify(R, (int32_t)t, &key);
+        if (c == 1)
+            rep->unmet_size++;
+        if (c == 3)
+            rep->small_angle++;
+        if (c != 3) {
+            double a = rf_min_angle_deg(T, (int32_t)t);
+            if (a < rep->met_angle_deg)
+                rep->met_angle_deg = a;
+        }
+        if (c == 2 || c == 3 ||
+            (c == 1 && R->sin2_min > 0 && rf_min_angle_deg(T, (int32_t)t) < R->p->min_angle_deg))
+            rep->unmet_angle++;
+    }
+}
+
+cvm_status cvm__refine(cvm__tri2 *T, const cvm__refine_params *p, cvm__refine_report *rep)
+{
+    cvm__refiner R;
+    cvm_status s;
+    memset(rep, 0, sizeof *rep);
+    s = rf_setup(&R, T, p);
+    if (!s && p->march && !cvm__sizing_is_empty(p->sizing))
+        s = cvm__rf_march_segments(&R);
+    if (!s && (s = cvm__rf_queue_encroached_all(&R)) == CVM_OK)
+        s = cvm__rf_split_queued(&R);
+    if (!s && p->algo == CVM_ALGO_FRONTAL)
+        s = cvm__rf_frontal(&R);
+    if (!s)
+        s = cvm__rf_delaunay(&R);
+    if (!cvm_status_is_error(s))
+        rf_report(&R, rep);
+    rep->steiner = R.steiner;
+    rf_teardown(&R);
+    return s;
+}

@@ -1,0 +1,235 @@
+/* sizing.c - the cvm_sizing handle: uniform, point, line and callback sizes combined by their minimum. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "refine_internal.h"
+
+cvm_status cvm_sizing_create(cvm_sizing **out)
+{
+    cvm__ctx proto;
+    cvm_sizing *s;
+    if (!out)
+        return CVM_E_NULL_ARG;
+    *out = NULL;
+    cvm__ctx_init_default(&proto);
+    s = cvm__malloc(&proto, sizeof *s);
+    if (!s)
+        return CVM_E_NOMEM;
+    memset(s, 0, sizeof *s);
+    s->ctx = proto;
+    *out = s;
+    return CVM_OK;
+}
+
+void cvm_sizing_free(cvm_sizing *s)
+{
+    cvm__ctx ctx;
+    if (!s)
+        return;
+    ctx = s->ctx;
+    cvm__free(&ctx, s->pts);
+    cvm__free(&ctx, s->lines);
+    cvm__free(&ctx, s);
+}
+
+const char *cvm_sizing_errmsg(const cvm_sizing *s)
+{
+    if (!s)
+        return "no sizing handle";
+    return s->ctx.errmsg;
+}
+
+/* A size h and growth g of source `what` k (k < 0: no index) must be valid. */
+static cvm_status check_size(cvm_sizing *s, const char *what, long k, double h, double g)
+{
+    char name[64];
+    if (k >= 0)
+        snprintf(name, sizeof name, "%s %ld", what, k);
+    else
+        snprintf(name, sizeof name, "%s", what);
+    if (!isfinite(h))
+        return cvm__error(&s->ctx, CVM_E_INPUT_NONFINITE, CVM_ENT_NONE, k,
+                          "%s has a non-finite size (must be positive and finite)", name);
+    if (!(h > 0))
+        return cvm__error(&s->ctx, CVM_E_ARGUMENT, CVM_ENT_NONE, k,
+                          "%s has size %.17g (must be positive and finite)", name, h);
+    if (!isfinite(g))
+        return cvm__error(&s->ctx, CVM_E_INPUT_NONFINITE, CVM_ENT_NONE, k,
+                          "%s has a non-finite growth (must be finite and >= 0)", name);
+    if (g < 0)
+        return cvm__error(&s->ctx, CVM_E_ARGUMENT, CVM_ENT_NONE, k,
+                          "%s has growth %.17g (must be finite and >= 0)", name, g);
+    return CVM_OK;
+}
+
+static cvm_status check_position(cvm_sizing *s, const char *what, long k, const double *v,
+                                 size_t n)
+{
+    size_t i;
+    for (i = 0; i < n; i++)
+        if (!isfinite(v[i]))
+            return cvm__error(&s->ctx, CVM_E_INPUT_NONFINITE, CVM_ENT_NONE, k,
+                              "%s %ld has a non-finite coordinate", what, k);
+    return CVM_OK;
+}
+
+cvm_status cvm_sizing_set_uniform(cvm_sizing *s, double h)
+{
+    cvm_status st;
+    if (!s)
+        return CVM_E_NULL_ARG;
+    cvm__clear_error(&s->ctx);
+    if ((st = check_size(s, "uniform size", -1, h, 0.0)))
+        return st;
+    s->has_uniform = 1;
+    s->uniform = h;
+    return CVM_OK;
+}
+
+cvm_status cvm_sizing_add_point_source(cvm_sizing *s, double x, double y, double h, double growth)
+{
+    double xy[2];
+    long k;
+    cvm_status st;
+    if (!s)
+        return CVM_E_NULL_ARG;
+    cvm__clear_error(&s->ctx);
+    k = (long)s->npts;
+    xy[0] = x;
+    xy[1] = y;
+    if ((st = check_position(s, "point source", k, xy, 2)) ||
+        (st = check_size(s, "point source", k, h, growth)))
+        return st;
+    if (cvm__grow(&s->ctx, (void **)&s->pts, &s->cap_pts, s->npts + 1, sizeof *s->pts))
+        return cvm__nomem(&s->ctx);
+    s->pts[s->npts].x = x;
+    s->pts[s->npts].y = y;
+    s->pts[s->npts].h = h;
+    s->pts[s->npts].growth = growth;
+    s->npts++;
+    return CVM_OK;
+}
+
+cvm_status cvm_sizing_add_line_source(cvm_sizing *s, double x0, double y0, double x1, double y1,
+                                      double h, double growth)
+{
+    double v[4];
+    long k;
+    cvm__line_source *l;
+    cvm_status st;
+    if (!s)
+        return CVM_E_NULL_ARG;
+    cvm__clear_error(&s->ctx);
+    k = (long)s->nlines;
+    v[0] = x0;
+    v[1] = y0;
+    v[2] = x1;
+    v[3] = y1;
+    if ((st = check_position(s, "line source", k, v, 4)) ||
+        (st = check_size(s, "line source", k, h, growth)))
+        return st;
+    if (cvm__grow(&s->ctx, (void **)&s->lines, &s->cap_lines, s->nlines + 1, sizeof *s->lines))
+        return cvm__nomem(&s->ctx);
+    l = s->lines + s->nlines++;
+    l->x0 = x0;
+    l->y0 = y0;
+    l->x1 = x1;
+    l->y1 = y1;
+    l->h = h;
+    l->growth = growth;
+    return CVM_OK;
+}
+
+cvm_status cvm_sizing_set_callback(cvm_sizing *s, cvm_sizing_fn fn, void *payload)
+{
+    if (!s)
+        return CVM_E_NULL_ARG;
+    cvm__clear_error(&s->ctx);
+    s->fn = fn;
+    s->fn_payload = fn ? payload : NULL;
+    return CVM_OK;
+}
+
+cvm_status cvm_sizing_set_automatic(cvm_sizing *s, double R, double G)
+{
+    if (!s)
+        return CVM_E_NULL_ARG;
+    cvm__clear_error(&s->ctx);
+    (void)R;
+    (void)G;
+    return cvm__error(&s->ctx, CVM_E_UNSUPPORTED, CVM_ENT_NONE, -1,
+                      "automatic (local feature size) sizing is not available in this version; "
+                      "use uniform, point, line or callback sizes");
+}
+
+int cvm__sizing_is_empty(const cvm_sizing *s)
+{
+    return !s || (!s->has_uniform && s->npts == 0 && s->nlines == 0 && !s->fn);
+}
+
+/* Distance from p to the segment a-b (a point when a == b). */
+static double dist_segment(double px, double py, const cvm__line_source *l)
+{
+    double dx = l->x1 - l->x0, dy = l->y1 - l->y0;
+    double len2 = dx * dx + dy * dy, t = 0;
+    double qx, qy;
+    if (len2 > 0) {
+        t = ((px - l->x0) * dx + (py - l->y0) * dy) / len2;
+        t = t < 0 ? 0 : t > 1 ? 1 : t;
+    }
+    qx = l->x0 + t * dx - px;
+    qy = l->y0 + t * dy - py;
+    return sqrt(qx * qx + qy * qy);
+}
+
+cvm_status cvm__sizing_at(const cvm_sizing *s, double x, double y, double *h, cvm__ctx *err)
+{
+    double best = HUGE_VAL;
+    size_t i;
+    if (!s) {
+        *h = best;
+        return CVM_OK;
+    }
+    if (s->has_uniform)
+        best = s->uniform;
+    for (i = 0; i < s->npts; i++) {
+        const cvm__point_source *q = s->pts + i;
+        double d = q->h + q->growth * hypot(x - q->x, y - q->y);
+        if (d < best)
+            best = d;
+    }
+    for (i = 0; i < s->nlines; i++) {
+        const cvm__line_source *l = s->lines + i;
+        double d = l->h + l->growth * dist_segment(x, y, l);
+        if (d < best)
+            best = d;
+    }
+    if (s->fn) {
+        double d = s->fn(s->fn_payload, x, y);
+        if (!isfinite(d))
+            return cvm__error(err, CVM_E_INPUT_NONFINITE, CVM_ENT_NONE, -1,
+                              "the sizing callback returned a non-finite size at (%.17g, %.17g)",
+                              x, y);
+        if (!(d > 0))
+            return cvm__error(err, CVM_E_ARGUMENT, CVM_ENT_NONE, -1,
+                              "the sizing callback returned size %.17g at (%.17g, %.17g) (must "
+                              "be positive and finite)",
+                              d, x, y);
+        if (d < best)
+            best = d;
+    }
+    *h = best;
+    return CVM_OK;
+}
+
+cvm_status cvm_sizing_eval(double *out, cvm_sizing *s, double x, double y)
+{
+    if (!out || !s)
+        return CVM_E_NULL_ARG;
+    cvm__clear_error(&s->ctx);
+    if (!isfinite(x) || !isfinite(y))
+        return cvm__error(&s->ctx, CVM_E_INPUT_NONFINITE, CVM_ENT_NONE, -1,
+                          "position (%.17g, %.17g) is not finite", x, y);
+    return cvm__sizing_at(s, x, y, out, &s->ctx);
+}

@@ -1,0 +1,147 @@
+"""Mesh.refine() and Sizing: bounds met, sizes honoured, errors, limits, callbacks."""
+
+import math
+import warnings
+
+import numpy as np
+import pytest
+
+import cvmesh
+from cvmesh import Mesh, Sizing, Status, capi
+
+pytestmark = pytest.mark.skipif(not hasattr(capi, "cvm_mesh_refine"),
+                                reason="cvm_mesh_refine() is not in this library")
+
+
+def edge_lengths(mesh):
+    p = mesh.points[mesh.edges]
+    return np.hypot(*(p[:, 1] - p[:, 0]).T)
+
+
+@pytest.mark.parametrize("algorithm", ["frontal", "delaunay", cvmesh.Algorithm.FRONTAL])
+def test_refine_meets_the_angle_bound(square_pslg, algorithm):
+    mesh = Mesh.from_pslg(*square_pslg)
+    assert mesh.refine(algorithm=algorithm, min_angle=25, size=0.1) == Status.OK
+    mesh.check()
+    assert mesh.quality().min_angle_deg >= 25 - 1e-9
+    assert mesh.triangle_min_angles().min() >= 25 - 1e-9
+    assert len(mesh.triangles) > 50
+    assert mesh.quality().area == pytest.approx(1.0)
+
+
+def test_refine_without_triangulate_first_and_with_max_area(square_pslg):
+    mesh = Mesh.from_pslg(*square_pslg)
+    mesh.refine(max_area=0.001, min_angle=20)
+    p = mesh.points[mesh.triangles]
+    u, v = p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]
+    areas = 0.5 * np.abs(u[:, 0] * v[:, 1] - u[:, 1] * v[:, 0])
+    assert areas.max() <= 0.001 * (1 + 1e-12)
+
+
+def test_sizing_sources_make_a_graded_mesh(square_pslg):
+    sizing = Sizing(uniform=0.2)
+    sizing.add_point_source(0.0, 0.0, h=0.02, growth=0.3)
+    assert sizing(0.0, 0.0) == pytest.approx(0.02)
+    assert sizing(1.0, 1.0) == pytest.approx(0.2)
+    mesh = Mesh.from_pslg(*square_pslg)
+    mesh.refine(sizing=sizing, min_angle=25)
+    mesh.check()
+    mid = mesh.points[mesh.edges].mean(axis=1)
+    lengths = edge_lengths(mesh)
+    near = np.hypot(*mid.T) < 0.1
+    assert lengths[near].mean() < 0.7 * lengths[~near].mean()
+
+
+def test_callable_size(square_pslg):
+    mesh = Mesh.from_pslg(*square_pslg)
+    mesh.refine(size=lambda x, y: 0.03 + 0.2 * x, min_angle=20)
+    mid = mesh.points[mesh.edges].mean(axis=1)
+    lengths = edge_lengths(mesh)
+    assert lengths[mid[:, 0] < 0.2].mean() < lengths[mid[:, 0] > 0.8].mean()
+
+
+def test_sizing_errors():
+    s = Sizing()
+    assert math.isinf(s(0.5, 0.5))
+    with pytest.raises(cvmesh.ArgumentError, match="uniform size") as info:
+        s.set_uniform(-1)
+    assert info.value.status == Status.E_ARGUMENT
+    with pytest.raises(cvmesh.InputError, match="uniform size"):
+        s.set_uniform(math.nan)
+    s.add_point_source(0, 0, 0.1)
+    with pytest.raises(cvmesh.ArgumentError, match="point source 1"):
+        s.add_point_source(0, 0, 0.1, growth=-1)
+    with pytest.raises(cvmesh.ArgumentError, match="line source 0"):
+        s.add_line_source(0, 0, 1, 1, h=0)
+    with pytest.raises(cvmesh.UnsupportedError):
+        s.set_automatic(1.0, 1.0)
+    with pytest.raises(TypeError):
+        s.set_callback(42)
+    s.close()
+    with pytest.raises(cvmesh.StateError):
+        s.set_uniform(1)
+
+
+def test_sizing_callback_errors(square_pslg):
+    class Boom(Exception):
+        pass
+
+    def boom(x, y):
+        raise Boom("sizing says no")
+
+    mesh = Mesh.from_pslg(*square_pslg)
+    with pytest.raises(Boom, match="sizing says no"):
+        mesh.refine(size=boom)
+    mesh.check()                                  # still a valid mesh
+    with pytest.raises(cvmesh.ArgumentError, match="sizing callback"):
+        mesh.refine(size=lambda x, y: -1.0)
+    with pytest.raises(cvmesh.InputError, match="sizing callback"):
+        mesh.refine(size=lambda x, y: math.inf)
+    with pytest.raises(TypeError):
+        mesh.refine(size=lambda x, y: "big")
+
+
+def test_refine_argument_errors(square_pslg):
+    mesh = Mesh.from_pslg(*square_pslg)
+    with pytest.raises(cvmesh.UnsupportedError, match="AFLR"):
+        mesh.refine(algorithm="aflr")
+    with pytest.raises(cvmesh.ArgumentError, match="known: delaunay, frontal"):
+        mesh.refine(algorithm="bogus")
+    with pytest.raises(ValueError, match="size or sizing"):
+        mesh.refine(size=0.1, sizing=Sizing(uniform=0.1))
+    with pytest.raises(cvmesh.OptionError):
+        mesh.refine(min_angle=60)
+
+
+def test_limits_and_cancellation(square_pslg):
+    mesh = Mesh.from_pslg(*square_pslg)
+    with pytest.warns(cvmesh.IncompleteWarning, match="STEINER_LIMIT"):
+        status = mesh.refine(size=0.01, max_steiner=10)
+    assert status == Status.INCOMPLETE_STEINER_LIMIT
+    mesh.check()
+    mesh2 = Mesh.from_pslg(*square_pslg)
+    mesh2.triangulate()
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")            # a requested stop is not warned about
+        status = mesh2.refine(size=0.005, progress=lambda stage, f: True, every=10)
+    assert status == Status.INCOMPLETE_CANCELLED
+    mesh2.check()
+
+
+def test_refine_progress_reports_the_stage(square_pslg):
+    stages = set()
+    mesh = Mesh.from_pslg(*square_pslg)
+    mesh.triangulate()
+    mesh.refine(size=0.01, progress=lambda stage, f: stages.add(stage), every=50)
+    assert cvmesh.Stage.REFINE in stages
+
+
+def test_refine_markers_on_boundary_steiner_points(square_pslg):
+    pts, segs = square_pslg
+    mesh = Mesh.from_pslg(pts, segs, markers=[1, 1, 1, 1], segment_markers=[5, 5, 5, 5])
+    mesh.refine(size=0.1)
+    x, y = mesh.points.T
+    on_boundary = (x == 0) | (x == 1) | (y == 0) | (y == 1)
+    marks = mesh.point_markers
+    assert (marks[~on_boundary] == 0).all()
+    assert set(marks[on_boundary][4:].tolist()) <= {5}

@@ -1,0 +1,168 @@
+/* test_writer.c - atomic output files: whole file or nothing, in every failure. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "io/io_tests.h"
+
+static cvmtest_alloc g_a;
+static cvm__ctx g_ctx;
+static char *g_dir;
+
+static void setup(void)
+{
+    cvmtest_alloc_init(&g_a, 0, 0);
+    iotest_ctx(&g_ctx, &g_a);
+    g_dir = iotest_tmpdir();
+}
+
+static void teardown(void)
+{
+    iotest_rmdir(g_dir);
+    free(g_dir);
+}
+
+static void in_dir(char *buf, size_t len, const char *name)
+{
+    snprintf(buf, len, "%s/%s", g_dir, name);
+}
+
+static cvm_status write_text(const char *path, const char *text, int commit)
+{
+    cvm__writer *w;
+    cvm_status s = cvm__writer_open(&w, &g_ctx, path);
+    if (s)
+        return s;
+    cvm__writer_puts(w, text);
+    cvm__writer_printf(w, "%d", 42);
+    cvm__writer_double(w, 0.1);
+    if (!commit) {
+        cvm__writer_discard(w);
+        return CVM_OK;
+    }
+    return cvm__writer_commit(w);
+}
+
+START_TEST(commit_leaves_exactly_the_file)
+{
+    char path[4096], *text;
+    in_dir(path, sizeof path, "out.txt");
+    ck_assert_int_eq(write_text(path, "hello ", 1), CVM_OK);
+    text = iotest_slurp(path, NULL);
+    ck_assert_str_eq(text, "hello 420.1");
+    free(text);
+    ck_assert_int_eq(iotest_count_entries(g_dir), 1);
+    ck_assert_int_eq((int)g_a.live_blocks, 0);
+}
+END_TEST
+
+START_TEST(discard_leaves_nothing_and_keeps_old_file)
+{
+    char path[4096], *text;
+    in_dir(path, sizeof path, "out.txt");
+    ck_assert_int_eq(write_text(path, "new", 0), CVM_OK);
+    ck_assert_int_eq(iotest_count_entries(g_dir), 0);
+    ck_assert_int_eq(write_text(path, "old ", 1), CVM_OK);
+    ck_assert_int_eq(write_text(path, "new", 0), CVM_OK);
+    text = iotest_slurp(path, NULL);
+    ck_assert_str_eq(text, "old 420.1");
+    free(text);
+    ck_assert_int_eq(iotest_count_entries(g_dir), 1);
+    ck_assert_int_eq((int)g_a.live_blocks, 0);
+}
+END_TEST
+
+START_TEST(missing_directory_is_io_open_and_creates_nothing)
+{
+    char path[4096];
+    in_dir(path, sizeof path, "no/such/dir/out.txt");
+    ck_assert_int_eq(write_text(path, "x", 1), CVM_E_IO_OPEN);
+    ck_assert_ptr_nonnull(strstr(g_ctx.errmsg, "cannot create"));
+    ck_assert_ptr_nonnull(strstr(g_ctx.errmsg, "no/such/dir/out.txt"));
+    ck_assert_int_eq(iotest_count_entries(g_dir), 0);
+    ck_assert_int_eq((int)g_a.live_blocks, 0);
+}
+END_TEST
+
+START_TEST(full_device_is_io_write_and_leaves_no_temporary)
+{
+    char path[4096];
+    struct stat st;
+    if (stat("/dev/full", &st) != 0)
+        return; /* no /dev/full on this system */
+    in_dir(path, sizeof path, "full.vtu");
+    ck_assert_int_eq(symlink("/dev/full", path), 0);
+    ck_assert_int_eq(write_text(path, "data that cannot fit", 1), CVM_E_IO_WRITE);
+    ck_assert_ptr_nonnull(strstr(g_ctx.errmsg, "cannot write"));
+    ck_assert_ptr_nonnull(strstr(g_ctx.errmsg, "full.vtu"));
+    ck_assert_int_eq(iotest_count_entries(g_dir), 1); /* the link only */
+    ck_assert_int_eq(lstat(path, &st), 0);
+    ck_assert(S_ISLNK(st.st_mode));
+    ck_assert_int_eq((int)g_a.live_blocks, 0);
+}
+END_TEST
+
+START_TEST(symbolic_link_keeps_pointing_at_the_replaced_file)
+{
+    char path[4096], target[4096], *text;
+    struct stat st;
+    in_dir(target, sizeof target, "real.txt");
+    in_dir(path, sizeof path, "link.txt");
+    ck_assert_int_eq(write_text(target, "old ", 1), CVM_OK);
+    ck_assert_int_eq(symlink("real.txt", path), 0);
+    ck_assert_int_eq(write_text(path, "new ", 1), CVM_OK);
+    ck_assert_int_eq(lstat(path, &st), 0);
+    ck_assert(S_ISLNK(st.st_mode));
+    text = iotest_slurp(target, NULL);
+    ck_assert_str_eq(text, "new 420.1");
+    free(text);
+    ck_assert_int_eq(iotest_count_entries(g_dir), 2);
+}
+END_TEST
+
+START_TEST(directory_target_is_io_open)
+{
+    char path[4096];
+    in_dir(path, sizeof path, "sub.txt");
+    ck_assert_int_eq(mkdir(path, 0700), 0);
+    ck_assert_int_eq(write_text(path, "x", 1), CVM_E_IO_OPEN);
+    ck_assert_int_eq(iotest_count_entries(g_dir), 1);
+    rmdir(path);
+}
+END_TEST
+
+START_TEST(writer_open_runs_out_of_memory_cleanly)
+{
+    char path[4096];
+    long k;
+    in_dir(path, sizeof path, "oom.txt");
+    for (k = 1;; k++) {
+        cvm_status s;
+        cvmtest_alloc_init(&g_a, k, 0);
+        s = write_text(path, "x", 1);
+        ck_assert_int_eq((int)g_a.live_blocks, 0);
+        if (s == CVM_OK)
+            break;
+        ck_assert_int_eq(s, CVM_E_NOMEM);
+        ck_assert_int_eq(iotest_count_entries(g_dir), 0);
+        ck_assert(k < 100);
+    }
+    ck_assert_int_eq(iotest_count_entries(g_dir), 1);
+}
+END_TEST
+
+TCase *io_writer_tcase(void)
+{
+    TCase *tc = tcase_create("writer");
+    tcase_add_checked_fixture(tc, setup, teardown);
+    tcase_add_test(tc, commit_leaves_exactly_the_file);
+    tcase_add_test(tc, discard_leaves_nothing_and_keeps_old_file);
+    tcase_add_test(tc, missing_directory_is_io_open_and_creates_nothing);
+    tcase_add_test(tc, full_device_is_io_write_and_leaves_no_temporary);
+    tcase_add_test(tc, symbolic_link_keeps_pointing_at_the_replaced_file);
+    tcase_add_test(tc, directory_target_is_io_open);
+    tcase_add_test(tc, writer_open_runs_out_of_memory_cleanly);
+    return tc;
+}
