@@ -287,9 +287,12 @@ $(AMALG)/cvmesh.c: $(LIB_SRC) $(wildcard lib/*/*.h) .ci/amalgamate.sh
 	bash .ci/amalgamate.sh $@ $(LIB_SRC)
 	@echo "amalgamation: wrote $@ ($$(wc -l < $@) lines) and $(AMALG)/cvmesh.h"
 
-# The amalgamation compiles alone, warning-free, and the unit tests link against it.
+# The amalgamation compiles alone, warning-free, exports the same symbols, and
+# the unit tests pass against it.
 check-amalgamation: amalgamation $(TEST_OBJ)
 	$(CC) $(ALL_CFLAGS) -I$(AMALG) -c $(AMALG)/cvmesh.c -o $(AMALG)/cvmesh.o
+	$(CC) -shared $(SANFLAGS) -o $(AMALG)/libcvmesh_amalg.so $(AMALG)/cvmesh.o $(LDLIBS_LIB)
+	sh .ci/check_symbols.sh $(AMALG)/libcvmesh_amalg.so .ci/exported_symbols.txt
 	$(CC) $(SANFLAGS) -pthread -o $(AMALG)/unit_tests $(TEST_OBJ) $(AMALG)/cvmesh.o \
 	  $(CHECK_LIBS) $(LDLIBS_LIB)
 	$(TEST_ENV) $(AMALG)/unit_tests

@@ -11,7 +11,8 @@
  *                                cvm_mesh_set_regions(); or cvm_mesh_read(m, "a.poly").
  * 3. Choose options:             cvm_mesh_set_option(m, CVM_OPT_..., value).
  * 4. Mesh:                       cvm_mesh_triangulate(m) (Delaunay or constrained
- *                                Delaunay), then cvm_mesh_insert_points() to add points.
+ *                                Delaunay), then cvm_mesh_insert_points() to add points,
+ *                                or cvm_mesh_refine(m, sizing, algo) for a quality mesh.
  * 5. Read the output:            cvm_mesh_count(&n, m, CVM_ENT_TRIANGLE), then
  *                                cvm_mesh_copy_cells(buf, len, m, CVM_ENT_TRIANGLE),
  *                                or write it with cvm_mesh_write(m, "out.vtu").
@@ -325,6 +326,7 @@ CVM_API cvm_status cvm_mesh_set_regions(cvm_mesh *m, const double *r, size_t cou
  *         CVM_E_NULL_ARG, CVM_E_IO_OPEN, CVM_E_IO_READ
  *         CVM_E_IO_FORMAT        malformed content (message gives file:line)
  *         CVM_E_INPUT_NONFINITE  a NaN/Inf coordinate (message gives file:line)
+ *         CVM_E_TOO_LARGE        a count beyond INT32_MAX/4 (message gives file:line)
  *         CVM_E_UNSUPPORTED      unknown extension
  *         CVM_E_NOMEM
  * @since 0.1
@@ -675,6 +677,9 @@ typedef enum cvm_algorithm {
  * The result stays a constrained Delaunay triangulation. New vertices get the marker
  * of the segment they lie on (else 0) and attributes interpolated along it (else 0).
  * The report (CVM_MEASURE_REFINE_*) says what was asked and what was met.
+ * Limitation (0.1): a segment on the convex hull that is not axis-parallel is
+ * left unsplit where no rounded split point keeps the hull exactly convex; the
+ * triangles this leaves below the bounds are counted in the report.
  *
  * @param m       mesh handle, triangulated (cvm_mesh_triangulate()); not NULL.
  * @param sizing  target sizes; may be NULL (angle and area bounds only). Read only
@@ -716,6 +721,9 @@ CVM_API cvm_status cvm_mesh_set_front_markers(cvm_mesh *m, const int32_t *marker
 /* ------------------------------------------------------------------------ */
 /* Output                                                                    */
 /* ------------------------------------------------------------------------ */
+/* The count, copy and view functions take a const handle: they leave the last
+ * error and its message alone (the status says what failed). A dst of NULL is
+ * accepted with dst_len 0. Before cvm_mesh_triangulate() output counts are 0. */
 
 /**
  * Number of entities of a kind: vertices, triangles, edges, segments (of the
@@ -747,15 +755,17 @@ CVM_API cvm_status cvm_mesh_copy_cells(cvm_index *dst, size_t dst_len, const cvm
 /**
  * Copy the neighbours of each triangle: 3 per triangle, neighbour k lies
  * across the edge opposite vertex k, -1 on the domain boundary.
- * @return CVM_OK, CVM_E_NULL_ARG, CVM_E_BUFFER_TOO_SMALL
+ * @return CVM_OK, CVM_E_NULL_ARG, CVM_E_BUFFER_TOO_SMALL, CVM_E_NOMEM
  * @since 0.1
  */
 CVM_API cvm_status cvm_mesh_copy_neighbors(cvm_index *dst, size_t dst_len, const cvm_mesh *m);
 
 /**
  * Copy integer markers: CVM_ENT_VERTEX (input marker, or the marker of the
- * segment a Steiner point lies on, else 0), CVM_ENT_SEGMENT (segment marker).
- * @return CVM_OK, CVM_E_NULL_ARG, CVM_E_ARGUMENT, CVM_E_BUFFER_TOO_SMALL
+ * segment a Steiner point lies on, else 0), CVM_ENT_SEGMENT (marker of the
+ * input segment each output segment lies on, in CVM_ENT_SEGMENT order; 1 when
+ * no segment markers were set, as Triangle's default boundary marker).
+ * @return CVM_OK, CVM_E_NULL_ARG, CVM_E_ARGUMENT, CVM_E_BUFFER_TOO_SMALL, CVM_E_NOMEM
  * @since 0.1
  */
 CVM_API cvm_status cvm_mesh_copy_markers(int32_t *dst, size_t dst_len, const cvm_mesh *m,
@@ -819,9 +829,10 @@ typedef enum cvm_measure {
     CVM_MEASURE_REGULAR_PCT = 3,        /**< % of angles in [55, 65] degrees */
     CVM_MEASURE_OBTUSE_PCT = 4,         /**< % of triangles not containing their circumcentre
                                              (an angle > 90 degrees: not well-centred) */
-    CVM_MEASURE_DEGREE6_PCT = 5,        /**< % of interior vertices of degree 6 */
+    CVM_MEASURE_DEGREE6_PCT = 5,        /**< % of interior vertices of degree 6 (0 without
+                                             interior vertices) */
     CVM_MEASURE_MIN_DUAL_EDGE_RATIO = 6,/**< smallest Voronoi edge length over its primal edge
-                                             length, over interior edges */
+                                             length, over interior edges (0 without any) */
     CVM_MEASURE_MIN_EDGE = 7,           /**< shortest edge length */
     CVM_MEASURE_MAX_EDGE = 8,           /**< longest edge length */
     CVM_MEASURE_AREA = 9,               /**< total area */

@@ -2,7 +2,7 @@
  * output.c - counts, copies and views of a mesh's output and input arrays.
  *
  * These functions take a const handle: they neither change the last error
- * nor its message, so several may run at once on one handle. Output order:
+ * nor its message (the status says what failed). Output order:
  * triangles in slot order of the kernel, edges and segments sorted by
  * (lower, higher) vertex id (output_internal.h). A NULL dst is accepted only
  * with dst_len 0 (then any non-empty copy reports CVM_E_BUFFER_TOO_SMALL).

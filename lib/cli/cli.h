@@ -15,7 +15,8 @@
 
 /* Subcommands, as bits: an option flag lists the subcommands that take it. */
 enum {
-    CLI_CMD_TRIANGULATE = 1u << 0
+    CLI_CMD_TRIANGULATE = 1u << 0,
+    CLI_CMD_REFINE = 1u << 1
 };
 
 /* One flag that sets a library option (flags.c holds the one table). */
@@ -56,5 +57,7 @@ double cli_now(void);
 /* Subcommands: argv[0] is the subcommand's name. */
 int cli_triangulate(int argc, char **argv);
 void cli_triangulate_help(FILE *f);
+int cli_refine(int argc, char **argv);
+void cli_refine_help(FILE *f);
 
 #endif

@@ -119,6 +119,26 @@ static int on_progress(void *payload, cvm_stage stage, double fraction)
     return 0;
 }
 
+/* Remove the files written for out (PREFIX.node also wrote .ele and .edge). */
+static void remove_output(const char *out)
+{
+    static const char *const side[] = {".node", ".ele", ".edge"};
+    char buf[4096];
+    size_t n, k;
+    if (!out)
+        return;
+    n = strlen(out);
+    if (!has_ext(out, ".node") || n - 5 + 6 > sizeof buf) {
+        remove(out);
+        return;
+    }
+    for (k = 0; k < 3; k++) {
+        memcpy(buf, out, n - 5);
+        strcpy(buf + n - 5, side[k]);
+        remove(buf);
+    }
+}
+
 static int fail(cvm_mesh *m, const char *prefix)
 {
     if (prefix)
@@ -159,8 +179,10 @@ static int run(const args *a)
         fprintf(stderr, "cvmesh: note: %s: %lu duplicate points merged\n", a->in, (unsigned long)ndup);
     if (a->out && cvm_mesh_write(m, a->out) != CVM_OK)
         return fail(m, NULL);
-    if (a->svg && cvm_mesh_write(m, a->svg) != CVM_OK)
+    if (a->svg && cvm_mesh_write(m, a->svg) != CVM_OK) {
+        remove_output(a->out); /* all outputs or none */
         return fail(m, NULL);
+    }
     t_write = cli_now();
     if (a->quality && (rc = cli_print_quality(stdout, m))) {
         cvm_mesh_free(m);

@@ -9,17 +9,24 @@
 #include "cli.h"
 
 #define TRI CLI_CMD_TRIANGULATE
+#define REF CLI_CMD_REFINE
 
 static const cli_option_flag k_flags[] = {
-    {"--keep-hull", NULL, CVM_OPT_KEEP_CONVEX_HULL, 1, TRI,
+    {"--keep-hull", NULL, CVM_OPT_KEEP_CONVEX_HULL, 1, TRI | REF,
      "keep every triangle of the convex hull (holes are still removed)"},
-    {"--no-split-intersections", NULL, CVM_OPT_SPLIT_INTERSECTIONS, 0, TRI,
+    {"--no-split-intersections", NULL, CVM_OPT_SPLIT_INTERSECTIONS, 0, TRI | REF,
      "fail on crossing segments instead of splitting them"},
-    {"--reject-duplicates", NULL, CVM_OPT_REJECT_DUPLICATES, 1, TRI,
+    {"--reject-duplicates", NULL, CVM_OPT_REJECT_DUPLICATES, 1, TRI | REF,
      "fail on duplicate points instead of merging them"},
-    {"--seed", "S", CVM_OPT_SEED, 0, TRI, "seed of the random insertion order"},
-    {"--threads", "N", CVM_OPT_THREADS, 0, TRI, "threads for parallel stages (0: OpenMP default)"},
-    {"--time-limit", "SECONDS", CVM_OPT_TIME_LIMIT_S, 0, TRI, "give up after this time (0: none)"},
+    {"--seed", "S", CVM_OPT_SEED, 0, TRI | REF, "seed of the random insertion order"},
+    {"--threads", "N", CVM_OPT_THREADS, 0, TRI | REF, "threads for parallel stages (0: OpenMP default)"},
+    {"--time-limit", "SECONDS", CVM_OPT_TIME_LIMIT_S, 0, TRI | REF, "give up after this time (0: none)"},
+    {"--min-angle", "DEG", CVM_OPT_MIN_ANGLE_DEG, 0, REF, "smallest angle wanted (default 30)"},
+    {"--max-area", "A", CVM_OPT_MAX_AREA, 0, REF, "largest triangle area (0: none)"},
+    {"--max-steiner", "N", CVM_OPT_MAX_STEINER, 0, REF, "stop after adding N points (0: no limit)"},
+    {"--lens", NULL, CVM_OPT_ENCROACH_LENS, 1, REF, "diametral lenses instead of circles"},
+    {"--no-march", NULL, CVM_OPT_MARCH_SEGMENTS, 0, REF,
+     "split segments only when encroached (no marching with the size)"},
 };
 
 #define NFLAGS (sizeof k_flags / sizeof k_flags[0])

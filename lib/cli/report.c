@@ -55,11 +55,22 @@ int cli_print_quality(FILE *f, cvm_mesh *m)
                   {CVM_ENT_EDGE, "edges"},
                   {CVM_ENT_SEGMENT, "segments"},
                   {CVM_ENT_DUPLICATE, "duplicates merged"}};
-    double angle[18], degree[16], v;
-    size_t i, n;
+    double angle[18], degree[16], v, n_interior = 0;
+    size_t i, n, nt = 0, ne = 0;
+    if (cvm_mesh_copy_histogram(angle, 18, m, CVM_HIST_ANGLE_DEG) != CVM_OK ||
+        cvm_mesh_copy_histogram(degree, 16, m, CVM_HIST_DEGREE) != CVM_OK) {
+        fprintf(stderr, "cvmesh: quality: %s\n", cvm_mesh_errmsg(m));
+        return CLI_EXIT_FAIL;
+    }
+    for (i = 0; i < 16; i++)
+        n_interior += degree[i];
     for (i = 0; i < sizeof counts / sizeof counts[0]; i++) {
         if (cvm_mesh_count(&n, m, counts[i].kind) != CVM_OK)
             n = 0;
+        if (counts[i].kind == CVM_ENT_TRIANGLE)
+            nt = n;
+        if (counts[i].kind == CVM_ENT_EDGE)
+            ne = n;
         fprintf(f, "%-28s %lu\n", counts[i].label, (unsigned long)n);
     }
     for (i = 0; i < sizeof rows / sizeof rows[0]; i++) {
@@ -68,17 +79,19 @@ int cli_print_quality(FILE *f, cvm_mesh *m)
             return CLI_EXIT_FAIL;
         }
         fprintf(f, "%-28s ", rows[i].label);
-        fprintf(f, rows[i].fmt, v);
+        /* interior edges = 3T - E; without them (or interior vertices) a measure is undefined */
+        if ((rows[i].which == CVM_MEASURE_DEGREE6_PCT && n_interior == 0) ||
+            (rows[i].which == CVM_MEASURE_MIN_DUAL_EDGE_RATIO && 3 * nt <= ne))
+            fprintf(f, "n/a");
+        else
+            fprintf(f, rows[i].fmt, v);
         fputc('\n', f);
-    }
-    if (cvm_mesh_copy_histogram(angle, 18, m, CVM_HIST_ANGLE_DEG) != CVM_OK ||
-        cvm_mesh_copy_histogram(degree, 16, m, CVM_HIST_DEGREE) != CVM_OK) {
-        fprintf(stderr, "cvmesh: quality: %s\n", cvm_mesh_errmsg(m));
-        return CLI_EXIT_FAIL;
     }
     fprintf(f, "angle histogram (degrees: angles)\n");
     bars(f, angle, 18, angle_labels);
     fprintf(f, "degree histogram (degree: interior vertices)\n");
+    if (n_interior == 0)
+        fprintf(f, "  (no interior vertices)\n");
     bars(f, degree, 16, degree_labels);
     return CLI_EXIT_OK;
 }

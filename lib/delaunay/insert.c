@@ -36,6 +36,19 @@ static cvm_status push_int(cvm__tri2 *T, int32_t **arr, size_t *cap, size_t n, i
     return CVM_OK;
 }
 
+/* t is a ghost triangle whose hull edge is constrained. The cavity enters such
+ * a ghost only to split that edge; it must not spread to the neighbouring
+ * ghosts, even where rounding left the hull a few ulps short of convex. */
+static int behind_constrained_hull_edge(const cvm__tri2 *T, int32_t t)
+{
+    const int32_t *v = T->tv + 3 * (size_t)t;
+    int g;
+    if (!T->te)
+        return 0;
+    g = v[0] == CVM__GHOST ? 0 : v[1] == CVM__GHOST ? 1 : v[2] == CVM__GHOST ? 2 : -1;
+    return g >= 0 && T->te[3 * (size_t)t + g] >= 0;
+}
+
 /* Unmark the cavity after a failure or a rejection. */
 static void unmark(cvm__tri2 *T, size_t ncav)
 {
@@ -71,6 +84,8 @@ static cvm_status grow_cavity(cvm__tri2 *T, int32_t p, int32_t t0, size_t *ncav_
                 continue;
             if (seg >= 0)
                 cross = (t == force_edge_t && j == force_edge_j) || on_edge(T, a, b, pp);
+            else if (behind_constrained_hull_edge(T, t))
+                cross = 0; /* v splits that hull edge: it belongs to no other ghost */
             else
                 cross = cvm__tri2_conflict(T, nb, p) > 0;
             if (cross) {

@@ -4,25 +4,16 @@
 #include "geom/exact_det.h"
 #include "geom/expansion.h"
 
-/* h[0..3] = px*qy - qx*py exactly. */
-static void exact_minor2(const double *p, const double *q, double *h)
-{
-    double l1, l0, r1, r0;
-    cvm__two_product(p[0], q[1], &l1, &l0);
-    cvm__two_product(q[0], p[1], &r1, &r0);
-    cvm__two_two_diff(l1, l0, r1, r0, h);
-}
-
-/* Expanding along the column of ones: m(p,q) + m(q,r) + m(r,p). */
+/* Expanding along the column of ones: m(p,q) + m(q,r) + m(r,p), m(p,q) = px qy - qx py. */
 int cvm__orient2d_raw(const double *p, const double *q, const double *r, double *h)
 {
     double pq[4], qr[4], rp[4], s[8];
-    int n;
-    exact_minor2(p, q, pq);
-    exact_minor2(q, r, qr);
-    exact_minor2(r, p, rp);
-    n = cvm__fast_expansion_sum_zeroelim(4, pq, 4, qr, s);
-    return cvm__fast_expansion_sum_zeroelim(n, s, 4, rp, h);
+    int npq, nqr, nrp, n;
+    npq = cvm__cross_zeroelim(p[0], q[1], q[0], p[1], pq);
+    nqr = cvm__cross_zeroelim(q[0], r[1], r[0], q[1], qr);
+    nrp = cvm__cross_zeroelim(r[0], p[1], p[0], r[1], rp);
+    n = cvm__fast_expansion_sum_zeroelim(npq, pq, nqr, qr, s);
+    return cvm__fast_expansion_sum_zeroelim(n, s, nrp, rp, h);
 }
 
 /* Expanding along z: pz T(q,r,s) - qz T(p,r,s) + rz T(p,q,s) - sz T(p,q,r),

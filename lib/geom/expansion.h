@@ -33,6 +33,13 @@
 #define CVM__NOINLINE
 #endif
 
+/* max(|a|, m) for finite a: the exact stages' range checks (no libm call). */
+static inline double cvm__maxabs(double m, double a)
+{
+    double b = fabs(a);
+    return b > m ? b : m;
+}
+
 /* x + y == a + b exactly, x = fl(a + b); requires |a| >= |b| (or a == 0). */
 static inline void cvm__fast_two_sum(double a, double b, double *x, double *y)
 {
@@ -123,6 +130,30 @@ static inline void cvm__two_two_diff(double a1, double a0, double b1, double b0,
     cvm__two_diff(k, b1, &i, &x[1]);
     cvm__two_sum(j, i, &z, &x[2]);
     x[3] = z;
+}
+
+/* h = a*d - b*c exactly as an expansion without zero components (1 to 4 of
+ * them); returns the length. The 2x2 minor every determinant is built from. */
+static inline int cvm__cross_zeroelim(double a, double d, double b, double c, double *h)
+{
+    double l1, l0, r1, r0, x[4];
+    int i, n = 0;
+    cvm__two_product(a, d, &l1, &l0);
+    cvm__two_product(b, c, &r1, &r0);
+    if (l0 == 0.0 && r0 == 0.0) { /* both products exact: common for grid-like input */
+        cvm__two_diff(l1, r1, &x[1], &x[0]);
+        if (x[0] != 0.0)
+            h[n++] = x[0];
+        h[n++] = x[1];
+        return n;
+    }
+    cvm__two_two_diff(l1, l0, r1, r0, x);
+    for (i = 0; i < 4; i++)
+        if (x[i] != 0.0)
+            h[n++] = x[i];
+    if (n == 0)
+        h[n++] = 0.0;
+    return n;
 }
 
 /* h = e + b; h has room for elen + 1 components; returns the length of h. */

@@ -29,11 +29,22 @@ double cvm__orient2d(const double *a, const double *b, const double *c);
  * cocircular. */
 double cvm__incircle(const double *a, const double *b, const double *c, const double *d);
 
-/* incircle with symbolic perturbation: each point i is lifted by eps^(f(i)),
- * where a larger index is lifted more (so the point of largest index among
- * exactly cocircular ones counts as outside). Precondition: a, b, c strictly
- * counter-clockwise, and the four points pairwise distinct. Returns +1 (d
- * inside) or -1 (outside), never 0. ia..id are the points' indices, distinct. */
+/* incircle with symbolic perturbation (Simulation of Simplicity). When the
+ * exact determinant is 0, every point's lifted coordinate z = x^2 + y^2 is
+ * raised by an infinitesimal eps_i, where eps_i >> eps_j whenever i > j (the
+ * LARGEST index is lifted most). The determinant is linear in each z, so the
+ * answer is the sign of the first nonzero derivative, taken in order of
+ * decreasing index:
+ *   dDet/dz_a = orient2d(d, b, c)    dDet/dz_b = orient2d(a, d, c)
+ *   dDet/dz_c = orient2d(a, b, d)    dDet/dz_d = -orient2d(a, b, c)
+ * So among exactly cocircular points the one of largest index counts as
+ * outside the circle of the others. This is one global perturbation: the
+ * result is alternating in the four (point, index) pairs, whatever the
+ * orientation of a, b, c. Precondition: a, b, c strictly counter-clockwise
+ * (for the "+1 means inside" reading) and the four points pairwise distinct;
+ * then some derivative is nonzero. Returns +1 (d inside) or -1 (outside),
+ * never 0 (-1 if all four points are collinear, outside the precondition).
+ * ia..id are the points' indices, pairwise distinct. */
 int cvm__incircle_sos(const double *a, const double *b, const double *c, const double *d,
                       int64_t ia, int64_t ib, int64_t ic, int64_t id);
 
@@ -45,7 +56,8 @@ int cvm__incircle_sos(const double *a, const double *b, const double *c, const d
 double cvm__power2d(const double *a, const double *b, const double *c, const double *d,
                     double wa, double wb, double wc, double wd);
 
-/* power2d with the same symbolic perturbation as incircle_sos. */
+/* power2d with the same symbolic perturbation as incircle_sos, applied to the
+ * lifted coordinate z = x^2 + y^2 - w (same derivatives, same order). */
 int cvm__power2d_sos(const double *a, const double *b, const double *c, const double *d,
                      double wa, double wb, double wc, double wd,
                      int64_t ia, int64_t ib, int64_t ic, int64_t id);
@@ -90,7 +102,7 @@ static inline double cvm__orient2d_inline(const double *a, const double *b, cons
     double detleft = acx * bcy, detright = acy * bcx;
     double det = detleft - detright;
     double errbound = cvm__o2d_errbound_a * (fabs(detleft) + fabs(detright)) + cvm__filter_floor;
-    if (det > errbound || -det > errbound)
+    if (fabs(det) > errbound)
         return det;
     return cvm__orient2d_adapt(a, b, c);
 }
@@ -110,7 +122,7 @@ static inline double cvm__incircle_inline(const double *a, const double *b, cons
                        + (fabs(cdxady) + fabs(adxcdy)) * blift
                        + (fabs(adxbdy) + fabs(bdxady)) * clift;
     double errbound = cvm__icc_errbound_a * permanent + cvm__filter_floor;
-    if (det > errbound || -det > errbound)
+    if (fabs(det) > errbound)
         return det;
     return cvm__incircle_adapt(a, b, c, d);
 }

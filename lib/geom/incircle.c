@@ -14,28 +14,79 @@ double cvm__incircle(const double *a, const double *b, const double *c, const do
     return cvm__incircle_inline(a, b, c, d);
 }
 
-/* out = (px^2 + py^2) * m exactly, m a 4-component minor; returns the length (<= 32). */
-static int incircle_lift_minor(const double *m, double px, double py, double *out)
+/* out = (px^2 + py^2) * m exactly, m a minor of mn <= 4 components; returns
+ * the length (<= 32). The lift is formed first (at most 4 components, usually
+ * 1 for integer-like input), then each of its components scales m. */
+static int incircle_lift_minor(int mn, const double *m, double px, double py, double *out)
 {
-    double t8[8], xx[16], yy[16];
-    int n8, nx, ny;
-    n8 = cvm__scale_expansion_zeroelim(4, m, px, t8);
-    nx = cvm__scale_expansion_zeroelim(n8, t8, px, xx);
-    n8 = cvm__scale_expansion_zeroelim(4, m, py, t8);
-    ny = cvm__scale_expansion_zeroelim(n8, t8, py, yy);
-    return cvm__fast_expansion_sum_zeroelim(nx, xx, ny, yy, out);
-}
-
-/* out[0..3] = px*qy - qx*py exactly. */
-static void incircle_minor(double px, double py, double qx, double qy, double *out)
-{
-    double l1, l0, r1, r0;
-    cvm__two_product(px, qy, &l1, &l0);
-    cvm__two_product(qx, py, &r1, &r0);
-    cvm__two_two_diff(l1, l0, r1, r0, out);
+    double x1, x0, y1, y0, lift[4], t[8], acc[2][32];
+    int i, ln = 0, tn, n, cur = 0;
+    cvm__two_product(px, px, &x1, &x0);
+    cvm__two_product(py, py, &y1, &y0);
+    if (x0 == 0.0 && y0 == 0.0) { /* exact squares */
+        cvm__two_sum(x1, y1, &lift[1], &lift[0]);
+        ln = 2;
+        if (lift[0] == 0.0)
+            lift[0] = lift[1], ln = 1;
+    } else {
+        double e[2], f[2];
+        e[0] = x0, e[1] = x1, f[0] = y0, f[1] = y1;
+        ln = cvm__fast_expansion_sum_zeroelim(2, e, 2, f, lift);
+    }
+    n = cvm__scale_expansion_zeroelim(mn, m, lift[0], acc[0]);
+    for (i = 1; i < ln; i++) {
+        tn = cvm__scale_expansion_zeroelim(mn, m, lift[i], t);
+        n = cvm__fast_expansion_sum_zeroelim(n, acc[cur], tn, t, acc[1 - cur]);
+        cur = 1 - cur;
+    }
+    for (i = 0; i < n; i++)
+        out[i] = acc[cur][i];
+    return n;
 }
 
 /* Stages B, C, then the exact expansion, on inputs already in the safe range. */
+/*
+ * Exactness certificate for lattice-like input, the usual source of exact
+ * cocircular ties: when the six differences were computed exactly and are,
+ * after one common power-of-two scaling, integers of magnitude at most 2^12,
+ * every lift and minor is below 2^25, each lift times minor below 2^50, and
+ * every product in the plain formula is exact in double, so that formula is
+ * the exact determinant. Returns 1 and *det_out, or 0 when not certified.
+ */
+static int incircle_small_integer(const double *a, const double *b, const double *c,
+                                  const double *d, const double *dd, double *det_out)
+{
+    double m = 0.0, sc;
+    int i, ex;
+    const double *p[3];
+    p[0] = a, p[1] = b, p[2] = c;
+    for (i = 0; i < 3; i++) {
+        if (cvm__two_diff_tail(p[i][0], d[0], dd[2 * i]) != 0.0 ||
+            cvm__two_diff_tail(p[i][1], d[1], dd[2 * i + 1]) != 0.0)
+            return 0;
+    }
+    for (i = 0; i < 6; i++)
+        m = fabs(dd[i]) > m ? fabs(dd[i]) : m;
+    if (m == 0.0) {
+        *det_out = 0.0;
+        return 1;
+    }
+    (void)frexp(m, &ex);
+    sc = ldexp(1.0, 12 - ex); /* m * sc in [2^11, 2^12) */
+    for (i = 0; i < 6; i++) {
+        double t = dd[i] * sc;
+        if (t != (double)(int32_t)t)
+            return 0;
+    }
+    {
+        double adx = dd[0], ady = dd[1], bdx = dd[2], bdy = dd[3], cdx = dd[4], cdy = dd[5];
+        *det_out = (adx * adx + ady * ady) * (bdx * cdy - cdx * bdy)
+                   + (bdx * bdx + bdy * bdy) * (cdx * ady - adx * cdy)
+                   + (cdx * cdx + cdy * cdy) * (adx * bdy - bdx * ady);
+    }
+    return 1;
+}
+
 static double incircle_stages(const double *a, const double *b, const double *c, const double *d)
 {
     double adx = a[0] - d[0], bdx = b[0] - d[0], cdx = c[0] - d[0];
@@ -44,14 +95,20 @@ static double incircle_stages(const double *a, const double *b, const double *c,
     double bc[4], ca[4], ab[4], adet[32], bdet[32], cdet[32], abdet[64], fin[96];
     double permanent, det, errbound;
     int an, bn, cn, abn, fn;
+    {
+        double dd[6];
+        dd[0] = adx, dd[1] = ady, dd[2] = bdx, dd[3] = bdy, dd[4] = cdx, dd[5] = cdy;
+        if (incircle_small_integer(a, b, c, d, dd, &det))
+            return det;
+    }
 
     /* B: the exact determinant of the rounded differences. */
-    incircle_minor(bdx, bdy, cdx, cdy, bc);
-    incircle_minor(cdx, cdy, adx, ady, ca);
-    incircle_minor(adx, ady, bdx, bdy, ab);
-    an = incircle_lift_minor(bc, adx, ady, adet);
-    bn = incircle_lift_minor(ca, bdx, bdy, bdet);
-    cn = incircle_lift_minor(ab, cdx, cdy, cdet);
+    an = cvm__cross_zeroelim(bdx, cdy, cdx, bdy, bc);
+    bn = cvm__cross_zeroelim(cdx, ady, adx, cdy, ca);
+    cn = cvm__cross_zeroelim(adx, bdy, bdx, ady, ab);
+    an = incircle_lift_minor(an, bc, adx, ady, adet);
+    bn = incircle_lift_minor(bn, ca, bdx, bdy, bdet);
+    cn = incircle_lift_minor(cn, ab, cdx, cdy, cdet);
     abn = cvm__fast_expansion_sum_zeroelim(an, adet, bn, bdet, abdet);
     fn = cvm__fast_expansion_sum_zeroelim(abn, abdet, cn, cdet, fin);
     det = cvm__estimate(fn, fin);
@@ -93,7 +150,7 @@ CVM__NOINLINE double cvm__incircle_adapt(const double *a, const double *b, const
     int i, k;
     p[0] = a, p[1] = b, p[2] = c, p[3] = d;
     for (i = 0; i < 4; i++)
-        m = fmax(m, fmax(fabs(p[i][0]), fabs(p[i][1])));
+        m = cvm__maxabs(cvm__maxabs(m, p[i][0]), p[i][1]);
     k = cvm__rescale_exponent(m);
     if (k == 0)
         return incircle_stages(a, b, c, d);

@@ -17,22 +17,25 @@ static const double isp_errbound_b = (5.0 + 72.0 * CVM__EPS) * CVM__EPS;
  * the xy minors pq = pex qey - qex pey.
  */
 
-static void insphere_minor(const double *p, const double *q, double *out)
+/* The xy minor p.x q.y - q.x p.y, at most 4 components. */
+typedef struct {
+    int n;
+    double h[4];
+} insphere_minor;
+
+static void insphere_cross(const double *p, const double *q, insphere_minor *m)
 {
-    double l1, l0, r1, r0;
-    cvm__two_product(p[0], q[1], &l1, &l0);
-    cvm__two_product(q[0], p[1], &r1, &r0);
-    cvm__two_two_diff(l1, l0, r1, r0, out);
+    m->n = cvm__cross_zeroelim(p[0], q[1], q[0], p[1], m->h);
 }
 
-/* out = z0 m0 + z1 m1 + z2 m2 exactly (4-component minors); length <= 24. */
-static int insphere_det3(const double *m0, double z0, const double *m1, double z1,
-                         const double *m2, double z2, double *out)
+/* out = z0 m0 + z1 m1 + z2 m2 exactly; length <= 24. */
+static int insphere_det3(const insphere_minor *m0, double z0, const insphere_minor *m1, double z1,
+                         const insphere_minor *m2, double z2, double *out)
 {
     double t0[8], t1[8], t2[8], s[16];
-    int n0 = cvm__scale_expansion_zeroelim(4, m0, z0, t0);
-    int n1 = cvm__scale_expansion_zeroelim(4, m1, z1, t1);
-    int n2 = cvm__scale_expansion_zeroelim(4, m2, z2, t2);
+    int n0 = cvm__scale_expansion_zeroelim(m0->n, m0->h, z0, t0);
+    int n1 = cvm__scale_expansion_zeroelim(m1->n, m1->h, z1, t1);
+    int n2 = cvm__scale_expansion_zeroelim(m2->n, m2->h, z2, t2);
     int ns = cvm__fast_expansion_sum_zeroelim(n0, t0, n1, t1, s);
     return cvm__fast_expansion_sum_zeroelim(ns, s, n2, t2, out);
 }
@@ -42,7 +45,7 @@ static double insphere_stages(const double *pa, const double *pb, const double *
                               const double *pd, const double *pe)
 {
     double a[3], b[3], c[3], d[3];
-    double ab[4], bc[4], cd[4], da[4], ac[4], bd[4];
+    insphere_minor ab, bc, cd, da, ac, bd;
     double abc[24], bcd[24], cda[24], dab[24], t[4][288], s[2][576], fin[1152];
     double permanent, det, errbound;
     int i, nabc, nbcd, ncda, ndab, n[4], m0, m1, fn;
@@ -51,16 +54,16 @@ static double insphere_stages(const double *pa, const double *pb, const double *
         a[i] = pa[i] - pe[i], b[i] = pb[i] - pe[i];
         c[i] = pc[i] - pe[i], d[i] = pd[i] - pe[i];
     }
-    insphere_minor(a, b, ab);
-    insphere_minor(b, c, bc);
-    insphere_minor(c, d, cd);
-    insphere_minor(d, a, da);
-    insphere_minor(a, c, ac);
-    insphere_minor(b, d, bd);
-    nabc = insphere_det3(bc, a[2], ac, -b[2], ab, c[2], abc);
-    nbcd = insphere_det3(cd, b[2], bd, -c[2], bc, d[2], bcd);
-    ncda = insphere_det3(da, c[2], ac, d[2], cd, a[2], cda);
-    ndab = insphere_det3(ab, d[2], bd, a[2], da, b[2], dab);
+    insphere_cross(a, b, &ab);
+    insphere_cross(b, c, &bc);
+    insphere_cross(c, d, &cd);
+    insphere_cross(d, a, &da);
+    insphere_cross(a, c, &ac);
+    insphere_cross(b, d, &bd);
+    nabc = insphere_det3(&bc, a[2], &ac, -b[2], &ab, c[2], abc);
+    nbcd = insphere_det3(&cd, b[2], &bd, -c[2], &bc, d[2], bcd);
+    ncda = insphere_det3(&da, c[2], &ac, d[2], &cd, a[2], cda);
+    ndab = insphere_det3(&ab, d[2], &bd, a[2], &da, b[2], dab);
     n[0] = cvm__lift_scale(nabc, abc, d, 3, 0.0, 1.0, t[0]);
     n[1] = cvm__lift_scale(ndab, dab, c, 3, 0.0, -1.0, t[1]);
     n[2] = cvm__lift_scale(ncda, cda, b, 3, 0.0, 1.0, t[2]);
@@ -108,7 +111,7 @@ static CVM__NOINLINE double insphere_adapt(const double *a, const double *b, con
     p[0] = a, p[1] = b, p[2] = c, p[3] = d, p[4] = e;
     for (i = 0; i < 5; i++)
         for (j = 0; j < 3; j++)
-            m = fmax(m, fabs(p[i][j]));
+            m = cvm__maxabs(m, p[i][j]);
     k = cvm__rescale_exponent(m);
     if (k == 0)
         return insphere_stages(a, b, c, d, e);
@@ -147,7 +150,7 @@ double cvm__insphere(const double *a, const double *b, const double *c, const do
                        + (cezp * dap + dezp * acp + aezp * cdp) * blift
                        + (bezp * cdp + cezp * bdp + dezp * bcp) * alift;
     double errbound = isp_errbound_a * permanent + cvm__filter_floor;
-    if (det > errbound || -det > errbound)
+    if (fabs(det) > errbound)
         return det;
     return insphere_adapt(a, b, c, d, e);
 }

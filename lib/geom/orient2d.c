@@ -65,8 +65,8 @@ static double orient2d_stages(const double *a, const double *b, const double *c)
 
 CVM__NOINLINE double cvm__orient2d_adapt(const double *a, const double *b, const double *c)
 {
-    double m = fmax(fmax(fmax(fabs(a[0]), fabs(a[1])), fmax(fabs(b[0]), fabs(b[1]))),
-                    fmax(fabs(c[0]), fabs(c[1])));
+    double m = cvm__maxabs(cvm__maxabs(cvm__maxabs(fabs(a[0]), a[1]), b[0]), b[1]);
+    m = cvm__maxabs(cvm__maxabs(m, c[0]), c[1]);
     int k = cvm__rescale_exponent(m);
     double sa[2], sb[2], sc[2];
     if (k == 0)

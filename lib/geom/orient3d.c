@@ -9,14 +9,6 @@
 static const double o3d_errbound_a = (7.0 + 56.0 * CVM__EPS) * CVM__EPS;
 static const double o3d_errbound_b = (3.0 + 28.0 * CVM__EPS) * CVM__EPS;
 
-static void orient3d_minor(double px, double py, double qx, double qy, double *out)
-{
-    double l1, l0, r1, r0;
-    cvm__two_product(px, qy, &l1, &l0);
-    cvm__two_product(qx, py, &r1, &r0);
-    cvm__two_two_diff(l1, l0, r1, r0, out);
-}
-
 /* Stage B (det [a-d; b-d; c-d] of the rounded differences), then the exact
  * expansion, on inputs already in the safe range. */
 static double orient3d_stages(const double *a, const double *b, const double *c, const double *d)
@@ -25,14 +17,14 @@ static double orient3d_stages(const double *a, const double *b, const double *c,
     double ady = a[1] - d[1], bdy = b[1] - d[1], cdy = c[1] - d[1];
     double adz = a[2] - d[2], bdz = b[2] - d[2], cdz = c[2] - d[2];
     double m[4], t[3][8], ab[16], fin[24], permanent, det, errbound;
-    int n[3], abn, fn, i;
+    int n[3], mn, abn, fn, i;
 
-    orient3d_minor(bdx, bdy, cdx, cdy, m);
-    n[0] = cvm__scale_expansion_zeroelim(4, m, adz, t[0]);
-    orient3d_minor(cdx, cdy, adx, ady, m);
-    n[1] = cvm__scale_expansion_zeroelim(4, m, bdz, t[1]);
-    orient3d_minor(adx, ady, bdx, bdy, m);
-    n[2] = cvm__scale_expansion_zeroelim(4, m, cdz, t[2]);
+    mn = cvm__cross_zeroelim(bdx, cdy, cdx, bdy, m);
+    n[0] = cvm__scale_expansion_zeroelim(mn, m, adz, t[0]);
+    mn = cvm__cross_zeroelim(cdx, ady, adx, cdy, m);
+    n[1] = cvm__scale_expansion_zeroelim(mn, m, bdz, t[1]);
+    mn = cvm__cross_zeroelim(adx, bdy, bdx, ady, m);
+    n[2] = cvm__scale_expansion_zeroelim(mn, m, cdz, t[2]);
     abn = cvm__fast_expansion_sum_zeroelim(n[0], t[0], n[1], t[1], ab);
     fn = cvm__fast_expansion_sum_zeroelim(abn, ab, n[2], t[2], fin);
     det = cvm__estimate(fn, fin);
@@ -60,7 +52,7 @@ static CVM__NOINLINE double orient3d_adapt(const double *a, const double *b, con
     p[0] = a, p[1] = b, p[2] = c, p[3] = d;
     for (i = 0; i < 4; i++)
         for (j = 0; j < 3; j++)
-            m = fmax(m, fabs(p[i][j]));
+            m = cvm__maxabs(m, p[i][j]);
     k = cvm__rescale_exponent(m);
     if (k == 0)
         return orient3d_stages(a, b, c, d);
@@ -83,7 +75,7 @@ double cvm__orient3d(const double *a, const double *b, const double *c, const do
                        + (fabs(cdxady) + fabs(adxcdy)) * fabs(bdz)
                        + (fabs(adxbdy) + fabs(bdxady)) * fabs(cdz);
     double errbound = o3d_errbound_a * permanent + cvm__filter_floor;
-    if (det > errbound || -det > errbound)
+    if (fabs(det) > errbound)
         return det;
     return orient3d_adapt(a, b, c, d);
 }

@@ -25,26 +25,20 @@
 static const double pow_errbound_a = (12.0 + 512.0 * CVM__EPS) * CVM__EPS;
 static const double pow_errbound_b = (5.0 + 96.0 * CVM__EPS) * CVM__EPS;
 
-/* out = ((px^2 + py^2) - w) * m exactly, m a 4-component minor; length <= 40. */
-static int power_lift_minor(const double *m, double px, double py, double w, double *out)
+/* out = ((px^2 + py^2) - w) * m exactly, m a minor of mn <= 4 components; length <= 40. */
+static int power_lift_minor(int mn, const double *m, double px, double py, double w, double *out)
 {
     double t8[8], xx[16], yy[16], sq[32];
     int n8, nx, ny, nsq;
-    n8 = cvm__scale_expansion_zeroelim(4, m, px, t8);
+    n8 = cvm__scale_expansion_zeroelim(mn, m, px, t8);
     nx = cvm__scale_expansion_zeroelim(n8, t8, px, xx);
-    n8 = cvm__scale_expansion_zeroelim(4, m, py, t8);
+    n8 = cvm__scale_expansion_zeroelim(mn, m, py, t8);
     ny = cvm__scale_expansion_zeroelim(n8, t8, py, yy);
     nsq = cvm__fast_expansion_sum_zeroelim(nx, xx, ny, yy, sq);
-    n8 = cvm__scale_expansion_zeroelim(4, m, -w, t8);
+    if (w == 0.0)
+        return cvm__fast_expansion_sum_zeroelim(nsq, sq, 1, &w, out);
+    n8 = cvm__scale_expansion_zeroelim(mn, m, -w, t8);
     return cvm__fast_expansion_sum_zeroelim(nsq, sq, n8, t8, out);
-}
-
-static void power_minor(double px, double py, double qx, double qy, double *out)
-{
-    double l1, l0, r1, r0;
-    cvm__two_product(px, qy, &l1, &l0);
-    cvm__two_product(qx, py, &r1, &r0);
-    cvm__two_two_diff(l1, l0, r1, r0, out);
 }
 
 /* Stage B, then the exact expansion, on inputs already in the safe range. */
@@ -58,12 +52,12 @@ static double power2d_stages(const double *a, const double *b, const double *c, 
     double permanent, det, errbound;
     int an, bn, cn, abn, fn;
 
-    power_minor(bdx, bdy, cdx, cdy, bc);
-    power_minor(cdx, cdy, adx, ady, ca);
-    power_minor(adx, ady, bdx, bdy, ab);
-    an = power_lift_minor(bc, adx, ady, wad, adet);
-    bn = power_lift_minor(ca, bdx, bdy, wbd, bdet);
-    cn = power_lift_minor(ab, cdx, cdy, wcd, cdet);
+    an = cvm__cross_zeroelim(bdx, cdy, cdx, bdy, bc);
+    bn = cvm__cross_zeroelim(cdx, ady, adx, cdy, ca);
+    cn = cvm__cross_zeroelim(adx, bdy, bdx, ady, ab);
+    an = power_lift_minor(an, bc, adx, ady, wad, adet);
+    bn = power_lift_minor(bn, ca, bdx, bdy, wbd, bdet);
+    cn = power_lift_minor(cn, ab, cdx, cdy, wcd, cdet);
     abn = cvm__fast_expansion_sum_zeroelim(an, adet, bn, bdet, abdet);
     fn = cvm__fast_expansion_sum_zeroelim(abn, abdet, cn, cdet, fin);
     det = cvm__estimate(fn, fin);
@@ -92,10 +86,10 @@ static CVM__NOINLINE double power2d_adapt(const double *a, const double *b, cons
     int i, k;
     p[0] = a, p[1] = b, p[2] = c, p[3] = d;
     w[0] = wa, w[1] = wb, w[2] = wc, w[3] = wd;
-    mw = fmax(fmax(fabs(wa), fabs(wb)), fmax(fabs(wc), fabs(wd)));
+    mw = cvm__maxabs(cvm__maxabs(cvm__maxabs(fabs(wa), wb), wc), wd);
     for (i = 0; i < 4; i++)
-        m = fmax(m, fmax(fabs(p[i][0]), fabs(p[i][1])));
-    k = cvm__rescale_exponent(fmax(m, sqrt(mw)));
+        m = cvm__maxabs(cvm__maxabs(m, p[i][0]), p[i][1]);
+    k = cvm__rescale_exponent(cvm__maxabs(m, sqrt(mw)));
     if (k == 0)
         return power2d_stages(a, b, c, d, wa, wb, wc, wd);
     for (i = 0; i < 4; i++) {
@@ -121,7 +115,7 @@ double cvm__power2d(const double *a, const double *b, const double *c, const dou
                        + (fabs(cdxady) + fabs(adxcdy)) * (bsq + fabs(wbd))
                        + (fabs(adxbdy) + fabs(bdxady)) * (csq + fabs(wcd));
     double errbound = pow_errbound_a * permanent + cvm__filter_floor;
-    if (det > errbound || -det > errbound)
+    if (fabs(det) > errbound)
         return det;
     return power2d_adapt(a, b, c, d, wa, wb, wc, wd);
 }

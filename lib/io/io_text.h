@@ -62,7 +62,7 @@ int cvm__parse_long(const char *field, long long lo, long long hi, long long *ou
 /* Buffer size that holds any output of cvm__format_double(). */
 #define CVM__DOUBLE_BUF 40
 
-/* Write x with '.' as decimal point, in the shortest of %.15g / %.17g that
+/* Write x with '.' as decimal point, in the shortest of %.15g, %.16g, %.17g that
  * reads back to exactly x. buf holds CVM__DOUBLE_BUF bytes. Returns the length.
  * x must be finite. */
 size_t cvm__format_double(char *buf, double x);

@@ -107,6 +107,10 @@ size_t cvm__format_double(char *buf, double x)
     n = fix_point(buf);
     if (cvm__parse_double(buf, &back) == 0 && back == x)
         return n;
+    snprintf(buf, CVM__DOUBLE_BUF, "%.16g", x);
+    n = fix_point(buf);
+    if (cvm__parse_double(buf, &back) == 0 && back == x)
+        return n;
     snprintf(buf, CVM__DOUBLE_BUF, "%.17g", x);
     return fix_point(buf);
 }

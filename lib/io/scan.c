@@ -64,8 +64,9 @@ static cvm_status refill(cvm__scan *s, int *more)
 static cvm_status append(cvm__scan *s, const char *p, size_t n)
 {
     if (s->line_len + n > CVM__LINE_MAX)
-        return cvm__scan_error(s, CVM_E_IO_FORMAT, "line longer than %d bytes (not a text file?)",
-                               CVM__LINE_MAX);
+        return cvm__error(s->ctx, CVM_E_IO_FORMAT, CVM_ENT_FILE_LINE, (int64_t)(s->lineno + 1),
+                          "%s:%ld: line longer than %d bytes (not a text file?)", s->name,
+                          s->lineno + 1, CVM__LINE_MAX);
     if (s->line_len + n + 1 > s->line_cap &&
         cvm__grow(s->ctx, (void **)&s->line, &s->line_cap, s->line_len + n + 1, 1))
         return cvm__nomem(s->ctx);

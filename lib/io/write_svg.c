@@ -90,8 +90,13 @@ static void legend(cvm__writer *w, double top)
                            px(bx, sizeof bx, MARGIN + 20.0 * i), px(by, sizeof by, top + 4), rgb[0],
                            rgb[1], rgb[2]);
     }
+    cvm__writer_printf(w, "<text x=\"%s\" y=\"%s\" font-family=\"sans-serif\" font-size=\"10\">"
+                          "0</text>\n", px(bx, sizeof bx, MARGIN), px(by, sizeof by, top + 26));
+    cvm__writer_printf(w, "<text x=\"%s\" y=\"%s\" font-family=\"sans-serif\" font-size=\"10\" "
+                          "text-anchor=\"end\">60</text>\n",
+                       px(bx, sizeof bx, MARGIN + 240), px(by, sizeof by, top + 26));
     cvm__writer_printf(w, "<text x=\"%s\" y=\"%s\" font-family=\"sans-serif\" font-size=\"11\">"
-                          "smallest angle: 0 to 60 degrees (red to green)</text>\n",
+                          "smallest angle of each triangle, degrees</text>\n",
                        px(bx, sizeof bx, MARGIN + 250), px(by, sizeof by, top + 13));
 }
 
@@ -118,9 +123,15 @@ cvm_status cvm__write_svg(cvm__writer *w, cvm__ctx *ctx, const cvm__mesh_out *mo
     cvm__writer_printf(w, "<g stroke=\"#303030\" stroke-width=\"%s\" stroke-linejoin=\"round\" fill=\"#c9d8ea\">\n",
                        px(bs, sizeof bs, stroke < 0.01 ? 0.01 : stroke));
     for (t = 0; t < mo->nt; t++) {
+        const double *a = mo->xy + 2 * (size_t)mo->tri[3 * t], *b = mo->xy + 2 * (size_t)mo->tri[3 * t + 1];
+        const double *c = mo->xy + 2 * (size_t)mo->tri[3 * t + 2];
+        double own = 0.04 * vw.scale *
+                     sqrt(fabs((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])));
         cvm__writer_puts(w, "<polygon points=\"");
         for (k = 0; k < 3; k++)
             point(w, &vw, mo->xy + 2 * (size_t)mo->tri[3 * t + k], k < 2 ? " " : "\"");
+        if (own < 0.8 * stroke) /* a small triangle in a graded mesh: thinner edges */
+            cvm__writer_printf(w, " stroke-width=\"%s\"", px(bs, sizeof bs, own < 0.01 ? 0.01 : own));
         if (mo->tquality) {
             int rgb[3];
             ramp(mo->tquality[t], rgb);

@@ -132,7 +132,6 @@ typedef struct cvm__refiner {
     int32_t *enc;              /* scratch: encroached subsegments (a, b, seg) */
     size_t nenc, cap_enc;
     size_t steiner;
-    int frontal;               /* 1 while the frontal pass runs */
 } cvm__refiner;
 
 /* Refine T in place (see cvm_mesh_refine). Returns CVM_OK, CVM_E_NOMEM,

@@ -91,37 +91,27 @@ static double ss_fraction(cvm__refiner *R, int32_t a, int32_t b, int32_t t, int 
     return acute_b ? 1.0 - f : f;
 }
 
-/* A point computed on hull edge a->b (domain on its left) may round to the
- * inside, which would make the hull reflex there: step it outwards by ulps
- * until the exact orientation says it is on or outside the line. */
-static void ss_keep_hull_convex(const double *pa, const double *pb, double *x)
-{
-    double nx = pb[1] - pa[1], ny = pa[0] - pb[0]; /* outward normal */
-    int k;
-    for (k = 0; k < 64 && cvm__orient2d(pa, pb, x) > 0; k++) {
-        if (nx != 0)
-            x[0] = nextafter(x[0], nx > 0 ? HUGE_VAL : -HUGE_VAL);
-        if (ny != 0)
-            x[1] = nextafter(x[1], ny > 0 ? HUGE_VAL : -HUGE_VAL);
-    }
-}
-
-/* Insert the vertex at x on constrained edge j of t (segment seg). *v_out: the
- * new vertex, or -1 when x rounds onto an end. */
-static cvm_status ss_insert_on(cvm__refiner *R, int32_t t, int j, int32_t seg, const double *x0,
-                               int32_t *v_out)
+/* Insert the vertex at pa + f (pb - pa) on constrained edge j of domain
+ * triangle t (segment seg; pa, pb its ends in either order, copied by the
+ * caller). *v_out: the new vertex, or -1 when no usable point exists (it
+ * rounds onto an end). */
+static cvm_status ss_insert_on(cvm__refiner *R, int32_t t, int j, int32_t seg, const double *pa,
+                               const double *pb, double f, int32_t *v_out)
 {
     cvm__tri2 *T = R->T;
-    const int32_t *tv = T->tv + 3 * (size_t)t;
-    const double *pa = ss_pt(R, tv[(j + 1) % 3]), *pb = ss_pt(R, tv[(j + 2) % 3]);
+    int32_t a = T->tv[3 * (size_t)t + (size_t)(j + 1) % 3], b = T->tv[3 * (size_t)t + (size_t)(j + 2) % 3];
     double x[2];
     int32_t v;
     cvm_status s;
     *v_out = -1;
-    x[0] = x0[0];
-    x[1] = x0[1];
-    if (cvm__tri2_is_ghost(T, T->tn[3 * (size_t)t + (size_t)j] / 3))
-        ss_keep_hull_convex(pa, pb, x);
+    x[0] = pa[0] + f * (pb[0] - pa[0]);
+    x[1] = pa[1] + f * (pb[1] - pa[1]);
+    /* On a hull segment the rounded point may fall a few ulps inside or outside
+     * the line: the hull then stops being exactly convex, which the kernel
+     * allows because hull edges of a domain are constrained (no cavity grows
+     * into a ghost across them). */
+    (void)a;
+    (void)b;
     if ((x[0] == pa[0] && x[1] == pa[1]) || (x[0] == pb[0] && x[1] == pb[1]))
         return CVM_OK;
     if ((s = cvm__rf_may_insert(R)))
@@ -142,8 +132,7 @@ cvm_status cvm__rf_split_segment(cvm__refiner *R, int32_t a, int32_t b, int32_t 
     cvm__tri2 *T = R->T;
     int32_t t, v;
     int j;
-    double f, x[2];
-    const double *pa, *pb;
+    double f, pa[2], pb[2];
     cvm_status s;
     *done_out = 0;
     if (!ss_domain_side(R, a, b, &t, &j) || T->te[3 * (size_t)t + (size_t)j] < 0)
@@ -153,12 +142,12 @@ cvm_status cvm__rf_split_segment(cvm__refiner *R, int32_t a, int32_t b, int32_t 
      * depend on how the pair was queued */
     a = T->tv[3 * (size_t)t + (size_t)(j + 1) % 3];
     b = T->tv[3 * (size_t)t + (size_t)(j + 2) % 3];
-    pa = ss_pt(R, a);
-    pb = ss_pt(R, b);
+    pa[0] = ss_pt(R, a)[0];
+    pa[1] = ss_pt(R, a)[1];
+    pb[0] = ss_pt(R, b)[0];
+    pb[1] = ss_pt(R, b)[1];
     f = ss_fraction(R, a, b, t, j);
-    x[0] = pa[0] + f * (pb[0] - pa[0]);
-    x[1] = pa[1] + f * (pb[1] - pa[1]);
-    if ((s = ss_insert_on(R, t, j, seg, x, &v)) || v < 0)
+    if ((s = ss_insert_on(R, t, j, seg, pa, pb, f, &v)) || v < 0)
         return s;
     *done_out = 1;
     if ((s = cvm__rf_queue_encroached_star(R, v)))
@@ -206,15 +195,17 @@ static cvm_status ss_integrate(cvm__refiner *R, const double *pa, double dx, dou
  * k I(len) / n, so the pieces follow the sizing with no 2:1 jumps. */
 static cvm_status ss_march_one(cvm__refiner *R, int32_t a, int32_t b, double **tab, size_t *cap)
 {
-    double pa[2], dx, dy, len, total; /* copies: inserting may move T->xy */
+    double pa[2], pb[2], dx, dy, len, total; /* copies: inserting may move T->xy */
     size_t ns = 0, i = 0;
     long n, k;
     int32_t prev = a;
     cvm_status s;
     pa[0] = ss_pt(R, a)[0];
     pa[1] = ss_pt(R, a)[1];
-    dx = ss_pt(R, b)[0] - pa[0];
-    dy = ss_pt(R, b)[1] - pa[1];
+    pb[0] = ss_pt(R, b)[0];
+    pb[1] = ss_pt(R, b)[1];
+    dx = pb[0] - pa[0];
+    dy = pb[1] - pa[1];
     len = hypot(dx, dy);
     if ((s = ss_integrate(R, pa, dx, dy, len, tab, cap, &ns)) || ns == 0)
         return s;
@@ -223,7 +214,7 @@ static cvm_status ss_march_one(cvm__refiner *R, int32_t a, int32_t b, double **t
     if (n < 2 || total > 1e7)
         return CVM_OK;
     for (k = 1; k < n; k++) {
-        double target = total * (double)k / (double)n, s0, i0, f, x[2];
+        double target = total * (double)k / (double)n, s0, i0, f;
         int32_t t, v;
         int j;
         while (i + 1 < ns && (*tab)[2 * i + 1] < target)
@@ -232,11 +223,9 @@ static cvm_status ss_march_one(cvm__refiner *R, int32_t a, int32_t b, double **t
         i0 = i ? (*tab)[2 * i - 1] : 0.0;
         f = (*tab)[2 * i + 1] > i0 ? (target - i0) / ((*tab)[2 * i + 1] - i0) : 0.0;
         f = (s0 + f * ((*tab)[2 * i] - s0)) / len;
-        x[0] = pa[0] + dx * f;
-        x[1] = pa[1] + dy * f;
         if (!ss_domain_side(R, prev, b, &t, &j) || R->T->te[3 * (size_t)t + (size_t)j] < 0)
             return CVM_OK;
-        if ((s = ss_insert_on(R, t, j, R->T->te[3 * (size_t)t + (size_t)j], x, &v)))
+        if ((s = ss_insert_on(R, t, j, R->T->te[3 * (size_t)t + (size_t)j], pa, pb, f, &v)))
             return s;
         if (v >= 0)
             prev = v;

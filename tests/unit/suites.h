@@ -7,6 +7,7 @@ Suite *geom_suite(void);     /* tests/unit/geom/suite.c */
 Suite *delaunay_suite(void); /* tests/unit/delaunay/suite.c */
 Suite *io_suite(void);       /* tests/unit/io/suite.c */
 Suite *api_suite(void);      /* tests/unit/api/suite.c */
+Suite *refine_suite(void);   /* tests/unit/refine/suite.c */
 Suite *support_suite(void);  /* tests/unit/support/test_support.c: the test helpers themselves */
 
 #endif

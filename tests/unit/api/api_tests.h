@@ -8,5 +8,8 @@ TCase *api_options_tcase(void);  /* test_options.c: option keys, bounds, rejecti
 TCase *api_args_tcase(void);     /* test_args.c: NULL arguments, call order, short buffers */
 TCase *api_oom_tcase(void);      /* test_oom.c: allocation failure k = 1, 2, ... */
 TCase *api_threads_tcase(void);  /* test_threads.c: handles on concurrent threads */
+TCase *api_output_tcase(void);   /* test_output.c: counts, copies, views (output.c, domain.c) */
+TCase *api_quality_tcase(void);  /* test_quality.c: measures and histograms (quality.c) */
+TCase *api_write_tcase(void);    /* test_write.c: cvm_mesh_write (mesh_write.c) */
 
 #endif

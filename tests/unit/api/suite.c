@@ -10,5 +10,8 @@ Suite *api_suite(void)
     suite_add_tcase(s, api_args_tcase());
     suite_add_tcase(s, api_oom_tcase());
     suite_add_tcase(s, api_threads_tcase());
+    suite_add_tcase(s, api_output_tcase());
+    suite_add_tcase(s, api_quality_tcase());
+    suite_add_tcase(s, api_write_tcase());
     return s;
 }

@@ -121,6 +121,40 @@ START_TEST(incircle_huge_and_tiny_scales_keep_the_sign)
 }
 END_TEST
 
+/* The corners of any axis-parallel rectangle are cocircular. With corner
+ * coordinates of very different magnitudes the differences to d are inexact,
+ * so the zero is only found by the final exact stage. */
+START_TEST(incircle_rectangles_of_mixed_magnitude_are_exactly_zero)
+{
+    geomtest_rng r = { 34 };
+    int i, j, zero_paths = 0;
+    for (i = 0; i < 5000; i++) {
+        double x[2], y[2], p[4][2], q[4][2], pw[4];
+        int perm[4] = { 0, 1, 2, 3 }, t;
+        x[0] = geomtest_uniform(&r, -1e-3, 1e-3), x[1] = geomtest_uniform(&r, 1e2, 1e3);
+        y[0] = geomtest_uniform(&r, -1e3, -1e2), y[1] = geomtest_uniform(&r, -1e-6, 1e-6);
+        p[0][0] = x[0], p[0][1] = y[0];
+        p[1][0] = x[1], p[1][1] = y[0];
+        p[2][0] = x[1], p[2][1] = y[1];
+        p[3][0] = x[0], p[3][1] = y[1];
+        for (j = 3; j > 0; j--) { /* random order */
+            int k = (int)(geomtest_u64(&r) % (uint64_t)(j + 1));
+            t = perm[j], perm[j] = perm[k], perm[k] = t;
+        }
+        for (j = 0; j < 4; j++)
+            q[j][0] = p[perm[j]][0], q[j][1] = p[perm[j]][1];
+        ck_assert(cvm__incircle(q[0], q[1], q[2], q[3]) == 0.0);
+        pw[0] = pw[1] = pw[2] = pw[3] = 1.5;
+        ck_assert(cvm__power2d(q[0], q[1], q[2], q[3], pw[0], pw[1], pw[2], pw[3]) == 0.0);
+        zero_paths++;
+        /* and one ulp off the corner */
+        q[3][1] = geomtest_ulps(q[3][1], (i % 2) ? 1 : -1);
+        check_icc(q[0], q[1], q[2], q[3]);
+    }
+    ck_assert_int_eq(zero_paths, 5000);
+}
+END_TEST
+
 START_TEST(incircle_sign_convention)
 {
     double a[2] = { 1.0, 0.0 }, b[2] = { 0.0, 1.0 }, c[2] = { -1.0, 0.0 };
@@ -140,6 +174,7 @@ TCase *geom_incircle_tcase(void)
     tcase_add_test(tc, incircle_cocircular_lattice_is_exactly_zero);
     tcase_add_test(tc, incircle_near_cocircular_doubles_match_the_oracle);
     tcase_add_test(tc, incircle_huge_and_tiny_scales_keep_the_sign);
+    tcase_add_test(tc, incircle_rectangles_of_mixed_magnitude_are_exactly_zero);
     tcase_add_test(tc, incircle_sign_convention);
     tcase_set_timeout(tc, 120);
     return tc;

@@ -63,6 +63,31 @@ START_TEST(insphere_cospherical_lattice_is_exactly_zero)
 }
 END_TEST
 
+/* The corners of any axis-parallel box are cospherical; mixed magnitudes make
+ * the differences inexact, so only the final exact stage sees the zero. */
+START_TEST(insphere_boxes_of_mixed_magnitude_are_exactly_zero)
+{
+    geomtest_rng r = { 64 };
+    int i, j, k;
+    for (i = 0; i < 1000; i++) {
+        double lo[3], hi[3], p[5][3];
+        for (k = 0; k < 3; k++) {
+            lo[k] = geomtest_uniform(&r, -1e-4, 1e-4);
+            hi[k] = geomtest_uniform(&r, 1e1, 1e3);
+        }
+        for (j = 0; j < 5; j++) {
+            int corner = (int)(geomtest_u64(&r) % 8);
+            for (k = 0; k < 3; k++)
+                p[j][k] = ((corner >> k) & 1) ? hi[k] : lo[k];
+        }
+        ck_assert(cvm__insphere(p[0], p[1], p[2], p[3], p[4]) == 0.0);
+        ck_assert_int_eq(oracle_insphere(p[0], p[1], p[2], p[3], p[4]), 0);
+        p[4][1] = geomtest_ulps(p[4][1], 1);
+        check_isp(p);
+    }
+}
+END_TEST
+
 /* Five points rounded onto a sphere, the last nudged. */
 static void near_sphere(geomtest_rng *r, double cx, double rad, double (*p)[3])
 {
@@ -125,6 +150,7 @@ TCase *geom_insphere_tcase(void)
     tcase_add_test(tc, insphere_sign_convention);
     tcase_add_test(tc, insphere_cospherical_lattice_is_exactly_zero);
     tcase_add_test(tc, insphere_near_cospherical_doubles_match_the_oracle);
+    tcase_add_test(tc, insphere_boxes_of_mixed_magnitude_are_exactly_zero);
     tcase_add_test(tc, insphere_huge_and_tiny_scales_keep_the_sign);
     tcase_set_timeout(tc, 180);
     return tc;

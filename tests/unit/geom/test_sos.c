@@ -64,8 +64,10 @@ static void random_indices(geomtest_rng *r, int64_t *idx)
 {
     int i, j, dup;
     do {
-        for (i = 0; i < 4; i++)
-            idx[i] = (int64_t)(geomtest_u64(r) % 40) - ((i & 1) ? 0 : (int64_t)1 << 40);
+        for (i = 0; i < 4; i++) {
+            uint64_t u = geomtest_u64(r);
+            idx[i] = (int64_t)(u % 40) - (((u >> 32) & 1u) ? (int64_t)1 << 40 : 0);
+        }
         for (dup = 0, i = 0; i < 4; i++)
             for (j = i + 1; j < 4; j++)
                 dup |= idx[i] == idx[j];

@@ -1,4 +1,5 @@
 /* test_read_triangle.c - the .node/.poly parser: good files, numbering, and every kind of malformed input with its line. */
+#include <dirent.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -73,6 +74,33 @@ START_TEST(read_shared_polys_with_their_counts)
         ck_assert_int_eq(p.seg[1], 1);
         teardown_check_no_leak(&p);
     }
+}
+END_TEST
+
+START_TEST(read_every_shared_poly)
+{
+    char dir[4096];
+    DIR *dp;
+    struct dirent *e;
+    int n = 0;
+    iotest_path(dir, sizeof dir, iotest_shared_dir(), "data");
+    dp = opendir(dir);
+    ck_assert_msg(dp != NULL, "cannot list %s (set CVM_SHARED_DIR)", dir);
+    while ((e = readdir(dp)) != NULL) {
+        size_t len = strlen(e->d_name);
+        cvm__pslg p;
+        cvm_status s;
+        if (len < 6 || strcmp(e->d_name + len - 5, ".poly") != 0)
+            continue;
+        s = parse_file(dir, e->d_name, 1, &p);
+        ck_assert_msg(s == CVM_OK, "%s: %s", e->d_name, g_ctx.errmsg);
+        ck_assert_msg(p.np >= 3 && p.nseg >= 3, "%s: %lu points, %lu segments", e->d_name,
+                      (unsigned long)p.np, (unsigned long)p.nseg);
+        teardown_check_no_leak(&p);
+        n++;
+    }
+    closedir(dp);
+    ck_assert_int_ge(n, 5);
 }
 END_TEST
 
@@ -320,6 +348,7 @@ TCase *io_read_triangle_tcase(void)
     TCase *tc = tcase_create("read_triangle");
     tcase_add_checked_fixture(tc, setup, NULL);
     tcase_add_test(tc, read_shared_polys_with_their_counts);
+    tcase_add_test(tc, read_every_shared_poly);
     tcase_add_test(tc, read_zero_based_file_with_comments);
     tcase_add_test(tc, read_one_based_attributes_and_regions);
     tcase_add_test(tc, read_node_file_with_attribute);

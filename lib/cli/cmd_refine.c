@@ -1,0 +1,207 @@
+/*
+ * cmd_refine.c - `cvmesh refine IN.poly [--algo delaunay|frontal|aflr] [--size H]
+ * [-o OUT] [--svg PIC.svg] [--quality] [option flags]`: read, triangulate,
+ * refine, write, report.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli.h"
+
+typedef struct rargs {
+    const char *in, *out, *svg;
+    int quality;
+    cvm_algorithm algo;
+    double size; /* 0: none */
+    cli_setting set[CLI_MAX_SETTINGS];
+    int nset;
+} rargs;
+
+void cli_refine_help(FILE *f)
+{
+    fprintf(f,
+            "usage: cvmesh refine IN.poly [--algo delaunay|frontal] [--size H] [-o OUT]\n"
+            "                     [--svg PIC.svg] [--quality] [option flags]\n"
+            "\n"
+            "Constrained Delaunay triangulation of IN, then refinement until every triangle\n"
+            "meets the minimum angle, the size H and the maximum area. Segments are kept.\n"
+            "\n"
+            "  --algo NAME                delaunay (Delaunay refinement, default) or frontal\n"
+            "                             (frontal-Delaunay: more regular triangles); aflr is\n"
+            "                             not available yet\n"
+            "  --size H                   target edge length (uniform); default none\n"
+            "  -o, --output OUT           write the mesh (.vtu, .msh, .svg, .node)\n"
+            "  --svg PIC.svg              also draw the mesh, coloured by smallest angle\n"
+            "  --quality                  print the quality report and the refinement report\n"
+            "  -h, --help                 print this help\n");
+    cli_print_option_flags(f, CLI_CMD_REFINE);
+    fprintf(f, "\nStopped by --max-steiner or --time-limit the mesh is still valid and written;\n"
+               "the exit status is 0 and a note says what was left unmet.\n");
+}
+
+static int parse_algo(rargs *a, const char *s)
+{
+    if (strcmp(s, "delaunay") == 0)
+        a->algo = CVM_ALGO_DELAUNAY;
+    else if (strcmp(s, "frontal") == 0)
+        a->algo = CVM_ALGO_FRONTAL;
+    else if (strcmp(s, "aflr") == 0)
+        a->algo = CVM_ALGO_AFLR;
+    else {
+        fprintf(stderr, "cvmesh: refine: unknown --algo '%s' (delaunay, frontal or aflr)\n", s);
+        return CLI_EXIT_USAGE;
+    }
+    return CLI_EXIT_OK;
+}
+
+static int parse_value(rargs *a, int argc, char **argv, int *i)
+{
+    const char *s = argv[*i];
+    char *end;
+    if (*i + 1 >= argc) {
+        fprintf(stderr, "cvmesh: %s needs a value\n", s);
+        return CLI_EXIT_USAGE;
+    }
+    ++*i;
+    if (strcmp(s, "--algo") == 0)
+        return parse_algo(a, argv[*i]);
+    if (strcmp(s, "--size") == 0) {
+        a->size = strtod(argv[*i], &end);
+        if (*end || !(a->size > 0) || !isfinite(a->size)) {
+            fprintf(stderr, "cvmesh: --size %s: must be a positive number\n", argv[*i]);
+            return CLI_EXIT_USAGE;
+        }
+        return CLI_EXIT_OK;
+    }
+    if (strcmp(s, "--svg") == 0)
+        a->svg = argv[*i];
+    else
+        a->out = argv[*i];
+    return CLI_EXIT_OK;
+}
+
+static int parse(rargs *a, int argc, char **argv)
+{
+    int i, r;
+    memset(a, 0, sizeof *a);
+    a->algo = CVM_ALGO_DELAUNAY;
+    for (i = 1; i < argc; i++) {
+        const char *s = argv[i];
+        if (strcmp(s, "-h") == 0 || strcmp(s, "--help") == 0) {
+            cli_refine_help(stdout);
+            return -1;
+        }
+        if (strcmp(s, "--algo") == 0 || strcmp(s, "--size") == 0 || strcmp(s, "-o") == 0 ||
+            strcmp(s, "--output") == 0 || strcmp(s, "--svg") == 0) {
+            if ((r = parse_value(a, argc, argv, &i)))
+                return r;
+            continue;
+        }
+        if (strcmp(s, "--quality") == 0) {
+            a->quality = 1;
+            continue;
+        }
+        r = cli_parse_option_flag(CLI_CMD_REFINE, argc, argv, &i, a->set, &a->nset);
+        if (r < 0)
+            return CLI_EXIT_USAGE;
+        if (r > 0)
+            continue;
+        if ((s[0] == '-' && s[1] != '\0') || a->in) {
+            fprintf(stderr, "cvmesh: refine: unexpected argument '%s' (see cvmesh refine --help)\n", s);
+            return CLI_EXIT_USAGE;
+        }
+        a->in = s;
+    }
+    if (!a->in) {
+        fprintf(stderr, "cvmesh: refine: no input file (see cvmesh refine --help)\n");
+        return CLI_EXIT_USAGE;
+    }
+    return CLI_EXIT_OK;
+}
+
+static int rfail(cvm_mesh *m, cvm_sizing *sz, const char *prefix)
+{
+    fprintf(stderr, "cvmesh: %s%s%s\n", prefix ? prefix : "", prefix ? ": " : "", cvm_mesh_errmsg(m));
+    cvm_sizing_free(sz);
+    cvm_mesh_free(m);
+    return CLI_EXIT_FAIL;
+}
+
+/* The refinement report: Steiner points and what was left unmet. */
+static void print_report(FILE *f, cvm_mesh *m)
+{
+    static const struct { cvm_measure w; const char *name; } rows[] = {
+        {CVM_MEASURE_REFINE_STEINER, "steiner points"},
+        {CVM_MEASURE_REFINE_REQUESTED_ANGLE, "requested min angle"},
+        {CVM_MEASURE_REFINE_MET_ANGLE, "met min angle (away from small input angles)"},
+        {CVM_MEASURE_REFINE_UNMET_ANGLE, "triangles below the angle"},
+        {CVM_MEASURE_REFINE_SMALL_INPUT_ANGLE, "  of which at small input angles"},
+        {CVM_MEASURE_REFINE_UNMET_SIZE, "triangles above the size"},
+    };
+    size_t i;
+    for (i = 0; i < sizeof rows / sizeof rows[0]; i++) {
+        double v;
+        if (cvm_mesh_get_measure(&v, m, rows[i].w) == CVM_OK)
+            fprintf(f, "%s: %.10g\n", rows[i].name, v);
+    }
+}
+
+static int run(const rargs *a)
+{
+    cvm_mesh *m;
+    cvm_sizing *sz = NULL;
+    cvm_status s;
+    int rc;
+    if (cvm_mesh_create(&m) != CVM_OK || cvm_sizing_create(&sz) != CVM_OK) {
+        fprintf(stderr, "cvmesh: out of memory\n");
+        cvm_mesh_free(m);
+        return CLI_EXIT_FAIL;
+    }
+    if ((rc = cli_apply_settings(m, a->set, a->nset))) {
+        cvm_sizing_free(sz);
+        cvm_mesh_free(m);
+        return rc;
+    }
+    if (a->size > 0 && cvm_sizing_set_uniform(sz, a->size) != CVM_OK) {
+        fprintf(stderr, "cvmesh: --size: %s\n", cvm_sizing_errmsg(sz));
+        cvm_sizing_free(sz);
+        cvm_mesh_free(m);
+        return CLI_EXIT_USAGE;
+    }
+    if (cvm_mesh_read(m, a->in) != CVM_OK)
+        return rfail(m, sz, NULL);
+    if (cvm_mesh_triangulate(m) != CVM_OK)
+        return rfail(m, sz, a->in);
+    s = cvm_mesh_refine(m, sz, a->algo);
+    if (cvm_status_is_error(s))
+        return rfail(m, sz, a->in);
+    if (s != CVM_OK)
+        fprintf(stderr, "cvmesh: note: %s: %s\n", a->in, cvm_mesh_errmsg(m));
+    if (a->out && cvm_mesh_write(m, a->out) != CVM_OK)
+        return rfail(m, sz, NULL);
+    if (a->svg && cvm_mesh_write(m, a->svg) != CVM_OK)
+        return rfail(m, sz, NULL);
+    if (a->quality) {
+        if ((rc = cli_print_quality(stdout, m))) {
+            cvm_sizing_free(sz);
+            cvm_mesh_free(m);
+            return rc;
+        }
+        print_report(stdout, m);
+    }
+    cvm_sizing_free(sz);
+    cvm_mesh_free(m);
+    return CLI_EXIT_OK;
+}
+
+int cli_refine(int argc, char **argv)
+{
+    rargs a;
+    int rc = parse(&a, argc, argv);
+    if (rc < 0)
+        return CLI_EXIT_OK;
+    if (rc)
+        return rc;
+    return run(&a);
+}

@@ -1,0 +1,87 @@
+/* bench_refine.c - driver of bench_refine.py: triangulate + refine one .poly at a uniform size,
+ * print the median time of REPS runs, and dump the last mesh as raw arrays for the script. */
+#define _POSIX_C_SOURCE 200809L
+#include <stdio.h>
+#include <stdlib.h>
+#include <time.h>
+
+#include "cvmesh.h"
+
+static double now(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+static int cmp(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return x < y ? -1 : x > y;
+}
+
+int main(int argc, char **argv)
+{
+    double h, ts[64];
+    int algo, reps, r;
+    cvm_mesh *m = NULL;
+    if (argc != 6) {
+        fprintf(stderr, "usage: bench_refine IN.poly H ALGO(1|2) REPS OUT_PREFIX\n");
+        return 2;
+    }
+    h = atof(argv[2]);
+    algo = atoi(argv[3]);
+    reps = atoi(argv[4]);
+    if (reps < 1 || reps > 64)
+        reps = 5;
+    for (r = 0; r < reps; r++) {
+        cvm_sizing *s;
+        double t0;
+        cvm_status st;
+        cvm_mesh_free(m);
+        if (cvm_mesh_create(&m) || cvm_sizing_create(&s) || cvm_sizing_set_uniform(s, h))
+            return 1;
+        if (cvm_mesh_read(m, argv[1])) {
+            fprintf(stderr, "%s\n", cvm_mesh_errmsg(m));
+            return 1;
+        }
+        t0 = now();
+        if (cvm_mesh_triangulate(m) || (st = cvm_mesh_refine(m, s, (cvm_algorithm)algo)) != CVM_OK) {
+            fprintf(stderr, "%s\n", cvm_mesh_errmsg(m));
+            return 1;
+        }
+        ts[r] = now() - t0;
+        cvm_sizing_free(s);
+    }
+    qsort(ts, (size_t)reps, sizeof ts[0], cmp);
+    if (cvm_mesh_check(m)) {
+        fprintf(stderr, "check: %s\n", cvm_mesh_errmsg(m));
+        return 1;
+    }
+    {
+        size_t nv, nt;
+        double *xy;
+        cvm_index *tri;
+        char path[4096];
+        FILE *f;
+        cvm_mesh_count(&nv, m, CVM_ENT_VERTEX);
+        cvm_mesh_count(&nt, m, CVM_ENT_TRIANGLE);
+        xy = malloc(2 * nv * sizeof *xy + 1);
+        tri = malloc(3 * nt * sizeof *tri + 1);
+        cvm_mesh_copy_points(xy, 2 * nv, m);
+        cvm_mesh_copy_cells(tri, 3 * nt, m, CVM_ENT_TRIANGLE);
+        snprintf(path, sizeof path, "%s.xy", argv[5]);
+        f = fopen(path, "wb");
+        fwrite(xy, sizeof *xy, 2 * nv, f);
+        fclose(f);
+        snprintf(path, sizeof path, "%s.tri", argv[5]);
+        f = fopen(path, "wb");
+        fwrite(tri, sizeof *tri, 3 * nt, f);
+        fclose(f);
+        free(xy);
+        free(tri);
+    }
+    printf("%.9f\n", ts[reps / 2]);
+    cvm_mesh_free(m);
+    return 0;
+}

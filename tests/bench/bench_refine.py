@@ -1,0 +1,128 @@
+#!/usr/bin/env python3
+"""Refinement benchmark: cvmesh (Delaunay refinement and frontal-Delaunay) side by
+side with Triangle (PyPI `triangle`, switches pq30a<A>) on the shared geometries
+at a uniform size h, in the same run, on one core.
+
+Triangle gets the area bound A = sqrt(3)/4 h^2 (an equilateral triangle of edge
+h). Every mesh is measured here by the same numpy code: vertices, triangles,
+time (median of REPS runs of triangulate + refine; Triangle: triangulate()),
+min angle, % of angles in [55, 65] degrees, % obtuse triangles (an angle > 90),
+% of interior vertices (on no boundary edge) of degree 6, and mean edge / h.
+
+usage: bench_refine.py BUILD SHARED   (make bench calls it through run.sh)
+"""
+import os, subprocess, sys, tempfile, time
+import numpy as np
+
+BUILD, SHARED = sys.argv[1], sys.argv[2]
+REPS = int(os.environ.get("CVM_BENCH_REPS", "5"))
+CASES = [("square", 0.02), ("channel", 0.02), ("annulus", 0.1), ("cylinder", 0.2),
+         ("naca0012", 0.2)]
+DRIVER = os.path.join(BUILD, "bench", "bench_refine")
+
+
+def build_driver():
+    os.makedirs(os.path.dirname(DRIVER), exist_ok=True)
+    cc = os.environ.get("CC", "cc")
+    subprocess.check_call([cc, "-std=c99", "-O2", "-Iinclude", "-o", DRIVER,
+                           "tests/bench/bench_refine.c", os.path.join(BUILD, "lib", "libcvmesh.a"),
+                           "-lm", "-fopenmp"])
+
+
+def read_poly(path):
+    """Own .poly reader: points, segments, holes (0-based)."""
+    toks = []
+    for line in open(path):
+        line = line.split("#", 1)[0].split()
+        if line:
+            toks.append([float(x) for x in line])
+    it = iter(toks)
+    np_, dim, nattr, nmark = (int(x) for x in next(it)[:4])
+    pts = [next(it) for _ in range(np_)]
+    base = int(pts[0][0]) if pts else 0
+    xy = np.array([[p[1], p[2]] for p in pts])
+    ns = int(next(it)[0])
+    segs = np.array([[int(s[1]) - base, int(s[2]) - base] for s in (next(it) for _ in range(ns))])
+    nh = int(next(it)[0])
+    holes = np.array([[h[1], h[2]] for h in (next(it) for _ in range(nh))]).reshape(-1, 2)
+    return xy, segs, holes
+
+
+def quality(xy, tri, h):
+    p = xy[tri]                                   # (nt, 3, 2)
+    e = np.roll(p, -1, axis=1) - p                # edge k from corner k to k+1
+    ang = []
+    for k in range(3):
+        u = p[:, (k + 1) % 3] - p[:, k]
+        w = p[:, (k + 2) % 3] - p[:, k]
+        cross = np.abs(u[:, 0] * w[:, 1] - u[:, 1] * w[:, 0])
+        ang.append(np.degrees(np.arctan2(cross, (u * w).sum(1))))
+    ang = np.stack(ang, 1)
+    edges = np.sort(np.concatenate([tri[:, [0, 1]], tri[:, [1, 2]], tri[:, [2, 0]]]), 1)
+    uniq, cnt = np.unique(edges, axis=0, return_counts=True)
+    boundary = np.unique(uniq[cnt == 1])
+    deg = np.bincount(uniq.ravel(), minlength=len(xy))
+    used = np.zeros(len(xy), bool)
+    used[tri.ravel()] = True
+    interior = used.copy()
+    interior[boundary] = False
+    lens = np.linalg.norm(xy[uniq[:, 0]] - xy[uniq[:, 1]], axis=1)
+    return dict(nv=int(used.sum()), nt=len(tri), minang=float(ang.min()),
+                reg=100.0 * float(((ang >= 55) & (ang <= 65)).mean()),
+                obt=100.0 * float((ang.max(1) > 90).mean()),
+                deg6=100.0 * float((deg[interior] == 6).mean()) if interior.any() else 0.0,
+                edge=float(lens.mean() / h))
+
+
+def run_cvmesh(poly, h, algo, tmp):
+    out = subprocess.run([DRIVER, poly, str(h), str(algo), str(REPS), os.path.join(tmp, "m")],
+                         capture_output=True, text=True)
+    if out.returncode:
+        raise SystemExit("bench_refine: cvmesh failed on %s: %s" % (poly, out.stderr))
+    t = float(out.stdout.split()[0])
+    xy = np.fromfile(os.path.join(tmp, "m.xy")).reshape(-1, 2)
+    tri = np.fromfile(os.path.join(tmp, "m.tri"), dtype=np.int32).reshape(-1, 3)
+    return t, xy, tri
+
+
+def run_triangle(poly, h):
+    import triangle
+    xy, segs, holes = read_poly(poly)
+    a = dict(vertices=xy, segments=segs)
+    if len(holes):
+        a["holes"] = holes
+    sw = "pq30a%.12f" % (np.sqrt(3) / 4 * h * h)
+    ts, t = [], None
+    for _ in range(REPS):
+        t0 = time.perf_counter()
+        t = triangle.triangulate(a, sw)
+        ts.append(time.perf_counter() - t0)
+    ts.sort()
+    return ts[len(ts) // 2], t["vertices"], t["triangles"]
+
+
+def main():
+    build_driver()
+    print("# bench_refine: uniform size h; time = median of %d runs (triangulate + refine), one core" % REPS)
+    print("%-9s %-5s %-9s %7s %7s %9s %8s %7s %6s %6s %6s %6s" %
+          ("case", "h", "mesher", "verts", "tris", "time_s", "us/tri", "minang", "%55-65", "%obt",
+           "%deg6", "edge/h"))
+    with tempfile.TemporaryDirectory() as tmp:
+        for name, h in CASES:
+            poly = os.path.join(SHARED, "data", name + ".poly")
+            rows = []
+            try:
+                rows.append(("triangle",) + run_triangle(poly, h))
+            except ImportError:
+                print("# Triangle (pip triangle) not installed: skipped")
+            for algo, label in ((1, "cvm-del"), (2, "cvm-front")):
+                rows.append((label,) + run_cvmesh(poly, h, algo, tmp))
+            for label, t, xy, tri in rows:
+                q = quality(np.asarray(xy), np.asarray(tri), h)
+                print("%-9s %-5g %-9s %7d %7d %9.4f %8.3f %7.2f %6.1f %6.1f %6.1f %6.3f" %
+                      (name, h, label, q["nv"], q["nt"], t, 1e6 * t / q["nt"], q["minang"], q["reg"],
+                       q["obt"], q["deg6"], q["edge"]))
+
+
+if __name__ == "__main__":
+    main()

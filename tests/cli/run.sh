@@ -1,0 +1,224 @@
+#!/bin/sh
+# run.sh CLI SHARED_DIR - end-to-end tests of the cvmesh program: every shared
+# .poly to every output format, help and version, bad command lines (exit 2),
+# bad inputs and failed writes (exit 1, one line naming file:line, no output
+# file left). When python3 has numpy (and meshio), the outputs are also checked
+# by ../shared/tools/verify_mesh.py (and read back by meshio).
+# Prints "N passed, M failed" last; exits 1 if anything failed.
+set -e
+
+if [ $# -ne 2 ]; then
+    echo "usage: sh tests/cli/run.sh path/to/cvmesh SHARED_DIR" >&2
+    exit 2
+fi
+CLI=$1
+SHARED=$2
+case $CLI in /*) ;; *) CLI=$(pwd)/$CLI ;; esac
+HERE=$(cd "$(dirname "$0")" && pwd)
+DATA=$HERE/../data
+TMP=$(mktemp -d "${TMPDIR:-/tmp}/cvmesh_cli.XXXXXX")
+trap 'rm -rf "$TMP"' EXIT INT TERM
+
+passed=0
+failed=0
+pass() { passed=$((passed + 1)); }
+fail() { failed=$((failed + 1)); echo "FAIL: $*"; }
+
+# expect_exit CODE DESC CMD... : run CMD (stdout/stderr to $TMP/out, $TMP/err), check its exit code.
+expect_exit() {
+    want=$1; desc=$2; shift 2
+    set +e
+    "$@" > "$TMP/out" 2> "$TMP/err"
+    got=$?
+    set -e
+    if [ "$got" -eq "$want" ]; then pass; else fail "$desc: exit $got, expected $want: $(head -c 300 "$TMP/err")"; fi
+}
+
+# expect_grep DESC FILE PATTERN : FILE contains PATTERN (fixed string).
+expect_grep() {
+    if grep -F -q -e "$3" "$2"; then pass; else fail "$1: '$3' not in $(basename "$2"): $(head -c 300 "$2")"; fi
+}
+
+# expect_one_line DESC : $TMP/err is exactly one line starting "cvmesh: ".
+expect_one_line() {
+    n=$(wc -l < "$TMP/err")
+    if [ "$n" -eq 1 ] && grep -q '^cvmesh: ' "$TMP/err"; then pass; else fail "$1: stderr is not one 'cvmesh: ' line: $(cat "$TMP/err")"; fi
+}
+
+# expect_empty_dir DESC DIR : nothing was left in DIR.
+expect_empty_dir() {
+    if [ -z "$(ls -A "$2")" ]; then pass; else fail "$1: files left: $(ls -A "$2" | tr '\n' ' ')"; fi
+}
+
+HAVE_NUMPY=0
+HAVE_MESHIO=0
+if command -v python3 > /dev/null 2>&1; then
+    if python3 -c 'import numpy' > /dev/null 2>&1; then HAVE_NUMPY=1; fi
+    if python3 -c 'import meshio' > /dev/null 2>&1; then HAVE_MESHIO=1; fi
+fi
+
+# ---- help and version -------------------------------------------------------
+expect_exit 0 "--help" "$CLI" --help
+expect_grep "--help" "$TMP/out" "usage: cvmesh"
+expect_grep "--help lists triangulate" "$TMP/out" "triangulate"
+expect_exit 0 "triangulate --help" "$CLI" triangulate --help
+expect_grep "triangulate --help" "$TMP/out" "--quality"
+expect_grep "triangulate --help" "$TMP/out" "--seed S"
+expect_grep "triangulate --help" "$TMP/out" "--reject-duplicates"
+expect_exit 0 "help triangulate" "$CLI" help triangulate
+expect_grep "help triangulate" "$TMP/out" "--timings"
+expect_exit 0 "--version" "$CLI" --version
+expect_grep "--version" "$TMP/out" "cvmesh 0."
+
+# ---- bad command lines: exit 2, no output -----------------------------------
+OUT=$TMP/usage
+mkdir "$OUT"
+expect_exit 2 "no arguments" "$CLI"
+expect_exit 2 "unknown command" "$CLI" frobnicate
+expect_one_line "unknown command"
+expect_exit 2 "no input" "$CLI" triangulate -o "$OUT/x.vtu"
+expect_exit 2 "unknown flag" "$CLI" triangulate "$SHARED/data/square.poly" --frobnicate
+expect_one_line "unknown flag"
+expect_exit 2 "unknown output format" "$CLI" triangulate "$SHARED/data/square.poly" -o "$OUT/x.stl"
+expect_exit 2 "--svg without .svg" "$CLI" triangulate "$SHARED/data/square.poly" --svg "$OUT/x.png"
+expect_exit 2 "-o without a name" "$CLI" triangulate "$SHARED/data/square.poly" -o
+expect_exit 2 "--seed not a number" "$CLI" triangulate "$SHARED/data/square.poly" --seed abc -o "$OUT/x.vtu"
+expect_exit 2 "--seed out of range" "$CLI" triangulate "$SHARED/data/square.poly" --seed -1 -o "$OUT/x.vtu"
+expect_grep "--seed out of range quotes the bounds" "$TMP/err" "--seed"
+expect_one_line "--seed out of range"
+expect_exit 2 "--threads too many" "$CLI" triangulate "$SHARED/data/square.poly" --threads=5000 -o "$OUT/x.vtu"
+expect_empty_dir "bad command lines" "$OUT"
+
+# ---- every shared geometry to every format ---------------------------------
+for poly in "$SHARED"/data/*.poly; do
+    name=$(basename "$poly" .poly)
+    OUT=$TMP/$name
+    mkdir "$OUT"
+    for ext in vtu msh node svg; do
+        expect_exit 0 "$name to .$ext" "$CLI" triangulate "$poly" -o "$OUT/$name.$ext"
+        if [ -s "$OUT/$name.$ext" ]; then pass; else fail "$name.$ext missing or empty"; fi
+    done
+    expect_grep "$name.vtu" "$OUT/$name.vtu" '<VTKFile type="UnstructuredGrid"'
+    expect_grep "$name.msh" "$OUT/$name.msh" '$MeshFormat'
+    expect_grep "$name.svg" "$OUT/$name.svg" '<svg '
+    for side in ele edge; do
+        if [ -s "$OUT/$name.$side" ]; then pass; else fail "$name.$side missing beside $name.node"; fi
+    done
+    if ls "$OUT" | grep -q '\.tmp\.'; then fail "$name: temporary files left"; else pass; fi
+    if [ "$HAVE_NUMPY" -eq 1 ]; then
+        if python3 "$SHARED/tools/verify_mesh.py" "$poly" "$OUT/$name" > "$OUT/verify.json" 2>&1; then
+            pass
+        else
+            fail "$name: verify_mesh.py: $(tail -c 400 "$OUT/verify.json")"
+        fi
+    fi
+    if [ "$HAVE_MESHIO" -eq 1 ]; then
+        if python3 -c 'import sys, meshio
+for f in sys.argv[1:]:
+    m = meshio.read(f)
+    assert len(m.points) > 0 and any(c.type == "triangle" for c in m.cells), f' \
+            "$OUT/$name.vtu" "$OUT/$name.msh" > "$OUT/meshio.log" 2>&1; then
+            pass
+        else
+            fail "$name: meshio cannot read the output: $(tail -c 400 "$OUT/meshio.log")"
+        fi
+    fi
+done
+
+# ---- report, timings, extra picture, determinism ---------------------------
+OUT=$TMP/report
+mkdir "$OUT"
+expect_exit 0 "--quality --timings --svg" "$CLI" triangulate "$SHARED/data/annulus.poly" \
+    -o "$OUT/a.vtu" --svg "$OUT/a.svg" --quality --timings --seed 3 --threads 1
+for want in "vertices" "triangles" "min angle" "max angle" "angles in [55, 65] deg" \
+            "obtuse (not well-centred)" "interior degree 6" "min dual edge ratio" \
+            "angle histogram" "degree histogram"; do
+    expect_grep "--quality" "$TMP/out" "$want"
+done
+for phase in read triangulate "recover segments" write; do
+    if grep -E -q "^$phase: [0-9]+\.[0-9]+$" "$TMP/out"; then pass; else fail "--timings: no '$phase: seconds' line"; fi
+done
+if [ -s "$OUT/a.vtu" ] && [ -s "$OUT/a.svg" ]; then pass; else fail "-o with --svg: a file is missing"; fi
+expect_exit 0 "same run again" "$CLI" triangulate "$SHARED/data/annulus.poly" -o "$OUT/b.vtu" --seed 3
+if cmp -s "$OUT/a.vtu" "$OUT/b.vtu"; then pass; else fail "the same input and seed gave different bytes"; fi
+expect_exit 0 "write with no -o" "$CLI" triangulate "$SHARED/data/square.poly" --quality
+
+# ---- other inputs -----------------------------------------------------------
+OUT=$TMP/inputs
+mkdir "$OUT"
+expect_exit 0 ".node point set" "$CLI" triangulate "$DATA/cocircular_octagon_and_centre.node" -o "$OUT/p.node"
+if [ -s "$OUT/p.ele" ]; then pass; else fail ".node point set: no .ele"; fi
+expect_exit 0 ".poly with points in .node" "$CLI" triangulate "$DATA/points_in_node_file.poly" -o "$OUT/q.msh"
+expect_exit 0 "0-based poly with comments" "$CLI" triangulate "$DATA/zero_based_with_comments.poly" -o "$OUT/z.vtu" --keep-hull
+expect_exit 0 "regions and attributes" "$CLI" triangulate "$DATA/one_based_attributes_regions.poly" -o "$OUT/r.vtu"
+expect_grep "regions give cell data" "$OUT/r.vtu" 'Name="attribute"'
+
+# ---- bad inputs: exit 1, one line naming file:line, no output ---------------
+for case in bad_truncated_points.poly:4 bad_nan_coordinate.poly:3 bad_segment_index.poly:7 \
+            bad_point_count_too_small.poly:6 bad_binary_garbage.poly:3; do
+    file=${case%:*}
+    line=${case##*:}
+    OUT=$TMP/bad_$file
+    mkdir "$OUT"
+    expect_exit 1 "$file" "$CLI" triangulate "$DATA/$file" -o "$OUT/x.vtu" --svg "$OUT/x.svg"
+    expect_one_line "$file"
+    expect_grep "$file names its line" "$TMP/err" "$file:$line:"
+    expect_empty_dir "$file" "$OUT"
+done
+
+OUT=$TMP/bad_other
+mkdir "$OUT"
+expect_exit 1 "missing input" "$CLI" triangulate "$OUT/none.poly" -o "$OUT/x.vtu"
+expect_grep "missing input" "$TMP/err" "cannot open"
+expect_one_line "missing input"
+expect_exit 1 "input of unknown type" "$CLI" triangulate "$HERE/run.sh" -o "$OUT/x.vtu"
+expect_one_line "input of unknown type"
+cat > "$OUT/crossing.poly" <<'EOF'
+# a square with both diagonals as segments: they cross at (0.5, 0.5)
+4 2 0 0
+1 0 0
+2 1 0
+3 1 1
+4 0 1
+6 0
+1 1 2
+2 2 3
+3 3 4
+4 4 1
+5 1 3
+6 2 4
+0
+EOF
+expect_exit 1 "crossing segments rejected" "$CLI" triangulate "$OUT/crossing.poly" -o "$OUT/x.vtu" --no-split-intersections
+expect_one_line "crossing segments rejected"
+expect_grep "crossing segments named" "$TMP/err" "segment"
+expect_exit 0 "crossing segments split" "$CLI" triangulate "$OUT/crossing.poly" -o "$OUT/split.vtu"
+rm -f "$OUT/split.vtu"
+printf '3 2 0 0\n1 0 0\n2 1 0\n3 1 0\n' > "$OUT/dup.node"
+expect_exit 1 "duplicates rejected" "$CLI" triangulate "$OUT/dup.node" -o "$OUT/x.vtu" --reject-duplicates
+expect_one_line "duplicates rejected"
+rm -f "$OUT/crossing.poly" "$OUT/dup.node"
+expect_empty_dir "bad inputs" "$OUT"
+
+# ---- failed writes: exit 1, nothing left ------------------------------------
+OUT=$TMP/write
+mkdir "$OUT"
+expect_exit 1 "output directory missing" "$CLI" triangulate "$SHARED/data/square.poly" -o "$OUT/no/such/x.vtu"
+expect_grep "output directory missing" "$TMP/err" "cannot create"
+expect_one_line "output directory missing"
+if [ -e /dev/full ]; then
+    ln -s /dev/full "$OUT/full.msh"
+    expect_exit 1 "disk full" "$CLI" triangulate "$SHARED/data/naca0012.poly" -o "$OUT/full.msh"
+    expect_grep "disk full" "$TMP/err" "cannot write"
+    expect_one_line "disk full"
+    rm -f "$OUT/full.msh"
+    ln -s /dev/full "$OUT/full.ele"
+    expect_exit 1 "disk full on .ele" "$CLI" triangulate "$SHARED/data/naca0012.poly" -o "$OUT/full.node"
+    rm -f "$OUT/full.ele"
+fi
+expect_exit 1 "picture fails after the mesh" "$CLI" triangulate "$SHARED/data/square.poly" -o "$OUT/ok.node" --svg "$OUT/no/such/x.svg"
+expect_one_line "picture fails after the mesh"
+expect_empty_dir "failed writes" "$OUT"
+
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]

@@ -1,0 +1,13 @@
+/* suite.c - the refine suite: one TCase per source file under test. */
+#include "suites.h"
+#include "refine/refine_tests.h"
+
+Suite *refine_suite(void)
+{
+    Suite *s = suite_create("refine");
+    suite_add_tcase(s, refine_sizing_tcase());
+    suite_add_tcase(s, refine_bad_queue_tcase());
+    suite_add_tcase(s, refine_delaunay_tcase());
+    suite_add_tcase(s, refine_frontal_tcase());
+    return s;
+}

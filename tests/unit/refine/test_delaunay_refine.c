@@ -1,0 +1,273 @@
+/* test_delaunay_refine.c - Delaunay refinement (lib/refine/delaunay_refine.c, encroach.c, split_segment.c) through cvm_mesh_refine. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "refine/refine_tests.h"
+#include "support/mesh_oracle.h"
+
+START_TEST(square_meets_angle_and_size)
+{
+    rtest_shared_geometry("square.poly", 0.03, 1, CVM_ALGO_DELAUNAY);
+}
+END_TEST
+
+START_TEST(channel_meets_angle_and_size)
+{
+    rtest_shared_geometry("channel.poly", 0.05, 1, CVM_ALGO_DELAUNAY);
+}
+END_TEST
+
+START_TEST(annulus_meets_angle_and_size)
+{
+    rtest_shared_geometry("annulus.poly", 0.2, 0, CVM_ALGO_DELAUNAY);
+}
+END_TEST
+
+START_TEST(cylinder_meets_angle_and_size)
+{
+    rtest_shared_geometry("cylinder.poly", 0.5, 0, CVM_ALGO_DELAUNAY);
+}
+END_TEST
+
+START_TEST(naca0012_meets_angle_and_size)
+{
+    rtest_shared_geometry("naca0012.poly", 0.5, 0, CVM_ALGO_DELAUNAY);
+}
+END_TEST
+
+/* Small input angles: refinement must stop, keep a valid mesh and meet the
+ * angle away from the apex; the report counts the triangles left there. */
+static void small_angle_terminates(cvm_algorithm algo, double angle, double h)
+{
+    static const double apex[2] = {0, 0};
+    cvm_mesh *m;
+    cvm_status s;
+    double small, unmet;
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    rtest_set_wedge(m, angle);
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+    s = rtest_refine_uniform(m, h, algo);
+    ck_assert_msg(s == CVM_OK, "%s: %s", cvm_status_str(s), cvm_mesh_errmsg(m));
+    cvmtest_assert_valid(m);
+    /* away from the apex (beyond where the wedge is narrower than a few sizes) */
+    ck_assert_double_ge(rtest_min_angle_away(m, apex, 1, 4 * h / tan(angle * 0.0174532925199433)),
+                        30.0 - 1e-9);
+    ck_assert_int_eq(cvm_mesh_get_measure(&small, m, CVM_MEASURE_REFINE_SMALL_INPUT_ANGLE), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_get_measure(&unmet, m, CVM_MEASURE_REFINE_UNMET_ANGLE), CVM_OK);
+    ck_assert_double_le(small, unmet);
+    cvm_mesh_free(m);
+}
+
+START_TEST(three_degree_wedge_terminates)
+{
+    small_angle_terminates(CVM_ALGO_DELAUNAY, 3.0, 0.01);
+}
+END_TEST
+
+START_TEST(three_degree_wedge_terminates_without_sizing)
+{
+    cvm_mesh *m;
+    cvm_status s;
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    rtest_set_wedge(m, 3.0);
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+    s = cvm_mesh_refine(m, NULL, CVM_ALGO_DELAUNAY);
+    ck_assert_msg(s == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    cvmtest_assert_valid(m);
+    cvm_mesh_free(m);
+}
+END_TEST
+
+static void jagged_star(cvm_algorithm algo, unsigned long seed)
+{
+    cvm_mesh *m, *m2;
+    cvm_status s;
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_create(&m2), CVM_OK);
+    rtest_set_star(m, 60, seed);
+    rtest_set_star(m2, 60, seed);
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_triangulate(m2), CVM_OK);
+    s = rtest_refine_uniform(m, 0.05, algo);
+    ck_assert_msg(s == CVM_OK, "%s: %s", cvm_status_str(s), cvm_mesh_errmsg(m));
+    ck_assert_int_eq(rtest_refine_uniform(m2, 0.05, algo), CVM_OK);
+    cvmtest_assert_valid(m);
+    rtest_assert_identical(m, m2);
+    cvm_mesh_free(m);
+    cvm_mesh_free(m2);
+}
+
+START_TEST(jagged_star_terminates)
+{
+    jagged_star(CVM_ALGO_DELAUNAY, 7);
+    jagged_star(CVM_ALGO_DELAUNAY, 8);
+}
+END_TEST
+
+START_TEST(steiner_limit_leaves_valid_mesh)
+{
+    static const double sq[] = {0, 0, 1, 0, 1, 1, 0, 1};
+    static const cvm_index seg[] = {0, 1, 1, 2, 2, 3, 3, 0};
+    cvm_mesh *m;
+    size_t nv;
+    double d;
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_points(m, sq, 4, 2), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_segments(m, seg, 4), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_MAX_STEINER, 50), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+    ck_assert_int_eq(rtest_refine_uniform(m, 0.01, CVM_ALGO_DELAUNAY), CVM_INCOMPLETE_STEINER_LIMIT);
+    ck_assert_ptr_nonnull(strstr(cvm_mesh_errmsg(m), "Steiner limit"));
+    ck_assert_int_eq(cvm_mesh_count(&nv, m, CVM_ENT_VERTEX), CVM_OK);
+    ck_assert_uint_eq(nv, 4 + 50);
+    cvmtest_assert_valid(m);
+    ck_assert_int_eq(cvm_mesh_get_measure(&d, m, CVM_MEASURE_REFINE_STEINER), CVM_OK);
+    ck_assert_double_eq(d, 50);
+    ck_assert_int_eq(cvm_mesh_get_measure(&d, m, CVM_MEASURE_REFINE_UNMET_SIZE), CVM_OK);
+    ck_assert_double_gt(d, 0);
+    /* the same limit again stops again, at the same place */
+    cvm_mesh_free(m);
+}
+END_TEST
+
+static int cancel_after(void *payload, cvm_stage stage, double fraction)
+{
+    int *calls = payload;
+    (void)fraction;
+    ck_assert_int_eq(stage, CVM_STAGE_REFINE);
+    return ++*calls >= 3;
+}
+
+START_TEST(cancellation_leaves_valid_mesh)
+{
+    static const double sq[] = {0, 0, 1, 0, 1, 1, 0, 1};
+    static const cvm_index seg[] = {0, 1, 1, 2, 2, 3, 3, 0};
+    cvm_mesh *m;
+    int calls = 0;
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_points(m, sq, 4, 2), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_segments(m, seg, 4), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_progress(m, cancel_after, 10, &calls), CVM_OK);
+    ck_assert_int_eq(rtest_refine_uniform(m, 0.01, CVM_ALGO_FRONTAL), CVM_INCOMPLETE_CANCELLED);
+    ck_assert_int_eq(calls, 3);
+    cvmtest_assert_valid(m);
+    cvm_mesh_free(m);
+}
+END_TEST
+
+/* Without segments the convex hull edges become segments; max area alone drives it. */
+START_TEST(point_set_refines_inside_hull)
+{
+    double xy[2 * 40];
+    cvm_mesh *m;
+    rtest_quality q;
+    double area = 0;
+    size_t i;
+    unsigned long x = 99;
+    for (i = 0; i < 2 * 40; i++) {
+        x = x * 6364136223846793005ul + 1442695040888963407ul;
+        xy[i] = (double)(x >> 11) / 9007199254740992.0;
+    }
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_points(m, xy, 40, 2), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_MAX_AREA, 0.001), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_get_measure(&area, m, CVM_MEASURE_AREA), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_refine(m, NULL, CVM_ALGO_DELAUNAY), CVM_OK);
+    {
+        /* split points on slanted hull edges round a few ulps off the line, so
+         * the boundary is no longer exactly convex: check it as a PSLG */
+        cvmtest_expect e;
+        cvmtest_expect_init(&e);
+        e.convex = 0;
+        cvmtest_assert_valid_ex(m, &e);
+    }
+    rtest_measure(m, &q);
+    {
+        double a2 = 0;
+        ck_assert_int_eq(cvm_mesh_get_measure(&a2, m, CVM_MEASURE_AREA), CVM_OK);
+        ck_assert_double_eq_tol(a2, area, 1e-12 * area);
+        ck_assert(q.min_angle >= 30.0 - 1e-9);
+    }
+    ck_assert_uint_ge(q.nt, (size_t)(area / 0.001));
+    cvm_mesh_free(m);
+}
+END_TEST
+
+START_TEST(lens_and_no_marching_still_meet_bounds)
+{
+    char path[1024];
+    cvm_mesh *m;
+    rtest_quality q;
+    rtest_shared_path(path, sizeof path, "channel.poly");
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_read(m, path), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_ENCROACH_LENS, 1), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_MARCH_SEGMENTS, 0), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_MIN_ANGLE_DEG, 33), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+    ck_assert_int_eq(rtest_refine_uniform(m, 0.1, CVM_ALGO_DELAUNAY), CVM_OK);
+    cvmtest_assert_valid(m);
+    rtest_measure(m, &q);
+    ck_assert_double_ge(q.min_angle, 33.0 - 1e-9);
+    ck_assert_double_le(q.max_circumradius, 0.1 * (1 + 1e-9));
+    cvm_mesh_free(m);
+}
+END_TEST
+
+START_TEST(wrong_calls_are_reported)
+{
+    static const double sq[] = {0, 0, 1, 0, 1, 1, 0, 1};
+    cvm_mesh *m;
+    ck_assert_int_eq(cvm_mesh_refine(NULL, NULL, CVM_ALGO_DELAUNAY), CVM_E_NULL_ARG);
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_refine(m, NULL, CVM_ALGO_DELAUNAY), CVM_E_STATE);
+    ck_assert_int_eq(cvm_mesh_set_points(m, sq, 4, 2), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_refine(m, NULL, CVM_ALGO_AFLR), CVM_E_UNSUPPORTED);
+    ck_assert_ptr_nonnull(strstr(cvm_mesh_errmsg(m), "AFLR"));
+    ck_assert_int_eq(cvm_mesh_refine(m, NULL, (cvm_algorithm)42), CVM_E_ARGUMENT);
+    ck_assert_int_eq(cvm_mesh_set_front_markers(NULL, NULL, 0), CVM_E_NULL_ARG);
+    ck_assert_int_eq(cvm_mesh_set_front_markers(m, NULL, 2), CVM_E_NULL_ARG);
+    {
+        int32_t marks[2] = {1, 2};
+        ck_assert_int_eq(cvm_mesh_set_front_markers(m, marks, 2), CVM_OK);
+        ck_assert_int_eq(cvm_mesh_set_front_markers(m, NULL, 0), CVM_OK);
+    }
+    cvm_mesh_free(m);
+}
+END_TEST
+
+TCase *refine_delaunay_tcase(void)
+{
+    TCase *tc = tcase_create("delaunay_refine");
+    tcase_set_timeout(tc, 60);
+    tcase_add_test(tc, square_meets_angle_and_size);
+    tcase_add_test(tc, channel_meets_angle_and_size);
+    tcase_add_test(tc, annulus_meets_angle_and_size);
+    tcase_add_test(tc, cylinder_meets_angle_and_size);
+    tcase_add_test(tc, naca0012_meets_angle_and_size);
+    tcase_add_test(tc, three_degree_wedge_terminates);
+    tcase_add_test(tc, three_degree_wedge_terminates_without_sizing);
+    tcase_add_test(tc, jagged_star_terminates);
+    tcase_add_test(tc, steiner_limit_leaves_valid_mesh);
+    tcase_add_test(tc, cancellation_leaves_valid_mesh);
+    tcase_add_test(tc, point_set_refines_inside_hull);
+    tcase_add_test(tc, lens_and_no_marching_still_meet_bounds);
+    tcase_add_test(tc, wrong_calls_are_reported);
+    return tc;
+}
+
+/* Shared with test_frontal.c. */
+void rtest_small_angle_terminates(cvm_algorithm algo, double angle, double h);
+void rtest_small_angle_terminates(cvm_algorithm algo, double angle, double h)
+{
+    small_angle_terminates(algo, angle, h);
+}
+void rtest_jagged_star(cvm_algorithm algo, unsigned long seed);
+void rtest_jagged_star(cvm_algorithm algo, unsigned long seed)
+{
+    jagged_star(algo, seed);
+}
