@@ -476,8 +476,11 @@ CVM_API cvm_status cvm_mesh_set_progress(cvm_mesh *m, cvm_progress_fn fn, int64_
  * @return CVM_OK
  *         CVM_E_NULL_ARG
  *         CVM_E_INPUT_EMPTY        no points, or carving left no triangle
- *         CVM_E_INPUT_DEGENERATE   fewer than 3 distinct points, all points collinear, or a
- *                                  zero-length segment (message gives segment k)
+ *         CVM_E_INPUT_DEGENERATE   fewer than 3 distinct points, all points collinear, a
+ *                                  zero-length segment (message gives segment k), or a nonzero
+ *                                  coordinate more than 2^180 times smaller than the largest
+ *                                  (beyond what the exact predicates can span; message gives
+ *                                  the point)
  *         CVM_E_INPUT_INDEX        a segment names a point that does not exist
  *         CVM_E_INPUT_DUPLICATE    duplicate points with CVM_OPT_REJECT_DUPLICATES
  *         CVM_E_INPUT_INTERSECTING crossing segments with CVM_OPT_SPLIT_INTERSECTIONS = 0
@@ -761,8 +764,9 @@ CVM_API cvm_status cvm_mesh_copy_cells(cvm_index *dst, size_t dst_len, const cvm
 CVM_API cvm_status cvm_mesh_copy_neighbors(cvm_index *dst, size_t dst_len, const cvm_mesh *m);
 
 /**
- * Copy integer markers: CVM_ENT_VERTEX (input marker, or the marker of the
- * segment a Steiner point lies on, else 0), CVM_ENT_SEGMENT (marker of the
+ * Copy integer markers: CVM_ENT_VERTEX (the input marker; a vertex whose
+ * marker is 0 and that lies on a segment, input point or Steiner point, takes
+ * that segment's marker, as Triangle does; else 0), CVM_ENT_SEGMENT (marker of the
  * input segment each output segment lies on, in CVM_ENT_SEGMENT order; 1 when
  * no segment markers were set, as Triangle's default boundary marker).
  * @return CVM_OK, CVM_E_NULL_ARG, CVM_E_ARGUMENT, CVM_E_BUFFER_TOO_SMALL, CVM_E_NOMEM

@@ -182,6 +182,31 @@ static void boundary_vertex_markers(cvm_mesh *m)
     }
 }
 
+/* The exact predicates work on double expansions, whose error-free
+ * transformations fail when a product underflows: with every coordinate
+ * rescaled (by a power of two) near the largest one, a nonzero coordinate more
+ * than 2^180 times smaller than the largest could make a product of four of
+ * them underflow. Such input is refused rather than decided inexactly. */
+static cvm_status check_dynamic_range(cvm_mesh *m)
+{
+    const double *xy = m->in.xy;
+    size_t i, n = 2 * m->in.np;
+    double big = 0, lim;
+    for (i = 0; i < n; i++)
+        big = fabs(xy[i]) > big ? fabs(xy[i]) : big;
+    lim = ldexp(big, -180);
+    for (i = 0; i < n; i++) {
+        double a = fabs(xy[i]);
+        if (a != 0 && a < lim)
+            return cvm__error(&m->ctx, CVM_E_INPUT_DEGENERATE, CVM_ENT_INPUT_POINT, (int64_t)(i / 2),
+                              "point %lu has %c = %.17g, more than 2^180 times smaller than the "
+                              "largest coordinate %.17g: exact predicates cannot span that range; "
+                              "round it to 0 or translate the input",
+                              (unsigned long)(i / 2), i % 2 ? 'y' : 'x', xy[i], big);
+    }
+    return CVM_OK;
+}
+
 static cvm_status triangulate(cvm_mesh *m)
 {
     cvm__tri2 *T = &m->tri;
@@ -189,7 +214,7 @@ static cvm_status triangulate(cvm_mesh *m)
     int32_t *dup_of = NULL;
     cvm_status s;
 
-    if ((s = check_segments(m)))
+    if ((s = check_segments(m)) || (s = check_dynamic_range(m)))
         return s;
     if ((s = cvm__tri2_reserve_vertices(T, n)))
         return s == CVM_E_NOMEM ? cvm__nomem(&m->ctx) : cvm__error(&m->ctx, s, CVM_ENT_NONE, -1, "too many points");

@@ -93,6 +93,8 @@ START_TEST(lattice_one_ulp_off_is_delaunay)
     size_t k = 40, n = k * k, i;
     double *xy = lattice(k, 1.0, 0);
     cvm_mesh *m;
+    for (i = 0; i < 2 * n; i++)
+        xy[i] += 1.0; /* one ulp off 0 would be a denormal, outside the exact range */
     for (i = 0; i < n; i += 3)
         xy[2 * i] = nextafter(xy[2 * i], 1e9);
     for (i = 1; i < n; i += 5)
@@ -106,7 +108,7 @@ END_TEST
 
 START_TEST(huge_and_tiny_scales)
 {
-    double scales[4] = {1e-60, 1e-30, 1e30, 1e60};
+    double scales[4] = {1e-300, 1e-150, 1e150, 1e300};
     size_t n = 2000, i;
     int s;
     double *xy = malloc(2 * n * sizeof *xy);
@@ -241,6 +243,25 @@ START_TEST(output_is_reproducible)
 }
 END_TEST
 
+START_TEST(coordinates_beyond_exact_range_are_refused)
+{
+    double xy[] = {1e-300, -1e-300, 1e300, 0, 150, 2.5e-3, 0, 7};
+    cvm_mesh *m;
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_points(m, xy, 4, 2), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_E_INPUT_DEGENERATE);
+    ck_assert_ptr_nonnull(strstr(cvm_mesh_errmsg(m), "point 0"));
+    /* tiny but within range next to unit coordinates is fine */
+    xy[0] = 1e-40;
+    xy[1] = -1e-40;
+    xy[2] = 1;
+    ck_assert_int_eq(cvm_mesh_set_points(m, xy, 4, 2), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+    cvmtest_assert_valid(m);
+    cvm_mesh_free(m);
+}
+END_TEST
+
 static int cancel_at(void *payload, cvm_stage stage, double fraction)
 {
     int *calls = payload;
@@ -286,6 +307,7 @@ TCase *delaunay_build_tcase(void)
     tcase_add_test(tc, duplicates_rejected_when_asked);
     tcase_add_test(tc, nonfinite_points_are_rejected_by_index);
     tcase_add_test(tc, output_is_reproducible);
+    tcase_add_test(tc, coordinates_beyond_exact_range_are_refused);
     tcase_add_test(tc, cancel_leaves_an_empty_mesh);
     return tc;
 }
