@@ -137,6 +137,9 @@ $(BUILD)/fuzz/replay_%: $(BUILD)/obj/tests/fuzz/fuzz_%.o $(BUILD)/obj/tests/fuzz
 	@mkdir -p $(dir $@)
 	$(CC) $(SANFLAGS) -o $@ $^ $(LDLIBS_LIB)
 
+# Keep the objects of the fuzz programs (make would delete them as intermediates).
+.SECONDARY: $(FUZZ_TARGETS:%=$(BUILD)/obj/tests/fuzz/fuzz_%.o) $(BUILD)/obj/tests/fuzz/regression_driver.o
+
 fuzz-bins: $(FUZZ_BINS)
 replay-bins: $(REPLAY_BINS)
 

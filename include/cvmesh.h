@@ -380,6 +380,28 @@ typedef enum cvm_option {
      *  is given. 0: segments are split only when encroached (Triangle's behaviour).
      *  Integer, [0, 1]. */
     CVM_OPT_MARCH_SEGMENTS = 204,
+    /** 1 (default): after CVM_ALGO_FRONTAL refinement, flip interior unconstrained edges
+     *  towards the ideal vertex degree (6 inside, round(boundary angle / 60 degrees) + 1
+     *  on the boundary) when the sum of squared degree deviations of the edge's four
+     *  vertices drops and no angle below CVM_OPT_MIN_ANGLE_DEG is created; segments are
+     *  never flipped. Runs before smoothing and the Delaunay-restoring flips. 0: off.
+     *  Not applied to CVM_ALGO_DELAUNAY. Integer, [0, 1]. */
+    CVM_OPT_SWAP = 205,
+    /** Sweeps of smart Laplacian smoothing after CVM_ALGO_FRONTAL refinement (after
+     *  CVM_OPT_SWAP, before the Delaunay-restoring flips), default 1, bounds [0, 100];
+     *  0 = off. Only Steiner points whose triangles are all inside the domain move (never
+     *  an input point or a vertex on a segment), in vertex index order, to the centroid
+     *  of their neighbours, and only when no triangle inverts (exact test), the
+     *  neighbourhood gets more regular (fewer obtuse angles, more angles in [55, 65]
+     *  degrees), no angle drops below min(its old smallest angle, CVM_OPT_MIN_ANGLE_DEG)
+     *  and no more triangles exceed the size bound. Not applied to CVM_ALGO_DELAUNAY.
+     *  Integer. */
+    CVM_OPT_SMOOTH_SWEEPS = 206,
+    /** 1 (default): after swapping and smoothing, flip every non-locally-Delaunay
+     *  unconstrained edge (exact in-circle), so the result stays a constrained Delaunay
+     *  triangulation (measured: this keeps the regularity gained by smoothing).
+     *  0 (a non-Delaunay result) is reserved. Integer, bounds [1, 1]. */
+    CVM_OPT_RESTORE_DELAUNAY = 207,
 
     /** Run control (400..499). */
     /** Time limit, seconds on a monotonic clock, 0 = none (default), bounds [0, 1e9].
@@ -690,7 +712,10 @@ typedef enum cvm_algorithm {
  * @param algo    CVM_ALGO_DELAUNAY or CVM_ALGO_FRONTAL.
  * Options:  CVM_OPT_MIN_ANGLE_DEG, CVM_OPT_MAX_AREA, CVM_OPT_ENCROACH_LENS,
  *           CVM_OPT_MARCH_SEGMENTS, CVM_OPT_MAX_STEINER, CVM_OPT_TIME_LIMIT_S; the
- *           progress callback (stage CVM_STAGE_REFINE) can cancel.
+ *           progress callback (stage CVM_STAGE_REFINE) can cancel. CVM_ALGO_FRONTAL
+ *           then post-processes (when refinement completed): CVM_OPT_SWAP, then
+ *           CVM_OPT_SMOOTH_SWEEPS (smoothing moves Steiner points), then
+ *           CVM_OPT_RESTORE_DELAUNAY.
  * Stops:    on the Steiner limit, the time limit or cancellation the mesh is valid
  *           (conforming, constrained Delaunay) with the points inserted so far.
  * Determinism: same input, options and sizing give bit-identical output (except
@@ -823,6 +848,117 @@ CVM_API cvm_status cvm_mesh_view_points(const double **ptr_out, size_t *count_ou
 CVM_API cvm_status cvm_mesh_write(cvm_mesh *m, const char *path);
 
 /* ------------------------------------------------------------------------ */
+/* Weights and the power (Voronoi) dual                                      */
+/* ------------------------------------------------------------------------ */
+/* Each vertex i carries a power weight w_i (squared length units, default 0);
+ * the power distance of a point x to vertex i is |x - p_i|^2 - w_i. The mesh is
+ * then the regular (weighted Delaunay) triangulation of the weighted vertices
+ * (constrained by the segments), and its dual is the power diagram: the power
+ * vertex (orthocentre) of a triangle has equal power distance to its three
+ * corners; with all weights 0 it is the circumcentre and the dual is the
+ * Voronoi diagram. Decisions (regularity, containment) use exact predicates;
+ * positions, lengths and areas are plain doubles. */
+
+/**
+ * Set the power weight of every vertex and make the triangulation regular
+ * again: every non-constrained edge inside the domain (and outside it, never
+ * across its boundary or a region border) is flipped while it fails the exact
+ * power test and its quadrilateral is convex (Lawson flips; ties broken by
+ * symbolic perturbation by vertex index). A vertex whose power cell is empty
+ * (its weight is too small beside its neighbours') would vanish from the
+ * regular triangulation; cvmesh never drops it silently: it stays in the mesh
+ * beside the illegal edges that hold it (their flip would need it removed),
+ * and CVM_MEASURE_VANISHED_VERTICES counts such vertices. When that count is 0
+ * the mesh is the (constrained) regular triangulation and cvm_mesh_check()
+ * verifies it with the exact power test; otherwise cvm_mesh_check() reports
+ * the illegal edges (CVM_E_INTERNAL). Removing such vertices is left to the
+ * dual optimiser (a later version).
+ *
+ * @param m      mesh handle, triangulated; not NULL.
+ * @param w      count weights, one per vertex in CVM_ENT_VERTEX order; NULL with
+ *               count 0 removes the weights (all 0, the mesh becomes Delaunay again).
+ * @param count  must equal the vertex count (cvm_mesh_count(&n, m, CVM_ENT_VERTEX)).
+ * Ownership:    @p w is copied.
+ * Units:        squared length.
+ * Lifetime:     cvm_mesh_triangulate() drops the weights. Set them after the last
+ *               cvm_mesh_refine() or cvm_mesh_insert_points(): vertices those add
+ *               get weight 0.
+ * Output:       cvm_mesh_write() to .node writes the weight as the first attribute
+ *               of each vertex (before the point attributes).
+ * Thread-safety: must not run concurrently with any other call on @p m.
+ * Atomicity:    on error the weights and the triangulation are unchanged.
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG         m is NULL, or w is NULL while count > 0
+ *         CVM_E_STATE            nothing triangulated
+ *         CVM_E_ARGUMENT         count is not the vertex count (message gives both)
+ *         CVM_E_INPUT_NONFINITE  a weight is NaN or infinite (message names vertex k;
+ *                                cvm_mesh_error_item() gives CVM_ENT_VERTEX, k)
+ *         CVM_E_NOMEM
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_mesh_set_weights(cvm_mesh *m, const double *w, size_t count);
+
+/**
+ * Copy the weight of each vertex (0 for every vertex when none were set).
+ * @param dst_len  capacity in doubles; must be >= the vertex count.
+ * @return CVM_OK, CVM_E_NULL_ARG, CVM_E_BUFFER_TOO_SMALL (nothing written)
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_mesh_copy_weights(double *dst, size_t dst_len, const cvm_mesh *m);
+
+/**
+ * Copy the power vertex (orthocentre) of each triangle: 2 doubles per triangle,
+ * in CVM_ENT_TRIANGLE order. A construction: plain doubles, possibly inexact.
+ * @param dst_len  capacity in doubles; must be >= 2 * triangle count.
+ * Units:  length.
+ * @return CVM_OK, CVM_E_NULL_ARG, CVM_E_BUFFER_TOO_SMALL (nothing written)
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_mesh_copy_dual_vertices(double *dst, size_t dst_len, const cvm_mesh *m);
+
+/**
+ * Copy, per triangle in CVM_ENT_TRIANGLE order, 1 when the triangle contains its
+ * power vertex (on an edge counts as inside) and 0 when not. Decided exactly
+ * from the input coordinates and weights: the power vertex of triangle (a, b, c)
+ * lies on c's side of edge ab iff |B|^2 (|C|^2 + w_a - w_c) - (B.C)(|B|^2 + w_a - w_b)
+ * >= 0 with B = b - a, C = c - a; without weights: iff the angle at c is at most
+ * 90 degrees.
+ * @param dst_len  capacity in entries; must be >= the triangle count.
+ * @return CVM_OK, CVM_E_NULL_ARG, CVM_E_BUFFER_TOO_SMALL (nothing written)
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_mesh_copy_dual_inside(int32_t *dst, size_t dst_len, const cvm_mesh *m);
+
+/**
+ * Copy the dual (power) cell area of each vertex, restricted to the domain, by
+ * the co-volume decomposition: each triangle gives vertex p of its edge pq the
+ * signed area of the triangle (p, M, V), with V its power vertex and M the
+ * power-bisector foot of pq (the point of line pq with equal power distance to
+ * p and q). Exact (in real arithmetic) for meshes whose triangles contain their
+ * power vertices; otherwise some pieces are negative, and the areas still sum
+ * to the domain area. A measure: plain doubles.
+ * @param dst_len  capacity in doubles; must be >= the vertex count.
+ * Units:  squared length.
+ * @return CVM_OK, CVM_E_NULL_ARG, CVM_E_BUFFER_TOO_SMALL (nothing written)
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_mesh_copy_dual_areas(double *dst, size_t dst_len, const cvm_mesh *m);
+
+/**
+ * Copy the dual edge length of each edge, in CVM_ENT_EDGE order: for an edge
+ * with a domain triangle on both sides, the distance between their power
+ * vertices; on the domain boundary, the distance from the power vertex of its
+ * triangle to the edge's power-bisector foot (see cvm_mesh_copy_dual_areas()).
+ * Lengths are unsigned. A measure: plain doubles.
+ * @param dst_len  capacity in doubles; must be >= the edge count.
+ * Units:  length.
+ * @return CVM_OK, CVM_E_NULL_ARG, CVM_E_BUFFER_TOO_SMALL (nothing written), CVM_E_NOMEM
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_mesh_copy_dual_edge_lengths(double *dst, size_t dst_len,
+                                                   const cvm_mesh *m);
+
+/* ------------------------------------------------------------------------ */
 /* Quality                                                                   */
 /* ------------------------------------------------------------------------ */
 
@@ -850,8 +986,22 @@ typedef enum cvm_measure {
     CVM_MEASURE_REFINE_SMALL_INPUT_ANGLE = 14, /**< of REFINE_UNMET_ANGLE, those left alone
                                              because a small input angle subtends them */
     CVM_MEASURE_REFINE_REQUESTED_ANGLE = 15, /**< the minimum angle the run asked for, degrees */
-    CVM_MEASURE_REFINE_MET_ANGLE = 16   /**< smallest angle over triangles not subtended by a
+    CVM_MEASURE_REFINE_MET_ANGLE = 16,  /**< smallest angle over triangles not subtended by a
                                              small input angle, degrees */
+    /* The power (weighted Voronoi) dual, see "Weights and the power (Voronoi) dual": */
+    CVM_MEASURE_DUAL_OUTSIDE_PCT = 17,  /**< % of triangles not containing their power vertex
+                                             (decided exactly; on an edge counts as inside) */
+    CVM_MEASURE_DUAL_OUTSIDE_BOUNDARY_PCT = 18, /**< the same % over the triangles with a vertex
+                                             on the domain boundary (0 without any) */
+    CVM_MEASURE_MIN_DUAL_EDGE = 19,     /**< smallest dual edge length over interior edges
+                                             (length units; 0 without interior edges) */
+    CVM_MEASURE_TIME_STEP_PROXY = 20,   /**< smallest min(primal, dual edge length) over interior
+                                             edges: sets the stable explicit time step of a
+                                             co-volume scheme (length units; 0 without any) */
+    CVM_MEASURE_VANISHED_VERTICES = 21  /**< vertices the regular triangulation would drop
+                                             (empty power cell): the blocking corner of each
+                                             illegal edge that no flip can fix; cvmesh keeps
+                                             them (see cvm_mesh_set_weights()) */
 } cvm_measure;
 
 /** Histograms of cvm_mesh_copy_histogram(). */

@@ -282,6 +282,7 @@ CVMPY_IN_ROWS(double, xy, cvmpy_in_double, 2, "xy")
 CVMPY_IN_ROWS(double, r, cvmpy_in_double, 4, "regions")
 CVMPY_IN_ROWS(cvm_index, segs, cvmpy_in_int32, 2, "segments")
 CVMPY_IN_ROWS(int32_t, markers, cvmpy_in_int32, 0, "markers")
+CVMPY_IN_ROWS(double, w, cvmpy_in_double, 0, "weights")
 
 /* ---- outputs: count then copy ----------------------------------------- */
 

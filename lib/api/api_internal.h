@@ -10,7 +10,7 @@
 #include "io/io_internal.h"
 
 /* Options live in one table; index with cvm__option_slot(). */
-#define CVM__NOPTIONS 16
+#define CVM__NOPTIONS 24
 
 struct cvm_mesh {
     cvm__ctx ctx;
@@ -57,5 +57,14 @@ void cvm__mesh_out_free(cvm_mesh *m, cvm__mesh_out *mo);
  * CVM_OK, or CVM_E_ARGUMENT when which is not a refinement measure.
  * cvm_mesh_get_measure() hands these measures to it. */
 cvm_status cvm__refine_measure(double *out, const cvm_mesh *m, cvm_measure which);
+
+/* The dual measures CVM_MEASURE_DUAL_* .. CVM_MEASURE_VANISHED_VERTICES
+ * (lib/api/dual.c); m has triangles. CVM_OK, CVM_E_ARGUMENT, CVM_E_NOMEM. */
+cvm_status cvm__dual_measure(double *out, cvm_mesh *m, cvm_measure which);
+
+/* With weights set: *out receives a fresh array of nattr + 1 values per
+ * vertex, the weight first, then the point attributes (free with cvm__free);
+ * without weights *out is NULL. CVM_OK or CVM_E_NOMEM (no message). */
+cvm_status cvm__mesh_weight_attributes(cvm_mesh *m, double **out);
 
 #endif

@@ -12,6 +12,8 @@ void cvm__mesh_out_free(cvm_mesh *m, cvm__mesh_out *mo)
     cvm__free(&m->ctx, (void *)mo->seg);
     cvm__free(&m->ctx, (void *)mo->smark);
     cvm__free(&m->ctx, (void *)mo->tquality);
+    if (mo->vattr != m->vattr)
+        cvm__free(&m->ctx, (void *)mo->vattr); /* the weight column (lib/api/dual.c) */
     memset(mo, 0, sizeof *mo);
 }
 
@@ -83,6 +85,13 @@ cvm_status cvm__mesh_out_build(cvm_mesh *m, cvm__mesh_out *mo, int want_edges, i
     mo->vmark = m->vmark;
     mo->vattr = m->in.nattr ? m->vattr : NULL;
     mo->nattr = mo->vattr ? m->in.nattr : 0;
+    if (m->tri.w) { /* weights set: the weight is the first attribute */
+        double *wa;
+        if (cvm__mesh_weight_attributes(m, &wa))
+            return cvm__nomem(&m->ctx);
+        mo->vattr = wa;
+        mo->nattr++;
+    }
     if (gather_triangles(m, mo, want_quality) || gather_edges(m, mo, 1) ||
         (want_edges && gather_edges(m, mo, 0))) {
         cvm__mesh_out_free(m, mo);

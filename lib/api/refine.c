@@ -91,6 +91,11 @@ static cvm_status refine_run(cvm_mesh *m, const cvm_sizing *sizing, cvm_algorith
     p.max_steiner = (uint64_t)cvm__opt(m, CVM_OPT_MAX_STEINER);
     p.lens = cvm__opt(m, CVM_OPT_ENCROACH_LENS) != 0;
     p.march = cvm__opt(m, CVM_OPT_MARCH_SEGMENTS) != 0;
+    if (algo == CVM_ALGO_FRONTAL) {
+        p.swap = cvm__opt(m, CVM_OPT_SWAP) != 0;
+        p.smooth_sweeps = (int)cvm__opt(m, CVM_OPT_SMOOTH_SWEEPS);
+    }
+    p.restore_delaunay = cvm__opt(m, CVM_OPT_RESTORE_DELAUNAY) != 0;
     p.sizing = sizing;
     p.seg_ends = ends;
     p.nseg = m->in.nseg;

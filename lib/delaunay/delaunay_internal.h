@@ -181,6 +181,23 @@ cvm_status cvm__tri2_enable_constraints(cvm__tri2 *T);
  * +1 conflict, -1 not, with symbolic perturbation by index. */
 int cvm__tri2_conflict(const cvm__tri2 *T, int32_t t, int32_t p);
 
+/* Restore the regular property (Delaunay without weights) by Lawson flips:
+ * every non-constrained edge between two live real triangles of the same
+ * domain flag and regional attribute whose quad is strictly convex is flipped
+ * while it fails the exact power test (cvm__tri2_conflict). Terminates (each
+ * flip lowers the lifted surface). An illegal edge whose quad is not convex
+ * is left: its reflex corner is a vertex the regular triangulation would drop
+ * (cvm__tri2_count_unregular counts them). *nflips_out (may be NULL) receives
+ * the number of flips. CVM_OK or CVM_E_NOMEM (nothing changed). */
+cvm_status cvm__tri2_make_regular(cvm__tri2 *T, size_t *nflips_out);
+
+/* Number of vertices whose power cell is empty as far as the triangulation
+ * shows: the blocking corner of each illegal, unflippable edge (see
+ * cvm__tri2_make_regular), plus, with weights, vertices without a triangle
+ * (dropped by insertion). mark: nv bytes of caller's scratch, 1 on return for
+ * the blocking corners. */
+size_t cvm__tri2_count_unregular(const cvm__tri2 *T, uint8_t *mark);
+
 /* Verify the structure and (constrained) Delaunay property with exact
  * predicates; on failure sets a message naming the failed check and returns
  * CVM_E_INTERNAL. */

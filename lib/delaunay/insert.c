@@ -8,7 +8,7 @@
 /* A cavity boundary edge: a, b (counter-clockwise as seen from the cavity),
  * the half-edge outside it, its segment, and the flags of the cavity triangle
  * it belonged to. */
-enum { B_A = 0, B_B, B_OUTER, B_SEG, B_FLAGS, B_STRIDE };
+enum { B_A = 0, B_B, B_OUTER, B_SEG, B_FLAGS, B_OWNER, B_STRIDE };
 
 /* p strictly inside segment ab, given orient2d(a, b, p) == 0. */
 static int between(const double *a, const double *b, const double *p)
@@ -117,6 +117,7 @@ static cvm_status grow_cavity(cvm__tri2 *T, int32_t p, int32_t t0, size_t *ncav_
                 T->bnd[nbnd * B_STRIDE + B_OUTER] = T->tn[h];
                 T->bnd[nbnd * B_STRIDE + B_SEG] = seg;
                 T->bnd[nbnd * B_STRIDE + B_FLAGS] = T->tf[t] & CVM__TF_OUT;
+                T->bnd[nbnd * B_STRIDE + B_OWNER] = t;
                 nbnd++;
             }
         }
@@ -187,6 +188,168 @@ static void fill_fan(cvm__tri2 *T, int32_t p, size_t ncav, size_t nbnd, int32_t 
     T->last = first;
 }
 
+/* Re-derive the boundary records of the marked cavity cav[0..ncav). */
+static cvm_status record_boundary(cvm__tri2 *T, size_t ncav, size_t *nbnd_out)
+{
+    size_t i, nbnd = 0;
+    for (i = 0; i < ncav; i++) {
+        int32_t t = T->cav[i];
+        int j;
+        for (j = 0; j < 3; j++) {
+            size_t h = 3 * (size_t)t + j;
+            int32_t *e;
+            if (T->tf[T->tn[h] / 3] & CVM__TF_MARK)
+                continue;
+            if ((nbnd + 1) * B_STRIDE > T->cap_bnd &&
+                cvm__grow(T->ctx, (void **)&T->bnd, &T->cap_bnd, (nbnd + 1) * B_STRIDE,
+                          sizeof(int32_t)))
+                return CVM_E_NOMEM;
+            if (T->ta) {
+                if (nbnd + 1 > T->cap_bta &&
+                    cvm__grow(T->ctx, (void **)&T->bta, &T->cap_bta, nbnd + 1, sizeof(double)))
+                    return CVM_E_NOMEM;
+                T->bta[nbnd] = T->ta[t];
+            }
+            e = T->bnd + nbnd * B_STRIDE;
+            e[B_A] = T->tv[3 * (size_t)t + (j + 1) % 3];
+            e[B_B] = T->tv[3 * (size_t)t + (j + 2) % 3];
+            e[B_OUTER] = T->tn[h];
+            e[B_SEG] = T->te ? T->te[h] : -1;
+            e[B_FLAGS] = T->tf[t] & CVM__TF_OUT;
+            e[B_OWNER] = t;
+            nbnd++;
+        }
+    }
+    *nbnd_out = nbnd;
+    return CVM_OK;
+}
+
+/*
+ * A vertex computed inexactly (a rounded segment intersection) and forced
+ * onto a constrained edge may see some cavity boundary edges from behind, so
+ * the fan would hold inverted triangles. Drop the owners of such edges from
+ * the cavity (never the two triangles of the split edge) until every real
+ * boundary edge is seen counter-clockwise and the cavity is a disc (boundary
+ * edges = triangles + 2). Returns 1 on success, 0 if impossible.
+ */
+static int shrink_to_visible(cvm__tri2 *T, int32_t p, size_t *ncav, size_t *nbnd, int32_t keep0,
+                             int32_t keep1, cvm_status *s_out)
+{
+    const double *pp = cvm__tri2_pt(T, p);
+    *s_out = CVM_OK;
+    for (;;) {
+        size_t i, bad = (size_t)-1;
+        for (i = 0; i < *nbnd && bad == (size_t)-1; i++) {
+            const int32_t *e = T->bnd + i * B_STRIDE;
+            if (e[B_A] >= 0 && e[B_B] >= 0 &&
+                cvm__orient2d(pp, cvm__tri2_pt(T, e[B_A]), cvm__tri2_pt(T, e[B_B])) <= 0)
+                bad = i;
+        }
+        if (bad == (size_t)-1)
+            return *nbnd == *ncav + 2;
+        {
+            int32_t owner = T->bnd[bad * B_STRIDE + B_OWNER];
+            if (owner == keep0 || owner == keep1)
+                return 0;
+            for (i = 0; i < *ncav; i++)
+                if (T->cav[i] == owner)
+                    break;
+            T->cav[i] = T->cav[--*ncav];
+            T->tf[owner] &= (uint8_t)~CVM__TF_MARK;
+        }
+        if ((*s_out = record_boundary(T, *ncav, nbnd)))
+            return 0;
+    }
+}
+
+/* Flip edge j of t (not constrained, both sides real). t = (v, a, b), the
+ * neighbour u = (w, b, a) across it; afterwards t = (v, a, w), u = (w, b, v). */
+static void flip(cvm__tri2 *T, int32_t t, int j)
+{
+    size_t t3 = 3 * (size_t)t;
+    int32_t h = T->tn[t3 + j], u = h / 3, k = h % 3;
+    size_t u3 = 3 * (size_t)u;
+    int32_t v = T->tv[t3 + j], a = T->tv[t3 + (j + 1) % 3], b = T->tv[t3 + (j + 2) % 3];
+    int32_t w = T->tv[u3 + k];
+    int32_t n1 = T->tn[t3 + (j + 1) % 3], n2 = T->tn[t3 + (j + 2) % 3];
+    int32_t n3 = T->tn[u3 + (k + 1) % 3], n4 = T->tn[u3 + (k + 2) % 3];
+    int32_t e1 = -1, e2 = -1, e3 = -1, e4 = -1;
+    if (T->te) {
+        e1 = T->te[t3 + (j + 1) % 3];
+        e2 = T->te[t3 + (j + 2) % 3];
+        e3 = T->te[u3 + (k + 1) % 3];
+        e4 = T->te[u3 + (k + 2) % 3];
+    }
+    T->tv[t3] = v, T->tv[t3 + 1] = a, T->tv[t3 + 2] = w;
+    T->tv[u3] = w, T->tv[u3 + 1] = b, T->tv[u3 + 2] = v;
+    /* t: opp v (a,w) <- n3; opp a (w,v) <- u; opp w (v,a) <- n2 */
+    T->tn[t3] = n3, T->tn[n3] = (int32_t)t3;
+    T->tn[t3 + 2] = n2, T->tn[n2] = (int32_t)t3 + 2;
+    /* u: opp w (b,v) <- n1; opp b (v,w) <- t; opp v (w,b) <- n4 */
+    T->tn[u3] = n1, T->tn[n1] = (int32_t)u3;
+    T->tn[u3 + 2] = n4, T->tn[n4] = (int32_t)u3 + 2;
+    T->tn[t3 + 1] = (int32_t)u3 + 1, T->tn[u3 + 1] = (int32_t)t3 + 1;
+    if (T->te) {
+        T->te[t3] = e3, T->te[t3 + 1] = -1, T->te[t3 + 2] = e2;
+        T->te[u3] = e1, T->te[u3 + 1] = -1, T->te[u3 + 2] = e4;
+    }
+    if (v >= 0)
+        T->vtri[v] = t;
+    if (a >= 0)
+        T->vtri[a] = t;
+    if (w >= 0)
+        T->vtri[w] = u;
+    if (b >= 0)
+        T->vtri[b] = u;
+}
+
+/* Lawson flips from the edges opposite p of the new triangles until every
+ * unconstrained edge around p is locally (constrained) Delaunay. */
+static cvm_status legalize(cvm__tri2 *T, int32_t p)
+{
+    size_t n = 0;
+    int32_t t0 = T->vtri[p], t = t0;
+    /* seed with the link of p: rotate around p */
+    do {
+        const int32_t *v = T->tv + 3 * (size_t)t;
+        int i = v[0] == p ? 0 : v[1] == p ? 1 : 2;
+        if (n + 2 > T->cap_stack &&
+            cvm__grow(T->ctx, (void **)&T->stack, &T->cap_stack, n + 2, sizeof(int32_t)))
+            return CVM_E_NOMEM;
+        T->stack[n++] = 3 * t + i;
+        t = T->tn[3 * (size_t)t + (i + 1) % 3] / 3;
+    } while (t != t0);
+    while (n) {
+        int32_t h = T->stack[--n], u, k;
+        int j = h % 3;
+        const int32_t *v;
+        t = h / 3;
+        v = T->tv + 3 * (size_t)t;
+        if (v[j] != p || cvm__tri2_is_ghost(T, t) || (T->te && T->te[h] >= 0))
+            continue;
+        u = T->tn[h] / 3;
+        k = T->tn[h] % 3;
+        if (cvm__tri2_is_ghost(T, u))
+            continue;
+        {
+            const double *pp = cvm__tri2_pt(T, p), *pa = cvm__tri2_pt(T, v[(j + 1) % 3]),
+                         *pb = cvm__tri2_pt(T, v[(j + 2) % 3]);
+            const double *pw = cvm__tri2_pt(T, T->tv[3 * (size_t)u + k]);
+            if (cvm__tri2_conflict(T, t, T->tv[3 * (size_t)u + k]) <= 0)
+                continue;
+            if (cvm__orient2d(pp, pa, pw) <= 0 || cvm__orient2d(pw, pb, pp) <= 0)
+                continue;
+        }
+        flip(T, t, j);
+        if (n + 2 > T->cap_stack &&
+            cvm__grow(T->ctx, (void **)&T->stack, &T->cap_stack, n + 2, sizeof(int32_t)))
+            return CVM_E_NOMEM;
+        T->stack[n++] = 3 * t;     /* t = (p, a, w): edge opposite p */
+        T->stack[n++] = 3 * u + 2; /* u = (w, b, p): edge opposite p */
+    }
+    return CVM_OK;
+}
+
 static cvm_status insert_from(cvm__tri2 *T, int32_t v, int32_t t0, int fe_t, int fe_j,
                               double min_dist, cvm__ins *res_out, int32_t *other_out)
 {
@@ -221,6 +384,17 @@ static cvm_status insert_from(cvm__tri2 *T, int32_t v, int32_t t0, int fe_t, int
             return CVM_OK;
         }
     }
+    if (fe_t >= 0) {
+        int32_t nb = T->tn[3 * (size_t)fe_t + fe_j] / 3;
+        if (!shrink_to_visible(T, v, &ncav, &nbnd, fe_t, nb, &s)) {
+            unmark(T, ncav);
+            if (s)
+                return s;
+            return cvm__error(T->ctx, CVM_E_INTERNAL, CVM_ENT_VERTEX, v,
+                              "vertex %ld, computed to split an edge, rounded too far off it to "
+                              "be inserted", (long)v);
+        }
+    }
     if (nbnd > ncav && cvm__tri2_reserve_triangles(T, T->nt + (nbnd - ncav))) {
         unmark(T, ncav);
         return CVM_E_NOMEM;
@@ -242,6 +416,8 @@ static cvm_status insert_from(cvm__tri2 *T, int32_t v, int32_t t0, int fe_t, int
         }
     }
     fill_fan(T, v, ncav, nbnd, sa, sb, sseg);
+    if (fe_t >= 0 && (s = legalize(T, v)))
+        return s; /* the triangulation is valid, only not yet Delaunay around v */
     *res_out = CVM__INS_DONE;
     *other_out = -1;
     return CVM_OK;

@@ -93,6 +93,9 @@ typedef struct cvm__refine_params {
     const cvm_sizing *sizing;  /* may be NULL */
     const int32_t *seg_ends;   /* 2 per segment id: the vertices ending the input segment */
     size_t nseg;               /* segment ids 0..nseg-1 */
+    int swap;                  /* 1: swap edges towards degree 6 after refining */
+    int smooth_sweeps;         /* sweeps of smart Laplacian smoothing after refining */
+    int restore_delaunay;      /* 1: restore the constrained Delaunay property at the end */
 } cvm__refine_params;
 
 /* What a run did (see CVM_MEASURE_REFINE_* in cvmesh.h). */
@@ -198,5 +201,33 @@ cvm_status cvm__rf_delaunay(cvm__refiner *R);
 
 /* Run the frontal pass (then the caller runs cvm__rf_delaunay to clean up). */
 cvm_status cvm__rf_frontal(cvm__refiner *R);
+
+/* ---- post-processing (swap.c, smooth.c) ---- */
+
+/* sin^2 of the smallest angle of triangle (p, q, r); 0 unless counter-clockwise. */
+double cvm__rf_min_sin2(const double *p, const double *q, const double *r);
+/* Sweeps of edge flips (triangle index order) towards the ideal vertex degree
+ * (6 inside; round(boundary angle / 60 degrees) + 1 on the boundary): an
+ * unconstrained edge between two domain triangles whose quadrilateral is
+ * strictly convex (exact orient2d) is flipped when the sum of squared degree
+ * deviations of its four vertices drops and both new triangles keep every
+ * angle with sin^2 >= sin2_min. The result need not be Delaunay.
+ * CVM_OK or CVM_E_NOMEM (the triangulation stays valid). */
+cvm_status cvm__rf_swap_degree(cvm__tri2 *T, double sin2_min, size_t *flips_out);
+/* Lawson flips (exact in-circle) until every unconstrained edge between two
+ * domain triangles is locally Delaunay. CVM_OK or CVM_E_NOMEM (valid, maybe
+ * not Delaunay). */
+cvm_status cvm__rf_restore_delaunay(cvm__tri2 *T, size_t *flips_out);
+/* Smart Laplacian smoothing: sweeps over vertices first..nv-1 in index order
+ * (Steiner points only: input points never move); a vertex whose star is in
+ * the domain with no constrained spoke (so never a vertex on a segment) moves
+ * to the centroid of its neighbours when every star triangle stays strictly
+ * counter-clockwise (exact orient2d), the star's regularity improves (fewer
+ * obtuse angles, more angles in [55, 65] degrees, then mean ratio), no more
+ * star triangles exceed the size bound (R->vls, max_area) and no angle drops
+ * below min(the star's smallest angle, the requested angle). Floating point
+ * decides only which valid mesh results. Breaks the Delaunay property.
+ * CVM_OK or CVM_E_NOMEM (the triangulation stays valid). */
+cvm_status cvm__rf_smooth(cvm__refiner *R, size_t first, int sweeps, size_t *moves_out);
 
 #endif

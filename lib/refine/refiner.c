@@ -216,10 +216,26 @@ static void rf_report(cvm__refiner *R, cvm__refine_report *rep)
     }
 }
 
+/* Post-processing (swap.c, smooth.c) of the Steiner vertices first..nv-1:
+ * degree swapping, smoothing, then the Delaunay-restoring flips. */
+static cvm_status rf_post(cvm__refiner *R, size_t first)
+{
+    const cvm__refine_params *p = R->p;
+    cvm_status s = CVM_OK;
+    if (p->swap)
+        s = cvm__rf_swap_degree(R->T, R->sin2_min, NULL);
+    if (!s && p->smooth_sweeps > 0)
+        s = cvm__rf_smooth(R, first, p->smooth_sweeps, NULL);
+    if (!s && p->restore_delaunay && (p->swap || p->smooth_sweeps > 0))
+        s = cvm__rf_restore_delaunay(R->T, NULL);
+    return s;
+}
+
 cvm_status cvm__refine(cvm__tri2 *T, const cvm__refine_params *p, cvm__refine_report *rep)
 {
     cvm__refiner R;
     cvm_status s;
+    size_t first = T->nv;
     memset(rep, 0, sizeof *rep);
     s = rf_setup(&R, T, p);
     if (!s && p->march && !cvm__sizing_is_empty(p->sizing))
@@ -230,6 +246,8 @@ cvm_status cvm__refine(cvm__tri2 *T, const cvm__refine_params *p, cvm__refine_re
         s = cvm__rf_frontal(&R);
     if (!s)
         s = cvm__rf_delaunay(&R);
+    if (!s)
+        s = rf_post(&R, first);
     if (!cvm_status_is_error(s))
         rf_report(&R, rep);
     rep->steiner = R.steiner;

@@ -1,0 +1,365 @@
+/*
+ * dual.c - per-vertex power weights and the power (weighted Voronoi) dual of
+ * the domain triangles as API arrays and measures.
+ *
+ * Decisions (containment, regularity) are exact (lib/dual, lib/delaunay);
+ * positions, lengths and areas are plain doubles (constructions and measures).
+ * Output order follows output_internal.h: triangles in slot order, edges
+ * sorted by (lower, higher) vertex id.
+ */
+#include <math.h>
+#include <string.h>
+
+#include "output_internal.h"
+#include "dual/dual_internal.h"
+
+static cvm__ctx *alloc_ctx(const cvm_mesh *m)
+{
+    return (cvm__ctx *)&m->ctx; /* allocation does not change the handle */
+}
+
+static double weight(const cvm__tri2 *T, int32_t v)
+{
+    return T->w ? T->w[v] : 0.0;
+}
+
+/* Power vertex of slot t into out[2]. */
+static void tri_vertex(const cvm__tri2 *T, size_t t, double *out)
+{
+    const int32_t *v = T->tv + 3 * t;
+    cvm__power_vertex2d(T->xy + 2 * (size_t)v[0], T->xy + 2 * (size_t)v[1], T->xy + 2 * (size_t)v[2],
+                        weight(T, v[0]), weight(T, v[1]), weight(T, v[2]), out);
+}
+
+/* 1 when slot t contains its power vertex (closed: on an edge counts). */
+static int tri_contains(const cvm__tri2 *T, size_t t)
+{
+    const int32_t *v = T->tv + 3 * t;
+    int k;
+    for (k = 0; k < 3; k++) {
+        int32_t a = v[k], b = v[(k + 1) % 3], c = v[(k + 2) % 3];
+        if (cvm__power_side2d(T->xy + 2 * (size_t)a, T->xy + 2 * (size_t)b, T->xy + 2 * (size_t)c,
+                              weight(T, a), weight(T, b), weight(T, c)) < 0)
+            return 0;
+    }
+    return 1;
+}
+
+static size_t n_triangles(const cvm_mesh *m)
+{
+    return m->triangulated ? cvm__domain_triangles(&m->tri) : 0;
+}
+
+static cvm_status room(const void *dst, size_t dst_len, size_t need)
+{
+    if (!dst && dst_len)
+        return CVM_E_NULL_ARG;
+    return dst_len < need ? CVM_E_BUFFER_TOO_SMALL : CVM_OK;
+}
+
+cvm_status cvm_mesh_set_weights(cvm_mesh *m, const double *w, size_t count)
+{
+    cvm__tri2 *T;
+    double *old = NULL, *nw;
+    size_t v, nv;
+    cvm_status s;
+    if (!m)
+        return CVM_E_NULL_ARG;
+    CVM__BEGIN(m);
+    T = &m->tri;
+    if (!w && count)
+        return cvm__error(&m->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "w is NULL");
+    if (!m->triangulated)
+        return cvm__error(&m->ctx, CVM_E_STATE, CVM_ENT_NONE, -1,
+                          "no triangulation: call cvm_mesh_triangulate() first");
+    nv = T->nv;
+    if (w && count != nv)
+        return cvm__error(&m->ctx, CVM_E_ARGUMENT, CVM_ENT_NONE, -1,
+                          "count %lu is not the vertex count %lu", (unsigned long)count,
+                          (unsigned long)nv);
+    for (v = 0; w && v < nv; v++)
+        if (!isfinite(w[v]))
+            return cvm__error(&m->ctx, CVM_E_INPUT_NONFINITE, CVM_ENT_VERTEX, (int64_t)v,
+                              "weight of vertex %lu is not finite", (unsigned long)v);
+    /* keep the old weights until the flips succeeded */
+    old = T->w;
+    nw = w ? cvm__malloc(&m->ctx, (T->cap_v ? T->cap_v : 1) * sizeof *nw) : NULL;
+    if (w && !nw)
+        return cvm__nomem(&m->ctx);
+    if (nw)
+        memcpy(nw, w, nv * sizeof *nw);
+    T->w = nw;
+    if ((s = cvm__tri2_make_regular(T, NULL))) {
+        T->w = old;
+        cvm__free(&m->ctx, nw);
+        return s == CVM_E_NOMEM ? cvm__nomem(&m->ctx) : s;
+    }
+    cvm__free(&m->ctx, old);
+    return CVM_OK;
+}
+
+cvm_status cvm_mesh_copy_weights(double *dst, size_t dst_len, const cvm_mesh *m)
+{
+    size_t nv;
+    cvm_status s;
+    if (!m)
+        return CVM_E_NULL_ARG;
+    nv = m->triangulated ? m->tri.nv : 0;
+    if ((s = room(dst, dst_len, nv)))
+        return s;
+    if (nv && m->tri.w)
+        memcpy(dst, m->tri.w, nv * sizeof *dst);
+    else if (nv)
+        memset(dst, 0, nv * sizeof *dst);
+    return CVM_OK;
+}
+
+cvm_status cvm_mesh_copy_dual_vertices(double *dst, size_t dst_len, const cvm_mesh *m)
+{
+    size_t t, k = 0;
+    cvm_status s;
+    if (!m)
+        return CVM_E_NULL_ARG;
+    if ((s = room(dst, dst_len, 2 * n_triangles(m))) || !m->triangulated)
+        return s;
+    for (t = 0; t < m->tri.nt; t++)
+        if (cvm__tri2_in_domain(&m->tri, (int32_t)t))
+            tri_vertex(&m->tri, t, dst + 2 * k++);
+    return CVM_OK;
+}
+
+cvm_status cvm_mesh_copy_dual_inside(int32_t *dst, size_t dst_len, const cvm_mesh *m)
+{
+    size_t t, k = 0;
+    cvm_status s;
+    if (!m)
+        return CVM_E_NULL_ARG;
+    if ((s = room(dst, dst_len, n_triangles(m))) || !m->triangulated)
+        return s;
+    for (t = 0; t < m->tri.nt; t++)
+        if (cvm__tri2_in_domain(&m->tri, (int32_t)t))
+            dst[k++] = tri_contains(&m->tri, t);
+    return CVM_OK;
+}
+
+cvm_status cvm_mesh_copy_dual_areas(double *dst, size_t dst_len, const cvm_mesh *m)
+{
+    const cvm__tri2 *T;
+    size_t t, nv;
+    int j;
+    cvm_status s;
+    if (!m)
+        return CVM_E_NULL_ARG;
+    nv = m->triangulated ? m->tri.nv : 0;
+    if ((s = room(dst, dst_len, nv)) || !nv)
+        return s;
+    T = &m->tri;
+    memset(dst, 0, nv * sizeof *dst);
+    for (t = 0; t < T->nt; t++) {
+        const int32_t *v = T->tv + 3 * t;
+        double V[2];
+        if (!cvm__tri2_in_domain(T, (int32_t)t))
+            continue;
+        tri_vertex(T, t, V);
+        for (j = 0; j < 3; j++) {
+            int32_t a = v[j], b = v[(j + 1) % 3];
+            const double *p = T->xy + 2 * (size_t)a, *q = T->xy + 2 * (size_t)b;
+            double M[2];
+            cvm__power_foot2d(p, q, weight(T, a), weight(T, b), M);
+            /* kite pieces (p, M, V) and (q, V, M), signed */
+            dst[a] += 0.5 * ((M[0] - p[0]) * (V[1] - p[1]) - (M[1] - p[1]) * (V[0] - p[0]));
+            dst[b] += 0.5 * ((V[0] - q[0]) * (M[1] - q[1]) - (V[1] - q[1]) * (M[0] - q[0]));
+        }
+    }
+    return CVM_OK;
+}
+
+/* Index of edge (a, b) in the sorted edge list e, or -1. */
+static ptrdiff_t find_edge(const cvm__edges *e, int32_t a, int32_t b)
+{
+    int32_t lo = a < b ? a : b, hi = a < b ? b : a;
+    size_t l = 0, r = e->n;
+    while (l < r) {
+        size_t mid = l + (r - l) / 2;
+        const int32_t *x = e->ev + 2 * mid;
+        if (x[0] < lo || (x[0] == lo && x[1] < hi))
+            l = mid + 1;
+        else
+            r = mid;
+    }
+    return l < e->n && e->ev[2 * l] == lo && e->ev[2 * l + 1] == hi ? (ptrdiff_t)l : -1;
+}
+
+/* Dual edge length of every edge of e (filled by the caller with
+ * cvm__domain_edges) into len (e->n entries). */
+static cvm_status dual_lengths(cvm__ctx *ctx, const cvm__tri2 *T, const cvm__edges *e, double *len)
+{
+    double *first = cvm__malloc(ctx, (2 * e->n + 1) * sizeof *first);
+    uint8_t *have = cvm__calloc(ctx, e->n + 1, 1);
+    size_t t;
+    int j;
+    if (!first || !have) {
+        cvm__free(ctx, first);
+        cvm__free(ctx, have);
+        return CVM_E_NOMEM;
+    }
+    for (t = 0; t < T->nt; t++) {
+        const int32_t *v = T->tv + 3 * t;
+        double V[2];
+        if (!cvm__tri2_in_domain(T, (int32_t)t))
+            continue;
+        tri_vertex(T, t, V);
+        for (j = 0; j < 3; j++) {
+            int32_t a = v[(j + 1) % 3], b = v[(j + 2) % 3];
+            ptrdiff_t k = find_edge(e, a, b);
+            if (k < 0)
+                continue; /* cannot happen: e holds every domain edge */
+            if (e->bnd[k]) {
+                double M[2];
+                cvm__power_foot2d(T->xy + 2 * (size_t)a, T->xy + 2 * (size_t)b, weight(T, a),
+                                  weight(T, b), M);
+                len[k] = hypot(V[0] - M[0], V[1] - M[1]);
+            } else if (have[k]) {
+                len[k] = hypot(V[0] - first[2 * k], V[1] - first[2 * k + 1]);
+            } else {
+                first[2 * k] = V[0];
+                first[2 * k + 1] = V[1];
+                have[k] = 1;
+            }
+        }
+    }
+    cvm__free(ctx, first);
+    cvm__free(ctx, have);
+    return CVM_OK;
+}
+
+cvm_status cvm_mesh_copy_dual_edge_lengths(double *dst, size_t dst_len, const cvm_mesh *m)
+{
+    size_t ne = 0, ns = 0;
+    cvm__edges e;
+    cvm_status s;
+    if (!m)
+        return CVM_E_NULL_ARG;
+    if (m->triangulated)
+        cvm__domain_edge_counts(&m->tri, &ne, &ns);
+    if ((s = room(dst, dst_len, ne)) || !ne)
+        return s;
+    if (cvm__domain_edges(alloc_ctx(m), &m->tri, 0, &e))
+        return CVM_E_NOMEM;
+    s = dual_lengths(alloc_ctx(m), &m->tri, &e, dst);
+    cvm__edges_free(alloc_ctx(m), &e);
+    return s;
+}
+
+/* Containment counts: all triangles, and those with a vertex on the domain boundary. */
+static cvm_status outside_pct(cvm_mesh *m, int boundary_only, double *out)
+{
+    const cvm__tri2 *T = &m->tri;
+    uint8_t *on_bnd = NULL;
+    size_t t, n = 0, nout = 0, k;
+    if (boundary_only) {
+        cvm__edges e;
+        if (cvm__domain_edges(&m->ctx, T, 0, &e))
+            return cvm__nomem(&m->ctx);
+        on_bnd = cvm__calloc(&m->ctx, T->nv + 1, 1);
+        if (!on_bnd) {
+            cvm__edges_free(&m->ctx, &e);
+            return cvm__nomem(&m->ctx);
+        }
+        for (k = 0; k < e.n; k++)
+            if (e.bnd[k])
+                on_bnd[e.ev[2 * k]] = on_bnd[e.ev[2 * k + 1]] = 1;
+        cvm__edges_free(&m->ctx, &e);
+    }
+    for (t = 0; t < T->nt; t++) {
+        const int32_t *v = T->tv + 3 * t;
+        if (!cvm__tri2_in_domain(T, (int32_t)t))
+            continue;
+        if (on_bnd && !on_bnd[v[0]] && !on_bnd[v[1]] && !on_bnd[v[2]])
+            continue;
+        n++;
+        nout += !tri_contains(T, t);
+    }
+    cvm__free(&m->ctx, on_bnd);
+    *out = n ? 100.0 * (double)nout / (double)n : 0.0;
+    return CVM_OK;
+}
+
+/* Smallest dual edge, and smallest min(primal, dual), over interior edges. */
+static cvm_status interior_minima(cvm_mesh *m, double *min_dual, double *min_step)
+{
+    const cvm__tri2 *T = &m->tri;
+    cvm__edges e;
+    double *len, md = HUGE_VAL, ms = HUGE_VAL;
+    size_t k;
+    if (cvm__domain_edges(&m->ctx, T, 0, &e))
+        return cvm__nomem(&m->ctx);
+    len = cvm__malloc(&m->ctx, (e.n + 1) * sizeof *len);
+    if (!len || dual_lengths(&m->ctx, T, &e, len)) {
+        cvm__free(&m->ctx, len);
+        cvm__edges_free(&m->ctx, &e);
+        return cvm__nomem(&m->ctx);
+    }
+    for (k = 0; k < e.n; k++) {
+        const double *p = T->xy + 2 * (size_t)e.ev[2 * k], *q = T->xy + 2 * (size_t)e.ev[2 * k + 1];
+        double prim;
+        if (e.bnd[k])
+            continue;
+        prim = hypot(p[0] - q[0], p[1] - q[1]);
+        md = len[k] < md ? len[k] : md;
+        ms = prim < ms ? prim : ms;
+        ms = len[k] < ms ? len[k] : ms;
+    }
+    cvm__free(&m->ctx, len);
+    cvm__edges_free(&m->ctx, &e);
+    *min_dual = md == HUGE_VAL ? 0.0 : md;
+    *min_step = ms == HUGE_VAL ? 0.0 : ms;
+    return CVM_OK;
+}
+
+cvm_status cvm__dual_measure(double *out, cvm_mesh *m, cvm_measure which)
+{
+    double md = 0.0, ms = 0.0;
+    cvm_status s;
+    switch (which) {
+    case CVM_MEASURE_DUAL_OUTSIDE_PCT: return outside_pct(m, 0, out);
+    case CVM_MEASURE_DUAL_OUTSIDE_BOUNDARY_PCT: return outside_pct(m, 1, out);
+    case CVM_MEASURE_MIN_DUAL_EDGE:
+    case CVM_MEASURE_TIME_STEP_PROXY:
+        if ((s = interior_minima(m, &md, &ms)))
+            return s;
+        *out = which == CVM_MEASURE_MIN_DUAL_EDGE ? md : ms;
+        return CVM_OK;
+    case CVM_MEASURE_VANISHED_VERTICES: {
+        uint8_t *mark = cvm__malloc(&m->ctx, m->tri.nv + 1);
+        if (!mark)
+            return cvm__nomem(&m->ctx);
+        *out = (double)cvm__tri2_count_unregular(&m->tri, mark);
+        cvm__free(&m->ctx, mark);
+        return CVM_OK;
+    }
+    default:
+        return cvm__error(&m->ctx, CVM_E_ARGUMENT, CVM_ENT_NONE, -1, "unknown measure %d",
+                          (int)which);
+    }
+}
+
+cvm_status cvm__mesh_weight_attributes(cvm_mesh *m, double **out)
+{
+    const cvm__tri2 *T = &m->tri;
+    size_t na = m->vattr ? m->in.nattr : 0, v;
+    double *a;
+    *out = NULL;
+    if (!T->w)
+        return CVM_OK;
+    a = cvm__malloc(&m->ctx, (T->nv * (na + 1) + 1) * sizeof *a);
+    if (!a)
+        return CVM_E_NOMEM;
+    for (v = 0; v < T->nv; v++) {
+        a[v * (na + 1)] = T->w[v];
+        if (na)
+            memcpy(a + v * (na + 1) + 1, m->vattr + v * na, na * sizeof *a);
+    }
+    *out = a;
+    return CVM_OK;
+}

@@ -1,0 +1,133 @@
+/* smooth.c - post-processing by "smart" Laplacian smoothing: a free Steiner vertex moves to the centroid of its neighbours when no star triangle inverts (exact orient2d) and the star gets more regular without losing angle or size bounds. */
+#include <math.h>
+
+#include "refine_internal.h"
+#include "delaunay/tri2_store.h"
+#include "geom/geom_internal.h"
+
+/* Star of v into *star (triangles, counter-clockwise); returns the count, or 0
+ * when v may not move: a star triangle outside the domain or a constrained
+ * spoke edge. *err is set on NOMEM. */
+static size_t sm_star(const cvm__tri2 *T, int32_t v, int32_t **star, size_t *cap, int *err)
+{
+    int32_t t0 = T->vtri[v], t = t0;
+    size_t n = 0;
+    if (t0 < 0)
+        return 0;
+    do {
+        const int32_t *tv = T->tv + 3 * (size_t)t;
+        int i = tv[0] == v ? 0 : tv[1] == v ? 1 : 2;
+        if (!cvm__tri2_in_domain(T, t) || cvm__tri2_edge_seg(T, t, (i + 1) % 3) >= 0 ||
+            cvm__tri2_edge_seg(T, t, (i + 2) % 3) >= 0)
+            return 0;
+        if (n >= *cap && cvm__grow(T->ctx, (void **)star, cap, n + 1, sizeof **star)) {
+            *err = 1;
+            return 0;
+        }
+        (*star)[n++] = t;
+        t = T->tn[3 * (size_t)t + (i + 1) % 3] / 3;
+    } while (t != t0 && n <= T->nt);
+    return t == t0 ? n : 0;
+}
+
+/* Regularity of the star of v with v at p: *bad (lower is better) = number of
+ * obtuse angles - number of angles in [55, 65] degrees + 1e-3 x sum of (1 -
+ * mean ratio); *q = smallest sin^2; *big = triangles above the size bound.
+ * Returns 0 when a triangle is not strictly counter-clockwise (exact orient2d). */
+static int sm_star_eval(const cvm__refiner *R, int32_t v, const double *p, const int32_t *star,
+                        size_t n, double *bad, double *q, int *big)
+{
+    const cvm__tri2 *T = R->T;
+    /* cos^2 of 65 and 55 degrees */
+    const double lo2 = 0.42261826174069944 * 0.42261826174069944;
+    const double hi2 = 0.57357643635104616 * 0.57357643635104616;
+    size_t k;
+    *bad = 0;
+    *q = 1.0;
+    *big = 0;
+    for (k = 0; k < n; k++) {
+        const int32_t *tv = T->tv + 3 * (size_t)star[k];
+        int i = tv[0] == v ? 0 : tv[1] == v ? 1 : 2;
+        int32_t ia = tv[(i + 1) % 3], ib = tv[(i + 2) % 3];
+        const double *a = cvm__tri2_pt(T, ia), *b = cvm__tri2_pt(T, ib);
+        double lpa, lpb, lab, ar, num[3], den[3], s, ls, lmin;
+        int j;
+        if (cvm__orient2d(p, a, b) <= 0)
+            return 0;
+        lpa = (a[0] - p[0]) * (a[0] - p[0]) + (a[1] - p[1]) * (a[1] - p[1]);
+        lpb = (b[0] - p[0]) * (b[0] - p[0]) + (b[1] - p[1]) * (b[1] - p[1]);
+        lab = (b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]);
+        ar = (a[0] - p[0]) * (b[1] - p[1]) - (a[1] - p[1]) * (b[0] - p[0]); /* 2 x area */
+        /* cos of each angle = num / sqrt(den), compared without square roots */
+        num[0] = lpa + lpb - lab;
+        den[0] = 4 * lpa * lpb;
+        num[1] = lpa + lab - lpb;
+        den[1] = 4 * lpa * lab;
+        num[2] = lpb + lab - lpa;
+        den[2] = 4 * lpb * lab;
+        for (j = 0; j < 3; j++) {
+            double n2 = num[j] * num[j];
+            *bad += (num[j] < 0) - (num[j] >= 0 && n2 >= lo2 * den[j] && n2 <= hi2 * den[j]);
+        }
+        *bad += 1e-3 * (1 - 2 * 1.7320508075688772 * ar / (lpa + lpb + lab));
+        lmin = lpa < lpb ? (lpa < lab ? lpa : lab) : (lpb < lab ? lpb : lab);
+        s = lmin * ar * ar / (lpa * lpb * lab);
+        if (s < *q)
+            *q = s;
+        /* too big as in Delaunay refinement: circumradius above the mean size, or the area bound */
+        ls = (R->vls[v] + R->vls[ia] + R->vls[ib]) / 3;
+        if ((isfinite(ls) && lpa * lpb * lab > 4 * ls * ls * ar * ar) ||
+            (R->p->max_area > 0 && ar > 2 * R->p->max_area))
+            (*big)++;
+    }
+    return 1;
+}
+
+cvm_status cvm__rf_smooth(cvm__refiner *R, size_t first, int sweeps, size_t *moves_out)
+{
+    cvm__tri2 *T = R->T;
+    int32_t *star = NULL;
+    size_t cap = 0, v, moves = 0;
+    int sweep, err = 0;
+    if (moves_out)
+        *moves_out = 0;
+    for (sweep = 0; sweep < sweeps; sweep++) {
+        for (v = first; v < T->nv; v++) {
+            size_t n = sm_star(T, (int32_t)v, &star, &cap, &err), k;
+            double p[2] = {0, 0}, b0, b1, q0, q1;
+            double *x = T->xy + 2 * v;
+            int big0, big1;
+            if (err) {
+                cvm__free(T->ctx, star);
+                return cvm__nomem(T->ctx);
+            }
+            if (n < 3)
+                continue;
+            for (k = 0; k < n; k++) {
+                const int32_t *tv = T->tv + 3 * (size_t)star[k];
+                int i = tv[0] == (int32_t)v ? 0 : tv[1] == (int32_t)v ? 1 : 2;
+                const double *a = cvm__tri2_pt(T, tv[(i + 1) % 3]);
+                p[0] += a[0];
+                p[1] += a[1];
+            }
+            p[0] /= (double)n;
+            p[1] /= (double)n;
+            if (!isfinite(p[0]) || !isfinite(p[1]) || (p[0] == x[0] && p[1] == x[1]))
+                continue;
+            if (!sm_star_eval(R, (int32_t)v, x, star, n, &b0, &q0, &big0) ||
+                !sm_star_eval(R, (int32_t)v, p, star, n, &b1, &q1, &big1))
+                continue;
+            /* better regularity, no new triangle above the size bound, and no angle
+             * below min(the star's old smallest angle, the requested angle) */
+            if (!(b1 < b0) || big1 > big0 || q1 < (q0 < R->sin2_min ? q0 : R->sin2_min))
+                continue;
+            x[0] = p[0];
+            x[1] = p[1];
+            moves++;
+        }
+    }
+    cvm__free(T->ctx, star);
+    if (moves_out)
+        *moves_out = moves;
+    return CVM_OK;
+}
