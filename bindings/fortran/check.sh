@@ -6,12 +6,12 @@
 #  3. examples/fortran/channel_poisson.f90 and the Fortran block of
 #     bindings/README.md compile, link against the static library and run.
 # Usage: sh bindings/fortran/check.sh [--build-only]
-# Environment: BUILD (default build, relative to the top), FC (gfortran),
+# Environment: CVM_BUILD or BUILD (build directory, default build, relative to the top), FC (gfortran),
 #   FFLAGS, CVMESH_LIB (static library; default: built with make), LIBS.
 set -eu
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
-build=${BUILD:-build}
+build=${CVM_BUILD:-${BUILD:-build}}
 case $build in /*) ;; *) build=$root/$build ;; esac
 out=$build/fortran
 FC=${FC:-gfortran}

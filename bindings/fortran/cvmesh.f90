@@ -62,6 +62,10 @@ module cvmesh
         procedure :: get_neighbors => cvmf_get_neighbors
         procedure :: get_point_markers => cvmf_get_point_markers
         procedure :: get_measure => cvmf_get_measure
+        procedure :: set_weights => cvmf_set_weights
+        procedure :: get_dual_areas => cvmf_get_dual_areas
+        procedure :: get_dual_edge_lengths => cvmf_get_dual_edge_lengths
+        procedure :: get_dual_vertices => cvmf_get_dual_vertices
         procedure :: write => cvmf_write
         final :: cvmf_final
     end type cvm_mesh_t
@@ -86,6 +90,8 @@ module cvmesh
     private :: cvmf_triangulate, cvmf_insert_points, cvmf_check, cvmf_count, cvmf_get_points
     private :: cvmf_get_triangles, cvmf_get_edges, cvmf_get_segments, cvmf_get_neighbors
     private :: cvmf_get_point_markers, cvmf_get_measure, cvmf_write, cvmf_refine
+    private :: cvmf_set_weights, cvmf_get_dual_areas, cvmf_get_dual_edge_lengths
+    private :: cvmf_get_dual_vertices, cvmf_doubles
     private :: cvmfs_create, cvmfs_destroy, cvmfs_final, cvmfs_errmsg, cvmfs_set_uniform
     private :: cvmfs_add_point_source, cvmfs_add_line_source, cvmfs_report
 
@@ -339,7 +345,8 @@ contains
     !> Refine with Steiner points until every triangle meets min_angle (degrees),
     !> max_area and the sizing: a uniform size, or a cvm_sizing_t. algorithm is
     !> CVM_ALGO_FRONTAL (default) or CVM_ALGO_DELAUNAY. The status may be
-    !> CVM_INCOMPLETE_* (valid mesh, stopped early).
+    !> CVM_INCOMPLETE_* (valid mesh, stopped early). Triangulates first when
+    !> nothing is triangulated yet.
     subroutine cvmf_refine(self, status, algorithm, min_angle, max_area, size, sizing)
         class(cvm_mesh_t), intent(inout) :: self
         integer, intent(out), optional :: status
@@ -349,6 +356,7 @@ contains
         type(cvm_sizing_t) :: own
         type(c_ptr) :: sz
         integer(c_int) :: s, algo
+        integer(c_size_t) :: ntri
         algo = CVM_ALGO_FRONTAL
         if (present(algorithm)) algo = int(algorithm, c_int)
         s = CVM_OK
@@ -366,6 +374,8 @@ contains
             end if
             sz = own%ptr
         end if
+        if (s == CVM_OK) s = cvm_mesh_count(ntri, self%ptr, CVM_ENT_TRIANGLE)
+        if (s == CVM_OK .and. ntri == 0) s = cvm_mesh_triangulate(self%ptr)
         if (s == CVM_OK) s = cvm_mesh_refine(self%ptr, sz, algo)
         call own%destroy()
         call cvmf_report(self, s, status, 'refine')
@@ -512,6 +522,83 @@ contains
         s = cvm_mesh_get_measure(value, self%ptr, int(which, c_int))
         call cvmf_report(self, s, status, 'get_measure')
     end subroutine cvmf_get_measure
+
+    ! ---- weights and the power (Voronoi) dual ---------------------------------
+
+    !> Power weight of every vertex (size = vertex count), making the
+    !> triangulation regular; an empty array removes the weights.
+    subroutine cvmf_set_weights(self, w, status)
+        class(cvm_mesh_t), intent(inout) :: self
+        real(c_double), intent(in) :: w(:)
+        integer, intent(out), optional :: status
+        integer(c_int) :: s
+        real(c_double) :: none(1)
+        if (size(w) == 0) then
+            none = 0
+            s = cvm_mesh_set_weights(self%ptr, none, 0_c_size_t)
+        else
+            s = cvm_mesh_set_weights(self%ptr, w, size(w, 1, c_size_t))
+        end if
+        call cvmf_report(self, s, status, 'set_weights')
+    end subroutine cvmf_set_weights
+
+    ! width doubles per entity of kind, allocated here, filled by which:
+    ! 1 dual areas, 2 dual edge lengths, 3 dual vertices.
+    subroutine cvmf_doubles(self, kind, width, which, v, s)
+        class(cvm_mesh_t), intent(in) :: self
+        integer(c_int), intent(in) :: kind
+        integer, intent(in) :: width, which
+        real(c_double), allocatable, intent(out) :: v(:)
+        integer(c_int), intent(out) :: s
+        integer(c_size_t) :: n
+        n = 0
+        s = cvm_mesh_count(n, self%ptr, kind)
+        if (s /= CVM_OK) n = 0
+        n = n*int(width, c_size_t)
+        allocate (v(n))
+        if (s /= CVM_OK) return
+        select case (which)
+        case (1)
+            s = cvm_mesh_copy_dual_areas(v, n, self%ptr)
+        case (2)
+            s = cvm_mesh_copy_dual_edge_lengths(v, n, self%ptr)
+        case default
+            s = cvm_mesh_copy_dual_vertices(v, n, self%ptr)
+        end select
+    end subroutine cvmf_doubles
+
+    !> Dual (power/Voronoi) cell area of each vertex, within the domain.
+    subroutine cvmf_get_dual_areas(self, area, status)
+        class(cvm_mesh_t), intent(in) :: self
+        real(c_double), allocatable, intent(out) :: area(:)
+        integer, intent(out), optional :: status
+        integer(c_int) :: s
+        call cvmf_doubles(self, CVM_ENT_VERTEX, 1, 1, area, s)
+        call cvmf_report(self, s, status, 'get_dual_areas')
+    end subroutine cvmf_get_dual_areas
+
+    !> Dual edge length of each edge, in the order of get_edges().
+    subroutine cvmf_get_dual_edge_lengths(self, length, status)
+        class(cvm_mesh_t), intent(in) :: self
+        real(c_double), allocatable, intent(out) :: length(:)
+        integer, intent(out), optional :: status
+        integer(c_int) :: s
+        call cvmf_doubles(self, CVM_ENT_EDGE, 1, 2, length, s)
+        call cvmf_report(self, s, status, 'get_dual_edge_lengths')
+    end subroutine cvmf_get_dual_edge_lengths
+
+    !> Power vertex (circumcentre without weights) of each triangle, xy(1:2, k).
+    subroutine cvmf_get_dual_vertices(self, xy, status)
+        class(cvm_mesh_t), intent(in) :: self
+        real(c_double), allocatable, intent(out) :: xy(:, :)
+        integer, intent(out), optional :: status
+        integer(c_int) :: s
+        real(c_double), allocatable :: flat(:)
+        call cvmf_doubles(self, CVM_ENT_TRIANGLE, 2, 3, flat, s)
+        allocate (xy(2, size(flat)/2))
+        if (size(flat) > 0) xy(:, :) = reshape(flat, [2, size(flat)/2])
+        call cvmf_report(self, s, status, 'get_dual_vertices')
+    end subroutine cvmf_get_dual_vertices
 
     !> Write the mesh; the format follows the extension (.vtu, .msh, .node, .svg).
     subroutine cvmf_write(self, path, status)

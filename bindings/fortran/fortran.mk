@@ -1,18 +1,15 @@
 # bindings/fortran/fortran.mk - the Fortran binding; included by the top Makefile.
-#   make fortran          module cvmesh.mod + libcvmesh_fortran.a into $(BUILD)/fortran
-#   make check-fortran    interfaces in step with the header, module tests, examples/fortran
+#   make fortran          cvmesh.mod + libcvmesh_fortran.a (and the example) into $(BUILD)/fortran
 #   make install-fortran  cvmesh.mod into $(PREFIX)/include, libcvmesh_fortran.a into $(PREFIX)/lib
+# `make check-fortran` (in the Makefile) runs bindings/fortran/check.sh: interfaces in
+# step with the header, module tests, the README snippet and examples/fortran.
 ifeq ($(origin FC),default)
   FC := gfortran
 endif
-FORTRAN_CHECK := BUILD=$(BUILD) FC=$(FC) PYTHON=$(PYTHON) CVMESH_LIB=$(STATIC) \
-                 LIBS="-lm $(OMPFLAGS)" sh bindings/fortran/check.sh
 
 fortran: $(STATIC)
-	$(FORTRAN_CHECK) --build-only
-
-check-fortran: $(STATIC)
-	$(FORTRAN_CHECK)
+	CVM_BUILD=$(abspath $(BUILD)) FC=$(FC) PYTHON=$(PYTHON) CVMESH_LIB=$(abspath $(STATIC)) \
+	  LIBS="-lm $(OMPFLAGS)" sh bindings/fortran/check.sh --build-only
 
 install-fortran: fortran
 	install -d $(DESTDIR)$(PREFIX)/include $(DESTDIR)$(PREFIX)/lib

@@ -17,6 +17,7 @@ program test_cvmesh
     call test_insert_points()
     call test_status_text()
     call test_raw_interfaces()
+    call test_refine_and_dual()
 
     print '(a, i0, a, i0, a)', 'fortran: ', passed, ' passed, ', failed, ' failed'
     if (failed > 0) error stop 1
@@ -177,5 +178,44 @@ contains
         s = cvm_option_bounds(b, CVM_OPT_MIN_ANGLE_DEG)
         call expect(s == CVM_OK .and. b%lo <= b%def .and. b%def <= b%hi, 'option bounds struct')
     end subroutine test_raw_interfaces
+
+    subroutine test_refine_and_dual()
+        type(cvm_mesh_t) :: mesh
+        type(cvm_sizing_t) :: sizing
+        real(c_double), allocatable :: area(:), dlen(:), dv(:, :), w(:)
+        integer(c_int32_t), allocatable :: e(:, :), tri(:, :)
+        real(c_double) :: amin
+        integer :: status
+        call square(mesh)
+        call mesh%refine(status, min_angle=25d0, size=0.1d0)
+        if (status == CVM_E_UNSUPPORTED) return
+        call expect(status == CVM_OK, 'refine with a uniform size')
+        call mesh%get_measure(CVM_MEASURE_MIN_ANGLE_DEG, amin)
+        call expect(amin >= 25d0 - 1d-9, 'refined mesh meets the angle')
+        call mesh%get_dual_areas(area)
+        call expect(size(area) == mesh%count(CVM_ENT_VERTEX), 'one dual area per vertex')
+        call expect(abs(sum(area) - 1d0) < 1d-12, 'dual areas sum to the domain area')
+        call mesh%get_edges(e)
+        call mesh%get_dual_edge_lengths(dlen)
+        call expect(size(dlen) == size(e, 2) .and. all(dlen >= 0), 'one dual length per edge')
+        call mesh%get_triangles(tri)
+        call mesh%get_dual_vertices(dv)
+        call expect(all(shape(dv) == [2, size(tri, 2)]), 'one dual vertex per triangle')
+        allocate (w(size(area)))
+        w = 0
+        call mesh%set_weights(w(1:3), status)
+        call expect(status == CVM_E_ARGUMENT, 'weights must match the vertex count')
+        call mesh%set_weights(w, status)
+        call expect(status == CVM_OK, 'zero weights')
+        call sizing%create()
+        call sizing%set_uniform(-1d0, status)
+        call expect(status == CVM_E_ARGUMENT, 'bad uniform size')
+        call expect(index(sizing%errmsg(), 'uniform size') > 0, 'sizing errors name the source')
+        call sizing%set_uniform(0.05d0)
+        call sizing%add_point_source(0d0, 0d0, 0.01d0, 0.2d0)
+        call mesh%refine(status, sizing=sizing)
+        call expect(status == CVM_OK, 'refine with a sizing handle')
+        call sizing%destroy()
+    end subroutine test_refine_and_dual
 
 end program test_cvmesh

@@ -7,12 +7,12 @@
 #  3. when Debian's SWIG is there ($SYSTEM_SWIG, default /usr/bin/swig, 4.1):
 #     rebuild with it, install, pytest again.
 # Usage: sh bindings/python/check.sh [--build-only]   (--build-only: step 1-2, no tests)
-# Environment: BUILD (default build, relative to the top), PYTHON (python3),
+# Environment: CVM_BUILD or BUILD (build directory, default build, relative to the top), PYTHON (python3),
 #   SYSTEM_SWIG, PYTEST_ARGS.
 set -eu
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
-build=${BUILD:-build}
+build=${CVM_BUILD:-${BUILD:-build}}
 case $build in /*) ;; *) build=$root/$build ;; esac
 venv=$build/venv
 dist=$build/python/dist
@@ -29,14 +29,15 @@ py=$venv/bin/python
 # optional: the tests of Mesh.to_meshio() and Mesh.plot() skip without them
 "$py" -m pip install $pipq meshio matplotlib || echo "check-python: meshio/matplotlib not installed; their tests will skip"
 
-# One build tree per SWIG, so no object of one build is reused by the other.
-build_wheel() {  # build_wheel TAG [pip options]
+# A fresh build tree per SWIG, so no object of an earlier build is reused.
+build_wheel() {  # build_wheel TAG DIST [pip options]: build, check and install a wheel
     tag=$1
-    shift
-    rm -rf "$dist"
+    out=$2
+    shift 2
+    rm -rf "$out" "$build/python/$tag"
     CVMESH_WERROR=1 CVMESH_BUILD_DIR=$build/python/$tag \
-        "$py" -m pip wheel $pipq --no-deps -w "$dist" "$@" "$here"
-    whl=$(ls "$dist"/cvmesh-*.whl)
+        "$py" -m pip wheel $pipq --no-deps -w "$out" "$@" "$here"
+    whl=$(ls "$out"/cvmesh-*.whl)
     "$py" - "$whl" <<'PYEOF'
 import sys, zipfile
 names = zipfile.ZipFile(sys.argv[1]).namelist()
@@ -50,21 +51,24 @@ PYEOF
 
 run_tests() {  # run_tests LABEL
     echo "check-python: tests/python ($1)"
-    (cd "$root" && "$venv/bin/pytest" -q -p no:cacheprovider ${PYTEST_ARGS:-} tests/python)
+    (cd "$root" && $limit "$venv/bin/pytest" -q -p no:cacheprovider ${PYTEST_ARGS:-} tests/python)
 }
+limit=""
+command -v timeout >/dev/null 2>&1 && limit="timeout 1800"
 
 echo "check-python: building with the swig wheel (isolated build)"
-build_wheel swig-wheel
+build_wheel swig-wheel "$dist"
 [ "${1:-}" = --build-only ] && exit 0
-"$py" -c "import cvmesh, sys; print('check-python: cvmesh', cvmesh.version(), 'from', cvmesh.__file__)"
+"$py" -c "import cvmesh; print('check-python: cvmesh', cvmesh.version(), 'from', cvmesh.__file__)"
 run_tests "swig wheel $("$venv/bin/swig" -version | awk '/Version/ { print $3 }')"
 
 if [ -x "$SYSTEM_SWIG" ]; then
     echo "check-python: building with $SYSTEM_SWIG"
-    CVMESH_SWIG=$SYSTEM_SWIG build_wheel system-swig --no-build-isolation
+    CVMESH_SWIG=$SYSTEM_SWIG build_wheel system-swig "$build/python/dist-system-swig" \
+        --no-build-isolation
     run_tests "$SYSTEM_SWIG $("$SYSTEM_SWIG" -version | awk '/Version/ { print $3 }')"
     # leave the swig-wheel build installed, as users get it
-    build_wheel swig-wheel
+    "$py" -m pip install $pipq --force-reinstall --no-deps "$dist"/cvmesh-*.whl
 else
     echo "check-python: $SYSTEM_SWIG not found; skipped the build with the system SWIG"
 fi

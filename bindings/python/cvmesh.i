@@ -6,19 +6,18 @@
  * appears in Python without a change here as long as it follows the house
  * conventions (STYLE.md sections 2, 4, 6):
  *   - it returns cvm_status: an error raises a cvmesh.Error subclass carrying
- *     cvm_mesh_errmsg() of its cvm_mesh argument (typemaps below); OK returns
- *     None (or its outputs); an incomplete status (>= 100) emits
- *     cvmesh.IncompleteWarning, except for calls listed with CVMPY_LONG_CALL,
- *     which return the status as an int (0 or >= 100) before their outputs;
- *   - its handle parameter is named m, its outputs come first and use the
- *     names typemapped here (out, *_out, dst + dst_len) or cvmesh_numpy.i;
- *   - a long call (one that reports progress) is listed with CVMPY_LONG_CALL
- *     so that it releases the GIL and returns its status.
- * A handle parameter must be named as the typemaps below expect (cvm_mesh *m,
- * cvm_sizing *s); a new handle type needs its argout typemap (3 lines). A
- * function with a handle parameter that does not return cvm_status must be
- * given a helper below (as the _free and _errmsg functions are), and a C
- * callback needs a trampoline (as progress and sizing callbacks have).
+ *     the message of its handle (cvm_mesh_errmsg(), cvm_sizing_errmsg()); OK
+ *     returns None or its outputs; an incomplete status (>= 100) emits
+ *     cvmesh.IncompleteWarning;
+ *   - its handle parameter is named as the argout typemaps below expect
+ *     (cvm_mesh *m, cvm_sizing *s), and its outputs come first with the names
+ *     typemapped here (out, *_out, dst + dst_len) or in cvmesh_numpy.i;
+ *   - a call that reports progress is listed with CVMPY_LONG_CALL: it releases
+ *     the GIL and returns its status as an int (0 or >= 100) before its outputs.
+ * What needs a line here: a new handle type (its argout and CVMPY_HANDLE_OUT),
+ * a function with a handle parameter that does not return cvm_status (a
+ * helper, as for the _free and _errmsg functions), a C callback (a trampoline,
+ * as for progress and sizing callbacks), a new input shape (cvmesh_numpy.i).
  */
 %module(package="cvmesh") capi
 
@@ -125,15 +124,20 @@ static PyObject *cvmpy_status_result(cvm_status s, int long_call)
         cvmpy_raise(result, cvm_sizing_errmsg($1), CVM_ENT_NONE, -1);
 }
 
-/* CVMPY_LONG_CALL(name): release the GIL around the call and return the
- * status as an int; the progress callback re-acquires the GIL. Naming a
- * function that the header does not (yet) declare is harmless. */
-%define CVMPY_LONG_CALL(NAME)
+/* CVMPY_NOGIL(name): release the GIL around the call (it must not touch
+ * Python objects; a C callback it makes re-acquires the GIL).
+ * CVMPY_LONG_CALL(name): the same, and return the status as an int, for the
+ * calls that report progress and can stop early. Naming a function that the
+ * header does not declare is harmless. */
+%define CVMPY_NOGIL(NAME)
 %exception NAME {
     Py_BEGIN_ALLOW_THREADS
     $action
     Py_END_ALLOW_THREADS
 }
+%enddef
+%define CVMPY_LONG_CALL(NAME)
+CVMPY_NOGIL(NAME)
 %typemap(out) cvm_status NAME {
     $result = cvmpy_status_result($1, 1);
 }
@@ -144,6 +148,7 @@ CVMPY_LONG_CALL(cvm_mesh_refine)
 CVMPY_LONG_CALL(cvm_mesh_read)
 CVMPY_LONG_CALL(cvm_mesh_write)
 CVMPY_LONG_CALL(cvm_mesh_check)
+CVMPY_NOGIL(cvm_mesh_set_weights)
 
 /* ---- scalar outputs ---------------------------------------------------- */
 
@@ -192,20 +197,21 @@ CVMPY_HANDLE_OUT(cvm_sizing)
 
 /* ---- helpers for functions outside the conventions --------------------- */
 
+/* Each is replaced by a cvmpy_ helper of the same Python name. */
 %ignore cvm_mesh_free;
+%ignore cvm_mesh_errmsg;
+%ignore cvm_mesh_set_progress;
+%ignore cvm_mesh_insert_points;
 %ignore cvm_sizing_free;
 %ignore cvm_sizing_errmsg;
 %ignore cvm_sizing_set_callback;
-%rename(cvm_sizing_free) cvmpy_sizing_free;
-%rename(cvm_sizing_errmsg) cvmpy_sizing_errmsg;
-%rename(cvm_sizing_set_callback) cvmpy_sizing_set_callback;
 %rename(cvm_mesh_free) cvmpy_mesh_free;
 %rename(cvm_mesh_errmsg) cvmpy_mesh_errmsg;
 %rename(cvm_mesh_set_progress) cvmpy_set_progress;
 %rename(cvm_mesh_insert_points) cvmpy_insert_points;
-%ignore cvm_mesh_errmsg;
-%ignore cvm_mesh_set_progress;
-%ignore cvm_mesh_insert_points;
+%rename(cvm_sizing_free) cvmpy_sizing_free;
+%rename(cvm_sizing_errmsg) cvmpy_sizing_errmsg;
+%rename(cvm_sizing_set_callback) cvmpy_sizing_set_callback;
 /* Allocation hooks are C function pointers; there is nothing to pass from Python. */
 %ignore cvm_mesh_create_with_allocator;
 %ignore cvm_malloc_fn;

@@ -12,7 +12,8 @@
  *   (const cvm_index *segs, size_t count)             (m, 2) integer pairs
  *   (const int32_t *markers, size_t count)            (n,) integers
  * Any array-like is accepted; it is converted without a Python loop. Integer
- * arrays of another width are range-checked, never wrapped around.
+ * arrays of another width are range-checked, never wrapped around. An empty
+ * array is passed as (NULL, 0), as C callers do to remove an input.
  *
  * Outputs, "count then copy": the Python argument is the capacity (an int;
  * a new array of that length is created here) or an existing writable
@@ -249,8 +250,8 @@ static PyArrayObject *cvmpy_out_array(PyObject *obj, int typenum, const char *wh
     arr = cvmpy_in_double($input, -1, "points");
     if (!arr)
         SWIG_fail;
-    $1 = (double *)PyArray_DATA(arr);
     $2 = cvmpy_rows(arr);
+    $1 = $2 ? (double *)PyArray_DATA(arr) : NULL;
     $3 = $2 ? (int)cvmpy_cols(arr) : 2;
 }
 %typemap(freearg) (const double *coords, size_t count, int dim) { Py_XDECREF(arr$argnum); }
@@ -260,8 +261,8 @@ static PyArrayObject *cvmpy_out_array(PyObject *obj, int typenum, const char *wh
     arr = cvmpy_in_double($input, -1, "attributes");
     if (!arr)
         SWIG_fail;
-    $1 = (double *)PyArray_DATA(arr);
     $2 = cvmpy_rows(arr);
+    $1 = $2 ? (double *)PyArray_DATA(arr) : NULL;
     $3 = cvmpy_cols(arr);
 }
 %typemap(freearg) (const double *attrs, size_t count, size_t nattr) { Py_XDECREF(arr$argnum); }
@@ -272,8 +273,8 @@ static PyArrayObject *cvmpy_out_array(PyObject *obj, int typenum, const char *wh
     arr = CONVERT($input, NCOLS, WHAT);
     if (!arr)
         SWIG_fail;
-    $1 = (CTYPE *)PyArray_DATA(arr);
     $2 = cvmpy_rows(arr);
+    $1 = $2 ? (CTYPE *)PyArray_DATA(arr) : NULL; /* empty: NULL, as C callers pass */
 }
 %typemap(freearg) (const CTYPE *NAME, size_t count) { Py_XDECREF(arr$argnum); }
 %enddef

@@ -43,6 +43,13 @@ def library_sources(root):
     return sorted(str(p) for p in (root / "lib").glob("*/*.c") if p.parent.name != "cli")
 
 
+def inputs(root):
+    """Every file the extension is built from besides cvmesh.i."""
+    files = [HERE / "cvmesh_numpy.i", root / "include" / "cvmesh.h"]
+    files += sorted((root / "lib").glob("*/*.h")) + [Path(p) for p in library_sources(root)]
+    return [str(p) for p in files]
+
+
 def header_version(root):
     text = (root / "include" / "cvmesh.h").read_text()
     parts = [re.search(r"#define\s+CVM_VERSION_%s\s+(\d+)" % k, text) for k in
@@ -100,13 +107,20 @@ class BuildExt(build_ext):
         return [s for s in sources if not s.endswith(".i")] + [str(wrapper)]
 
     def build_extension(self, ext):
+        # build_ext decides "up to date" from ext.sources + ext.depends before
+        # SWIG runs; every input is in them (see inputs()), so a change to the
+        # typemaps, the header or any library source rebuilds the extension.
+        target = Path(self.get_ext_fullpath(ext.name))
+        if not self.force and target.exists() and all(
+                Path(p).stat().st_mtime <= target.stat().st_mtime
+                for p in ext.sources + ext.depends):
+            self.announce("skipping %s (up to date)" % ext.name, level=2)
+            return
         unix = self.compiler.compiler_type == "unix"
         objects = self.compiler.compile(
             library_sources(ROOT), output_dir=self.build_temp,
             include_dirs=[str(ROOT / "include"), str(ROOT / "lib")],
-            extra_postargs=LIB_CFLAGS if unix else [], debug=self.debug,
-            depends=[str(p) for p in (ROOT / "lib").glob("*/*.h")] +
-            [str(ROOT / "include" / "cvmesh.h")])
+            extra_postargs=LIB_CFLAGS if unix else [], debug=self.debug)
         ext.extra_objects = list(ext.extra_objects or []) + objects
         import numpy
         ext.include_dirs = list(ext.include_dirs or []) + [str(ROOT / "include"),
@@ -132,6 +146,6 @@ setup(
     version=header_version(ROOT),
     options={"build": {"build_base": os.environ["CVMESH_BUILD_DIR"]}}
     if os.environ.get("CVMESH_BUILD_DIR") else {},
-    ext_modules=[Extension("cvmesh._capi", sources=["cvmesh.i"])],
+    ext_modules=[Extension("cvmesh._capi", sources=["cvmesh.i"], depends=inputs(ROOT))],
     cmdclass={"build_ext": BuildExt, "sdist": Sdist},
 )

@@ -123,7 +123,8 @@ typedef enum cvm__ins {
     CVM__INS_DONE = 0,      /* inserted */
     CVM__INS_DUPLICATE = 1, /* coincides with vertex *other_out; not inserted */
     CVM__INS_OUTSIDE = 2,   /* outside the hull or the domain (with CVM__INSF_DOMAIN_ONLY) */
-    CVM__INS_TOO_CLOSE = 3  /* closer than min_dist to vertex *other_out */
+    CVM__INS_TOO_CLOSE = 3, /* closer than min_dist to vertex *other_out */
+    CVM__INS_REDUNDANT = 4  /* weights set: its power cell would be empty; not inserted */
 } cvm__ins;
 
 enum {

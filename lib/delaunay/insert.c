@@ -450,6 +450,12 @@ cvm_status cvm__tri2_insert_vertex(cvm__tri2 *T, int32_t v, int32_t hint, int fl
             return CVM_OK;
         }
     }
+    if (T->w && loc != CVM__LOC_OUTSIDE && cvm__tri2_conflict(T, t, v) <= 0) {
+        /* in a regular triangulation a point below the lifted facet of the
+         * triangle containing it has an empty power cell */
+        *res_out = CVM__INS_REDUNDANT;
+        return CVM_OK;
+    }
     return insert_from(T, v, t, -1, -1, min_dist, res_out, other_out);
 }
 

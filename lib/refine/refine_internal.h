@@ -215,13 +215,15 @@ double cvm__rf_min_sin2(const double *p, const double *q, const double *r);
  * CVM_OK or CVM_E_NOMEM (the triangulation stays valid). */
 cvm_status cvm__rf_swap_degree(cvm__tri2 *T, double sin2_min, size_t *flips_out);
 /* Lawson flips (exact in-circle) until every unconstrained edge between two
- * domain triangles is locally Delaunay. CVM_OK or CVM_E_NOMEM (valid, maybe
- * not Delaunay). */
+ * domain triangles is locally Delaunay. CVM_OK, or CVM_E_NOMEM when the edge
+ * stack could not grow: the flips are then finished by allocation-free sweeps,
+ * so the result is (constrained) Delaunay on every return. */
 cvm_status cvm__rf_restore_delaunay(cvm__tri2 *T, size_t *flips_out);
 /* Smart Laplacian smoothing: sweeps over vertices first..nv-1 in index order
  * (Steiner points only: input points never move); a vertex whose star is in
  * the domain with no constrained spoke (so never a vertex on a segment) moves
- * to the centroid of its neighbours when every star triangle stays strictly
+ * to the best of three points on the way to the centroid of its neighbours
+ * (0.5, 1 and 1.5 times the step) when every star triangle stays strictly
  * counter-clockwise (exact orient2d), the star's regularity improves (fewer
  * obtuse angles, more angles in [55, 65] degrees, then mean ratio), no more
  * star triangles exceed the size bound (R->vls, max_area) and no angle drops

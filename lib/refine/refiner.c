@@ -222,12 +222,17 @@ static cvm_status rf_post(cvm__refiner *R, size_t first)
 {
     const cvm__refine_params *p = R->p;
     cvm_status s = CVM_OK;
+    cvm_status s2;
+    if (R->T->w)
+        return CVM_OK; /* a weighted (regular) triangulation: left as refined */
     if (p->swap)
         s = cvm__rf_swap_degree(R->T, R->sin2_min, NULL);
     if (!s && p->smooth_sweeps > 0)
         s = cvm__rf_smooth(R, first, p->smooth_sweeps, NULL);
-    if (!s && p->restore_delaunay && (p->swap || p->smooth_sweeps > 0))
-        s = cvm__rf_restore_delaunay(R->T, NULL);
+    /* restored even after an error above: it finishes without memory if it must */
+    if (p->restore_delaunay && (p->swap || p->smooth_sweeps > 0) &&
+        (s2 = cvm__rf_restore_delaunay(R->T, NULL)) != CVM_OK && !s)
+        s = s2;
     return s;
 }
 

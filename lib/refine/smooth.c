@@ -1,4 +1,4 @@
-/* smooth.c - post-processing by "smart" Laplacian smoothing: a free Steiner vertex moves to the centroid of its neighbours when no star triangle inverts (exact orient2d) and the star gets more regular without losing angle or size bounds. */
+/* smooth.c - post-processing by "smart" Laplacian smoothing: a free Steiner vertex moves towards the centroid of its neighbours when no star triangle inverts (exact orient2d) and the star gets more regular without losing angle or size bounds. */
 #include <math.h>
 
 #include "refine_internal.h"
@@ -52,7 +52,7 @@ static int sm_star_eval(const cvm__refiner *R, int32_t v, const double *p, const
         const double *a = cvm__tri2_pt(T, ia), *b = cvm__tri2_pt(T, ib);
         double lpa, lpb, lab, ar, num[3], den[3], s, ls, lmin;
         int j;
-        if (cvm__orient2d(p, a, b) <= 0)
+        if (cvm__orient2d_inline(p, a, b) <= 0)
             return 0;
         lpa = (a[0] - p[0]) * (a[0] - p[0]) + (a[1] - p[1]) * (a[1] - p[1]);
         lpb = (b[0] - p[0]) * (b[0] - p[0]) + (b[1] - p[1]) * (b[1] - p[1]);
@@ -114,15 +114,34 @@ cvm_status cvm__rf_smooth(cvm__refiner *R, size_t first, int sweeps, size_t *mov
             p[1] /= (double)n;
             if (!isfinite(p[0]) || !isfinite(p[1]) || (p[0] == x[0] && p[1] == x[1]))
                 continue;
+            /* a star whose angles are all in [55, 65] degrees is left alone */
             if (!sm_star_eval(R, (int32_t)v, x, star, n, &b0, &q0, &big0) ||
-                !sm_star_eval(R, (int32_t)v, p, star, n, &b1, &q1, &big1))
+                b0 < -3.0 * (double)n + 0.5)
                 continue;
-            /* better regularity, no new triangle above the size bound, and no angle
-             * below min(the star's old smallest angle, the requested angle) */
-            if (!(b1 < b0) || big1 > big0 || q1 < (q0 < R->sin2_min ? q0 : R->sin2_min))
-                continue;
-            x[0] = p[0];
-            x[1] = p[1];
+            {
+                /* candidates: the centroid, and half and one and a half times the step
+                 * towards it; the most regular one that meets the bounds is taken */
+                static const double step[3] = {1.0, 0.5, 1.5};
+                double best[2] = {0, 0}, bb = b0;
+                int c, found = 0;
+                for (c = 0; c < 3; c++) {
+                    double f = step[c], pc[2];
+                    pc[0] = x[0] + f * (p[0] - x[0]);
+                    pc[1] = x[1] + f * (p[1] - x[1]);
+                    if (!sm_star_eval(R, (int32_t)v, pc, star, n, &b1, &q1, &big1))
+                        continue;
+                    if (!(b1 < bb) || big1 > big0 || q1 < (q0 < R->sin2_min ? q0 : R->sin2_min))
+                        continue;
+                    bb = b1;
+                    best[0] = pc[0];
+                    best[1] = pc[1];
+                    found = 1;
+                }
+                if (!found)
+                    continue;
+                x[0] = best[0];
+                x[1] = best[1];
+            }
             moves++;
         }
     }

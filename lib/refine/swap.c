@@ -16,12 +16,15 @@ static int sw_flippable(const cvm__tri2 *T, int32_t t, int j)
 {
     int32_t h = T->tn[3 * (size_t)t + j], u = h / 3;
     const int32_t *tv = T->tv + 3 * (size_t)t;
-    int32_t a = tv[j], b = tv[(j + 1) % 3], c = tv[(j + 2) % 3], d = T->tv[h];
+    const double *pa, *pb, *pc, *pd;
     if (cvm__tri2_edge_seg(T, t, j) >= 0 || !cvm__tri2_in_domain(T, t) ||
         !cvm__tri2_in_domain(T, u))
         return 0;
-    return cvm__orient2d(cvm__tri2_pt(T, a), cvm__tri2_pt(T, b), cvm__tri2_pt(T, d)) > 0 &&
-           cvm__orient2d(cvm__tri2_pt(T, a), cvm__tri2_pt(T, d), cvm__tri2_pt(T, c)) > 0;
+    pa = cvm__tri2_pt(T, tv[j]);
+    pb = cvm__tri2_pt(T, tv[(j + 1) % 3]);
+    pc = cvm__tri2_pt(T, tv[(j + 2) % 3]);
+    pd = cvm__tri2_pt(T, T->tv[h]);
+    return cvm__orient2d_inline(pa, pb, pd) > 0 && cvm__orient2d_inline(pa, pd, pc) > 0;
 }
 
 /* Flip edge j of t: t = (a, b, c) with edge b-c shared with u = (d, c, b)
@@ -192,10 +195,33 @@ static int sw_illegal(const cvm__tri2 *T, int32_t t, int j)
     int32_t h = T->tn[3 * (size_t)t + j];
     const int32_t *tv = T->tv + 3 * (size_t)t;
     int32_t d = T->tv[h];
-    if (d == CVM__GHOST || !sw_flippable(T, t, j))
+    if (d == CVM__GHOST || cvm__tri2_edge_seg(T, t, j) >= 0 ||
+        cvm__incircle_inline(cvm__tri2_pt(T, tv[0]), cvm__tri2_pt(T, tv[1]),
+                             cvm__tri2_pt(T, tv[2]), cvm__tri2_pt(T, d)) <= 0)
         return 0;
-    return cvm__incircle(cvm__tri2_pt(T, tv[0]), cvm__tri2_pt(T, tv[1]), cvm__tri2_pt(T, tv[2]),
-                         cvm__tri2_pt(T, d)) > 0;
+    return sw_flippable(T, t, j);
+}
+
+/* Allocation-free fallback: sweeps in triangle order until no edge flips. */
+static size_t sw_restore_sweeps(cvm__tri2 *T)
+{
+    size_t t, flips = 0;
+    int any = 1;
+    while (any) {
+        any = 0;
+        for (t = 0; t < T->nt; t++) {
+            int j;
+            if (!cvm__tri2_in_domain(T, (int32_t)t))
+                continue;
+            for (j = 0; j < 3; j++)
+                if (sw_illegal(T, (int32_t)t, j)) {
+                    sw_flip(T, (int32_t)t, j);
+                    flips++;
+                    any = 1;
+                }
+        }
+    }
+    return flips;
 }
 
 cvm_status cvm__rf_restore_delaunay(cvm__tri2 *T, size_t *flips_out)
@@ -211,10 +237,8 @@ cvm_status cvm__rf_restore_delaunay(cvm__tri2 *T, size_t *flips_out)
         for (j = 0; j < 3; j++) {
             if ((size_t)(T->tn[3 * t + (size_t)j] / 3) < t || !sw_illegal(T, (int32_t)t, j))
                 continue;
-            if (n >= cap && cvm__grow(T->ctx, (void **)&st, &cap, n + 1, sizeof *st)) {
-                cvm__free(T->ctx, st);
-                return cvm__nomem(T->ctx);
-            }
+            if (n >= cap && cvm__grow(T->ctx, (void **)&st, &cap, n + 1, sizeof *st))
+                goto fallback;
             st[n++] = (int32_t)(3 * t + (size_t)j);
         }
     }
@@ -224,13 +248,11 @@ cvm_status cvm__rf_restore_delaunay(cvm__tri2 *T, size_t *flips_out)
         int j = h % 3, k;
         if (!sw_illegal(T, tt, j))
             continue;
+        if (n + 4 > cap && cvm__grow(T->ctx, (void **)&st, &cap, n + 4, sizeof *st))
+            goto fallback;
         u = T->tn[h] / 3;
         sw_flip(T, tt, j);
         flips++;
-        if (n + 4 > cap && cvm__grow(T->ctx, (void **)&st, &cap, n + 4, sizeof *st)) {
-            cvm__free(T->ctx, st);
-            return cvm__nomem(T->ctx);
-        }
         /* the four edges of the quadrilateral: t edges j, j+2 and u edges k, k+2 */
         for (k = 0; k < 3; k++) {
             if (k != (j + 1) % 3)
@@ -240,7 +262,7 @@ cvm_status cvm__rf_restore_delaunay(cvm__tri2 *T, size_t *flips_out)
             int32_t hu = T->tn[3 * tt + (j + 1) % 3];
             int ku = hu % 3;
             for (k = 0; k < 3; k++)
-                if (k != ku && n < cap)
+                if (k != ku)
                     st[n++] = 3 * u + k;
         }
     }
@@ -248,4 +270,11 @@ cvm_status cvm__rf_restore_delaunay(cvm__tri2 *T, size_t *flips_out)
     if (flips_out)
         *flips_out = flips;
     return CVM_OK;
+fallback:
+    /* out of memory for the stack: finish without allocating (the error stays recorded) */
+    cvm__free(T->ctx, st);
+    flips += sw_restore_sweeps(T);
+    if (flips_out)
+        *flips_out = flips;
+    return cvm__nomem(T->ctx);
 }

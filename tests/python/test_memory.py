@@ -39,10 +39,18 @@ def one_cycle(pts, segs, bad):
     except cvmesh.OptionError:
         pass
     mesh.close()
-    m = capi.cvm_mesh_create()           # the raw API too
+    m = capi.cvm_mesh_create()           # the raw API too, with callbacks kept alive by it
     capi.cvm_mesh_set_points(m, pts)
     capi.cvm_mesh_set_progress(m, lambda s, f: False, 100)
     capi.cvm_mesh_free(m)
+    if hasattr(capi, "cvm_sizing_create"):
+        s = capi.cvm_sizing_create()
+        capi.cvm_sizing_set_callback(s, lambda x, y: 1.0)
+        try:
+            capi.cvm_sizing_set_uniform(s, -1.0)
+        except cvmesh.ArgumentError:
+            pass
+        capi.cvm_sizing_free(s)
 
 
 def test_no_growth_over_create_destroy_cycles():

@@ -60,6 +60,15 @@ def test_callable_size(square_pslg):
     assert lengths[mid[:, 0] < 0.2].mean() < lengths[mid[:, 0] > 0.8].mean()
 
 
+def test_sizing_callback_is_evaluated_directly():
+    s = Sizing(uniform=0.5, callback=lambda x, y: 0.1 + x)
+    assert s(0.2, 0.0) == pytest.approx(0.3)
+    assert s(3.0, 0.0) == pytest.approx(0.5)        # the minimum of the sources
+    with pytest.raises(cvmesh.StateError, match="sizing callback"):
+        s.set_callback(lambda x, y: s(x, y))        # re-entering its own sizing
+        s(0.0, 0.0)
+
+
 def test_sizing_errors():
     s = Sizing()
     assert math.isinf(s(0.5, 0.5))

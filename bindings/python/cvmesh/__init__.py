@@ -503,6 +503,54 @@ class Mesh:
             n = capi.cvm_mesh_count(m, Entity.INPUT_POINT)
             return capi.cvm_mesh_copy_input_map(n, m)
 
+    # ---- weights and the power (Voronoi) dual -------------------------------
+
+    @property
+    def weights(self):
+        """(n,) float64 power weight of each vertex (0 when none were set).
+        Setting it (an (n,) array, or None to remove) makes the triangulation
+        regular for those weights; see cvm_mesh_set_weights()."""
+        with self._handle() as m:
+            n = capi.cvm_mesh_count(m, Entity.VERTEX)
+            return capi.cvm_mesh_copy_weights(n, m)
+
+    @weights.setter
+    def weights(self, w):
+        self.set_weights(w)
+
+    def set_weights(self, w):
+        """Set the power weight of every vertex (None removes them)."""
+        with self._handle() as m:
+            capi.cvm_mesh_set_weights(m, np.zeros(0) if w is None else w)
+
+    @property
+    def dual_vertices(self):
+        """(m, 2) float64 power vertex (circumcentre without weights) of each triangle."""
+        with self._handle() as m:
+            n = capi.cvm_mesh_count(m, Entity.TRIANGLE)
+            return capi.cvm_mesh_copy_dual_vertices(2 * n, m).reshape(n, 2)
+
+    @property
+    def dual_inside(self):
+        """(m,) bool: whether each triangle contains its power vertex (exact)."""
+        with self._handle() as m:
+            n = capi.cvm_mesh_count(m, Entity.TRIANGLE)
+            return capi.cvm_mesh_copy_dual_inside(n, m).astype(bool)
+
+    @property
+    def dual_areas(self):
+        """(n,) float64 dual (power/Voronoi) cell area of each vertex, within the domain."""
+        with self._handle() as m:
+            n = capi.cvm_mesh_count(m, Entity.VERTEX)
+            return capi.cvm_mesh_copy_dual_areas(n, m)
+
+    @property
+    def dual_edge_lengths(self):
+        """(e,) float64 dual edge length of each edge, in the order of `edges`."""
+        with self._handle() as m:
+            n = capi.cvm_mesh_count(m, Entity.EDGE)
+            return capi.cvm_mesh_copy_dual_edge_lengths(n, m)
+
     @property
     def last_error(self):
         """Message of the last failing call on this mesh ('' after success)."""
@@ -618,6 +666,7 @@ class Sizing:
     def __init__(self, uniform=None, callback=None):
         self._s = None
         self._lock = threading.Lock()
+        self._owner = None
         self._callback = None
         self._s = capi.cvm_sizing_create()
         if uniform is not None:
@@ -643,10 +692,18 @@ class Sizing:
 
     @contextlib.contextmanager
     def _handle(self):
+        me = threading.get_ident()
+        if self._owner == me:
+            raise StateError("a sizing callback must not use the sizing that calls it",
+                             Status.E_STATE)
         with self._lock:
             if self._s is None:
                 raise StateError("the sizing is closed", Status.E_STATE)
-            yield self._s
+            self._owner = me
+            try:
+                yield self._s
+            finally:
+                self._owner = None
 
     def set_uniform(self, h):
         """Uniform target edge length h > 0 (replaces an earlier one)."""

@@ -110,6 +110,32 @@ START_TEST(vertex_with_empty_power_cell_is_reported)
 }
 END_TEST
 
+/* A point inserted below the lifted facet of its triangle has an empty power
+ * cell: it is rejected, and the mesh stays regular. */
+START_TEST(insert_with_empty_power_cell_is_rejected)
+{
+    double xy[] = {0, 0, 1, 0, 1, 1, 0, 1, 0.5, 0.5};
+    double w[5] = {0, 0, 0, 0, 0.2};
+    double p[2] = {0.5, 0.55};
+    cvm_index id = 7;
+    cvm_mesh *m;
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_points(m, xy, 5, 2), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_weights(m, w, 5), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_insert_points(&id, m, p, 1, 0), CVM_OK);
+    ck_assert_int_eq(id, CVM_REJECTED);
+    ck_assert_int_eq(cvm_mesh_check(m), CVM_OK);
+    /* far from the heavy vertex a point is inserted normally */
+    p[0] = 0.05;
+    p[1] = 0.9;
+    ck_assert_int_eq(cvm_mesh_insert_points(&id, m, p, 1, 0), CVM_OK);
+    ck_assert_int_eq(id, 5);
+    ck_assert_int_eq(cvm_mesh_check(m), CVM_OK);
+    cvm_mesh_free(m);
+}
+END_TEST
+
 TCase *dual_regular_tcase(void)
 {
     TCase *tc = tcase_create("regular");
@@ -117,5 +143,6 @@ TCase *dual_regular_tcase(void)
     tcase_add_test(tc, random_weights_make_refined_square_regular);
     tcase_add_test(tc, random_weights_make_point_set_regular);
     tcase_add_test(tc, vertex_with_empty_power_cell_is_reported);
+    tcase_add_test(tc, insert_with_empty_power_cell_is_rejected);
     return tc;
 }

@@ -3,6 +3,7 @@
 #include <stdlib.h>
 
 #include "refine/refine_tests.h"
+#include "support/failing_alloc.h"
 #include "support/mesh_oracle.h"
 
 /* Read, triangulate and refine name at uniform size h with CVM_ALGO_FRONTAL and
@@ -176,6 +177,47 @@ START_TEST(swap_only_and_input_points_fixed)
 }
 END_TEST
 
+/* Out of memory at every allocation of a frontal refinement with swap and
+ * smoothing (transient and persistent): CVM_OK or CVM_E_NOMEM, and the mesh,
+ * when kept, is a valid constrained Delaunay triangulation. */
+START_TEST(out_of_memory_keeps_a_valid_mesh)
+{
+    static const double sq[] = {0, 0, 1, 0, 1, 1, 0, 1};
+    static const cvm_index seg[] = {0, 1, 1, 2, 2, 3, 3, 0};
+    int persistent;
+    for (persistent = 0; persistent <= 1; persistent++) {
+        long i;
+        for (i = 1; i < 100000; i++) {
+            cvmtest_alloc a;
+            cvm_mesh *m;
+            cvm_status st;
+            long failed;
+            cvmtest_alloc_init(&a, 0, 0);
+            ck_assert_int_eq(cvmtest_mesh_create(&m, &a), CVM_OK);
+            ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_SMOOTH_SWEEPS, 2), CVM_OK);
+            ck_assert_int_eq(cvm_mesh_set_points(m, sq, 4, 2), CVM_OK);
+            ck_assert_int_eq(cvm_mesh_set_segments(m, seg, 4), CVM_OK);
+            ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+            cvmtest_alloc_arm(&a, a.n_calls + i, persistent);
+            st = rtest_refine_uniform(m, 0.1, CVM_ALGO_FRONTAL);
+            failed = a.n_failed;
+            cvmtest_alloc_arm(&a, 0, 0);
+            ck_assert_msg(st == CVM_OK || st == CVM_E_NOMEM, "allocation %ld: %s", i,
+                          cvm_status_str(st));
+            if (cvm_mesh_check(m) != CVM_E_STATE)
+                cvmtest_assert_valid(m);
+            cvm_mesh_free(m);
+            ck_assert_int_eq(a.live_blocks, 0);
+            if (failed == 0) {
+                ck_assert_int_eq(st, CVM_OK);
+                break;
+            }
+        }
+        ck_assert_msg(i > 20 && i < 100000, "%ld allocations in the refinement", i);
+    }
+}
+END_TEST
+
 TCase *refine_swap_smooth_tcase(void)
 {
     TCase *tc = tcase_create("swap_smooth");
@@ -186,5 +228,6 @@ TCase *refine_swap_smooth_tcase(void)
     tcase_add_test(tc, cylinder_post);
     tcase_add_test(tc, naca0012_post);
     tcase_add_test(tc, swap_only_and_input_points_fixed);
+    tcase_add_test(tc, out_of_memory_keeps_a_valid_mesh);
     return tc;
 }

@@ -32,6 +32,8 @@ typedef struct oracle {
     size_t *adj_off;  /* nv+1: neighbours of v in adj[adj_off[v] .. adj_off[v+1]) */
     cvm_index *adj;
     size_t n_orig;    /* vertices below this id are input vertices */
+    size_t *visit;    /* nv: stamp of the last segment search that visited each vertex */
+    cvm_index *stack; /* nv: vertices to visit in a segment search */
 } oracle;
 
 static int ofail(oracle *o, const char *fmt, ...)
@@ -176,7 +178,9 @@ static int build_adjacency(oracle *o)
     o->adj_off = (size_t *)calloc(o->nv + 1, sizeof(size_t));
     o->adj = (cvm_index *)malloc((6 * o->nt + 1) * sizeof(cvm_index));
     fill = (size_t *)calloc(o->nv + 1, sizeof(size_t));
-    if (!o->adj_off || !o->adj || !fill) {
+    o->visit = (size_t *)calloc(o->nv + 1, sizeof(size_t));
+    o->stack = (cvm_index *)malloc((o->nv + 1) * sizeof(cvm_index));
+    if (!o->adj_off || !o->adj || !fill || !o->visit || !o->stack) {
         free(fill);
         return ofail(o, "oracle: out of memory");
     }
@@ -266,66 +270,74 @@ static int axis_of(const double *a, const double *b)
     return fabs(b[0] - a[0]) >= fabs(b[1] - a[1]) ? 0 : 1;
 }
 
-/* 1 if w is strictly closer to b than cur along axis ax, and not beyond b. */
-static int progresses(const double *cur, const double *w, const double *b, int ax)
+/* 1 if w is strictly closer to b than cur along axis ax (or, with weak set, no
+ * farther), and not beyond b. */
+static int progresses(const double *cur, const double *w, const double *b, int ax, int weak)
 {
+    if (weak && w[ax] == cur[ax])
+        return 1;
     if (cur[ax] < b[ax])
         return w[ax] > cur[ax] && w[ax] <= b[ax];
     return w[ax] < cur[ax] && w[ax] >= b[ax];
 }
 
-/* Walk input segment k, vertices a-b, along mesh edges. With output segments
- * given, only those edges are followed; an exactly collinear next vertex is
- * preferred, else the Steiner vertex nearest the line (rounded intersections). */
+/* Is input segment k, vertices a-b, a union of mesh edges? Search (depth
+ * first) for a path from a to b through vertices exactly on the segment, or
+ * Steiner vertices within rounding distance of it (rounded intersections; two
+ * of them may share a coordinate, so a Steiner step need not advance along the
+ * major axis). With output segments given, only those edges are followed.
+ * Each vertex is visited at most once per segment. */
 static int check_segment(oracle *o, size_t k, cvm_index a, cvm_index b)
 {
     const double *pa = P(o, a), *pb = P(o, b);
     int ax = axis_of(pa, pb);
-    cvm_index cur = a;
-    size_t steps = 0;
+    size_t nstack = 0, stamp = k + 1;
+    cvm_index far = a, loose_a = -1, loose_b = -1;
+    /* A rounded intersection lies within a few ulps of the segment: accept
+     * Steiner vertices whose distance to it is at most 1e-9 of the larger of
+     * the segment's length and its coordinates (|orient2d| = distance x length).
+     * This bound only steers the search; the kernel's decisions are exact. */
+    double len = fabs(pb[0] - pa[0]) + fabs(pb[1] - pa[1]);
+    double mag = fabs(pa[0]) + fabs(pa[1]) + fabs(pb[0]) + fabs(pb[1]);
+    double slack = 1e-9 * (len > mag ? len : mag) * len;
     if (pa[ax] == pb[ax])
         return ofail(o, "input segment %zu (vertices %ld-%ld) has zero length", k, (long)a,
                      (long)b);
-    while (cur != b) {
-        cvm_index exact = -1, steiner = -1, loose = -1;
-        double best = 0;
+    o->visit[a] = stamp;
+    o->stack[nstack++] = a;
+    while (nstack) {
+        cvm_index cur = o->stack[--nstack];
         size_t i;
-        if (++steps > o->nv)
-            return ofail(o, "input segment %zu: walk from %ld to %ld does not end", k, (long)a,
-                         (long)b);
+        if (cur == b)
+            return 1;
+        if (fabs(P(o, cur)[ax] - pa[ax]) > fabs(P(o, far)[ax] - pa[ax]))
+            far = cur;
         for (i = o->adj_off[cur]; i < o->adj_off[cur + 1]; i++) {
             cvm_index w = o->adj[i];
             const double *pw = P(o, w);
-            int on_line;
-            if (!progresses(P(o, cur), pw, pb, ax))
+            int steiner = (size_t)w >= o->n_orig, on_line;
+            if (o->visit[w] == stamp ||
+                (w != b && !progresses(P(o, cur), pw, pb, ax, steiner)))
                 continue;
             on_line = w == b || cvm__orient2d(pa, pb, pw) == 0;
+            if (!on_line && !(steiner && fabs(cvm__orient2d(pa, pb, pw)) <= slack))
+                continue;
             if (o->cons && !is_constrained(o, cur, w)) {
-                if (on_line)
-                    loose = w;
+                if (on_line && loose_a < 0) {
+                    loose_a = cur;
+                    loose_b = w;
+                }
                 continue;
             }
-            if (on_line) {
-                exact = w;
-            } else if ((size_t)w >= o->n_orig) {
-                double dist = fabs(cvm__orient2d(pa, pb, pw));
-                if (steiner < 0 || dist < best) {
-                    steiner = w;
-                    best = dist;
-                }
-            }
+            o->visit[w] = stamp;
+            o->stack[nstack++] = w;
         }
-        if (exact < 0)
-            exact = steiner;
-        if (exact < 0 && loose >= 0)
-            return ofail(o, "input segment %zu (vertices %ld-%ld): mesh edge %ld-%ld on it is not "
-                         "an output segment", k, (long)a, (long)b, (long)cur, (long)loose);
-        if (exact < 0)
-            return ofail(o, "input segment %zu (vertices %ld-%ld) is not a union of mesh edges: "
-                         "no edge continues it from vertex %ld", k, (long)a, (long)b, (long)cur);
-        cur = exact;
     }
-    return 1;
+    if (loose_a >= 0)
+        return ofail(o, "input segment %zu (vertices %ld-%ld): mesh edge %ld-%ld on it is not "
+                     "an output segment", k, (long)a, (long)b, (long)loose_a, (long)loose_b);
+    return ofail(o, "input segment %zu (vertices %ld-%ld) is not a union of mesh edges: "
+                 "no edge continues it from vertex %ld", k, (long)a, (long)b, (long)far);
 }
 
 /* With convex set: every vertex used and every boundary edge a hull edge. */
@@ -486,6 +498,8 @@ int cvmtest_oracle(char *msg, size_t msglen, const double *xy, size_t nv, const 
     free(o.cons);
     free(o.adj_off);
     free(o.adj);
+    free(o.visit);
+    free(o.stack);
     return ok;
 }
 

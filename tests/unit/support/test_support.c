@@ -128,6 +128,26 @@ START_TEST(oracle_walks_collinear_segment_chain)
 }
 END_TEST
 
+/* Input segment 0-1 split by two rounded intersections that share x = 2. */
+START_TEST(oracle_walks_steiner_points_sharing_a_coordinate)
+{
+    static const double xy[] = {0, 0, 4, 0, 2, 1e-12, 2, -1e-12, 2, 2, 2, -2};
+    static const cvm_index tri[] = {0, 2, 4, 2, 1, 4, 0, 3, 2, 3, 1, 2, 0, 5, 3, 3, 5, 1};
+    static const cvm_index map[] = {0, 1};
+    static const cvm_index segs[] = {0, 1};
+    static const cvm_index cons[] = {0, 2, 2, 3, 3, 1};
+    cvmtest_expect e;
+    cvmtest_expect_init(&e);
+    e.delaunay = 0;
+    e.segs = segs;
+    e.nseg = 1;
+    e.check_euler = 1;
+    e.euler = 1;
+    ck_assert_msg(cvmtest_oracle(g_msg, sizeof g_msg, xy, 6, tri, 6, cons, 3, map, 2, &e), "%s",
+                  g_msg);
+}
+END_TEST
+
 START_TEST(failing_alloc_fails_kth_and_counts_live_blocks)
 {
     cvmtest_alloc a;
@@ -169,6 +189,7 @@ Suite *support_suite(void)
     tcase_add_test(tc, oracle_rejects_overlapping_triangles);
     tcase_add_test(tc, oracle_rejects_doubly_wound_vertex);
     tcase_add_test(tc, oracle_walks_collinear_segment_chain);
+    tcase_add_test(tc, oracle_walks_steiner_points_sharing_a_coordinate);
     suite_add_tcase(s, tc);
     tc = tcase_create("failing_alloc");
     tcase_add_test(tc, failing_alloc_fails_kth_and_counts_live_blocks);
