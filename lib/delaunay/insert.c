@@ -8,6 +8,9 @@
 /* A cavity boundary edge: a, b (counter-clockwise as seen from the cavity),
  * the half-edge outside it, its segment, and the flags of the cavity triangle
  * it belonged to. */
+/* Most constrained edges one new vertex may split (segments meeting at it). */
+#define CVM__MAX_SPLIT 32
+
 enum { B_A = 0, B_B, B_OUTER, B_SEG, B_FLAGS, B_OWNER, B_STRIDE };
 
 /* p strictly inside segment ab, given orient2d(a, b, p) == 0. */
@@ -128,10 +131,10 @@ static cvm_status grow_cavity(cvm__tri2 *T, int32_t p, int32_t t0, size_t *ncav_
 }
 
 /* Replace the marked cavity by the fan of p over its boundary. Room for the
- * new triangles must be reserved. sa, sb, sseg: a constrained edge split by p
- * (sseg -1 if none). */
-static void fill_fan(cvm__tri2 *T, int32_t p, size_t ncav, size_t nbnd, int32_t sa, int32_t sb,
-                     int32_t sseg)
+ * new triangles must be reserved. split: nsplit triples (a, b, segment) of
+ * constrained edges p splits; their halves p-a, p-b keep the segment. */
+static void fill_fan(cvm__tri2 *T, int32_t p, size_t ncav, size_t nbnd, const int32_t *split,
+                     int nsplit)
 {
     size_t i;
     int32_t ghost_start = -1, first = -1;
@@ -160,11 +163,13 @@ static void fill_fan(cvm__tri2 *T, int32_t p, size_t ncav, size_t nbnd, int32_t 
         T->tn[outer] = (int32_t)n3;
         if (T->te) {
             T->te[n3] = e[B_SEG];
-            if (sseg >= 0) {
-                if (e[B_A] == sa || e[B_A] == sb)
-                    T->te[n3 + 2] = sseg;
-                if (e[B_B] == sa || e[B_B] == sb)
-                    T->te[n3 + 1] = sseg;
+            int k;
+            for (k = 0; k < nsplit; k++) {
+                const int32_t *sp = split + 3 * k;
+                if (e[B_A] == sp[0] || e[B_A] == sp[1])
+                    T->te[n3 + 2] = sp[2];
+                if (e[B_B] == sp[0] || e[B_B] == sp[1])
+                    T->te[n3 + 1] = sp[2];
             }
         }
         if (T->ta)
@@ -262,99 +267,12 @@ static int shrink_to_visible(cvm__tri2 *T, int32_t p, size_t *ncav, size_t *nbnd
     }
 }
 
-/* Flip edge j of t (not constrained, both sides real). t = (v, a, b), the
- * neighbour u = (w, b, a) across it; afterwards t = (v, a, w), u = (w, b, v). */
-static void flip(cvm__tri2 *T, int32_t t, int j)
-{
-    size_t t3 = 3 * (size_t)t;
-    int32_t h = T->tn[t3 + j], u = h / 3, k = h % 3;
-    size_t u3 = 3 * (size_t)u;
-    int32_t v = T->tv[t3 + j], a = T->tv[t3 + (j + 1) % 3], b = T->tv[t3 + (j + 2) % 3];
-    int32_t w = T->tv[u3 + k];
-    int32_t n1 = T->tn[t3 + (j + 1) % 3], n2 = T->tn[t3 + (j + 2) % 3];
-    int32_t n3 = T->tn[u3 + (k + 1) % 3], n4 = T->tn[u3 + (k + 2) % 3];
-    int32_t e1 = -1, e2 = -1, e3 = -1, e4 = -1;
-    if (T->te) {
-        e1 = T->te[t3 + (j + 1) % 3];
-        e2 = T->te[t3 + (j + 2) % 3];
-        e3 = T->te[u3 + (k + 1) % 3];
-        e4 = T->te[u3 + (k + 2) % 3];
-    }
-    T->tv[t3] = v, T->tv[t3 + 1] = a, T->tv[t3 + 2] = w;
-    T->tv[u3] = w, T->tv[u3 + 1] = b, T->tv[u3 + 2] = v;
-    /* t: opp v (a,w) <- n3; opp a (w,v) <- u; opp w (v,a) <- n2 */
-    T->tn[t3] = n3, T->tn[n3] = (int32_t)t3;
-    T->tn[t3 + 2] = n2, T->tn[n2] = (int32_t)t3 + 2;
-    /* u: opp w (b,v) <- n1; opp b (v,w) <- t; opp v (w,b) <- n4 */
-    T->tn[u3] = n1, T->tn[n1] = (int32_t)u3;
-    T->tn[u3 + 2] = n4, T->tn[n4] = (int32_t)u3 + 2;
-    T->tn[t3 + 1] = (int32_t)u3 + 1, T->tn[u3 + 1] = (int32_t)t3 + 1;
-    if (T->te) {
-        T->te[t3] = e3, T->te[t3 + 1] = -1, T->te[t3 + 2] = e2;
-        T->te[u3] = e1, T->te[u3 + 1] = -1, T->te[u3 + 2] = e4;
-    }
-    if (v >= 0)
-        T->vtri[v] = t;
-    if (a >= 0)
-        T->vtri[a] = t;
-    if (w >= 0)
-        T->vtri[w] = u;
-    if (b >= 0)
-        T->vtri[b] = u;
-}
-
-/* Lawson flips from the edges opposite p of the new triangles until every
- * unconstrained edge around p is locally (constrained) Delaunay. */
-static cvm_status legalize(cvm__tri2 *T, int32_t p)
-{
-    size_t n = 0;
-    int32_t t0 = T->vtri[p], t = t0;
-    /* seed with the link of p: rotate around p */
-    do {
-        const int32_t *v = T->tv + 3 * (size_t)t;
-        int i = v[0] == p ? 0 : v[1] == p ? 1 : 2;
-        if (n + 2 > T->cap_stack &&
-            cvm__grow(T->ctx, (void **)&T->stack, &T->cap_stack, n + 2, sizeof(int32_t)))
-            return CVM_E_NOMEM;
-        T->stack[n++] = 3 * t + i;
-        t = T->tn[3 * (size_t)t + (i + 1) % 3] / 3;
-    } while (t != t0);
-    while (n) {
-        int32_t h = T->stack[--n], u, k;
-        int j = h % 3;
-        const int32_t *v;
-        t = h / 3;
-        v = T->tv + 3 * (size_t)t;
-        if (v[j] != p || cvm__tri2_is_ghost(T, t) || (T->te && T->te[h] >= 0))
-            continue;
-        u = T->tn[h] / 3;
-        k = T->tn[h] % 3;
-        if (cvm__tri2_is_ghost(T, u))
-            continue;
-        {
-            const double *pp = cvm__tri2_pt(T, p), *pa = cvm__tri2_pt(T, v[(j + 1) % 3]),
-                         *pb = cvm__tri2_pt(T, v[(j + 2) % 3]);
-            const double *pw = cvm__tri2_pt(T, T->tv[3 * (size_t)u + k]);
-            if (cvm__tri2_conflict(T, t, T->tv[3 * (size_t)u + k]) <= 0)
-                continue;
-            if (cvm__orient2d(pp, pa, pw) <= 0 || cvm__orient2d(pw, pb, pp) <= 0)
-                continue;
-        }
-        flip(T, t, j);
-        if (n + 2 > T->cap_stack &&
-            cvm__grow(T->ctx, (void **)&T->stack, &T->cap_stack, n + 2, sizeof(int32_t)))
-            return CVM_E_NOMEM;
-        T->stack[n++] = 3 * t;     /* t = (p, a, w): edge opposite p */
-        T->stack[n++] = 3 * u + 2; /* u = (w, b, p): edge opposite p */
-    }
-    return CVM_OK;
-}
-
 static cvm_status insert_from(cvm__tri2 *T, int32_t v, int32_t t0, int fe_t, int fe_j,
                               double min_dist, cvm__ins *res_out, int32_t *other_out)
 {
     size_t ncav = 0, nbnd = 0, i;
-    int32_t sa = -1, sb = -1, sseg = -1;
+    int32_t split[3 * CVM__MAX_SPLIT];
+    int nsplit = 0;
     cvm_status s = grow_cavity(T, v, t0, &ncav, &nbnd, fe_t, fe_j);
     if (s) {
         unmark(T, ncav);
@@ -399,24 +317,32 @@ static cvm_status insert_from(cvm__tri2 *T, int32_t v, int32_t t0, int fe_t, int
         unmark(T, ncav);
         return CVM_E_NOMEM;
     }
-    /* a constrained edge crossed by the cavity is the one v splits */
+    /* constrained edges inside the cavity are the ones v splits (several when
+     * segments meet at v) */
     if (T->te) {
-        for (i = 0; i < ncav && sseg < 0; i++) {
+        for (i = 0; i < ncav; i++) {
             int32_t t = T->cav[i];
             int j;
             for (j = 0; j < 3; j++) {
                 size_t h = 3 * (size_t)t + j;
-                if (T->te[h] >= 0 && (T->tf[T->tn[h] / 3] & CVM__TF_MARK)) {
-                    sa = T->tv[3 * (size_t)t + (j + 1) % 3];
-                    sb = T->tv[3 * (size_t)t + (j + 2) % 3];
-                    sseg = T->te[h];
-                    break;
+                int32_t u = T->tn[h] / 3;
+                if (T->te[h] < 0 || !(T->tf[u] & CVM__TF_MARK) || u < t)
+                    continue;
+                if (nsplit == CVM__MAX_SPLIT) {
+                    unmark(T, ncav);
+                    return cvm__error(T->ctx, CVM_E_INTERNAL, CVM_ENT_VERTEX, v,
+                                      "vertex %ld lies on more than %d constrained edges",
+                                      (long)v, CVM__MAX_SPLIT);
                 }
+                split[3 * nsplit] = T->tv[3 * (size_t)t + (j + 1) % 3];
+                split[3 * nsplit + 1] = T->tv[3 * (size_t)t + (j + 2) % 3];
+                split[3 * nsplit + 2] = T->te[h];
+                nsplit++;
             }
         }
     }
-    fill_fan(T, v, ncav, nbnd, sa, sb, sseg);
-    if (fe_t >= 0 && (s = legalize(T, v)))
+    fill_fan(T, v, ncav, nbnd, split, nsplit);
+    if (fe_t >= 0 && (s = cvm__tri2_legalize_stars(T, &v, 1)))
         return s; /* the triangulation is valid, only not yet Delaunay around v */
     *res_out = CVM__INS_DONE;
     *other_out = -1;

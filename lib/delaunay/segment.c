@@ -11,6 +11,7 @@ typedef struct seg_work {
     int32_t *right; size_t nright, cap_right;    /* chain right of a->b, from b to a */
     int32_t *newtri; size_t nnew, cap_new;
     int32_t *rng; size_t cap_rng;                /* ranges for the pseudo-polygon stack */
+    int32_t *xe; size_t nxe, cap_xe;             /* crossed edges as vertex pairs */
 } seg_work;
 
 static cvm_status push(cvm__tri2 *T, int32_t **arr, size_t *n, size_t *cap, int32_t v)
@@ -116,6 +117,106 @@ static int start_at(cvm__tri2 *T, int32_t a, int32_t b, int32_t seg, int32_t *t_
     return -1;
 }
 
+/* 1 if a vertex occurs twice in c[0..n): a vertex whose whole star the
+ * segment crosses (possible beside constrained slivers), so the crossed
+ * triangles do not form two pseudo-polygons. */
+static int has_repeat(const int32_t *c, size_t n)
+{
+    size_t i, j;
+    for (i = 0; i < n; i++)
+        for (j = i + 1; j < n; j++)
+            if (c[i] == c[j])
+                return 1;
+    return 0;
+}
+
+/* Find edge x-y: *t_out, *j_out with edge j of t joining x and y. */
+static int find_edge(const cvm__tri2 *T, int32_t x, int32_t y, int32_t *t_out, int *j_out)
+{
+    int32_t t0 = T->vtri[x], t = t0;
+    if (t0 < 0)
+        return 0;
+    do {
+        const int32_t *v = T->tv + 3 * (size_t)t;
+        int i = v[0] == x ? 0 : v[1] == x ? 1 : 2;
+        if (v[(i + 1) % 3] == y || v[(i + 2) % 3] == y) {
+            *t_out = t;
+            *j_out = v[(i + 1) % 3] == y ? (i + 2) % 3 : (i + 1) % 3;
+            return 1;
+        }
+        t = T->tn[3 * (size_t)t + (i + 1) % 3] / 3;
+    } while (t != t0);
+    return 0;
+}
+
+/* Edge x-y properly crosses segment a-b (exact). */
+static int crosses(const cvm__tri2 *T, int32_t a, int32_t b, int32_t x, int32_t y)
+{
+    const double *pa = cvm__tri2_pt(T, a), *pb = cvm__tri2_pt(T, b);
+    const double *px = cvm__tri2_pt(T, x), *py = cvm__tri2_pt(T, y);
+    double ox, oy, oa, ob;
+    if (x == a || x == b || y == a || y == b)
+        return 0;
+    ox = cvm__orient2d(pa, pb, px);
+    oy = cvm__orient2d(pa, pb, py);
+    oa = cvm__orient2d(px, py, pa);
+    ob = cvm__orient2d(px, py, pb);
+    return ((ox > 0 && oy < 0) || (ox < 0 && oy > 0)) && ((oa > 0 && ob < 0) || (oa < 0 && ob > 0));
+}
+
+/* Recover a-b by flipping the edges it crosses (Sloan 1993): an edge whose
+ * quadrilateral is convex is flipped, else retried later; a new edge that
+ * still crosses is queued again. Then restore the constrained Delaunay
+ * property around the touched vertices by Lawson flips. Used when the crossed
+ * triangles are not two pseudo-polygons. */
+static cvm_status flip_recover(cvm__tri2 *T, seg_work *w, int32_t a, int32_t b, int32_t seg)
+{
+    size_t head = 0, guard = 0, limit;
+    int32_t t, v0 = -1;
+    int j, i;
+    cvm_status s;
+    limit = 64 + 16 * w->nxe * w->nxe;
+    while (head < w->nxe) {
+        int32_t x = w->xe[head], y = w->xe[head + 1], u, k, pv, pw;
+        const int32_t *tv;
+        head += 2;
+        if (++guard > limit)
+            return cvm__error(T->ctx, CVM_E_INTERNAL, CVM_ENT_INPUT_SEGMENT, seg,
+                              "segment %ld: flip-based recovery did not converge", (long)seg);
+        if (!find_edge(T, x, y, &t, &j) || !crosses(T, a, b, x, y))
+            continue;
+        tv = T->tv + 3 * (size_t)t;
+        u = T->tn[3 * (size_t)t + j] / 3;
+        k = T->tn[3 * (size_t)t + j] % 3;
+        pv = tv[j];
+        pw = T->tv[3 * (size_t)u + k];
+        if (pv < 0 || pw < 0 ||
+            cvm__orient2d(cvm__tri2_pt(T, pv), cvm__tri2_pt(T, tv[(j + 1) % 3]), cvm__tri2_pt(T, pw)) <= 0 ||
+            cvm__orient2d(cvm__tri2_pt(T, pw), cvm__tri2_pt(T, tv[(j + 2) % 3]), cvm__tri2_pt(T, pv)) <= 0) {
+            if ((s = push(T, &w->xe, &w->nxe, &w->cap_xe, x)) ||
+                (s = push(T, &w->xe, &w->nxe, &w->cap_xe, y)))
+                return s;
+            continue;
+        }
+        cvm__tri2_flip(T, t, j);
+        if (crosses(T, a, b, pv, pw)) {
+            if ((s = push(T, &w->xe, &w->nxe, &w->cap_xe, pv)) ||
+                (s = push(T, &w->xe, &w->nxe, &w->cap_xe, pw)))
+                return s;
+        }
+    }
+    if (start_at(T, a, b, seg, &t, &i, &v0) != STEP_DONE)
+        return cvm__error(T->ctx, CVM_E_INTERNAL, CVM_ENT_INPUT_SEGMENT, seg,
+                          "segment %ld: edge %ld-%ld missing after flip-based recovery",
+                          (long)seg, (long)a, (long)b);
+    if ((s = push(T, &w->left, &w->nleft, &w->cap_left, b)) ||
+        (s = push(T, &w->left, &w->nleft, &w->cap_left, a)))
+        return s;
+    if ((s = cvm__tri2_legalize_stars(T, w->left, w->nleft)))
+        return s;
+    return cvm__tri2_legalize_stars(T, w->right, w->nright);
+}
+
 static cvm_status recover(cvm__tri2 *T, seg_work *w, int32_t a, int32_t b, int32_t seg, int split,
                           int32_t *other_seg_out)
 {
@@ -142,6 +243,7 @@ static cvm_status recover(cvm__tri2 *T, seg_work *w, int32_t a, int32_t b, int32
     x = T->tv[3 * (size_t)t + (i + 1) % 3];
     y = T->tv[3 * (size_t)t + (i + 2) % 3];
     h = 3 * (size_t)t + i;
+    w->nxe = 0;
     if ((s = push(T, &w->cav, &w->ncav, &w->cap_cav, t)) ||
         (s = push(T, &w->left, &w->nleft, &w->cap_left, a)) ||
         (s = push(T, &w->left, &w->nleft, &w->cap_left, y)) ||
@@ -178,7 +280,9 @@ static cvm_status recover(cvm__tri2 *T, seg_work *w, int32_t a, int32_t b, int32
         u = T->tn[h] / 3;
         k = T->tn[h] % 3;
         z = T->tv[3 * (size_t)u + k];
-        if ((s = push(T, &w->cav, &w->ncav, &w->cap_cav, u)))
+        if ((s = push(T, &w->cav, &w->ncav, &w->cap_cav, u)) ||
+            (s = push(T, &w->xe, &w->nxe, &w->cap_xe, x)) ||
+            (s = push(T, &w->xe, &w->nxe, &w->cap_xe, y)))
             return s;
         if (z == b)
             break;
@@ -206,6 +310,8 @@ static cvm_status recover(cvm__tri2 *T, seg_work *w, int32_t a, int32_t b, int32
             h = 3 * (size_t)u + px;
         }
     }
+    if (has_repeat(w->left, w->nleft) || has_repeat(w->right, w->nright))
+        return flip_recover(T, w, a, b, seg);
     /* left chain: a, L..., b (chain left of a->b); right chain: b, R reversed, a */
     if ((s = push(T, &w->left, &w->nleft, &w->cap_left, b)))
         return s;
@@ -267,5 +373,6 @@ done:
     cvm__free(T->ctx, w.right);
     cvm__free(T->ctx, w.newtri);
     cvm__free(T->ctx, w.rng);
+    cvm__free(T->ctx, w.xe);
     return s;
 }

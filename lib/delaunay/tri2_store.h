@@ -12,6 +12,12 @@ int32_t cvm__tri2_new(cvm__tri2 *T);
 /* Return slot t to the free list. */
 void cvm__tri2_kill(cvm__tri2 *T, int32_t t);
 
+/* Flip edge j of t (unconstrained, both sides real, convex quad): t = (v, a, b)
+ * with neighbour u = (w, b, a) becomes t = (v, a, w), u = (w, b, v). */
+void cvm__tri2_flip(cvm__tri2 *T, int32_t t, int j);
+/* Lawson flips around the stars of verts until locally (constrained) Delaunay. */
+cvm_status cvm__tri2_legalize_stars(cvm__tri2 *T, const int32_t *verts, size_t nverts);
+
 /* Link edge j of t and edge k of u as the same edge. */
 static inline void cvm__tri2_link(cvm__tri2 *T, int32_t t, int j, int32_t u, int k)
 {
