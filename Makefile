@@ -82,6 +82,7 @@ PAR = $(if $(findstring -j,$(MAKEFLAGS))$(findstring j,$(firstword $(MAKEFLAGS))
 STAGE := $(abspath $(BUILD))/stage
 EXAMPLES_C := $(sort $(wildcard examples/c/*.c))
 
+.PHONY: install-c python fortran install-python install-fortran
 .PHONY: all lib cli tests deps demo check check-unit check-asan check-symbols check-cli \
         check-examples check-python check-fortran check-clang check-noomp check-fuzz \
         check-replay check-valgrind check-amalgamation fuzz fuzz-bins replay-bins bench \
@@ -198,7 +199,11 @@ demo: deps
 	$(MAKE) $(PAR) --no-print-directory all
 	@mkdir -p $(BUILD)/demo
 	$(CLI) triangulate $(SHARED_DIR)/data/naca0012.poly -o $(BUILD)/demo/naca0012.vtu --svg $(BUILD)/demo/naca0012.svg --quality
-	@echo "demo: wrote $(BUILD)/demo/naca0012.vtu and $(BUILD)/demo/naca0012.svg"
+	$(CLI) refine $(SHARED_DIR)/data/naca0012.poly --algo frontal --size 0.5 \
+	  -o $(BUILD)/demo/naca0012_frontal.vtu --svg $(BUILD)/demo/naca0012_frontal.svg --quality
+	$(CLI) refine $(SHARED_DIR)/data/naca0012.poly --algo delaunay --size 0.5 \
+	  -o $(BUILD)/demo/naca0012_delaunay.vtu --svg $(BUILD)/demo/naca0012_delaunay.svg
+	@echo "demo: wrote $(BUILD)/demo/naca0012{,_frontal,_delaunay}.{vtu,svg}"
 
 # ---- make check ------------------------------------------------------------
 # Each step prints "== step ==" and its time; the first failure stops the run.
@@ -250,7 +255,7 @@ check-cli: $(CLI)
 # Build every example against an installed copy found through pkg-config, then run it.
 check-examples:
 	rm -rf $(STAGE)
-	$(MAKE) --no-print-directory install PREFIX=$(STAGE)
+	$(MAKE) --no-print-directory install-c PREFIX=$(STAGE)
 	@mkdir -p $(BUILD)/examples
 	@set -e; for src in $(EXAMPLES_C); do \
 	  name=$$(basename $$src .c); \
@@ -301,7 +306,11 @@ check-amalgamation: amalgamation $(TEST_OBJ)
 	$(TEST_ENV) $(AMALG)/unit_tests
 
 # ---- install, clean --------------------------------------------------------
-install: all
+# make install: the C library, header, pkg-config file and CLI, then the Fortran
+# module and the Python package (bindings/*/*.mk). install-c is the C part alone.
+install: install-c install-fortran install-python
+
+install-c: all
 	install -d $(DESTDIR)$(PREFIX)/include $(DESTDIR)$(PREFIX)/lib/pkgconfig $(DESTDIR)$(PREFIX)/bin
 	install -m 644 include/cvmesh.h $(DESTDIR)$(PREFIX)/include/
 	install -m 644 $(STATIC) $(DESTDIR)$(PREFIX)/lib/
@@ -314,6 +323,8 @@ install: all
 
 clean:
 	rm -rf $(BUILD)
+
+include bindings/python/python.mk bindings/fortran/fortran.mk
 
 -include $(LIB_OBJ:.o=.d) $(CLI_OBJ:.o=.d) $(TEST_OBJ:.o=.d) $(FUZZ_SUPPORT_OBJ:.o=.d) \
          $(wildcard $(BUILD)/obj/tests/fuzz/*.d)

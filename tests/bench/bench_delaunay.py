@@ -4,8 +4,8 @@ and scipy's qhull, on the same points, in the same run, on one core.
 
 Prints one row per case: n, medians of 5 runs, time ratio cvmesh/Triangle and
 cvmesh/qhull, triangles, and peak memory per triangle (cvmesh: its own heap
-through a counting allocator; Triangle: growth of the process's peak RSS in a
-fresh subprocess, which also counts its output arrays).
+through a counting allocator; Triangle: growth of the peak RSS (VmHWM, reset
+first) of a fresh subprocess, which also counts its output arrays).
 """
 import json, os, resource, subprocess, sys, tempfile, time
 import numpy as np
@@ -41,9 +41,15 @@ def triangle_peak_per_tri(path, switches):
 import resource, sys, numpy as np, triangle
 a = {}
 %s
-base = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
+def hwm():
+    for line in open("/proc/self/status"):
+        if line.startswith("VmHWM:"):
+            return int(line.split()[1])
+# ru_maxrss survives fork+exec on Linux, so reset the high-water mark instead
+open("/proc/self/clear_refs", "w").write("5")
+base = hwm()
 t = triangle.triangulate(a, %r)
-peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
+peak = hwm()
 print((peak - base) * 1024.0 / max(1, len(t["triangles"])))
 ''' % (("a['vertices'] = np.fromfile(%r).reshape(-1, 2)" % path) if path.endswith(".bin")
        else ("import runpy\nexec(open(%r).read())" % (path + ".py")), switches)
