@@ -545,8 +545,9 @@ CVM_API cvm_status cvm_mesh_insert_points(cvm_index *ids_out, cvm_mesh *m, const
 /**
  * Re-verify @p m with exact predicates: every triangle counter-clockwise,
  * adjacency symmetric, each edge in at most two triangles, every input segment
- * a union of mesh edges, every interior non-constrained edge locally Delaunay
- * (in-circle), Euler characteristic consistent with the boundary.
+ * a chain of constrained mesh edges from end to end, every interior
+ * non-constrained edge locally Delaunay (in-circle, or the power test with
+ * weights), the domain bounded by constrained edges or the convex hull.
  * @return CVM_OK, CVM_E_NULL_ARG, CVM_E_STATE (nothing triangulated),
  *         CVM_E_INTERNAL (message names the failed check and the triangle or edge)
  * @since 0.1

@@ -1,8 +1,10 @@
 /* triangulate.c - cvm_mesh_triangulate (Delaunay / constrained Delaunay of the input), point insertion and checking. */
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "api_internal.h"
+#include "geom/geom_internal.h"
 
 /* Grow the per-vertex marker and attribute arrays to the kernel's vertex count. */
 static cvm_status grow_vertex_data(cvm_mesh *m)
@@ -355,6 +357,127 @@ cvm_status cvm_mesh_insert_points(cvm_index *ids_out, cvm_mesh *m, const double 
     return CVM_OK;
 }
 
+typedef struct seg_key {
+    int32_t lo, hi, idx;
+} seg_key;
+
+static int cmp_seg_key(const void *pa, const void *pb)
+{
+    const seg_key *x = pa, *y = pb;
+    if (x->lo != y->lo)
+        return x->lo < y->lo ? -1 : 1;
+    if (x->hi != y->hi)
+        return x->hi < y->hi ? -1 : 1;
+    return x->idx < y->idx ? -1 : x->idx > y->idx;
+}
+
+/* canon[k]: the first input segment with the same two (mapped) end vertices as
+ * segment k, so a segment given twice is one chain. */
+static cvm_status canonical_segments(cvm_mesh *m, int32_t *canon)
+{
+    size_t k, n = m->in.nseg;
+    seg_key *keys = cvm__malloc(&m->ctx, n * sizeof *keys);
+    if (!keys)
+        return CVM_E_NOMEM;
+    for (k = 0; k < n; k++) {
+        int32_t a = m->input_map[m->in.seg[2 * k]], b = m->input_map[m->in.seg[2 * k + 1]];
+        keys[k].lo = a < b ? a : b;
+        keys[k].hi = a < b ? b : a;
+        keys[k].idx = (int32_t)k;
+    }
+    qsort(keys, n, sizeof *keys, cmp_seg_key);
+    for (k = 0; k < n; k++) {
+        int same = k > 0 && keys[k].lo == keys[k - 1].lo && keys[k].hi == keys[k - 1].hi;
+        canon[keys[k].idx] = same ? canon[keys[k - 1].idx] : keys[k].idx;
+    }
+    cvm__free(&m->ctx, keys);
+    return CVM_OK;
+}
+
+/* Whether x may lie on the chain of segment a-b reached across an edge that
+ * carries another segment's index (an edge stores one index, so pieces that
+ * two segments share, exactly or within the rounding of their crossing
+ * points, show only one): b itself, a point exactly on the line within the
+ * segment's box, or a Steiner vertex (id >= nin) in the box widened by a
+ * relative 1e-9 (a check, not a topological decision). */
+static int may_continue(const cvm__tri2 *T, int32_t x, int32_t a, int32_t b, int32_t nin)
+{
+    const double *pa = T->xy + 2 * (size_t)a, *pb = T->xy + 2 * (size_t)b, *px = T->xy + 2 * (size_t)x;
+    double lo0 = pa[0] < pb[0] ? pa[0] : pb[0], hi0 = pa[0] < pb[0] ? pb[0] : pa[0];
+    double lo1 = pa[1] < pb[1] ? pa[1] : pb[1], hi1 = pa[1] < pb[1] ? pb[1] : pa[1];
+    double slack = 1e-9 * ((hi0 - lo0) + (hi1 - lo1));
+    int inbox = px[0] >= lo0 && px[0] <= hi0 && px[1] >= lo1 && px[1] <= hi1;
+    if (x == b)
+        return 1;
+    if (inbox && cvm__orient2d(pa, pb, px) == 0)
+        return 1;
+    return x >= nin && px[0] >= lo0 - slack && px[0] <= hi0 + slack && px[1] >= lo1 - slack &&
+           px[1] <= hi1 + slack;
+}
+
+/* Every input segment must be joined end to end by constrained edges: those
+ * of its own (canonical) index, and shared pieces as may_continue() allows. */
+static cvm_status check_segment_chains(cvm_mesh *m)
+{
+    cvm__tri2 *T = &m->tri;
+    size_t k;
+    int32_t *canon;
+    cvm_status s = CVM_OK;
+    int32_t nin = (int32_t)(m->in.np - m->n_dup); /* vertices below this come from the input */
+    if (!m->in.nseg)
+        return CVM_OK;
+    canon = cvm__malloc(&m->ctx, m->in.nseg * sizeof *canon);
+    if (!canon || canonical_segments(m, canon)) {
+        cvm__free(&m->ctx, canon);
+        return cvm__nomem(&m->ctx);
+    }
+    for (k = 0; k < m->in.nseg && !s; k++) {
+        int32_t a = m->input_map[m->in.seg[2 * k]], b = m->input_map[m->in.seg[2 * k + 1]];
+        int32_t ck = canon[k];
+        size_t n = 0, head = 0, q;
+        int found = a == b;
+        if (cvm__grow(T->ctx, (void **)&T->stack, &T->cap_stack, 1, sizeof(int32_t))) {
+            s = cvm__nomem(&m->ctx);
+            break;
+        }
+        T->stack[n++] = a;
+        while (head < n && !found && !s) {
+            int32_t cur = T->stack[head++], t0 = T->vtri[cur], t = t0;
+            if (t0 < 0)
+                continue;
+            do {
+                const int32_t *v = T->tv + 3 * (size_t)t;
+                int i = v[0] == cur ? 0 : v[1] == cur ? 1 : 2;
+                int32_t x = v[(i + 1) % 3], seg = cvm__tri2_edge_seg(T, t, (i + 2) % 3);
+                t = T->tn[3 * (size_t)t + (i + 1) % 3] / 3;
+                if (x < 0 || seg < 0)
+                    continue;
+                if ((seg >= (int32_t)m->in.nseg || canon[seg] != ck) && !may_continue(T, x, a, b, nin))
+                    continue;
+                for (q = 0; q < n && T->stack[q] != x; q++)
+                    ;
+                if (q < n)
+                    continue;
+                if (x == b)
+                    found = 1;
+                if (n + 1 > T->cap_stack &&
+                    cvm__grow(T->ctx, (void **)&T->stack, &T->cap_stack, n + 1, sizeof(int32_t))) {
+                    s = cvm__nomem(&m->ctx);
+                    break;
+                }
+                T->stack[n++] = x;
+            } while (t != t0);
+        }
+        if (!found && !s)
+            s = cvm__error(&m->ctx, CVM_E_INTERNAL, CVM_ENT_INPUT_SEGMENT, (int64_t)k,
+                              "check failed: input segment %lu (points %ld-%ld) is not joined end "
+                              "to end by constrained edges",
+                              (unsigned long)k, (long)m->in.seg[2 * k], (long)m->in.seg[2 * k + 1]);
+    }
+    cvm__free(&m->ctx, canon);
+    return s;
+}
+
 cvm_status cvm_mesh_check(cvm_mesh *m)
 {
     const cvm__tri2 *T;
@@ -366,7 +489,7 @@ cvm_status cvm_mesh_check(cvm_mesh *m)
     CVM__BEGIN(m);
     if (!m->triangulated)
         return cvm__error(&m->ctx, CVM_E_STATE, CVM_ENT_NONE, -1, "nothing triangulated");
-    if ((s = cvm__tri2_check(&m->tri)))
+    if ((s = cvm__tri2_check(&m->tri)) || (s = check_segment_chains(m)))
         return s;
     T = &m->tri;
     /* the domain is bounded by constrained edges or by the convex hull */

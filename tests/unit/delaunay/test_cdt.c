@@ -5,6 +5,7 @@
 
 #include "delaunay/delaunay_tests.h"
 #include "support/mesh_oracle.h"
+#include "api/api_internal.h"
 
 static void expect_pslg(cvmtest_expect *e, const cvm_index *segs, size_t nseg, long euler, double area)
 {
@@ -223,6 +224,27 @@ START_TEST(jagged_star_polygon)
 }
 END_TEST
 
+/* cvm_mesh_check must notice a segment whose edges lost their constraint. */
+START_TEST(check_detects_a_lost_segment)
+{
+    double xy[] = {0, 0, 1, 0, 1, 1, 0, 1};
+    cvm_index segs[] = {0, 1, 1, 2, 2, 3, 3, 0, 0, 2};
+    cvm_mesh *m;
+    size_t k;
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_points(m, xy, 4, 2), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_segments(m, segs, 5), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_check(m), CVM_OK);
+    for (k = 0; k < 3 * m->tri.nt; k++)
+        if (m->tri.te[k] == 4)
+            m->tri.te[k] = -1; /* the diagonal is now an ordinary edge */
+    ck_assert_int_eq(cvm_mesh_check(m), CVM_E_INTERNAL);
+    ck_assert_ptr_nonnull(strstr(cvm_mesh_errmsg(m), "input segment 4"));
+    cvm_mesh_free(m);
+}
+END_TEST
+
 TCase *delaunay_cdt_tcase(void)
 {
     TCase *tc = tcase_create("cdt");
@@ -235,5 +257,6 @@ TCase *delaunay_cdt_tcase(void)
     tcase_add_test(tc, open_boundary_is_not_closed);
     tcase_add_test(tc, regions_get_attributes);
     tcase_add_test(tc, jagged_star_polygon);
+    tcase_add_test(tc, check_detects_a_lost_segment);
     return tc;
 }
