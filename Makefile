@@ -150,16 +150,19 @@ fuzz_seeds = $(wildcard tests/fuzz/corpus/$(1)/*) \
   $(if $(filter node_read,$(1)),$(wildcard tests/data/*.node))
 
 FUZZ_BUILD := $(BUILD)/fuzzer
+FUZZ_SEED ?= 1
 FUZZ_MAKE = $(MAKE) $(PAR) --no-print-directory BUILD=$(FUZZ_BUILD) CC=$(CLANG) SAN=1 FUZZ=1 OPENMP=0
 
-# run_fuzz(target, seconds): fresh work corpus seeded from the committed one;
-# the log goes to a file and is shown only on failure.
+# run_fuzz(target, seconds, seed): fresh work corpus seeded from the committed one;
+# the log goes to a file and is shown only on failure. make check uses a fixed
+# seed (FUZZ_SEED, 1) so its short runs explore the same inputs on every machine
+# of the same speed; make fuzz draws a new seed (0) each time.
 define run_fuzz
 	@rm -rf $(FUZZ_BUILD)/corpus/$(1) && mkdir -p $(FUZZ_BUILD)/corpus/$(1) $(FUZZ_BUILD)/artifacts/$(1)
 	@for f in $(call fuzz_seeds,$(1)); do cp "$$f" "$(FUZZ_BUILD)/corpus/$(1)/$$(echo "$$f" | tr / _)"; done
 	@echo "fuzz: $(1) for $(2) s"
 	@ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
-	  $(FUZZ_BUILD)/fuzz/fuzz_$(1) -max_total_time=$(2) -timeout=20 -rss_limit_mb=2048 \
+	  $(FUZZ_BUILD)/fuzz/fuzz_$(1) -max_total_time=$(2) -seed=$(3) -timeout=20 -rss_limit_mb=2048 \
 	  -max_len=4096 -print_final_stats=1 -artifact_prefix=$(FUZZ_BUILD)/artifacts/$(1)/ \
 	  $(FUZZ_BUILD)/corpus/$(1) > $(FUZZ_BUILD)/fuzz_$(1).log 2>&1 \
 	  || { tail -n 60 $(FUZZ_BUILD)/fuzz_$(1).log; \
@@ -171,12 +174,12 @@ endef
 check-fuzz:
 	@mkdir -p $(FUZZ_BUILD)
 	$(FUZZ_MAKE) fuzz-bins
-	$(foreach t,$(FUZZ_TARGETS),$(call run_fuzz,$(t),$(FUZZ_TIME)))
+	$(foreach t,$(FUZZ_TARGETS),$(call run_fuzz,$(t),$(FUZZ_TIME),$(FUZZ_SEED)))
 
 fuzz:
 	@mkdir -p $(FUZZ_BUILD)
 	$(FUZZ_MAKE) fuzz-bins
-	$(foreach t,$(FUZZ_TARGETS),$(call run_fuzz,$(t),$(FUZZ_LONG_TIME)))
+	$(foreach t,$(FUZZ_TARGETS),$(call run_fuzz,$(t),$(FUZZ_LONG_TIME),0))
 
 # Replay every seed (and shared data) through the fuzz targets without libFuzzer.
 check-replay: replay-bins

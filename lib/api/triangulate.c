@@ -415,6 +415,26 @@ static int may_continue(const cvm__tri2 *T, int32_t x, int32_t a, int32_t b, int
            px[1] <= hi1 + slack;
 }
 
+/* x has a constrained edge of canonical segment ck to a vertex other than
+ * from: a piece labelled with another segment is then shared, sandwiched
+ * between pieces of ck. */
+static int continues_with(const cvm__tri2 *T, int32_t x, int32_t from, const int32_t *canon,
+                          size_t nseg, int32_t ck)
+{
+    int32_t t0 = T->vtri[x], t = t0;
+    if (t0 < 0)
+        return 0;
+    do {
+        const int32_t *v = T->tv + 3 * (size_t)t;
+        int i = v[0] == x ? 0 : v[1] == x ? 1 : 2;
+        int32_t y = v[(i + 1) % 3], seg = cvm__tri2_edge_seg(T, t, (i + 2) % 3);
+        if (y >= 0 && y != from && seg >= 0 && (size_t)seg < nseg && canon[seg] == ck)
+            return 1;
+        t = T->tn[3 * (size_t)t + (i + 1) % 3] / 3;
+    } while (t != t0);
+    return 0;
+}
+
 /* Every input segment must be joined end to end by constrained edges: those
  * of its own (canonical) index, and shared pieces as may_continue() allows. */
 static cvm_status check_segment_chains(cvm_mesh *m)
@@ -452,7 +472,8 @@ static cvm_status check_segment_chains(cvm_mesh *m)
                 t = T->tn[3 * (size_t)t + (i + 1) % 3] / 3;
                 if (x < 0 || seg < 0)
                     continue;
-                if ((seg >= (int32_t)m->in.nseg || canon[seg] != ck) && !may_continue(T, x, a, b, nin))
+                if ((seg >= (int32_t)m->in.nseg || canon[seg] != ck) && !may_continue(T, x, a, b, nin) &&
+                    !continues_with(T, x, cur, canon, m->in.nseg, ck))
                     continue;
                 for (q = 0; q < n && T->stack[q] != x; q++)
                     ;
