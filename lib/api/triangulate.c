@@ -394,25 +394,30 @@ static cvm_status canonical_segments(cvm_mesh *m, int32_t *canon)
     return CVM_OK;
 }
 
-/* Whether x may lie on the chain of segment a-b reached across an edge that
- * carries another segment's index (an edge stores one index, so pieces that
- * two segments share, exactly or within the rounding of their crossing
- * points, show only one): b itself, a point exactly on the line within the
- * segment's box, or a Steiner vertex (id >= nin) in the box widened by a
- * relative 1e-9 (a check, not a topological decision). */
-static int may_continue(const cvm__tri2 *T, int32_t x, int32_t a, int32_t b, int32_t nin)
+/* Whether x may lie on the chain of segment a-b when reached across an edge
+ * that carries another segment's index (an edge stores one index, so pieces
+ * that two segments share, exactly or within the rounding of their crossing
+ * points, show only one): b itself, or a vertex within 1e-9 of the segment's
+ * length from the segment. This is a check of the output, with a stated
+ * tolerance; no meshing decision depends on it. */
+static int may_continue(const cvm__tri2 *T, int32_t x, int32_t a, int32_t b)
 {
     const double *pa = T->xy + 2 * (size_t)a, *pb = T->xy + 2 * (size_t)b, *px = T->xy + 2 * (size_t)x;
-    double lo0 = pa[0] < pb[0] ? pa[0] : pb[0], hi0 = pa[0] < pb[0] ? pb[0] : pa[0];
-    double lo1 = pa[1] < pb[1] ? pa[1] : pb[1], hi1 = pa[1] < pb[1] ? pb[1] : pa[1];
-    double slack = 1e-9 * ((hi0 - lo0) + (hi1 - lo1));
-    int inbox = px[0] >= lo0 && px[0] <= hi0 && px[1] >= lo1 && px[1] <= hi1;
+    double dx = pb[0] - pa[0], dy = pb[1] - pa[1], len2 = dx * dx + dy * dy;
+    double t, cx, cy, tol2;
     if (x == b)
         return 1;
-    if (inbox && cvm__orient2d(pa, pb, px) == 0)
+    if (!(len2 > 0))
+        return 0;
+    t = ((px[0] - pa[0]) * dx + (px[1] - pa[1]) * dy) / len2;
+    if (t < -1e-9 || t > 1 + 1e-9)
+        return 0;
+    if (cvm__orient2d(pa, pb, px) == 0)
         return 1;
-    return x >= nin && px[0] >= lo0 - slack && px[0] <= hi0 + slack && px[1] >= lo1 - slack &&
-           px[1] <= hi1 + slack;
+    cx = pa[0] + t * dx - px[0];
+    cy = pa[1] + t * dy - px[1];
+    tol2 = 1e-18 * len2;
+    return cx * cx + cy * cy <= tol2;
 }
 
 /* x has a constrained edge of canonical segment ck to a vertex other than
@@ -443,7 +448,6 @@ static cvm_status check_segment_chains(cvm_mesh *m)
     size_t k;
     int32_t *canon;
     cvm_status s = CVM_OK;
-    int32_t nin = (int32_t)(m->in.np - m->n_dup); /* vertices below this come from the input */
     if (!m->in.nseg)
         return CVM_OK;
     canon = cvm__malloc(&m->ctx, m->in.nseg * sizeof *canon);
@@ -472,7 +476,7 @@ static cvm_status check_segment_chains(cvm_mesh *m)
                 t = T->tn[3 * (size_t)t + (i + 1) % 3] / 3;
                 if (x < 0 || seg < 0)
                     continue;
-                if ((seg >= (int32_t)m->in.nseg || canon[seg] != ck) && !may_continue(T, x, a, b, nin) &&
+                if ((seg >= (int32_t)m->in.nseg || canon[seg] != ck) && !may_continue(T, x, a, b) &&
                     !continues_with(T, x, cur, canon, m->in.nseg, ck))
                     continue;
                 for (q = 0; q < n && T->stack[q] != x; q++)
