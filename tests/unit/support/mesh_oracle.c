@@ -272,10 +272,17 @@ static int axis_of(const double *a, const double *b)
 
 /* 1 if w is strictly closer to b than cur along axis ax (or, with weak set, no
  * farther), and not beyond b. */
-static int progresses(const double *cur, const double *w, const double *b, int ax, int weak)
+static int progresses(const double *cur, const double *w, const double *b, int ax, int weak,
+                      const double *a)
 {
-    if (weak && w[ax] == cur[ax])
-        return 1;
+    if (weak) {
+        /* a rounded intersection may sit an ulp behind the previous one: any
+         * place within the segment's extent (widened by 1e-9 of it) will do;
+         * visit stamps keep the search finite */
+        double lo = a[ax] < b[ax] ? a[ax] : b[ax], hi = a[ax] < b[ax] ? b[ax] : a[ax];
+        double eps = 1e-9 * (hi - lo);
+        return w[ax] >= lo - eps && w[ax] <= hi + eps;
+    }
     if (cur[ax] < b[ax])
         return w[ax] > cur[ax] && w[ax] <= b[ax];
     return w[ax] < cur[ax] && w[ax] >= b[ax];
@@ -316,8 +323,9 @@ static int check_segment(oracle *o, size_t k, cvm_index a, cvm_index b)
             cvm_index w = o->adj[i];
             const double *pw = P(o, w);
             int steiner = (size_t)w >= o->n_orig, on_line;
+            int weak = steiner || (size_t)cur >= o->n_orig;
             if (o->visit[w] == stamp ||
-                (w != b && !progresses(P(o, cur), pw, pb, ax, steiner)))
+                (w != b && !progresses(P(o, cur), pw, pb, ax, weak, pa)))
                 continue;
             on_line = w == b || cvm__orient2d(pa, pb, pw) == 0;
             if (!on_line && !(steiner && fabs(cvm__orient2d(pa, pb, pw)) <= slack))
