@@ -328,7 +328,10 @@ static int check_segment(oracle *o, size_t k, cvm_index a, cvm_index b)
                 (w != b && !progresses(P(o, cur), pw, pb, ax, weak, pa)))
                 continue;
             on_line = w == b || cvm__orient2d(pa, pb, pw) == 0;
-            if (!on_line && !(steiner && fabs(cvm__orient2d(pa, pb, pw)) <= slack))
+            /* an input vertex within rounding of the segment may carry it too:
+             * a sub-segment from a rounded crossing can pass exactly through it
+             * (then only along output segments) */
+            if (!on_line && !((steiner || o->cons) && fabs(cvm__orient2d(pa, pb, pw)) <= slack))
                 continue;
             if (o->cons && !is_constrained(o, cur, w)) {
                 if (on_line && loose_a < 0) {
