@@ -414,7 +414,8 @@ typedef enum cvm_option {
     /** Maximum Steiner points a refinement may add, integer, 0 = none (default), [0, 2^31-1]. */
     CVM_OPT_MAX_STEINER = 402,
     /** Threads for parallel stages, integer, 0 = OpenMP default (default), [0, 1024].
-     *  Output does not depend on it. */
+     *  Output does not depend on it. In version 0.1 no stage runs in parallel yet
+     *  (triangulation and refinement are serial), so the value has no effect. */
     CVM_OPT_THREADS = 403
 } cvm_option;
 
