@@ -1,6 +1,6 @@
 #!/bin/sh
 # run.sh BUILD SHARED - build the benchmark drivers and run every benchmark
-# beside its peer (Triangle and scipy from PyPI, in a venv under BUILD).
+# beside its peer (Triangle, scipy and Gmsh from PyPI, in a venv under BUILD).
 set -eu
 BUILD=$1
 SHARED=$2
@@ -12,8 +12,31 @@ VENV="$BUILD/venv"
 if [ ! -x "$VENV/bin/python" ]; then
     python3 -m venv "$VENV"
 fi
-"$VENV/bin/python" -c 'import numpy, scipy, triangle' 2>/dev/null ||
-    "$VENV/bin/pip" install -q numpy scipy triangle
+"$VENV/bin/python" -c 'import importlib.util as u, sys
+sys.exit(not all(u.find_spec(m) for m in ("numpy", "scipy", "triangle", "gmsh")))' ||
+    "$VENV/bin/pip" install -q numpy scipy triangle gmsh
+# The gmsh wheel loads X11/GL libraries even when run headless; on bare Debian
+# install them (root only), else say what is missing and let bench_refine.py
+# skip the gmsh rows.
+GMSH_DEBS="libglu1-mesa libgl1 libxcursor1 libxft2 libxinerama1 libxrender1"
+if command -v dpkg-query >/dev/null 2>&1; then
+    missing=
+    for p in $GMSH_DEBS; do
+        dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'ok installed' ||
+            missing="$missing $p"
+    done
+    if [ -n "$missing" ]; then
+        line="DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends$missing"
+        if [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then
+            echo "# run.sh: installing for gmsh: $line"
+            sh -c "$line" >/dev/null || echo "# run.sh: apt-get failed; gmsh rows may be skipped"
+        else
+            echo "# run.sh: gmsh needs (as root): $line"
+            echo "# run.sh: gmsh rows skipped"
+            export CVM_BENCH_NO_GMSH=1
+        fi
+    fi
+fi
 OMP_NUM_THREADS=1 "$VENV/bin/python" tests/bench/bench_delaunay.py "$BUILD" "$SHARED"
 for extra in tests/bench/bench_refine.py; do
     if [ -f "$extra" ]; then
