@@ -44,10 +44,44 @@ static void bq_rotated(const cvm__tri2 *T, int32_t t, int32_t *v)
     v[2] = tv[(s + 2) % 3];
 }
 
+/* Sift e[i] down in the heap e[0..n). */
+static void bq_sift_down(cvm__bad_entry *e, size_t n, size_t i)
+{
+    cvm__bad_entry x = e[i];
+    for (;;) {
+        size_t c = 2 * i + 1;
+        if (c >= n)
+            break;
+        if (c + 1 < n && bq_less(&e[c + 1], &e[c]))
+            c++;
+        if (!bq_less(&e[c], &x))
+            break;
+        e[i] = e[c];
+        i = c;
+    }
+    e[i] = x;
+}
+
+/* Drop entries whose triangle is gone and rebuild the heap (Floyd). Entries are
+ * only ever dropped when they could not be popped as valid now; the trigger
+ * depends on counts alone, so runs stay reproducible. */
+static void bq_compact(cvm__bad_queue *q, const cvm__tri2 *T)
+{
+    size_t i, n = 0;
+    for (i = 0; i < q->n; i++)
+        if (cvm__bq_valid(T, &q->e[i]))
+            q->e[n++] = q->e[i];
+    q->n = n;
+    for (i = n / 2; i-- > 0;)
+        bq_sift_down(q->e, n, i);
+}
+
 cvm_status cvm__bq_push(cvm__bad_queue *q, const cvm__tri2 *T, int32_t t, int32_t cls, double key)
 {
     cvm__bad_entry x;
     size_t i;
+    if (q->n >= q->cap && q->n > 1024 && q->n > 2 * (T->nt - T->n_dead))
+        bq_compact(q, T); /* most entries are stale: keep the heap small and cached */
     if (q->n >= q->cap && cvm__grow(q->ctx, (void **)&q->e, &q->cap, q->n + 1, sizeof *q->e))
         return CVM_E_NOMEM;
     x.key = key;

@@ -4,8 +4,12 @@ side with Triangle (PyPI `triangle`, switches pq30a<A>) on the shared geometries
 at a uniform size h, in the same run, on one core.
 
 Triangle gets the area bound A = sqrt(3)/4 h^2 (an equilateral triangle of edge
-h). Every mesh is measured here by the same numpy code: vertices, triangles,
-time (median of REPS runs of triangulate + refine; Triangle: triangulate()),
+h). Gmsh (PyPI `gmsh`, geo kernel, the .poly loops as curve loops, holes as
+inner loops) gets Mesh.MeshSizeMin = Max = h, no size from points, curvature or
+boundary, one thread, Mesh.Algorithm 5 (gmsh-del, Delaunay) and 6 (gmsh-front,
+Frontal-Delaunay); only gmsh.model.mesh.generate(2) is timed. Every mesh is measured here by the same numpy code: vertices, triangles,
+time (median of REPS runs of triangulate + refine; Triangle: triangulate();
+Gmsh: generate(2)),
 min angle, % of angles in [55, 65] degrees, % obtuse triangles (an angle > 90),
 % of interior vertices (on no boundary edge) of degree 6, and mean edge / h.
 
@@ -101,12 +105,91 @@ def run_triangle(poly, h):
     return ts[len(ts) // 2], t["vertices"], t["triangles"]
 
 
+def poly_loops(segs):
+    """The closed loops of a .poly whose vertices all lie on two segments: each a
+    list of (segment index, forward?) in walking order."""
+    at = {}
+    for k, (a, b) in enumerate(segs):
+        at.setdefault(int(a), []).append(k)
+        at.setdefault(int(b), []).append(k)
+    if any(len(v) != 2 for v in at.values()):
+        raise ValueError("segments do not form simple closed loops")
+    seen, loops = set(), []
+    for k0 in range(len(segs)):
+        if k0 in seen:
+            continue
+        loop, k, v = [], k0, int(segs[k0][0])
+        while k not in seen:
+            seen.add(k)
+            fwd = int(segs[k][0]) == v
+            loop.append((k, fwd))
+            v = int(segs[k][1]) if fwd else int(segs[k][0])
+            k = at[v][0] if at[v][1] == k else at[v][1]
+        loops.append(loop)
+    return loops
+
+
+def run_gmsh(poly, h, algo):
+    """Gmsh (PyPI gmsh, geo kernel) at uniform size h; Mesh.Algorithm algo
+    (5 Delaunay, 6 Frontal-Delaunay). Times gmsh.model.mesh.generate(2) only."""
+    import gmsh
+    xy, segs, holes = read_poly(poly)
+    loops = poly_loops(segs)
+
+    def area(loop):
+        v = np.array([segs[k][0] if f else segs[k][1] for k, f in loop])
+        x, y = xy[v, 0], xy[v, 1]
+        return abs(float(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1)))) / 2
+    loops.sort(key=area, reverse=True)            # outer boundary first, holes after
+    if len(loops) - 1 != len(holes):
+        raise ValueError("%d inner loops but %d holes" % (len(loops) - 1, len(holes)))
+    gmsh.initialize(readConfigFiles=False)
+    try:
+        for opt, val in (("General.Terminal", 0), ("General.NumThreads", 1),
+                         ("Mesh.Algorithm", algo), ("Mesh.MeshSizeMin", h),
+                         ("Mesh.MeshSizeMax", h), ("Mesh.MeshSizeFromPoints", 0),
+                         ("Mesh.MeshSizeFromCurvature", 0),
+                         ("Mesh.MeshSizeExtendFromBoundary", 0)):
+            gmsh.option.setNumber(opt, val)
+        gmsh.model.add("bench")
+        geo = gmsh.model.geo
+        pt = [geo.addPoint(x, y, 0, h) for x, y in xy]
+        ln = [geo.addLine(pt[a], pt[b]) for a, b in segs]
+        cl = [geo.addCurveLoop([ln[k] if f else -ln[k] for k, f in loop]) for loop in loops]
+        geo.addPlaneSurface(cl)
+        geo.synchronize()
+        ts = []
+        for _ in range(REPS):
+            gmsh.model.mesh.clear()
+            t0 = time.perf_counter()
+            gmsh.model.mesh.generate(2)
+            ts.append(time.perf_counter() - t0)
+        ts.sort()
+        tags, coord, _ = gmsh.model.mesh.getNodes()
+        _, enodes = gmsh.model.mesh.getElementsByType(2)
+    finally:
+        gmsh.finalize()
+    index = np.zeros(int(tags.max()) + 1, dtype=np.int64)
+    index[tags.astype(np.int64)] = np.arange(len(tags))
+    tri = index[np.asarray(enodes, dtype=np.int64)].reshape(-1, 3)
+    return ts[len(ts) // 2], np.asarray(coord).reshape(-1, 3)[:, :2], tri
+
+
 def main():
     build_driver()
     print("# bench_refine: uniform size h; time = median of %d runs (triangulate + refine), one core" % REPS)
     print("%-9s %-5s %-9s %7s %7s %9s %8s %7s %6s %6s %6s %6s" %
           ("case", "h", "mesher", "verts", "tris", "time_s", "us/tri", "minang", "%55-65", "%obt",
            "%deg6", "edge/h"))
+    gmsh_ok = not os.environ.get("CVM_BENCH_NO_GMSH")
+    if gmsh_ok:
+        try:
+            import gmsh  # noqa: F401  (loads libgmsh: may fail on missing X11/GL libs)
+        except (ImportError, OSError) as e:
+            print("# Gmsh (pip gmsh) not usable (%s): skipped" % str(e).splitlines()[0])
+            gmsh_ok = False
+    else:
+        print("# Gmsh skipped (its system libraries are missing; see run.sh)")
     with tempfile.TemporaryDirectory() as tmp:
         for name, h in CASES:
             poly = os.path.join(SHARED, "data", name + ".poly")
@@ -117,6 +200,9 @@ def main():
                 print("# Triangle (pip triangle) not installed: skipped")
             for algo, label in ((1, "cvm-del"), (2, "cvm-front")):
                 rows.append((label,) + run_cvmesh(poly, h, algo, tmp))
+            if gmsh_ok:
+                for algo, label in ((5, "gmsh-del"), (6, "gmsh-front")):
+                    rows.append((label,) + run_gmsh(poly, h, algo))
             for label, t, xy, tri in rows:
                 q = quality(np.asarray(xy), np.asarray(tri), h)
                 print("%-9s %-5g %-9s %7d %7d %9.4f %8.3f %7.2f %6.1f %6.1f %6.1f %6.3f" %
