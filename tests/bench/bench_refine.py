@@ -7,11 +7,11 @@ Triangle gets the area bound A = sqrt(3)/4 h^2 (an equilateral triangle of edge
 h). Gmsh (PyPI `gmsh`, geo kernel, the .poly loops as curve loops, holes as
 inner loops) gets Mesh.MeshSizeMin = Max = h, no size from points, curvature or
 boundary, one thread, Mesh.Algorithm 5 (gmsh-del, Delaunay) and 6 (gmsh-front,
-Frontal-Delaunay); only gmsh.model.mesh.generate(2) is timed. Every mesh is measured here by the same numpy code: vertices, triangles,
-time (median of REPS runs of triangulate + refine; Triangle: triangulate();
-Gmsh: generate(2)),
-min angle, % of angles in [55, 65] degrees, % obtuse triangles (an angle > 90),
-% of interior vertices (on no boundary edge) of degree 6, and mean edge / h.
+Frontal-Delaunay); only gmsh.model.mesh.generate(2) is timed. Every mesh is
+measured here by the same numpy code: vertices, triangles, time (median of REPS
+runs of triangulate + refine; Triangle: triangulate(); Gmsh: generate(2)), min
+angle, % of angles in [55, 65] degrees, % obtuse triangles (an angle > 90), % of
+interior vertices (on no boundary edge) of degree 6, and mean edge / h.
 
 usage: bench_refine.py BUILD SHARED   (make bench calls it through run.sh)
 """
@@ -205,7 +205,7 @@ def main():
                     rows.append((label,) + run_gmsh(poly, h, algo))
             for label, t, xy, tri in rows:
                 q = quality(np.asarray(xy), np.asarray(tri), h)
-                print("%-9s %-5g %-9s %7d %7d %9.4f %8.3f %7.2f %6.1f %6.1f %6.1f %6.3f" %
+                print("%-9s %-5g %-10s %7d %7d %9.4f %8.3f %7.2f %6.1f %6.1f %6.1f %6.3f" %
                       (name, h, label, q["nv"], q["nt"], t, 1e6 * t / q["nt"], q["minang"], q["reg"],
                        q["obt"], q["deg6"], q["edge"]))
 
