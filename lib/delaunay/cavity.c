@@ -36,7 +36,7 @@ static void set_key(edge_key *k, int32_t u, int32_t v, int32_t half, int32_t out
 cvm_status cvm__tri2_replace(cvm__tri2 *T, const int32_t *cav, size_t ncav, const int32_t *newtri,
                              size_t nnew, int32_t ca, int32_t cb, int32_t cseg)
 {
-    size_t nkeys = 0, i, nb = 0;
+    size_t nkeys = 0, i;
     edge_key *keys;
     uint8_t flags = ncav ? (uint8_t)(T->tf[cav[0]] & CVM__TF_OUT) : 0;
     double ta = (ncav && T->ta) ? T->ta[cav[0]] : 0.0;
@@ -57,7 +57,6 @@ cvm_status cvm__tri2_replace(cvm__tri2 *T, const int32_t *cav, size_t ncav, cons
                 continue;
             set_key(&keys[nkeys++], T->tv[3 * (size_t)t + (j + 1) % 3],
                     T->tv[3 * (size_t)t + (j + 2) % 3], T->tn[h], 1, T->te ? T->te[h] : -1);
-            nb++;
         }
     }
     for (i = 0; i < ncav; i++)
@@ -95,6 +94,5 @@ cvm_status cvm__tri2_replace(cvm__tri2 *T, const int32_t *cav, size_t ncav, cons
         T->te[k1->half] = seg;
     }
     cvm__free(T->ctx, keys);
-    (void)nb;
     return CVM_OK;
 }

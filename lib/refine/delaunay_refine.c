@@ -124,22 +124,28 @@ int cvm__rf_classify(cvm__refiner *R, int32_t t, double *key_out)
     return dr_exempt(R, tv[(jmin + 1) % 3], tv[(jmin + 2) % 3]) ? 3 : 2;
 }
 
+/* Queue domain triangle t if it is too large (class 0) or badly shaped (1). */
+static cvm_status dr_queue_triangle(cvm__refiner *R, int32_t t)
+{
+    double key;
+    int c;
+    if (!cvm__tri2_in_domain(R->T, t))
+        return CVM_OK;
+    c = cvm__rf_classify(R, t, &key);
+    if ((c == 1 || c == 2) && cvm__bq_push(&R->q, R->T, t, c == 1 ? 0 : 1, key))
+        return cvm__nomem(R->ctx);
+    return CVM_OK;
+}
+
 cvm_status cvm__rf_queue_star(cvm__refiner *R, int32_t v)
 {
     size_t n = cvm__rf_star(R, v), k;
     cvm_status s;
     if (n == 0)
         return cvm__nomem(R->ctx);
-    for (k = 0; k < n; k++) {
-        int32_t t = R->star[k];
-        double key;
-        int c;
-        if (!cvm__tri2_in_domain(R->T, t))
-            continue;
-        c = cvm__rf_classify(R, t, &key);
-        if ((c == 1 || c == 2) && (s = cvm__bq_push(&R->q, R->T, t, c == 1 ? 0 : 1, key)))
-            return cvm__nomem(R->ctx);
-    }
+    for (k = 0; k < n; k++)
+        if ((s = dr_queue_triangle(R, R->star[k])))
+            return s;
     return CVM_OK;
 }
 
@@ -264,18 +270,12 @@ int cvm__rf_insert_free(cvm__refiner *R, int32_t t, const double *x, int32_t *v_
 /* Queue every bad triangle of the domain with the current rules. */
 static cvm_status dr_queue_all(cvm__refiner *R)
 {
-    const cvm__tri2 *T = R->T;
     size_t t;
+    cvm_status s;
     cvm__bq_clear(&R->q);
-    for (t = 0; t < T->nt; t++) {
-        double key;
-        int c;
-        if (!cvm__tri2_in_domain(T, (int32_t)t))
-            continue;
-        c = cvm__rf_classify(R, (int32_t)t, &key);
-        if ((c == 1 || c == 2) && cvm__bq_push(&R->q, T, (int32_t)t, c == 1 ? 0 : 1, key))
-            return cvm__nomem(R->ctx);
-    }
+    for (t = 0; t < R->T->nt; t++)
+        if ((s = dr_queue_triangle(R, (int32_t)t)))
+            return s;
     return CVM_OK;
 }
 

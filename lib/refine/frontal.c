@@ -53,19 +53,26 @@ static int fr_classify(cvm__refiner *R, int32_t t, double *key, int *jmin)
     return 1;
 }
 
+/* Queue domain triangle t if the front has reached it and it is bad. */
+static cvm_status fr_queue_triangle(cvm__refiner *R, int32_t t)
+{
+    double key;
+    int jmin;
+    if (cvm__tri2_in_domain(R->T, t) && fr_classify(R, t, &key, &jmin) &&
+        cvm__bq_push(&R->q, R->T, t, 0, key))
+        return cvm__nomem(R->ctx);
+    return CVM_OK;
+}
+
 static cvm_status fr_queue_star(cvm__refiner *R, int32_t v)
 {
     size_t n = cvm__rf_star(R, v), k;
+    cvm_status s;
     if (n == 0)
         return cvm__nomem(R->ctx);
-    for (k = 0; k < n; k++) {
-        int32_t t = R->star[k];
-        double key;
-        int jmin;
-        if (cvm__tri2_in_domain(R->T, t) && fr_classify(R, t, &key, &jmin) &&
-            cvm__bq_push(&R->q, R->T, t, 0, key))
-            return cvm__nomem(R->ctx);
-    }
+    for (k = 0; k < n; k++)
+        if ((s = fr_queue_triangle(R, R->star[k])))
+            return s;
     return CVM_OK;
 }
 
@@ -142,16 +149,12 @@ static cvm_status fr_point(cvm__refiner *R, int32_t t, int jmin, double *x)
 
 static cvm_status fr_queue_all(cvm__refiner *R)
 {
-    const cvm__tri2 *T = R->T;
     size_t t;
+    cvm_status s;
     cvm__bq_clear(&R->q);
-    for (t = 0; t < T->nt; t++) {
-        double key;
-        int jmin;
-        if (cvm__tri2_in_domain(T, (int32_t)t) && fr_classify(R, (int32_t)t, &key, &jmin) &&
-            cvm__bq_push(&R->q, T, (int32_t)t, 0, key))
-            return cvm__nomem(R->ctx);
-    }
+    for (t = 0; t < R->T->nt; t++)
+        if ((s = fr_queue_triangle(R, (int32_t)t)))
+            return s;
     return CVM_OK;
 }
 
