@@ -665,15 +665,63 @@ CVM_API cvm_status cvm_sizing_add_line_source(cvm_sizing *s, double x0, double y
 CVM_API cvm_status cvm_sizing_set_callback(cvm_sizing *s, cvm_sizing_fn fn, void *payload);
 
 /**
- * Automatic sizing from the geometry: LS(p) = min(lfs(p)/R, min over neighbours q of
- * LS(q) + |q - p|/G), with lfs the local feature size of the domain being refined.
+ * Automatic sizing from the geometry of the domain being refined:
+ *   LS(p) = min(lfs_c(p)/R, min over boundary points q of LS(q) + |q - p|/G).
+ * lfs is the local feature size at a boundary point q: the distance from q to the
+ * nearest feature (domain boundary or constrained edge, or an input point on none)
+ * not incident to q (Ruppert's definition). Curved polylines: edges reached from q
+ * along a chain of degree-2 vertices before it turns by 60 degrees in total count as
+ * the same curve and are ignored, and lfs_c = min(lfs, radius of curvature), the
+ * radius at a chain vertex with turning angle theta <= 30 degrees estimated as
+ * (l1 + l2) / (2 theta) from its two edges. The field is sampled at the boundary
+ * vertices and inside boundary edges (bisected until a piece is shorter than
+ * min(1/2, G/R) of the local lfs), and is graded with slope 1/G away from them; the
+ * lfs of interior points enters only through that grading.
+ * The field is built by each cvm_mesh_refine() from its mesh (cost about that of a
+ * nearest-feature query per sample); cvm_sizing_eval() has no domain and ignores it.
+ * Combined with the other sources of the handle by the minimum.
  *
- * @param R  refinement parameter (elements per feature size), positive and finite.
- * @param G  grading, positive and finite.
- * @return CVM_E_UNSUPPORTED in this version (message says so); CVM_E_NULL_ARG.
+ * @param R  refinement parameter: edges per local feature size, positive and finite
+ *           (e.g. 2-4).
+ * @param G  grading: the size may grow by 1/G per unit of distance, positive and
+ *           finite (e.g. 2-10; larger G grades more gently).
+ *           R = G = 0 turns the automatic size off again.
+ * Thread-safety: one call at a time on @p s.
+ * Atomicity: on error the handle is unchanged.
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG         s is NULL
+ *         CVM_E_INPUT_NONFINITE  R or G is not finite
+ *         CVM_E_ARGUMENT         R or G is not positive (message names it)
  * @since 0.1
  */
 CVM_API cvm_status cvm_sizing_set_automatic(cvm_sizing *s, double R, double G);
+
+/**
+ * Sizes given at the nodes of a background triangulation: inside its triangles the
+ * size is interpolated linearly (the least value where triangles overlap); outside
+ * them this source sets no bound. Replaces an earlier background of the handle.
+ *
+ * @param xyh      npoints nodes, 3 doubles each: x, y and the size there (positive
+ *                 and finite).
+ * @param npoints  node count; npoints = ntri = 0 removes the background (then the
+ *                 pointers may be NULL).
+ * @param tri      ntri triangles, 3 node indices each (0-based), either orientation.
+ * Ownership: copied. Units: length.
+ * Thread-safety: one call at a time on @p s.
+ * Atomicity: on error the handle is unchanged.
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG          s, or xyh or tri (with ntri > 0) is NULL
+ *         CVM_E_INPUT_NONFINITE   a coordinate or size is NaN or infinite (message names node k)
+ *         CVM_E_ARGUMENT          a size is not positive (message names node k)
+ *         CVM_E_INPUT_INDEX       a triangle names a node outside [0, npoints) (names triangle k)
+ *         CVM_E_INPUT_DEGENERATE  a triangle has zero area, by the exact orientation test
+ *                                 (names triangle k)
+ *         CVM_E_TOO_LARGE         more than INT32_MAX/4 nodes or triangles
+ *         CVM_E_NOMEM
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_sizing_set_background(cvm_sizing *s, const double *xyh, size_t npoints,
+                                             const cvm_index *tri, size_t ntri);
 
 /**
  * Evaluate the sizing at (x, y).

@@ -285,6 +285,21 @@ CVMPY_IN_ROWS(cvm_index, segs, cvmpy_in_int32, 2, "segments")
 CVMPY_IN_ROWS(int32_t, markers, cvmpy_in_int32, 0, "markers")
 CVMPY_IN_ROWS(double, w, cvmpy_in_double, 0, "weights")
 
+/* CVMPY_IN_ROWS_N: the same with another name for the count. */
+%define CVMPY_IN_ROWS_N(CTYPE, NAME, COUNT, CONVERT, NCOLS, WHAT)
+%typemap(in, fragment="cvmpy_numpy") (const CTYPE *NAME, size_t COUNT) (PyArrayObject *arr = NULL) {
+    arr = CONVERT($input, NCOLS, WHAT);
+    if (!arr)
+        SWIG_fail;
+    $2 = cvmpy_rows(arr);
+    $1 = $2 ? (CTYPE *)PyArray_DATA(arr) : NULL;
+}
+%typemap(freearg) (const CTYPE *NAME, size_t COUNT) { Py_XDECREF(arr$argnum); }
+%enddef
+
+CVMPY_IN_ROWS_N(double, xyh, npoints, cvmpy_in_double, 3, "background nodes (x, y, size)")
+CVMPY_IN_ROWS_N(cvm_index, tri, ntri, cvmpy_in_int32, 3, "background triangles")
+
 /* ---- outputs: count then copy ----------------------------------------- */
 
 /* CVMPY_OUT_ARRAY(CTYPE, NPYTYPE): (CTYPE *dst, size_t dst_len). */

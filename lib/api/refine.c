@@ -70,8 +70,28 @@ static cvm_status refine_vertex_data(cvm_mesh *m, size_t nv0)
     return CVM_OK;
 }
 
+/* The automatic field of the domain of m; features are its boundary and
+ * constrained edges and the input points on none of them. */
+static cvm_status refine_auto_field(cvm_mesh *m, const cvm_sizing *sizing, cvm__auto_field *F)
+{
+    uint8_t *is_input = cvm__malloc(&m->ctx, m->tri.nv + 1);
+    size_t k;
+    cvm_status s;
+    if (!is_input)
+        return cvm__nomem(&m->ctx);
+    memset(is_input, 0, m->tri.nv + 1);
+    for (k = 0; k < m->in.np; k++)
+        if (m->input_map[k] >= 0)
+            is_input[m->input_map[k]] = 1;
+    s = cvm__auto_field_build(F, &m->tri, is_input, sizing->auto_R, sizing->auto_G, &m->ctx);
+    cvm__free(&m->ctx, is_input);
+    return s;
+}
+
 static cvm_status refine_run(cvm_mesh *m, const cvm_sizing *sizing, cvm_algorithm algo)
 {
+    cvm__auto_field field;
+    cvm_sizing local;
     cvm__refine_params p;
     cvm__refine_report rep;
     int32_t *ends = NULL;
@@ -100,7 +120,20 @@ static cvm_status refine_run(cvm_mesh *m, const cvm_sizing *sizing, cvm_algorith
     p.seg_ends = ends;
     p.nseg = m->in.nseg;
     cvm__run_begin(&m->ctx, cvm__opt(m, CVM_OPT_TIME_LIMIT_S));
+    memset(&field, 0, sizeof field);
+    if (sizing && sizing->has_auto) {
+        /* the automatic length scale needs the domain: built here, evaluated
+           through a private copy of the handle (the caller's stays untouched) */
+        if ((s = refine_auto_field(m, sizing, &field)) != CVM_OK) {
+            cvm__free(&m->ctx, ends);
+            return s;
+        }
+        local = *sizing;
+        local.autof = &field;
+        p.sizing = &local;
+    }
     s = cvm__refine(&m->tri, &p, &rep);
+    cvm__auto_field_free(&field, &m->ctx);
     cvm__free(&m->ctx, ends);
     s2 = refine_vertex_data(m, nv0);
     if (s2) {

@@ -14,6 +14,7 @@ typedef struct rargs {
     int quality;
     cvm_algorithm algo;
     double size; /* 0: none */
+    double auto_r, grading; /* --auto R (0: off), --grading G */
     cli_setting set[CLI_MAX_SETTINGS];
     int nset;
 } rargs;
@@ -31,6 +32,10 @@ void cli_refine_help(FILE *f)
             "                             (frontal-Delaunay: more regular triangles); aflr is\n"
             "                             not available yet\n"
             "  --size H                   target edge length (uniform); default none\n"
+            "  --auto R                   automatic size from the geometry: local feature\n"
+            "                             size / R (R edges per feature), graded by --grading\n"
+            "  --grading G                with --auto: the size grows by at most 1/G per unit\n"
+            "                             of distance (default 4)\n"
             "  -o, --output OUT           write the mesh (.vtu, .msh, .svg, .node)\n"
             "  --svg PIC.svg              also draw the mesh, coloured by smallest angle\n"
             "  --quality                  print the quality report and the refinement report\n"
@@ -66,12 +71,18 @@ static int parse_value(rargs *a, int argc, char **argv, int *i)
     ++*i;
     if (strcmp(s, "--algo") == 0)
         return parse_algo(a, argv[*i]);
-    if (strcmp(s, "--size") == 0) {
-        a->size = strtod(argv[*i], &end);
-        if (*end || !(a->size > 0) || !isfinite(a->size)) {
-            fprintf(stderr, "cvmesh: --size %s: must be a positive number\n", argv[*i]);
+    if (strcmp(s, "--size") == 0 || strcmp(s, "--auto") == 0 || strcmp(s, "--grading") == 0) {
+        double v = strtod(argv[*i], &end);
+        if (*end || !(v > 0) || !isfinite(v)) {
+            fprintf(stderr, "cvmesh: %s %s: must be a positive number\n", s, argv[*i]);
             return CLI_EXIT_USAGE;
         }
+        if (s[2] == 's')
+            a->size = v;
+        else if (s[2] == 'a')
+            a->auto_r = v;
+        else
+            a->grading = v;
         return CLI_EXIT_OK;
     }
     if (strcmp(s, "--svg") == 0)
@@ -86,13 +97,15 @@ static int parse(rargs *a, int argc, char **argv)
     int i, r;
     memset(a, 0, sizeof *a);
     a->algo = CVM_ALGO_DELAUNAY;
+    a->grading = 4;
     for (i = 1; i < argc; i++) {
         const char *s = argv[i];
         if (strcmp(s, "-h") == 0 || strcmp(s, "--help") == 0) {
             cli_refine_help(stdout);
             return -1;
         }
-        if (strcmp(s, "--algo") == 0 || strcmp(s, "--size") == 0 || strcmp(s, "-o") == 0 ||
+        if (strcmp(s, "--algo") == 0 || strcmp(s, "--size") == 0 || strcmp(s, "--auto") == 0 ||
+            strcmp(s, "--grading") == 0 || strcmp(s, "-o") == 0 ||
             strcmp(s, "--output") == 0 || strcmp(s, "--svg") == 0) {
             if ((r = parse_value(a, argc, argv, &i)))
                 return r;
@@ -165,6 +178,12 @@ static int run(const rargs *a)
     }
     if (a->size > 0 && cvm_sizing_set_uniform(sz, a->size) != CVM_OK) {
         fprintf(stderr, "cvmesh: --size: %s\n", cvm_sizing_errmsg(sz));
+        cvm_sizing_free(sz);
+        cvm_mesh_free(m);
+        return CLI_EXIT_USAGE;
+    }
+    if (a->auto_r > 0 && cvm_sizing_set_automatic(sz, a->auto_r, a->grading) != CVM_OK) {
+        fprintf(stderr, "cvmesh: --auto: %s\n", cvm_sizing_errmsg(sz));
         cvm_sizing_free(sz);
         cvm_mesh_free(m);
         return CLI_EXIT_USAGE;

@@ -32,6 +32,31 @@ typedef struct cvm__line_source {
     double x0, y0, x1, y1, h, growth;
 } cvm__line_source;
 
+/* The automatic length scale (sizing_auto.c), built per refinement from the
+ * domain: samples (x, y, LS) on the boundary in a uniform grid; the size at a
+ * point is the least LS + distance / G over the samples. */
+typedef struct cvm__auto_field {
+    double *smp;          /* 3 per sample: x, y, LS */
+    size_t ns;
+    double G, ls_min;
+    double x0, y0, cs;    /* grid origin and cell size */
+    int nx, ny;
+    int32_t *start;       /* nx * ny + 1 offsets into items */
+    int32_t *items;       /* sample indices by cell */
+    double *cmin;         /* least LS per cell */
+} cvm__auto_field;
+
+/* Sizes on a background triangulation (sizing_background.c), interpolated
+ * linearly inside its triangles, no bound outside them. */
+typedef struct cvm__background {
+    double *xy, *h;       /* 2 and 1 per node */
+    int32_t *tri;         /* 3 per triangle, counter-clockwise */
+    size_t np, nt;
+    double x0, y0, cs;    /* grid of triangles by bounding box */
+    int nx, ny;
+    int32_t *start, *items;
+} cvm__background;
+
 struct cvm_sizing {
     cvm__ctx ctx;
     int has_uniform;
@@ -42,7 +67,26 @@ struct cvm_sizing {
     size_t nlines, cap_lines;
     cvm_sizing_fn fn;
     void *fn_payload;
+    int has_auto;         /* cvm_sizing_set_automatic() */
+    double auto_R, auto_G;
+    cvm__background *bg;  /* NULL, or cvm_sizing_set_background() */
+    /* set only on the private copy a refinement evaluates: */
+    const cvm__auto_field *autof;
 };
+
+/* Build the automatic field of the domain triangles of T (features: domain
+ * boundary and constrained edges, and the vertices flagged in is_input that
+ * lie on none; is_input NULL: every vertex). CVM_OK or CVM_E_NOMEM (recorded
+ * on ctx; F is then empty). */
+cvm_status cvm__auto_field_build(cvm__auto_field *F, const cvm__tri2 *T, const uint8_t *is_input,
+                                 double R, double G, cvm__ctx *ctx);
+void cvm__auto_field_free(cvm__auto_field *F, cvm__ctx *ctx);
+/* Size at (x, y); +inf without samples. */
+double cvm__auto_field_at(const cvm__auto_field *F, double x, double y);
+/* Size of the background mesh at (x, y): the least linear interpolant over
+ * the triangles containing it, +inf outside them. */
+double cvm__background_at(const cvm__background *bg, double x, double y);
+void cvm__background_free(cvm__background *bg, cvm__ctx *ctx);
 
 /* 1 when s is NULL or has no source (no size bound). */
 int cvm__sizing_is_empty(const cvm_sizing *s);

@@ -30,6 +30,7 @@ void cvm_sizing_free(cvm_sizing *s)
     ctx = s->ctx;
     cvm__free(&ctx, s->pts);
     cvm__free(&ctx, s->lines);
+    cvm__background_free(s->bg, &ctx);
     cvm__free(&ctx, s);
 }
 
@@ -156,16 +157,29 @@ cvm_status cvm_sizing_set_automatic(cvm_sizing *s, double R, double G)
     if (!s)
         return CVM_E_NULL_ARG;
     cvm__clear_error(&s->ctx);
-    (void)R;
-    (void)G;
-    return cvm__error(&s->ctx, CVM_E_UNSUPPORTED, CVM_ENT_NONE, -1,
-                      "automatic (local feature size) sizing is not available in this version; "
-                      "use uniform, point, line or callback sizes");
+    if (R == 0 && G == 0) {
+        s->has_auto = 0;
+        return CVM_OK;
+    }
+    if (!isfinite(R) || !isfinite(G))
+        return cvm__error(&s->ctx, CVM_E_INPUT_NONFINITE, CVM_ENT_NONE, -1,
+                          "automatic sizing: R = %.17g and G = %.17g must be finite", R, G);
+    if (!(R > 0))
+        return cvm__error(&s->ctx, CVM_E_ARGUMENT, CVM_ENT_NONE, -1,
+                          "automatic sizing: refinement parameter R = %.17g (must be positive)", R);
+    if (!(G > 0))
+        return cvm__error(&s->ctx, CVM_E_ARGUMENT, CVM_ENT_NONE, -1,
+                          "automatic sizing: grading G = %.17g (must be positive)", G);
+    s->has_auto = 1;
+    s->auto_R = R;
+    s->auto_G = G;
+    return CVM_OK;
 }
 
 int cvm__sizing_is_empty(const cvm_sizing *s)
 {
-    return !s || (!s->has_uniform && s->npts == 0 && s->nlines == 0 && !s->fn);
+    return !s || (!s->has_uniform && s->npts == 0 && s->nlines == 0 && !s->fn && !s->has_auto &&
+                  !s->bg);
 }
 
 /* Distance from p to the segment a-b (a point when a == b). */
@@ -202,6 +216,16 @@ cvm_status cvm__sizing_at(const cvm_sizing *s, double x, double y, double *h, cv
     for (i = 0; i < s->nlines; i++) {
         const cvm__line_source *l = s->lines + i;
         double d = l->h + l->growth * dist_segment(x, y, l);
+        if (d < best)
+            best = d;
+    }
+    if (s->bg) {
+        double d = cvm__background_at(s->bg, x, y);
+        if (d < best)
+            best = d;
+    }
+    if (s->autof) {
+        double d = cvm__auto_field_at(s->autof, x, y);
         if (d < best)
             best = d;
     }

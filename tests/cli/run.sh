@@ -220,5 +220,14 @@ expect_exit 1 "picture fails after the mesh" "$CLI" triangulate "$SHARED/data/sq
 expect_one_line "picture fails after the mesh"
 expect_empty_dir "failed writes" "$OUT"
 
+# ---- refine with the automatic size ---------------------------------------
+OUT=$TMP/auto
+mkdir -p "$OUT"
+expect_exit 0 "refine --auto" "$CLI" refine "$SHARED/data/cylinder.poly" --algo frontal --auto 3 --grading 4 \
+    -o "$OUT/cyl.vtu" --quality
+expect_grep "refine --auto meets the angle" "$TMP/out" "triangles below the angle: 0"
+expect_exit 2 "--auto not positive" "$CLI" refine "$SHARED/data/square.poly" --auto 0 -o "$OUT/x.vtu"
+expect_exit 2 "--grading not a number" "$CLI" refine "$SHARED/data/square.poly" --auto 2 --grading x -o "$OUT/x.vtu"
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -82,8 +82,12 @@ def test_sizing_errors():
         s.add_point_source(0, 0, 0.1, growth=-1)
     with pytest.raises(cvmesh.ArgumentError, match="line source 0"):
         s.add_line_source(0, 0, 1, 1, h=0)
-    with pytest.raises(cvmesh.UnsupportedError):
-        s.set_automatic(1.0, 1.0)
+    with pytest.raises(cvmesh.ArgumentError, match="grading"):
+        s.set_automatic(1.0, -1.0)
+    with pytest.raises(cvmesh.ArgumentError, match="node 1"):
+        s.set_background([[0, 0], [1, 0], [0, 1]], [[0, 1, 2]], [1.0, -2.0, 1.0])
+    with pytest.raises(cvmesh.InputError, match="triangle 0"):
+        s.set_background([[0, 0], [1, 0], [0, 1]], [[0, 1, 5]], [1.0, 2.0, 1.0])
     with pytest.raises(TypeError):
         s.set_callback(42)
     s.close()
@@ -154,3 +158,23 @@ def test_refine_markers_on_boundary_steiner_points(square_pslg):
     marks = mesh.point_markers
     assert (marks[~on_boundary] == 0).all()
     assert set(marks[on_boundary][4:].tolist()) <= {5}
+
+
+def test_automatic_and_background_sizing(square_pslg):
+    bg = Sizing()
+    bg.set_background([[0, 0], [1, 0], [1, 1], [0, 1]], [[0, 1, 2], [0, 2, 3]],
+                      [0.05, 0.3, 0.3, 0.3])
+    assert bg(0.0, 0.0) == pytest.approx(0.05)
+    assert bg(0.5, 0.25) == pytest.approx(0.05 + 0.25 * 0.5)  # linear in the first triangle
+    assert math.isinf(bg(2.0, 2.0))
+    auto = Sizing()
+    auto.set_automatic(8, 4)
+    meshes = []
+    for s in (bg, auto):
+        mesh = Mesh.from_pslg(*square_pslg)
+        mesh.refine(sizing=s, algorithm="frontal")
+        mesh.check()
+        meshes.append(mesh)
+    # the square's feature size is 1: edges about 1/8 with the automatic size
+    assert 40 < meshes[1].triangles.shape[0] < 600
+    assert meshes[0].triangles.shape[0] > meshes[1].triangles.shape[0] / 4

@@ -727,10 +727,26 @@ class Sizing:
             capi.cvm_sizing_set_callback(s, callback)
             self._callback = callback
 
-    def set_automatic(self, R, G):
-        """Sizing from the local feature size (R elements per feature, grading G)."""
+    def set_automatic(self, R, G=4.0):
+        """Size from the geometry being refined: local feature size / R (R edges
+        per feature, curvature-aware), growing by at most 1/G per unit of
+        distance. Built by each Mesh.refine() from its domain; __call__ does
+        not see it. R = G = 0 turns it off."""
         with self._handle() as s:
             capi.cvm_sizing_set_automatic(s, float(R), float(G))
+
+    def set_background(self, points, triangles, sizes):
+        """Sizes at the nodes of a background triangulation, interpolated
+        linearly inside its triangles (no bound outside them): points (n, 2),
+        triangles (m, 3) 0-based node indices, sizes (n,) positive."""
+        pts = np.asarray(points, dtype=np.float64).reshape(-1, 2)
+        h = np.asarray(sizes, dtype=np.float64).reshape(-1)
+        if h.shape[0] != pts.shape[0]:
+            raise ValueError("set_background: %d sizes for %d points" % (h.shape[0], pts.shape[0]))
+        xyh = np.ascontiguousarray(np.column_stack([pts, h]))
+        tri = np.ascontiguousarray(np.asarray(triangles, dtype=np.int32).reshape(-1, 3))
+        with self._handle() as s:
+            capi.cvm_sizing_set_background(s, xyh, tri)
 
     def __call__(self, x, y):
         """The target size at (x, y) (inf when there is no source)."""

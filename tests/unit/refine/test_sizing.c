@@ -2,7 +2,10 @@
 #include <math.h>
 #include <string.h>
 
+#include <stdlib.h>
+
 #include "refine/refine_tests.h"
+#include "support/failing_alloc.h"
 
 START_TEST(empty_sizing_has_no_bound)
 {
@@ -154,9 +157,286 @@ START_TEST(null_arguments_and_unsupported)
     ck_assert_str_eq(cvm_sizing_errmsg(NULL), "no sizing handle");
     ck_assert_int_eq(cvm_sizing_create(&s), CVM_OK);
     ck_assert_int_eq(cvm_sizing_eval(NULL, s, 0, 0), CVM_E_NULL_ARG);
-    ck_assert_int_eq(cvm_sizing_set_automatic(s, 2, 0.3), CVM_E_UNSUPPORTED);
-    ck_assert_ptr_nonnull(strstr(cvm_sizing_errmsg(s), "not available"));
+    ck_assert_int_eq(cvm_sizing_set_background(NULL, NULL, 0, NULL, 0), CVM_E_NULL_ARG);
+    ck_assert_int_eq(cvm_sizing_set_background(s, NULL, 3, NULL, 0), CVM_E_NULL_ARG);
     cvm_sizing_free(s);
+}
+END_TEST
+
+/* ---- automatic sizing (sizing_auto.c) ---- */
+
+START_TEST(automatic_parameters_are_checked)
+{
+    cvm_sizing *s;
+    ck_assert_int_eq(cvm_sizing_create(&s), CVM_OK);
+    ck_assert_int_eq(cvm_sizing_set_automatic(s, 0, 4), CVM_E_ARGUMENT);
+    ck_assert_ptr_nonnull(strstr(cvm_sizing_errmsg(s), "R = 0"));
+    ck_assert_int_eq(cvm_sizing_set_automatic(s, 3, -1), CVM_E_ARGUMENT);
+    ck_assert_ptr_nonnull(strstr(cvm_sizing_errmsg(s), "grading G = -1"));
+    ck_assert_int_eq(cvm_sizing_set_automatic(s, NAN, 4), CVM_E_INPUT_NONFINITE);
+    ck_assert_int_eq(cvm_sizing_set_automatic(s, 3, INFINITY), CVM_E_INPUT_NONFINITE);
+    ck_assert_int_eq(cvm_sizing_set_automatic(s, 3, 4), CVM_OK);
+    ck_assert_int_eq(cvm_sizing_set_automatic(s, 0, 0), CVM_OK); /* off again */
+    cvm_sizing_free(s);
+}
+END_TEST
+
+/* Mean edge length of the domain triangles whose centroid satisfies
+ * lo <= |centroid - c| < hi (the test's own measurement). */
+static double mean_edge_in_ring(cvm_mesh *m, double cx, double cy, double lo, double hi)
+{
+    size_t nv, nt, t, n = 0;
+    double *xy, sum = 0;
+    cvm_index *tri;
+    ck_assert_int_eq(cvm_mesh_count(&nv, m, CVM_ENT_VERTEX), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_count(&nt, m, CVM_ENT_TRIANGLE), CVM_OK);
+    xy = malloc(2 * nv * sizeof *xy);
+    tri = malloc(3 * nt * sizeof *tri);
+    ck_assert_int_eq(cvm_mesh_copy_points(xy, 2 * nv, m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_copy_cells(tri, 3 * nt, m, CVM_ENT_TRIANGLE), CVM_OK);
+    for (t = 0; t < nt; t++) {
+        const double *a = xy + 2 * tri[3 * t], *b = xy + 2 * tri[3 * t + 1],
+                     *c = xy + 2 * tri[3 * t + 2];
+        double gx = (a[0] + b[0] + c[0]) / 3 - cx, gy = (a[1] + b[1] + c[1]) / 3 - cy;
+        double r = sqrt(gx * gx + gy * gy);
+        if (r < lo || r >= hi)
+            continue;
+        sum += (hypot(a[0] - b[0], a[1] - b[1]) + hypot(b[0] - c[0], b[1] - c[1]) +
+                hypot(c[0] - a[0], c[1] - a[1])) / 3;
+        n++;
+    }
+    free(xy);
+    free(tri);
+    ck_assert_uint_gt(n, 0);
+    return sum / (double)n;
+}
+
+/* The square's local feature size is its side (1) on the whole boundary, so
+ * with hardly any grading the automatic size is the uniform size 1/R: same
+ * bounds (circumradius <= 1/R) and about the same triangle count. */
+START_TEST(automatic_square_matches_uniform_side_over_r)
+{
+    char path[512];
+    cvm_mesh *a, *u;
+    cvm_sizing *s;
+    rtest_quality qa, qu;
+    rtest_shared_path(path, sizeof path, "square.poly");
+    ck_assert_int_eq(cvm_mesh_create(&a), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_create(&u), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_read(a, path), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_read(u, path), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_triangulate(a), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_triangulate(u), CVM_OK);
+    ck_assert_int_eq(cvm_sizing_create(&s), CVM_OK);
+    ck_assert_int_eq(cvm_sizing_set_automatic(s, 20, 1e9), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_refine(a, s, CVM_ALGO_DELAUNAY), CVM_OK);
+    ck_assert_int_eq(rtest_refine_uniform(u, 1.0 / 20, CVM_ALGO_DELAUNAY), CVM_OK);
+    rtest_measure(a, &qa);
+    rtest_measure(u, &qu);
+    ck_assert_int_eq(cvm_mesh_check(a), CVM_OK);
+    ck_assert(qa.max_circumradius <= 1.0 / 20 * (1 + 1e-9));
+    ck_assert(qa.min_angle >= 30 - 1e-9);
+    ck_assert(fabs((double)qa.nt - (double)qu.nt) <= 0.1 * (double)qu.nt);
+    cvm_sizing_free(s);
+    cvm_mesh_free(a);
+    cvm_mesh_free(u);
+}
+END_TEST
+
+/* Annulus r = 1..4: the inner circle has radius of curvature 1 (its 64-gon
+ * turns 5.6 degrees a vertex), the outer circle's feature size is the gap 3;
+ * so with R = 3, G = 4 the size is about 1/3 at r = 1 and grows by 1/4 per
+ * unit towards 1 at r = 4. Measured on the output: the mean edge near the
+ * inner circle is about 1/3 and at least twice as short as near the outer one;
+ * the mesh is valid, meets 30 degrees and is reproducible. */
+START_TEST(automatic_annulus_follows_curvature_and_gap)
+{
+    char path[512];
+    cvm_mesh *m, *m2;
+    cvm_sizing *s;
+    rtest_quality q;
+    double inner, outer;
+    rtest_shared_path(path, sizeof path, "annulus.poly");
+    ck_assert_int_eq(cvm_sizing_create(&s), CVM_OK);
+    ck_assert_int_eq(cvm_sizing_set_automatic(s, 3, 4), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_read(m, path), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_refine(m, s, CVM_ALGO_FRONTAL), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_check(m), CVM_OK);
+    rtest_measure(m, &q);
+    ck_assert(q.min_angle >= 30 - 1e-9);
+    /* near the boundaries the input polylines (spacing 0.098 and 0.196) bound the
+       edges; in between the size grows from about 0.4 at r = 1.3 to 0.9 at r = 3.3 */
+    inner = mean_edge_in_ring(m, 0, 0, 1.2, 1.5);
+    outer = mean_edge_in_ring(m, 0, 0, 3.0, 3.5);
+    ck_assert(inner > 0.1 && inner < 0.6);
+    ck_assert(outer > 1.5 * inner);
+    ck_assert_int_eq(cvm_mesh_create(&m2), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_read(m2, path), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_triangulate(m2), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_refine(m2, s, CVM_ALGO_FRONTAL), CVM_OK);
+    rtest_assert_identical(m, m2);
+    cvm_sizing_free(s);
+    cvm_mesh_free(m);
+    cvm_mesh_free(m2);
+}
+END_TEST
+
+/* A slot 0.05 wide cut into a unit square: the feature size across the slot
+ * is 0.05, so the automatic size resolves it (edges near the slot about
+ * 0.05/R) while the far corner stays coarse; the two slot walls are not
+ * incident, so the slot is not skipped as one feature. */
+START_TEST(automatic_resolves_a_narrow_slot)
+{
+    static const double xy[] = {0, 0, 1, 0, 1, 1, 0.525, 1, 0.525, 0.3, 0.475, 0.3, 0.475, 1, 0, 1};
+    static const cvm_index seg[] = {0, 1, 1, 2, 2, 3, 3, 4, 4, 5, 5, 6, 6, 7, 7, 0};
+    cvm_mesh *m;
+    cvm_sizing *s;
+    rtest_quality q;
+    double slot, corner;
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_points(m, xy, 8, 2), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_segments(m, seg, 8), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+    ck_assert_int_eq(cvm_sizing_create(&s), CVM_OK);
+    ck_assert_int_eq(cvm_sizing_set_automatic(s, 2, 5), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_refine(m, s, CVM_ALGO_DELAUNAY), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_check(m), CVM_OK);
+    rtest_measure(m, &q);
+    ck_assert(q.min_angle >= 30 - 1e-9);
+    slot = mean_edge_in_ring(m, 0.5, 0.65, 0, 0.1);
+    corner = mean_edge_in_ring(m, 0, 0, 0, 0.15);
+    ck_assert(slot < 0.05);
+    ck_assert(corner > 2 * slot);
+    cvm_sizing_free(s);
+    cvm_mesh_free(m);
+}
+END_TEST
+
+/* Out of memory while the automatic field is built: a status, the mesh still
+ * valid, no leak (the counting allocator checks live blocks). */
+START_TEST(automatic_out_of_memory_is_a_status)
+{
+    char path[512];
+    cvm_sizing *s;
+    long k;
+    int hit = 0;
+    rtest_shared_path(path, sizeof path, "annulus.poly");
+    ck_assert_int_eq(cvm_sizing_create(&s), CVM_OK);
+    ck_assert_int_eq(cvm_sizing_set_automatic(s, 1, 4), CVM_OK);
+    for (k = 1; k < 200; k += 2) {
+        cvmtest_alloc al;
+        cvm_mesh *m;
+        cvm_status st;
+        cvmtest_alloc_init(&al, 0, 0);
+        ck_assert_int_eq(cvmtest_mesh_create(&m, &al), CVM_OK);
+        ck_assert_int_eq(cvm_mesh_read(m, path), CVM_OK);
+        ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+        cvmtest_alloc_arm(&al, k, 0); /* transient: only allocation k fails */
+        st = cvm_mesh_refine(m, s, CVM_ALGO_DELAUNAY);
+        ck_assert(st == CVM_OK || st == CVM_E_NOMEM);
+        if (st == CVM_E_NOMEM) {
+            hit++;
+            cvmtest_alloc_arm(&al, 0, 0);
+            /* valid, or dropped as a whole when the vertex data could not follow */
+            st = cvm_mesh_check(m);
+            ck_assert(st == CVM_OK || st == CVM_E_STATE);
+        }
+        cvm_mesh_free(m);
+        ck_assert_int_eq(al.live_blocks, 0);
+    }
+    ck_assert_int_gt(hit, 0);
+    cvm_sizing_free(s);
+}
+END_TEST
+
+/* ---- background mesh (sizing_background.c) ---- */
+
+static const double bg_xyh[] = {0, 0, 1, 2, 0, 3, 2, 2, 7, 0, 2, 5};
+static const cvm_index bg_tri[] = {0, 1, 2, 0, 3, 2}; /* second one clockwise */
+
+START_TEST(background_interpolates_linearly)
+{
+    cvm_sizing *s;
+    double h;
+    ck_assert_int_eq(cvm_sizing_create(&s), CVM_OK);
+    ck_assert_int_eq(cvm_sizing_set_background(s, bg_xyh, 4, bg_tri, 2), CVM_OK);
+    /* h = 1 + x + 2y on the square [0,2]^2 is reproduced exactly by linear pieces */
+    ck_assert_int_eq(cvm_sizing_eval(&h, s, 0.3, 0.4), CVM_OK);
+    ck_assert_double_eq_tol(h, 1 + 0.3 + 0.8, 1e-12);
+    ck_assert_int_eq(cvm_sizing_eval(&h, s, 1.5, 0.25), CVM_OK);
+    ck_assert_double_eq_tol(h, 1 + 1.5 + 0.5, 1e-12);
+    ck_assert_int_eq(cvm_sizing_eval(&h, s, 2, 2), CVM_OK); /* a node */
+    ck_assert_double_eq_tol(h, 7, 1e-12);
+    ck_assert_int_eq(cvm_sizing_eval(&h, s, 2.5, 1), CVM_OK); /* outside: no bound */
+    ck_assert(isinf(h));
+    /* combined with a uniform size by the minimum */
+    ck_assert_int_eq(cvm_sizing_set_uniform(s, 2.0), CVM_OK);
+    ck_assert_int_eq(cvm_sizing_eval(&h, s, 1.5, 0.25), CVM_OK);
+    ck_assert_double_eq_tol(h, 2.0, 1e-15);
+    /* removed */
+    ck_assert_int_eq(cvm_sizing_set_background(s, NULL, 0, NULL, 0), CVM_OK);
+    ck_assert_int_eq(cvm_sizing_eval(&h, s, 0.3, 0.4), CVM_OK);
+    ck_assert_double_eq_tol(h, 2.0, 1e-15);
+    cvm_sizing_free(s);
+}
+END_TEST
+
+START_TEST(background_bad_input_is_named)
+{
+    cvm_sizing *s;
+    double bad[12];
+    cvm_index badtri[6];
+    double h;
+    ck_assert_int_eq(cvm_sizing_create(&s), CVM_OK);
+    ck_assert_int_eq(cvm_sizing_set_background(s, bg_xyh, 4, bg_tri, 2), CVM_OK);
+    memcpy(bad, bg_xyh, sizeof bad);
+    bad[7] = NAN;
+    ck_assert_int_eq(cvm_sizing_set_background(s, bad, 4, bg_tri, 2), CVM_E_INPUT_NONFINITE);
+    ck_assert_ptr_nonnull(strstr(cvm_sizing_errmsg(s), "node 2"));
+    memcpy(bad, bg_xyh, sizeof bad);
+    bad[11] = 0;
+    ck_assert_int_eq(cvm_sizing_set_background(s, bad, 4, bg_tri, 2), CVM_E_ARGUMENT);
+    ck_assert_ptr_nonnull(strstr(cvm_sizing_errmsg(s), "node 3"));
+    memcpy(badtri, bg_tri, sizeof badtri);
+    badtri[4] = 4;
+    ck_assert_int_eq(cvm_sizing_set_background(s, bg_xyh, 4, badtri, 2), CVM_E_INPUT_INDEX);
+    ck_assert_ptr_nonnull(strstr(cvm_sizing_errmsg(s), "triangle 1"));
+    memcpy(badtri, bg_tri, sizeof badtri);
+    badtri[5] = 0;
+    ck_assert_int_eq(cvm_sizing_set_background(s, bg_xyh, 4, badtri, 2), CVM_E_INPUT_DEGENERATE);
+    ck_assert_ptr_nonnull(strstr(cvm_sizing_errmsg(s), "triangle 1"));
+    /* the earlier background is untouched by the failures */
+    ck_assert_int_eq(cvm_sizing_eval(&h, s, 0.3, 0.4), CVM_OK);
+    ck_assert_double_eq_tol(h, 2.1, 1e-12);
+    cvm_sizing_free(s);
+}
+END_TEST
+
+/* Refinement with a background size: edges near the small-size corner are
+ * shorter than near the large-size corner. */
+START_TEST(background_drives_refinement)
+{
+    static const double xyh[] = {0, 0, 0.05, 1, 0, 0.3, 1, 1, 0.3, 0, 1, 0.3};
+    static const cvm_index tri[] = {0, 1, 2, 0, 2, 3};
+    char path[512];
+    cvm_mesh *m;
+    cvm_sizing *s;
+    rtest_quality q;
+    rtest_shared_path(path, sizeof path, "square.poly");
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_read(m, path), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+    ck_assert_int_eq(cvm_sizing_create(&s), CVM_OK);
+    ck_assert_int_eq(cvm_sizing_set_background(s, xyh, 4, tri, 2), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_refine(m, s, CVM_ALGO_FRONTAL), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_check(m), CVM_OK);
+    rtest_measure(m, &q);
+    ck_assert(q.min_angle >= 30 - 1e-9);
+    ck_assert(2 * mean_edge_in_ring(m, 0, 0, 0, 0.15) < mean_edge_in_ring(m, 1, 1, 0, 0.3));
+    cvm_sizing_free(s);
+    cvm_mesh_free(m);
 }
 END_TEST
 
@@ -169,5 +449,13 @@ TCase *refine_sizing_tcase(void)
     tcase_add_test(tc, bad_sizes_are_rejected_and_named);
     tcase_add_test(tc, bad_callback_values_stop_eval_and_refine);
     tcase_add_test(tc, null_arguments_and_unsupported);
+    tcase_add_test(tc, automatic_parameters_are_checked);
+    tcase_add_test(tc, automatic_square_matches_uniform_side_over_r);
+    tcase_add_test(tc, automatic_annulus_follows_curvature_and_gap);
+    tcase_add_test(tc, automatic_resolves_a_narrow_slot);
+    tcase_add_test(tc, automatic_out_of_memory_is_a_status);
+    tcase_add_test(tc, background_interpolates_linearly);
+    tcase_add_test(tc, background_bad_input_is_named);
+    tcase_add_test(tc, background_drives_refinement);
     return tc;
 }

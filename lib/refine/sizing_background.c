@@ -1,0 +1,236 @@
+/* sizing_background.c - sizes given at the nodes of a background triangulation, interpolated linearly. */
+#include <math.h>
+#include <string.h>
+
+#include "refine_internal.h"
+#include "geom/geom_internal.h"
+
+void cvm__background_free(cvm__background *bg, cvm__ctx *ctx)
+{
+    if (!bg)
+        return;
+    cvm__free(ctx, bg->xy);
+    cvm__free(ctx, bg->h);
+    cvm__free(ctx, bg->tri);
+    cvm__free(ctx, bg->start);
+    cvm__free(ctx, bg->items);
+    cvm__free(ctx, bg);
+}
+
+static void bg_node(const double *xyh, int32_t v, double *out)
+{
+    out[0] = xyh[3 * (size_t)v];
+    out[1] = xyh[3 * (size_t)v + 1];
+}
+
+static void bg_cell_of(const cvm__background *bg, double x, double y, int *i, int *j)
+{
+    double fx = floor((x - bg->x0) / bg->cs), fy = floor((y - bg->y0) / bg->cs);
+    *i = fx < 0 ? 0 : fx >= bg->nx ? bg->nx - 1 : (int)fx;
+    *j = fy < 0 ? 0 : fy >= bg->ny ? bg->ny - 1 : (int)fy;
+}
+
+/* Cells covered by the bounding box of triangle t: count (pos NULL) or fill. */
+static void bg_grid_tri(cvm__background *bg, size_t t, int32_t *pos)
+{
+    const int32_t *v = bg->tri + 3 * t;
+    double xmin = HUGE_VAL, ymin = HUGE_VAL, xmax = -HUGE_VAL, ymax = -HUGE_VAL;
+    int i0, j0, i1, j1, i, j, k;
+    for (k = 0; k < 3; k++) {
+        const double *p = bg->xy + 2 * (size_t)v[k];
+        xmin = fmin(xmin, p[0]);
+        xmax = fmax(xmax, p[0]);
+        ymin = fmin(ymin, p[1]);
+        ymax = fmax(ymax, p[1]);
+    }
+    bg_cell_of(bg, xmin, ymin, &i0, &j0);
+    bg_cell_of(bg, xmax, ymax, &i1, &j1);
+    for (j = j0; j <= j1; j++)
+        for (i = i0; i <= i1; i++) {
+            size_t c = (size_t)j * (size_t)bg->nx + (size_t)i;
+            if (pos)
+                bg->items[pos[c]++] = (int32_t)t;
+            else
+                bg->start[c + 1]++;
+        }
+}
+
+static cvm_status bg_grid(cvm__background *bg, cvm__ctx *ctx)
+{
+    double xmin = HUGE_VAL, ymin = HUGE_VAL, xmax = -HUGE_VAL, ymax = -HUGE_VAL, w, h;
+    size_t k, ncell;
+    int32_t *pos;
+    for (k = 0; k < bg->np; k++) {
+        xmin = fmin(xmin, bg->xy[2 * k]);
+        xmax = fmax(xmax, bg->xy[2 * k]);
+        ymin = fmin(ymin, bg->xy[2 * k + 1]);
+        ymax = fmax(ymax, bg->xy[2 * k + 1]);
+    }
+    w = xmax - xmin;
+    h = ymax - ymin;
+    bg->cs = sqrt(w * h / (double)(bg->nt + 1));
+    if (!(bg->cs > 0))
+        bg->cs = fmax(w, h) / (double)(bg->nt + 1);
+    if (!(bg->cs > 0))
+        bg->cs = 1;
+    bg->cs = fmax(bg->cs, fmax(w, h) / 2048);
+    bg->nx = (int)(w / bg->cs) + 1;
+    bg->ny = (int)(h / bg->cs) + 1;
+    bg->x0 = xmin;
+    bg->y0 = ymin;
+    ncell = (size_t)bg->nx * (size_t)bg->ny;
+    bg->start = cvm__malloc(ctx, (ncell + 1) * sizeof *bg->start);
+    if (!bg->start)
+        return CVM_E_NOMEM;
+    memset(bg->start, 0, (ncell + 1) * sizeof *bg->start);
+    for (k = 0; k < bg->nt; k++)
+        bg_grid_tri(bg, k, NULL);
+    for (k = 0; k < ncell; k++) {
+        if ((size_t)bg->start[k + 1] > (size_t)INT32_MAX - (size_t)bg->start[k])
+            return CVM_E_TOO_LARGE;
+        bg->start[k + 1] += bg->start[k];
+    }
+    bg->items = cvm__malloc(ctx, ((size_t)bg->start[ncell] + 1) * sizeof *bg->items);
+    pos = cvm__malloc(ctx, (ncell + 1) * sizeof *pos);
+    if (!bg->items || !pos) {
+        cvm__free(ctx, pos);
+        return CVM_E_NOMEM;
+    }
+    memcpy(pos, bg->start, (ncell + 1) * sizeof *pos);
+    for (k = 0; k < bg->nt; k++)
+        bg_grid_tri(bg, k, pos);
+    cvm__free(ctx, pos);
+    return CVM_OK;
+}
+
+cvm_status cvm_sizing_set_background(cvm_sizing *s, const double *xyh, size_t npoints,
+                                     const cvm_index *tri, size_t ntri)
+{
+    cvm__background *bg;
+    cvm__ctx *ctx;
+    size_t k;
+    cvm_status st;
+    if (!s)
+        return CVM_E_NULL_ARG;
+    ctx = &s->ctx;
+    cvm__clear_error(ctx);
+    if (npoints == 0 && ntri == 0) {
+        cvm__background_free(s->bg, ctx);
+        s->bg = NULL;
+        return CVM_OK;
+    }
+    if (!xyh || (!tri && ntri > 0))
+        return cvm__error(ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1,
+                          "background mesh: xyh or tri is NULL");
+    if (npoints > (size_t)INT32_MAX / 4 || ntri > (size_t)INT32_MAX / 4)
+        return cvm__error(ctx, CVM_E_TOO_LARGE, CVM_ENT_NONE, -1,
+                          "background mesh: %zu nodes and %zu triangles exceed what cvm_index "
+                          "can address",
+                          npoints, ntri);
+    for (k = 0; k < npoints; k++) {
+        double h = xyh[3 * k + 2];
+        if (!isfinite(xyh[3 * k]) || !isfinite(xyh[3 * k + 1]))
+            return cvm__error(ctx, CVM_E_INPUT_NONFINITE, CVM_ENT_NONE, (int64_t)k,
+                              "background node %zu has a non-finite coordinate", k);
+        if (!isfinite(h))
+            return cvm__error(ctx, CVM_E_INPUT_NONFINITE, CVM_ENT_NONE, (int64_t)k,
+                              "background node %zu has a non-finite size (must be positive "
+                              "and finite)",
+                              k);
+        if (!(h > 0))
+            return cvm__error(ctx, CVM_E_ARGUMENT, CVM_ENT_NONE, (int64_t)k,
+                              "background node %zu has size %.17g (must be positive and finite)",
+                              k, h);
+    }
+    for (k = 0; k < ntri; k++) {
+        int j;
+        for (j = 0; j < 3; j++)
+            if (tri[3 * k + (size_t)j] < 0 || (size_t)tri[3 * k + (size_t)j] >= npoints)
+                return cvm__error(ctx, CVM_E_INPUT_INDEX, CVM_ENT_NONE, (int64_t)k,
+                                  "background triangle %zu names node %ld, not in [0, %zu)", k,
+                                  (long)tri[3 * k + (size_t)j], npoints);
+        double a[2], b[2], c[2];
+        bg_node(xyh, tri[3 * k], a);
+        bg_node(xyh, tri[3 * k + 1], b);
+        bg_node(xyh, tri[3 * k + 2], c);
+        if (cvm__orient2d(a, b, c) == 0)
+            return cvm__error(ctx, CVM_E_INPUT_DEGENERATE, CVM_ENT_NONE, (int64_t)k,
+                              "background triangle %zu has zero area", k);
+    }
+    bg = cvm__malloc(ctx, sizeof *bg);
+    if (!bg)
+        return cvm__nomem(ctx);
+    memset(bg, 0, sizeof *bg);
+    bg->np = npoints;
+    bg->nt = ntri;
+    bg->xy = cvm__malloc(ctx, 2 * npoints * sizeof *bg->xy + 1);
+    bg->h = cvm__malloc(ctx, npoints * sizeof *bg->h + 1);
+    bg->tri = cvm__malloc(ctx, 3 * ntri * sizeof *bg->tri + 1);
+    if (!bg->xy || !bg->h || !bg->tri) {
+        cvm__background_free(bg, ctx);
+        return cvm__nomem(ctx);
+    }
+    for (k = 0; k < npoints; k++) {
+        bg->xy[2 * k] = xyh[3 * k];
+        bg->xy[2 * k + 1] = xyh[3 * k + 1];
+        bg->h[k] = xyh[3 * k + 2];
+    }
+    for (k = 0; k < ntri; k++) {
+        int32_t a = tri[3 * k], b = tri[3 * k + 1], c = tri[3 * k + 2];
+        if (cvm__orient2d(bg->xy + 2 * (size_t)a, bg->xy + 2 * (size_t)b,
+                          bg->xy + 2 * (size_t)c) < 0) {
+            int32_t t = b;
+            b = c;
+            c = t;
+        }
+        bg->tri[3 * k] = a;
+        bg->tri[3 * k + 1] = b;
+        bg->tri[3 * k + 2] = c;
+    }
+    if ((st = bg_grid(bg, ctx)) != CVM_OK) {
+        cvm__background_free(bg, ctx);
+        if (st == CVM_E_TOO_LARGE)
+            return cvm__error(ctx, st, CVM_ENT_NONE, -1,
+                              "background mesh: its triangles cover too many grid cells");
+        return cvm__nomem(ctx);
+    }
+    cvm__background_free(s->bg, ctx);
+    s->bg = bg;
+    return CVM_OK;
+}
+
+double cvm__background_at(const cvm__background *bg, double x, double y)
+{
+    double best = HUGE_VAL, p[2];
+    int i, j;
+    size_t c;
+    int32_t q;
+    if (!bg || bg->nt == 0)
+        return HUGE_VAL;
+    if (x < bg->x0 || y < bg->y0 || x > bg->x0 + bg->nx * bg->cs || y > bg->y0 + bg->ny * bg->cs)
+        return HUGE_VAL;
+    p[0] = x;
+    p[1] = y;
+    bg_cell_of(bg, x, y, &i, &j);
+    c = (size_t)j * (size_t)bg->nx + (size_t)i;
+    for (q = bg->start[c]; q < bg->start[c + 1]; q++) {
+        const int32_t *v = bg->tri + 3 * (size_t)bg->items[q];
+        const double *a = bg->xy + 2 * (size_t)v[0], *b = bg->xy + 2 * (size_t)v[1],
+                     *d = bg->xy + 2 * (size_t)v[2];
+        double la, lb, ld, area, val;
+        /* containment decided exactly (closed triangle), weights in doubles */
+        if (cvm__orient2d(a, b, p) < 0 || cvm__orient2d(b, d, p) < 0 || cvm__orient2d(d, a, p) < 0)
+            continue;
+        area = (b[0] - a[0]) * (d[1] - a[1]) - (b[1] - a[1]) * (d[0] - a[0]);
+        la = ((b[0] - x) * (d[1] - y) - (b[1] - y) * (d[0] - x)) / area;
+        lb = ((d[0] - x) * (a[1] - y) - (d[1] - y) * (a[0] - x)) / area;
+        ld = 1 - la - lb;
+        la = fmax(la, 0);
+        lb = fmax(lb, 0);
+        ld = fmax(ld, 0);
+        val = (la * bg->h[v[0]] + lb * bg->h[v[1]] + ld * bg->h[v[2]]) / (la + lb + ld);
+        if (val < best)
+            best = val;
+    }
+    return best;
+}
