@@ -27,6 +27,11 @@ static const cli_option_flag k_flags[] = {
     {"--lens", NULL, CVM_OPT_ENCROACH_LENS, 1, REF, "diametral lenses instead of circles"},
     {"--no-march", NULL, CVM_OPT_MARCH_SEGMENTS, 0, REF,
      "split segments only when encroached (no marching with the size)"},
+    {"--swap", NULL, CVM_OPT_SWAP, 1, REF,
+     "frontal: swap edges towards vertex degree 6 after refining (the default)"},
+    {"--no-swap", NULL, CVM_OPT_SWAP, 0, REF, "frontal: no degree swapping"},
+    {"--smooth", "SWEEPS", CVM_OPT_SMOOTH_SWEEPS, 0, REF,
+     "frontal: sweeps of smoothing after refining (0: none)"},
 };
 
 #define NFLAGS (sizeof k_flags / sizeof k_flags[0])

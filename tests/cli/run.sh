@@ -226,6 +226,9 @@ mkdir -p "$OUT"
 expect_exit 0 "refine --auto" "$CLI" refine "$SHARED/data/cylinder.poly" --algo frontal --auto 3 --grading 4 \
     -o "$OUT/cyl.vtu" --quality
 expect_grep "refine --auto meets the angle" "$TMP/out" "triangles below the angle: 0"
+expect_exit 0 "refine --no-swap --smooth 3" "$CLI" refine "$SHARED/data/square.poly" --algo frontal --size 0.1 \
+    --no-swap --smooth 3 -o "$OUT/sq.vtu"
+expect_exit 2 "--smooth out of range" "$CLI" refine "$SHARED/data/square.poly" --smooth 1000 -o "$OUT/x.vtu"
 expect_exit 2 "--auto not positive" "$CLI" refine "$SHARED/data/square.poly" --auto 0 -o "$OUT/x.vtu"
 expect_exit 2 "--grading not a number" "$CLI" refine "$SHARED/data/square.poly" --auto 2 --grading x -o "$OUT/x.vtu"
 
