@@ -150,7 +150,9 @@ typedef enum cvm_entity {
     CVM_ENT_FILE_LINE = 10,   /**< a line of an input file (error reports only) */
     CVM_ENT_OPTION = 11,      /**< an option key (error reports only) */
     CVM_ENT_TETRAHEDRON = 12, /**< reserved for the 3D kernel */
-    CVM_ENT_FACET = 13        /**< reserved for the 3D kernel */
+    CVM_ENT_FACET = 13,       /**< reserved for the 3D kernel */
+    CVM_ENT_REFINE_UNMET = 20 /**< triangles the last cvm_mesh_refine() left below the angle or
+                                   above the size (cvm_mesh_copy_refine_unmet()) */
 } cvm_entity;
 
 /* ------------------------------------------------------------------------ */
@@ -787,6 +789,26 @@ typedef enum cvm_algorithm {
  * @since 0.1
  */
 CVM_API cvm_status cvm_mesh_refine(cvm_mesh *m, const cvm_sizing *sizing, cvm_algorithm algo);
+
+/** Reasons of cvm_mesh_copy_refine_unmet(), combined as bits. */
+#define CVM_UNMET_ANGLE 1             /**< an angle below CVM_OPT_MIN_ANGLE_DEG */
+#define CVM_UNMET_SIZE 2              /**< too big for the sizing or CVM_OPT_MAX_AREA */
+#define CVM_UNMET_SMALL_INPUT_ANGLE 4 /**< subtended by a small input angle (left alone on
+                                           purpose, counted in CVM_MEASURE_REFINE_SMALL_INPUT_ANGLE) */
+
+/**
+ * Where the last cvm_mesh_refine() left triangles unmet (the report's "where"):
+ * per such triangle, 3 doubles: its centroid x, y and its reasons (CVM_UNMET_* bits,
+ * a whole number), in the order of the triangles at the end of that run. Count them
+ * with cvm_mesh_count(&n, m, CVM_ENT_REFINE_UNMET) (0 before any refinement, after
+ * cvm_mesh_triangulate(), and when everything was met). The positions stay valid
+ * after later calls; they are a snapshot of that run.
+ * @param dst_len  capacity in doubles; must be >= 3 x the count.
+ * Units: length (x, y).
+ * @return CVM_OK, CVM_E_NULL_ARG, CVM_E_BUFFER_TOO_SMALL (nothing written)
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_mesh_copy_refine_unmet(double *dst, size_t dst_len, const cvm_mesh *m);
 
 /**
  * Choose which segment markers start fronts (for CVM_ALGO_AFLR): the segments whose

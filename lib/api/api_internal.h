@@ -31,6 +31,8 @@ struct cvm_mesh {
 
     /* refinement (lib/api/refine.c) */
     double refine_report[6]; /* the last cvm_mesh_refine(): CVM_MEASURE_REFINE_* */
+    double *refine_unmet;    /* 3 per triangle the last refinement left unmet: x, y, reasons */
+    size_t n_refine_unmet;
     int32_t *front_marks;    /* cvm_mesh_set_front_markers() */
     size_t n_front_marks;
 };

@@ -62,6 +62,7 @@ cvm_status cvm_mesh_count(size_t *out, const cvm_mesh *m, cvm_entity kind)
     case CVM_ENT_HOLE: *out = m->in.nholes; return CVM_OK;
     case CVM_ENT_REGION: *out = m->in.nregions; return CVM_OK;
     case CVM_ENT_DUPLICATE: *out = m->triangulated ? m->n_dup : 0; return CVM_OK;
+    case CVM_ENT_REFINE_UNMET: *out = m->n_refine_unmet; return CVM_OK;
     default: return CVM_E_ARGUMENT;
     }
 }

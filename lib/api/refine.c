@@ -138,6 +138,7 @@ static cvm_status refine_run(cvm_mesh *m, const cvm_sizing *sizing, cvm_algorith
     s2 = refine_vertex_data(m, nv0);
     if (s2) {
         /* the vertex arrays cannot follow the kernel: the mesh cannot be kept */
+        cvm__free(&m->ctx, rep.unmet);
         cvm__mesh_drop_output(m);
         return cvm__error(&m->ctx, CVM_E_NOMEM, CVM_ENT_NONE, -1,
                           "out of memory after refinement; the mesh was dropped");
@@ -148,6 +149,8 @@ static cvm_status refine_run(cvm_mesh *m, const cvm_sizing *sizing, cvm_algorith
     m->refine_report[REP_SMALL_ANGLE] = (double)rep.small_angle;
     m->refine_report[REP_REQUESTED] = p.min_angle_deg;
     m->refine_report[REP_MET] = rep.met_angle_deg;
+    m->refine_unmet = rep.unmet;
+    m->n_refine_unmet = rep.n_unmet;
     return s;
 }
 
@@ -167,6 +170,9 @@ cvm_status cvm_mesh_refine(cvm_mesh *m, const cvm_sizing *sizing, cvm_algorithm 
         return cvm__error(&m->ctx, CVM_E_ARGUMENT, CVM_ENT_NONE, -1, "unknown algorithm %d",
                           (int)algo);
     memset(m->refine_report, 0, sizeof m->refine_report);
+    cvm__free(&m->ctx, m->refine_unmet);
+    m->refine_unmet = NULL;
+    m->n_refine_unmet = 0;
     return refine_run(m, sizing, algo);
 }
 
@@ -201,4 +207,15 @@ cvm_status cvm__refine_measure(double *out, const cvm_mesh *m, cvm_measure which
     case CVM_MEASURE_REFINE_MET_ANGLE: *out = m->refine_report[REP_MET]; return CVM_OK;
     default: return CVM_E_ARGUMENT;
     }
+}
+
+cvm_status cvm_mesh_copy_refine_unmet(double *dst, size_t dst_len, const cvm_mesh *m)
+{
+    if (!m || (!dst && dst_len > 0))
+        return CVM_E_NULL_ARG;
+    if (dst_len < 3 * m->n_refine_unmet)
+        return CVM_E_BUFFER_TOO_SMALL;
+    if (m->n_refine_unmet)
+        memcpy(dst, m->refine_unmet, 3 * m->n_refine_unmet * sizeof *dst);
+    return CVM_OK;
 }

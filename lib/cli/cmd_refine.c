@@ -152,12 +152,26 @@ static void print_report(FILE *f, cvm_mesh *m)
         {CVM_MEASURE_REFINE_SMALL_INPUT_ANGLE, "  of which at small input angles"},
         {CVM_MEASURE_REFINE_UNMET_SIZE, "triangles above the size"},
     };
-    size_t i;
+    size_t i, n = 0;
+    double *all;
     for (i = 0; i < sizeof rows / sizeof rows[0]; i++) {
         double v;
         if (cvm_mesh_get_measure(&v, m, rows[i].w) == CVM_OK)
             fprintf(f, "%s: %.10g\n", rows[i].name, v);
     }
+    /* where: the first few unmet triangles by centroid */
+    if (cvm_mesh_count(&n, m, CVM_ENT_REFINE_UNMET) != CVM_OK || n == 0)
+        return;
+    all = malloc(3 * n * sizeof *all);
+    if (all && cvm_mesh_copy_refine_unmet(all, 3 * n, m) == CVM_OK)
+        for (i = 0; i < n && i < 5; i++) {
+            int why = (int)all[3 * i + 2];
+            fprintf(f, "unmet at (%.6g, %.6g):%s%s%s%s\n", all[3 * i], all[3 * i + 1],
+                    (why & CVM_UNMET_ANGLE) ? " angle" : "", (why & CVM_UNMET_SIZE) ? " size" : "",
+                    (why & CVM_UNMET_SMALL_INPUT_ANGLE) ? " (small input angle)" : "",
+                    i == 4 && n > 5 ? " ..." : "");
+        }
+    free(all);
 }
 
 static int run(const rargs *a)

@@ -149,6 +149,9 @@ typedef struct cvm__refine_report {
     size_t unmet_size;
     size_t small_angle;
     double met_angle_deg;      /* smallest angle over non-exempt triangles */
+    double *unmet;             /* 3 per triangle left unmet: centroid x, y, reason bits
+                                  (CVM_UNMET_*), allocated on the run's context */
+    size_t n_unmet;
 } cvm__refine_report;
 
 /* Results of trying to insert a free Steiner point. */

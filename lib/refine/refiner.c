@@ -188,32 +188,60 @@ static double rf_min_angle_deg(const cvm__tri2 *T, int32_t t)
     return best;
 }
 
-static void rf_report(cvm__refiner *R, cvm__refine_report *rep)
+/* Record where triangle t was left unmet (reason bits CVM_UNMET_*). */
+static cvm_status rf_unmet(cvm__refiner *R, cvm__refine_report *rep, size_t *cap, int32_t t,
+                           int bits)
 {
     const cvm__tri2 *T = R->T;
-    size_t t;
-    memset(rep, 0, sizeof *rep);
+    const int32_t *tv = T->tv + 3 * (size_t)t;
+    double *e;
+    int k;
+    if (cvm__grow(R->ctx, (void **)&rep->unmet, cap, 3 * (rep->n_unmet + 1), sizeof *rep->unmet))
+        return cvm__nomem(R->ctx);
+    e = rep->unmet + 3 * rep->n_unmet++;
+    e[0] = e[1] = 0;
+    for (k = 0; k < 3; k++) {
+        e[0] += T->xy[2 * (size_t)tv[k]] / 3;
+        e[1] += T->xy[2 * (size_t)tv[k] + 1] / 3;
+    }
+    e[2] = bits;
+    return CVM_OK;
+}
+
+static cvm_status rf_report(cvm__refiner *R, cvm__refine_report *rep)
+{
+    const cvm__tri2 *T = R->T;
+    size_t t, cap = 0;
     rep->steiner = R->steiner;
     rep->met_angle_deg = 180.0;
     for (t = 0; t < T->nt; t++) {
         double key;
-        int c;
+        int c, bits = 0;
         if (!cvm__tri2_in_domain(T, (int32_t)t))
             continue;
         c = cvm__rf_classify(R, (int32_t)t, &key);
-        if (c == 1)
+        if (c == 1) {
             rep->unmet_size++;
-        if (c == 3)
+            bits |= CVM_UNMET_SIZE;
+        }
+        if (c == 3) {
             rep->small_angle++;
+            bits |= CVM_UNMET_SMALL_INPUT_ANGLE;
+        }
         if (c != 3) {
             double a = rf_min_angle_deg(T, (int32_t)t);
             if (a < rep->met_angle_deg)
                 rep->met_angle_deg = a;
         }
         if (c == 2 || c == 3 ||
-            (c == 1 && R->sin2_min > 0 && rf_min_angle_deg(T, (int32_t)t) < R->p->min_angle_deg))
+            (c == 1 && R->sin2_min > 0 && rf_min_angle_deg(T, (int32_t)t) < R->p->min_angle_deg)) {
             rep->unmet_angle++;
+            bits |= CVM_UNMET_ANGLE;
+        }
+        if (bits && rf_unmet(R, rep, &cap, (int32_t)t, bits))
+            return CVM_E_NOMEM;
     }
+    return CVM_OK;
 }
 
 /* Post-processing (swap.c, smooth.c) of the Steiner vertices first..nv-1:
@@ -253,8 +281,11 @@ cvm_status cvm__refine(cvm__tri2 *T, const cvm__refine_params *p, cvm__refine_re
         s = cvm__rf_delaunay(&R);
     if (!s)
         s = rf_post(&R, first);
-    if (!cvm_status_is_error(s))
-        rf_report(&R, rep);
+    if (!cvm_status_is_error(s)) {
+        cvm_status s2 = rf_report(&R, rep);
+        if (s2)
+            s = s2;
+    }
     rep->steiner = R.steiner;
     rf_teardown(&R);
     return s;

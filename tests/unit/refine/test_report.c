@@ -1,0 +1,123 @@
+/* test_report.c - the refinement report's "where": cvm_mesh_copy_refine_unmet() against the test's own measurements. */
+#include <math.h>
+#include <stdlib.h>
+
+#include "refine/refine_tests.h"
+
+/* Smallest angle (degrees) of the mesh triangle whose centroid is (x, y);
+ * fails when no triangle has that centroid. */
+static double angle_at_centroid(cvm_mesh *m, double x, double y)
+{
+    size_t nv, nt, t, best = (size_t)-1;
+    double *xy, bestd = HUGE_VAL, ang = 180;
+    cvm_index *tri;
+    int k;
+    ck_assert_int_eq(cvm_mesh_count(&nv, m, CVM_ENT_VERTEX), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_count(&nt, m, CVM_ENT_TRIANGLE), CVM_OK);
+    xy = malloc(2 * nv * sizeof *xy);
+    tri = malloc(3 * nt * sizeof *tri);
+    ck_assert_int_eq(cvm_mesh_copy_points(xy, 2 * nv, m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_copy_cells(tri, 3 * nt, m, CVM_ENT_TRIANGLE), CVM_OK);
+    for (t = 0; t < nt; t++) {
+        double gx = 0, gy = 0, d;
+        for (k = 0; k < 3; k++) {
+            gx += xy[2 * tri[3 * t + k]] / 3;
+            gy += xy[2 * tri[3 * t + k] + 1] / 3;
+        }
+        d = hypot(gx - x, gy - y);
+        if (d < bestd) {
+            bestd = d;
+            best = t;
+        }
+    }
+    ck_assert(bestd <= 1e-12);
+    for (k = 0; k < 3; k++) {
+        const double *o = xy + 2 * tri[3 * best + k], *a = xy + 2 * tri[3 * best + (k + 1) % 3],
+                     *b = xy + 2 * tri[3 * best + (k + 2) % 3];
+        double ux = a[0] - o[0], uy = a[1] - o[1], wx = b[0] - o[0], wy = b[1] - o[1];
+        double g = atan2(fabs(ux * wy - uy * wx), ux * wx + uy * wy) * 180 / 3.14159265358979323846;
+        if (g < ang)
+            ang = g;
+    }
+    free(xy);
+    free(tri);
+    return ang;
+}
+
+/* Each entry names a real triangle; its bits agree with the report's counts and
+ * with the test's own angle measurement. */
+static void check_unmet(cvm_mesh *m)
+{
+    size_t n, i, n_angle = 0, n_size = 0, n_small = 0;
+    double *w, v;
+    ck_assert_int_eq(cvm_mesh_count(&n, m, CVM_ENT_REFINE_UNMET), CVM_OK);
+    w = malloc((3 * n + 1) * sizeof *w);
+    if (n > 0)
+        ck_assert_int_eq(cvm_mesh_copy_refine_unmet(w, 3 * n - 1, m), CVM_E_BUFFER_TOO_SMALL);
+    ck_assert_int_eq(cvm_mesh_copy_refine_unmet(w, 3 * n, m), CVM_OK);
+    for (i = 0; i < n; i++) {
+        int bits = (int)w[3 * i + 2];
+        double a = angle_at_centroid(m, w[3 * i], w[3 * i + 1]);
+        ck_assert(bits > 0 && bits < 8 && (double)bits == w[3 * i + 2]);
+        if (bits & CVM_UNMET_ANGLE) {
+            n_angle++;
+            ck_assert(a < 30 + 1e-9);
+        }
+        n_size += (bits & CVM_UNMET_SIZE) != 0;
+        n_small += (bits & CVM_UNMET_SMALL_INPUT_ANGLE) != 0;
+    }
+    ck_assert_int_eq(cvm_mesh_get_measure(&v, m, CVM_MEASURE_REFINE_UNMET_ANGLE), CVM_OK);
+    ck_assert_uint_eq(n_angle, (size_t)v);
+    ck_assert_int_eq(cvm_mesh_get_measure(&v, m, CVM_MEASURE_REFINE_UNMET_SIZE), CVM_OK);
+    ck_assert_uint_eq(n_size, (size_t)v);
+    ck_assert_int_eq(cvm_mesh_get_measure(&v, m, CVM_MEASURE_REFINE_SMALL_INPUT_ANGLE), CVM_OK);
+    ck_assert_uint_eq(n_small, (size_t)v);
+    free(w);
+}
+
+START_TEST(small_input_angle_is_located)
+{
+    cvm_mesh *m;
+    size_t n;
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    rtest_set_wedge(m, 3);
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+    ck_assert_int_eq(rtest_refine_uniform(m, 0.1, CVM_ALGO_DELAUNAY), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_count(&n, m, CVM_ENT_REFINE_UNMET), CVM_OK);
+    ck_assert_uint_gt(n, 0);
+    check_unmet(m);
+    /* a new triangulation forgets the report */
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_count(&n, m, CVM_ENT_REFINE_UNMET), CVM_OK);
+    ck_assert_uint_eq(n, 0);
+    ck_assert_int_eq(cvm_mesh_copy_refine_unmet(NULL, 0, m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_copy_refine_unmet(NULL, 0, NULL), CVM_E_NULL_ARG);
+    cvm_mesh_free(m);
+}
+END_TEST
+
+START_TEST(steiner_limit_leaves_located_triangles)
+{
+    char path[512];
+    cvm_mesh *m;
+    size_t n;
+    rtest_shared_path(path, sizeof path, "square.poly");
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_read(m, path), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_MAX_STEINER, 40), CVM_OK);
+    ck_assert_int_eq(rtest_refine_uniform(m, 0.02, CVM_ALGO_FRONTAL), CVM_INCOMPLETE_STEINER_LIMIT);
+    ck_assert_int_eq(cvm_mesh_count(&n, m, CVM_ENT_REFINE_UNMET), CVM_OK);
+    ck_assert_uint_gt(n, 10);
+    check_unmet(m);
+    cvm_mesh_free(m);
+}
+END_TEST
+
+TCase *refine_report_tcase(void)
+{
+    TCase *tc = tcase_create("report");
+    tcase_add_test(tc, small_input_angle_is_located);
+    tcase_add_test(tc, steiner_limit_leaves_located_triangles);
+    return tc;
+}
