@@ -32,6 +32,18 @@ typedef struct cvm__line_source {
     double x0, y0, x1, y1, h, growth;
 } cvm__line_source;
 
+/* A uniform grid of square cells over a box (grid.c). */
+typedef struct cvm__ugrid {
+    double x0, y0, cs;    /* origin and cell side */
+    int nx, ny;
+} cvm__ugrid;
+
+/* Fit about n cells (at least 1, at most 2048 a side) over the box
+ * [xmin, xmax] x [ymin, ymax]; a flat or empty box still gets cells. */
+void cvm__ugrid_fit(cvm__ugrid *g, double xmin, double ymin, double xmax, double ymax, size_t n);
+/* Cell (i, j) of (x, y), clamped into the grid. */
+void cvm__ugrid_cell(const cvm__ugrid *g, double x, double y, int *i, int *j);
+
 /* The automatic length scale (sizing_auto.c), built per refinement from the
  * domain: samples (x, y, LS) on the boundary in a uniform grid; the size at a
  * point is the least LS + distance / G over the samples. */
@@ -39,9 +51,8 @@ typedef struct cvm__auto_field {
     double *smp;          /* 3 per sample: x, y, LS */
     size_t ns;
     double G, ls_min;
-    double x0, y0, cs;    /* grid origin and cell size */
-    int nx, ny;
-    int32_t *start;       /* nx * ny + 1 offsets into items */
+    cvm__ugrid g;
+    int32_t *start;       /* g.nx * g.ny + 1 offsets into items */
     int32_t *items;       /* sample indices by cell */
     double *cmin;         /* least LS per cell */
 } cvm__auto_field;
@@ -52,8 +63,7 @@ typedef struct cvm__background {
     double *xy, *h;       /* 2 and 1 per node */
     int32_t *tri;         /* 3 per triangle, counter-clockwise */
     size_t np, nt;
-    double x0, y0, cs;    /* grid of triangles by bounding box */
-    int nx, ny;
+    cvm__ugrid g;         /* grid of triangles by bounding box */
     int32_t *start, *items;
 } cvm__background;
 

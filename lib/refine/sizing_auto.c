@@ -51,8 +51,7 @@ typedef struct af_build {
     int32_t *vstart, *vedges;
     double *curv;          /* radius of curvature per vertex (+inf: none) */
     /* feature grid */
-    double gx0, gy0, gcs;
-    int gnx, gny;
+    cvm__ugrid g;
     int32_t *gstart, *gitems;
     /* stamps */
     uint32_t *excl, *seen;
@@ -176,28 +175,21 @@ static cvm_status af_adjacency(af_build *B, size_t nv)
     return CVM_OK;
 }
 
-static void af_cell_of(const af_build *B, double x, double y, int *i, int *j)
-{
-    double fx = floor((x - B->gx0) / B->gcs), fy = floor((y - B->gy0) / B->gcs);
-    *i = fx < 0 ? 0 : fx >= B->gnx ? B->gnx - 1 : (int)fx;
-    *j = fy < 0 ? 0 : fy >= B->gny ? B->gny - 1 : (int)fy;
-}
-
 /* Visit the cells an edge meets (their circumscribed circle touches it):
  * count them (pos NULL) or append the edge to them. */
 static void af_grid_edge(af_build *B, size_t k, int32_t *pos)
 {
     const double *a = af_pt(B, B->fe[2 * k]), *b = af_pt(B, B->fe[2 * k + 1]);
     int i0, j0, i1, j1, i, j;
-    af_cell_of(B, fmin(a[0], b[0]), fmin(a[1], b[1]), &i0, &j0);
-    af_cell_of(B, fmax(a[0], b[0]), fmax(a[1], b[1]), &i1, &j1);
+    cvm__ugrid_cell(&B->g, fmin(a[0], b[0]), fmin(a[1], b[1]), &i0, &j0);
+    cvm__ugrid_cell(&B->g, fmax(a[0], b[0]), fmax(a[1], b[1]), &i1, &j1);
     for (j = j0; j <= j1; j++)
         for (i = i0; i <= i1; i++) {
-            size_t c = (size_t)j * (size_t)B->gnx + (size_t)i;
+            size_t c = (size_t)j * (size_t)B->g.nx + (size_t)i;
             double m[2];
-            m[0] = B->gx0 + (i + 0.5) * B->gcs;
-            m[1] = B->gy0 + (j + 0.5) * B->gcs;
-            if (af_dist_seg(m, a, b) > 0.7072 * B->gcs)
+            m[0] = B->g.x0 + (i + 0.5) * B->g.cs;
+            m[1] = B->g.y0 + (j + 0.5) * B->g.cs;
+            if (af_dist_seg(m, a, b) > 0.7072 * B->g.cs)
                 continue;
             if (pos)
                 B->gitems[pos[c]++] = (int32_t)k;
@@ -209,7 +201,7 @@ static void af_grid_edge(af_build *B, size_t k, int32_t *pos)
 /* Grid of features over their bounding box, about one edge per cell. */
 static cvm_status af_grid(af_build *B)
 {
-    double xmin = HUGE_VAL, ymin = HUGE_VAL, xmax = -HUGE_VAL, ymax = -HUGE_VAL, w, h;
+    double xmin = HUGE_VAL, ymin = HUGE_VAL, xmax = -HUGE_VAL, ymax = -HUGE_VAL;
     size_t k, ncell;
     int32_t *pos;
     for (k = 0; k < 2 * B->nfe; k++) {
@@ -219,19 +211,8 @@ static cvm_status af_grid(af_build *B)
         ymin = fmin(ymin, p[1]);
         ymax = fmax(ymax, p[1]);
     }
-    w = xmax - xmin;
-    h = ymax - ymin;
-    B->gcs = sqrt(w * h / (double)(B->nfe + 1));
-    if (!(B->gcs > 0))
-        B->gcs = fmax(w, h) / (double)(B->nfe + 1);
-    if (!(B->gcs > 0))
-        B->gcs = 1;
-    B->gcs = fmax(B->gcs, fmax(w, h) / 2048);
-    B->gnx = (int)(w / B->gcs) + 1;
-    B->gny = (int)(h / B->gcs) + 1;
-    B->gx0 = xmin;
-    B->gy0 = ymin;
-    ncell = (size_t)B->gnx * (size_t)B->gny;
+    cvm__ugrid_fit(&B->g, xmin, ymin, xmax, ymax, B->nfe);
+    ncell = (size_t)B->g.nx * (size_t)B->g.ny;
     B->gstart = cvm__malloc(B->ctx, (ncell + 1) * sizeof *B->gstart);
     B->excl = cvm__malloc(B->ctx, (B->nfe + 1) * sizeof *B->excl);
     B->seen = cvm__malloc(B->ctx, (B->nfe + 1) * sizeof *B->seen);
@@ -329,27 +310,27 @@ static void af_excl_edge(af_build *B, int32_t e)
 static double af_nearest(af_build *B, const double *p)
 {
     double best = HUGE_VAL;
-    int ci, cj, r, rmax = B->gnx > B->gny ? B->gnx : B->gny;
+    int ci, cj, r, rmax = B->g.nx > B->g.ny ? B->g.nx : B->g.ny;
     if (++B->seen_stamp == 0) {
         memset(B->seen, 0, (B->nfe + 1) * sizeof *B->seen);
         B->seen_stamp = 1;
     }
-    af_cell_of(B, p[0], p[1], &ci, &cj);
+    cvm__ugrid_cell(&B->g, p[0], p[1], &ci, &cj);
     for (r = 0; r <= rmax; r++) {
         int i, j;
         /* every cell of ring r + 1 is at least r cells away */
-        if (r > 0 && (double)(r - 1) * B->gcs >= best)
+        if (r > 0 && (double)(r - 1) * B->g.cs >= best)
             break;
         for (j = cj - r; j <= cj + r; j++) {
             int step = (j == cj - r || j == cj + r) ? 1 : 2 * r;
-            if (j < 0 || j >= B->gny)
+            if (j < 0 || j >= B->g.ny)
                 continue;
             for (i = ci - r; i <= ci + r; i += step > 0 ? step : 1) {
                 int32_t q;
                 size_t c;
-                if (i < 0 || i >= B->gnx)
+                if (i < 0 || i >= B->g.nx)
                     continue;
-                c = (size_t)j * (size_t)B->gnx + (size_t)i;
+                c = (size_t)j * (size_t)B->g.nx + (size_t)i;
                 for (q = B->gstart[c]; q < B->gstart[c + 1]; q++) {
                     int32_t e = B->gitems[q];
                     double d;
@@ -401,7 +382,7 @@ static cvm_status af_samples(af_build *B, size_t nv, double R, double G, double 
 {
     size_t k, v;
     cvm_status s;
-    double diam = hypot(B->gnx * B->gcs, B->gny * B->gcs);
+    double diam = hypot(B->g.nx * B->g.cs, B->g.ny * B->g.cs);
     for (v = 0; v < nv; v++)
         vlfs[v] = -1;
     for (k = 0; k < 2 * B->nfe; k++) {
@@ -433,16 +414,9 @@ static cvm_status af_samples(af_build *B, size_t nv, double R, double G, double 
 
 /* ---- the field: samples in a grid, evaluated by a ring search ---- */
 
-static void af_field_cell(const cvm__auto_field *F, double x, double y, int *i, int *j)
-{
-    double fx = floor((x - F->x0) / F->cs), fy = floor((y - F->y0) / F->cs);
-    *i = fx < 0 ? 0 : fx >= F->nx ? F->nx - 1 : (int)fx;
-    *j = fy < 0 ? 0 : fy >= F->ny ? F->ny - 1 : (int)fy;
-}
-
 static cvm_status af_field_grid(cvm__auto_field *F, cvm__ctx *ctx)
 {
-    double xmin = HUGE_VAL, ymin = HUGE_VAL, xmax = -HUGE_VAL, ymax = -HUGE_VAL, w, h;
+    double xmin = HUGE_VAL, ymin = HUGE_VAL, xmax = -HUGE_VAL, ymax = -HUGE_VAL;
     size_t k, ncell;
     int32_t *pos;
     for (k = 0; k < F->ns; k++) {
@@ -452,19 +426,8 @@ static cvm_status af_field_grid(cvm__auto_field *F, cvm__ctx *ctx)
         ymax = fmax(ymax, F->smp[3 * k + 1]);
         F->ls_min = fmin(F->ls_min, F->smp[3 * k + 2]);
     }
-    w = xmax - xmin;
-    h = ymax - ymin;
-    F->cs = sqrt(w * h / (double)(F->ns / 4 + 1));
-    if (!(F->cs > 0))
-        F->cs = fmax(w, h) / (double)(F->ns / 4 + 1);
-    if (!(F->cs > 0))
-        F->cs = 1;
-    F->cs = fmax(F->cs, fmax(w, h) / 2048);
-    F->nx = (int)(w / F->cs) + 1;
-    F->ny = (int)(h / F->cs) + 1;
-    F->x0 = xmin;
-    F->y0 = ymin;
-    ncell = (size_t)F->nx * (size_t)F->ny;
+    cvm__ugrid_fit(&F->g, xmin, ymin, xmax, ymax, F->ns / 4);
+    ncell = (size_t)F->g.nx * (size_t)F->g.ny;
     F->start = cvm__malloc(ctx, (ncell + 1) * sizeof *F->start);
     F->cmin = cvm__malloc(ctx, (ncell + 1) * sizeof *F->cmin);
     F->items = cvm__malloc(ctx, (F->ns + 1) * sizeof *F->items);
@@ -479,8 +442,8 @@ static cvm_status af_field_grid(cvm__auto_field *F, cvm__ctx *ctx)
     for (k = 0; k < F->ns; k++) {
         int i, j;
         size_t c;
-        af_field_cell(F, F->smp[3 * k], F->smp[3 * k + 1], &i, &j);
-        c = (size_t)j * (size_t)F->nx + (size_t)i;
+        cvm__ugrid_cell(&F->g, F->smp[3 * k], F->smp[3 * k + 1], &i, &j);
+        c = (size_t)j * (size_t)F->g.nx + (size_t)i;
         F->start[c + 1]++;
         F->cmin[c] = fmin(F->cmin[c], F->smp[3 * k + 2]);
     }
@@ -489,8 +452,8 @@ static cvm_status af_field_grid(cvm__auto_field *F, cvm__ctx *ctx)
     memcpy(pos, F->start, (ncell + 1) * sizeof *pos);
     for (k = 0; k < F->ns; k++) {
         int i, j;
-        af_field_cell(F, F->smp[3 * k], F->smp[3 * k + 1], &i, &j);
-        F->items[pos[(size_t)j * (size_t)F->nx + (size_t)i]++] = (int32_t)k;
+        cvm__ugrid_cell(&F->g, F->smp[3 * k], F->smp[3 * k + 1], &i, &j);
+        F->items[pos[(size_t)j * (size_t)F->g.nx + (size_t)i]++] = (int32_t)k;
     }
     cvm__free(ctx, pos);
     return CVM_OK;
@@ -502,30 +465,30 @@ double cvm__auto_field_at(const cvm__auto_field *F, double x, double y)
     int ci, cj, r, rmax;
     if (F->ns == 0)
         return HUGE_VAL;
-    rmax = F->nx > F->ny ? F->nx : F->ny;
+    rmax = F->g.nx > F->g.ny ? F->g.nx : F->g.ny;
     /* outside the grid: count the rings from the nearest cell, the bound below
        still holds because distances only grow */
-    af_field_cell(F, x, y, &ci, &cj);
+    cvm__ugrid_cell(&F->g, x, y, &ci, &cj);
     for (r = 0; r <= rmax + 1; r++) {
         int i, j;
-        if (r > 0 && F->ls_min + (double)(r - 1) * F->cs * inv_g >= best)
+        if (r > 0 && F->ls_min + (double)(r - 1) * F->g.cs * inv_g >= best)
             break;
         for (j = cj - r; j <= cj + r; j++) {
             int step = (j == cj - r || j == cj + r) ? 1 : 2 * r;
-            if (j < 0 || j >= F->ny)
+            if (j < 0 || j >= F->g.ny)
                 continue;
             for (i = ci - r; i <= ci + r; i += step > 0 ? step : 1) {
                 size_t c;
                 int32_t q;
                 double bx, by;
-                if (i < 0 || i >= F->nx)
+                if (i < 0 || i >= F->g.nx)
                     continue;
-                c = (size_t)j * (size_t)F->nx + (size_t)i;
+                c = (size_t)j * (size_t)F->g.nx + (size_t)i;
                 if (F->start[c] == F->start[c + 1])
                     continue;
                 /* distance from (x, y) to the cell box */
-                bx = fmax(0.0, fmax(F->x0 + i * F->cs - x, x - (F->x0 + (i + 1) * F->cs)));
-                by = fmax(0.0, fmax(F->y0 + j * F->cs - y, y - (F->y0 + (j + 1) * F->cs)));
+                bx = fmax(0.0, fmax(F->g.x0 + i * F->g.cs - x, x - (F->g.x0 + (i + 1) * F->g.cs)));
+                by = fmax(0.0, fmax(F->g.y0 + j * F->g.cs - y, y - (F->g.y0 + (j + 1) * F->g.cs)));
                 if (F->cmin[c] + hypot(bx, by) * inv_g >= best)
                     continue;
                 for (q = F->start[c]; q < F->start[c + 1]; q++) {

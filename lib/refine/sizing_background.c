@@ -23,13 +23,6 @@ static void bg_node(const double *xyh, int32_t v, double *out)
     out[1] = xyh[3 * (size_t)v + 1];
 }
 
-static void bg_cell_of(const cvm__background *bg, double x, double y, int *i, int *j)
-{
-    double fx = floor((x - bg->x0) / bg->cs), fy = floor((y - bg->y0) / bg->cs);
-    *i = fx < 0 ? 0 : fx >= bg->nx ? bg->nx - 1 : (int)fx;
-    *j = fy < 0 ? 0 : fy >= bg->ny ? bg->ny - 1 : (int)fy;
-}
-
 /* Cells covered by the bounding box of triangle t: count (pos NULL) or fill. */
 static void bg_grid_tri(cvm__background *bg, size_t t, int32_t *pos)
 {
@@ -43,11 +36,11 @@ static void bg_grid_tri(cvm__background *bg, size_t t, int32_t *pos)
         ymin = fmin(ymin, p[1]);
         ymax = fmax(ymax, p[1]);
     }
-    bg_cell_of(bg, xmin, ymin, &i0, &j0);
-    bg_cell_of(bg, xmax, ymax, &i1, &j1);
+    cvm__ugrid_cell(&bg->g, xmin, ymin, &i0, &j0);
+    cvm__ugrid_cell(&bg->g, xmax, ymax, &i1, &j1);
     for (j = j0; j <= j1; j++)
         for (i = i0; i <= i1; i++) {
-            size_t c = (size_t)j * (size_t)bg->nx + (size_t)i;
+            size_t c = (size_t)j * (size_t)bg->g.nx + (size_t)i;
             if (pos)
                 bg->items[pos[c]++] = (int32_t)t;
             else
@@ -57,7 +50,7 @@ static void bg_grid_tri(cvm__background *bg, size_t t, int32_t *pos)
 
 static cvm_status bg_grid(cvm__background *bg, cvm__ctx *ctx)
 {
-    double xmin = HUGE_VAL, ymin = HUGE_VAL, xmax = -HUGE_VAL, ymax = -HUGE_VAL, w, h;
+    double xmin = HUGE_VAL, ymin = HUGE_VAL, xmax = -HUGE_VAL, ymax = -HUGE_VAL;
     size_t k, ncell;
     int32_t *pos;
     for (k = 0; k < bg->np; k++) {
@@ -66,19 +59,8 @@ static cvm_status bg_grid(cvm__background *bg, cvm__ctx *ctx)
         ymin = fmin(ymin, bg->xy[2 * k + 1]);
         ymax = fmax(ymax, bg->xy[2 * k + 1]);
     }
-    w = xmax - xmin;
-    h = ymax - ymin;
-    bg->cs = sqrt(w * h / (double)(bg->nt + 1));
-    if (!(bg->cs > 0))
-        bg->cs = fmax(w, h) / (double)(bg->nt + 1);
-    if (!(bg->cs > 0))
-        bg->cs = 1;
-    bg->cs = fmax(bg->cs, fmax(w, h) / 2048);
-    bg->nx = (int)(w / bg->cs) + 1;
-    bg->ny = (int)(h / bg->cs) + 1;
-    bg->x0 = xmin;
-    bg->y0 = ymin;
-    ncell = (size_t)bg->nx * (size_t)bg->ny;
+    cvm__ugrid_fit(&bg->g, xmin, ymin, xmax, ymax, bg->nt);
+    ncell = (size_t)bg->g.nx * (size_t)bg->g.ny;
     bg->start = cvm__malloc(ctx, (ncell + 1) * sizeof *bg->start);
     if (!bg->start)
         return CVM_E_NOMEM;
@@ -207,12 +189,12 @@ double cvm__background_at(const cvm__background *bg, double x, double y)
     int32_t q;
     if (!bg || bg->nt == 0)
         return HUGE_VAL;
-    if (x < bg->x0 || y < bg->y0 || x > bg->x0 + bg->nx * bg->cs || y > bg->y0 + bg->ny * bg->cs)
+    if (x < bg->g.x0 || y < bg->g.y0 || x > bg->g.x0 + bg->g.nx * bg->g.cs || y > bg->g.y0 + bg->g.ny * bg->g.cs)
         return HUGE_VAL;
     p[0] = x;
     p[1] = y;
-    bg_cell_of(bg, x, y, &i, &j);
-    c = (size_t)j * (size_t)bg->nx + (size_t)i;
+    cvm__ugrid_cell(&bg->g, x, y, &i, &j);
+    c = (size_t)j * (size_t)bg->g.nx + (size_t)i;
     for (q = bg->start[c]; q < bg->start[c + 1]; q++) {
         const int32_t *v = bg->tri + 3 * (size_t)bg->items[q];
         const double *a = bg->xy + 2 * (size_t)v[0], *b = bg->xy + 2 * (size_t)v[1],

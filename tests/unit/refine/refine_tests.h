@@ -20,6 +20,9 @@ void rtest_shared_path(char *buf, size_t len, const char *name);
  * test does not trust the library's reader for what it checks); caller frees. */
 cvm_index *rtest_poly_segments(const char *path, size_t *nseg);
 
+/* Points (2 per vertex) and triangles (3 ids each) of m in fresh arrays; caller frees. */
+void rtest_fetch(cvm_mesh *m, double **xy, size_t *nv, cvm_index **tri, size_t *nt);
+
 /* Quality of a mesh measured from its coordinates by the test's own code. */
 typedef struct rtest_quality {
     size_t nv, nt;

@@ -12,12 +12,7 @@ static double angle_at_centroid(cvm_mesh *m, double x, double y)
     double *xy, bestd = HUGE_VAL, ang = 180;
     cvm_index *tri;
     int k;
-    ck_assert_int_eq(cvm_mesh_count(&nv, m, CVM_ENT_VERTEX), CVM_OK);
-    ck_assert_int_eq(cvm_mesh_count(&nt, m, CVM_ENT_TRIANGLE), CVM_OK);
-    xy = malloc(2 * nv * sizeof *xy);
-    tri = malloc(3 * nt * sizeof *tri);
-    ck_assert_int_eq(cvm_mesh_copy_points(xy, 2 * nv, m), CVM_OK);
-    ck_assert_int_eq(cvm_mesh_copy_cells(tri, 3 * nt, m, CVM_ENT_TRIANGLE), CVM_OK);
+    rtest_fetch(m, &xy, &nv, &tri, &nt);
     for (t = 0; t < nt; t++) {
         double gx = 0, gy = 0, d;
         for (k = 0; k < 3; k++) {

@@ -188,12 +188,7 @@ static double mean_edge_in_ring(cvm_mesh *m, double cx, double cy, double lo, do
     size_t nv, nt, t, n = 0;
     double *xy, sum = 0;
     cvm_index *tri;
-    ck_assert_int_eq(cvm_mesh_count(&nv, m, CVM_ENT_VERTEX), CVM_OK);
-    ck_assert_int_eq(cvm_mesh_count(&nt, m, CVM_ENT_TRIANGLE), CVM_OK);
-    xy = malloc(2 * nv * sizeof *xy);
-    tri = malloc(3 * nt * sizeof *tri);
-    ck_assert_int_eq(cvm_mesh_copy_points(xy, 2 * nv, m), CVM_OK);
-    ck_assert_int_eq(cvm_mesh_copy_cells(tri, 3 * nt, m, CVM_ENT_TRIANGLE), CVM_OK);
+    rtest_fetch(m, &xy, &nv, &tri, &nt);
     for (t = 0; t < nt; t++) {
         const double *a = xy + 2 * tri[3 * t], *b = xy + 2 * tri[3 * t + 1],
                      *c = xy + 2 * tri[3 * t + 2];

@@ -7,6 +7,17 @@
 #include "refine/refine_tests.h"
 #include "support/mesh_oracle.h"
 
+void rtest_fetch(cvm_mesh *m, double **xy, size_t *nv, cvm_index **tri, size_t *nt)
+{
+    ck_assert_int_eq(cvm_mesh_count(nv, m, CVM_ENT_VERTEX), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_count(nt, m, CVM_ENT_TRIANGLE), CVM_OK);
+    *xy = malloc((2 * *nv + 1) * sizeof **xy);
+    *tri = malloc((3 * *nt + 1) * sizeof **tri);
+    ck_assert(*xy && *tri);
+    ck_assert_int_eq(cvm_mesh_copy_points(*xy, 2 * *nv, m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_copy_cells(*tri, 3 * *nt, m, CVM_ENT_TRIANGLE), CVM_OK);
+}
+
 void rtest_shared_path(char *buf, size_t len, const char *name)
 {
     const char *d = getenv("CVM_SHARED_DIR");
