@@ -64,18 +64,46 @@ typedef struct cvm__bad_entry {
     int32_t v[3];
 } cvm__bad_entry;
 
+/* Classes 0..CVM__BQ_NCLASS-1 (a class outside is clamped into the range). */
+#define CVM__BQ_NCLASS 2
+
+/* A pooled entry, chained in its bucket (or the free list) through next. */
+typedef struct cvm__bq_node {
+    cvm__bad_entry x;
+    int32_t next;
+} cvm__bq_node;
+
+/*
+ * Bucket queue (as Triangle's): an entry goes into bucket
+ * cvm__bq_bucket(cls, key) and entries leave in the order (bucket, push
+ * order): lower class first; inside a class, lower quantised key first; inside
+ * a bucket, first in first out. The key is quantised to its sign, binary
+ * exponent and leading 4 significand bits, so a bucket spans a relative key
+ * width of 1/32 to 1/16 (2^e (1 + j/16) to 2^e (1 + (j+1)/16)); keys that
+ * differ by more than a factor 1 + 1/16 always leave in key order. Order is a
+ * function of the pushes alone (never of addresses), so runs are reproducible.
+ * Stale entries are not removed on push; the caller skips them on pop with
+ * cvm__bq_valid (and the pool drops them in bulk when most are stale).
+ */
 typedef struct cvm__bad_queue {
     cvm__ctx *ctx;
-    cvm__bad_entry *e;
-    size_t n, cap;
+    cvm__bq_node *e;           /* entry pool */
+    size_t used, cap;          /* pool slots ever used, capacity */
+    int32_t free;              /* free list of pool slots, -1 if none */
+    size_t n;                  /* entries queued */
+    int32_t *ht;               /* head, tail of each bucket (valid while its bit is set) */
+    uint64_t *bits;            /* non-empty buckets: one bit each, then one per word */
+    uint64_t l2;               /* one bit per non-zero summary word */
 } cvm__bad_queue;
 
 void cvm__bq_init(cvm__bad_queue *q, cvm__ctx *ctx);
 void cvm__bq_destroy(cvm__bad_queue *q);
 void cvm__bq_clear(cvm__bad_queue *q);
+/* The bucket of (cls, key): lower buckets leave first. */
+size_t cvm__bq_bucket(int32_t cls, double key);
 /* Push triangle t of T with class cls and key; CVM_OK or CVM_E_NOMEM. */
 cvm_status cvm__bq_push(cvm__bad_queue *q, const cvm__tri2 *T, int32_t t, int32_t cls, double key);
-/* Pop the entry of least (cls, key, v0, v1, v2) into *out; 0 when empty. */
+/* Pop the first entry of the least non-empty bucket into *out; 0 when empty. */
 int cvm__bq_pop(cvm__bad_queue *q, cvm__bad_entry *out);
 /* 1 when the entry still names a live triangle with the same vertices. */
 int cvm__bq_valid(const cvm__tri2 *T, const cvm__bad_entry *e);
