@@ -12,7 +12,11 @@
  * worst-first shape are heuristics that a quantised key keeps). So, as in
  * Triangle, entries go into buckets by a coarse key and leave each bucket in
  * push order; the least non-empty bucket is found through a three-level
- * bitmap in three count-trailing-zeros steps.
+ * bitmap in three count-trailing-zeros steps. A bucket is a chain of
+ * blocks of CVM__BQ_BLOCK entries, so a bucket is read in memory order and
+ * cvm__bq_pop_valid can fetch the triangles of the next entries early: two
+ * of three entries are stale by the time they are popped, and each would
+ * otherwise cost a cache miss or two.
  *
  * Bucket of (cls, key): cls * 2^16 + the top 16 bits of the key's IEEE-754
  * bit pattern made order-preserving (sign, 11 exponent bits, 4 significand
@@ -28,7 +32,9 @@
 
 #if defined(__GNUC__) || defined(__clang__)
 #  define bq_ctz(w) ((unsigned)__builtin_ctzll(w))
+#  define bq_prefetch(p) __builtin_prefetch(p)
 #else
+#  define bq_prefetch(p) ((void)(p))
 static unsigned bq_ctz(uint64_t w)
 {
     unsigned k = 0;
@@ -40,6 +46,23 @@ static unsigned bq_ctz(uint64_t w)
 }
 #endif
 
+/* Bucket b's chain: head block, read position, tail block, write position. */
+#define BK_HEAD(q, b) ((q)->bk[4 * (b)])
+#define BK_READ(q, b) ((q)->bk[4 * (b) + 1])
+#define BK_TAIL(q, b) ((q)->bk[4 * (b) + 2])
+#define BK_WRITE(q, b) ((q)->bk[4 * (b) + 3])
+
+typedef struct bq_item {
+    double key;
+    int32_t t;
+    int32_t v[3];
+} bq_item;
+
+struct cvm__bq_block {
+    int32_t next; /* next block of the bucket, or of the free list */
+    bq_item it[CVM__BQ_BLOCK];
+};
+
 void cvm__bq_init(cvm__bad_queue *q, cvm__ctx *ctx)
 {
     memset(q, 0, sizeof *q);
@@ -49,8 +72,8 @@ void cvm__bq_init(cvm__bad_queue *q, cvm__ctx *ctx)
 
 void cvm__bq_destroy(cvm__bad_queue *q)
 {
-    cvm__free(q->ctx, q->e);
-    cvm__free(q->ctx, q->ht);
+    cvm__free(q->ctx, q->blk);
+    cvm__free(q->ctx, q->bk);
     cvm__free(q->ctx, q->bits);
     cvm__bq_init(q, q->ctx);
 }
@@ -103,6 +126,11 @@ static void bq_unmark(cvm__bad_queue *q, size_t b)
     q->l2 &= ~((uint64_t)1 << (b >> 12));
 }
 
+static int bq_nonempty(const cvm__bad_queue *q, size_t b)
+{
+    return (q->bits[b >> 6] >> (b & 63)) & 1;
+}
+
 /* Least non-empty bucket at or after b (b < BQ_NBUCKET); BQ_NBUCKET if none. */
 static size_t bq_next_bucket(const cvm__bad_queue *q, size_t b)
 {
@@ -138,6 +166,24 @@ static size_t bq_min_bucket(const cvm__bad_queue *q)
     return 64 * i0 + bq_ctz(q->bits[i0]);
 }
 
+/* A block from the free list or the pool (which must have room). */
+static int32_t bq_take_block(cvm__bad_queue *q)
+{
+    int32_t k = q->free;
+    if (k >= 0)
+        q->free = q->blk[k].next;
+    else
+        k = (int32_t)q->used++;
+    q->blk[k].next = -1;
+    return k;
+}
+
+static void bq_give_block(cvm__bad_queue *q, int32_t k)
+{
+    q->blk[k].next = q->free;
+    q->free = k;
+}
+
 /* Drop entries whose triangle is gone, keeping the order of the rest. Only
  * entries that could never be popped as valid are dropped, and the trigger
  * depends on counts alone, so runs stay reproducible. */
@@ -145,27 +191,45 @@ static void bq_compact(cvm__bad_queue *q, const cvm__tri2 *T)
 {
     size_t b = q->l2 ? bq_min_bucket(q) : BQ_NBUCKET;
     while (b < BQ_NBUCKET) {
-        int32_t i = q->ht[2 * b], last = -1;
-        while (i >= 0) {
-            int32_t nx = q->e[i].next;
-            if (cvm__bq_valid(T, &q->e[i].x)) {
-                if (last < 0)
-                    q->ht[2 * b] = i;
-                else
-                    q->e[last].next = i;
-                last = i;
+        int32_t tb = BK_TAIL(q, b), tw = BK_WRITE(q, b);
+        int32_t rb = BK_HEAD(q, b), rp = BK_READ(q, b), wb = rb, wp = rp, k;
+        while (rb != tb || rp != tw) {
+            const bq_item *it = &q->blk[rb].it[rp];
+            cvm__bad_entry e;
+            e.t = it->t;
+            e.v[0] = it->v[0];
+            e.v[1] = it->v[1];
+            e.v[2] = it->v[2];
+            if (cvm__bq_valid(T, &e)) {
+                if (wp == CVM__BQ_BLOCK) {
+                    wb = q->blk[wb].next;
+                    wp = 0;
+                }
+                q->blk[wb].it[wp++] = *it;
             } else {
-                q->e[i].next = q->free;
-                q->free = i;
                 q->n--;
             }
-            i = nx;
+            if (++rp == CVM__BQ_BLOCK && rb != tb) {
+                rb = q->blk[rb].next;
+                rp = 0;
+            }
         }
-        if (last < 0) {
+        if (wb == BK_HEAD(q, b) && wp == BK_READ(q, b)) {
+            wb = -1; /* nothing left: the whole chain goes */
+            k = BK_HEAD(q, b);
             bq_unmark(q, b);
         } else {
-            q->e[last].next = -1;
-            q->ht[2 * b + 1] = last;
+            k = q->blk[wb].next;
+            q->blk[wb].next = -1;
+            BK_TAIL(q, b) = wb;
+            BK_WRITE(q, b) = wp;
+        }
+        while (wb != tb) {
+            int32_t nx = q->blk[k].next;
+            bq_give_block(q, k);
+            if (k == tb)
+                break;
+            k = nx;
         }
         if (++b >= BQ_NBUCKET)
             break;
@@ -176,63 +240,103 @@ static void bq_compact(cvm__bad_queue *q, const cvm__tri2 *T)
 cvm_status cvm__bq_push(cvm__bad_queue *q, const cvm__tri2 *T, int32_t t, int32_t cls, double key)
 {
     size_t b = cvm__bq_bucket(cls, key);
-    int32_t i;
-    if (!q->ht) {
-        q->ht = cvm__malloc(q->ctx, 2 * BQ_NBUCKET * sizeof *q->ht);
+    bq_item *it;
+    if (!q->bk) {
+        q->bk = cvm__malloc(q->ctx, 4 * BQ_NBUCKET * sizeof *q->bk);
         q->bits = cvm__calloc(q->ctx, BQ_L0 + BQ_L1, sizeof *q->bits);
-        if (!q->ht || !q->bits) {
-            cvm__free(q->ctx, q->ht);
+        if (!q->bk || !q->bits) {
+            cvm__free(q->ctx, q->bk);
             cvm__free(q->ctx, q->bits);
-            q->ht = NULL;
+            q->bk = NULL;
             q->bits = NULL;
             return CVM_E_NOMEM;
         }
     }
-    if (q->free < 0 && q->used >= q->cap && q->n > 1024 && q->n > 2 * (T->nt - T->n_dead))
-        bq_compact(q, T); /* most entries are stale: keep the pool small and cached */
-    if (q->free >= 0) {
-        i = q->free;
-        q->free = q->e[i].next;
-    } else {
-        if (q->used >= (size_t)INT32_MAX ||
-            (q->used >= q->cap &&
-             cvm__grow(q->ctx, (void **)&q->e, &q->cap, q->used + 1, sizeof *q->e)))
+    /* most entries stale and the pool full: drop them (keeps the pool small
+     * and cached) before taking a new block */
+    if ((!bq_nonempty(q, b) || BK_WRITE(q, b) == CVM__BQ_BLOCK) && q->free < 0 &&
+        q->used >= q->cap && q->n > 1024 && q->n > 2 * (T->nt - T->n_dead))
+        bq_compact(q, T);
+    if (!bq_nonempty(q, b) || BK_WRITE(q, b) == CVM__BQ_BLOCK) {
+        int32_t k;
+        if (q->free < 0 && q->used >= q->cap &&
+            (q->used >= (size_t)INT32_MAX ||
+             cvm__grow(q->ctx, (void **)&q->blk, &q->cap, q->used + 1, sizeof *q->blk)))
             return CVM_E_NOMEM;
-        i = (int32_t)q->used++;
+        k = bq_take_block(q);
+        if (!bq_nonempty(q, b)) {
+            BK_HEAD(q, b) = k;
+            BK_READ(q, b) = 0;
+            bq_mark(q, b);
+        } else {
+            q->blk[BK_TAIL(q, b)].next = k;
+        }
+        BK_TAIL(q, b) = k;
+        BK_WRITE(q, b) = 0;
     }
-    q->e[i].x.key = key;
-    q->e[i].x.cls = (int32_t)(b >> BQ_KEY_BITS);
-    q->e[i].x.t = t;
-    bq_rotated(T, t, q->e[i].x.v);
-    q->e[i].next = -1;
-    if (q->bits[b >> 6] & ((uint64_t)1 << (b & 63))) {
-        q->e[q->ht[2 * b + 1]].next = i;
-    } else {
-        q->ht[2 * b] = i;
-        bq_mark(q, b);
-    }
-    q->ht[2 * b + 1] = i;
+    it = &q->blk[BK_TAIL(q, b)].it[BK_WRITE(q, b)++];
+    it->key = key;
+    it->t = t;
+    bq_rotated(T, t, it->v);
     q->n++;
     return CVM_OK;
 }
 
+/* Pop from the least bucket; *b_out is that bucket. The queue is not empty. */
+static void bq_pop_from(cvm__bad_queue *q, cvm__bad_entry *out, size_t b)
+{
+    int32_t h = BK_HEAD(q, b), r = BK_READ(q, b)++;
+    const bq_item *it = &q->blk[h].it[r];
+    out->key = it->key;
+    out->cls = (int32_t)(b >> BQ_KEY_BITS);
+    out->t = it->t;
+    out->v[0] = it->v[0];
+    out->v[1] = it->v[1];
+    out->v[2] = it->v[2];
+    if (h == BK_TAIL(q, b) && r + 1 == BK_WRITE(q, b)) {
+        bq_give_block(q, h);
+        bq_unmark(q, b);
+    } else if (r + 1 == CVM__BQ_BLOCK) {
+        BK_HEAD(q, b) = q->blk[h].next;
+        BK_READ(q, b) = 0;
+        bq_give_block(q, h);
+    }
+    q->n--;
+}
+
 int cvm__bq_pop(cvm__bad_queue *q, cvm__bad_entry *out)
 {
-    size_t b;
-    int32_t i;
     if (q->n == 0)
         return 0;
-    b = bq_min_bucket(q);
-    i = q->ht[2 * b];
-    *out = q->e[i].x;
-    if (q->e[i].next < 0)
-        bq_unmark(q, b);
-    else
-        q->ht[2 * b] = q->e[i].next;
-    q->e[i].next = q->free;
-    q->free = i;
-    q->n--;
+    bq_pop_from(q, out, bq_min_bucket(q));
     return 1;
+}
+
+/* How many entries ahead cvm__bq_pop_valid fetches triangles. */
+#define BQ_AHEAD 8
+
+int cvm__bq_pop_valid(cvm__bad_queue *q, const cvm__tri2 *T, cvm__bad_entry *out)
+{
+    while (q->n) {
+        size_t b = bq_min_bucket(q);
+        int32_t h = BK_HEAD(q, b), r = BK_READ(q, b) + BQ_AHEAD;
+        if (r >= CVM__BQ_BLOCK && h != BK_TAIL(q, b)) {
+            h = q->blk[h].next;
+            r -= CVM__BQ_BLOCK;
+        }
+        if (h != BK_TAIL(q, b) || r < BK_WRITE(q, b)) {
+            const bq_item *it = &q->blk[h].it[r];
+            bq_prefetch(T->tf + it->t);
+            bq_prefetch(T->tv + 3 * (size_t)it->t);
+            bq_prefetch(T->xy + 2 * (size_t)it->v[0]);
+            bq_prefetch(T->xy + 2 * (size_t)it->v[1]);
+            bq_prefetch(T->xy + 2 * (size_t)it->v[2]);
+        }
+        bq_pop_from(q, out, b);
+        if (cvm__bq_valid(T, out))
+            return 1;
+    }
+    return 0;
 }
 
 int cvm__bq_valid(const cvm__tri2 *T, const cvm__bad_entry *e)

@@ -286,13 +286,11 @@ cvm_status cvm__rf_delaunay(cvm__refiner *R)
     R->queue_star = cvm__rf_queue_star;
     if ((s = dr_queue_all(R)) || (s = cvm__rf_split_queued(R)))
         return s;
-    while (cvm__bq_pop(&R->q, &e)) {
+    while (cvm__bq_pop_valid(&R->q, R->T, &e)) {
         const int32_t *tv;
         double key, c[2];
         int32_t v;
         int cls, r;
-        if (!cvm__bq_valid(R->T, &e))
-            continue;
         cls = cvm__rf_classify(R, e.t, &key);
         if (cls != 1 && cls != 2)
             continue;

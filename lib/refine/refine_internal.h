@@ -67,11 +67,9 @@ typedef struct cvm__bad_entry {
 /* Classes 0..CVM__BQ_NCLASS-1 (a class outside is clamped into the range). */
 #define CVM__BQ_NCLASS 2
 
-/* A pooled entry, chained in its bucket (or the free list) through next. */
-typedef struct cvm__bq_node {
-    cvm__bad_entry x;
-    int32_t next;
-} cvm__bq_node;
+/* Entries per block of a bucket's chain. */
+#define CVM__BQ_BLOCK 32
+struct cvm__bq_block;
 
 /*
  * Bucket queue (as Triangle's): an entry goes into bucket
@@ -83,15 +81,17 @@ typedef struct cvm__bq_node {
  * differ by more than a factor 1 + 1/16 always leave in key order. Order is a
  * function of the pushes alone (never of addresses), so runs are reproducible.
  * Stale entries are not removed on push; the caller skips them on pop with
- * cvm__bq_valid (and the pool drops them in bulk when most are stale).
+ * cvm__bq_valid, or pops with cvm__bq_pop_valid (the pool also drops them in
+ * bulk when most are stale).
  */
 typedef struct cvm__bad_queue {
     cvm__ctx *ctx;
-    cvm__bq_node *e;           /* entry pool */
-    size_t used, cap;          /* pool slots ever used, capacity */
-    int32_t free;              /* free list of pool slots, -1 if none */
+    struct cvm__bq_block *blk; /* block pool */
+    size_t used, cap;          /* blocks ever used, capacity */
+    int32_t free;              /* free list of blocks, -1 if none */
     size_t n;                  /* entries queued */
-    int32_t *ht;               /* head, tail of each bucket (valid while its bit is set) */
+    int32_t *bk;               /* per bucket: head block, read position, tail block,
+                                  write position (valid while its bit is set) */
     uint64_t *bits;            /* non-empty buckets: one bit each, then one per word */
     uint64_t l2;               /* one bit per non-zero summary word */
 } cvm__bad_queue;
@@ -105,6 +105,9 @@ size_t cvm__bq_bucket(int32_t cls, double key);
 cvm_status cvm__bq_push(cvm__bad_queue *q, const cvm__tri2 *T, int32_t t, int32_t cls, double key);
 /* Pop the first entry of the least non-empty bucket into *out; 0 when empty. */
 int cvm__bq_pop(cvm__bad_queue *q, cvm__bad_entry *out);
+/* The same, skipping (and dropping) entries that are no longer valid in T;
+ * fetches the triangles of the next entries into the cache meanwhile. */
+int cvm__bq_pop_valid(cvm__bad_queue *q, const cvm__tri2 *T, cvm__bad_entry *out);
 /* 1 when the entry still names a live triangle with the same vertices. */
 int cvm__bq_valid(const cvm__tri2 *T, const cvm__bad_entry *e);
 

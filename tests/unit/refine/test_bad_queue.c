@@ -192,9 +192,9 @@ START_TEST(stale_entries_are_skipped_and_dropped)
     cvm__tri2 T;
     cvm__bad_queue q;
     cvm__bad_entry e;
-    size_t i, live = 0, popped = 0, stale = 0;
-    long last_rank = -1;
-    int32_t last_t = -1;
+    int32_t *seq = malloc(N * sizeof *seq);
+    size_t i, live = 0;
+    int pass;
     cvm__ctx_init_default(&ctx);
     for (i = 0; i < 3 * N; i++)
         tv[i] = (int32_t)i;
@@ -223,22 +223,38 @@ START_TEST(stale_entries_are_skipped_and_dropped)
             live++;
         }
     }
-    for (i = 0; i < N; i++)
-        ck_assert_int_eq(cvm__bq_push(&q, &T, (int32_t)i, 1, (double)(1 + i % 7)), CVM_OK);
-    ck_assert_uint_lt(q.cap, N); /* stale entries were dropped on the way */
-    while (cvm__bq_pop(&q, &e)) {
-        long r = rank_of(e.key);
-        if (!cvm__bq_valid(&T, &e)) {
-            stale++;
-            continue;
+    /* pass 0 pops and checks, pass 1 pops valid entries only: same sequence */
+    for (pass = 0; pass < 2; pass++) {
+        size_t popped = 0, stale = 0;
+        long last_rank = -1;
+        int32_t last_t = -1;
+        cvm__bq_clear(&q);
+        for (i = 0; i < N; i++)
+            ck_assert_int_eq(cvm__bq_push(&q, &T, (int32_t)i, 1, (double)(1 + i % 7)), CVM_OK);
+        ck_assert_uint_lt(q.cap * CVM__BQ_BLOCK, N); /* stale entries were dropped on the way */
+        while (pass ? cvm__bq_pop_valid(&q, &T, &e) : cvm__bq_pop(&q, &e)) {
+            long r = rank_of(e.key);
+            if (!cvm__bq_valid(&T, &e)) {
+                ck_assert_int_eq(pass, 0);
+                stale++;
+                continue;
+            }
+            ck_assert_msg(r > last_rank || (r == last_rank && e.t > last_t),
+                          "entry %ld (band %ld) left after entry %ld (band %ld)", (long)e.t, r,
+                          (long)last_t, last_rank);
+            last_rank = r;
+            last_t = e.t;
+            if (pass)
+                ck_assert_int_eq(e.t, seq[popped]);
+            else
+                seq[popped] = e.t;
+            popped++;
         }
-        ck_assert(r > last_rank || (r == last_rank && e.t > last_t));
-        last_rank = r;
-        last_t = e.t;
-        popped++;
+        ck_assert_uint_eq(popped, live);
+        ck_assert_uint_lt(stale, N - live);
+        ck_assert_uint_eq(q.n, 0);
     }
-    ck_assert_uint_eq(popped, live);
-    ck_assert_uint_lt(stale, N - live);
+    free(seq);
     cvm__bq_destroy(&q);
     free(T.tf);
     free(tv);
