@@ -256,7 +256,14 @@ int cvm__rf_insert_free(cvm__refiner *R, int32_t t, const double *x, int32_t *v_
         *s_out = dr_split_encroached(R, &split);
         return split ? CVM__RF_SPLIT : CVM__RF_REJECT;
     }
-    s = cvm__tri2_insert_vertex(T, v, tc, CVM__INSF_DOMAIN_ONLY, 0.0, &res, &other);
+    if (!T->w && st < 0) {
+        /* x lies in tc off every constrained edge (dr_walk), so the cavity just
+         * searched is the one insertion would search again */
+        s = cvm__tri2_insert_in_cavity(T, v, R->cav, R->ncav);
+        res = CVM__INS_DONE;
+    } else {
+        s = cvm__tri2_insert_vertex(T, v, tc, CVM__INSF_DOMAIN_ONLY, 0.0, &res, &other);
+    }
     if (s || res != CVM__INS_DONE) {
         T->nv--;
         *s_out = s == CVM_E_NOMEM ? cvm__nomem(R->ctx) : s;

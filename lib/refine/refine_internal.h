@@ -162,7 +162,7 @@ typedef struct cvm__refiner {
     int32_t *star;             /* scratch: triangles around a vertex */
     size_t cap_star;
     int32_t *cav;              /* scratch: cavity of a candidate point */
-    size_t cap_cav;
+    size_t ncav, cap_cav;      /* (ncav: as cvm__rf_cavity_encroached left it) */
     int32_t *enc;              /* scratch: encroached subsegments (a, b, seg) */
     size_t nenc, cap_enc;
     size_t steiner;
@@ -195,7 +195,8 @@ cvm_status cvm__rf_queue_encroached_star(cvm__refiner *R, int32_t v);
 cvm_status cvm__rf_queue_encroached_all(cvm__refiner *R);
 /* Subsegments on the cavity boundary of the point x, which lies in triangle
  * t0 (already added as vertex v but not inserted), that x encroaches: into
- * R->enc. CVM_OK or CVM_E_NOMEM. */
+ * R->enc; the cavity's triangles into R->cav[0..R->ncav). CVM_OK or
+ * CVM_E_NOMEM. */
 cvm_status cvm__rf_cavity_encroached(cvm__refiner *R, int32_t v, int32_t t0);
 
 /* ---- segment splitting (split_segment.c) ---- */
