@@ -312,25 +312,45 @@ int cvm__bq_pop(cvm__bad_queue *q, cvm__bad_entry *out)
     return 1;
 }
 
-/* How many entries ahead cvm__bq_pop_valid fetches triangles. */
+/* cvm__bq_pop_valid fetches the triangle of the entry BQ_AHEAD places ahead
+ * (slot arrays and vertex coordinates), and the neighbours of the entry
+ * BQ_AHEAD / 2 places ahead (whose adjacency should have arrived by then). */
 #define BQ_AHEAD 8
+
+/* Entry k places after the head of bucket b, or NULL (not in the next block). */
+static const bq_item *bq_peek(const cvm__bad_queue *q, size_t b, int32_t k)
+{
+    int32_t h = BK_HEAD(q, b), r = BK_READ(q, b) + k;
+    if (r >= CVM__BQ_BLOCK && h != BK_TAIL(q, b)) {
+        h = q->blk[h].next;
+        r -= CVM__BQ_BLOCK;
+    }
+    return h != BK_TAIL(q, b) || r < BK_WRITE(q, b) ? &q->blk[h].it[r] : NULL;
+}
 
 int cvm__bq_pop_valid(cvm__bad_queue *q, const cvm__tri2 *T, cvm__bad_entry *out)
 {
     while (q->n) {
         size_t b = bq_min_bucket(q);
-        int32_t h = BK_HEAD(q, b), r = BK_READ(q, b) + BQ_AHEAD;
-        if (r >= CVM__BQ_BLOCK && h != BK_TAIL(q, b)) {
-            h = q->blk[h].next;
-            r -= CVM__BQ_BLOCK;
-        }
-        if (h != BK_TAIL(q, b) || r < BK_WRITE(q, b)) {
-            const bq_item *it = &q->blk[h].it[r];
+        const bq_item *it = bq_peek(q, b, BQ_AHEAD);
+        if (it && (size_t)it->t < T->nt && T->tn && T->xy) {
+            size_t t3 = 3 * (size_t)it->t;
             bq_prefetch(T->tf + it->t);
-            bq_prefetch(T->tv + 3 * (size_t)it->t);
+            bq_prefetch(T->tv + t3);
+            bq_prefetch(T->tn + t3);
+            if (T->te)
+                bq_prefetch(T->te + t3);
             bq_prefetch(T->xy + 2 * (size_t)it->v[0]);
             bq_prefetch(T->xy + 2 * (size_t)it->v[1]);
             bq_prefetch(T->xy + 2 * (size_t)it->v[2]);
+        }
+        it = bq_peek(q, b, BQ_AHEAD / 2);
+        if (it && (size_t)it->t < T->nt && T->tn) {
+            const int32_t *tn = T->tn + 3 * (size_t)it->t;
+            int k;
+            for (k = 0; k < 3; k++)
+                if (tn[k] >= 0)
+                    bq_prefetch(T->tv + 3 * (size_t)(tn[k] / 3));
         }
         bq_pop_from(q, out, b);
         if (cvm__bq_valid(T, out))

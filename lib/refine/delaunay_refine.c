@@ -137,12 +137,25 @@ static cvm_status dr_queue_triangle(cvm__refiner *R, int32_t t)
     return CVM_OK;
 }
 
+#if defined(__GNUC__) || defined(__clang__)
+#  define dr_prefetch(p) __builtin_prefetch(p)
+#else
+#  define dr_prefetch(p) ((void)(p))
+#endif
+
 cvm_status cvm__rf_queue_star(cvm__refiner *R, int32_t v)
 {
     size_t n = cvm__rf_star(R, v), k;
     cvm_status s;
     if (n == 0)
         return cvm__nomem(R->ctx);
+    /* the sizes at the star's vertices are cold (the cavity search read only
+     * coordinates): fetch them together rather than one miss per test */
+    for (k = 0; k < n; k++) {
+        const int32_t *tv = R->T->tv + 3 * (size_t)R->star[k];
+        dr_prefetch(R->vls + (tv[1] >= 0 ? tv[1] : 0));
+        dr_prefetch(R->vls + (tv[2] >= 0 ? tv[2] : 0));
+    }
     for (k = 0; k < n; k++)
         if ((s = dr_queue_triangle(R, R->star[k])))
             return s;
