@@ -11,8 +11,8 @@
  * a Steiner point) use ordinary floating point: they choose *which* valid mesh
  * results, never whether the mesh is valid.
  *
- * Determinism: queues are ordered by total keys whose ties are broken by
- * vertex ids, never by addresses; no hash table is iterated.
+ * Determinism: queues are ordered by keys and then push order (which follows
+ * from the triangulation, never from addresses); no hash table is iterated.
  */
 #ifndef CVM_REFINE_INTERNAL_H
 #define CVM_REFINE_INTERNAL_H
