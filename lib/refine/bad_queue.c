@@ -328,7 +328,8 @@ static const bq_item *bq_peek(const cvm__bad_queue *q, size_t b, int32_t k)
     return h != BK_TAIL(q, b) || r < BK_WRITE(q, b) ? &q->blk[h].it[r] : NULL;
 }
 
-int cvm__bq_pop_valid(cvm__bad_queue *q, const cvm__tri2 *T, cvm__bad_entry *out)
+int cvm__bq_pop_valid(cvm__bad_queue *q, const cvm__tri2 *T, const double *vdata,
+                      cvm__bad_entry *out)
 {
     while (q->n) {
         size_t b = bq_min_bucket(q);
@@ -343,6 +344,11 @@ int cvm__bq_pop_valid(cvm__bad_queue *q, const cvm__tri2 *T, cvm__bad_entry *out
             bq_prefetch(T->xy + 2 * (size_t)it->v[0]);
             bq_prefetch(T->xy + 2 * (size_t)it->v[1]);
             bq_prefetch(T->xy + 2 * (size_t)it->v[2]);
+            if (vdata) {
+                bq_prefetch(vdata + it->v[0]);
+                bq_prefetch(vdata + it->v[1]);
+                bq_prefetch(vdata + it->v[2]);
+            }
         }
         it = bq_peek(q, b, BQ_AHEAD / 2);
         if (it && (size_t)it->t < T->nt && T->tn) {

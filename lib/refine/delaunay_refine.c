@@ -306,7 +306,7 @@ cvm_status cvm__rf_delaunay(cvm__refiner *R)
     R->queue_star = cvm__rf_queue_star;
     if ((s = dr_queue_all(R)) || (s = cvm__rf_split_queued(R)))
         return s;
-    while (cvm__bq_pop_valid(&R->q, R->T, &e)) {
+    while (cvm__bq_pop_valid(&R->q, R->T, R->vls, &e)) {
         const int32_t *tv;
         double key, c[2];
         int32_t v;

@@ -106,8 +106,11 @@ cvm_status cvm__bq_push(cvm__bad_queue *q, const cvm__tri2 *T, int32_t t, int32_
 /* Pop the first entry of the least non-empty bucket into *out; 0 when empty. */
 int cvm__bq_pop(cvm__bad_queue *q, cvm__bad_entry *out);
 /* The same, skipping (and dropping) entries that are no longer valid in T;
- * fetches the triangles of the next entries into the cache meanwhile. */
-int cvm__bq_pop_valid(cvm__bad_queue *q, const cvm__tri2 *T, cvm__bad_entry *out);
+ * fetches the triangles of the next entries into the cache meanwhile, and
+ * their vertices' entries of vdata (NULL, or one double per vertex of T that
+ * the caller reads for each entry). */
+int cvm__bq_pop_valid(cvm__bad_queue *q, const cvm__tri2 *T, const double *vdata,
+                      cvm__bad_entry *out);
 /* 1 when the entry still names a live triangle with the same vertices. */
 int cvm__bq_valid(const cvm__tri2 *T, const cvm__bad_entry *e);
 

@@ -232,7 +232,7 @@ START_TEST(stale_entries_are_skipped_and_dropped)
         for (i = 0; i < N; i++)
             ck_assert_int_eq(cvm__bq_push(&q, &T, (int32_t)i, 1, (double)(1 + i % 7)), CVM_OK);
         ck_assert_uint_lt(q.cap * CVM__BQ_BLOCK, N); /* stale entries were dropped on the way */
-        while (pass ? cvm__bq_pop_valid(&q, &T, &e) : cvm__bq_pop(&q, &e)) {
+        while (pass ? cvm__bq_pop_valid(&q, &T, NULL, &e) : cvm__bq_pop(&q, &e)) {
             long r = rank_of(e.key);
             if (!cvm__bq_valid(&T, &e)) {
                 ck_assert_int_eq(pass, 0);
