@@ -31,11 +31,13 @@
 #define BQ_L1 (BQ_L0 / 64)      /* words of the summary bitmap (<= 64 bits in l2) */
 
 #if defined(__GNUC__) || defined(__clang__)
-#  define bq_ctz(w) ((unsigned)__builtin_ctzll(w))
+#  define BQ_CTZ(w) ((unsigned)__builtin_ctzll(w))
 #  define bq_prefetch(p) __builtin_prefetch(p)
 #else
+#  define BQ_CTZ(w) bq_ctz_portable(w)
 #  define bq_prefetch(p) ((void)(p))
-static unsigned bq_ctz(uint64_t w)
+/* Index of the lowest set bit of w (not 0). */
+static unsigned bq_ctz_portable(uint64_t w)
 {
     unsigned k = 0;
     while (!(w & 1)) {
@@ -137,7 +139,7 @@ static size_t bq_next_bucket(const cvm__bad_queue *q, size_t b)
     uint64_t w = q->bits[b >> 6] & (~(uint64_t)0 << (b & 63));
     size_t i0, i1;
     if (w)
-        return (b & ~(size_t)63) + bq_ctz(w);
+        return (b & ~(size_t)63) + BQ_CTZ(w);
     i0 = (b >> 6) + 1;
     if (i0 >= BQ_L0)
         return BQ_NBUCKET;
@@ -149,21 +151,21 @@ static size_t bq_next_bucket(const cvm__bad_queue *q, size_t b)
         w = q->l2 & (~(uint64_t)0 << i1);
         if (!w)
             return BQ_NBUCKET;
-        i1 = bq_ctz(w);
+        i1 = BQ_CTZ(w);
         w = q->bits[BQ_L0 + i1];
-        i0 = 64 * i1 + bq_ctz(w);
+        i0 = 64 * i1 + BQ_CTZ(w);
     } else {
-        i0 = (i0 & ~(size_t)63) + bq_ctz(w);
+        i0 = (i0 & ~(size_t)63) + BQ_CTZ(w);
     }
-    return 64 * i0 + bq_ctz(q->bits[i0]);
+    return 64 * i0 + BQ_CTZ(q->bits[i0]);
 }
 
 /* Least non-empty bucket; the queue must not be empty. */
 static size_t bq_min_bucket(const cvm__bad_queue *q)
 {
-    size_t i1 = bq_ctz(q->l2);
-    size_t i0 = 64 * i1 + bq_ctz(q->bits[BQ_L0 + i1]);
-    return 64 * i0 + bq_ctz(q->bits[i0]);
+    size_t i1 = BQ_CTZ(q->l2);
+    size_t i0 = 64 * i1 + BQ_CTZ(q->bits[BQ_L0 + i1]);
+    return 64 * i0 + BQ_CTZ(q->bits[i0]);
 }
 
 /* A block from the free list or the pool (which must have room). */
