@@ -21,7 +21,9 @@
  * Bucket of (cls, key): cls * 2^16 + the top 16 bits of the key's IEEE-754
  * bit pattern made order-preserving (sign, 11 exponent bits, 4 significand
  * bits). A bucket is therefore [2^e (1 + j/16), 2^e (1 + (j+1)/16)) for
- * positive keys (mirrored for negative ones): relative width 1/32..1/16.
+ * positive keys (mirrored for negative ones): relative width 1/31..1/16.
+ * The per-bucket table (16 bytes a bucket, 2 MB) is allocated at the first
+ * push and only the pages of buckets in use are ever touched.
  */
 
 #define BQ_KEY_BITS 16
@@ -284,7 +286,7 @@ cvm_status cvm__bq_push(cvm__bad_queue *q, const cvm__tri2 *T, int32_t t, int32_
     return CVM_OK;
 }
 
-/* Pop from the least bucket; *b_out is that bucket. The queue is not empty. */
+/* Pop the first entry of bucket b, the least non-empty one, into *out. */
 static void bq_pop_from(cvm__bad_queue *q, cvm__bad_entry *out, size_t b)
 {
     int32_t h = BK_HEAD(q, b), r = BK_READ(q, b)++;

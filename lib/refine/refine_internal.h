@@ -77,7 +77,7 @@ struct cvm__bq_block;
  * order): lower class first; inside a class, lower quantised key first; inside
  * a bucket, first in first out. The key is quantised to its sign, binary
  * exponent and leading 4 significand bits, so a bucket spans a relative key
- * width of 1/32 to 1/16 (2^e (1 + j/16) to 2^e (1 + (j+1)/16)); keys that
+ * width of 1/31 to 1/16 (2^e (1 + j/16) to 2^e (1 + (j+1)/16)); keys that
  * differ by more than a factor 1 + 1/16 always leave in key order. Order is a
  * function of the pushes alone (never of addresses), so runs are reproducible.
  * Stale entries are not removed on push; the caller skips them on pop with
