@@ -142,6 +142,15 @@ enum {
 cvm_status cvm__tri2_insert_vertex(cvm__tri2 *T, int32_t v, int32_t hint, int flags,
                                    double min_dist, cvm__ins *res_out, int32_t *other_out);
 
+/* Insert existing vertex v (added with cvm__tri2_add_vertex, no weights)
+ * into the cavity cav[0..ncav) the caller found: the triangles, connected
+ * across non-constrained edges and free of CVM__TF_MARK, whose circumcircle
+ * holds v (exact in-circle test), one of them containing v strictly off every
+ * constrained edge - the same set cvm__tri2_insert_vertex would grow, so a
+ * refiner that has searched the cavity (for encroached segments) does not
+ * search it twice. Returns CVM_OK or CVM_E_NOMEM (nothing changed). */
+cvm_status cvm__tri2_insert_in_cavity(cvm__tri2 *T, int32_t v, const int32_t *cav, size_t ncav);
+
 /* Insert vertex v, which the caller computed to lie on constrained edge j of
  * triangle t (possibly inexactly, e.g. a segment intersection): the edge is
  * split at v whatever the rounding, its halves keep the segment index.

@@ -271,7 +271,7 @@ static cvm_status insert_from(cvm__tri2 *T, int32_t v, int32_t t0, int fe_t, int
                               double min_dist, cvm__ins *res_out, int32_t *other_out)
 {
     size_t ncav = 0, nbnd = 0, i;
-    int32_t split[3 * CVM__MAX_SPLIT];
+    int32_t split[3 * CVM__MAX_SPLIT] = {0}; /* read only below nsplit; set for gcc's flow analysis */
     int nsplit = 0;
     cvm_status s = grow_cavity(T, v, t0, &ncav, &nbnd, fe_t, fe_j);
     if (s) {
@@ -383,6 +383,26 @@ cvm_status cvm__tri2_insert_vertex(cvm__tri2 *T, int32_t v, int32_t hint, int fl
         return CVM_OK;
     }
     return insert_from(T, v, t, -1, -1, min_dist, res_out, other_out);
+}
+
+cvm_status cvm__tri2_insert_in_cavity(cvm__tri2 *T, int32_t v, const int32_t *cav, size_t ncav)
+{
+    static const int32_t no_split[3] = {-1, -1, -1};
+    size_t i, nbnd = 0;
+    cvm_status s;
+    if (ncav > T->cap_cav && cvm__grow(T->ctx, (void **)&T->cav, &T->cap_cav, ncav, sizeof *T->cav))
+        return CVM_E_NOMEM;
+    for (i = 0; i < ncav; i++) {
+        T->cav[i] = cav[i];
+        T->tf[cav[i]] |= CVM__TF_MARK;
+    }
+    if ((s = record_boundary(T, ncav, &nbnd)) ||
+        (nbnd > ncav && cvm__tri2_reserve_triangles(T, T->nt + (nbnd - ncav)))) {
+        unmark(T, ncav);
+        return CVM_E_NOMEM;
+    }
+    fill_fan(T, v, ncav, nbnd, no_split, 0);
+    return CVM_OK;
 }
 
 cvm_status cvm__tri2_split_edge(cvm__tri2 *T, int32_t v, int32_t t, int j)

@@ -137,12 +137,25 @@ static cvm_status dr_queue_triangle(cvm__refiner *R, int32_t t)
     return CVM_OK;
 }
 
+#if defined(__GNUC__) || defined(__clang__)
+#  define dr_prefetch(p) __builtin_prefetch(p)
+#else
+#  define dr_prefetch(p) ((void)(p))
+#endif
+
 cvm_status cvm__rf_queue_star(cvm__refiner *R, int32_t v)
 {
     size_t n = cvm__rf_star(R, v), k;
     cvm_status s;
     if (n == 0)
         return cvm__nomem(R->ctx);
+    /* the sizes at the star's vertices are cold (the cavity search read only
+     * coordinates): fetch them together rather than one miss per test */
+    for (k = 0; k < n; k++) {
+        const int32_t *tv = R->T->tv + 3 * (size_t)R->star[k];
+        dr_prefetch(R->vls + (tv[1] >= 0 ? tv[1] : 0));
+        dr_prefetch(R->vls + (tv[2] >= 0 ? tv[2] : 0));
+    }
     for (k = 0; k < n; k++)
         if ((s = dr_queue_triangle(R, R->star[k])))
             return s;
@@ -256,7 +269,14 @@ int cvm__rf_insert_free(cvm__refiner *R, int32_t t, const double *x, int32_t *v_
         *s_out = dr_split_encroached(R, &split);
         return split ? CVM__RF_SPLIT : CVM__RF_REJECT;
     }
-    s = cvm__tri2_insert_vertex(T, v, tc, CVM__INSF_DOMAIN_ONLY, 0.0, &res, &other);
+    if (!T->w && st < 0) {
+        /* x lies in tc off every constrained edge (dr_walk), so the cavity just
+         * searched is the one insertion would search again */
+        s = cvm__tri2_insert_in_cavity(T, v, R->cav, R->ncav);
+        res = CVM__INS_DONE;
+    } else {
+        s = cvm__tri2_insert_vertex(T, v, tc, CVM__INSF_DOMAIN_ONLY, 0.0, &res, &other);
+    }
     if (s || res != CVM__INS_DONE) {
         T->nv--;
         *s_out = s == CVM_E_NOMEM ? cvm__nomem(R->ctx) : s;
@@ -286,13 +306,11 @@ cvm_status cvm__rf_delaunay(cvm__refiner *R)
     R->queue_star = cvm__rf_queue_star;
     if ((s = dr_queue_all(R)) || (s = cvm__rf_split_queued(R)))
         return s;
-    while (cvm__bq_pop(&R->q, &e)) {
+    while (cvm__bq_pop_valid(&R->q, R->T, R->vls, &e)) {
         const int32_t *tv;
         double key, c[2];
         int32_t v;
         int cls, r;
-        if (!cvm__bq_valid(R->T, &e))
-            continue;
         cls = cvm__rf_classify(R, e.t, &key);
         if (cls != 1 && cls != 2)
             continue;

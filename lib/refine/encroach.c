@@ -125,6 +125,7 @@ cvm_status cvm__rf_cavity_encroached(cvm__refiner *R, int32_t v, int32_t t0)
     }
     for (i = 0; i < ncav; i++)
         T->tf[R->cav[i]] &= (uint8_t)~CVM__TF_MARK2;
+    R->ncav = s ? 0 : ncav;
     R->nenc /= 3;
     return s;
 }

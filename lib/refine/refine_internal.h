@@ -11,8 +11,8 @@
  * a Steiner point) use ordinary floating point: they choose *which* valid mesh
  * results, never whether the mesh is valid.
  *
- * Determinism: queues are ordered by total keys whose ties are broken by
- * vertex ids, never by addresses; no hash table is iterated.
+ * Determinism: queues are ordered by keys and then push order (which follows
+ * from the triangulation, never from addresses); no hash table is iterated.
  */
 #ifndef CVM_REFINE_INTERNAL_H
 #define CVM_REFINE_INTERNAL_H
@@ -118,19 +118,53 @@ typedef struct cvm__bad_entry {
     int32_t v[3];
 } cvm__bad_entry;
 
+/* Classes 0..CVM__BQ_NCLASS-1 (a class outside is clamped into the range). */
+#define CVM__BQ_NCLASS 2
+
+/* Entries per block of a bucket's chain. */
+#define CVM__BQ_BLOCK 32
+struct cvm__bq_block;
+
+/*
+ * Bucket queue (as Triangle's): an entry goes into bucket
+ * cvm__bq_bucket(cls, key) and entries leave in the order (bucket, push
+ * order): lower class first; inside a class, lower quantised key first; inside
+ * a bucket, first in first out. The key is quantised to its sign, binary
+ * exponent and leading 4 significand bits, so a bucket spans a relative key
+ * width of 1/31 to 1/16 (2^e (1 + j/16) to 2^e (1 + (j+1)/16)); keys that
+ * differ by more than a factor 1 + 1/16 always leave in key order. Order is a
+ * function of the pushes alone (never of addresses), so runs are reproducible.
+ * Stale entries are not removed on push; the caller skips them on pop with
+ * cvm__bq_valid, or pops with cvm__bq_pop_valid (the pool also drops them in
+ * bulk when most are stale).
+ */
 typedef struct cvm__bad_queue {
     cvm__ctx *ctx;
-    cvm__bad_entry *e;
-    size_t n, cap;
+    struct cvm__bq_block *blk; /* block pool */
+    size_t used, cap;          /* blocks ever used, capacity */
+    int32_t free;              /* free list of blocks, -1 if none */
+    size_t n;                  /* entries queued */
+    int32_t *bk;               /* per bucket: head block, read position, tail block,
+                                  write position (valid while its bit is set) */
+    uint64_t *bits;            /* non-empty buckets: one bit each, then one per word */
+    uint64_t l2;               /* one bit per non-zero summary word */
 } cvm__bad_queue;
 
 void cvm__bq_init(cvm__bad_queue *q, cvm__ctx *ctx);
 void cvm__bq_destroy(cvm__bad_queue *q);
 void cvm__bq_clear(cvm__bad_queue *q);
+/* The bucket of (cls, key): lower buckets leave first. */
+size_t cvm__bq_bucket(int32_t cls, double key);
 /* Push triangle t of T with class cls and key; CVM_OK or CVM_E_NOMEM. */
 cvm_status cvm__bq_push(cvm__bad_queue *q, const cvm__tri2 *T, int32_t t, int32_t cls, double key);
-/* Pop the entry of least (cls, key, v0, v1, v2) into *out; 0 when empty. */
+/* Pop the first entry of the least non-empty bucket into *out; 0 when empty. */
 int cvm__bq_pop(cvm__bad_queue *q, cvm__bad_entry *out);
+/* The same, skipping (and dropping) entries that are no longer valid in T;
+ * fetches the triangles of the next entries into the cache meanwhile, and
+ * their vertices' entries of vdata (NULL, or one double per vertex of T that
+ * the caller reads for each entry). */
+int cvm__bq_pop_valid(cvm__bad_queue *q, const cvm__tri2 *T, const double *vdata,
+                      cvm__bad_entry *out);
 /* 1 when the entry still names a live triangle with the same vertices. */
 int cvm__bq_valid(const cvm__tri2 *T, const cvm__bad_entry *e);
 
@@ -188,7 +222,7 @@ typedef struct cvm__refiner {
     int32_t *star;             /* scratch: triangles around a vertex */
     size_t cap_star;
     int32_t *cav;              /* scratch: cavity of a candidate point */
-    size_t cap_cav;
+    size_t ncav, cap_cav;      /* (ncav: as cvm__rf_cavity_encroached left it) */
     int32_t *enc;              /* scratch: encroached subsegments (a, b, seg) */
     size_t nenc, cap_enc;
     size_t steiner;
@@ -221,7 +255,8 @@ cvm_status cvm__rf_queue_encroached_star(cvm__refiner *R, int32_t v);
 cvm_status cvm__rf_queue_encroached_all(cvm__refiner *R);
 /* Subsegments on the cavity boundary of the point x, which lies in triangle
  * t0 (already added as vertex v but not inserted), that x encroaches: into
- * R->enc. CVM_OK or CVM_E_NOMEM. */
+ * R->enc; the cavity's triangles into R->cav[0..R->ncav). CVM_OK or
+ * CVM_E_NOMEM. */
 cvm_status cvm__rf_cavity_encroached(cvm__refiner *R, int32_t v, int32_t t0);
 
 /* ---- segment splitting (split_segment.c) ---- */

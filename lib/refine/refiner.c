@@ -212,6 +212,7 @@ static cvm_status rf_report(cvm__refiner *R, cvm__refine_report *rep)
 {
     const cvm__tri2 *T = R->T;
     size_t t, cap = 0;
+    double best_sin2 = HUGE_VAL;
     rep->steiner = R->steiner;
     rep->met_angle_deg = 180.0;
     for (t = 0; t < T->nt; t++) {
@@ -229,9 +230,19 @@ static cvm_status rf_report(cvm__refiner *R, cvm__refine_report *rep)
             bits |= CVM_UNMET_SMALL_INPUT_ANGLE;
         }
         if (c != 3) {
-            double a = rf_min_angle_deg(T, (int32_t)t);
-            if (a < rep->met_angle_deg)
-                rep->met_angle_deg = a;
+            /* the smallest angle (< 90 degrees) grows with its sine: take the
+             * three arc tangents only for triangles that may hold the
+             * minimum (the slack covers the rounding of the sine) */
+            const int32_t *tv = T->tv + 3 * t;
+            double s2 = cvm__rf_min_sin2(T->xy + 2 * (size_t)tv[0], T->xy + 2 * (size_t)tv[1],
+                                         T->xy + 2 * (size_t)tv[2]);
+            if (s2 <= best_sin2 * (1 + 1e-6)) {
+                double a = rf_min_angle_deg(T, (int32_t)t);
+                if (a < rep->met_angle_deg)
+                    rep->met_angle_deg = a;
+                if (s2 < best_sin2)
+                    best_sin2 = s2;
+            }
         }
         if (c == 2 || c == 3 ||
             (c == 1 && R->sin2_min > 0 && rf_min_angle_deg(T, (int32_t)t) < R->p->min_angle_deg)) {

@@ -12,6 +12,8 @@ measured here by the same numpy code: vertices, triangles, time (median of REPS
 runs of triangulate + refine; Triangle: triangulate(); Gmsh: generate(2)), min
 angle, % of angles in [55, 65] degrees, % obtuse triangles (an angle > 90), % of
 interior vertices (on no boundary edge) of degree 6, and mean edge / h.
+A last row times Delaunay refinement of the square to about 1e6 triangles
+against Triangle at a matched triangle count (the speed target of issue 4).
 
 usage: bench_refine.py BUILD SHARED   (make bench calls it through run.sh)
 """
@@ -175,6 +177,36 @@ def run_gmsh(poly, h, algo):
     return ts[len(ts) // 2], np.asarray(coord).reshape(-1, 3)[:, :2], tri
 
 
+def run_1e6(shared, tmp):
+    """The speed target of issue 4: Delaunay refinement of the unit square to
+    about 1e6 triangles against Triangle at a matched triangle count (cvmesh
+    h = 0.00115: circumradius <= h; Triangle pq30a with h = 0.0019), runs
+    interleaved (cvmesh, Triangle, cvmesh, ...) so load on a shared machine
+    hits both alike; medians of REPS."""
+    import triangle
+    poly = os.path.join(shared, "data", "square.poly")
+    xy, segs, _ = read_poly(poly)
+    a = dict(vertices=xy, segments=segs)
+    sw = "pq30a%.12f" % (np.sqrt(3) / 4 * 0.0019 ** 2)
+    tc, tt = [], []
+    for _ in range(REPS):
+        out = subprocess.run([DRIVER, poly, "0.00115", "1", "1", os.path.join(tmp, "m")],
+                             capture_output=True, text=True)
+        if out.returncode:
+            raise SystemExit("bench_refine: cvmesh failed on the 1e6 square: %s" % out.stderr)
+        tc.append(float(out.stdout.split()[0]))
+        t0 = time.perf_counter()
+        t = triangle.triangulate(a, sw)
+        tt.append(time.perf_counter() - t0)
+    ntc = len(np.fromfile(os.path.join(tmp, "m.tri"), dtype=np.int32)) // 3
+    tc.sort()
+    tt.sort()
+    c, r = tc[len(tc) // 2], tt[len(tt) // 2]
+    print("# 1e6 square, Delaunay refinement, %d interleaved runs: cvm-del %d triangles %.3f s "
+          "(%.3f us/tri), triangle %d triangles %.3f s (%.3f us/tri); time ratio cvm/triangle %.2f"
+          % (REPS, ntc, c, 1e6 * c / ntc, len(t["triangles"]), r, 1e6 * r / len(t["triangles"]), c / r))
+
+
 def main():
     build_driver()
     print("# bench_refine: uniform size h; time = median of %d runs (triangulate + refine), one core" % REPS)
@@ -208,6 +240,10 @@ def main():
                 print("%-9s %-5g %-10s %7d %7d %9.4f %8.3f %7.2f %6.1f %6.1f %6.1f %6.3f" %
                       (name, h, label, q["nv"], q["nt"], t, 1e6 * t / q["nt"], q["minang"], q["reg"],
                        q["obt"], q["deg6"], q["edge"]))
+        try:
+            run_1e6(SHARED, tmp)
+        except ImportError:
+            print("# Triangle (pip triangle) not installed: 1e6 square row skipped")
 
 
 if __name__ == "__main__":

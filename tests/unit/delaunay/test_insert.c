@@ -1,9 +1,10 @@
-/* test_insert.c - public point insertion into an existing triangulation (cvm_mesh_insert_points). */
+/* test_insert.c - point insertion into an existing triangulation (cvm_mesh_insert_points; cvm__tri2_insert_in_cavity). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "delaunay/delaunay_tests.h"
+#include "delaunay/delaunay_internal.h"
 #include "support/mesh_oracle.h"
 
 static cvm_mesh *unit_square(void)
@@ -76,6 +77,100 @@ START_TEST(insert_bad_arguments)
 }
 END_TEST
 
+/* Live real triangles of T in canonical form (as dtest_canonical); caller frees. */
+static cvm_index *live_triangles(const cvm__tri2 *T, size_t *nt_out)
+{
+    cvm_index *tri = malloc((3 * T->nt + 1) * sizeof *tri);
+    size_t t, n = 0;
+    for (t = 0; t < T->nt; t++) {
+        if (!cvm__tri2_is_live(T, (int32_t)t) || cvm__tri2_is_ghost(T, (int32_t)t))
+            continue;
+        memcpy(tri + 3 * n, T->tv + 3 * t, 3 * sizeof *tri);
+        n++;
+    }
+    dtest_canonical(tri, n);
+    *nt_out = n;
+    return tri;
+}
+
+/* Inserting into a cavity the caller found (here by the test's own search
+ * from the containing triangle) gives the triangulation Bowyer-Watson
+ * insertion gives, and it passes the exact Delaunay check. */
+START_TEST(insert_in_cavity_matches_bowyer_watson)
+{
+    enum { N0 = 200, N = 1500 };
+    double *xy = malloc(2 * N * sizeof *xy);
+    int32_t *dup = malloc(N * sizeof *dup), *cav = NULL;
+    size_t cap = 0, i, nt1, nt2, inserted = 0;
+    cvm_index *tri1, *tri2;
+    cvm__ctx ctx;
+    cvm__tri2 T1, T2;
+    dtest_random_points(xy, N, 29);
+    cvm__ctx_init_default(&ctx);
+    cvm__tri2_init(&T1, &ctx);
+    cvm__tri2_init(&T2, &ctx);
+    for (i = 0; i < N0; i++) {
+        int32_t id;
+        ck_assert_int_eq(cvm__tri2_add_vertex(&T1, xy + 2 * i, &id), CVM_OK);
+        ck_assert_int_eq(cvm__tri2_add_vertex(&T2, xy + 2 * i, &id), CVM_OK);
+    }
+    ck_assert_int_eq(cvm__tri2_build(&T1, 1, dup), CVM_OK);
+    ck_assert_int_eq(cvm__tri2_build(&T2, 1, dup), CVM_OK);
+    for (i = N0; i < N; i++) {
+        int32_t v1, v2, t, other;
+        int j;
+        size_t ncav = 0, k;
+        cvm__ins res;
+        ck_assert_int_eq(cvm__tri2_add_vertex(&T1, xy + 2 * i, &v1), CVM_OK);
+        ck_assert_int_eq(cvm__tri2_add_vertex(&T2, xy + 2 * i, &v2), CVM_OK);
+        if (cvm__tri2_locate(&T2, xy + 2 * i, -1, &t, &j) != CVM__LOC_INSIDE) {
+            T1.nv--; /* outside the hull or on an edge: not this function's case */
+            T2.nv--;
+            continue;
+        }
+        ck_assert_int_eq(cvm__tri2_insert_vertex(&T1, v1, -1, 0, 0.0, &res, &other), CVM_OK);
+        ck_assert_int_eq(res, CVM__INS_DONE);
+        /* the cavity: t, then every real neighbour whose circumcircle holds v */
+        if (cap < 1) {
+            cap = 64;
+            cav = malloc(cap * sizeof *cav);
+        }
+        cav[ncav++] = t;
+        for (k = 0; k < ncav; k++) {
+            int jj;
+            for (jj = 0; jj < 3; jj++) {
+                int32_t nb = T2.tn[3 * (size_t)cav[k] + (size_t)jj] / 3;
+                size_t q;
+                for (q = 0; q < ncav && cav[q] != nb; q++)
+                    ;
+                if (q < ncav || cvm__tri2_is_ghost(&T2, nb) || cvm__tri2_conflict(&T2, nb, v2) <= 0)
+                    continue;
+                if (ncav == cap) {
+                    cap *= 2;
+                    cav = realloc(cav, cap * sizeof *cav);
+                }
+                cav[ncav++] = nb;
+            }
+        }
+        ck_assert_int_eq(cvm__tri2_insert_in_cavity(&T2, v2, cav, ncav), CVM_OK);
+        inserted++;
+    }
+    ck_assert_uint_gt(inserted, N / 2);
+    ck_assert_int_eq(cvm__tri2_check(&T2), CVM_OK);
+    tri1 = live_triangles(&T1, &nt1);
+    tri2 = live_triangles(&T2, &nt2);
+    ck_assert_uint_eq(nt1, nt2);
+    ck_assert_int_eq(memcmp(tri1, tri2, 3 * nt1 * sizeof *tri1), 0);
+    free(tri1);
+    free(tri2);
+    free(cav);
+    free(xy);
+    free(dup);
+    cvm__tri2_destroy(&T1);
+    cvm__tri2_destroy(&T2);
+}
+END_TEST
+
 TCase *delaunay_insert_tcase(void)
 {
     TCase *tc = tcase_create("insert");
@@ -83,5 +178,6 @@ TCase *delaunay_insert_tcase(void)
     tcase_add_test(tc, insert_returns_ids_and_rejects);
     tcase_add_test(tc, insert_many_keeps_constrained_delaunay);
     tcase_add_test(tc, insert_bad_arguments);
+    tcase_add_test(tc, insert_in_cavity_matches_bowyer_watson);
     return tc;
 }
