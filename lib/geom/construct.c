@@ -21,23 +21,44 @@ static double construct_clamp(double v, double lo, double hi)
     return v < lo ? lo : (v > hi ? hi : v);
 }
 
-/* a + t (b - a) with t = o(c,d,a) / (o(c,d,a) - o(c,d,b)); the two exact
- * orientations have opposite signs for a proper crossing, so the denominator
- * does not cancel and t lies in [0, 1]. */
+/* The crossing is interpolated along the shorter of the two segments, from
+ * its end nearer to the crossing: p + t (q - p) with t = o(r,s,p) / (o(r,s,p)
+ * - o(r,s,q)) in [0, 1/2]. The two exact orientations have opposite signs for
+ * a proper crossing, so the denominator does not cancel, and the rounding
+ * error is relative to the short segment, not to a far endpoint of the long
+ * one (a segment reaching 1e24 crossed by unit segments once put the point a
+ * billion units off). */
 void cvm__segment_intersection2d(const double *a, const double *b, const double *c,
                                  const double *d, double *out)
 {
-    double oa = cvm__orient2d(c, d, a), ob = cvm__orient2d(c, d, b);
-    double t = oa / (oa - ob);
+    double lab = (b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]);
+    double lcd = (d[0] - c[0]) * (d[0] - c[0]) + (d[1] - c[1]) * (d[1] - c[1]);
+    const double *p = a, *q = b, *r = c, *s = d;
+    double op, oq, t;
     double lo, hi;
     int i;
+    if (lcd < lab) {
+        p = c;
+        q = d;
+        r = a;
+        s = b;
+    }
+    op = cvm__orient2d(r, s, p);
+    oq = cvm__orient2d(r, s, q);
+    t = op / (op - oq);
     if (!(t >= 0.0))
         t = 0.0; /* also catches NaN from a degenerate call */
     if (t > 1.0)
         t = 1.0;
+    if (t > 0.5) {
+        const double *x = p;
+        p = q;
+        q = x;
+        t = 1.0 - t;
+    }
     for (i = 0; i < 2; i++) {
         lo = fmax(fmin(a[i], b[i]), fmin(c[i], d[i]));
         hi = fmin(fmax(a[i], b[i]), fmax(c[i], d[i]));
-        out[i] = construct_clamp(a[i] + t * (b[i] - a[i]), lo, hi);
+        out[i] = construct_clamp(p[i] + t * (q[i] - p[i]), lo, hi);
     }
 }
