@@ -307,7 +307,8 @@ CVM_API cvm_status cvm_mesh_set_holes(cvm_mesh *m, const double *xy, size_t coun
 /**
  * Set regional attributes: region k is seeded at (r[4k], r[4k+1]); every
  * triangle reachable from it without crossing a segment gets attribute r[4k+2];
- * r[4k+3] is a maximum triangle area for the refiners (<= 0 means none).
+ * r[4k+3] is a maximum triangle area for the refiners (<= 0 means none; with
+ * CVM_OPT_MAX_AREA also set, the smaller bound holds).
  * Triangles in no region get attribute 0. Later regions win over earlier ones.
  * Ownership: copied.
  * @return CVM_OK, CVM_E_NULL_ARG, CVM_E_INPUT_NONFINITE (names the region), CVM_E_NOMEM

@@ -47,6 +47,9 @@ double cvm__opt(const cvm_mesh *m, cvm_option key);
 /* Begin a public call on m: clears the last error. */
 #define CVM__BEGIN(m) cvm__clear_error(&(m)->ctx)
 
+/* The triangle holding point p (a hole or region seed), or -1 outside the triangulation. */
+int32_t cvm__mesh_seed_triangle(cvm_mesh *m, const double *p);
+
 /* Forget the triangulation (input kept). */
 void cvm__mesh_drop_output(cvm_mesh *m);
 

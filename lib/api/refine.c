@@ -88,8 +88,54 @@ static cvm_status refine_auto_field(cvm_mesh *m, const cvm_sizing *sizing, cvm__
     return s;
 }
 
+/* Regional maximum areas: when a region sets one, each triangle's attribute is
+ * replaced by its region's index (-1: none) for the run, so that new
+ * triangles inherit it; *area_out receives the areas by index. */
+static cvm_status refine_regions_begin(cvm_mesh *m, double **area_out)
+{
+    cvm__tri2 *T = &m->tri;
+    size_t k, t;
+    int any = 0;
+    *area_out = NULL;
+    for (k = 0; k < m->in.nregions; k++)
+        any |= m->in.regions[4 * k + 3] > 0;
+    if (!any || !T->ta)
+        return CVM_OK;
+    *area_out = cvm__malloc(&m->ctx, m->in.nregions * sizeof **area_out);
+    if (!*area_out)
+        return cvm__nomem(&m->ctx);
+    for (t = 0; t < T->nt; t++)
+        T->ta[t] = -1;
+    for (k = 0; k < m->in.nregions; k++) {
+        int32_t seed = cvm__mesh_seed_triangle(m, m->in.regions + 4 * k);
+        (*area_out)[k] = m->in.regions[4 * k + 3];
+        if (seed >= 0 && cvm__tri2_in_domain(T, seed) &&
+            cvm__tri2_flood_attribute(T, seed, (double)k)) {
+            cvm__free(&m->ctx, *area_out);
+            *area_out = NULL;
+            return cvm__nomem(&m->ctx);
+        }
+    }
+    return CVM_OK;
+}
+
+/* Back from region indices to the regional attributes (0 outside every region). */
+static void refine_regions_end(cvm_mesh *m, double *area)
+{
+    cvm__tri2 *T = &m->tri;
+    size_t t;
+    if (!area)
+        return;
+    for (t = 0; t < T->nt; t++) {
+        double r = T->ta[t];
+        T->ta[t] = r >= 0 && r < (double)m->in.nregions ? m->in.regions[4 * (size_t)r + 2] : 0.0;
+    }
+    cvm__free(&m->ctx, area);
+}
+
 static cvm_status refine_run(cvm_mesh *m, const cvm_sizing *sizing, cvm_algorithm algo)
 {
+    double *region_area = NULL;
     cvm__auto_field field;
     cvm_sizing local;
     cvm__refine_params p;
@@ -132,7 +178,15 @@ static cvm_status refine_run(cvm_mesh *m, const cvm_sizing *sizing, cvm_algorith
         local.autof = &field;
         p.sizing = &local;
     }
+    if ((s = refine_regions_begin(m, &region_area)) != CVM_OK) {
+        cvm__auto_field_free(&field, &m->ctx);
+        cvm__free(&m->ctx, ends);
+        return s;
+    }
+    p.region_area = region_area;
+    p.nregion = m->in.nregions;
     s = cvm__refine(&m->tri, &p, &rep);
+    refine_regions_end(m, region_area);
     cvm__auto_field_free(&field, &m->ctx);
     cvm__free(&m->ctx, ends);
     s2 = refine_vertex_data(m, nv0);

@@ -109,7 +109,7 @@ static cvm_status recover_segments(cvm_mesh *m)
 }
 
 /* Locate a seed point: the domain triangle containing it, or -1 outside. */
-static int32_t seed_triangle(cvm_mesh *m, const double *p)
+int32_t cvm__mesh_seed_triangle(cvm_mesh *m, const double *p)
 {
     int32_t t;
     int j;
@@ -133,7 +133,7 @@ static cvm_status carve(cvm_mesh *m)
                           "enclose a region (open boundary)");
     for (k = 0; k < m->in.nholes; k++) {
         const double *h = m->in.holes + 2 * k;
-        int32_t t = seed_triangle(m, h);
+        int32_t t = cvm__mesh_seed_triangle(m, h);
         if (t < 0)
             return cvm__error(&m->ctx, CVM_E_INPUT_OUTSIDE, CVM_ENT_HOLE, (int64_t)k,
                               "hole %lu at (%.17g, %.17g) lies outside the convex hull of the points",
@@ -148,7 +148,7 @@ static cvm_status carve(cvm_mesh *m)
     }
     for (k = 0; k < m->in.nregions; k++) {
         const double *r = m->in.regions + 4 * k;
-        int32_t t = seed_triangle(m, r);
+        int32_t t = cvm__mesh_seed_triangle(m, r);
         if (t < 0 || !cvm__tri2_in_domain(T, t))
             return cvm__error(&m->ctx, CVM_E_INPUT_OUTSIDE, CVM_ENT_REGION, (int64_t)k,
                               "region %lu at (%.17g, %.17g) lies outside the domain",

@@ -110,8 +110,9 @@ int cvm__rf_classify(cvm__refiner *R, int32_t t, double *key_out)
     ls = (R->vls[tv[0]] + R->vls[tv[1]] + R->vls[tv[2]]) / 3 * DR_SIZE_FACTOR;
     {
         double ratio = isfinite(ls) ? r2 / (ls * ls) : 0;
-        if (R->p->max_area > 0 && cross / 2 / R->p->max_area > ratio)
-            ratio = cross / 2 / R->p->max_area;
+        double ma = cvm__rf_max_area(R, t);
+        if (ma > 0 && cross / 2 / ma > ratio)
+            ratio = cross / 2 / ma;
         if (ratio > 1) {
             *key_out = -ratio;
             return 1;

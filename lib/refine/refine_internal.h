@@ -184,6 +184,9 @@ typedef struct cvm__refine_params {
     int swap;                  /* 1: swap edges towards degree 6 after refining */
     int smooth_sweeps;         /* sweeps of smart Laplacian smoothing after refining */
     int restore_delaunay;      /* 1: restore the constrained Delaunay property at the end */
+    const double *region_area; /* NULL, or per region index the maximum area (<= 0: none);
+                                  then T->ta holds each triangle's region index (-1: none) */
+    size_t nregion;
 } cvm__refine_params;
 
 /* What a run did (see CVM_MEASURE_REFINE_* in cvmesh.h). */
@@ -197,6 +200,23 @@ typedef struct cvm__refine_report {
                                   (CVM_UNMET_*), allocated on the run's context */
     size_t n_unmet;
 } cvm__refine_report;
+
+/* Largest area allowed for triangle t: CVM_OPT_MAX_AREA and its region's
+ * maximum area, the smaller of those set; 0 = none. */
+#define cvm__rf_max_area(R, t) cvm__rf_max_area_((R)->p, (R)->T, (t))
+static inline double cvm__rf_max_area_(const cvm__refine_params *p, const cvm__tri2 *T, int32_t t)
+{
+    double a = p->max_area;
+    if (p->region_area && T->ta) {
+        double r = T->ta[t];
+        if (r >= 0 && r < (double)p->nregion) {
+            double ra = p->region_area[(size_t)r];
+            if (ra > 0 && (a <= 0 || ra < a))
+                a = ra;
+        }
+    }
+    return a;
+}
 
 /* Results of trying to insert a free Steiner point. */
 enum { CVM__RF_DONE = 0, CVM__RF_SPLIT = 1, CVM__RF_REJECT = 2 };

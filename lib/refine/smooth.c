@@ -77,7 +77,7 @@ static int sm_star_eval(const cvm__refiner *R, int32_t v, const double *p, const
         /* too big as in Delaunay refinement: circumradius above the mean size, or the area bound */
         ls = (R->vls[v] + R->vls[ia] + R->vls[ib]) / 3;
         if ((isfinite(ls) && lpa * lpb * lab > 4 * ls * ls * ar * ar) ||
-            (R->p->max_area > 0 && ar > 2 * R->p->max_area))
+            (cvm__rf_max_area(R, star[k]) > 0 && ar > 2 * cvm__rf_max_area(R, star[k])))
             (*big)++;
     }
     return 1;
