@@ -1005,16 +1005,63 @@ typedef enum cvm_measure {
     CVM_MEASURE_TIME_STEP_PROXY = 20,   /**< smallest min(primal, dual edge length) over interior
                                              edges: sets the stable explicit time step of a
                                              co-volume scheme (length units; 0 without any) */
-    CVM_MEASURE_VANISHED_VERTICES = 21  /**< vertices the regular triangulation would drop
+    CVM_MEASURE_VANISHED_VERTICES = 21, /**< vertices the regular triangulation would drop
                                              (empty power cell): the blocking corner of each
                                              illegal edge that no flip can fix; cvmesh keeps
                                              them (see cvm_mesh_set_weights()) */
+    /* Dual quality q1..q5 (see cvm_histogram for the definitions). "Boundary"
+       triangles have a vertex on the domain boundary; "boundary" edges are
+       interior edges with an endpoint on it. Values 22-24 and 40-59 are
+       reserved for the dual optimiser's measures. */
+    CVM_MEASURE_Q1_MEAN_DEG = 25,       /**< mean over triangles of the smallest angle, degrees */
+    CVM_MEASURE_Q2_MAX = 26,            /**< largest q2 (|centroid - power vertex| / inradius) */
+    CVM_MEASURE_Q2_MEAN = 27,           /**< mean q2 over triangles */
+    CVM_MEASURE_Q3_MAX = 28,            /**< largest q3 over interior edges (0 without any) */
+    CVM_MEASURE_Q4_MAX = 29,            /**< largest q4 over interior edges (0 without any) */
+    CVM_MEASURE_Q5_MIN = 30,            /**< smallest q5 (dual edge / (l / sqrt 3)) over interior
+                                             edges (0 without any) */
+    CVM_MEASURE_Q5_MEAN = 31,           /**< mean q5 over interior edges (0 without any) */
+    CVM_MEASURE_Q1_MIN_BOUNDARY_DEG = 32, /**< smallest angle over boundary triangles, degrees */
+    CVM_MEASURE_Q2_MAX_BOUNDARY = 33,   /**< largest q2 over boundary triangles */
+    CVM_MEASURE_Q5_MIN_BOUNDARY = 34    /**< smallest q5 over interior edges with an endpoint on
+                                             the boundary (0 without any) */
 } cvm_measure;
 
-/** Histograms of cvm_mesh_copy_histogram(). */
+/**
+ * Histograms of cvm_mesh_copy_histogram(); also the per-element values of
+ * cvm_mesh_copy_dual_quality() for CVM_HIST_Q1 .. CVM_HIST_Q5.
+ *
+ * The dual quality measures (issue 6) of the power dual. All are plain
+ * doubles (measures, not decisions). For an edge pq, l = |pq| is the local
+ * size (cvmesh does not keep the sizing of a refinement, so the primal edge
+ * stands for it) and M is the power-bisector foot of pq (the point of line pq
+ * with equal power distance to p and q). The dual edge of an interior edge
+ * joins the power vertices V1, V2 of its two triangles; both lie on the power
+ * bisector of p and q, which is perpendicular to pq through M, so the line
+ * V1V2 crosses the line pq exactly at M ("the crossing"). On a boundary edge
+ * the dual edge is the half edge from the power vertex V of its triangle to M.
+ *  q1 (per triangle): smallest angle, degrees.
+ *  q2 (per triangle): |C - V| / r, C the centroid, V the power vertex, r the
+ *     inradius (0 for an equilateral triangle without weights).
+ *  q3 (per edge): |M - (p + q)/2| / l, offset of the crossing from the
+ *     primal edge midpoint (0 without weights).
+ *  q4 (per edge): |M - (V1 + V2)/2| / l, offset of the crossing from the dual
+ *     edge midpoint; on a boundary edge |V - M| / (2 l).
+ *  q5 (per edge): |V1 - V2| / (l / sqrt 3), dual edge length over the ideal
+ *     (1 on an equilateral lattice); on a boundary edge |V - M| / (l / (2 sqrt 3)).
+ * Histograms of q1, q2 count triangles; those of q3, q4, q5 count interior
+ * edges only (a boundary edge's dual half edge ends at the crossing by
+ * construction). Bin edges are given per value; the last bin of q2..q5 is
+ * open (it counts every larger value).
+ */
 typedef enum cvm_histogram {
     CVM_HIST_ANGLE_DEG = 1, /**< 18 bins of 10 degrees: [0,10), ..., [170,180] */
-    CVM_HIST_DEGREE = 2     /**< 16 bins: interior vertex degree 0..14, and >= 15 */
+    CVM_HIST_DEGREE = 2,    /**< 16 bins: interior vertex degree 0..14, and >= 15 */
+    CVM_HIST_Q1 = 3,        /**< 12 bins of 5 degrees: [0,5), ..., [55,60] */
+    CVM_HIST_Q2 = 4,        /**< 20 bins of 0.25: [0,0.25), ..., [4.5,4.75), [4.75,inf) */
+    CVM_HIST_Q3 = 5,        /**< 20 bins of 0.05: [0,0.05), ..., [0.9,0.95), [0.95,inf) */
+    CVM_HIST_Q4 = 6,        /**< 20 bins of 0.05: [0,0.05), ..., [0.9,0.95), [0.95,inf) */
+    CVM_HIST_Q5 = 7         /**< 20 bins of 0.1: [0,0.1), ..., [1.8,1.9), [1.9,inf) */
 } cvm_histogram;
 
 /**
@@ -1027,12 +1074,38 @@ CVM_API cvm_status cvm_mesh_get_measure(double *out, cvm_mesh *m, cvm_measure wh
 
 /**
  * Copy histogram @p which as counts (doubles, so one typemap serves all outputs).
- * @param dst_len  capacity; CVM_HIST_ANGLE_DEG needs 18, CVM_HIST_DEGREE 16.
+ * @param dst_len  capacity; CVM_HIST_ANGLE_DEG needs 18, CVM_HIST_DEGREE 16,
+ *                 CVM_HIST_Q1 12, CVM_HIST_Q2 .. CVM_HIST_Q5 20.
  * @return CVM_OK, CVM_E_NULL_ARG, CVM_E_ARGUMENT, CVM_E_STATE, CVM_E_BUFFER_TOO_SMALL, CVM_E_NOMEM
  * @since 0.1
  */
 CVM_API cvm_status cvm_mesh_copy_histogram(double *dst, size_t dst_len, cvm_mesh *m,
                                            cvm_histogram which);
+
+/**
+ * Copy the per-element values of dual quality measure @p which (see
+ * cvm_histogram): for CVM_HIST_Q1 and CVM_HIST_Q2 one value per triangle in
+ * CVM_ENT_TRIANGLE order; for CVM_HIST_Q3, CVM_HIST_Q4 and CVM_HIST_Q5 one
+ * value per edge in CVM_ENT_EDGE order (boundary edges included, with the
+ * half-edge definitions). Fresh each call; O(triangles + edges log edges).
+ *
+ * @param dst      receives the values.
+ * @param dst_len  capacity in doubles: >= the triangle count (q1, q2) or the
+ *                 edge count (q3..q5).
+ * @param m        mesh handle; not NULL.
+ * @param which    CVM_HIST_Q1 .. CVM_HIST_Q5.
+ * Units:          q1 degrees; q2..q5 dimensionless.
+ * Thread-safety:  must not run concurrently with a call that modifies @p m.
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG          m is NULL, or dst is NULL while dst_len > 0
+ *         CVM_E_ARGUMENT          which is not CVM_HIST_Q1 .. CVM_HIST_Q5
+ *         CVM_E_BUFFER_TOO_SMALL  dst_len too short (nothing written)
+ *         CVM_E_NOMEM
+ * (A const handle: the last error and its message are left alone.)
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_mesh_copy_dual_quality(double *dst, size_t dst_len, const cvm_mesh *m,
+                                              cvm_histogram which);
 
 #ifdef __cplusplus
 }
