@@ -965,6 +965,69 @@ CVM_API cvm_status cvm_mesh_copy_dual_areas(double *dst, size_t dst_len, const c
 CVM_API cvm_status cvm_mesh_copy_dual_edge_lengths(double *dst, size_t dst_len,
                                                    const cvm_mesh *m);
 
+/**
+ * Dual cells, part 1: the offsets of the cell polygons of
+ * cvm_mesh_copy_dual_cells() in CSR form. Vertex v's cell has the corners
+ * offsets[v] .. offsets[v+1]-1; offsets[0] = 0 and offsets[nv] is the total
+ * number of corners (a vertex without a domain triangle has an empty cell).
+ * @param dst_len  capacity in entries; must be >= vertex count + 1 (1 before
+ *                 triangulation, when the single entry is 0).
+ * Thread-safety: must not run concurrently with a call that modifies @p m.
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG          m is NULL, or dst is NULL while dst_len > 0
+ *         CVM_E_BUFFER_TOO_SMALL  (nothing written)
+ *         CVM_E_TOO_LARGE         more than INT32_MAX corners
+ *         CVM_E_NOMEM
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_mesh_copy_dual_cell_offsets(cvm_index *dst, size_t dst_len,
+                                                   const cvm_mesh *m);
+
+/**
+ * Dual cells, part 2: the corners of the power (Voronoi) cell polygon of every
+ * vertex, 2 doubles per corner, cell after cell in vertex order (offsets from
+ * cvm_mesh_copy_dual_cell_offsets()), counter-clockwise. An interior vertex's
+ * cell is the chain of the power vertices of its triangles. A vertex on the
+ * domain boundary has, for each fan of domain triangles around it (one, unless
+ * the domain pinches at it), the corners: the vertex itself, the
+ * power-bisector foot of the fan's first boundary edge, the power vertices of
+ * the fan's triangles, the foot of its last boundary edge; so the cell is
+ * closed along the boundary, restricted to the domain. When every triangle
+ * contains its power vertex (cvm_mesh_copy_dual_inside()) the polygons are
+ * simple, tile the domain, and their areas equal cvm_mesh_copy_dual_areas();
+ * otherwise a power vertex outside its triangle makes a polygon fold over
+ * (not clipped), and its signed shoelace area still equals
+ * cvm_mesh_copy_dual_areas(). Constructions: plain doubles.
+ * @param dst_len  capacity in doubles; must be >= 2 * the total corner count.
+ * Units:  length.
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG          m is NULL, or dst is NULL while dst_len > 0
+ *         CVM_E_BUFFER_TOO_SMALL  (nothing written)
+ *         CVM_E_TOO_LARGE         more than INT32_MAX corners
+ *         CVM_E_NOMEM
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_mesh_copy_dual_cells(double *dst, size_t dst_len, const cvm_mesh *m);
+
+/**
+ * Write the dual cells (cvm_mesh_copy_dual_cells()) as a VTK XML unstructured
+ * grid (.vtu, ASCII): one VTK_POLYGON (type 7) per vertex with a non-empty
+ * cell, each with its own corner points (z = 0), and cell data "vertex"
+ * (Int32, the vertex id), "area" (Float64, cvm_mesh_copy_dual_areas()) and
+ * "weight" (Float64, the vertex weight). The file is written to a temporary
+ * name and renamed, so a failure never leaves a partial file.
+ * @param path  must end in .vtu.
+ * Thread-safety: must not run concurrently with any other call on @p m.
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG      m or path is NULL
+ *         CVM_E_STATE         nothing triangulated
+ *         CVM_E_UNSUPPORTED   path does not end in .vtu
+ *         CVM_E_TOO_LARGE     more than INT32_MAX corners
+ *         CVM_E_IO_OPEN, CVM_E_IO_WRITE, CVM_E_NOMEM
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_mesh_write_dual(cvm_mesh *m, const char *path);
+
 /* ------------------------------------------------------------------------ */
 /* Quality                                                                   */
 /* ------------------------------------------------------------------------ */

@@ -76,6 +76,17 @@ typedef struct cvm__mesh_out {
     const double *tquality; /* nt or NULL: per-triangle value for SVG colouring (min angle, degrees) */
 } cvm__mesh_out;
 
+/* ---- output: the power cells of a mesh (polygons), borrowed arrays ---- */
+typedef struct cvm__dual_out {
+    const double *xy;      /* 2*ncorner: the corners of every cell, cell after cell */
+    size_t ncorner;
+    const int32_t *off;    /* ncell+1: cell c has corners off[c] .. off[c+1]-1 */
+    size_t ncell;
+    const int32_t *vertex; /* ncell: the mesh vertex of each cell */
+    const double *area;    /* ncell */
+    const double *weight;  /* ncell */
+} cvm__dual_out;
+
 /* Output formats, chosen by the extension of a path (case-insensitive). */
 typedef enum cvm__format {
     CVM__FMT_NONE = 0, /* unknown extension */
@@ -116,5 +127,10 @@ void cvm__writer_discard(cvm__writer *w);
  * .node -> PREFIX.node/.ele/.edge, .svg). Returns CVM_OK, CVM_E_UNSUPPORTED,
  * CVM_E_IO_OPEN, CVM_E_IO_WRITE, CVM_E_NOMEM; on error no file is left. */
 cvm_status cvm__write_file(cvm__ctx *ctx, const char *path, const cvm__mesh_out *mo);
+
+/* Write the cells as VTK polygons to path (.vtu; the caller checks the
+ * extension). CVM_OK, CVM_E_IO_OPEN, CVM_E_IO_WRITE, CVM_E_NOMEM; on error no
+ * file is left. */
+cvm_status cvm__write_dual_file(cvm__ctx *ctx, const char *path, const cvm__dual_out *d);
 
 #endif

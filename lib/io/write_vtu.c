@@ -3,6 +3,7 @@
  * readable by ParaView and meshio: points (z = 0), triangles (VTK type 5),
  * point data "marker" (and "attribute" when there are point attributes), cell
  * data "attribute" (regional attribute) and "min_angle_deg" when given.
+ * Also the power cells of a mesh as VTK polygons (type 7).
  */
 #include "formats.h"
 
@@ -113,4 +114,52 @@ cvm_status cvm__write_vtu(cvm__writer *w, cvm__ctx *ctx, const cvm__mesh_out *mo
     cells(w, mo);
     cvm__writer_puts(w, "    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n");
     return CVM_OK;
+}
+
+void cvm__write_dual_vtu(cvm__writer *w, const cvm__dual_out *d)
+{
+    size_t c, k;
+    cvm__writer_puts(w, "<?xml version=\"1.0\"?>\n"
+                        "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+                        "  <UnstructuredGrid>\n");
+    cvm__writer_printf(w, "    <Piece NumberOfPoints=\"%lu\" NumberOfCells=\"%lu\">\n",
+                       (unsigned long)d->ncorner, (unsigned long)d->ncell);
+    cvm__writer_puts(w, "      <CellData Scalars=\"area\">\n");
+    begin_array(w, "Int32", "vertex", 1);
+    for (c = 0; c < d->ncell; c++)
+        cvm__writer_printf(w, "%ld%s", (long)d->vertex[c],
+                           (c + 1) % PER_LINE == 0 || c + 1 == d->ncell ? "\n" : " ");
+    end_array(w);
+    begin_array(w, "Float64", "area", 1);
+    doubles(w, d->area, d->ncell, 1);
+    end_array(w);
+    begin_array(w, "Float64", "weight", 1);
+    doubles(w, d->weight, d->ncell, 1);
+    end_array(w);
+    cvm__writer_puts(w, "      </CellData>\n      <Points>\n");
+    begin_array(w, "Float64", "coordinates", 3);
+    for (k = 0; k < d->ncorner; k++) {
+        cvm__writer_double(w, d->xy[2 * k]);
+        cvm__writer_puts(w, " ");
+        cvm__writer_double(w, d->xy[2 * k + 1]);
+        cvm__writer_puts(w, " 0\n");
+    }
+    end_array(w);
+    cvm__writer_puts(w, "      </Points>\n      <Cells>\n");
+    begin_array(w, "Int32", "connectivity", 1);
+    for (c = 0; c < d->ncell; c++)
+        for (k = (size_t)d->off[c]; k < (size_t)d->off[c + 1]; k++)
+            cvm__writer_printf(w, "%lu%s", (unsigned long)k,
+                               k + 1 == (size_t)d->off[c + 1] ? "\n" : " ");
+    end_array(w);
+    begin_array(w, "Int64", "offsets", 1);
+    for (c = 0; c < d->ncell; c++)
+        cvm__writer_printf(w, "%lu%s", (unsigned long)d->off[c + 1],
+                           (c + 1) % PER_LINE == 0 || c + 1 == d->ncell ? "\n" : " ");
+    end_array(w);
+    begin_array(w, "UInt8", "types", 1);
+    for (c = 0; c < d->ncell; c++)
+        cvm__writer_puts(w, (c + 1) % PER_LINE == 0 || c + 1 == d->ncell ? "7\n" : "7 ");
+    end_array(w);
+    cvm__writer_puts(w, "      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n");
 }

@@ -9,5 +9,6 @@ Suite *dual_suite(void)
     suite_add_tcase(s, dual_regular_tcase());
     suite_add_tcase(s, dual_api_tcase());
     suite_add_tcase(s, dual_quality_tcase());
+    suite_add_tcase(s, dual_cells_tcase());
     return s;
 }
