@@ -320,14 +320,43 @@ CVM_API cvm_status cvm_mesh_set_regions(cvm_mesh *m, const double *r, size_t cou
  * regional attributes are understood. A .poly whose point count is 0 takes its
  * points from the .node file of the same stem, as Triangle does.
  *
- * @param path  file name; the format follows the extension (.poly or .node).
- * Atomicity:   on error the previous input is kept unchanged.
+ *
+ * A .vtu file (VTK XML unstructured grid with ASCII data arrays, as
+ * cvm_mesh_write() writes it; other writers' files with triangle cells are
+ * read too) gives a triangulated handle: the file's points become the input
+ * points (point data "marker" and "attribute" their markers and attributes),
+ * its line cells (VTK type 3, cell data "marker") and the boundary edges of its
+ * triangles the segments, with a hole point in each hole; the handle is
+ * triangulated, point data "weight" is set as the weights
+ * (cvm_mesh_set_weights()) and cell data "attribute" as the triangles'
+ * regional attributes. The result must hold exactly the file's triangles; the
+ * triangles then keep the file's order and first vertex, so cvm_mesh_write()
+ * of a file cvm_mesh_write() wrote reproduces it byte for byte. A file
+ * without line cells is first tried as the Delaunay triangulation of its
+ * points (no segments). Vertex ids are the file's point numbers (unless the
+ * file repeats a point). Cell type 1 (vertex) is ignored; z must be 0.
+ *
+ * @param path  file name; the format follows the extension (.poly, .node or .vtu).
+ * Atomicity:   on error the previous input (and, for .vtu, the previous mesh)
+ *              is kept unchanged.
  * @return CVM_OK
  *         CVM_E_NULL_ARG, CVM_E_IO_OPEN, CVM_E_IO_READ
- *         CVM_E_IO_FORMAT        malformed content (message gives file:line)
- *         CVM_E_INPUT_NONFINITE  a NaN/Inf coordinate (message gives file:line)
+ *         CVM_E_IO_FORMAT        malformed content (message gives file:line); in a .vtu
+ *                                also a cell naming a point that does not exist, wrong
+ *                                value counts or offsets (message names the cell)
+ *         CVM_E_INPUT_NONFINITE  a NaN/Inf coordinate or value (message gives file:line)
  *         CVM_E_TOO_LARGE        a count beyond INT32_MAX/4 (message gives file:line)
- *         CVM_E_UNSUPPORTED      unknown extension
+ *         CVM_E_UNSUPPORTED      unknown extension; in a .vtu binary, appended or compressed
+ *                                data, more than one Piece, or a cell type other than 1, 3, 5
+ *         CVM_E_INPUT_EMPTY      .vtu without triangle cells
+ *         CVM_E_INPUT_DEGENERATE .vtu whose mesh cannot be rebuilt: a triangle repeats a
+ *                                point, a point is in no triangle, an edge has three
+ *                                triangles, or a triangle is not reproduced by the
+ *                                constrained regular triangulation of the file's points,
+ *                                segments and weights (message names the triangle and its
+ *                                points; cvm_mesh_error_item() gives CVM_ENT_TRIANGLE, k)
+ *         other CVM_E_INPUT_* of cvm_mesh_triangulate() for a .vtu (message prefixed
+ *                                with the file name)
  *         CVM_E_NOMEM
  * @since 0.1
  */
@@ -842,7 +871,11 @@ CVM_API cvm_status cvm_mesh_view_points(const double **ptr_out, size_t *count_ou
 
 /**
  * Write the mesh; the format follows the extension of @p path:
- * .vtu (VTK XML unstructured grid), .msh (Gmsh 4.1 ASCII, segments tagged by
+ * .vtu (VTK XML unstructured grid: the triangles, then the segments as line
+ * cells; point data "marker", "weight" when weights are set, "attribute";
+ * cell data "marker" (segment marker of a line, 0 on a triangle), "attribute"
+ * (regional, with regions) and "min_angle_deg" (0 on a line); cvm_mesh_read()
+ * reads it back), .msh (Gmsh 4.1 ASCII, segments tagged by
  * marker as physical groups), .node (writes PREFIX.node, PREFIX.ele and
  * PREFIX.edge beside each other, 0-based), .svg (a picture).
  * Every file is written to a temporary name and renamed, so a failure never
