@@ -18,6 +18,7 @@
 #include <string.h>
 
 #include "output_internal.h"
+#include "geom/geom_internal.h"
 
 /* A triangle as its sorted vertex ids, and where it comes from. */
 typedef struct tkey {
@@ -207,12 +208,27 @@ static tkey *file_keys(cvm_mesh *t, const cvm__vtu_mesh *vm)
     return k;
 }
 
+/* 1 when p lies in (or on) a triangle of the file (exact orientation tests). */
+static int in_file_domain(const cvm__vtu_mesh *vm, const double *p)
+{
+    size_t k;
+    for (k = 0; k < vm->nt; k++) {
+        const int32_t *t = vm->tri + 3 * k;
+        const double *a = vm->p.xy + 2 * (size_t)t[0], *b = vm->p.xy + 2 * (size_t)t[1],
+                     *c = vm->p.xy + 2 * (size_t)t[2];
+        double o1 = cvm__orient2d(a, b, p), o2 = cvm__orient2d(b, c, p), o3 = cvm__orient2d(c, a, p);
+        if ((o1 >= 0 && o2 >= 0 && o3 >= 0) || (o1 <= 0 && o2 <= 0 && o3 <= 0))
+            return 1; /* either orientation of the file's triangle */
+    }
+    return 0;
+}
+
 /* Hole seeds: the centroid of one triangle of each connected set of domain
- * triangles (across unconstrained edges) none of which is a file triangle.
- * Such a set lies outside the file's domain: after the weights are set, a set
- * inside it is triangulated as in the file, and a triangle outside the
- * domain cannot have the vertex set of a file triangle (the two would
- * coincide). *n_out = 0 when there is none. */
+ * triangles (across unconstrained edges) none of which is a file triangle
+ * and whose seed lies in no file triangle. After the weights are set, a set
+ * inside the file's domain is triangulated as in the file when the file is
+ * valid, and a triangle outside the domain cannot have the vertex set of a
+ * file triangle (the two would coincide). *n_out = 0 when there is none. */
 static cvm_status hole_seeds(cvm_mesh *t, const cvm__vtu_mesh *vm, double **out, size_t *n_out)
 {
     const cvm__tri2 *T = &t->tri;
@@ -265,7 +281,9 @@ static cvm_status hole_seeds(cvm_mesh *t, const cvm__vtu_mesh *vm, double **out,
                 h[2 * n + (size_t)j] = (T->xy[2 * (size_t)v[0] + (size_t)j] +
                                         T->xy[2 * (size_t)v[1] + (size_t)j] +
                                         T->xy[2 * (size_t)v[2] + (size_t)j]) / 3.0;
-            n++;
+            /* a region inside the file's domain triangulated differently is
+               not a hole: leave it for match() to report */
+            n += !in_file_domain(vm, h + 2 * n);
         }
     }
     cvm__free(&t->ctx, fk);
