@@ -8,11 +8,18 @@
  * Delaunay triangulation of its points). The handle triangulates that PSLG;
  * triangles that fill a hole of the file's domain seed hole points (one per
  * connected region) and the PSLG is triangulated again; the weights of the
- * point data "weight" are set (regular triangulation). The result must have
- * exactly the file's triangles (as vertex sets); then the kernel's triangle
- * slots are reordered and rotated to the file's order and first vertices, so
- * that writing the mesh again reproduces the file. Everything runs on a
- * scratch handle that replaces the caller's only on success.
+ * point data "weight" are set (regular triangulation). When that does not
+ * give the file's triangles (weights under which some vertex has an empty
+ * power cell make the result depend on the starting triangulation), every
+ * inner edge of the file is inserted as a temporary constraint, so the
+ * triangulation is the file's, the constraints are dropped, the weights set,
+ * and the Lawson flips of cvm_mesh_set_weights() run: the file is accepted
+ * when they leave its triangles alone, i.e. when it is what
+ * cvm_mesh_set_weights() keeps. The result must have exactly the file's
+ * triangles (as vertex sets); then the kernel's triangle slots are reordered
+ * and rotated to the file's order and first vertices, so that writing the
+ * mesh again reproduces the file. Everything runs on a scratch handle that
+ * replaces the caller's only on success.
  */
 #include <stdlib.h>
 #include <string.h>
@@ -90,17 +97,20 @@ static int32_t find_slot(const tkey *keys, size_t n, const tkey *key)
 }
 
 /* Check the file's triangles: distinct corners, every point used; collect
- * the edges used by one triangle only (boundary) into *bnd (2 per edge). */
+ * the edges used by one triangle only (boundary) into *bnd and those used by
+ * two (inner) into *inner (2 ids per edge). */
 static cvm_status file_checks(cvm_mesh *m, const char *path, const cvm__vtu_mesh *vm,
-                              int32_t **bnd, size_t *nbnd)
+                              int32_t **bnd, size_t *nbnd, int32_t **inner, size_t *ninner)
 {
-    size_t k, n = 0, i, ne = 3 * vm->nt;
+    size_t k, n = 0, ni = 0, i, ne = 3 * vm->nt;
     uint8_t *used = cvm__calloc(&m->ctx, vm->p.np + 1, 1);
     tkey *e = cvm__malloc(&m->ctx, (ne + 1) * sizeof *e);
     int32_t *b = cvm__malloc(&m->ctx, (2 * ne + 1) * sizeof *b);
+    int32_t *in = cvm__malloc(&m->ctx, (ne + 1) * sizeof *in);
     cvm_status s = CVM_OK;
     *bnd = NULL;
-    if (!used || !e || !b) {
+    *inner = NULL;
+    if (!used || !e || !b || !in) {
         s = cvm__nomem(&m->ctx);
         goto out;
     }
@@ -143,25 +153,36 @@ static cvm_status file_checks(cvm_mesh *m, const char *path, const cvm__vtu_mesh
             b[2 * n] = e[k].v[0];
             b[2 * n + 1] = e[k].v[1];
             n++;
+        } else {
+            in[2 * ni] = e[k].v[0];
+            in[2 * ni + 1] = e[k].v[1];
+            ni++;
         }
     }
     *bnd = b;
     b = NULL;
     *nbnd = n;
+    *inner = in;
+    in = NULL;
+    *ninner = ni;
 out:
     cvm__free(&m->ctx, used);
     cvm__free(&m->ctx, e);
     cvm__free(&m->ctx, b);
+    cvm__free(&m->ctx, in);
     return s;
 }
 
-/* Segments: the file's lines, then each boundary edge that is not a line. */
+/* Segments: the file's lines, then each boundary edge that is not a line
+ * (*nreal_out of them), then each inner edge that is not a line (the
+ * temporary constraints of a forced rebuild, marker 0). */
 static cvm_status segments(cvm_mesh *m, const cvm__vtu_mesh *vm, const int32_t *bnd, size_t nbnd,
-                           int32_t **seg_out, int32_t **mark_out, size_t *n_out)
+                           const int32_t *inner, size_t ninner, int32_t **seg_out,
+                           int32_t **mark_out, size_t *n_out, size_t *nreal_out)
 {
     size_t nl = vm->p.nseg, n = 0, k;
-    int32_t *seg = cvm__malloc(&m->ctx, (2 * (nl + nbnd) + 1) * sizeof *seg);
-    int32_t *mark = cvm__malloc(&m->ctx, (nl + nbnd + 1) * sizeof *mark);
+    int32_t *seg = cvm__malloc(&m->ctx, (2 * (nl + nbnd + ninner) + 1) * sizeof *seg);
+    int32_t *mark = cvm__malloc(&m->ctx, (nl + nbnd + ninner + 1) * sizeof *mark);
     tkey *lines = cvm__malloc(&m->ctx, (nl + 1) * sizeof *lines);
     if (!seg || !mark || !lines) {
         cvm__free(&m->ctx, seg);
@@ -185,6 +206,16 @@ static cvm_status segments(cvm_mesh *m, const cvm__vtu_mesh *vm, const int32_t *
         seg[2 * n] = bnd[2 * k];
         seg[2 * n + 1] = bnd[2 * k + 1];
         mark[n++] = 1;
+    }
+    *nreal_out = n;
+    for (k = 0; k < ninner; k++) { /* temporary constraints (forced rebuild) */
+        tkey key;
+        make_key(&key, inner[2 * k], inner[2 * k + 1], INT32_MAX, 0);
+        if (find_slot(lines, nl, &key) >= 0)
+            continue;
+        seg[2 * n] = inner[2 * k];
+        seg[2 * n + 1] = inner[2 * k + 1];
+        mark[n++] = 0;
     }
     cvm__free(&m->ctx, lines);
     *seg_out = seg;
@@ -423,39 +454,72 @@ static cvm_status build(cvm_mesh *t, const cvm__vtu_mesh *vm, const int32_t *seg
     return cvm_mesh_triangulate(t);
 }
 
-/* Weights of the file (per input point) onto t's vertices. */
-static cvm_status weights(cvm_mesh *t, const cvm__vtu_mesh *vm)
+/* Weights of the file (per input point) onto t's vertices. forced: t holds
+ * the file's triangles already; the weights are set without flips, then the
+ * Lawson flips of cvm_mesh_set_weights() run, which change nothing in the
+ * domain exactly when the file's mesh is what cvm_mesh_set_weights() keeps
+ * (regular, or its illegal edges unflippable: vanished vertices). */
+static cvm_status weights(cvm_mesh *t, const cvm__vtu_mesh *vm, int forced)
 {
-    size_t i, nv = t->tri.nv;
+    cvm__tri2 *T = &t->tri;
+    size_t i, nv = T->nv;
     double *w;
     cvm_status s;
-    if (!vm->w)
+    if (!vm->w && !forced)
         return CVM_OK;
-    w = cvm__calloc(&t->ctx, nv + 1, sizeof *w);
+    w = cvm__calloc(&t->ctx, (forced && T->cap_v > nv ? T->cap_v : nv) + 1, sizeof *w);
     if (!w)
         return cvm__nomem(&t->ctx);
-    for (i = 0; i < vm->p.np; i++)
+    for (i = 0; vm->w && i < vm->p.np; i++)
         w[t->input_map[i]] = vm->w[i];
-    s = cvm_mesh_set_weights(t, w, nv);
-    cvm__free(&t->ctx, w);
-    return s;
+    if (!forced) {
+        s = cvm_mesh_set_weights(t, w, nv);
+        cvm__free(&t->ctx, w);
+        return s;
+    }
+    cvm__free(&t->ctx, T->w);
+    T->w = vm->w ? w : NULL;
+    if (!vm->w)
+        cvm__free(&t->ctx, w);
+    return cvm__tri2_make_regular(T, NULL) ? cvm__nomem(&t->ctx) : CVM_OK;
 }
 
-/* One attempt: with_segments = 0 tries the plain triangulation of the points
- * (only for files without lines). *bad as in match(). */
+/* Forget the temporary constraints (segment ids nreal and up) of a forced rebuild. */
+static void drop_temporary(cvm_mesh *t, size_t nreal)
+{
+    cvm__tri2 *T = &t->tri;
+    size_t k;
+    if (t->in.nseg <= nreal)
+        return;
+    for (k = 0; T->te && k < 3 * T->nt; k++)
+        if (T->te[k] >= (int32_t)nreal)
+            T->te[k] = -1;
+    t->in.nseg = nreal;
+}
+
+/* One attempt with the first nseg segments of seg, of which the first
+ * nreal are kept (nseg > nreal: a forced rebuild, see weights()); nseg = 0
+ * tries the plain triangulation of the points (files without lines). *bad as
+ * in match(). */
 static cvm_status attempt(cvm_mesh *t, const cvm__vtu_mesh *vm, const int32_t *seg,
-                          const int32_t *smark, size_t nseg, int64_t *bad)
+                          const int32_t *smark, size_t nseg, size_t nreal, int64_t *bad)
 {
     double *holes = NULL;
     size_t nholes = 0;
+    int forced = nseg > nreal;
     cvm_status s = build(t, vm, seg, smark, nseg, NULL, 0);
-    if (s || (s = weights(t, vm)))
+    if (s)
+        return s;
+    drop_temporary(t, nreal);
+    if ((s = weights(t, vm, forced)))
         return s;
     if (nseg) {
         if ((s = hole_seeds(t, vm, &holes, &nholes)))
             return s;
-        if (nholes && !(s = build(t, vm, seg, smark, nseg, holes, nholes)))
-            s = weights(t, vm);
+        if (nholes && !(s = build(t, vm, seg, smark, nseg, holes, nholes))) {
+            drop_temporary(t, nreal);
+            s = weights(t, vm, forced);
+        }
         cvm__free(&t->ctx, holes);
         if (s)
             return s;
@@ -496,23 +560,31 @@ static void adopt(cvm_mesh *m, cvm_mesh *t)
 
 static cvm_status run(cvm_mesh *m, cvm_mesh *t, const char *path, const cvm__vtu_mesh *vm)
 {
-    int32_t *bnd = NULL, *seg = NULL, *mark = NULL;
-    size_t nbnd = 0, nseg = 0;
+    int32_t *bnd = NULL, *inner = NULL, *seg = NULL, *mark = NULL;
+    size_t nbnd = 0, ninner = 0, nseg = 0, nreal = 0;
     int64_t bad = -1;
     cvm_status s;
-    if ((s = file_checks(m, path, vm, &bnd, &nbnd)))
+    if ((s = file_checks(m, path, vm, &bnd, &nbnd, &inner, &ninner)))
         return s;
-    if ((s = segments(m, vm, bnd, nbnd, &seg, &mark, &nseg))) {
-        cvm__free(&m->ctx, bnd);
-        return s;
-    }
+    s = segments(m, vm, bnd, nbnd, inner, ninner, &seg, &mark, &nseg, &nreal);
     cvm__free(&m->ctx, bnd);
+    cvm__free(&m->ctx, inner);
+    if (s)
+        return s;
+    /* 1. no lines: the Delaunay (regular) triangulation of the points */
     if (!vm->has_lines)
-        s = attempt(t, vm, NULL, NULL, 0, &bad);
-    if (vm->has_lines || (!s && bad >= 0)) {
+        s = attempt(t, vm, NULL, NULL, 0, 0, &bad);
+    /* 2. the constrained one, with the boundary as segments and hole seeds */
+    if (!s && (vm->has_lines || bad >= 0)) {
         bad = -1;
         t->opt[cvm__option_slot(CVM_OPT_KEEP_CONVEX_HULL)] = 0;
-        s = attempt(t, vm, seg, mark, nseg, &bad);
+        s = attempt(t, vm, seg, mark, nreal, nreal, &bad);
+    }
+    /* 3. every file edge forced, then checked by the flips (weights the
+       regular triangulation does not reach from the CDT: vanished vertices) */
+    if (!s && bad >= 0 && nseg > nreal) {
+        bad = -1;
+        s = attempt(t, vm, seg, mark, nseg, nreal, &bad);
     }
     cvm__free(&m->ctx, seg);
     cvm__free(&m->ctx, mark);
