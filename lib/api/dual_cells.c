@@ -16,7 +16,7 @@
 #include "output_internal.h"
 #include "dual/dual_internal.h"
 
-static double weight(const cvm__tri2 *T, int32_t v)
+static double vweight(const cvm__tri2 *T, int32_t v)
 {
     return T->w ? T->w[v] : 0.0;
 }
@@ -100,7 +100,7 @@ static void cell(const cvm__tri2 *T, incidence *in, int32_t v, double *xy, size_
             if (f == 0) { /* open fan starting at boundary edge (v, tv[p+1]) */
                 int32_t a = T->tv[3 * (size_t)t + (size_t)(p + 1) % 3];
                 put(xy, k, pv);
-                cvm__power_foot2d(pv, T->xy + 2 * (size_t)a, weight(T, v), weight(T, a), P);
+                cvm__power_foot2d(pv, T->xy + 2 * (size_t)a, vweight(T, v), vweight(T, a), P);
                 put(xy, k, P);
             }
             for (u = t; u >= 0 && !in->seen[u]; u = across(T, u, (pos(T, u, v) + 1) % 3)) {
@@ -108,14 +108,14 @@ static void cell(const cvm__tri2 *T, incidence *in, int32_t v, double *xy, size_
                 in->seen[u] = 1;
                 if (xy)
                     cvm__power_vertex2d(T->xy + 2 * (size_t)tv[0], T->xy + 2 * (size_t)tv[1],
-                                        T->xy + 2 * (size_t)tv[2], weight(T, tv[0]),
-                                        weight(T, tv[1]), weight(T, tv[2]), P);
+                                        T->xy + 2 * (size_t)tv[2], vweight(T, tv[0]),
+                                        vweight(T, tv[1]), vweight(T, tv[2]), P);
                 put(xy, k, P);
                 t = u;
             }
             if (f == 0) { /* close at boundary edge (tv[p+2], v) of the last triangle */
                 int32_t b = T->tv[3 * (size_t)t + (size_t)(pos(T, t, v) + 2) % 3];
-                cvm__power_foot2d(pv, T->xy + 2 * (size_t)b, weight(T, v), weight(T, b), P);
+                cvm__power_foot2d(pv, T->xy + 2 * (size_t)b, vweight(T, v), vweight(T, b), P);
                 put(xy, k, P);
             }
         }
@@ -241,7 +241,7 @@ static cvm_status dual_out_build(cvm_mesh *m, cvm__dual_out *d)
             continue; /* no domain triangle: no cell */
         vid[n] = (int32_t)v;
         area[n] = area[v];
-        w[n] = weight(T, (int32_t)v);
+        w[n] = vweight(T, (int32_t)v);
         coff[++n] = off[v + 1];
     }
     d->ncell = n;

@@ -16,7 +16,6 @@
 #include "output_internal.h"
 #include "dual/dual_internal.h"
 
-#define RAD2DEG (180.0 / 3.14159265358979323846)
 #define SQRT3 1.7320508075688772935
 
 /* Every dual quality value of a mesh. */
@@ -28,7 +27,7 @@ typedef struct dq {
     uint8_t *eb;   /* ne: an endpoint lies on the domain boundary */
 } dq;
 
-static double weight(const cvm__tri2 *T, int32_t v)
+static double vweight(const cvm__tri2 *T, int32_t v)
 {
     return T->w ? T->w[v] : 0.0;
 }
@@ -55,7 +54,7 @@ static void triangle_values(const cvm__tri2 *T, const uint8_t *on_bnd, dq *d)
         double V[2], C[2], area2, per, r;
         if (!cvm__tri2_in_domain(T, (int32_t)t))
             continue;
-        cvm__power_vertex2d(a, b, c, weight(T, v[0]), weight(T, v[1]), weight(T, v[2]), V);
+        cvm__power_vertex2d(a, b, c, vweight(T, v[0]), vweight(T, v[1]), vweight(T, v[2]), V);
         C[0] = (a[0] + b[0] + c[0]) / 3.0;
         C[1] = (a[1] + b[1] + c[1]) / 3.0;
         area2 = fabs((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
@@ -78,7 +77,7 @@ static void edge_values(const cvm__tri2 *T, const cvm__edges *e, const double *e
         int32_t a = e->ev[2 * k], b = e->ev[2 * k + 1];
         const double *p = T->xy + 2 * (size_t)a, *q = T->xy + 2 * (size_t)b, *x = ends + 4 * k;
         double M[2], l = hypot(q[0] - p[0], q[1] - p[1]), dual = hypot(x[2] - x[0], x[3] - x[1]);
-        cvm__power_foot2d(p, q, weight(T, a), weight(T, b), M);
+        cvm__power_foot2d(p, q, vweight(T, a), vweight(T, b), M);
         d->q[3][k] = hypot(M[0] - 0.5 * (p[0] + q[0]), M[1] - 0.5 * (p[1] + q[1])) / l;
         if (e->bnd[k]) {
             d->q[4][k] = dual / (2.0 * l);

@@ -402,7 +402,7 @@ out:
  * file's order. *bad receives the first file triangle not reproduced, or -1. */
 static cvm_status match(cvm_mesh *t, const cvm__vtu_mesh *vm, int64_t *bad)
 {
-    size_t nk, k;
+    size_t nk = 0, k;
     tkey *sk = slot_keys(&t->ctx, &t->tri, &nk);
     int32_t *slot = cvm__malloc(&t->ctx, (vm->nt + 1) * sizeof *slot);
     uint8_t *rot = cvm__malloc(&t->ctx, vm->nt + 1), *taken = cvm__calloc(&t->ctx, t->tri.nt + 1, 1);
