@@ -334,7 +334,8 @@ CVM_API cvm_status cvm_mesh_set_regions(cvm_mesh *m, const double *r, size_t cou
  * of a file cvm_mesh_write() wrote reproduces it byte for byte. A file
  * without line cells is first tried as the Delaunay triangulation of its
  * points (no segments). Vertex ids are the file's point numbers (unless the
- * file repeats a point). Cell type 1 (vertex) is ignored; z must be 0.
+ * file repeats a point). Cell type 1 (vertex) is ignored; z must be 0. The
+ * rebuild ignores CVM_OPT_TIME_LIMIT_S and uses the handle's other options.
  *
  * @param path  file name; the format follows the extension (.poly, .node or .vtu).
  * Atomicity:   on error the previous input (and, for .vtu, the previous mesh)

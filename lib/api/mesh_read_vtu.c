@@ -619,6 +619,7 @@ cvm_status cvm__mesh_read_vtu(cvm_mesh *m, const char *path)
         return cvm__nomem(&m->ctx);
     }
     memcpy(t->opt, m->opt, sizeof t->opt);
+    t->opt[cvm__option_slot(CVM_OPT_TIME_LIMIT_S)] = 0; /* a read is not cut short */
     s = run(m, t, path, &vm);
     cvm__vtu_mesh_free(&m->ctx, &vm);
     if (s) {
