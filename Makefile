@@ -71,7 +71,7 @@ CHECK_LIBS = $(shell pkg-config --libs check 2>/dev/null || echo -lcheck -lsubun
 TEST_ENV = CVM_SHARED_DIR=$(SHARED_DIR) CVM_TEST_DATA=$(CURDIR)/tests/data
 
 # Fuzz targets: tests/fuzz/fuzz_<name>.c, seeds in tests/fuzz/corpus/<name>/.
-FUZZ_TARGETS := poly_read node_read cdt
+FUZZ_TARGETS := poly_read node_read cdt vtu_read
 FUZZ_BINS := $(FUZZ_TARGETS:%=$(BUILD)/fuzz/fuzz_%)
 REPLAY_BINS := $(FUZZ_TARGETS:%=$(BUILD)/fuzz/replay_%)
 FUZZ_SUPPORT_OBJ := $(BUILD)/obj/tests/fuzz/mesh_oracle.o $(BUILD)/obj/tests/unit/support/failing_alloc.o
@@ -156,6 +156,7 @@ FUZZ_SEED ?= 1
 FUZZ_RUNS_poly_read ?= 500000
 FUZZ_RUNS_node_read ?= 500000
 FUZZ_RUNS_cdt ?= 15000
+FUZZ_RUNS_vtu_read ?= 100000
 FUZZ_MAKE = $(MAKE) $(PAR) --no-print-directory BUILD=$(FUZZ_BUILD) CC=$(CLANG) SAN=1 FUZZ=1 OPENMP=0
 
 # run_fuzz(target, seconds, seed, runs): fresh work corpus seeded from the committed one;

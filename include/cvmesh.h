@@ -323,14 +323,44 @@ CVM_API cvm_status cvm_mesh_set_regions(cvm_mesh *m, const double *r, size_t cou
  * regional attributes are understood. A .poly whose point count is 0 takes its
  * points from the .node file of the same stem, as Triangle does.
  *
- * @param path  file name; the format follows the extension (.poly or .node).
- * Atomicity:   on error the previous input is kept unchanged.
+ *
+ * A .vtu file (VTK XML unstructured grid with ASCII data arrays, as
+ * cvm_mesh_write() writes it; other writers' files with triangle cells are
+ * read too) gives a triangulated handle: the file's points become the input
+ * points (point data "marker" and "attribute" their markers and attributes),
+ * its line cells (VTK type 3, cell data "marker") and the boundary edges of its
+ * triangles the segments, with a hole point in each hole; the handle is
+ * triangulated, point data "weight" is set as the weights
+ * (cvm_mesh_set_weights()) and cell data "attribute" as the triangles'
+ * regional attributes. The result must hold exactly the file's triangles; the
+ * triangles then keep the file's order and first vertex, so cvm_mesh_write()
+ * of a file cvm_mesh_write() wrote reproduces it byte for byte. A file
+ * without line cells is first tried as the Delaunay triangulation of its
+ * points (no segments). Vertex ids are the file's point numbers (unless the
+ * file repeats a point). Cell type 1 (vertex) is ignored; z must be 0. The
+ * rebuild ignores CVM_OPT_TIME_LIMIT_S and uses the handle's other options.
+ *
+ * @param path  file name; the format follows the extension (.poly, .node or .vtu).
+ * Atomicity:   on error the previous input (and, for .vtu, the previous mesh)
+ *              is kept unchanged.
  * @return CVM_OK
  *         CVM_E_NULL_ARG, CVM_E_IO_OPEN, CVM_E_IO_READ
- *         CVM_E_IO_FORMAT        malformed content (message gives file:line)
- *         CVM_E_INPUT_NONFINITE  a NaN/Inf coordinate (message gives file:line)
+ *         CVM_E_IO_FORMAT        malformed content (message gives file:line); in a .vtu
+ *                                also a cell naming a point that does not exist, wrong
+ *                                value counts or offsets (message names the cell)
+ *         CVM_E_INPUT_NONFINITE  a NaN/Inf coordinate or value (message gives file:line)
  *         CVM_E_TOO_LARGE        a count beyond INT32_MAX/4 (message gives file:line)
- *         CVM_E_UNSUPPORTED      unknown extension
+ *         CVM_E_UNSUPPORTED      unknown extension; in a .vtu binary, appended or compressed
+ *                                data, more than one Piece, or a cell type other than 1, 3, 5
+ *         CVM_E_INPUT_EMPTY      .vtu without triangle cells
+ *         CVM_E_INPUT_DEGENERATE .vtu whose mesh cannot be rebuilt: a triangle repeats a
+ *                                point, a point is in no triangle, an edge has three
+ *                                triangles, or a triangle is not reproduced by the
+ *                                constrained regular triangulation of the file's points,
+ *                                segments and weights (message names the triangle and its
+ *                                points; cvm_mesh_error_item() gives CVM_ENT_TRIANGLE, k)
+ *         other CVM_E_INPUT_* of cvm_mesh_triangulate() for a .vtu (message prefixed
+ *                                with the file name)
  *         CVM_E_NOMEM
  * @since 0.1
  */
@@ -913,7 +943,11 @@ CVM_API cvm_status cvm_mesh_view_points(const double **ptr_out, size_t *count_ou
 
 /**
  * Write the mesh; the format follows the extension of @p path:
- * .vtu (VTK XML unstructured grid), .msh (Gmsh 4.1 ASCII, segments tagged by
+ * .vtu (VTK XML unstructured grid: the triangles, then the segments as line
+ * cells; point data "marker", "weight" when weights are set, "attribute";
+ * cell data "marker" (segment marker of a line, 0 on a triangle), "attribute"
+ * (regional, with regions) and "min_angle_deg" (0 on a line); cvm_mesh_read()
+ * reads it back), .msh (Gmsh 4.1 ASCII, segments tagged by
  * marker as physical groups), .node (writes PREFIX.node, PREFIX.ele and
  * PREFIX.edge beside each other, 0-based), .svg (a picture).
  * Every file is written to a temporary name and renamed, so a failure never
@@ -1036,6 +1070,69 @@ CVM_API cvm_status cvm_mesh_copy_dual_areas(double *dst, size_t dst_len, const c
 CVM_API cvm_status cvm_mesh_copy_dual_edge_lengths(double *dst, size_t dst_len,
                                                    const cvm_mesh *m);
 
+/**
+ * Dual cells, part 1: the offsets of the cell polygons of
+ * cvm_mesh_copy_dual_cells() in CSR form. Vertex v's cell has the corners
+ * offsets[v] .. offsets[v+1]-1; offsets[0] = 0 and offsets[nv] is the total
+ * number of corners (a vertex without a domain triangle has an empty cell).
+ * @param dst_len  capacity in entries; must be >= vertex count + 1 (1 before
+ *                 triangulation, when the single entry is 0).
+ * Thread-safety: must not run concurrently with a call that modifies @p m.
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG          m is NULL, or dst is NULL while dst_len > 0
+ *         CVM_E_BUFFER_TOO_SMALL  (nothing written)
+ *         CVM_E_TOO_LARGE         more than INT32_MAX corners
+ *         CVM_E_NOMEM
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_mesh_copy_dual_cell_offsets(cvm_index *dst, size_t dst_len,
+                                                   const cvm_mesh *m);
+
+/**
+ * Dual cells, part 2: the corners of the power (Voronoi) cell polygon of every
+ * vertex, 2 doubles per corner, cell after cell in vertex order (offsets from
+ * cvm_mesh_copy_dual_cell_offsets()), counter-clockwise. An interior vertex's
+ * cell is the chain of the power vertices of its triangles. A vertex on the
+ * domain boundary has, for each fan of domain triangles around it (one, unless
+ * the domain pinches at it), the corners: the vertex itself, the
+ * power-bisector foot of the fan's first boundary edge, the power vertices of
+ * the fan's triangles, the foot of its last boundary edge; so the cell is
+ * closed along the boundary, restricted to the domain. When every triangle
+ * contains its power vertex (cvm_mesh_copy_dual_inside()) the polygons are
+ * simple, tile the domain, and their areas equal cvm_mesh_copy_dual_areas();
+ * otherwise a power vertex outside its triangle makes a polygon fold over
+ * (not clipped), and its signed shoelace area still equals
+ * cvm_mesh_copy_dual_areas(). Constructions: plain doubles.
+ * @param dst_len  capacity in doubles; must be >= 2 * the total corner count.
+ * Units:  length.
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG          m is NULL, or dst is NULL while dst_len > 0
+ *         CVM_E_BUFFER_TOO_SMALL  (nothing written)
+ *         CVM_E_TOO_LARGE         more than INT32_MAX corners
+ *         CVM_E_NOMEM
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_mesh_copy_dual_cells(double *dst, size_t dst_len, const cvm_mesh *m);
+
+/**
+ * Write the dual cells (cvm_mesh_copy_dual_cells()) as a VTK XML unstructured
+ * grid (.vtu, ASCII): one VTK_POLYGON (type 7) per vertex with a non-empty
+ * cell, each with its own corner points (z = 0), and cell data "vertex"
+ * (Int32, the vertex id), "area" (Float64, cvm_mesh_copy_dual_areas()) and
+ * "weight" (Float64, the vertex weight). The file is written to a temporary
+ * name and renamed, so a failure never leaves a partial file.
+ * @param path  must end in .vtu.
+ * Thread-safety: must not run concurrently with any other call on @p m.
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG      m or path is NULL
+ *         CVM_E_STATE         nothing triangulated
+ *         CVM_E_UNSUPPORTED   path does not end in .vtu
+ *         CVM_E_TOO_LARGE     more than INT32_MAX corners
+ *         CVM_E_IO_OPEN, CVM_E_IO_WRITE, CVM_E_NOMEM
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_mesh_write_dual(cvm_mesh *m, const char *path);
+
 /* ------------------------------------------------------------------------ */
 /* Quality                                                                   */
 /* ------------------------------------------------------------------------ */
@@ -1076,16 +1173,63 @@ typedef enum cvm_measure {
     CVM_MEASURE_TIME_STEP_PROXY = 20,   /**< smallest min(primal, dual edge length) over interior
                                              edges: sets the stable explicit time step of a
                                              co-volume scheme (length units; 0 without any) */
-    CVM_MEASURE_VANISHED_VERTICES = 21  /**< vertices the regular triangulation would drop
+    CVM_MEASURE_VANISHED_VERTICES = 21, /**< vertices the regular triangulation would drop
                                              (empty power cell): the blocking corner of each
                                              illegal edge that no flip can fix; cvmesh keeps
                                              them (see cvm_mesh_set_weights()) */
+    /* Dual quality q1..q5 (see cvm_histogram for the definitions). "Boundary"
+       triangles have a vertex on the domain boundary; "boundary" edges are
+       interior edges with an endpoint on it. Values 22-24 and 40-59 are
+       reserved for the dual optimiser's measures. */
+    CVM_MEASURE_Q1_MEAN_DEG = 25,       /**< mean over triangles of the smallest angle, degrees */
+    CVM_MEASURE_Q2_MAX = 26,            /**< largest q2 (|centroid - power vertex| / inradius) */
+    CVM_MEASURE_Q2_MEAN = 27,           /**< mean q2 over triangles */
+    CVM_MEASURE_Q3_MAX = 28,            /**< largest q3 over interior edges (0 without any) */
+    CVM_MEASURE_Q4_MAX = 29,            /**< largest q4 over interior edges (0 without any) */
+    CVM_MEASURE_Q5_MIN = 30,            /**< smallest q5 (dual edge / (l / sqrt 3)) over interior
+                                             edges (0 without any) */
+    CVM_MEASURE_Q5_MEAN = 31,           /**< mean q5 over interior edges (0 without any) */
+    CVM_MEASURE_Q1_MIN_BOUNDARY_DEG = 32, /**< smallest angle over boundary triangles, degrees */
+    CVM_MEASURE_Q2_MAX_BOUNDARY = 33,   /**< largest q2 over boundary triangles */
+    CVM_MEASURE_Q5_MIN_BOUNDARY = 34    /**< smallest q5 over interior edges with an endpoint on
+                                             the boundary (0 without any) */
 } cvm_measure;
 
-/** Histograms of cvm_mesh_copy_histogram(). */
+/**
+ * Histograms of cvm_mesh_copy_histogram(); also the per-element values of
+ * cvm_mesh_copy_dual_quality() for CVM_HIST_Q1 .. CVM_HIST_Q5.
+ *
+ * The dual quality measures (issue 6) of the power dual. All are plain
+ * doubles (measures, not decisions). For an edge pq, l = |pq| is the local
+ * size (cvmesh does not keep the sizing of a refinement, so the primal edge
+ * stands for it) and M is the power-bisector foot of pq (the point of line pq
+ * with equal power distance to p and q). The dual edge of an interior edge
+ * joins the power vertices V1, V2 of its two triangles; both lie on the power
+ * bisector of p and q, which is perpendicular to pq through M, so the line
+ * V1V2 crosses the line pq exactly at M ("the crossing"). On a boundary edge
+ * the dual edge is the half edge from the power vertex V of its triangle to M.
+ *  q1 (per triangle): smallest angle, degrees.
+ *  q2 (per triangle): |C - V| / r, C the centroid, V the power vertex, r the
+ *     inradius (0 for an equilateral triangle without weights).
+ *  q3 (per edge): |M - (p + q)/2| / l, offset of the crossing from the
+ *     primal edge midpoint (0 without weights).
+ *  q4 (per edge): |M - (V1 + V2)/2| / l, offset of the crossing from the dual
+ *     edge midpoint; on a boundary edge |V - M| / (2 l).
+ *  q5 (per edge): |V1 - V2| / (l / sqrt 3), dual edge length over the ideal
+ *     (1 on an equilateral lattice); on a boundary edge |V - M| / (l / (2 sqrt 3)).
+ * Histograms of q1, q2 count triangles; those of q3, q4, q5 count interior
+ * edges only (a boundary edge's dual half edge ends at the crossing by
+ * construction). Bin edges are given per value; the last bin of q2..q5 is
+ * open (it counts every larger value).
+ */
 typedef enum cvm_histogram {
     CVM_HIST_ANGLE_DEG = 1, /**< 18 bins of 10 degrees: [0,10), ..., [170,180] */
-    CVM_HIST_DEGREE = 2     /**< 16 bins: interior vertex degree 0..14, and >= 15 */
+    CVM_HIST_DEGREE = 2,    /**< 16 bins: interior vertex degree 0..14, and >= 15 */
+    CVM_HIST_Q1 = 3,        /**< 12 bins of 5 degrees: [0,5), ..., [55,60] */
+    CVM_HIST_Q2 = 4,        /**< 20 bins of 0.25: [0,0.25), ..., [4.5,4.75), [4.75,inf) */
+    CVM_HIST_Q3 = 5,        /**< 20 bins of 0.05: [0,0.05), ..., [0.9,0.95), [0.95,inf) */
+    CVM_HIST_Q4 = 6,        /**< 20 bins of 0.05: [0,0.05), ..., [0.9,0.95), [0.95,inf) */
+    CVM_HIST_Q5 = 7         /**< 20 bins of 0.1: [0,0.1), ..., [1.8,1.9), [1.9,inf) */
 } cvm_histogram;
 
 /**
@@ -1098,12 +1242,38 @@ CVM_API cvm_status cvm_mesh_get_measure(double *out, cvm_mesh *m, cvm_measure wh
 
 /**
  * Copy histogram @p which as counts (doubles, so one typemap serves all outputs).
- * @param dst_len  capacity; CVM_HIST_ANGLE_DEG needs 18, CVM_HIST_DEGREE 16.
+ * @param dst_len  capacity; CVM_HIST_ANGLE_DEG needs 18, CVM_HIST_DEGREE 16,
+ *                 CVM_HIST_Q1 12, CVM_HIST_Q2 .. CVM_HIST_Q5 20.
  * @return CVM_OK, CVM_E_NULL_ARG, CVM_E_ARGUMENT, CVM_E_STATE, CVM_E_BUFFER_TOO_SMALL, CVM_E_NOMEM
  * @since 0.1
  */
 CVM_API cvm_status cvm_mesh_copy_histogram(double *dst, size_t dst_len, cvm_mesh *m,
                                            cvm_histogram which);
+
+/**
+ * Copy the per-element values of dual quality measure @p which (see
+ * cvm_histogram): for CVM_HIST_Q1 and CVM_HIST_Q2 one value per triangle in
+ * CVM_ENT_TRIANGLE order; for CVM_HIST_Q3, CVM_HIST_Q4 and CVM_HIST_Q5 one
+ * value per edge in CVM_ENT_EDGE order (boundary edges included, with the
+ * half-edge definitions). Fresh each call; O(triangles + edges log edges).
+ *
+ * @param dst      receives the values.
+ * @param dst_len  capacity in doubles: >= the triangle count (q1, q2) or the
+ *                 edge count (q3..q5).
+ * @param m        mesh handle; not NULL.
+ * @param which    CVM_HIST_Q1 .. CVM_HIST_Q5.
+ * Units:          q1 degrees; q2..q5 dimensionless.
+ * Thread-safety:  must not run concurrently with a call that modifies @p m.
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG          m is NULL, or dst is NULL while dst_len > 0
+ *         CVM_E_ARGUMENT          which is not CVM_HIST_Q1 .. CVM_HIST_Q5
+ *         CVM_E_BUFFER_TOO_SMALL  dst_len too short (nothing written)
+ *         CVM_E_NOMEM
+ * (A const handle: the last error and its message are left alone.)
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_mesh_copy_dual_quality(double *dst, size_t dst_len, const cvm_mesh *m,
+                                              cvm_histogram which);
 
 #ifdef __cplusplus
 }

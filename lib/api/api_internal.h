@@ -67,6 +67,17 @@ cvm_status cvm__refine_measure(double *out, const cvm_mesh *m, cvm_measure which
  * (lib/api/dual.c); m has triangles. CVM_OK, CVM_E_ARGUMENT, CVM_E_NOMEM. */
 cvm_status cvm__dual_measure(double *out, cvm_mesh *m, cvm_measure which);
 
+/* The dual quality measures CVM_MEASURE_Q* and histograms CVM_HIST_Q*
+ * (lib/api/dual_quality.c); m has triangles. Set the message on error. */
+cvm_status cvm__dual_quality_measure(double *out, cvm_mesh *m, cvm_measure which);
+cvm_status cvm__dual_quality_histogram(double *dst, size_t dst_len, cvm_mesh *m,
+                                       cvm_histogram which);
+
+/* cvm_mesh_read() of a .vtu file (lib/api/mesh_read_vtu.c): m ends up
+ * triangulated, with weights, equal to the file's mesh; on error m is unchanged
+ * and the message names the file and the offending line or item. */
+cvm_status cvm__mesh_read_vtu(cvm_mesh *m, const char *path);
+
 /* With weights set: *out receives a fresh array of nattr + 1 values per
  * vertex, the weight first, then the point attributes (free with cvm__free);
  * without weights *out is NULL. CVM_OK or CVM_E_NOMEM (no message). */

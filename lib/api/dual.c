@@ -363,3 +363,42 @@ cvm_status cvm__mesh_weight_attributes(cvm_mesh *m, double **out)
     *out = a;
     return CVM_OK;
 }
+
+cvm_status cvm__dual_edge_ends(cvm__ctx *ctx, const cvm__tri2 *T, const cvm__edges *e, double *ends)
+{
+    uint8_t *have = cvm__calloc(ctx, e->n + 1, 1);
+    size_t t;
+    int j;
+    if (!have)
+        return CVM_E_NOMEM;
+    for (t = 0; t < T->nt; t++) {
+        const int32_t *v = T->tv + 3 * t;
+        double V[2];
+        if (!cvm__tri2_in_domain(T, (int32_t)t))
+            continue;
+        tri_vertex(T, t, V);
+        for (j = 0; j < 3; j++) {
+            int32_t a = v[(j + 1) % 3], b = v[(j + 2) % 3];
+            ptrdiff_t k = find_edge(e, a, b);
+            double *x;
+            if (k < 0)
+                continue; /* cannot happen: e holds every domain edge */
+            x = ends + 4 * k;
+            if (e->bnd[k]) {
+                x[0] = V[0];
+                x[1] = V[1];
+                cvm__power_foot2d(T->xy + 2 * (size_t)a, T->xy + 2 * (size_t)b, weight(T, a),
+                                  weight(T, b), x + 2);
+            } else if (have[k]) {
+                x[2] = V[0];
+                x[3] = V[1];
+            } else {
+                x[0] = V[0];
+                x[1] = V[1];
+                have[k] = 1;
+            }
+        }
+    }
+    cvm__free(ctx, have);
+    return CVM_OK;
+}

@@ -91,6 +91,7 @@ cvm_status cvm__mesh_out_build(cvm_mesh *m, cvm__mesh_out *mo, int want_edges, i
             return cvm__nomem(&m->ctx);
         mo->vattr = wa;
         mo->nattr++;
+        mo->weight = m->tri.w;
     }
     if (gather_triangles(m, mo, want_quality) || gather_edges(m, mo, 1) ||
         (want_edges && gather_edges(m, mo, 0))) {

@@ -34,6 +34,19 @@ cvm_status cvm__domain_edges(cvm__ctx *ctx, const cvm__tri2 *T, int constrained_
                              cvm__edges *out);
 void cvm__edges_free(cvm__ctx *ctx, cvm__edges *e);
 
+/* Ends of the dual edge of every edge of e (from cvm__domain_edges with
+ * constrained_only = 0), 4 doubles per edge into ends: the power vertices of
+ * its two triangles (the first in slot order first), or for a boundary edge
+ * the power vertex of its triangle and the edge's power-bisector foot.
+ * Constructions: plain doubles. CVM_OK or CVM_E_NOMEM (no message). */
+cvm_status cvm__dual_edge_ends(cvm__ctx *ctx, const cvm__tri2 *T, const cvm__edges *e, double *ends);
+
+/* The dual cell polygons of every vertex of T (lib/api/dual_cells.c): off
+ * (nv + 1 entries) receives the CSR offsets; xy, when not NULL, receives 2
+ * doubles per corner (2 * off[nv]). CVM_OK, CVM_E_NOMEM or CVM_E_TOO_LARGE
+ * (no message). */
+cvm_status cvm__dual_cells(cvm__ctx *ctx, const cvm__tri2 *T, int32_t *off, double *xy);
+
 /* Marker of input segment seg of m: its marker, or 1 when the input has no
  * segment markers (Triangle's default boundary marker); 0 for seg < 0. */
 int32_t cvm__segment_marker(const cvm_mesh *m, int32_t seg);

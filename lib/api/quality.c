@@ -198,6 +198,9 @@ cvm_status cvm_mesh_get_measure(double *out, cvm_mesh *m, cvm_measure which)
     if ((int)which >= (int)CVM_MEASURE_DUAL_OUTSIDE_PCT &&
         (int)which <= (int)CVM_MEASURE_VANISHED_VERTICES)
         return (s = need_triangles(m)) ? s : cvm__dual_measure(out, m, which); /* lib/api/dual.c */
+    if ((int)which >= (int)CVM_MEASURE_Q1_MEAN_DEG &&
+        (int)which <= (int)CVM_MEASURE_Q5_MIN_BOUNDARY) /* lib/api/dual_quality.c */
+        return (s = need_triangles(m)) ? s : cvm__dual_quality_measure(out, m, which);
     if ((int)which < (int)CVM_MEASURE_MIN_ANGLE_DEG || (int)which > (int)CVM_MEASURE_MIN_AREA)
         return cvm__error(&m->ctx, CVM_E_ARGUMENT, CVM_ENT_NONE, -1, "unknown measure %d",
                           (int)which);
@@ -237,11 +240,13 @@ cvm_status cvm_mesh_copy_histogram(double *dst, size_t dst_len, cvm_mesh *m, cvm
     CVM__BEGIN(m);
     if (!dst)
         return cvm__error(&m->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "dst is NULL");
-    if (which != CVM_HIST_ANGLE_DEG && which != CVM_HIST_DEGREE)
+    if ((int)which < (int)CVM_HIST_ANGLE_DEG || (int)which > (int)CVM_HIST_Q5)
         return cvm__error(&m->ctx, CVM_E_ARGUMENT, CVM_ENT_NONE, -1, "unknown histogram %d",
                           (int)which);
     if ((s = need_triangles(m)))
         return s;
+    if ((int)which >= (int)CVM_HIST_Q1) /* lib/api/dual_quality.c */
+        return cvm__dual_quality_histogram(dst, dst_len, m, which);
     need = which == CVM_HIST_ANGLE_DEG ? NBIN_ANGLE : NBIN_DEGREE;
     if (dst_len < need)
         return cvm__error(&m->ctx, CVM_E_BUFFER_TOO_SMALL, CVM_ENT_NONE, -1,

@@ -50,6 +50,18 @@ void cli_print_option_flags(FILE *f, unsigned cmd);
 /* Print the quality report of m (after triangulation) to f. Returns
  * CLI_EXIT_OK, or CLI_EXIT_FAIL after printing the library's error. */
 int cli_print_quality(FILE *f, cvm_mesh *m);
+/* The power-dual part of the report (also printed by cli_print_quality):
+ * containment, smallest dual edge, time-step proxy, q1-q5 summaries and
+ * histograms. Returns CLI_EXIT_OK or CLI_EXIT_FAIL (error printed). */
+int cli_print_dual_quality(FILE *f, cvm_mesh *m);
+
+/* 1 when m already holds triangles after cvm_mesh_read() (a .vtu input):
+ * the command then skips cvm_mesh_triangulate(). */
+int cli_is_triangulated(const cvm_mesh *m);
+
+/* Write the dual cells of m to path (--dual); on error print it and return
+ * CLI_EXIT_FAIL. */
+int cli_write_dual(cvm_mesh *m, const char *path);
 
 /* Monotonic seconds. */
 double cli_now(void);

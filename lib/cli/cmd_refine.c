@@ -1,7 +1,7 @@
 /*
- * cmd_refine.c - `cvmesh refine IN.poly [--algo delaunay|frontal|aflr] [--size H]
- * [-o OUT] [--svg PIC.svg] [--quality] [option flags]`: read, triangulate,
- * refine, write, report.
+ * cmd_refine.c - `cvmesh refine IN.poly|IN.vtu [--algo delaunay|frontal|aflr] [--size H]
+ * [-o OUT] [--svg PIC.svg] [--dual DUAL.vtu] [--quality] [option flags]`: read,
+ * triangulate (unless the input is a mesh), refine, write, report.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -10,7 +10,7 @@
 #include "cli.h"
 
 typedef struct rargs {
-    const char *in, *out, *svg;
+    const char *in, *out, *svg, *dual;
     int quality;
     cvm_algorithm algo;
     double size; /* 0: none */
@@ -22,11 +22,12 @@ typedef struct rargs {
 void cli_refine_help(FILE *f)
 {
     fprintf(f,
-            "usage: cvmesh refine IN.poly [--algo delaunay|frontal] [--size H] [-o OUT]\n"
-            "                     [--svg PIC.svg] [--quality] [option flags]\n"
+            "usage: cvmesh refine IN.poly|IN.vtu [--algo delaunay|frontal] [--size H] [-o OUT]\n"
+            "                     [--svg PIC.svg] [--dual DUAL.vtu] [--quality] [option flags]\n"
             "\n"
             "Constrained Delaunay triangulation of IN, then refinement until every triangle\n"
             "meets the minimum angle, the size H and the maximum area. Segments are kept.\n"
+            "A .vtu mesh is read as it is (with its weights) and refined further.\n"
             "\n"
             "  --algo NAME                delaunay (Delaunay refinement, default) or frontal\n"
             "                             (frontal-Delaunay: more regular triangles); aflr is\n"
@@ -38,7 +39,10 @@ void cli_refine_help(FILE *f)
             "                             of distance (default 4)\n"
             "  -o, --output OUT           write the mesh (.vtu, .msh, .svg, .node)\n"
             "  --svg PIC.svg              also draw the mesh, coloured by smallest angle\n"
-            "  --quality                  print the quality report and the refinement report\n"
+            "  --dual DUAL.vtu            write the power (Voronoi) cells as VTK polygons with\n"
+            "                             vertex id, area and weight\n"
+            "  --quality                  print the quality report (with the dual's q1-q5) and\n"
+            "                             the refinement report\n"
             "  -h, --help                 print this help\n");
     cli_print_option_flags(f, CLI_CMD_REFINE);
     fprintf(f, "\nStopped by --max-steiner or --time-limit the mesh is still valid and written;\n"
@@ -87,6 +91,8 @@ static int parse_value(rargs *a, int argc, char **argv, int *i)
     }
     if (strcmp(s, "--svg") == 0)
         a->svg = argv[*i];
+    else if (strcmp(s, "--dual") == 0)
+        a->dual = argv[*i];
     else
         a->out = argv[*i];
     return CLI_EXIT_OK;
@@ -106,7 +112,7 @@ static int parse(rargs *a, int argc, char **argv)
         }
         if (strcmp(s, "--algo") == 0 || strcmp(s, "--size") == 0 || strcmp(s, "--auto") == 0 ||
             strcmp(s, "--grading") == 0 || strcmp(s, "-o") == 0 ||
-            strcmp(s, "--output") == 0 || strcmp(s, "--svg") == 0) {
+            strcmp(s, "--output") == 0 || strcmp(s, "--svg") == 0 || strcmp(s, "--dual") == 0) {
             if ((r = parse_value(a, argc, argv, &i)))
                 return r;
             continue;
@@ -204,7 +210,7 @@ static int run(const rargs *a)
     }
     if (cvm_mesh_read(m, a->in) != CVM_OK)
         return rfail(m, sz, NULL);
-    if (cvm_mesh_triangulate(m) != CVM_OK)
+    if (!cli_is_triangulated(m) && cvm_mesh_triangulate(m) != CVM_OK) /* a .vtu is a mesh */
         return rfail(m, sz, a->in);
     s = cvm_mesh_refine(m, sz, a->algo);
     if (cvm_status_is_error(s))
@@ -215,6 +221,11 @@ static int run(const rargs *a)
         return rfail(m, sz, NULL);
     if (a->svg && cvm_mesh_write(m, a->svg) != CVM_OK)
         return rfail(m, sz, NULL);
+    if (a->dual && (rc = cli_write_dual(m, a->dual))) {
+        cvm_sizing_free(sz);
+        cvm_mesh_free(m);
+        return rc;
+    }
     if (a->quality) {
         if ((rc = cli_print_quality(stdout, m))) {
             cvm_sizing_free(sz);

@@ -1,13 +1,14 @@
 /*
- * cmd_triangulate.c - `cvmesh triangulate IN.poly|IN.node [-o OUT] [--svg PIC.svg]
- * [--quality] [--timings] [option flags]`: read, triangulate, write, report.
+ * cmd_triangulate.c - `cvmesh triangulate IN.poly|IN.node|IN.vtu [-o OUT] [--svg PIC.svg]
+ * [--dual DUAL.vtu] [--quality] [--timings] [option flags]`: read, triangulate
+ * (unless the input is a mesh), write, report.
  */
 #include <string.h>
 
 #include "cli.h"
 
 typedef struct args {
-    const char *in, *out, *svg;
+    const char *in, *out, *svg, *dual;
     int quality, timings;
     cli_setting set[CLI_MAX_SETTINGS];
     int nset;
@@ -22,18 +23,22 @@ typedef struct phases {
 void cli_triangulate_help(FILE *f)
 {
     fprintf(f,
-            "usage: cvmesh triangulate IN.poly|IN.node [-o OUT] [--svg PIC.svg] [--quality]\n"
-            "                          [--timings] [option flags]\n"
+            "usage: cvmesh triangulate IN.poly|IN.node|IN.vtu [-o OUT] [--svg PIC.svg]\n"
+            "                          [--dual DUAL.vtu] [--quality] [--timings] [option flags]\n"
             "\n"
             "Delaunay triangulation of the points of a .node file, or constrained Delaunay\n"
             "triangulation of the planar straight-line graph of a .poly file (Triangle's\n"
             "formats), with the exterior and holes removed and regional attributes assigned.\n"
+            "A .vtu mesh (as cvmesh writes it, with its weights) is read as it is, to\n"
+            "convert it, draw it, write its dual or report its quality.\n"
             "\n"
             "  -o, --output OUT           write the mesh; the extension chooses the format:\n"
             "                             .vtu (VTK XML), .msh (Gmsh 4.1), .svg (picture),\n"
             "                             .node (OUT.node + .ele + .edge beside each other)\n"
             "  --svg PIC.svg              also draw the mesh, coloured by smallest angle\n"
-            "  --quality                  print the quality report\n"
+            "  --dual DUAL.vtu            write the power (Voronoi) cells as VTK polygons with\n"
+            "                             vertex id, area and weight\n"
+            "  --quality                  print the quality report (with the dual's q1-q5)\n"
             "  --timings                  print 'phase: seconds' for read, triangulate,\n"
             "                             recover segments (from the first recovered segment,\n"
             "                             with carving), write\n"
@@ -60,13 +65,16 @@ static int parse(args *a, int argc, char **argv)
             cli_triangulate_help(stdout);
             return -1;
         }
-        if (strcmp(s, "-o") == 0 || strcmp(s, "--output") == 0 || strcmp(s, "--svg") == 0) {
+        if (strcmp(s, "-o") == 0 || strcmp(s, "--output") == 0 || strcmp(s, "--svg") == 0 ||
+            strcmp(s, "--dual") == 0) {
             if (i + 1 >= argc) {
                 fprintf(stderr, "cvmesh: %s needs a file name\n", s);
                 return CLI_EXIT_USAGE;
             }
             if (strcmp(s, "--svg") == 0)
                 a->svg = argv[++i];
+            else if (strcmp(s, "--dual") == 0)
+                a->dual = argv[++i];
             else
                 a->out = argv[++i];
             continue;
@@ -105,6 +113,10 @@ static int parse(args *a, int argc, char **argv)
     }
     if (a->svg && !has_ext(a->svg, ".svg")) {
         fprintf(stderr, "cvmesh: --svg %s: the file name must end in .svg\n", a->svg);
+        return CLI_EXIT_USAGE;
+    }
+    if (a->dual && !has_ext(a->dual, ".vtu")) {
+        fprintf(stderr, "cvmesh: --dual %s: the file name must end in .vtu\n", a->dual);
         return CLI_EXIT_USAGE;
     }
     return CLI_EXIT_OK;
@@ -171,7 +183,7 @@ static int run(const args *a)
     t_read = cli_now();
     if (a->timings)
         cvm_mesh_set_progress(m, on_progress, 1, &ph);
-    s = cvm_mesh_triangulate(m);
+    s = cli_is_triangulated(m) ? CVM_OK : cvm_mesh_triangulate(m); /* a .vtu is a mesh */
     if (s != CVM_OK)
         return fail(m, a->in);
     t_tri = cli_now();
@@ -182,6 +194,13 @@ static int run(const args *a)
     if (a->svg && cvm_mesh_write(m, a->svg) != CVM_OK) {
         remove_output(a->out); /* all outputs or none */
         return fail(m, NULL);
+    }
+    if (a->dual && (rc = cli_write_dual(m, a->dual))) {
+        remove_output(a->out);
+        if (a->svg)
+            remove(a->svg);
+        cvm_mesh_free(m);
+        return rc;
     }
     t_write = cli_now();
     if (a->quality && (rc = cli_print_quality(stdout, m))) {

@@ -1,4 +1,4 @@
-/* report.c - prints the quality report of --quality: counts, angles, regularity, degrees, dual edges. */
+/* report.c - prints the quality report of --quality: counts, angles, regularity, degrees, the power dual (q1-q5). */
 #include "cli.h"
 
 #define BAR 40
@@ -93,5 +93,94 @@ int cli_print_quality(FILE *f, cvm_mesh *m)
     if (n_interior == 0)
         fprintf(f, "  (no interior vertices)\n");
     bars(f, degree, 16, degree_labels);
+    return cli_print_dual_quality(f, m);
+}
+
+/* Labels "lo-hi" of nb bins of width w (the last open: "lo+"), into lab[nb][32]. */
+static void bin_labels(char (*lab)[32], size_t nb, double w)
+{
+    size_t i;
+    for (i = 0; i < nb; i++) {
+        if (i + 1 == nb)
+            snprintf(lab[i], sizeof lab[i], "%g+", w * (double)i);
+        else
+            snprintf(lab[i], sizeof lab[i], "%g-%g", w * (double)i, w * (double)(i + 1));
+    }
+}
+
+int cli_print_dual_quality(FILE *f, cvm_mesh *m)
+{
+    static const struct {
+        cvm_measure which;
+        const char *label, *fmt;
+    } rows[] = {
+        {CVM_MEASURE_DUAL_OUTSIDE_PCT, "power vertex outside", "%.3f %%"},
+        {CVM_MEASURE_DUAL_OUTSIDE_BOUNDARY_PCT, "  at the boundary", "%.3f %%"},
+        {CVM_MEASURE_MIN_DUAL_EDGE, "min dual edge", "%.6g"},
+        {CVM_MEASURE_TIME_STEP_PROXY, "time-step proxy", "%.6g"},
+        {CVM_MEASURE_VANISHED_VERTICES, "vanished vertices", "%.0f"},
+        {CVM_MEASURE_Q1_MEAN_DEG, "q1 mean min angle", "%.4g deg"},
+        {CVM_MEASURE_Q1_MIN_BOUNDARY_DEG, "q1 min at the boundary", "%.4g deg"},
+        {CVM_MEASURE_Q2_MAX, "q2 max", "%.4g"},
+        {CVM_MEASURE_Q2_MEAN, "q2 mean", "%.4g"},
+        {CVM_MEASURE_Q2_MAX_BOUNDARY, "q2 max at the boundary", "%.4g"},
+        {CVM_MEASURE_Q3_MAX, "q3 max", "%.4g"},
+        {CVM_MEASURE_Q4_MAX, "q4 max", "%.4g"},
+        {CVM_MEASURE_Q5_MIN, "q5 min", "%.4g"},
+        {CVM_MEASURE_Q5_MEAN, "q5 mean", "%.4g"},
+        {CVM_MEASURE_Q5_MIN_BOUNDARY, "q5 min at the boundary", "%.4g"},
+    };
+    static const struct {
+        cvm_histogram which;
+        size_t nb;
+        double w;
+        const char *title;
+    } hists[] = {
+        {CVM_HIST_Q1, 12, 5, "q1 histogram (min angle, degrees: triangles)"},
+        {CVM_HIST_Q2, 20, 0.25, "q2 histogram (|centroid - power vertex| / inradius: triangles)"},
+        {CVM_HIST_Q3, 20, 0.05, "q3 histogram (crossing offset from the edge midpoint / l: interior edges)"},
+        {CVM_HIST_Q4, 20, 0.05, "q4 histogram (crossing offset from the dual edge midpoint / l: interior edges)"},
+        {CVM_HIST_Q5, 20, 0.1, "q5 histogram (dual edge / (l / sqrt 3): interior edges)"},
+    };
+    const char *lp[20];
+    char lab[20][32];
+    double h[20], v;
+    size_t i, k;
+    fprintf(f, "power dual (q3-q5 over the local size l = primal edge length)\n");
+    for (i = 0; i < sizeof rows / sizeof rows[0]; i++) {
+        if (cvm_mesh_get_measure(&v, m, rows[i].which) != CVM_OK) {
+            fprintf(stderr, "cvmesh: quality: %s\n", cvm_mesh_errmsg(m));
+            return CLI_EXIT_FAIL;
+        }
+        fprintf(f, "%-28s ", rows[i].label);
+        fprintf(f, rows[i].fmt, v);
+        fputc('\n', f);
+    }
+    for (i = 0; i < sizeof hists / sizeof hists[0]; i++) {
+        if (cvm_mesh_copy_histogram(h, 20, m, hists[i].which) != CVM_OK) {
+            fprintf(stderr, "cvmesh: quality: %s\n", cvm_mesh_errmsg(m));
+            return CLI_EXIT_FAIL;
+        }
+        bin_labels(lab, hists[i].nb, hists[i].w);
+        for (k = 0; k < hists[i].nb; k++)
+            lp[k] = lab[k];
+        fprintf(f, "%s\n", hists[i].title);
+        bars(f, h, hists[i].nb, lp);
+    }
+    return CLI_EXIT_OK;
+}
+
+int cli_is_triangulated(const cvm_mesh *m)
+{
+    size_t n = 0;
+    return cvm_mesh_count(&n, m, CVM_ENT_TRIANGLE) == CVM_OK && n > 0;
+}
+
+int cli_write_dual(cvm_mesh *m, const char *path)
+{
+    if (cvm_mesh_write_dual(m, path) != CVM_OK) {
+        fprintf(stderr, "cvmesh: --dual: %s\n", cvm_mesh_errmsg(m));
+        return CLI_EXIT_FAIL;
+    }
     return CLI_EXIT_OK;
 }

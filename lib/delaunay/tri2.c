@@ -26,6 +26,7 @@ void cvm__tri2_destroy(cvm__tri2 *T)
     cvm__free(ctx, T->stack);
     cvm__free(ctx, T->cav);
     cvm__free(ctx, T->bnd);
+    cvm__free(ctx, T->bta);
     cvm__tri2_init(T, ctx);
 }
 

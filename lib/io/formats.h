@@ -11,6 +11,8 @@
 
 /* VTK XML UnstructuredGrid, ASCII (write_vtu.c). */
 cvm_status cvm__write_vtu(cvm__writer *w, cvm__ctx *ctx, const cvm__mesh_out *mo);
+/* The power cells as VTK polygons (write_vtu.c). */
+void cvm__write_dual_vtu(cvm__writer *w, const cvm__dual_out *d);
 /* Gmsh MSH 4.1, ASCII (write_msh.c). */
 cvm_status cvm__write_msh(cvm__writer *w, cvm__ctx *ctx, const cvm__mesh_out *mo);
 /* Triangle .node, .ele and .edge, 0-based (write_triangle.c). */

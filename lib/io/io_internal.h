@@ -57,6 +57,26 @@ cvm_status cvm__read_triangle_format(cvm__ctx *ctx, cvm__reader *r, const char *
  * reads the points from the .node of the same stem. */
 cvm_status cvm__read_file(cvm__ctx *ctx, const char *path, cvm__pslg *p);
 
+/* A triangle mesh read from a VTK XML unstructured grid (read_vtu.c). */
+typedef struct cvm__vtu_mesh {
+    cvm__pslg p;      /* points, point markers and attributes; seg/smark: the line cells
+                         (VTK type 3) and their cell data "marker" (smark NULL without it) */
+    int32_t *tri;     /* 3*nt: the triangle cells (VTK type 5), as in the file */
+    size_t nt;
+    double *w;        /* np or NULL: point data "weight" */
+    double *tattr;    /* nt or NULL: cell data "attribute" of the triangles */
+    int has_lines;    /* 1 when the file has line cells */
+} cvm__vtu_mesh;
+
+/* Parse .vtu text from r (name for messages "name:line: ..."). Returns CVM_OK,
+ * CVM_E_IO_READ, CVM_E_IO_FORMAT (malformed; an index out of range), CVM_E_UNSUPPORTED
+ * (binary/appended/compressed data, other cell types), CVM_E_INPUT_NONFINITE,
+ * CVM_E_TOO_LARGE, CVM_E_NOMEM; out is zeroed on error. */
+cvm_status cvm__read_vtu(cvm__ctx *ctx, cvm__reader *r, const char *name, cvm__vtu_mesh *out);
+/* The same from the file at path (CVM_E_IO_OPEN too). */
+cvm_status cvm__read_vtu_file(cvm__ctx *ctx, const char *path, cvm__vtu_mesh *out);
+void cvm__vtu_mesh_free(cvm__ctx *ctx, cvm__vtu_mesh *vm);
+
 /* ---- output: a finished mesh, borrowed arrays ---- */
 typedef struct cvm__mesh_out {
     const double *xy;    /* 2*nv */
@@ -74,7 +94,20 @@ typedef struct cvm__mesh_out {
     const int32_t *smark;/* nseg or NULL */
     size_t nseg;
     const double *tquality; /* nt or NULL: per-triangle value for SVG colouring (min angle, degrees) */
+    const double *weight;   /* nv or NULL: vertex weights; when set, vattr's first column
+                               holds them too (.node writes it; .vtu writes "weight" apart) */
 } cvm__mesh_out;
+
+/* ---- output: the power cells of a mesh (polygons), borrowed arrays ---- */
+typedef struct cvm__dual_out {
+    const double *xy;      /* 2*ncorner: the corners of every cell, cell after cell */
+    size_t ncorner;
+    const int32_t *off;    /* ncell+1: cell c has corners off[c] .. off[c+1]-1 */
+    size_t ncell;
+    const int32_t *vertex; /* ncell: the mesh vertex of each cell */
+    const double *area;    /* ncell */
+    const double *weight;  /* ncell */
+} cvm__dual_out;
 
 /* Output formats, chosen by the extension of a path (case-insensitive). */
 typedef enum cvm__format {
@@ -116,5 +149,10 @@ void cvm__writer_discard(cvm__writer *w);
  * .node -> PREFIX.node/.ele/.edge, .svg). Returns CVM_OK, CVM_E_UNSUPPORTED,
  * CVM_E_IO_OPEN, CVM_E_IO_WRITE, CVM_E_NOMEM; on error no file is left. */
 cvm_status cvm__write_file(cvm__ctx *ctx, const char *path, const cvm__mesh_out *mo);
+
+/* Write the cells as VTK polygons to path (.vtu; the caller checks the
+ * extension). CVM_OK, CVM_E_IO_OPEN, CVM_E_IO_WRITE, CVM_E_NOMEM; on error no
+ * file is left. */
+cvm_status cvm__write_dual_file(cvm__ctx *ctx, const char *path, const cvm__dual_out *d);
 
 #endif

@@ -95,3 +95,13 @@ cvm_status cvm__write_file(cvm__ctx *ctx, const char *path, const cvm__mesh_out 
         return write_triangle(ctx, path, mo);
     return write_one(ctx, path, mo, fmt);
 }
+
+cvm_status cvm__write_dual_file(cvm__ctx *ctx, const char *path, const cvm__dual_out *d)
+{
+    cvm__writer *w;
+    cvm_status s = cvm__writer_open(&w, ctx, path);
+    if (s)
+        return s;
+    cvm__write_dual_vtu(w, d);
+    return cvm__writer_commit(w);
+}

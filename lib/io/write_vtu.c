@@ -1,8 +1,12 @@
 /*
  * write_vtu.c - writes a mesh as a VTK XML UnstructuredGrid (.vtu, ASCII),
- * readable by ParaView and meshio: points (z = 0), triangles (VTK type 5),
- * point data "marker" (and "attribute" when there are point attributes), cell
- * data "attribute" (regional attribute) and "min_angle_deg" when given.
+ * readable by ParaView and meshio (and by read_vtu.c): points (z = 0),
+ * triangles (VTK type 5) and then the segments as lines (VTK type 3); point
+ * data "marker", "weight" (when weights are set) and "attribute" (the point
+ * attributes, when there are any); cell data "marker" (the segment marker of
+ * a line, 0 on a triangle), "attribute" (regional attribute) and
+ * "min_angle_deg" when given (0 on a line).
+ * Also the power cells of a mesh as VTK polygons (type 7).
  */
 #include "formats.h"
 
@@ -42,27 +46,54 @@ static void point_data(cvm__writer *w, const cvm__mesh_out *mo)
         cvm__writer_printf(w, "%ld%s", (long)(mo->vmark ? mo->vmark[v] : 0),
                            (v + 1) % PER_LINE == 0 || v + 1 == mo->nv ? "\n" : " ");
     end_array(w);
-    if (mo->vattr && mo->nattr) {
-        begin_array(w, "Float64", "attribute", mo->nattr);
-        doubles(w, mo->vattr, mo->nv * mo->nattr, mo->nattr);
+    if (mo->weight) {
+        begin_array(w, "Float64", "weight", 1);
+        doubles(w, mo->weight, mo->nv, 1);
+        end_array(w);
+    }
+    if (mo->vattr && mo->nattr > (mo->weight ? 1u : 0u)) {
+        size_t skip = mo->weight ? 1 : 0, na = mo->nattr - skip, v2, k;
+        begin_array(w, "Float64", "attribute", na);
+        for (v2 = 0; v2 < mo->nv; v2++)
+            for (k = 0; k < na; k++) {
+                cvm__writer_double(w, mo->vattr[v2 * mo->nattr + skip + k]);
+                cvm__writer_puts(w, k + 1 == na ? "\n" : " ");
+            }
         end_array(w);
     }
     cvm__writer_puts(w, "      </PointData>\n");
 }
 
+/* n doubles, then nzero zeros, one per line. */
+static void doubles_then_zeros(cvm__writer *w, const double *x, size_t n, size_t nzero)
+{
+    size_t i;
+    doubles(w, x, n, 1);
+    for (i = 0; i < nzero; i++)
+        cvm__writer_puts(w, "0\n");
+}
+
 static void cell_data(cvm__writer *w, const cvm__mesh_out *mo)
 {
-    if (!mo->tattr && !mo->tquality)
+    size_t k;
+    if (!mo->tattr && !mo->tquality && !mo->nseg)
         return;
     cvm__writer_puts(w, "      <CellData>\n");
+    if (mo->nseg) {
+        begin_array(w, "Int32", "marker", 1);
+        for (k = 0; k < mo->nt + mo->nseg; k++)
+            cvm__writer_printf(w, "%ld%s", (long)(k < mo->nt || !mo->smark ? 0 : mo->smark[k - mo->nt]),
+                               (k + 1) % PER_LINE == 0 || k + 1 == mo->nt + mo->nseg ? "\n" : " ");
+        end_array(w);
+    }
     if (mo->tattr) {
         begin_array(w, "Float64", "attribute", 1);
-        doubles(w, mo->tattr, mo->nt, 1);
+        doubles_then_zeros(w, mo->tattr, mo->nt, mo->nseg);
         end_array(w);
     }
     if (mo->tquality) {
         begin_array(w, "Float64", "min_angle_deg", 1);
-        doubles(w, mo->tquality, mo->nt, 1);
+        doubles_then_zeros(w, mo->tquality, mo->nt, mo->nseg);
         end_array(w);
     }
     cvm__writer_puts(w, "      </CellData>\n");
@@ -70,21 +101,25 @@ static void cell_data(cvm__writer *w, const cvm__mesh_out *mo)
 
 static void cells(cvm__writer *w, const cvm__mesh_out *mo)
 {
-    size_t t;
+    size_t t, n = mo->nt + mo->nseg;
     cvm__writer_puts(w, "      <Cells>\n");
     begin_array(w, "Int32", "connectivity", 1);
     for (t = 0; t < mo->nt; t++)
         cvm__writer_printf(w, "%ld %ld %ld\n", (long)mo->tri[3 * t], (long)mo->tri[3 * t + 1],
                            (long)mo->tri[3 * t + 2]);
+    for (t = 0; t < mo->nseg; t++)
+        cvm__writer_printf(w, "%ld %ld\n", (long)mo->seg[2 * t], (long)mo->seg[2 * t + 1]);
     end_array(w);
     begin_array(w, "Int64", "offsets", 1);
-    for (t = 0; t < mo->nt; t++)
-        cvm__writer_printf(w, "%lu%s", (unsigned long)(3 * (t + 1)),
-                           (t + 1) % PER_LINE == 0 || t + 1 == mo->nt ? "\n" : " ");
+    for (t = 0; t < n; t++)
+        cvm__writer_printf(w, "%lu%s",
+                           (unsigned long)(t < mo->nt ? 3 * (t + 1) : 3 * mo->nt + 2 * (t + 1 - mo->nt)),
+                           (t + 1) % PER_LINE == 0 || t + 1 == n ? "\n" : " ");
     end_array(w);
     begin_array(w, "UInt8", "types", 1);
-    for (t = 0; t < mo->nt; t++)
-        cvm__writer_puts(w, (t + 1) % PER_LINE == 0 || t + 1 == mo->nt ? "5\n" : "5 ");
+    for (t = 0; t < n; t++)
+        cvm__writer_puts(w, t < mo->nt ? ((t + 1) % PER_LINE == 0 || t + 1 == n ? "5\n" : "5 ")
+                                       : ((t + 1) % PER_LINE == 0 || t + 1 == n ? "3\n" : "3 "));
     end_array(w);
     cvm__writer_puts(w, "      </Cells>\n");
 }
@@ -97,7 +132,7 @@ cvm_status cvm__write_vtu(cvm__writer *w, cvm__ctx *ctx, const cvm__mesh_out *mo
                         "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
                         "  <UnstructuredGrid>\n");
     cvm__writer_printf(w, "    <Piece NumberOfPoints=\"%lu\" NumberOfCells=\"%lu\">\n",
-                       (unsigned long)mo->nv, (unsigned long)mo->nt);
+                       (unsigned long)mo->nv, (unsigned long)(mo->nt + mo->nseg));
     point_data(w, mo);
     cell_data(w, mo);
     cvm__writer_puts(w, "      <Points>\n");
@@ -113,4 +148,52 @@ cvm_status cvm__write_vtu(cvm__writer *w, cvm__ctx *ctx, const cvm__mesh_out *mo
     cells(w, mo);
     cvm__writer_puts(w, "    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n");
     return CVM_OK;
+}
+
+void cvm__write_dual_vtu(cvm__writer *w, const cvm__dual_out *d)
+{
+    size_t c, k;
+    cvm__writer_puts(w, "<?xml version=\"1.0\"?>\n"
+                        "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+                        "  <UnstructuredGrid>\n");
+    cvm__writer_printf(w, "    <Piece NumberOfPoints=\"%lu\" NumberOfCells=\"%lu\">\n",
+                       (unsigned long)d->ncorner, (unsigned long)d->ncell);
+    cvm__writer_puts(w, "      <CellData Scalars=\"area\">\n");
+    begin_array(w, "Int32", "vertex", 1);
+    for (c = 0; c < d->ncell; c++)
+        cvm__writer_printf(w, "%ld%s", (long)d->vertex[c],
+                           (c + 1) % PER_LINE == 0 || c + 1 == d->ncell ? "\n" : " ");
+    end_array(w);
+    begin_array(w, "Float64", "area", 1);
+    doubles(w, d->area, d->ncell, 1);
+    end_array(w);
+    begin_array(w, "Float64", "weight", 1);
+    doubles(w, d->weight, d->ncell, 1);
+    end_array(w);
+    cvm__writer_puts(w, "      </CellData>\n      <Points>\n");
+    begin_array(w, "Float64", "coordinates", 3);
+    for (k = 0; k < d->ncorner; k++) {
+        cvm__writer_double(w, d->xy[2 * k]);
+        cvm__writer_puts(w, " ");
+        cvm__writer_double(w, d->xy[2 * k + 1]);
+        cvm__writer_puts(w, " 0\n");
+    }
+    end_array(w);
+    cvm__writer_puts(w, "      </Points>\n      <Cells>\n");
+    begin_array(w, "Int32", "connectivity", 1);
+    for (c = 0; c < d->ncell; c++)
+        for (k = (size_t)d->off[c]; k < (size_t)d->off[c + 1]; k++)
+            cvm__writer_printf(w, "%lu%s", (unsigned long)k,
+                               k + 1 == (size_t)d->off[c + 1] ? "\n" : " ");
+    end_array(w);
+    begin_array(w, "Int64", "offsets", 1);
+    for (c = 0; c < d->ncell; c++)
+        cvm__writer_printf(w, "%lu%s", (unsigned long)d->off[c + 1],
+                           (c + 1) % PER_LINE == 0 || c + 1 == d->ncell ? "\n" : " ");
+    end_array(w);
+    begin_array(w, "UInt8", "types", 1);
+    for (c = 0; c < d->ncell; c++)
+        cvm__writer_puts(w, (c + 1) % PER_LINE == 0 || c + 1 == d->ncell ? "7\n" : "7 ");
+    end_array(w);
+    cvm__writer_puts(w, "      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n");
 }

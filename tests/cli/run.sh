@@ -200,6 +200,29 @@ expect_one_line "duplicates rejected"
 rm -f "$OUT/crossing.poly" "$OUT/dup.node"
 expect_empty_dir "bad inputs" "$OUT"
 
+# ---- the power dual and .vtu input -------------------------------------------
+OUT=$TMP/dual
+mkdir "$OUT"
+expect_exit 0 "refine --dual --quality" "$CLI" refine "$SHARED/data/annulus.poly" --algo frontal \
+    --size 0.2 -o "$OUT/m.vtu" --dual "$OUT/d.vtu" --quality
+for want in "power vertex outside" "time-step proxy" "q1 mean min angle" "q2 max" "q3 max" \
+            "q4 max" "q5 min" "q5 min at the boundary" "q5 histogram"; do
+    expect_grep "refine --quality" "$TMP/out" "$want"
+done
+expect_grep "--dual" "$OUT/d.vtu" 'Name="area"'
+expect_grep "--dual" "$OUT/d.vtu" '<DataArray type="UInt8" Name="types" format="ascii">'
+expect_exit 0 "triangulate a .vtu mesh" "$CLI" triangulate "$OUT/m.vtu" -o "$OUT/m2.vtu" \
+    --dual "$OUT/d2.vtu" --quality
+if cmp -s "$OUT/m.vtu" "$OUT/m2.vtu"; then pass; else fail ".vtu read and written again differs"; fi
+if cmp -s "$OUT/d.vtu" "$OUT/d2.vtu"; then pass; else fail "the dual of the re-read .vtu differs"; fi
+expect_exit 0 "refine a .vtu mesh further" "$CLI" refine "$OUT/m.vtu" --size 0.1 -o "$OUT/m3.msh"
+expect_exit 2 "--dual needs .vtu" "$CLI" triangulate "$SHARED/data/square.poly" --dual "$OUT/d.svg"
+printf '<VTKFile type="UnstructuredGrid"><Piece NumberOfPoints="3" NumberOfCells="1">\n<Points>\n<DataArray NumberOfComponents="3" format="ascii">0 0 0 1 0 0 0 nan 0</DataArray></Points></Piece></VTKFile>\n' > "$OUT/nan.vtu"
+expect_exit 1 "NaN in a .vtu" "$CLI" triangulate "$OUT/nan.vtu" -o "$OUT/x.vtu"
+expect_grep "NaN in a .vtu" "$TMP/err" "nan.vtu:3: Points: value 7 is not finite"
+expect_one_line "NaN in a .vtu"
+if [ ! -e "$OUT/x.vtu" ]; then pass; else fail "NaN in a .vtu: output written"; fi
+
 # ---- failed writes: exit 1, nothing left ------------------------------------
 OUT=$TMP/write
 mkdir "$OUT"

@@ -78,8 +78,8 @@ REJECTED = -1
 Bounds = namedtuple("Bounds", "lo hi default is_integer")
 Bounds.__doc__ = "Bounds and default of an option (cvm_bounds)."
 
-# Histogram lengths (cvmesh.h: 18 angle bins, 16 degree bins).
-_HIST_BINS = {"ANGLE_DEG": 18, "DEGREE": 16}
+# Histogram lengths (cvmesh.h: 18 angle bins, 16 degree bins, q1 12, q2..q5 20).
+_HIST_BINS = {"ANGLE_DEG": 18, "DEGREE": 16, "Q1": 12, "Q2": 20, "Q3": 20, "Q4": 20, "Q5": 20}
 
 
 def version():
@@ -200,7 +200,8 @@ class Mesh:
 
     @classmethod
     def read(cls, path, **options):
-        """A mesh whose input is read from a Triangle .poly or .node file."""
+        """A mesh whose input is read from a Triangle .poly or .node file, or
+        a triangulated mesh (with its weights) read from a .vtu file."""
         mesh = cls(**options)
         mesh.load(path)
         return mesh
@@ -277,7 +278,8 @@ class Mesh:
             capi.cvm_mesh_set_regions(m, regions)
 
     def load(self, path):
-        """Replace the input by a Triangle .poly or .node file."""
+        """Replace the input by a Triangle .poly or .node file; a .vtu file
+        replaces the mesh too (triangulated, with its weights)."""
         with self._handle() as m, self._progress_installed(m, None, None):
             return self._finish(capi.cvm_mesh_read(m, os.fspath(path)))
 
@@ -550,6 +552,37 @@ class Mesh:
         with self._handle() as m:
             n = capi.cvm_mesh_count(m, Entity.EDGE)
             return capi.cvm_mesh_copy_dual_edge_lengths(n, m)
+
+    def dual_quality(self, which):
+        """Per-element dual quality values (see cvm_histogram in cvmesh.h):
+        which is a Histogram Q1..Q5 or its name ("q1".."q5"). q1 (min angle,
+        degrees) and q2 (|centroid - power vertex| / inradius) give one value
+        per triangle; q3, q4 (crossing offsets over the edge length) and q5
+        (dual edge over l / sqrt 3) one per edge, in the order of `edges`."""
+        if isinstance(which, str):
+            which = Histogram[which.upper()]
+        which = Histogram(which)
+        with self._handle() as m:
+            kind = Entity.TRIANGLE if which in (Histogram.Q1, Histogram.Q2) else Entity.EDGE
+            n = capi.cvm_mesh_count(m, kind)
+            return capi.cvm_mesh_copy_dual_quality(n, m, which)
+
+    @property
+    def dual_cells(self):
+        """The power (Voronoi) cell polygon of each vertex, restricted to the
+        domain, as CSR arrays (offsets, corners): offsets (n + 1,) int32, and
+        corners (k, 2) float64; vertex v's polygon is
+        corners[offsets[v]:offsets[v + 1]], counter-clockwise."""
+        with self._handle() as m:
+            n = capi.cvm_mesh_count(m, Entity.VERTEX)
+            offsets = capi.cvm_mesh_copy_dual_cell_offsets(n + 1, m)
+            k = int(offsets[-1])
+            return offsets, capi.cvm_mesh_copy_dual_cells(2 * k, m).reshape(k, 2)
+
+    def write_dual(self, path):
+        """Write the power cells as .vtu polygons (cell data vertex, area, weight)."""
+        with self._handle() as m:
+            capi.cvm_mesh_write_dual(m, os.fspath(path))
 
     @property
     def last_error(self):

@@ -11,5 +11,6 @@ TCase *api_threads_tcase(void);  /* test_threads.c: handles on concurrent thread
 TCase *api_output_tcase(void);   /* test_output.c: counts, copies, views (output.c, domain.c) */
 TCase *api_quality_tcase(void);  /* test_quality.c: measures and histograms (quality.c) */
 TCase *api_write_tcase(void);    /* test_write.c: cvm_mesh_write (mesh_write.c) */
+TCase *api_read_vtu_tcase(void); /* test_read_vtu.c: cvm_mesh_read of .vtu (mesh_read_vtu.c) */
 
 #endif

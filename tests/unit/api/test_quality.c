@@ -126,7 +126,7 @@ START_TEST(measures_need_triangles_and_valid_arguments)
     ck_assert_int_eq(cvm_mesh_get_measure(&v, NULL, CVM_MEASURE_AREA), CVM_E_NULL_ARG);
     ck_assert_int_eq(cvm_mesh_copy_histogram(h, 17, m, CVM_HIST_ANGLE_DEG), CVM_E_BUFFER_TOO_SMALL);
     ck_assert_int_eq(cvm_mesh_copy_histogram(h, 15, m, CVM_HIST_DEGREE), CVM_E_BUFFER_TOO_SMALL);
-    ck_assert_int_eq(cvm_mesh_copy_histogram(h, 18, m, (cvm_histogram)3), CVM_E_ARGUMENT);
+    ck_assert_int_eq(cvm_mesh_copy_histogram(h, 18, m, (cvm_histogram)8), CVM_E_ARGUMENT);
     ck_assert_int_eq(cvm_mesh_copy_histogram(NULL, 18, m, CVM_HIST_DEGREE), CVM_E_NULL_ARG);
     ck_assert_int_eq(cvm_mesh_get_measure(&v, m, CVM_MEASURE_AREA), CVM_OK);
     ck_assert_str_eq(cvm_mesh_errmsg(m), "");

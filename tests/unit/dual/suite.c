@@ -8,5 +8,7 @@ Suite *dual_suite(void)
     suite_add_tcase(s, dual_power_side_tcase());
     suite_add_tcase(s, dual_regular_tcase());
     suite_add_tcase(s, dual_api_tcase());
+    suite_add_tcase(s, dual_quality_tcase());
+    suite_add_tcase(s, dual_cells_tcase());
     return s;
 }

@@ -17,6 +17,7 @@ TCase *io_writer_tcase(void);        /* test_writer.c: writer.c */
 TCase *io_write_file_tcase(void);    /* test_write_file.c: write_file.c, OOM and failures */
 TCase *io_write_triangle_tcase(void);/* test_write_triangle.c: write_triangle.c round trip */
 TCase *io_write_vtu_tcase(void);     /* test_write_vtu.c */
+TCase *io_read_vtu_tcase(void);      /* test_read_vtu.c: read_vtu.c */
 TCase *io_write_msh_tcase(void);     /* test_write_msh.c */
 TCase *io_write_svg_tcase(void);     /* test_write_svg.c */
 

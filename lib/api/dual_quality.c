@@ -1,0 +1,249 @@
+/*
+ * dual_quality.c - the dual quality measures q1..q5 of the power dual
+ * (definitions in include/cvmesh.h, cvm_histogram) as per-element values,
+ * histograms and scalar summaries.
+ *
+ * Measures, not decisions: plain doubles throughout. The crossing of an
+ * edge's dual edge with the primal edge line is taken as the power-bisector
+ * foot M of the edge, which is where the line through the two power vertices
+ * meets it in exact arithmetic (both lie on the power bisector, which is
+ * perpendicular to the edge through M); intersecting the two lines in
+ * floating point would be ill-conditioned for short dual edges.
+ */
+#include <math.h>
+#include <string.h>
+
+#include "output_internal.h"
+#include "dual/dual_internal.h"
+
+#define SQRT3 1.7320508075688772935
+
+/* Every dual quality value of a mesh. */
+typedef struct dq {
+    size_t nt, ne;
+    double *q[6];  /* q[1], q[2]: nt values; q[3..5]: ne values; q[0] unused */
+    uint8_t *tb;   /* nt: the triangle has a vertex on the domain boundary */
+    uint8_t *eint; /* ne: interior edge (a domain triangle on both sides) */
+    uint8_t *eb;   /* ne: an endpoint lies on the domain boundary */
+} dq;
+
+static double vweight(const cvm__tri2 *T, int32_t v)
+{
+    return T->w ? T->w[v] : 0.0;
+}
+
+static void dq_free(cvm__ctx *ctx, dq *d)
+{
+    int k;
+    for (k = 1; k < 6; k++)
+        cvm__free(ctx, d->q[k]);
+    cvm__free(ctx, d->tb);
+    cvm__free(ctx, d->eint);
+    cvm__free(ctx, d->eb);
+    memset(d, 0, sizeof *d);
+}
+
+/* q1 and q2 of every domain triangle. */
+static void triangle_values(const cvm__tri2 *T, const uint8_t *on_bnd, dq *d)
+{
+    size_t t, k = 0;
+    for (t = 0; t < T->nt; t++) {
+        const int32_t *v = T->tv + 3 * t;
+        const double *a = T->xy + 2 * (size_t)v[0], *b = T->xy + 2 * (size_t)v[1],
+                     *c = T->xy + 2 * (size_t)v[2];
+        double V[2], C[2], area2, per, r;
+        if (!cvm__tri2_in_domain(T, (int32_t)t))
+            continue;
+        cvm__power_vertex2d(a, b, c, vweight(T, v[0]), vweight(T, v[1]), vweight(T, v[2]), V);
+        C[0] = (a[0] + b[0] + c[0]) / 3.0;
+        C[1] = (a[1] + b[1] + c[1]) / 3.0;
+        area2 = fabs((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
+        per = hypot(b[0] - a[0], b[1] - a[1]) + hypot(c[0] - b[0], c[1] - b[1]) +
+              hypot(a[0] - c[0], a[1] - c[1]);
+        r = area2 / per; /* inradius = 2 area / perimeter */
+        d->q[1][k] = cvm__min_angle_deg(a, b, c);
+        d->q[2][k] = hypot(C[0] - V[0], C[1] - V[1]) / r;
+        d->tb[k] = on_bnd[v[0]] || on_bnd[v[1]] || on_bnd[v[2]];
+        k++;
+    }
+}
+
+/* q3, q4 and q5 of every edge of e, from the dual edge ends. */
+static void edge_values(const cvm__tri2 *T, const cvm__edges *e, const double *ends,
+                        const uint8_t *on_bnd, dq *d)
+{
+    size_t k;
+    for (k = 0; k < e->n; k++) {
+        int32_t a = e->ev[2 * k], b = e->ev[2 * k + 1];
+        const double *p = T->xy + 2 * (size_t)a, *q = T->xy + 2 * (size_t)b, *x = ends + 4 * k;
+        double M[2], l = hypot(q[0] - p[0], q[1] - p[1]), dual = hypot(x[2] - x[0], x[3] - x[1]);
+        cvm__power_foot2d(p, q, vweight(T, a), vweight(T, b), M);
+        d->q[3][k] = hypot(M[0] - 0.5 * (p[0] + q[0]), M[1] - 0.5 * (p[1] + q[1])) / l;
+        if (e->bnd[k]) {
+            d->q[4][k] = dual / (2.0 * l);
+            d->q[5][k] = dual * 2.0 * SQRT3 / l;
+        } else {
+            d->q[4][k] = hypot(M[0] - 0.5 * (x[0] + x[2]), M[1] - 0.5 * (x[1] + x[3])) / l;
+            d->q[5][k] = dual * SQRT3 / l;
+        }
+        d->eint[k] = !e->bnd[k];
+        d->eb[k] = on_bnd[a] || on_bnd[b];
+    }
+}
+
+/* Compute every value of d for the domain of T. CVM_OK or CVM_E_NOMEM (no message). */
+static cvm_status dq_compute(cvm__ctx *ctx, const cvm__tri2 *T, dq *d)
+{
+    cvm__edges e;
+    double *ends = NULL;
+    uint8_t *on_bnd = NULL;
+    size_t k;
+    int j, fail = 0;
+    memset(d, 0, sizeof *d);
+    if (cvm__domain_edges(ctx, T, 0, &e))
+        return CVM_E_NOMEM;
+    d->nt = cvm__domain_triangles(T);
+    d->ne = e.n;
+    for (j = 1; j < 6; j++)
+        fail |= !(d->q[j] = cvm__malloc(ctx, ((j < 3 ? d->nt : d->ne) + 1) * sizeof(double)));
+    d->tb = cvm__malloc(ctx, d->nt + 1);
+    d->eint = cvm__malloc(ctx, d->ne + 1);
+    d->eb = cvm__malloc(ctx, d->ne + 1);
+    ends = cvm__malloc(ctx, (4 * e.n + 1) * sizeof *ends);
+    on_bnd = cvm__calloc(ctx, T->nv + 1, 1);
+    if (fail || !d->tb || !d->eint || !d->eb || !ends || !on_bnd ||
+        cvm__dual_edge_ends(ctx, T, &e, ends)) {
+        cvm__free(ctx, ends);
+        cvm__free(ctx, on_bnd);
+        cvm__edges_free(ctx, &e);
+        dq_free(ctx, d);
+        return CVM_E_NOMEM;
+    }
+    for (k = 0; k < e.n; k++)
+        if (e.bnd[k])
+            on_bnd[e.ev[2 * k]] = on_bnd[e.ev[2 * k + 1]] = 1;
+    triangle_values(T, on_bnd, d);
+    edge_values(T, &e, ends, on_bnd, d);
+    cvm__free(ctx, ends);
+    cvm__free(ctx, on_bnd);
+    cvm__edges_free(ctx, &e);
+    return CVM_OK;
+}
+
+cvm_status cvm_mesh_copy_dual_quality(double *dst, size_t dst_len, const cvm_mesh *m,
+                                      cvm_histogram which)
+{
+    cvm__ctx *ctx;
+    size_t nt = 0, ne = 0, ns = 0, need;
+    int w = (int)which - (int)CVM_HIST_Q1 + 1;
+    dq d;
+    if (!m)
+        return CVM_E_NULL_ARG;
+    if (w < 1 || w > 5)
+        return CVM_E_ARGUMENT;
+    if (!dst && dst_len)
+        return CVM_E_NULL_ARG;
+    if (m->triangulated) {
+        nt = cvm__domain_triangles(&m->tri);
+        cvm__domain_edge_counts(&m->tri, &ne, &ns);
+    }
+    need = w < 3 ? nt : ne;
+    if (dst_len < need)
+        return CVM_E_BUFFER_TOO_SMALL;
+    if (!need)
+        return CVM_OK;
+    ctx = (cvm__ctx *)&m->ctx; /* allocation does not change the handle */
+    if (dq_compute(ctx, &m->tri, &d))
+        return CVM_E_NOMEM;
+    memcpy(dst, d.q[w], need * sizeof *dst);
+    dq_free(ctx, &d);
+    return CVM_OK;
+}
+
+/* Bins of histogram w (1..5): count, width; the last bin of q2..q5 is open. */
+static void bins(int w, size_t *n, double *width)
+{
+    static const size_t k_n[6] = {0, 12, 20, 20, 20, 20};
+    static const double k_w[6] = {0, 5.0, 0.25, 0.05, 0.05, 0.1};
+    *n = k_n[w];
+    *width = k_w[w];
+}
+
+cvm_status cvm__dual_quality_histogram(double *dst, size_t dst_len, cvm_mesh *m,
+                                       cvm_histogram which)
+{
+    int w = (int)which - (int)CVM_HIST_Q1 + 1;
+    size_t nb, n, k;
+    double width;
+    dq d;
+    bins(w, &nb, &width);
+    if (dst_len < nb)
+        return cvm__error(&m->ctx, CVM_E_BUFFER_TOO_SMALL, CVM_ENT_NONE, -1,
+                          "histogram needs %lu entries, dst_len is %lu", (unsigned long)nb,
+                          (unsigned long)dst_len);
+    if (dq_compute(&m->ctx, &m->tri, &d))
+        return cvm__nomem(&m->ctx);
+    memset(dst, 0, nb * sizeof *dst);
+    n = w < 3 ? d.nt : d.ne;
+    for (k = 0; k < n; k++) {
+        double x = d.q[w][k], b;
+        if (w >= 3 && !d.eint[k])
+            continue; /* q3..q5 histograms count interior edges */
+        b = floor(x / width);
+        dst[!(b >= 0) ? 0 : b >= (double)nb ? nb - 1 : (size_t)b] += 1.0;
+    }
+    dq_free(&m->ctx, &d);
+    return CVM_OK;
+}
+
+/* Smallest, largest and mean of q[w] over the elements selected by sel. */
+typedef struct summary {
+    double min, max, mean;
+} summary;
+
+static summary summarise(const dq *d, int w, int boundary_only)
+{
+    summary s = {0, 0, 0};
+    size_t k, n = w < 3 ? d->nt : d->ne, cnt = 0;
+    double sum = 0;
+    for (k = 0; k < n; k++) {
+        double x = d->q[w][k];
+        if (w >= 3 && !d->eint[k])
+            continue;
+        if (boundary_only && !(w < 3 ? d->tb[k] : d->eb[k]))
+            continue;
+        if (cnt == 0 || x < s.min)
+            s.min = x;
+        if (cnt == 0 || x > s.max)
+            s.max = x;
+        sum += x;
+        cnt++;
+    }
+    s.mean = cnt ? sum / (double)cnt : 0.0;
+    return s;
+}
+
+cvm_status cvm__dual_quality_measure(double *out, cvm_mesh *m, cvm_measure which)
+{
+    dq d;
+    if (dq_compute(&m->ctx, &m->tri, &d))
+        return cvm__nomem(&m->ctx);
+    switch (which) {
+    case CVM_MEASURE_Q1_MEAN_DEG: *out = summarise(&d, 1, 0).mean; break;
+    case CVM_MEASURE_Q2_MAX: *out = summarise(&d, 2, 0).max; break;
+    case CVM_MEASURE_Q2_MEAN: *out = summarise(&d, 2, 0).mean; break;
+    case CVM_MEASURE_Q3_MAX: *out = summarise(&d, 3, 0).max; break;
+    case CVM_MEASURE_Q4_MAX: *out = summarise(&d, 4, 0).max; break;
+    case CVM_MEASURE_Q5_MIN: *out = summarise(&d, 5, 0).min; break;
+    case CVM_MEASURE_Q5_MEAN: *out = summarise(&d, 5, 0).mean; break;
+    case CVM_MEASURE_Q1_MIN_BOUNDARY_DEG: *out = summarise(&d, 1, 1).min; break;
+    case CVM_MEASURE_Q2_MAX_BOUNDARY: *out = summarise(&d, 2, 1).max; break;
+    case CVM_MEASURE_Q5_MIN_BOUNDARY: *out = summarise(&d, 5, 1).min; break;
+    default:
+        dq_free(&m->ctx, &d);
+        return cvm__error(&m->ctx, CVM_E_ARGUMENT, CVM_ENT_NONE, -1, "unknown measure %d",
+                          (int)which);
+    }
+    dq_free(&m->ctx, &d);
+    return CVM_OK;
+}

@@ -1,0 +1,632 @@
+/*
+ * mesh_read_vtu.c - cvm_mesh_read of a .vtu: rebuilds the triangulated,
+ * weighted mesh the file holds and proves it is the same mesh.
+ *
+ * The file's points become the input points (with their markers and
+ * attributes); its line cells, and the boundary edges of its triangle set,
+ * become segments (a file without line cells is first tried as the plain
+ * Delaunay triangulation of its points). The handle triangulates that PSLG;
+ * triangles that fill a hole of the file's domain seed hole points (one per
+ * connected region) and the PSLG is triangulated again; the weights of the
+ * point data "weight" are set (regular triangulation). When that does not
+ * give the file's triangles (weights under which some vertex has an empty
+ * power cell make the result depend on the starting triangulation), every
+ * inner edge of the file is inserted as a temporary constraint, so the
+ * triangulation is the file's, the constraints are dropped, the weights set,
+ * and the Lawson flips of cvm_mesh_set_weights() run: the file is accepted
+ * when they leave its triangles alone, i.e. when it is what
+ * cvm_mesh_set_weights() keeps. The result must have exactly the file's
+ * triangles (as vertex sets); then the kernel's triangle slots are reordered
+ * and rotated to the file's order and first vertices, so that writing the
+ * mesh again reproduces the file. Everything runs on a scratch handle that
+ * replaces the caller's only on success.
+ */
+#include <stdlib.h>
+#include <string.h>
+
+#include "output_internal.h"
+#include "geom/geom_internal.h"
+
+/* A triangle as its sorted vertex ids, and where it comes from. */
+typedef struct tkey {
+    int32_t v[3];
+    int32_t src;
+} tkey;
+
+static int cmp_key(const void *pa, const void *pb)
+{
+    const tkey *a = pa, *b = pb;
+    int k;
+    for (k = 0; k < 3; k++)
+        if (a->v[k] != b->v[k])
+            return a->v[k] < b->v[k] ? -1 : 1;
+    return a->src < b->src ? -1 : a->src > b->src;
+}
+
+static void make_key(tkey *k, int32_t a, int32_t b, int32_t c, int32_t src)
+{
+    int32_t t;
+    if (a > b) { t = a; a = b; b = t; }
+    if (b > c) { t = b; b = c; c = t; }
+    if (a > b) { t = a; a = b; b = t; }
+    k->v[0] = a;
+    k->v[1] = b;
+    k->v[2] = c;
+    k->src = src;
+}
+
+/* Sorted keys of the domain slots of T. */
+static tkey *slot_keys(cvm__ctx *ctx, const cvm__tri2 *T, size_t *n_out)
+{
+    size_t t, n = 0;
+    tkey *k = cvm__malloc(ctx, (cvm__domain_triangles(T) + 1) * sizeof *k);
+    if (!k)
+        return NULL;
+    for (t = 0; t < T->nt; t++)
+        if (cvm__tri2_in_domain(T, (int32_t)t))
+            make_key(&k[n++], T->tv[3 * t], T->tv[3 * t + 1], T->tv[3 * t + 2], (int32_t)t);
+    qsort(k, n, sizeof *k, cmp_key);
+    *n_out = n;
+    return k;
+}
+
+static int cmp_v(const int32_t *a, const int32_t *b)
+{
+    int k;
+    for (k = 0; k < 3; k++)
+        if (a[k] != b[k])
+            return a[k] < b[k] ? -1 : 1;
+    return 0;
+}
+
+/* src of an entry of keys (sorted) with the vertex set of key, or -1. */
+static int32_t find_slot(const tkey *keys, size_t n, const tkey *key)
+{
+    size_t lo = 0, hi = n;
+    while (lo < hi) {
+        size_t mid = lo + (hi - lo) / 2;
+        int c = cmp_v(keys[mid].v, key->v);
+        if (c == 0)
+            return keys[mid].src;
+        if (c < 0)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return -1;
+}
+
+/* Check the file's triangles: distinct corners, every point used; collect
+ * the edges used by one triangle only (boundary) into *bnd and those used by
+ * two (inner) into *inner (2 ids per edge). */
+static cvm_status file_checks(cvm_mesh *m, const char *path, const cvm__vtu_mesh *vm,
+                              int32_t **bnd, size_t *nbnd, int32_t **inner, size_t *ninner)
+{
+    size_t k, n = 0, ni = 0, i, ne = 3 * vm->nt;
+    uint8_t *used = cvm__calloc(&m->ctx, vm->p.np + 1, 1);
+    tkey *e = cvm__malloc(&m->ctx, (ne + 1) * sizeof *e);
+    int32_t *b = cvm__malloc(&m->ctx, (2 * ne + 1) * sizeof *b);
+    int32_t *in = cvm__malloc(&m->ctx, (ne + 1) * sizeof *in);
+    cvm_status s = CVM_OK;
+    *bnd = NULL;
+    *inner = NULL;
+    if (!used || !e || !b || !in) {
+        s = cvm__nomem(&m->ctx);
+        goto out;
+    }
+    if (vm->nt == 0) {
+        s = cvm__error(&m->ctx, CVM_E_INPUT_EMPTY, CVM_ENT_NONE, -1, "%s has no triangle cells", path);
+        goto out;
+    }
+    for (k = 0; k < vm->nt; k++) {
+        const int32_t *t = vm->tri + 3 * k;
+        if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) {
+            s = cvm__error(&m->ctx, CVM_E_INPUT_DEGENERATE, CVM_ENT_TRIANGLE, (int64_t)k,
+                           "%s: triangle %lu (points %ld %ld %ld) repeats a point", path,
+                           (unsigned long)k, (long)t[0], (long)t[1], (long)t[2]);
+            goto out;
+        }
+        for (i = 0; i < 3; i++) {
+            int32_t a = t[i], c = t[(i + 1) % 3];
+            used[a] = 1;
+            /* edge key: (lo, hi, -1) with src = triangle */
+            make_key(&e[3 * k + i], a < c ? a : c, a < c ? c : a, INT32_MAX, (int32_t)k);
+        }
+    }
+    for (i = 0; i < vm->p.np; i++)
+        if (!used[i]) {
+            s = cvm__error(&m->ctx, CVM_E_INPUT_DEGENERATE, CVM_ENT_INPUT_POINT, (int64_t)i,
+                           "%s: point %lu lies in no triangle", path, (unsigned long)i);
+            goto out;
+        }
+    qsort(e, ne, sizeof *e, cmp_key);
+    for (k = 0; k < ne; k = i) {
+        for (i = k + 1; i < ne && e[i].v[0] == e[k].v[0] && e[i].v[1] == e[k].v[1]; i++)
+            ;
+        if (i - k > 2) {
+            s = cvm__error(&m->ctx, CVM_E_INPUT_DEGENERATE, CVM_ENT_TRIANGLE, (int64_t)e[k + 2].src,
+                           "%s: edge %ld-%ld has more than two triangles (triangle %ld is one)",
+                           path, (long)e[k].v[0], (long)e[k].v[1], (long)e[k + 2].src);
+            goto out;
+        }
+        if (i - k == 1) {
+            b[2 * n] = e[k].v[0];
+            b[2 * n + 1] = e[k].v[1];
+            n++;
+        } else {
+            in[2 * ni] = e[k].v[0];
+            in[2 * ni + 1] = e[k].v[1];
+            ni++;
+        }
+    }
+    *bnd = b;
+    b = NULL;
+    *nbnd = n;
+    *inner = in;
+    in = NULL;
+    *ninner = ni;
+out:
+    cvm__free(&m->ctx, used);
+    cvm__free(&m->ctx, e);
+    cvm__free(&m->ctx, b);
+    cvm__free(&m->ctx, in);
+    return s;
+}
+
+/* Segments: the file's lines, then each boundary edge that is not a line
+ * (*nreal_out of them), then each inner edge that is not a line (the
+ * temporary constraints of a forced rebuild, marker 0). */
+static cvm_status segments(cvm_mesh *m, const cvm__vtu_mesh *vm, const int32_t *bnd, size_t nbnd,
+                           const int32_t *inner, size_t ninner, int32_t **seg_out,
+                           int32_t **mark_out, size_t *n_out, size_t *nreal_out)
+{
+    size_t nl = vm->p.nseg, n = 0, k;
+    int32_t *seg = cvm__malloc(&m->ctx, (2 * (nl + nbnd + ninner) + 1) * sizeof *seg);
+    int32_t *mark = cvm__malloc(&m->ctx, (nl + nbnd + ninner + 1) * sizeof *mark);
+    tkey *lines = cvm__malloc(&m->ctx, (nl + 1) * sizeof *lines);
+    if (!seg || !mark || !lines) {
+        cvm__free(&m->ctx, seg);
+        cvm__free(&m->ctx, mark);
+        cvm__free(&m->ctx, lines);
+        return cvm__nomem(&m->ctx);
+    }
+    for (k = 0; k < nl; k++) {
+        int32_t a = vm->p.seg[2 * k], b = vm->p.seg[2 * k + 1];
+        seg[2 * n] = a;
+        seg[2 * n + 1] = b;
+        mark[n++] = vm->p.smark ? vm->p.smark[k] : 1;
+        make_key(&lines[k], a < b ? a : b, a < b ? b : a, INT32_MAX, 0);
+    }
+    qsort(lines, nl, sizeof *lines, cmp_key);
+    for (k = 0; k < nbnd; k++) {
+        tkey key;
+        make_key(&key, bnd[2 * k], bnd[2 * k + 1], INT32_MAX, 0);
+        if (find_slot(lines, nl, &key) >= 0)
+            continue;
+        seg[2 * n] = bnd[2 * k];
+        seg[2 * n + 1] = bnd[2 * k + 1];
+        mark[n++] = 1;
+    }
+    *nreal_out = n;
+    for (k = 0; k < ninner; k++) { /* temporary constraints (forced rebuild) */
+        tkey key;
+        make_key(&key, inner[2 * k], inner[2 * k + 1], INT32_MAX, 0);
+        if (find_slot(lines, nl, &key) >= 0)
+            continue;
+        seg[2 * n] = inner[2 * k];
+        seg[2 * n + 1] = inner[2 * k + 1];
+        mark[n++] = 0;
+    }
+    cvm__free(&m->ctx, lines);
+    *seg_out = seg;
+    *mark_out = mark;
+    *n_out = n;
+    return CVM_OK;
+}
+
+/* File triangle keys in vertex ids (through t's input map), sorted. */
+static tkey *file_keys(cvm_mesh *t, const cvm__vtu_mesh *vm)
+{
+    tkey *k = cvm__malloc(&t->ctx, (vm->nt + 1) * sizeof *k);
+    size_t i;
+    const int32_t *map = t->input_map;
+    if (!k)
+        return NULL;
+    for (i = 0; i < vm->nt; i++)
+        make_key(&k[i], map[vm->tri[3 * i]], map[vm->tri[3 * i + 1]], map[vm->tri[3 * i + 2]],
+                 (int32_t)i);
+    qsort(k, vm->nt, sizeof *k, cmp_key);
+    return k;
+}
+
+/* 1 when p lies in (or on) a triangle of the file (exact orientation tests). */
+static int in_file_domain(const cvm__vtu_mesh *vm, const double *p)
+{
+    size_t k;
+    for (k = 0; k < vm->nt; k++) {
+        const int32_t *t = vm->tri + 3 * k;
+        const double *a = vm->p.xy + 2 * (size_t)t[0], *b = vm->p.xy + 2 * (size_t)t[1],
+                     *c = vm->p.xy + 2 * (size_t)t[2];
+        double o1 = cvm__orient2d(a, b, p), o2 = cvm__orient2d(b, c, p), o3 = cvm__orient2d(c, a, p);
+        if ((o1 >= 0 && o2 >= 0 && o3 >= 0) || (o1 <= 0 && o2 <= 0 && o3 <= 0))
+            return 1; /* either orientation of the file's triangle */
+    }
+    return 0;
+}
+
+/* Hole seeds: the centroid of one triangle of each connected set of domain
+ * triangles (across unconstrained edges) none of which is a file triangle
+ * and whose seed lies in no file triangle. After the weights are set, a set
+ * inside the file's domain is triangulated as in the file when the file is
+ * valid, and a triangle outside the domain cannot have the vertex set of a
+ * file triangle (the two would coincide). *n_out = 0 when there is none. */
+static cvm_status hole_seeds(cvm_mesh *t, const cvm__vtu_mesh *vm, double **out, size_t *n_out)
+{
+    const cvm__tri2 *T = &t->tri;
+    tkey *fk = file_keys(t, vm);
+    uint8_t *state = cvm__calloc(&t->ctx, T->nt + 1, 1); /* 1 unvisited, 2 visited, 0 other */
+    uint8_t *member = cvm__calloc(&t->ctx, T->nt + 1, 1);
+    int32_t *stack = cvm__malloc(&t->ctx, (T->nt + 1) * sizeof *stack);
+    double *h = cvm__malloc(&t->ctx, (2 * T->nt + 2) * sizeof *h);
+    size_t s, n = 0;
+    int j;
+    *out = NULL;
+    *n_out = 0;
+    if (!fk || !state || !member || !stack || !h) {
+        cvm__free(&t->ctx, fk);
+        cvm__free(&t->ctx, state);
+        cvm__free(&t->ctx, member);
+        cvm__free(&t->ctx, stack);
+        cvm__free(&t->ctx, h);
+        return cvm__nomem(&t->ctx);
+    }
+    for (s = 0; s < T->nt; s++) {
+        tkey key;
+        if (!cvm__tri2_in_domain(T, (int32_t)s))
+            continue;
+        make_key(&key, T->tv[3 * s], T->tv[3 * s + 1], T->tv[3 * s + 2], 0);
+        member[s] = find_slot(fk, vm->nt, &key) >= 0;
+        state[s] = 1;
+    }
+    for (s = 0; s < T->nt; s++) {
+        size_t top = 0;
+        int any = 0;
+        if (state[s] != 1)
+            continue;
+        state[s] = 2;
+        stack[top++] = (int32_t)s;
+        while (top) {
+            int32_t u = stack[--top];
+            any |= member[u];
+            for (j = 0; j < 3; j++) {
+                int32_t a = T->tn[3 * (size_t)u + (size_t)j], x = a < 0 ? -1 : a / 3;
+                if (x < 0 || state[x] != 1 || cvm__tri2_edge_seg(T, u, j) >= 0)
+                    continue;
+                state[x] = 2;
+                stack[top++] = x;
+            }
+        }
+        if (!any) {
+            const int32_t *v = T->tv + 3 * s;
+            for (j = 0; j < 2; j++)
+                h[2 * n + (size_t)j] = (T->xy[2 * (size_t)v[0] + (size_t)j] +
+                                        T->xy[2 * (size_t)v[1] + (size_t)j] +
+                                        T->xy[2 * (size_t)v[2] + (size_t)j]) / 3.0;
+            /* a region inside the file's domain triangulated differently is
+               not a hole: leave it for match() to report */
+            n += !in_file_domain(vm, h + 2 * n);
+        }
+    }
+    cvm__free(&t->ctx, fk);
+    cvm__free(&t->ctx, state);
+    cvm__free(&t->ctx, member);
+    cvm__free(&t->ctx, stack);
+    *out = h;
+    *n_out = n;
+    return CVM_OK;
+}
+
+/* Reorder and rotate the slots of T: file triangle k goes to slot k with the
+ * file's first vertex first; the other live slots follow in their order;
+ * dead slots are dropped. slot[k], rot[k]: the old slot of file triangle k and
+ * the position of its first vertex there. */
+static cvm_status permute(cvm__tri2 *T, const int32_t *slot, const uint8_t *rotk, size_t nfile)
+{
+    cvm__ctx *ctx = T->ctx;
+    size_t nt = T->nt, t, n = 0, v;
+    int32_t *newof = cvm__malloc(ctx, (nt + 1) * sizeof *newof);
+    uint8_t *rot = cvm__calloc(ctx, nt + 1, 1);
+    int32_t *otv = cvm__malloc(ctx, (3 * nt + 1) * sizeof *otv);
+    int32_t *otn = cvm__malloc(ctx, (3 * nt + 1) * sizeof *otn);
+    int32_t *ote = T->te ? cvm__malloc(ctx, (3 * nt + 1) * sizeof *ote) : NULL;
+    uint8_t *otf = cvm__malloc(ctx, nt + 1);
+    double *ota = T->ta ? cvm__malloc(ctx, (nt + 1) * sizeof *ota) : NULL;
+    cvm_status s = CVM_OK;
+    if (!newof || !rot || !otv || !otn || (T->te && !ote) || !otf || (T->ta && !ota)) {
+        s = CVM_E_NOMEM;
+        goto out;
+    }
+    memcpy(otv, T->tv, 3 * nt * sizeof *otv);
+    memcpy(otn, T->tn, 3 * nt * sizeof *otn);
+    if (ote)
+        memcpy(ote, T->te, 3 * nt * sizeof *ote);
+    memcpy(otf, T->tf, nt);
+    if (ota)
+        memcpy(ota, T->ta, nt * sizeof *ota);
+    for (t = 0; t < nt; t++)
+        newof[t] = -1;
+    for (t = 0; t < nfile; t++) {
+        newof[slot[t]] = (int32_t)n++;
+        rot[slot[t]] = rotk[t];
+    }
+    for (t = 0; t < nt; t++)
+        if (newof[t] < 0 && !(otf[t] & CVM__TF_DEAD))
+            newof[t] = (int32_t)n++;
+    for (t = 0; t < nt; t++) {
+        size_t ns = (size_t)newof[t];
+        int j;
+        if (newof[t] < 0)
+            continue;
+        for (j = 0; j < 3; j++) {
+            size_t o = 3 * t + (size_t)(j + rot[t]) % 3;
+            int32_t a = otn[o];
+            T->tv[3 * ns + (size_t)j] = otv[o];
+            T->tn[3 * ns + (size_t)j] =
+                a < 0 ? a : 3 * newof[a / 3] + (a % 3 - rot[a / 3] + 3) % 3;
+            if (ote)
+                T->te[3 * ns + (size_t)j] = ote[o];
+        }
+        T->tf[ns] = otf[t];
+        if (ota)
+            T->ta[ns] = ota[t];
+    }
+    for (v = 0; v < T->nv; v++)
+        if (T->vtri[v] >= 0)
+            T->vtri[v] = newof[T->vtri[v]];
+    T->nt = n;
+    T->free_head = -1;
+    T->n_dead = 0;
+    T->last = 0;
+out:
+    cvm__free(ctx, newof);
+    cvm__free(ctx, rot);
+    cvm__free(ctx, otv);
+    cvm__free(ctx, otn);
+    cvm__free(ctx, ote);
+    cvm__free(ctx, otf);
+    cvm__free(ctx, ota);
+    return s;
+}
+
+/* Compare t's domain triangles with the file's; on a match put them in the
+ * file's order. *bad receives the first file triangle not reproduced, or -1. */
+static cvm_status match(cvm_mesh *t, const cvm__vtu_mesh *vm, int64_t *bad)
+{
+    size_t nk = 0, k;
+    tkey *sk = slot_keys(&t->ctx, &t->tri, &nk);
+    int32_t *slot = cvm__malloc(&t->ctx, (vm->nt + 1) * sizeof *slot);
+    uint8_t *rot = cvm__malloc(&t->ctx, vm->nt + 1), *taken = cvm__calloc(&t->ctx, t->tri.nt + 1, 1);
+    cvm_status s = CVM_OK;
+    *bad = -1;
+    if (!sk || !slot || !rot || !taken) {
+        s = cvm__nomem(&t->ctx);
+        goto out;
+    }
+    for (k = 0; k < vm->nt && *bad < 0; k++) {
+        const int32_t *f = vm->tri + 3 * k, *map = t->input_map;
+        tkey key;
+        int32_t sl;
+        make_key(&key, map[f[0]], map[f[1]], map[f[2]], 0);
+        sl = find_slot(sk, nk, &key);
+        if (sl < 0 || taken[sl]) {
+            *bad = (int64_t)k;
+            break;
+        }
+        taken[sl] = 1;
+        slot[k] = sl;
+        rot[k] = (uint8_t)(t->tri.tv[3 * (size_t)sl] == map[f[0]] ? 0
+                           : t->tri.tv[3 * (size_t)sl + 1] == map[f[0]] ? 1 : 2);
+    }
+    if (*bad < 0 && nk != vm->nt)
+        *bad = (int64_t)vm->nt; /* the triangulation has more triangles than the file */
+    if (*bad < 0 && permute(&t->tri, slot, rot, vm->nt))
+        s = cvm__nomem(&t->ctx);
+out:
+    cvm__free(&t->ctx, sk);
+    cvm__free(&t->ctx, slot);
+    cvm__free(&t->ctx, rot);
+    cvm__free(&t->ctx, taken);
+    return s;
+}
+
+/* Set the file's input on t (segments as given) and triangulate. */
+static cvm_status build(cvm_mesh *t, const cvm__vtu_mesh *vm, const int32_t *seg,
+                        const int32_t *smark, size_t nseg, const double *holes, size_t nholes)
+{
+    cvm_status s;
+    if ((s = cvm_mesh_set_points(t, vm->p.xy, vm->p.np, 2)) ||
+        (vm->p.pmark && (s = cvm_mesh_set_point_markers(t, vm->p.pmark, vm->p.np))) ||
+        (vm->p.pattr && (s = cvm_mesh_set_point_attributes(t, vm->p.pattr, vm->p.np, vm->p.nattr))) ||
+        (s = cvm_mesh_set_segments(t, seg, nseg)) ||
+        (s = cvm_mesh_set_segment_markers(t, nseg ? smark : NULL, nseg)) ||
+        (s = cvm_mesh_set_holes(t, holes, nholes)))
+        return s;
+    return cvm_mesh_triangulate(t);
+}
+
+/* Weights of the file (per input point) onto t's vertices. forced: t holds
+ * the file's triangles already; the weights are set without flips, then the
+ * Lawson flips of cvm_mesh_set_weights() run, which change nothing in the
+ * domain exactly when the file's mesh is what cvm_mesh_set_weights() keeps
+ * (regular, or its illegal edges unflippable: vanished vertices). */
+static cvm_status weights(cvm_mesh *t, const cvm__vtu_mesh *vm, int forced)
+{
+    cvm__tri2 *T = &t->tri;
+    size_t i, nv = T->nv;
+    double *w;
+    cvm_status s;
+    if (!vm->w && !forced)
+        return CVM_OK;
+    w = cvm__calloc(&t->ctx, (forced && T->cap_v > nv ? T->cap_v : nv) + 1, sizeof *w);
+    if (!w)
+        return cvm__nomem(&t->ctx);
+    for (i = 0; vm->w && i < vm->p.np; i++)
+        w[t->input_map[i]] = vm->w[i];
+    if (!forced) {
+        s = cvm_mesh_set_weights(t, w, nv);
+        cvm__free(&t->ctx, w);
+        return s;
+    }
+    cvm__free(&t->ctx, T->w);
+    T->w = vm->w ? w : NULL;
+    if (!vm->w)
+        cvm__free(&t->ctx, w);
+    return cvm__tri2_make_regular(T, NULL) ? cvm__nomem(&t->ctx) : CVM_OK;
+}
+
+/* Forget the temporary constraints (segment ids nreal and up) of a forced rebuild. */
+static void drop_temporary(cvm_mesh *t, size_t nreal)
+{
+    cvm__tri2 *T = &t->tri;
+    size_t k;
+    if (t->in.nseg <= nreal)
+        return;
+    for (k = 0; T->te && k < 3 * T->nt; k++)
+        if (T->te[k] >= (int32_t)nreal)
+            T->te[k] = -1;
+    t->in.nseg = nreal;
+}
+
+/* One attempt with the first nseg segments of seg, of which the first
+ * nreal are kept (nseg > nreal: a forced rebuild, see weights()); nseg = 0
+ * tries the plain triangulation of the points (files without lines). *bad as
+ * in match(). */
+static cvm_status attempt(cvm_mesh *t, const cvm__vtu_mesh *vm, const int32_t *seg,
+                          const int32_t *smark, size_t nseg, size_t nreal, int64_t *bad)
+{
+    double *holes = NULL;
+    size_t nholes = 0;
+    int forced = nseg > nreal;
+    cvm_status s = build(t, vm, seg, smark, nseg, NULL, 0);
+    if (s)
+        return s;
+    drop_temporary(t, nreal);
+    if ((s = weights(t, vm, forced)))
+        return s;
+    if (nseg) {
+        if ((s = hole_seeds(t, vm, &holes, &nholes)))
+            return s;
+        if (nholes && !(s = build(t, vm, seg, smark, nseg, holes, nholes))) {
+            drop_temporary(t, nreal);
+            s = weights(t, vm, forced);
+        }
+        cvm__free(&t->ctx, holes);
+        if (s)
+            return s;
+    }
+    if ((s = match(t, vm, bad)) || *bad >= 0)
+        return s;
+    if (vm->tattr) {
+        size_t k;
+        if (cvm__tri2_enable_attributes(&t->tri))
+            return cvm__nomem(&t->ctx);
+        for (k = 0; k < vm->nt; k++)
+            t->tri.ta[k] = vm->tattr[k];
+    }
+    return CVM_OK;
+}
+
+/* Move the mesh of t into m (m's front markers stay) and free t with m's old mesh. */
+static void adopt(cvm_mesh *m, cvm_mesh *t)
+{
+    cvm_mesh tmp = *m;
+    cvm__ctx c;
+    int32_t *fm = m->front_marks;
+    size_t nfm = m->n_front_marks;
+    *m = *t;
+    *t = tmp;
+    c = m->ctx;
+    m->ctx = t->ctx;
+    t->ctx = c;
+    m->tri.ctx = &m->ctx;
+    t->tri.ctx = &t->ctx;
+    t->front_marks = m->front_marks;
+    t->n_front_marks = m->n_front_marks;
+    m->front_marks = fm;
+    m->n_front_marks = nfm;
+    memcpy(m->opt, t->opt, sizeof m->opt);
+    cvm_mesh_free(t);
+}
+
+static cvm_status run(cvm_mesh *m, cvm_mesh *t, const char *path, const cvm__vtu_mesh *vm)
+{
+    int32_t *bnd = NULL, *inner = NULL, *seg = NULL, *mark = NULL;
+    size_t nbnd = 0, ninner = 0, nseg = 0, nreal = 0;
+    int64_t bad = -1;
+    cvm_status s;
+    if ((s = file_checks(m, path, vm, &bnd, &nbnd, &inner, &ninner)))
+        return s;
+    s = segments(m, vm, bnd, nbnd, inner, ninner, &seg, &mark, &nseg, &nreal);
+    cvm__free(&m->ctx, bnd);
+    cvm__free(&m->ctx, inner);
+    if (s)
+        return s;
+    /* 1. no lines: the Delaunay (regular) triangulation of the points */
+    if (!vm->has_lines)
+        s = attempt(t, vm, NULL, NULL, 0, 0, &bad);
+    /* 2. the constrained one, with the boundary as segments and hole seeds */
+    if (!s && (vm->has_lines || bad >= 0)) {
+        bad = -1;
+        t->opt[cvm__option_slot(CVM_OPT_KEEP_CONVEX_HULL)] = 0;
+        s = attempt(t, vm, seg, mark, nreal, nreal, &bad);
+    }
+    /* 3. every file edge forced, then checked by the flips (weights the
+       regular triangulation does not reach from the CDT: vanished vertices) */
+    if (!s && bad >= 0 && nseg > nreal) {
+        bad = -1;
+        s = attempt(t, vm, seg, mark, nseg, nreal, &bad);
+    }
+    cvm__free(&m->ctx, seg);
+    cvm__free(&m->ctx, mark);
+    if (s)
+        return cvm__error(&m->ctx, t->ctx.status, t->ctx.err_kind, t->ctx.err_index,
+                          "%s: rebuilding the mesh: %s", path, t->ctx.errmsg);
+    if (bad >= 0) {
+        const int32_t *f = vm->tri + 3 * (bad < (int64_t)vm->nt ? bad : 0);
+        if (bad == (int64_t)vm->nt)
+            return cvm__error(&m->ctx, CVM_E_INPUT_DEGENERATE, CVM_ENT_NONE, -1,
+                              "%s: the triangulation of its points and segments has more "
+                              "triangles than the file (%lu): the file's mesh is not a "
+                              "constrained regular triangulation", path, (unsigned long)vm->nt);
+        return cvm__error(&m->ctx, CVM_E_INPUT_DEGENERATE, CVM_ENT_TRIANGLE, bad,
+                          "%s: triangle %ld (points %ld %ld %ld) is not reproduced by the "
+                          "constrained regular triangulation of the file's points, segments and "
+                          "weights", path, (long)bad, (long)f[0], (long)f[1], (long)f[2]);
+    }
+    return CVM_OK;
+}
+
+cvm_status cvm__mesh_read_vtu(cvm_mesh *m, const char *path)
+{
+    cvm__vtu_mesh vm;
+    cvm_mesh *t = NULL;
+    cvm_status s = cvm__read_vtu_file(&m->ctx, path, &vm);
+    if (s)
+        return s;
+    if (cvm_mesh_create_with_allocator(&t, m->ctx.alloc_fn, m->ctx.realloc_fn, m->ctx.free_fn,
+                                       m->ctx.payload)) {
+        cvm__vtu_mesh_free(&m->ctx, &vm);
+        return cvm__nomem(&m->ctx);
+    }
+    memcpy(t->opt, m->opt, sizeof t->opt);
+    t->opt[cvm__option_slot(CVM_OPT_TIME_LIMIT_S)] = 0; /* a read is not cut short */
+    s = run(m, t, path, &vm);
+    cvm__vtu_mesh_free(&m->ctx, &vm);
+    if (s) {
+        cvm_mesh_free(t);
+        return s;
+    }
+    memcpy(t->opt, m->opt, sizeof t->opt); /* undo the attempt's KEEP_CONVEX_HULL */
+    adopt(m, t);
+    return CVM_OK;
+}

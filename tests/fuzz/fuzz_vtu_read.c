@@ -1,0 +1,151 @@
+/*
+ * fuzz_vtu_read.c - libFuzzer target: any bytes, parsed as a .vtu (VTK XML
+ * unstructured grid) through an in-memory cvm__reader, give a status and
+ * never a crash, a leak or undefined behaviour. Fault injection as in
+ * fuzz_poly_read.c (short reads, a read error, one failed allocation,
+ * selected by the input size). A successful read must be consistent:
+ * finite coordinates, triangle and line indices in range, weights finite;
+ * when it is small, it is rebuilt through cvm_mesh_read() of a temporary
+ * file, which must give a mesh that passes cvm_mesh_check() or an error
+ * with a message.
+ */
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "common/common_internal.h"
+#include "io/io_internal.h"
+#include "support/failing_alloc.h"
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+
+#define FUZZ_REQUIRE(cond, ...)                                        \
+    do {                                                               \
+        if (!(cond)) {                                                 \
+            fprintf(stderr, "fuzz_vtu_read: %s: ", #cond);             \
+            fprintf(stderr, __VA_ARGS__);                              \
+            fprintf(stderr, "\n");                                     \
+            abort();                                                   \
+        }                                                              \
+    } while (0)
+
+typedef struct memsrc {
+    const uint8_t *p;
+    size_t n, pos, chunk, fail_at;
+    int failed;
+} memsrc;
+
+static long mem_read(void *self, char *buf, size_t len)
+{
+    memsrc *s = (memsrc *)self;
+    size_t k;
+    if (s->pos >= s->fail_at) {
+        s->failed = 1;
+        return -1;
+    }
+    k = s->n - s->pos;
+    if (k > len)
+        k = len;
+    if (s->chunk && k > s->chunk)
+        k = s->chunk;
+    if (s->fail_at != (size_t)-1 && s->pos + k > s->fail_at)
+        k = s->fail_at - s->pos;
+    if (k)
+        memcpy(buf, s->p + s->pos, k);
+    s->pos += k;
+    return (long)k;
+}
+
+static void check_mesh(const cvm__vtu_mesh *vm)
+{
+    size_t i;
+    for (i = 0; i < 2 * vm->p.np; i++)
+        FUZZ_REQUIRE(isfinite(vm->p.xy[i]), "coordinate %zu is not finite", i);
+    for (i = 0; i < 3 * vm->nt; i++)
+        FUZZ_REQUIRE(vm->tri[i] >= 0 && (size_t)vm->tri[i] < vm->p.np, "triangle corner %zu", i);
+    for (i = 0; i < 2 * vm->p.nseg; i++)
+        FUZZ_REQUIRE(vm->p.seg[i] >= 0 && (size_t)vm->p.seg[i] < vm->p.np, "line end %zu", i);
+    for (i = 0; vm->w && i < vm->p.np; i++)
+        FUZZ_REQUIRE(isfinite(vm->w[i]), "weight %zu is not finite", i);
+}
+
+/* Rebuild a small mesh through the public API from a temporary file. */
+static void rebuild(const uint8_t *data, size_t size)
+{
+    char dir[] = "/tmp/fuzz_vtu_XXXXXX", path[64];
+    cvm_mesh *m = NULL;
+    cvm_status s;
+    FILE *f;
+    if (!mkdtemp(dir))
+        return;
+    snprintf(path, sizeof path, "%s/m.vtu", dir);
+    f = fopen(path, "wb");
+    if (!f || fwrite(data, 1, size, f) != size) {
+        if (f)
+            fclose(f);
+        remove(path);
+        rmdir(dir);
+        return;
+    }
+    fclose(f);
+    if (cvm_mesh_create(&m) != CVM_OK)
+        abort();
+    s = cvm_mesh_read(m, path);
+    remove(path);
+    rmdir(dir);
+    if (s == CVM_OK) {
+        cvm_status c = cvm_mesh_check(m);
+        FUZZ_REQUIRE(c == CVM_OK, "cvm_mesh_check: %s", cvm_mesh_errmsg(m));
+    } else {
+        FUZZ_REQUIRE(cvm_mesh_errmsg(m)[0] != '\0', "status %d without a message", (int)s);
+    }
+    cvm_mesh_free(m);
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    cvm__ctx ctx;
+    cvm__vtu_mesh vm;
+    cvm__reader r;
+    memsrc src;
+    cvmtest_alloc a;
+    cvm_status s;
+    size_t i, sum = 0;
+
+    for (i = 0; i < size; i++)
+        sum += data[i];
+    cvmtest_alloc_init(&a, size % 5 == 0 ? (long)(1 + sum % 16) : 0, 0);
+    cvm__ctx_init_default(&ctx);
+    ctx.alloc_fn = cvmtest_malloc;
+    ctx.realloc_fn = cvmtest_realloc;
+    ctx.free_fn = cvmtest_free;
+    ctx.payload = &a;
+
+    src.p = data;
+    src.n = size;
+    src.pos = 0;
+    src.chunk = size % 3 == 0 ? 1 + size % 13 : 0;
+    src.fail_at = size % 7 == 0 ? size / 2 : (size_t)-1;
+    src.failed = 0;
+    r.read = mem_read;
+    r.self = &src;
+
+    s = cvm__read_vtu(&ctx, &r, "fuzz.vtu", &vm);
+    if (s == CVM_OK) {
+        FUZZ_REQUIRE(!src.failed, "read error at byte %zu was ignored", src.fail_at);
+        check_mesh(&vm);
+        if (a.n_failed == 0 && vm.p.np <= 200 && vm.nt <= 400)
+            rebuild(data, size);
+    } else {
+        FUZZ_REQUIRE(cvm_status_is_error(s), "status %d", (int)s);
+        FUZZ_REQUIRE(ctx.errmsg[0] != '\0', "status %d without a message", (int)s);
+        FUZZ_REQUIRE(s != CVM_E_NOMEM || a.n_failed > 0, "NOMEM with no failed allocation");
+        FUZZ_REQUIRE(vm.tri == NULL && vm.p.xy == NULL, "mesh not left empty on error");
+    }
+    cvm__vtu_mesh_free(&ctx, &vm);
+    FUZZ_REQUIRE(a.live_blocks == 0, "%ld blocks leaked (status %d)", a.live_blocks, (int)s);
+    return 0;
+}

@@ -1,0 +1,292 @@
+/* test_read_vtu.c - cvm_mesh_read of .vtu (lib/api/mesh_read_vtu.c): round trips, meshes that cannot be rebuilt, OOM. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "api/api_tests.h"
+#include "support/failing_alloc.h"
+#include "support/fixtures.h"
+#include "io/io_tests.h"
+
+static char *g_dir;
+
+static void setup(void)
+{
+    g_dir = iotest_tmpdir();
+}
+
+static void teardown(void)
+{
+    iotest_rmdir(g_dir);
+    free(g_dir);
+}
+
+static void in_dir(char *buf, size_t len, const char *name)
+{
+    snprintf(buf, len, "%s/%s", g_dir, name);
+}
+
+static double uniform(uint64_t *s)
+{
+    uint64_t z = (*s += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return (double)((z ^ (z >> 31)) >> 11) / 9007199254740992.0;
+}
+
+/* Square with a square hole, refined, optionally with random weights and a
+ * region attribute and point markers. */
+static cvm_mesh *holed_mesh(int weighted)
+{
+    static const double region[4] = {0.5, 0.5, 7.0, 0.0};
+    cvm_mesh *m;
+    cvm_sizing *sz;
+    size_t nv, v;
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvmtest_pslg_set(m, &cvmtest_square_with_hole), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_regions(m, region, 1), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+    ck_assert_int_eq(cvm_sizing_create(&sz), CVM_OK);
+    ck_assert_int_eq(cvm_sizing_set_uniform(sz, 0.3), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_refine(m, sz, CVM_ALGO_FRONTAL), CVM_OK);
+    cvm_sizing_free(sz);
+    if (weighted) {
+        uint64_t rng = 17;
+        double *w;
+        ck_assert_int_eq(cvm_mesh_count(&nv, m, CVM_ENT_VERTEX), CVM_OK);
+        w = malloc(nv * sizeof *w);
+        ck_assert_ptr_nonnull(w);
+        for (v = 0; v < nv; v++)
+            w[v] = (weighted == 2 ? 3.0 : 0.2) * 0.09 * uniform(&rng);
+        ck_assert_int_eq(cvm_mesh_set_weights(m, w, nv), CVM_OK);
+        free(w);
+    }
+    if (weighted == 2) { /* weights large enough to empty some power cells */
+        double vanished;
+        ck_assert_int_eq(cvm_mesh_get_measure(&vanished, m, CVM_MEASURE_VANISHED_VERTICES), CVM_OK);
+        ck_assert(vanished > 0);
+    }
+    return m;
+}
+
+/* Equal counts and arrays of kind through the public API. */
+static void assert_same_mesh(cvm_mesh *a, cvm_mesh *b)
+{
+    static const cvm_entity kinds[3] = {CVM_ENT_TRIANGLE, CVM_ENT_EDGE, CVM_ENT_SEGMENT};
+    size_t na, nb, k;
+    double *xa, *xb;
+    cvm_index *ca, *cb;
+    ck_assert_int_eq(cvm_mesh_count(&na, a, CVM_ENT_VERTEX), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_count(&nb, b, CVM_ENT_VERTEX), CVM_OK);
+    ck_assert_uint_eq(na, nb);
+    xa = malloc(2 * na * sizeof *xa);
+    xb = malloc(2 * na * sizeof *xb);
+    ck_assert(xa && xb);
+    ck_assert_int_eq(cvm_mesh_copy_points(xa, 2 * na, a), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_copy_points(xb, 2 * na, b), CVM_OK);
+    ck_assert(memcmp(xa, xb, 2 * na * sizeof *xa) == 0);
+    ck_assert_int_eq(cvm_mesh_copy_weights(xa, na, a), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_copy_weights(xb, na, b), CVM_OK);
+    ck_assert(memcmp(xa, xb, na * sizeof *xa) == 0);
+    free(xa);
+    free(xb);
+    for (k = 0; k < 3; k++) {
+        ck_assert_int_eq(cvm_mesh_count(&na, a, kinds[k]), CVM_OK);
+        ck_assert_int_eq(cvm_mesh_count(&nb, b, kinds[k]), CVM_OK);
+        ck_assert_uint_eq(na, nb);
+        ca = malloc((3 * na + 1) * sizeof *ca);
+        cb = malloc((3 * na + 1) * sizeof *cb);
+        ck_assert(ca && cb);
+        ck_assert_int_eq(cvm_mesh_copy_cells(ca, 3 * na, a, kinds[k]), CVM_OK);
+        ck_assert_int_eq(cvm_mesh_copy_cells(cb, 3 * na, b, kinds[k]), CVM_OK);
+        ck_assert_msg(memcmp(ca, cb, (kinds[k] == CVM_ENT_TRIANGLE ? 3 : 2) * na * sizeof *ca) == 0,
+                      "entity %d differs", (int)kinds[k]);
+        free(ca);
+        free(cb);
+    }
+}
+
+static void round_trip(int weighted)
+{
+    char a[4096], b[4096];
+    char *ta, *tb;
+    size_t la, lb;
+    cvm_mesh *m = holed_mesh(weighted), *r;
+    in_dir(a, sizeof a, "a.vtu");
+    in_dir(b, sizeof b, "b.vtu");
+    ck_assert_int_eq(cvm_mesh_write(m, a), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_create(&r), CVM_OK);
+    ck_assert_msg(cvm_mesh_read(r, a) == CVM_OK, "%s", cvm_mesh_errmsg(r));
+    if (weighted < 2) /* with vanished vertices the check reports their illegal edges */
+        ck_assert_msg(cvm_mesh_check(r) == CVM_OK, "%s", cvm_mesh_errmsg(r));
+    assert_same_mesh(m, r);
+    ck_assert_int_eq(cvm_mesh_write(r, b), CVM_OK);
+    ta = iotest_slurp(a, &la);
+    tb = iotest_slurp(b, &lb);
+    ck_assert(ta && tb);
+    ck_assert_uint_eq(la, lb);
+    ck_assert_msg(memcmp(ta, tb, la) == 0, "the rewritten .vtu differs");
+    ck_assert_ptr_nonnull(strstr(ta, "Name=\"attribute\""));
+    ck_assert((weighted != 0) == (strstr(ta, "Name=\"weight\"") != NULL));
+    free(ta);
+    free(tb);
+    cvm_mesh_free(m);
+    cvm_mesh_free(r);
+}
+
+START_TEST(vtu_round_trip_is_byte_identical)
+{
+    round_trip(0);
+}
+END_TEST
+
+START_TEST(vtu_round_trip_keeps_weights)
+{
+    round_trip(1);
+}
+END_TEST
+
+/* Vertices with empty power cells: the regular triangulation reached from
+ * the CDT differs, so the reader forces the file's edges and checks that the
+ * flips of cvm_mesh_set_weights() leave them. */
+START_TEST(vtu_round_trip_with_vanished_vertices)
+{
+    round_trip(2);
+}
+END_TEST
+
+static void write_text(const char *path, const char *text)
+{
+    FILE *f = fopen(path, "w");
+    ck_assert_ptr_nonnull(f);
+    fputs(text, f);
+    fclose(f);
+}
+
+/* A parallelogram split along its long diagonal 0-2, which is not
+ * Delaunay (the angles at 1 and 3 are 135 degrees): the file's mesh cannot
+ * be rebuilt. */
+static const char k_bad_diagonal[] =
+    "<VTKFile type=\"UnstructuredGrid\"><UnstructuredGrid>"
+    "<Piece NumberOfPoints=\"4\" NumberOfCells=\"2\"><Points>"
+    "<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">"
+    "0 0 0 3 0 0 4 1 0 1 1 0</DataArray></Points><Cells>"
+    "<DataArray type=\"Int32\" Name=\"connectivity\" format=\"ascii\">0 1 2 0 2 3</DataArray>"
+    "<DataArray type=\"Int32\" Name=\"offsets\" format=\"ascii\">3 6</DataArray>"
+    "<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">5 5</DataArray>"
+    "</Cells></Piece></UnstructuredGrid></VTKFile>\n";
+
+START_TEST(vtu_not_reproduced_is_an_error_and_keeps_the_mesh)
+{
+    char path[4096], good[4096];
+    cvm_mesh *m = holed_mesh(0);
+    size_t nt0, nt1;
+    cvm_entity kind;
+    int64_t idx;
+    in_dir(path, sizeof path, "bad.vtu");
+    write_text(path, k_bad_diagonal);
+    ck_assert_int_eq(cvm_mesh_count(&nt0, m, CVM_ENT_TRIANGLE), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_read(m, path), CVM_E_INPUT_DEGENERATE);
+    ck_assert_ptr_nonnull(strstr(cvm_mesh_errmsg(m), "triangle 0 (points 0 1 2) is not reproduced"));
+    ck_assert_int_eq(cvm_mesh_error_item(&kind, &idx, m), CVM_OK);
+    ck_assert_int_eq(kind, CVM_ENT_TRIANGLE);
+    ck_assert_int_eq(idx, 0);
+    ck_assert_int_eq(cvm_mesh_count(&nt1, m, CVM_ENT_TRIANGLE), CVM_OK);
+    ck_assert_uint_eq(nt0, nt1); /* the previous mesh is kept */
+    ck_assert_int_eq(cvm_mesh_check(m), CVM_OK);
+    /* the other diagonal is the Delaunay one: read fine */
+    in_dir(good, sizeof good, "good.vtu");
+    {
+        char *t = malloc(sizeof k_bad_diagonal);
+        ck_assert_ptr_nonnull(t);
+        strcpy(t, k_bad_diagonal);
+        memcpy(strstr(t, "0 1 2 0 2 3"), "0 1 3 1 2 3", 11);
+        write_text(good, t);
+        free(t);
+    }
+    ck_assert_msg(cvm_mesh_read(m, good) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    ck_assert_int_eq(cvm_mesh_count(&nt1, m, CVM_ENT_TRIANGLE), CVM_OK);
+    ck_assert_uint_eq(nt1, 2);
+    ck_assert_int_eq(cvm_mesh_count(&nt1, m, CVM_ENT_SEGMENT), CVM_OK);
+    ck_assert_uint_eq(nt1, 0); /* convex: read as the Delaunay triangulation, no segments */
+    cvm_mesh_free(m);
+}
+END_TEST
+
+START_TEST(vtu_unused_point_and_bad_cells_are_named)
+{
+    char path[4096], *t = malloc(sizeof k_bad_diagonal + 16);
+    cvm_mesh *m;
+    ck_assert_ptr_nonnull(t);
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    in_dir(path, sizeof path, "x.vtu");
+    strcpy(t, k_bad_diagonal);
+    memcpy(strstr(t, "0 1 2 0 2 3"), "0 1 2 0 2 1", 11);
+    write_text(path, t);
+    ck_assert_int_eq(cvm_mesh_read(m, path), CVM_E_INPUT_DEGENERATE);
+    ck_assert_ptr_nonnull(strstr(cvm_mesh_errmsg(m), "point 3 lies in no triangle"));
+    strcpy(t, k_bad_diagonal);
+    memcpy(strstr(t, "0 1 2 0 2 3"), "0 1 3 1 1 3", 11);
+    write_text(path, t);
+    ck_assert_int_eq(cvm_mesh_read(m, path), CVM_E_INPUT_DEGENERATE);
+    ck_assert_ptr_nonnull(strstr(cvm_mesh_errmsg(m), "triangle 1 (points 1 1 3) repeats a point"));
+    strcpy(t, k_bad_diagonal);
+    memcpy(strstr(t, "0 1 2 0 2 3"), "0 1 3 1 2 7", 11);
+    write_text(path, t);
+    ck_assert_int_eq(cvm_mesh_read(m, path), CVM_E_IO_FORMAT);
+    ck_assert_ptr_nonnull(strstr(cvm_mesh_errmsg(m), "cell 1 names point 7"));
+    in_dir(path, sizeof path, "missing.vtu");
+    ck_assert_int_eq(cvm_mesh_read(m, path), CVM_E_IO_OPEN);
+    free(t);
+    cvm_mesh_free(m);
+}
+END_TEST
+
+START_TEST(vtu_read_out_of_memory_at_every_allocation)
+{
+    char path[4096];
+    cvm_mesh *src = holed_mesh(1), *m;
+    cvmtest_alloc a;
+    long k;
+    size_t nt;
+    in_dir(path, sizeof path, "oom.vtu");
+    ck_assert_int_eq(cvm_mesh_write(src, path), CVM_OK);
+    cvm_mesh_free(src);
+    for (k = 1;; k++) {
+        cvm_status s;
+        cvmtest_alloc_init(&a, k, 0);
+        if (cvmtest_mesh_create(&m, &a) != CVM_OK) {
+            ck_assert_int_eq((int)a.live_blocks, 0);
+            continue; /* the handle itself */
+        }
+        s = cvm_mesh_read(m, path);
+        if (s == CVM_OK) {
+            cvmtest_alloc_arm(&a, 0, 0);
+            ck_assert_int_eq(cvm_mesh_check(m), CVM_OK);
+            cvm_mesh_free(m);
+            ck_assert_int_eq((int)a.live_blocks, 0);
+            break;
+        }
+        ck_assert_msg(s == CVM_E_NOMEM, "allocation %ld: status %d (%s)", k, s, cvm_mesh_errmsg(m));
+        ck_assert_int_eq(cvm_mesh_count(&nt, m, CVM_ENT_TRIANGLE), CVM_OK);
+        ck_assert_uint_eq(nt, 0);
+        cvm_mesh_free(m);
+        ck_assert_int_eq((int)a.live_blocks, 0);
+    }
+    ck_assert(k > 20);
+}
+END_TEST
+
+TCase *api_read_vtu_tcase(void)
+{
+    TCase *tc = tcase_create("read_vtu");
+    tcase_set_timeout(tc, 120);
+    tcase_add_checked_fixture(tc, setup, teardown);
+    tcase_add_test(tc, vtu_round_trip_is_byte_identical);
+    tcase_add_test(tc, vtu_round_trip_keeps_weights);
+    tcase_add_test(tc, vtu_round_trip_with_vanished_vertices);
+    tcase_add_test(tc, vtu_not_reproduced_is_an_error_and_keeps_the_mesh);
+    tcase_add_test(tc, vtu_unused_point_and_bad_cells_are_named);
+    tcase_add_test(tc, vtu_read_out_of_memory_at_every_allocation);
+    return tc;
+}
