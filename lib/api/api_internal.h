@@ -10,7 +10,7 @@
 #include "io/io_internal.h"
 
 /* Options live in one table; index with cvm__option_slot(). */
-#define CVM__NOPTIONS 24
+#define CVM__NOPTIONS 32
 
 struct cvm_mesh {
     cvm__ctx ctx;
@@ -33,6 +33,9 @@ struct cvm_mesh {
     double refine_report[6]; /* the last cvm_mesh_refine(): CVM_MEASURE_REFINE_* */
     int32_t *front_marks;    /* cvm_mesh_set_front_markers() */
     size_t n_front_marks;
+
+    /* dual optimisation (lib/api/optimise.c) */
+    double dual_opt_report[7]; /* the last cvm_mesh_optimise_dual(): CVM_MEASURE_DUAL_OPT_* */
 };
 
 /* Slot of key in opt[], or -1 if the key is unknown. */
@@ -61,6 +64,15 @@ cvm_status cvm__refine_measure(double *out, const cvm_mesh *m, cvm_measure which
 /* The dual measures CVM_MEASURE_DUAL_* .. CVM_MEASURE_VANISHED_VERTICES
  * (lib/api/dual.c); m has triangles. CVM_OK, CVM_E_ARGUMENT, CVM_E_NOMEM. */
 cvm_status cvm__dual_measure(double *out, cvm_mesh *m, cvm_measure which);
+
+/* The merge and compliance measures CVM_MEASURE_DUAL_MERGED_PCT ..
+ * CVM_MEASURE_DUAL_NONCOMPLIANT_BOUNDARY_PCT and the report
+ * CVM_MEASURE_DUAL_OPT_* (lib/api/optimise.c); m has triangles for the former.
+ * CVM_OK, CVM_E_NOMEM, or CVM_E_ARGUMENT (no message) when which is not one
+ * of them. */
+cvm_status cvm__optimise_measure(double *out, cvm_mesh *m, cvm_measure which);
+/* 1 when which is one of the measures of cvm__optimise_measure that need triangles. */
+int cvm__optimise_measure_needs_triangles(cvm_measure which);
 
 /* With weights set: *out receives a fresh array of nattr + 1 values per
  * vertex, the weight first, then the point attributes (free with cvm__free);

@@ -53,6 +53,7 @@ void cvm__mesh_drop_output(cvm_mesh *m)
     m->input_map = NULL;
     m->n_dup = 0;
     memset(m->refine_report, 0, sizeof m->refine_report);
+    memset(m->dual_opt_report, 0, sizeof m->dual_opt_report);
 }
 
 void cvm_mesh_free(cvm_mesh *m)
