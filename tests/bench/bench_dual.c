@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <math.h>
 #include <time.h>
 
 #include "cvmesh.h"
@@ -26,10 +27,66 @@ static double measure(cvm_mesh *m, cvm_measure which)
     return v;
 }
 
+/* Smallest power dual edge over its primal edge, over interior edges (public arrays only). */
+static double power_ratio(cvm_mesh *m)
+{
+    size_t nv, ne, nt, k, t;
+    double *xy, *len, best = 1e300;
+    cvm_index *ev, *tri, *nb;
+    unsigned char *interior;
+    cvm_mesh_count(&nv, m, CVM_ENT_VERTEX);
+    cvm_mesh_count(&ne, m, CVM_ENT_EDGE);
+    cvm_mesh_count(&nt, m, CVM_ENT_TRIANGLE);
+    xy = malloc(2 * nv * sizeof *xy + 1);
+    len = malloc(ne * sizeof *len + 1);
+    ev = malloc(2 * ne * sizeof *ev + 4);
+    tri = malloc(3 * nt * sizeof *tri + 4);
+    nb = malloc(3 * nt * sizeof *nb + 4);
+    interior = calloc(ne + 1, 1);
+    cvm_mesh_copy_points(xy, 2 * nv, m);
+    cvm_mesh_copy_cells(ev, 2 * ne, m, CVM_ENT_EDGE);
+    cvm_mesh_copy_cells(tri, 3 * nt, m, CVM_ENT_TRIANGLE);
+    cvm_mesh_copy_neighbors(nb, 3 * nt, m);
+    cvm_mesh_copy_dual_edge_lengths(len, ne, m);
+    for (t = 0; t < nt; t++) {
+        int j;
+        for (j = 0; j < 3; j++) {
+            cvm_index a = tri[3 * t + (size_t)(j + 1) % 3], b = tri[3 * t + (size_t)(j + 2) % 3];
+            cvm_index lo = a < b ? a : b, hi = a < b ? b : a;
+            size_t l = 0, r = ne;
+            if (nb[3 * t + (size_t)j] < 0)
+                continue;
+            while (l < r) {
+                size_t mid = (l + r) / 2;
+                if (ev[2 * mid] < lo || (ev[2 * mid] == lo && ev[2 * mid + 1] < hi))
+                    l = mid + 1;
+                else
+                    r = mid;
+            }
+            if (l < ne)
+                interior[l] = 1;
+        }
+    }
+    for (k = 0; k < ne; k++) {
+        const double *p = xy + 2 * (size_t)ev[2 * k], *q = xy + 2 * (size_t)ev[2 * k + 1];
+        double r = len[k] / sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]));
+        if (interior[k] && r < best)
+            best = r;
+    }
+    free(xy);
+    free(len);
+    free(ev);
+    free(tri);
+    free(nb);
+    free(interior);
+    return best;
+}
+
 static void print_state(cvm_mesh *m, const char *tag)
 {
     size_t nt;
     cvm_mesh_count(&nt, m, CVM_ENT_TRIANGLE);
+    printf(" %s_powerratio=%.4g", tag, power_ratio(m));
     printf(" %s_nt=%lu %s_out=%.4f %s_nc=%.4f %s_ncb=%.4f %s_merged=%.4f %s_minang=%.3f"
            " %s_dualratio=%.4g %s_step=%.6g",
            tag, (unsigned long)nt, tag, measure(m, CVM_MEASURE_DUAL_OUTSIDE_PCT), tag,
