@@ -1012,8 +1012,8 @@ CVM_API cvm_status cvm_mesh_copy_dual_edge_lengths(double *dst, size_t dst_len,
  * triangles joined across mergeable edges (the rule of CVM_OPT_DUAL_MERGE_TOL).
  * A merged group is one polygonal dual cell: its power vertices are treated as
  * one. A triangle whose power vertex lies outside it counts as compliant when
- * the triangle across every edge its power vertex lies beyond (exact test) is
- * in its group (CVM_MEASURE_DUAL_NONCOMPLIANT_PCT).
+ * every edge its power vertex lies beyond (exact test) is a mergeable edge, so
+ * the triangle across it is in its group (CVM_MEASURE_DUAL_NONCOMPLIANT_PCT).
  * @param dst_len  capacity in entries; must be >= the triangle count.
  * Determinism: depends only on the mesh, its weights and CVM_OPT_DUAL_MERGE_TOL.
  * @return CVM_OK, CVM_E_NULL_ARG, CVM_E_BUFFER_TOO_SMALL (nothing written), CVM_E_NOMEM
@@ -1119,8 +1119,8 @@ typedef enum cvm_measure {
     /* Merging (CVM_OPT_DUAL_MERGE_TOL, cvm_mesh_copy_dual_merge_groups()): */
     CVM_MEASURE_DUAL_MERGED_PCT = 22,   /**< % of triangles in a merged group of 2 or more */
     CVM_MEASURE_DUAL_NONCOMPLIANT_PCT = 23, /**< % of triangles whose power vertex lies outside
-                                             (exact) and that are not merged with the triangle
-                                             across each edge it lies beyond */
+                                             (exact) and not merged across each edge it lies
+                                             beyond (see cvm_mesh_copy_dual_merge_groups()) */
     CVM_MEASURE_DUAL_NONCOMPLIANT_BOUNDARY_PCT = 24, /**< the same % over the triangles with
                                              a vertex on the domain boundary (0 without any) */
     /* Report of the last cvm_mesh_optimise_dual() on the handle (0 before any, and

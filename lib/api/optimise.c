@@ -151,53 +151,47 @@ int cvm__optimise_measure_needs_triangles(cvm_measure which)
            which == CVM_MEASURE_DUAL_NONCOMPLIANT_BOUNDARY_PCT;
 }
 
-/* % merged, % non-compliant, % non-compliant among boundary triangles. */
+/* % merged, % non-compliant, % non-compliant among the triangles with a
+ * vertex on the domain boundary (an edge with a domain triangle on one side
+ * only), as CVM_MEASURE_DUAL_OUTSIDE_BOUNDARY_PCT counts them. */
 static cvm_status merge_stats(cvm_mesh *m, double *merged, double *nc, double *nc_bnd)
 {
     const cvm__tri2 *T = &m->tri;
     double *vsize, *V, tol = cvm__opt(m, CVM_OPT_DUAL_MERGE_TOL);
     int32_t *group;
     size_t *gsize, t, n = 0, nm = 0, nn = 0, nb = 0, nnb = 0;
+    uint8_t *on_bnd;
     if (merge_inputs(&m->ctx, T, &vsize, &V))
         return cvm__nomem(&m->ctx);
     group = cvm__malloc(&m->ctx, (T->nt + 1) * sizeof *group);
     gsize = cvm__calloc(&m->ctx, T->nt + 1, sizeof *gsize);
-    if (!group || !gsize) {
+    on_bnd = cvm__calloc(&m->ctx, T->nv + 1, 1);
+    if (!group || !gsize || !on_bnd) {
         cvm__free(&m->ctx, group);
         cvm__free(&m->ctx, gsize);
+        cvm__free(&m->ctx, on_bnd);
         cvm__free(&m->ctx, vsize);
         cvm__free(&m->ctx, V);
         return cvm__nomem(&m->ctx);
     }
     cvm__dual_merge_groups(&m->ctx, T, vsize, tol, V, group);
-    for (t = 0; t < T->nt; t++)
-        if (group[t] >= 0)
-            gsize[group[t]]++;
     for (t = 0; t < T->nt; t++) {
-        int j, bnd = 0, bad;
+        int j;
         if (group[t] < 0)
             continue;
-        for (j = 0; j < 3; j++) {
-            int32_t u = T->tn[3 * t + (size_t)j] / 3;
-            bnd |= cvm__tri2_edge_seg(T, (int32_t)t, j) >= 0 || !cvm__tri2_in_domain(T, u);
-        }
-        if (!bnd) {
-            /* a vertex on the boundary: one of its edges is a boundary edge */
-            for (j = 0; j < 3 && !bnd; j++) {
-                int32_t v = T->tv[3 * t + (size_t)j], t0 = T->vtri[v], u = t0;
-                do {
-                    const int32_t *tv = T->tv + 3 * (size_t)u;
-                    int i = tv[0] == v ? 0 : tv[1] == v ? 1 : 2, e;
-                    for (e = 1; e <= 2; e++) {
-                        int32_t x = T->tn[3 * (size_t)u + (size_t)(i + e) % 3] / 3;
-                        if (cvm__tri2_in_domain(T, u) &&
-                            (cvm__tri2_edge_seg(T, u, (i + e) % 3) >= 0 || !cvm__tri2_in_domain(T, x)))
-                            bnd = 1;
-                    }
-                    u = T->tn[3 * (size_t)u + (size_t)(i + 1) % 3] / 3;
-                } while (u != t0 && !bnd);
+        gsize[group[t]]++;
+        for (j = 0; j < 3; j++)
+            if (!cvm__tri2_in_domain(T, T->tn[3 * t + (size_t)j] / 3)) {
+                on_bnd[T->tv[3 * t + (size_t)(j + 1) % 3]] = 1;
+                on_bnd[T->tv[3 * t + (size_t)(j + 2) % 3]] = 1;
             }
-        }
+    }
+    for (t = 0; t < T->nt; t++) {
+        const int32_t *v = T->tv + 3 * t;
+        int bnd, bad;
+        if (group[t] < 0)
+            continue;
+        bnd = on_bnd[v[0]] || on_bnd[v[1]] || on_bnd[v[2]];
         bad = cvm__dual_tri_status(T, vsize, tol, V, (int32_t)t) == 2;
         n++;
         nm += gsize[group[t]] > 1;
@@ -207,6 +201,7 @@ static cvm_status merge_stats(cvm_mesh *m, double *merged, double *nc, double *n
     }
     cvm__free(&m->ctx, group);
     cvm__free(&m->ctx, gsize);
+    cvm__free(&m->ctx, on_bnd);
     cvm__free(&m->ctx, vsize);
     cvm__free(&m->ctx, V);
     *merged = n ? 100.0 * (double)nm / (double)n : 0.0;

@@ -10,23 +10,37 @@
 
 #define TRI CLI_CMD_TRIANGULATE
 #define REF CLI_CMD_REFINE
+#define OPT CLI_CMD_OPTIMISE
 
 static const cli_option_flag k_flags[] = {
-    {"--keep-hull", NULL, CVM_OPT_KEEP_CONVEX_HULL, 1, TRI | REF,
+    {"--keep-hull", NULL, CVM_OPT_KEEP_CONVEX_HULL, 1, TRI | REF | OPT,
      "keep every triangle of the convex hull (holes are still removed)"},
-    {"--no-split-intersections", NULL, CVM_OPT_SPLIT_INTERSECTIONS, 0, TRI | REF,
+    {"--no-split-intersections", NULL, CVM_OPT_SPLIT_INTERSECTIONS, 0, TRI | REF | OPT,
      "fail on crossing segments instead of splitting them"},
-    {"--reject-duplicates", NULL, CVM_OPT_REJECT_DUPLICATES, 1, TRI | REF,
+    {"--reject-duplicates", NULL, CVM_OPT_REJECT_DUPLICATES, 1, TRI | REF | OPT,
      "fail on duplicate points instead of merging them"},
-    {"--seed", "S", CVM_OPT_SEED, 0, TRI | REF, "seed of the random insertion order"},
-    {"--threads", "N", CVM_OPT_THREADS, 0, TRI | REF, "threads for parallel stages (0: OpenMP default; no stage is parallel in 0.1)"},
-    {"--time-limit", "SECONDS", CVM_OPT_TIME_LIMIT_S, 0, TRI | REF, "give up after this time (0: none)"},
-    {"--min-angle", "DEG", CVM_OPT_MIN_ANGLE_DEG, 0, REF, "smallest angle wanted (default 30)"},
-    {"--max-area", "A", CVM_OPT_MAX_AREA, 0, REF, "largest triangle area (0: none)"},
-    {"--max-steiner", "N", CVM_OPT_MAX_STEINER, 0, REF, "stop after adding N points (0: no limit)"},
-    {"--lens", NULL, CVM_OPT_ENCROACH_LENS, 1, REF, "diametral lenses instead of circles"},
-    {"--no-march", NULL, CVM_OPT_MARCH_SEGMENTS, 0, REF,
+    {"--seed", "S", CVM_OPT_SEED, 0, TRI | REF | OPT, "seed of the random insertion order"},
+    {"--threads", "N", CVM_OPT_THREADS, 0, TRI | REF | OPT, "threads for parallel stages (0: OpenMP default; no stage is parallel in 0.1)"},
+    {"--time-limit", "SECONDS", CVM_OPT_TIME_LIMIT_S, 0, TRI | REF | OPT, "give up after this time (0: none)"},
+    {"--min-angle", "DEG", CVM_OPT_MIN_ANGLE_DEG, 0, REF | OPT, "smallest angle wanted (default 30)"},
+    {"--max-area", "A", CVM_OPT_MAX_AREA, 0, REF | OPT, "largest triangle area (0: none)"},
+    {"--max-steiner", "N", CVM_OPT_MAX_STEINER, 0, REF | OPT, "stop after adding N points (0: no limit)"},
+    {"--lens", NULL, CVM_OPT_ENCROACH_LENS, 1, REF | OPT, "diametral lenses instead of circles"},
+    {"--no-march", NULL, CVM_OPT_MARCH_SEGMENTS, 0, REF | OPT,
      "split segments only when encroached (no marching with the size)"},
+    {"--solver", "N", CVM_OPT_DUAL_SOLVER, 0, OPT,
+     "local solver of the dual optimiser: 1 pattern search (default), 2 cuckoo search"},
+    {"--max-sweeps", "N", CVM_OPT_DUAL_MAX_SWEEPS, 0, OPT, "sweeps of the dual optimiser (default 50)"},
+    {"--dual-min-angle", "DEG", CVM_OPT_DUAL_MIN_ANGLE_DEG, 0, OPT,
+     "smallest angle a move of the dual optimiser may create (default 10)"},
+    {"--target-angle", "DEG", CVM_OPT_DUAL_TARGET_ANGLE_DEG, 0, OPT,
+     "the dual optimiser also improves triangles with a smaller angle (default 40)"},
+    {"--margin", "F", CVM_OPT_DUAL_MARGIN, 0, OPT,
+     "keep power vertices F x the edge length inside each edge (default 0.1)"},
+    {"--cuckoo-budget", "N", CVM_OPT_DUAL_CUCKOO_BUDGET, 0, OPT,
+     "evaluations per vertex of the cuckoo solver (default 300)"},
+    {"--merge-tol", "F", CVM_OPT_DUAL_MERGE_TOL, 0, OPT,
+     "merge triangles whose dual edge is below F x l/sqrt(3) (default 0.1)"},
 };
 
 #define NFLAGS (sizeof k_flags / sizeof k_flags[0])

@@ -89,7 +89,7 @@ static void boundary_flags(dopt *D)
             continue;
         for (j = 0; j < 3; j++) {
             int32_t u = T->tn[3 * t + (size_t)j] / 3;
-            if (cvm__tri2_edge_seg(T, (int32_t)t, j) >= 0 || !cvm__tri2_in_domain(T, u)) {
+            if (!cvm__tri2_in_domain(T, u)) {
                 D->vbnd[T->tv[3 * t + (size_t)(j + 1) % 3]] = 1;
                 D->vbnd[T->tv[3 * t + (size_t)(j + 2) % 3]] = 1;
             }

@@ -6,6 +6,7 @@
 TCase *dual_power_side_tcase(void); /* lib/dual/power_side.c */
 TCase *dual_regular_tcase(void);    /* lib/delaunay/regular.c via cvm_mesh_set_weights */
 TCase *dual_api_tcase(void);        /* lib/api/dual.c */
+TCase *dual_optimise_tcase(void);   /* lib/api/optimise.c, lib/dual/optimise*.c, lib/dual/merge.c */
 
 /* Helpers (util.c). */
 #include <stddef.h>

@@ -8,5 +8,6 @@ Suite *dual_suite(void)
     suite_add_tcase(s, dual_power_side_tcase());
     suite_add_tcase(s, dual_regular_tcase());
     suite_add_tcase(s, dual_api_tcase());
+    suite_add_tcase(s, dual_optimise_tcase());
     return s;
 }
