@@ -449,6 +449,13 @@ typedef enum cvm_option {
      *  adds (1 - sin^2(angle) / sin^2(target))^2 for each triangle below it.
      *  0: only non-compliant triangles are visited. */
     CVM_OPT_DUAL_TARGET_ANGLE_DEG = 506,
+    /** 1: input points keep their position (only their weights change); 0 (default):
+     *  they move like Steiner points, so a mesh read as points can be optimised. In
+     *  both cases a vertex on a constrained edge moves only along its segment, and only
+     *  when it lies between two constrained edges of one segment or of two exactly
+     *  collinear segments (exact orient2d); corners, segment ends and convex-hull
+     *  vertices of unconstrained hulls never move. Integer, [0, 1]. */
+    CVM_OPT_DUAL_KEEP_INPUT_POINTS = 507,
     /** Merge tolerance, a fraction of the local ideal dual edge l / sqrt(3), default
      *  0.1, bounds [0, 1]; 0 merges nothing. l at an edge is the mean of the local
      *  sizes of its two ends, each the mean length of the vertex's edges (taken from
@@ -1028,11 +1035,11 @@ CVM_API cvm_status cvm_mesh_copy_dual_merge_groups(cvm_index *dst, size_t dst_le
  * edges are not tiny. Per triangle k the score is F_k = W_k L_k |C_k - V_k|
  * (centroid C, power vertex V; W_k = 0 when V lies in k, decided exactly, or k is
  * merged, else 1; L_k = 2 for triangles touching the domain boundary, 1 inside).
- * Each sweep sorts the triangles with F > 0 worst first into min(20, N/25) bins,
- * shuffled within a bin (stream keyed by CVM_OPT_SEED and the sweep), and solves
- * each of their vertices once over (x, y, w): interior Steiner points move freely,
- * Steiner points on a segment slide along it, input points keep their position;
- * every weight is free. The local objective is a smooth penalty on the vertex's
+ * Each sweep sorts the triangles with F > 0 worst first (then the "weak" ones of
+ * CVM_OPT_DUAL_TARGET_ANGLE_DEG) into min(20, N/25) bins, shuffled within a bin
+ * (stream keyed by CVM_OPT_SEED and the sweep), and solves each of their vertices
+ * once over (x, y, w): interior vertices move freely, vertices on a segment slide
+ * along it, corners stay (CVM_OPT_DUAL_KEEP_INPUT_POINTS); every weight is free. The local objective is a smooth penalty on the vertex's
  * star: the distance by which each power vertex falls short of lying
  * CVM_OPT_DUAL_MARGIN x the edge length inside each edge, squared, plus a small
  * centroid-to-power-vertex term, over squared edge lengths. A candidate is

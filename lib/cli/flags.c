@@ -39,6 +39,8 @@ static const cli_option_flag k_flags[] = {
      "keep power vertices F x the edge length inside each edge (default 0.1)"},
     {"--cuckoo-budget", "N", CVM_OPT_DUAL_CUCKOO_BUDGET, 0, OPT,
      "evaluations per vertex of the cuckoo solver (default 300)"},
+    {"--keep-input-points", NULL, CVM_OPT_DUAL_KEEP_INPUT_POINTS, 1, OPT,
+     "the dual optimiser moves no input point (only its weight)"},
     {"--merge-tol", "F", CVM_OPT_DUAL_MERGE_TOL, 0, OPT,
      "merge triangles whose dual edge is below F x l/sqrt(3) (default 0.1)"},
 };

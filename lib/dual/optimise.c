@@ -30,6 +30,7 @@
 #include <string.h>
 
 #include "optimise.h"
+#include "geom/geom_internal.h"
 
 #define FIX_ROUNDS 8
 
@@ -224,7 +225,9 @@ static int vertex_mode(dopt *D, int32_t v, size_t n, double *dir)
         return 1;
     if (ncon == 0 && !ghost && !other)
         return 3;
-    if (ncon == 2 && sg[0] == sg[1]) {
+    /* between two constrained edges of one segment, or of two exactly collinear ones */
+    if (ncon == 2 && (sg[0] == sg[1] || cvm__orient2d(T->xy + 2 * (size_t)nb[0], T->xy + 2 * (size_t)v,
+                                                        T->xy + 2 * (size_t)nb[1]) == 0)) {
         const double *a = T->xy + 2 * (size_t)nb[0], *b = T->xy + 2 * (size_t)nb[1];
         double len = hypot(b[0] - a[0], b[1] - a[1]);
         dir[0] = (b[0] - a[0]) / len;
