@@ -36,7 +36,7 @@ static const cli_option_flag k_flags[] = {
     {"--target-angle", "DEG", CVM_OPT_DUAL_TARGET_ANGLE_DEG, 0, OPT,
      "the dual optimiser also improves triangles with a smaller angle (default 40)"},
     {"--margin", "F", CVM_OPT_DUAL_MARGIN, 0, OPT,
-     "keep power vertices F x the edge length inside each edge (default 0.1)"},
+     "keep power vertices F x the edge length inside each edge (default 0.15)"},
     {"--cuckoo-budget", "N", CVM_OPT_DUAL_CUCKOO_BUDGET, 0, OPT,
      "evaluations per vertex of the cuckoo solver (default 300)"},
     {"--keep-input-points", NULL, CVM_OPT_DUAL_KEEP_INPUT_POINTS, 1, OPT,

@@ -198,7 +198,7 @@ def cvm_rows(name, poly, h, algo, label, s_tri):
 def main():
     build_driver()
     print("# bench_dual: cvm_mesh_optimise_dual (defaults: min angle 10, target angle 40, margin "
-          "0.1, merge tol 0.1), one core")
+          "0.15, merge tol 0.1), one core")
     print("# out%0/out% dual vertex outside before/after; nc% / ncb% non-compliant after (all / "
           "boundary); dual0/dual smallest dual edge / primal edge; step = min(primal, dual);")
     print("# xTri = step / step of Triangle's raw mesh; Lloyd = %d iterations on Triangle's mesh"
@@ -231,7 +231,7 @@ def main():
                         s_tri, t_tri, tl)
                 tp = os.path.join(tmp, name + "_tri.poly")
                 write_poly(tp, np.array(t["vertices"]), np.array(t["segments"]), holes)
-                for solver, sl in ((1, "pattern"),) if large else ((1, "pattern"), (2, "cuckoo")):
+                for solver, sl in ((1, "pattern"),):
                     d = driver(tp, h, 0, solver)
                     g = lambda k: float(d[k])
                     row(name, "triangle+cvm-" + sl, int(d["after_nt"]), g("before_out"),
