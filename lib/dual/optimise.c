@@ -190,6 +190,39 @@ static size_t gather_star(dopt *D, int32_t v)
     return n;
 }
 
+/* 1 when a triangle of the star is a domain triangle. */
+static int domain_of_star(const dopt *D, size_t n)
+{
+    size_t k;
+    for (k = 0; k < n; k++)
+        if (cvm__tri2_in_domain(D->T, D->star[k]))
+            return 1;
+    return 0;
+}
+
+/* Index of the ghost vertex in ghost triangle g. */
+static int ghost_corner(const cvm__tri2 *T, int32_t g)
+{
+    const int32_t *tv = T->tv + 3 * (size_t)g;
+    return tv[0] == CVM__GHOST ? 0 : tv[1] == CVM__GHOST ? 1 : 2;
+}
+
+/* 1 when moving a corner of the hull edge of ghost triangle g cannot break the
+ * hull convexity cvm__tri2_check asks of unconstrained hull edges: that edge
+ * and the hull edges of the two ghost triangles beside g are constrained. */
+static int hull_safe(const cvm__tri2 *T, int32_t g)
+{
+    int k = ghost_corner(T, g), e;
+    if (cvm__tri2_edge_seg(T, g, k) < 0)
+        return 0;
+    for (e = 1; e <= 2; e++) {
+        int32_t h = T->tn[3 * (size_t)g + (size_t)(k + e) % 3] / 3;
+        if (!cvm__tri2_is_ghost(T, h) || cvm__tri2_edge_seg(T, h, ghost_corner(T, h)) < 0)
+            return 0;
+    }
+    return 1;
+}
+
 /* Degrees of freedom of v (see optimise.h) and, for a vertex on a segment,
  * the segment's direction. 0: v has no domain triangle. */
 static int vertex_mode(dopt *D, int32_t v, size_t n, double *dir)
@@ -204,6 +237,8 @@ static int vertex_mode(dopt *D, int32_t v, size_t n, double *dir)
         int i = tv[0] == v ? 0 : tv[1] == v ? 1 : 2, e;
         if (cvm__tri2_is_ghost(T, t)) {
             ghost = 1;
+            if (!hull_safe(T, t))
+                return domain_of_star(D, n) ? 1 : 0;
             continue;
         }
         domain |= cvm__tri2_in_domain(T, t);
