@@ -32,7 +32,7 @@ static const cli_option_flag k_flags[] = {
      "local solver of the dual optimiser: 1 pattern search (default), 2 cuckoo search"},
     {"--max-sweeps", "N", CVM_OPT_DUAL_MAX_SWEEPS, 0, OPT, "sweeps of the dual optimiser (default 50)"},
     {"--dual-min-angle", "DEG", CVM_OPT_DUAL_MIN_ANGLE_DEG, 0, OPT,
-     "smallest angle a move of the dual optimiser may create (default 10)"},
+     "smallest angle a move of the dual optimiser may create (default 30)"},
     {"--target-angle", "DEG", CVM_OPT_DUAL_TARGET_ANGLE_DEG, 0, OPT,
      "the dual optimiser also improves triangles with a smaller angle (default 40)"},
     {"--margin", "F", CVM_OPT_DUAL_MARGIN, 0, OPT,

@@ -197,7 +197,7 @@ def cvm_rows(name, poly, h, algo, label, s_tri):
 
 def main():
     build_driver()
-    print("# bench_dual: cvm_mesh_optimise_dual (defaults: min angle 10, target angle 40, margin "
+    print("# bench_dual: cvm_mesh_optimise_dual (defaults: min angle 30, target angle 40, margin "
           "0.15, merge tol 0.1), one core")
     print("# out%0/out% dual vertex outside before/after; nc% / ncb% non-compliant after (all / "
           "boundary); dual0/dual smallest dual edge / primal edge; step = min(primal, dual);")
