@@ -495,7 +495,7 @@ static cvm_status run(dopt *D)
     D->nc0 = D->nc;
     D->rep->nc_before_pct = pct(D);
     for (k = 0; k < (uint64_t)p->max_sweeps && (D->nc || D->nweak); k++) {
-        size_t moved = 0, nc_prev, nweak_prev;
+        size_t moved = 0, nc_prev, nweak_prev, flips0;
         if ((s = sizes(D)))
             return s;
         boundary_flags(D);
@@ -508,9 +508,13 @@ static cvm_status run(dopt *D)
         s = sweep(D, k, &moved);
         D->rep->moves += moved;
         D->rep->sweeps++;
+        flips0 = D->rep->flips;
         if ((s2 = restore(D))) {
-            /* no flip was done: go back to the regular state of the sweep's start */
-            load_state(D);
+            /* out of memory: without a flip, go back to the regular state of the
+             * sweep's start; after flips the topology follows the new positions,
+             * which stay (conforming, counter-clockwise, maybe not regular) */
+            if (D->rep->flips == flips0)
+                load_state(D);
             return s2;
         }
         if (s)
