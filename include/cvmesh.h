@@ -414,8 +414,8 @@ typedef enum cvm_option {
     /** Maximum Steiner points a refinement may add, integer, 0 = none (default), [0, 2^31-1]. */
     CVM_OPT_MAX_STEINER = 402,
     /** Threads for parallel stages, integer, 0 = OpenMP default (default), [0, 1024].
-     *  Output does not depend on it. In version 0.1 no stage runs in parallel yet
-     *  (triangulation and refinement are serial), so the value has no effect. */
+     *  Output does not depend on it. In version 0.1 only cvm_mesh_optimise_dual()
+     *  runs in parallel (its local problems); triangulation and refinement are serial. */
     CVM_OPT_THREADS = 403,
 
     /** Dual optimisation (500..599): read by cvm_mesh_optimise_dual(). */
@@ -1071,7 +1071,10 @@ CVM_API cvm_status cvm_mesh_copy_dual_merge_groups(cvm_index *dst, size_t dst_le
  *           initially non-compliant triangles made compliant so far, and can cancel.
  * Stops:    on the time limit or cancellation the mesh is a valid regular
  *           triangulation (positions and weights reached so far).
- * Threads:  serial in this version; the result does not depend on CVM_OPT_THREADS.
+ * Threads:  the local problems of each batch (vertices no two of which are equal or
+ *           adjacent, cut from the sweep order independently of the thread count)
+ *           run on CVM_OPT_THREADS OpenMP threads; moves are applied in batch order,
+ *           so the result does not depend on the thread count.
  * Determinism: same mesh, options and seed give bit-identical output (except
  *           where the time limit stops the run).
  * Atomicity: on CVM_E_NOMEM the mesh is conforming and counter-clockwise: usually the

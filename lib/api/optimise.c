@@ -51,6 +51,7 @@ cvm_status cvm_mesh_optimise_dual(cvm_mesh *m, const cvm_sizing *sizing)
     p.margin = cvm__opt(m, CVM_OPT_DUAL_MARGIN);
     p.merge_tol = cvm__opt(m, CVM_OPT_DUAL_MERGE_TOL);
     p.seed = (uint64_t)cvm__opt(m, CVM_OPT_SEED);
+    p.threads = (int)cvm__opt(m, CVM_OPT_THREADS);
     p.n_fixed = cvm__opt(m, CVM_OPT_DUAL_KEEP_INPUT_POINTS) != 0 ? input_vertices(m) : 0;
     if (!cvm__sizing_is_empty(sizing)) {
         sp.sizing = sizing;

@@ -86,6 +86,7 @@ typedef struct cvm__dual_opt_params {
     double margin;          /* power vertex pushed this fraction of each edge inside */
     double merge_tol;       /* fraction of l / sqrt(3) */
     uint64_t seed;
+    int threads;            /* OpenMP threads for the local problems (0: default) */
     size_t n_fixed;         /* vertices 0..n_fixed-1 keep their position (input points
                                with CVM_OPT_DUAL_KEEP_INPUT_POINTS), else 0 */
     cvm__dual_size_fn size_fn; /* NULL: sizes from the mesh (cvm__dual_mesh_sizes) */

@@ -22,17 +22,26 @@
  * nothing is non-compliant, a sweep moves nothing, or at the sweep limit, the
  * time limit or cancellation.
  *
- * Serial: vertices are solved one after the other in the order above, so the
- * result is identical for any CVM_OPT_THREADS.
+ * Parallel and deterministic: the order above is cut into batches of vertices
+ * no two of which are equal or share a triangle's vertex (so their local
+ * problems read no vertex that moves); a batch's problems are solved on
+ * OpenMP threads, then applied and re-scored in batch order. Batches depend
+ * only on the mesh and the order, so the result is identical for any
+ * CVM_OPT_THREADS.
  */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 #include "optimise.h"
 #include "geom/geom_internal.h"
 
 #define FIX_ROUNDS 8
+#define BATCH 256
 
 typedef struct dopt {
     cvm__tri2 *T;
@@ -46,7 +55,11 @@ typedef struct dopt {
     uint8_t *weak;   /* per slot: compliant but an angle below the target, merged, or the
                         power vertex within half the margin of an edge */
     int32_t *list;   /* slots to visit */
-    int32_t *star;   /* scratch star */
+    int32_t *star;   /* scratch: sort buffer, then the stars of a batch (disjoint) */
+    struct job *jobs; /* BATCH entries */
+    uint32_t *stamp; /* nv: batch stamp of the vertices a batch holds or touches */
+    uint32_t cur_stamp;
+    int nthreads;
     double *save;    /* 3 per vertex: x, y, w at the start of a sweep */
     size_t nc, nc0;  /* current and initial non-compliant counts */
     size_t nweak;
@@ -173,8 +186,8 @@ static void score_all(dopt *D)
     }
 }
 
-/* Live triangles around v into D->star; their number. */
-static size_t gather_star(dopt *D, int32_t v)
+/* Live triangles around v into star (room for them); their number. */
+static size_t gather_star(const dopt *D, int32_t v, int32_t *star)
 {
     const cvm__tri2 *T = D->T;
     int32_t t0 = T->vtri[v], t = t0;
@@ -184,18 +197,18 @@ static size_t gather_star(dopt *D, int32_t v)
     do {
         const int32_t *tv = T->tv + 3 * (size_t)t;
         int i = tv[0] == v ? 0 : tv[1] == v ? 1 : 2;
-        D->star[n++] = t;
+        star[n++] = t;
         t = T->tn[3 * (size_t)t + (size_t)(i + 1) % 3] / 3;
     } while (t != t0 && n < T->nt);
     return n;
 }
 
 /* 1 when a triangle of the star is a domain triangle. */
-static int domain_of_star(const dopt *D, size_t n)
+static int domain_of_star(const dopt *D, const int32_t *star, size_t n)
 {
     size_t k;
     for (k = 0; k < n; k++)
-        if (cvm__tri2_in_domain(D->T, D->star[k]))
+        if (cvm__tri2_in_domain(D->T, star[k]))
             return 1;
     return 0;
 }
@@ -225,20 +238,20 @@ static int hull_safe(const cvm__tri2 *T, int32_t g)
 
 /* Degrees of freedom of v (see optimise.h) and, for a vertex on a segment,
  * the segment's direction. 0: v has no domain triangle. */
-static int vertex_mode(dopt *D, int32_t v, size_t n, double *dir)
+static int vertex_mode(const dopt *D, int32_t v, const int32_t *star, size_t n, double *dir)
 {
     const cvm__tri2 *T = D->T;
     int32_t nb[2] = {-1, -1}, sg[2] = {-1, -1};
     int ncon = 0, ghost = 0, domain = 0, other = 0;
     size_t k;
     for (k = 0; k < n; k++) {
-        int32_t t = D->star[k];
+        int32_t t = star[k];
         const int32_t *tv = T->tv + 3 * (size_t)t;
         int i = tv[0] == v ? 0 : tv[1] == v ? 1 : 2, e;
         if (cvm__tri2_is_ghost(T, t)) {
             ghost = 1;
             if (!hull_safe(T, t))
-                return domain_of_star(D, n) ? 1 : 0;
+                return domain_of_star(D, star, n) ? 1 : 0;
             continue;
         }
         domain |= cvm__tri2_in_domain(T, t);
@@ -272,28 +285,39 @@ static int vertex_mode(dopt *D, int32_t v, size_t n, double *dir)
     return 1;
 }
 
-/* Solve the local problem of v; 1 when it moved. */
-static int solve_vertex(dopt *D, int32_t v, uint64_t sweep)
+/* One vertex of a batch: its star (in the batch's pool) and the outcome of its
+ * local problem. */
+typedef struct job {
+    int32_t v;
+    size_t star0, nstar;
+    int moved;
+    double p[2], w;
+} job;
+
+/* Solve the local problem of job J (reads the mesh, writes only J): the
+ * parallel part of a batch. */
+static void solve_job(const dopt *D, job *J, uint64_t sweep)
 {
-    cvm__tri2 *T = D->T;
+    const cvm__tri2 *T = D->T;
+    const int32_t *star = D->star + J->star0;
     cvm__dopt_local L;
-    double u[CVM__DOPT_MAXDOF] = {0}, f0, f, p[2], w;
-    size_t n = gather_star(D, v), k;
-    int j;
+    double u[CVM__DOPT_MAXDOF] = {0}, f0, f;
+    int32_t v = J->v;
+    J->moved = 0;
     memset(&L, 0, sizeof L);
-    if (!n || !(D->vsize[v] > 0))
-        return 0;
-    L.ndof = vertex_mode(D, v, n, L.dir);
+    if (!J->nstar || !(D->vsize[v] > 0))
+        return;
+    L.ndof = vertex_mode(D, v, star, J->nstar, L.dir);
     if (!L.ndof)
-        return 0;
+        return;
     L.T = T;
     L.v = v;
     L.p0[0] = T->xy[2 * (size_t)v];
     L.p0[1] = T->xy[2 * (size_t)v + 1];
     L.w0 = T->w[v];
     L.h = D->vsize[v];
-    L.star = D->star;
-    L.nstar = n;
+    L.star = star;
+    L.nstar = J->nstar;
     L.vbnd = D->vbnd;
     L.margin = D->p->margin;
     L.sin2_target = D->sin2_target;
@@ -309,17 +333,29 @@ static int solve_vertex(dopt *D, int32_t v, uint64_t sweep)
         cvm__dopt_pattern(&L, D->p->pattern_budget, f0, u, &f);
     }
     if (!(f < f0))
-        return 0;
-    cvm__dopt_point(&L, u, p, &w);
-    T->xy[2 * (size_t)v] = p[0];
-    T->xy[2 * (size_t)v + 1] = p[1];
-    T->w[v] = w;
-    /* re-score the star and the triangles across its outer edges */
-    for (k = 0; k < n; k++)
-        if (cvm__tri2_in_domain(T, D->star[k]))
-            cvm__dual_tri_vertex(T, D->star[k], D->V + 2 * (size_t)D->star[k]);
-    for (k = 0; k < n; k++) {
-        int32_t t = D->star[k];
+        return;
+    cvm__dopt_point(&L, u, J->p, &J->w);
+    J->moved = 1;
+}
+
+/* Apply a solved job: move the vertex, re-score its star and the triangles
+ * across its outer edges. Serial, in batch order. */
+static void apply_job(dopt *D, const job *J)
+{
+    cvm__tri2 *T = D->T;
+    const int32_t *star = D->star + J->star0;
+    size_t k;
+    int j;
+    if (!J->moved)
+        return;
+    T->xy[2 * (size_t)J->v] = J->p[0];
+    T->xy[2 * (size_t)J->v + 1] = J->p[1];
+    T->w[J->v] = J->w;
+    for (k = 0; k < J->nstar; k++)
+        if (cvm__tri2_in_domain(T, star[k]))
+            cvm__dual_tri_vertex(T, star[k], D->V + 2 * (size_t)star[k]);
+    for (k = 0; k < J->nstar; k++) {
+        int32_t t = star[k];
         if (!cvm__tri2_in_domain(T, t))
             continue;
         rescore(D, t);
@@ -329,7 +365,6 @@ static int solve_vertex(dopt *D, int32_t v, uint64_t sweep)
                 rescore(D, u2);
         }
     }
-    return 1;
 }
 
 /* Make T regular again with no vanished vertex (see the file comment). */
@@ -456,24 +491,88 @@ static double pct(const dopt *D)
     return n ? 100.0 * (double)D->nc / (double)n : 0.0;
 }
 
-/* One sweep; *moved_out receives the number of accepted moves. */
+/* Add v to the batch being formed when no vertex of the batch is v or one of
+ * its neighbours (so the batch's local problems share no vertex that moves):
+ * gather its star into the pool and stamp its star's vertices. 0: blocked. */
+static int batch_add(dopt *D, int32_t v, size_t *nb, size_t *used)
+{
+    const cvm__tri2 *T = D->T;
+    job *J = D->jobs + *nb;
+    size_t k;
+    if (D->stamp[v] == D->cur_stamp)
+        return 0;
+    J->v = v;
+    J->star0 = *used;
+    J->nstar = gather_star(D, v, D->star + *used);
+    for (k = 0; k < J->nstar; k++) {
+        const int32_t *tv = T->tv + 3 * (size_t)D->star[*used + k];
+        int c;
+        for (c = 0; c < 3; c++)
+            if (tv[c] != CVM__GHOST && D->stamp[tv[c]] == D->cur_stamp) {
+                J->nstar = 0; /* a neighbour is in the batch: v waits */
+                return 0;
+            }
+    }
+    for (k = 0; k < J->nstar; k++) {
+        const int32_t *tv = T->tv + 3 * (size_t)D->star[*used + k];
+        int c;
+        for (c = 0; c < 3; c++)
+            if (tv[c] != CVM__GHOST)
+                D->stamp[tv[c]] = D->cur_stamp;
+    }
+    D->stamp[v] = D->cur_stamp;
+    *used += J->nstar;
+    ++*nb;
+    return 1;
+}
+
+/* One sweep; *moved_out receives the number of accepted moves. The visiting
+ * order is cut into batches of at most BATCH vertices, no two of them equal or
+ * adjacent, taken in order from the sorted list (a vertex that would join a
+ * batch holding one of its neighbours closes the batch). The local problems of
+ * a batch are independent, so they are solved in parallel; the moves are
+ * then applied and re-scored in batch order. Batches depend only on the mesh
+ * and the order, never on the thread count, so the result does not either. */
 static cvm_status sweep(dopt *D, uint64_t k, size_t *moved_out)
 {
     cvm__tri2 *T = D->T;
-    size_t n = sweep_order(D, k), i, moved = 0;
+    size_t n = sweep_order(D, k), i = 0, moved = 0;
     cvm_status s = CVM_OK;
     memset(D->mark, 0, T->nv);
-    for (i = 0; i < n && !s; i++) {
-        int32_t t = D->list[i];
-        int j;
-        if ((D->st[t] != 2 && !D->weak[t]) || !cvm__tri2_in_domain(T, t))
-            continue;
-        for (j = 0; j < 3 && !s; j++) {
-            int32_t v = T->tv[3 * (size_t)t + (size_t)j];
-            if (D->mark[v])
+    while (i < n && !s) {
+        size_t nb = 0, used = 0, b;
+        int closed = 0;
+        D->cur_stamp++;
+        while (i < n && nb < BATCH && !closed) {
+            int32_t t = D->list[i];
+            int j;
+            if ((D->st[t] != 2 && !D->weak[t]) || !cvm__tri2_in_domain(T, t)) {
+                i++;
                 continue;
-            D->mark[v] = 1;
-            moved += (size_t)solve_vertex(D, v, k);
+            }
+            for (j = 0; j < 3 && !closed; j++) {
+                int32_t v = T->tv[3 * (size_t)t + (size_t)j];
+                if (D->mark[v])
+                    continue;
+                if (nb == BATCH || !batch_add(D, v, &nb, &used))
+                    closed = 1;
+                else
+                    D->mark[v] = 1;
+            }
+            if (!closed)
+                i++;
+        }
+        {
+            long kk, nbl = (long)nb;
+#ifdef _OPENMP
+#pragma omp parallel for schedule(dynamic, 8) num_threads(D->nthreads) if (nb > 16)
+#endif
+            for (kk = 0; kk < nbl; kk++)
+                solve_job(D, D->jobs + kk, k);
+        }
+        for (b = 0; b < nb && !s; b++) {
+            apply_job(D, D->jobs + b);
+            moved += (size_t)D->jobs[b].moved;
             s = cvm__tick(T->ctx, 1, CVM_STAGE_OPTIMISE_DUAL, progress(D));
         }
     }
@@ -542,6 +641,13 @@ cvm_status cvm__dual_optimise(cvm__tri2 *T, const cvm__dual_opt_params *p, cvm__
     D.rep = rep;
     D.sin2_min = sin(p->min_angle_deg * 3.14159265358979323846 / 180.0);
     D.sin2_min *= D.sin2_min;
+    D.nthreads = p->threads;
+#ifdef _OPENMP
+    if (D.nthreads <= 0)
+        D.nthreads = omp_get_max_threads();
+#endif
+    if (D.nthreads <= 0)
+        D.nthreads = 1;
     D.sin2_target = sin(p->target_angle_deg * 3.14159265358979323846 / 180.0);
     D.sin2_target *= D.sin2_target;
     if (!T->w) {
@@ -559,7 +665,10 @@ cvm_status cvm__dual_optimise(cvm__tri2 *T, const cvm__dual_opt_params *p, cvm__
     D.list = cvm__malloc(ctx, (nt + 1) * sizeof *D.list);
     D.star = cvm__malloc(ctx, (nt + 1) * sizeof *D.star);
     D.save = cvm__malloc(ctx, (3 * nv + 1) * sizeof *D.save);
-    if (!D.vsize || !D.vbnd || !D.mark || !D.V || !D.F || !D.st || !D.weak || !D.list || !D.star || !D.save)
+    D.jobs = cvm__malloc(ctx, BATCH * sizeof *D.jobs);
+    D.stamp = cvm__calloc(ctx, nv + 1, sizeof *D.stamp);
+    if (!D.vsize || !D.vbnd || !D.mark || !D.V || !D.F || !D.st || !D.weak || !D.list || !D.star || !D.save || !D.jobs ||
+        !D.stamp)
         s = CVM_E_NOMEM;
     else
         s = run(&D);
@@ -579,6 +688,8 @@ cvm_status cvm__dual_optimise(cvm__tri2 *T, const cvm__dual_opt_params *p, cvm__
     cvm__free(ctx, D.list);
     cvm__free(ctx, D.star);
     cvm__free(ctx, D.save);
+    cvm__free(ctx, D.jobs);
+    cvm__free(ctx, D.stamp);
     rep->seconds = cvm__now() - t0;
     return s;
 }
