@@ -447,9 +447,64 @@ typedef enum cvm_option {
     /** Maximum Steiner points a refinement may add, integer, 0 = none (default), [0, 2^31-1]. */
     CVM_OPT_MAX_STEINER = 402,
     /** Threads for parallel stages, integer, 0 = OpenMP default (default), [0, 1024].
-     *  Output does not depend on it. In version 0.1 no stage runs in parallel yet
-     *  (triangulation and refinement are serial), so the value has no effect. */
-    CVM_OPT_THREADS = 403
+     *  Output does not depend on it. In version 0.1 only cvm_mesh_optimise_dual()
+     *  runs in parallel (its local problems); triangulation and refinement are serial. */
+    CVM_OPT_THREADS = 403,
+
+    /** Dual optimisation (500..599): read by cvm_mesh_optimise_dual(). */
+    /** Local solver: 1 (default) deterministic compass (pattern) search on a smooth
+     *  penalty; 2 Modified Cuckoo Search (Walton et al. 2011; population 10 x the
+     *  degrees of freedom, streams keyed by (CVM_OPT_SEED, sweep, vertex)). Integer,
+     *  [1, 2]. Default chosen by measurement (tests/bench/bench_dual.py): both reach
+     *  0% non-compliant on every shared geometry with similar angles and dual edges,
+     *  and cuckoo takes 3-9x longer (Delaunay-refined NACA 0012, 25k triangles: 0.8 s
+     *  against 7.3 s). */
+    CVM_OPT_DUAL_SOLVER = 500,
+    /** Largest number of sweeps, integer, default 50, bounds [0, 100000]; 0 only
+     *  restores the regular triangulation and scores it. */
+    CVM_OPT_DUAL_MAX_SWEEPS = 501,
+    /** Smallest angle a local move may create, degrees, default 30, bounds [0, 50]. A
+     *  move is rejected when an angle of the vertex's star would drop below
+     *  min(this, the star's smallest angle before the move): angles already below it
+     *  never get worse. Measured on the shared geometries (tests/bench/bench_dual.py):
+     *  with 30 every run still ends at 0% non-compliant and no mesh refined at 30
+     *  degrees drops below 30 (with 10: down to 27.5 on the NACA 0012); other
+     *  minimum angles move by less than 1 degree either way. */
+    CVM_OPT_DUAL_MIN_ANGLE_DEG = 502,
+    /** Objective evaluations per vertex and sweep of the cuckoo solver, integer,
+     *  default 300, bounds [30, 1000000]. */
+    CVM_OPT_DUAL_CUCKOO_BUDGET = 503,
+    /** Objective evaluations per vertex and sweep of the pattern solver, integer,
+     *  default 60, bounds [1, 1000000]. */
+    CVM_OPT_DUAL_PATTERN_BUDGET = 504,
+    /** Margin of the local objective: each power vertex is pushed at least this
+     *  fraction of each edge length inside its triangle (so a dual edge is at least
+     *  twice this fraction of its primal edge where it is met), default 0.15, bounds
+     *  [0, 0.25]. 0 only asks for containment. Measured on the shared geometries
+     *  (tests/bench/bench_dual.py): 0.15 keeps every dual edge above 0.15 of its primal
+     *  edge; 0.1 leaves 0.12 on some and gives up to 2 degrees larger minimum angles. */
+    CVM_OPT_DUAL_MARGIN = 505,
+    /** Target angle, degrees, default 40, bounds [0, 60]: compliant triangles with an
+     *  angle below it (or merged, or whose power vertex lies within half the margin of
+     *  an edge) are visited too, after the non-compliant ones, and the local objective
+     *  adds (1 - sin^2(angle) / sin^2(target))^2 for each triangle below it.
+     *  0: only non-compliant triangles are visited. */
+    CVM_OPT_DUAL_TARGET_ANGLE_DEG = 506,
+    /** 1: input points keep their position (only their weights change); 0 (default):
+     *  they move like Steiner points, so a mesh read as points can be optimised. In
+     *  both cases a vertex on a constrained edge moves only along its segment, and only
+     *  when it lies between two constrained edges of one segment or of two exactly
+     *  collinear segments (exact orient2d); corners, segment ends and convex-hull
+     *  vertices of unconstrained hulls never move. Integer, [0, 1]. */
+    CVM_OPT_DUAL_KEEP_INPUT_POINTS = 507,
+    /** Merge tolerance, a fraction of the local ideal dual edge l / sqrt(3), default
+     *  0.1, bounds [0, 1]; 0 merges nothing. l at an edge is the mean of the local
+     *  sizes of its two ends, each the mean length of the vertex's edges (taken from
+     *  the mesh, so merge decisions can be recomputed from the mesh alone). Two domain
+     *  triangles sharing an unconstrained edge (same region) whose power vertices are
+     *  closer than tol * l / sqrt(3) belong to the same merged cell (see
+     *  cvm_mesh_copy_dual_merge_groups()). Read by the measures and copies too. */
+    CVM_OPT_DUAL_MERGE_TOL = 520
 } cvm_option;
 
 /** Bounds of an option; the one frozen struct of the ABI. */
@@ -1133,6 +1188,80 @@ CVM_API cvm_status cvm_mesh_copy_dual_cells(double *dst, size_t dst_len, const c
  */
 CVM_API cvm_status cvm_mesh_write_dual(cvm_mesh *m, const char *path);
 
+/**
+ * Merged dual cells: copy, per triangle in CVM_ENT_TRIANGLE order, the index
+ * (in that order) of the smallest triangle of its merged group; a triangle
+ * that is not merged gets its own index. Groups are the connected sets of
+ * triangles joined across mergeable edges (the rule of CVM_OPT_DUAL_MERGE_TOL).
+ * A merged group is one polygonal dual cell: its power vertices are treated as
+ * one. A triangle whose power vertex lies outside it counts as compliant when
+ * every edge its power vertex lies beyond (exact test) is a mergeable edge, so
+ * the triangle across it is in its group (CVM_MEASURE_DUAL_NONCOMPLIANT_PCT).
+ * @param dst_len  capacity in entries; must be >= the triangle count.
+ * Determinism: depends only on the mesh, its weights and CVM_OPT_DUAL_MERGE_TOL.
+ * @return CVM_OK, CVM_E_NULL_ARG, CVM_E_BUFFER_TOO_SMALL (nothing written), CVM_E_NOMEM
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_mesh_copy_dual_merge_groups(cvm_index *dst, size_t dst_len,
+                                                   const cvm_mesh *m);
+
+/**
+ * Optimise the vertex positions and weights of @p m so that every triangle
+ * contains its power vertex or is merged (CVM_OPT_DUAL_MERGE_TOL), and dual
+ * edges are not tiny. Per triangle k the score is F_k = W_k L_k |C_k - V_k|
+ * (centroid C, power vertex V; W_k = 0 when V lies in k, decided exactly, or k is
+ * merged, else 1; L_k = 2 for triangles touching the domain boundary, 1 inside).
+ * Each sweep sorts the triangles with F > 0 worst first (then the "weak" ones of
+ * CVM_OPT_DUAL_TARGET_ANGLE_DEG) into min(20, N/25) bins, shuffled within a bin
+ * (stream keyed by CVM_OPT_SEED and the sweep), and solves each of their vertices
+ * once over (x, y, w): interior vertices move freely, vertices on a segment slide
+ * along it, corners, segment ends and vertices of unconstrained convex-hull edges
+ * stay (see also CVM_OPT_DUAL_KEEP_INPUT_POINTS); every weight is free. The local
+ * objective is a smooth penalty on the vertex's star: the distance by which each power vertex falls short of lying
+ * CVM_OPT_DUAL_MARGIN x the edge length inside each edge, squared, plus a small
+ * centroid-to-power-vertex term, over squared edge lengths. A candidate is
+ * rejected when a star triangle would not be strictly counter-clockwise (exact
+ * orient2d), an angle would drop below CVM_OPT_DUAL_MIN_ANGLE_DEG (see there), or
+ * the vertex's power cell in its star would be empty. After each sweep, Lawson
+ * flips under the exact power test restore the regular triangulation; a vertex
+ * whose power cell vanished gets its weight raised until none vanishes (after 8
+ * rounds every weight is reset to 0). No vertex is added or removed, segments and
+ * regions are kept. The run stops when no triangle is non-compliant, a sweep
+ * moves nothing, or at CVM_OPT_DUAL_MAX_SWEEPS. The report of the run is
+ * CVM_MEASURE_DUAL_OPT_*.
+ *
+ * @param m       mesh handle, triangulated; not NULL. Existing weights are the start.
+ * @param sizing  local size for the solver's step lengths; may be NULL: then the
+ *                size at a vertex is the mean length of its edges. Read only during
+ *                the call; not kept.
+ * Options:  CVM_OPT_DUAL_*, CVM_OPT_SEED, CVM_OPT_TIME_LIMIT_S; the progress
+ *           callback (stage CVM_STAGE_OPTIMISE_DUAL) gets the fraction of the
+ *           initially non-compliant triangles made compliant so far, and can cancel.
+ * Stops:    on the time limit or cancellation the mesh is a valid regular
+ *           triangulation (positions and weights reached so far).
+ * Threads:  the local problems of each batch (vertices no two of which are equal or
+ *           adjacent, cut from the sweep order independently of the thread count)
+ *           run on CVM_OPT_THREADS OpenMP threads; moves are applied in batch order,
+ *           so the result does not depend on the thread count.
+ * Determinism: same mesh, options and seed give bit-identical output (except
+ *           where the time limit stops the run).
+ * Atomicity: on CVM_E_NOMEM the mesh is conforming and counter-clockwise: usually the
+ *           regular triangulation of the last completed sweep; when memory ran out
+ *           between the flips that end a sweep, the new positions with their
+ *           flips, where an edge may still fail the power test (cvm_mesh_check()
+ *           says so; a new call with memory restores regularity).
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG           m is NULL
+ *         CVM_E_STATE              nothing triangulated
+ *         CVM_E_ARGUMENT           the sizing callback returned a value <= 0 (message
+ *                                  gives the position)
+ *         CVM_E_INPUT_NONFINITE    the sizing callback returned NaN or infinity
+ *         CVM_E_NOMEM
+ *         CVM_INCOMPLETE_TIME_LIMIT, CVM_INCOMPLETE_CANCELLED
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_mesh_optimise_dual(cvm_mesh *m, const cvm_sizing *sizing);
+
 /* ------------------------------------------------------------------------ */
 /* Quality                                                                   */
 /* ------------------------------------------------------------------------ */
@@ -1191,8 +1320,25 @@ typedef enum cvm_measure {
     CVM_MEASURE_Q5_MEAN = 31,           /**< mean q5 over interior edges (0 without any) */
     CVM_MEASURE_Q1_MIN_BOUNDARY_DEG = 32, /**< smallest angle over boundary triangles, degrees */
     CVM_MEASURE_Q2_MAX_BOUNDARY = 33,   /**< largest q2 over boundary triangles */
-    CVM_MEASURE_Q5_MIN_BOUNDARY = 34    /**< smallest q5 over interior edges with an endpoint on
+    CVM_MEASURE_Q5_MIN_BOUNDARY = 34,   /**< smallest q5 over interior edges with an endpoint on
                                              the boundary (0 without any) */
+    /* Merging (CVM_OPT_DUAL_MERGE_TOL, cvm_mesh_copy_dual_merge_groups()): */
+    CVM_MEASURE_DUAL_MERGED_PCT = 22,   /**< % of triangles in a merged group of 2 or more */
+    CVM_MEASURE_DUAL_NONCOMPLIANT_PCT = 23, /**< % of triangles whose power vertex lies outside
+                                             (exact) and not merged across each edge it lies
+                                             beyond (see cvm_mesh_copy_dual_merge_groups()) */
+    CVM_MEASURE_DUAL_NONCOMPLIANT_BOUNDARY_PCT = 24, /**< the same % over the triangles with
+                                             a vertex on the domain boundary (0 without any) */
+    /* Report of the last cvm_mesh_optimise_dual() on the handle (0 before any, and
+       after cvm_mesh_triangulate()): */
+    CVM_MEASURE_DUAL_OPT_SWEEPS = 40,   /**< sweeps run */
+    CVM_MEASURE_DUAL_OPT_NONCOMPLIANT_BEFORE_PCT = 41, /**< DUAL_NONCOMPLIANT_PCT at the start */
+    CVM_MEASURE_DUAL_OPT_NONCOMPLIANT_AFTER_PCT = 42,  /**< DUAL_NONCOMPLIANT_PCT at the end */
+    CVM_MEASURE_DUAL_OPT_MOVES = 43,    /**< accepted local moves (a vertex per sweep at most) */
+    CVM_MEASURE_DUAL_OPT_FLIPS = 44,    /**< flips restoring the regular triangulation */
+    CVM_MEASURE_DUAL_OPT_WEIGHT_FIXES = 45, /**< weights raised so that no power cell vanished
+                                             (vertices removed: always 0, none are) */
+    CVM_MEASURE_DUAL_OPT_SECONDS = 46   /**< wall time of the run, seconds (not deterministic) */
 } cvm_measure;
 
 /**

@@ -145,6 +145,7 @@ CVMPY_NOGIL(NAME)
 
 CVMPY_LONG_CALL(cvm_mesh_triangulate)
 CVMPY_LONG_CALL(cvm_mesh_refine)
+CVMPY_LONG_CALL(cvm_mesh_optimise_dual)
 CVMPY_LONG_CALL(cvm_mesh_read)
 CVMPY_LONG_CALL(cvm_mesh_write)
 CVMPY_LONG_CALL(cvm_mesh_check)

@@ -10,7 +10,7 @@
 #include "io/io_internal.h"
 
 /* Options live in one table; index with cvm__option_slot(). */
-#define CVM__NOPTIONS 24
+#define CVM__NOPTIONS 32
 
 struct cvm_mesh {
     cvm__ctx ctx;
@@ -35,6 +35,9 @@ struct cvm_mesh {
     size_t n_refine_unmet;
     int32_t *front_marks;    /* cvm_mesh_set_front_markers() */
     size_t n_front_marks;
+
+    /* dual optimisation (lib/api/optimise.c) */
+    double dual_opt_report[7]; /* the last cvm_mesh_optimise_dual(): CVM_MEASURE_DUAL_OPT_* */
 };
 
 /* Slot of key in opt[], or -1 if the key is unknown. */
@@ -77,6 +80,14 @@ cvm_status cvm__dual_quality_histogram(double *dst, size_t dst_len, cvm_mesh *m,
  * triangulated, with weights, equal to the file's mesh; on error m is unchanged
  * and the message names the file and the offending line or item. */
 cvm_status cvm__mesh_read_vtu(cvm_mesh *m, const char *path);
+/* The merge and compliance measures CVM_MEASURE_DUAL_MERGED_PCT ..
+ * CVM_MEASURE_DUAL_NONCOMPLIANT_BOUNDARY_PCT and the report
+ * CVM_MEASURE_DUAL_OPT_* (lib/api/optimise.c); m has triangles for the former.
+ * CVM_OK, CVM_E_NOMEM, or CVM_E_ARGUMENT (no message) when which is not one
+ * of them. */
+cvm_status cvm__optimise_measure(double *out, cvm_mesh *m, cvm_measure which);
+/* 1 when which is one of the measures of cvm__optimise_measure that need triangles. */
+int cvm__optimise_measure_needs_triangles(cvm_measure which);
 
 /* With weights set: *out receives a fresh array of nattr + 1 values per
  * vertex, the weight first, then the point attributes (free with cvm__free);

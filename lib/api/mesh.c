@@ -56,6 +56,7 @@ void cvm__mesh_drop_output(cvm_mesh *m)
     cvm__free(&m->ctx, m->refine_unmet);
     m->refine_unmet = NULL;
     m->n_refine_unmet = 0;
+    memset(m->dual_opt_report, 0, sizeof m->dual_opt_report);
 }
 
 void cvm_mesh_free(cvm_mesh *m)

@@ -195,6 +195,10 @@ cvm_status cvm_mesh_get_measure(double *out, cvm_mesh *m, cvm_measure which)
         return cvm__error(&m->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "out is NULL");
     if (cvm__refine_measure(out, m, which) == CVM_OK)
         return CVM_OK; /* the report of the last refinement (lib/api/refine.c) */
+    if (cvm__optimise_measure_needs_triangles(which))
+        return (s = need_triangles(m)) ? s : cvm__optimise_measure(out, m, which);
+    if (cvm__optimise_measure(out, m, which) == CVM_OK)
+        return CVM_OK; /* the report of the last dual optimisation (lib/api/optimise.c) */
     if ((int)which >= (int)CVM_MEASURE_DUAL_OUTSIDE_PCT &&
         (int)which <= (int)CVM_MEASURE_VANISHED_VERTICES)
         return (s = need_triangles(m)) ? s : cvm__dual_measure(out, m, which); /* lib/api/dual.c */

@@ -16,7 +16,8 @@
 /* Subcommands, as bits: an option flag lists the subcommands that take it. */
 enum {
     CLI_CMD_TRIANGULATE = 1u << 0,
-    CLI_CMD_REFINE = 1u << 1
+    CLI_CMD_REFINE = 1u << 1,
+    CLI_CMD_OPTIMISE = 1u << 2
 };
 
 /* One flag that sets a library option (flags.c holds the one table). */
@@ -71,5 +72,7 @@ int cli_triangulate(int argc, char **argv);
 void cli_triangulate_help(FILE *f);
 int cli_refine(int argc, char **argv);
 void cli_refine_help(FILE *f);
+int cli_optimise(int argc, char **argv);
+void cli_optimise_help(FILE *f);
 
 #endif

@@ -18,6 +18,8 @@ static const cli_command k_commands[] = {
      cli_triangulate, cli_triangulate_help},
     {"refine", "quality mesh of a .poly file: Delaunay refinement or frontal-Delaunay",
      cli_refine, cli_refine_help},
+    {"optimise", "optimise a mesh's power (weighted Voronoi) dual: every triangle holds its dual vertex",
+     cli_optimise, cli_optimise_help},
 };
 
 #define NCOMMANDS (sizeof k_commands / sizeof k_commands[0])

@@ -12,6 +12,7 @@
 #define CVM_DUAL_INTERNAL_H
 
 #include <stdint.h>
+#include "delaunay/delaunay_internal.h"
 
 /* Power vertex of the non-degenerate triangle a, b, c with weights wa, wb, wc
  * into out[2]: plain doubles, possibly inexact (a construction). */
@@ -33,5 +34,78 @@ int cvm__power_side2d(const double *a, const double *b, const double *c, double 
 /* Power-bisector foot of edge a-b: the point of line ab with equal power
  * distance to (a, wa) and (b, wb), into out[2] (inexact; a != b). */
 void cvm__power_foot2d(const double *a, const double *b, double wa, double wb, double *out);
+
+/* ---- merging (merge.c) ---- */
+
+/* Local size of every vertex of T from the mesh: the mean length of its
+ * edges to other vertices of domain triangles (0 for a vertex without any),
+ * into vsize (T->nv entries). The merge rule uses it, so any tool can
+ * recompute merge decisions from the mesh alone. */
+void cvm__dual_mesh_sizes(const cvm__tri2 *T, double *vsize);
+
+/* Power vertex of slot t (a live real triangle) into out[2] (inexact). */
+void cvm__dual_tri_vertex(const cvm__tri2 *T, int32_t t, double *out);
+
+/* The one merge rule. Edge j of domain triangle t is mergeable when it is not
+ * constrained, the triangle u across it is a domain triangle of the same
+ * regional attribute, and the dual edge |V_t - V_u| is shorter than
+ * tol * l / sqrt(3), l the mean of vsize at the edge's two ends. Vt, Vu are
+ * the power vertices of t and u (the caller's, so it can cache them). */
+int cvm__dual_edge_mergeable(const cvm__tri2 *T, const double *vsize, double tol, int32_t t, int j,
+                             const double *Vt, const double *Vu);
+
+/* Compliance of domain triangle t: 0 when its power vertex lies inside or on
+ * it (exact cvm__power_side2d on each edge), 1 when outside but every edge it
+ * lies beyond is mergeable (the merged cell holds it), 2 when non-compliant.
+ * V: cache of power vertices by slot (2 per slot, filled for domain slots). */
+int cvm__dual_tri_status(const cvm__tri2 *T, const double *vsize, double tol, const double *V,
+                         int32_t t);
+
+/* Merge groups by slot: group[t] = the smallest slot of the group of domain
+ * triangles joined by mergeable edges (union-find), t itself when unmerged,
+ * -1 for slots that are not domain triangles. group has T->nt entries; V as
+ * above. CVM_OK or CVM_E_NOMEM. */
+cvm_status cvm__dual_merge_groups(cvm__ctx *ctx, const cvm__tri2 *T, const double *vsize, double tol,
+                                  const double *V, int32_t *group);
+
+/* ---- the dual optimiser (optimise*.c) ---- */
+
+enum { CVM__DUAL_SOLVER_PATTERN = 1, CVM__DUAL_SOLVER_CUCKOO = 2 };
+
+/* Size callback of the optimiser: the local size at (x, y) into *h; a status
+ * other than CVM_OK stops the run with it (the callee records the message). */
+typedef cvm_status (*cvm__dual_size_fn)(void *payload, double x, double y, double *h);
+
+typedef struct cvm__dual_opt_params {
+    int solver;             /* CVM__DUAL_SOLVER_* */
+    int max_sweeps;
+    double min_angle_deg;   /* feasibility bound of the local solver */
+    double target_angle_deg; /* triangles with a smaller angle are visited and penalised */
+    int cuckoo_budget;      /* objective evaluations per vertex (cuckoo) */
+    int pattern_budget;     /* objective evaluations per vertex (pattern search) */
+    double margin;          /* power vertex pushed this fraction of each edge inside */
+    double merge_tol;       /* fraction of l / sqrt(3) */
+    uint64_t seed;
+    int threads;            /* OpenMP threads for the local problems (0: default) */
+    size_t n_fixed;         /* vertices 0..n_fixed-1 keep their position (input points
+                               with CVM_OPT_DUAL_KEEP_INPUT_POINTS), else 0 */
+    cvm__dual_size_fn size_fn; /* NULL: sizes from the mesh (cvm__dual_mesh_sizes) */
+    void *size_payload;
+} cvm__dual_opt_params;
+
+typedef struct cvm__dual_opt_report {
+    size_t sweeps;
+    double nc_before_pct, nc_after_pct; /* % non-compliant (outside and not mergeable) */
+    size_t moves;           /* accepted local moves */
+    size_t flips;           /* flips restoring the regular triangulation */
+    size_t weight_fixes;    /* weights raised so that no vertex vanishes */
+    double seconds;
+} cvm__dual_opt_report;
+
+/* Optimise positions and weights of the vertices of T (see
+ * cvm_mesh_optimise_dual). Run control through T->ctx (armed by the caller).
+ * On every return T is a valid regular triangulation with no vanished
+ * vertex. CVM_OK, CVM_E_NOMEM, a size_fn error, CVM_INCOMPLETE_*. */
+cvm_status cvm__dual_optimise(cvm__tri2 *T, const cvm__dual_opt_params *p, cvm__dual_opt_report *rep);
 
 #endif

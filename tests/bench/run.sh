@@ -38,7 +38,7 @@ if command -v dpkg-query >/dev/null 2>&1; then
     fi
 fi
 OMP_NUM_THREADS=1 "$VENV/bin/python" tests/bench/bench_delaunay.py "$BUILD" "$SHARED"
-for extra in tests/bench/bench_refine.py; do
+for extra in tests/bench/bench_refine.py tests/bench/bench_dual.py; do
     if [ -f "$extra" ]; then
         OMP_NUM_THREADS=1 "$VENV/bin/python" "$extra" "$BUILD" "$SHARED"
     fi

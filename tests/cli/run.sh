@@ -153,6 +153,41 @@ expect_exit 0 "0-based poly with comments" "$CLI" triangulate "$DATA/zero_based_
 expect_exit 0 "regions and attributes" "$CLI" triangulate "$DATA/one_based_attributes_regions.poly" -o "$OUT/r.vtu"
 expect_grep "regions give cell data" "$OUT/r.vtu" 'Name="attribute"'
 
+# ---- optimise: the power dual -------------------------------------------------
+OUT=$TMP/optimise
+mkdir "$OUT"
+for algo in frontal delaunay; do
+    expect_exit 0 "optimise $algo" "$CLI" optimise "$SHARED/data/annulus.poly" --algo $algo --size 0.2 \
+        -o "$OUT/o_$algo.node" --quality --seed 5
+    expect_grep "optimise $algo: compliant" "$TMP/out" "non-compliant (not merged)   0.0000 %"
+    for want in "power vertex outside" "merged" "time-step proxy" "sweeps" "min angle"; do
+        expect_grep "optimise --quality" "$TMP/out" "$want"
+    done
+    if [ "$HAVE_NUMPY" -eq 1 ] || python3 -c 'import fractions' > /dev/null 2>&1; then
+        if python3 "$SHARED/tools/verify_mesh.py" "$SHARED/data/annulus.poly" "$OUT/o_$algo" --weights \
+               --no-delaunay > "$OUT/verify.json" 2>&1 &&
+           grep -q '"pct_power_outside": 0.0,' "$OUT/verify.json"; then
+            pass
+        else
+            fail "optimise $algo: verify_mesh.py --weights: $(tail -c 400 "$OUT/verify.json")"
+        fi
+    fi
+done
+expect_exit 0 "optimise again, same seed" "$CLI" optimise "$SHARED/data/annulus.poly" --algo frontal \
+    --size 0.2 -o "$OUT/again.node" --seed 5
+if cmp -s "$OUT/o_frontal.node" "$OUT/again.node"; then pass; else fail "optimise: same input and seed gave different bytes"; fi
+expect_exit 0 "optimise a .node point set" "$CLI" optimise "$DATA/cocircular_octagon_and_centre.node" -o "$OUT/p.vtu"
+expect_exit 0 "optimise with the cuckoo solver" "$CLI" optimise "$SHARED/data/square.poly" --size 0.2 \
+    --solver 2 --quality
+expect_grep "optimise --solver 2" "$TMP/out" "non-compliant (not merged)   0.0000 %"
+expect_exit 2 "optimise: bad solver" "$CLI" optimise "$SHARED/data/square.poly" --solver 3
+expect_exit 2 "optimise: bad --algo" "$CLI" optimise "$SHARED/data/square.poly" --algo aflr
+expect_exit 2 "optimise: no input" "$CLI" optimise
+expect_exit 0 "optimise --help" "$CLI" optimise --help
+expect_grep "optimise --help" "$TMP/out" "--merge-tol"
+expect_exit 1 "optimise: missing input" "$CLI" optimise "$OUT/no_such.poly"
+expect_one_line "optimise: missing input"
+
 # ---- bad inputs: exit 1, one line naming file:line, no output ---------------
 for case in bad_truncated_points.poly:4 bad_nan_coordinate.poly:3 bad_segment_index.poly:7 \
             bad_point_count_too_small.poly:6 bad_binary_garbage.poly:3; do

@@ -69,3 +69,19 @@ def test_dual_measures(refined):
     assert 0 <= q.dual_outside_pct <= 100
     assert q.vanished_vertices == 0
     assert q.min_dual_edge > 0
+
+
+@pytest.mark.skipif(not hasattr(capi, "cvm_mesh_optimise_dual"), reason="no dual optimiser")
+def test_optimise_dual_makes_every_triangle_compliant(square_pslg):
+    mesh = Mesh.from_pslg(*square_pslg)
+    mesh.refine(algorithm="delaunay", size=0.1)
+    assert not mesh.dual_inside.all()
+    mesh.optimise_dual(dual_solver=1)
+    mesh.check()
+    q = mesh.quality()
+    assert q.dual_noncompliant_pct == 0.0 and q.dual_opt_sweeps >= 1
+    groups = mesh.dual_merge_groups
+    assert groups.shape == (len(mesh.triangles),) and groups.dtype == np.int32
+    assert (groups <= np.arange(len(groups))).all()
+    # every triangle holds its power vertex, or is merged with a neighbour
+    assert mesh.dual_inside.all() or (groups != np.arange(len(groups))).any()

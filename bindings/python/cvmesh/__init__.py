@@ -408,6 +408,33 @@ class Mesh:
             if own is not None:
                 own.close()
 
+    def optimise_dual(self, size=None, sizing=None, progress=None, every=None, **options):
+        """Move the vertices and set their power weights so that every triangle
+        contains its power vertex or is merged, and dual edges are not tiny
+        (cvm_mesh_optimise_dual()). size / sizing: local size for the solver's
+        steps (default: from the mesh). options: dual_solver, dual_max_sweeps,
+        dual_margin, dual_merge_tol, ... (CVM_OPT_* names in lower case).
+        Returns the Status (INCOMPLETE_* when the time limit or the callback
+        stopped it; the mesh is then a valid regular triangulation)."""
+        if not hasattr(capi, "cvm_mesh_optimise_dual"):
+            raise _unsupported("dual optimisation is not available in this version of the "
+                               "cvmesh library (%s)" % version())
+        if size is not None and sizing is not None:
+            raise ValueError("give size or sizing, not both")
+        self.set_options(**options)
+        own = None
+        if size is not None:
+            own = sizing = Sizing(callback=size) if callable(size) else Sizing(uniform=size)
+        try:
+            with contextlib.ExitStack() as stack:
+                s = stack.enter_context(sizing._handle()) if sizing is not None else None
+                m = stack.enter_context(self._handle())
+                stack.enter_context(self._progress_installed(m, progress, every))
+                return self._finish(capi.cvm_mesh_optimise_dual(m, s))
+        finally:
+            if own is not None:
+                own.close()
+
     def check(self):
         """Re-verify the mesh with exact predicates; raises InternalError
         naming the failed check, else returns True."""
@@ -583,6 +610,14 @@ class Mesh:
         """Write the power cells as .vtu polygons (cell data vertex, area, weight)."""
         with self._handle() as m:
             capi.cvm_mesh_write_dual(m, os.fspath(path))
+
+    @property
+    def dual_merge_groups(self):
+        """(m,) int32: per triangle, the smallest triangle index of its merged dual
+        cell (its own index when not merged); see cvm_mesh_copy_dual_merge_groups()."""
+        with self._handle() as m:
+            n = capi.cvm_mesh_count(m, Entity.TRIANGLE)
+            return capi.cvm_mesh_copy_dual_merge_groups(n, m)
 
     @property
     def last_error(self):

@@ -10,5 +10,6 @@ Suite *dual_suite(void)
     suite_add_tcase(s, dual_api_tcase());
     suite_add_tcase(s, dual_quality_tcase());
     suite_add_tcase(s, dual_cells_tcase());
+    suite_add_tcase(s, dual_optimise_tcase());
     return s;
 }

@@ -1,0 +1,230 @@
+/* optimise.c - cvm_mesh_optimise_dual, merge groups and the compliance measures: options in, lib/dual run, report out. */
+#include <math.h>
+#include <string.h>
+
+#include "output_internal.h"
+#include "dual/dual_internal.h"
+#include "refine/refine_internal.h"
+
+enum { REP_SWEEPS, REP_BEFORE, REP_AFTER, REP_MOVES, REP_FLIPS, REP_FIXES, REP_SECONDS };
+
+typedef struct size_payload {
+    const cvm_sizing *sizing;
+    cvm__ctx *err;
+} size_payload;
+
+static cvm_status size_at(void *payload, double x, double y, double *h)
+{
+    const size_payload *sp = payload;
+    return cvm__sizing_at(sp->sizing, x, y, h, sp->err);
+}
+
+/* Vertices of the input points: 0 .. (largest input vertex id). */
+static size_t input_vertices(const cvm_mesh *m)
+{
+    size_t i, n = 0;
+    for (i = 0; m->input_map && i < m->in.np; i++)
+        if (m->input_map[i] >= 0 && (size_t)m->input_map[i] + 1 > n)
+            n = (size_t)m->input_map[i] + 1;
+    return n;
+}
+
+cvm_status cvm_mesh_optimise_dual(cvm_mesh *m, const cvm_sizing *sizing)
+{
+    cvm__dual_opt_params p;
+    cvm__dual_opt_report rep;
+    size_payload sp;
+    cvm_status s;
+    if (!m)
+        return CVM_E_NULL_ARG;
+    CVM__BEGIN(m);
+    if (!m->triangulated || !cvm__domain_triangles(&m->tri))
+        return cvm__error(&m->ctx, CVM_E_STATE, CVM_ENT_NONE, -1,
+                          "no triangulation: call cvm_mesh_triangulate() first");
+    memset(&p, 0, sizeof p);
+    p.solver = (int)cvm__opt(m, CVM_OPT_DUAL_SOLVER);
+    p.max_sweeps = (int)cvm__opt(m, CVM_OPT_DUAL_MAX_SWEEPS);
+    p.min_angle_deg = cvm__opt(m, CVM_OPT_DUAL_MIN_ANGLE_DEG);
+    p.target_angle_deg = cvm__opt(m, CVM_OPT_DUAL_TARGET_ANGLE_DEG);
+    p.cuckoo_budget = (int)cvm__opt(m, CVM_OPT_DUAL_CUCKOO_BUDGET);
+    p.pattern_budget = (int)cvm__opt(m, CVM_OPT_DUAL_PATTERN_BUDGET);
+    p.margin = cvm__opt(m, CVM_OPT_DUAL_MARGIN);
+    p.merge_tol = cvm__opt(m, CVM_OPT_DUAL_MERGE_TOL);
+    p.seed = (uint64_t)cvm__opt(m, CVM_OPT_SEED);
+    p.threads = (int)cvm__opt(m, CVM_OPT_THREADS);
+    p.n_fixed = cvm__opt(m, CVM_OPT_DUAL_KEEP_INPUT_POINTS) != 0 ? input_vertices(m) : 0;
+    if (!cvm__sizing_is_empty(sizing)) {
+        sp.sizing = sizing;
+        sp.err = &m->ctx;
+        p.size_fn = size_at;
+        p.size_payload = &sp;
+    }
+    memset(m->dual_opt_report, 0, sizeof m->dual_opt_report);
+    cvm__run_begin(&m->ctx, cvm__opt(m, CVM_OPT_TIME_LIMIT_S));
+    s = cvm__dual_optimise(&m->tri, &p, &rep);
+    m->dual_opt_report[REP_SWEEPS] = (double)rep.sweeps;
+    m->dual_opt_report[REP_BEFORE] = rep.nc_before_pct;
+    m->dual_opt_report[REP_AFTER] = rep.nc_after_pct;
+    m->dual_opt_report[REP_MOVES] = (double)rep.moves;
+    m->dual_opt_report[REP_FLIPS] = (double)rep.flips;
+    m->dual_opt_report[REP_FIXES] = (double)rep.weight_fixes;
+    m->dual_opt_report[REP_SECONDS] = rep.seconds;
+    switch (s) {
+    case CVM_OK:
+        return CVM_OK;
+    case CVM_E_NOMEM:
+        return cvm__nomem(&m->ctx);
+    case CVM_INCOMPLETE_TIME_LIMIT:
+        return cvm__error(&m->ctx, s, CVM_ENT_NONE, -1,
+                          "dual optimisation stopped at the time limit after %lu sweeps; the mesh "
+                          "is a valid regular triangulation",
+                          (unsigned long)rep.sweeps);
+    case CVM_INCOMPLETE_CANCELLED:
+        return cvm__error(&m->ctx, s, CVM_ENT_NONE, -1,
+                          "dual optimisation cancelled after %lu sweeps; the mesh is a valid "
+                          "regular triangulation",
+                          (unsigned long)rep.sweeps);
+    default:
+        return s; /* sizing errors carry their message already */
+    }
+}
+
+/* Sizes and power vertices of m's mesh: fresh arrays (free both). */
+static cvm_status merge_inputs(cvm__ctx *ctx, const cvm__tri2 *T, double **vsize, double **V)
+{
+    size_t t;
+    *vsize = cvm__malloc(ctx, (T->nv + 1) * sizeof **vsize);
+    *V = cvm__malloc(ctx, (2 * T->nt + 1) * sizeof **V);
+    if (!*vsize || !*V) {
+        cvm__free(ctx, *vsize);
+        cvm__free(ctx, *V);
+        *vsize = *V = NULL;
+        return CVM_E_NOMEM;
+    }
+    cvm__dual_mesh_sizes(T, *vsize);
+    for (t = 0; t < T->nt; t++)
+        if (cvm__tri2_in_domain(T, (int32_t)t))
+            cvm__dual_tri_vertex(T, (int32_t)t, *V + 2 * t);
+    return CVM_OK;
+}
+
+cvm_status cvm_mesh_copy_dual_merge_groups(cvm_index *dst, size_t dst_len, const cvm_mesh *m)
+{
+    cvm__ctx *ctx;
+    const cvm__tri2 *T;
+    double *vsize, *V;
+    int32_t *group, *map;
+    size_t n, t, k = 0;
+    if (!m)
+        return CVM_E_NULL_ARG;
+    n = m->triangulated ? cvm__domain_triangles(&m->tri) : 0;
+    if (!dst && dst_len)
+        return CVM_E_NULL_ARG;
+    if (dst_len < n)
+        return CVM_E_BUFFER_TOO_SMALL;
+    if (!n)
+        return CVM_OK;
+    ctx = (cvm__ctx *)&m->ctx; /* allocation does not change the handle */
+    T = &m->tri;
+    if (merge_inputs(ctx, T, &vsize, &V))
+        return CVM_E_NOMEM;
+    group = cvm__malloc(ctx, (T->nt + 1) * sizeof *group);
+    if (!group || cvm__domain_map(ctx, T, &map)) {
+        cvm__free(ctx, group);
+        cvm__free(ctx, vsize);
+        cvm__free(ctx, V);
+        return CVM_E_NOMEM;
+    }
+    cvm__dual_merge_groups(ctx, T, vsize, cvm__opt(m, CVM_OPT_DUAL_MERGE_TOL), V, group);
+    for (t = 0; t < T->nt; t++)
+        if (cvm__tri2_in_domain(T, (int32_t)t))
+            dst[k++] = map[group[t]]; /* slot order = output order, so the root is the smallest */
+    cvm__free(ctx, map);
+    cvm__free(ctx, group);
+    cvm__free(ctx, vsize);
+    cvm__free(ctx, V);
+    return CVM_OK;
+}
+
+int cvm__optimise_measure_needs_triangles(cvm_measure which)
+{
+    return which == CVM_MEASURE_DUAL_MERGED_PCT || which == CVM_MEASURE_DUAL_NONCOMPLIANT_PCT ||
+           which == CVM_MEASURE_DUAL_NONCOMPLIANT_BOUNDARY_PCT;
+}
+
+/* % merged, % non-compliant, % non-compliant among the triangles with a
+ * vertex on the domain boundary (an edge with a domain triangle on one side
+ * only), as CVM_MEASURE_DUAL_OUTSIDE_BOUNDARY_PCT counts them. */
+static cvm_status merge_stats(cvm_mesh *m, double *merged, double *nc, double *nc_bnd)
+{
+    const cvm__tri2 *T = &m->tri;
+    double *vsize, *V, tol = cvm__opt(m, CVM_OPT_DUAL_MERGE_TOL);
+    int32_t *group;
+    size_t *gsize, t, n = 0, nm = 0, nn = 0, nb = 0, nnb = 0;
+    uint8_t *on_bnd;
+    if (merge_inputs(&m->ctx, T, &vsize, &V))
+        return cvm__nomem(&m->ctx);
+    group = cvm__malloc(&m->ctx, (T->nt + 1) * sizeof *group);
+    gsize = cvm__calloc(&m->ctx, T->nt + 1, sizeof *gsize);
+    on_bnd = cvm__calloc(&m->ctx, T->nv + 1, 1);
+    if (!group || !gsize || !on_bnd) {
+        cvm__free(&m->ctx, group);
+        cvm__free(&m->ctx, gsize);
+        cvm__free(&m->ctx, on_bnd);
+        cvm__free(&m->ctx, vsize);
+        cvm__free(&m->ctx, V);
+        return cvm__nomem(&m->ctx);
+    }
+    cvm__dual_merge_groups(&m->ctx, T, vsize, tol, V, group);
+    for (t = 0; t < T->nt; t++) {
+        int j;
+        if (group[t] < 0)
+            continue;
+        gsize[group[t]]++;
+        for (j = 0; j < 3; j++)
+            if (!cvm__tri2_in_domain(T, T->tn[3 * t + (size_t)j] / 3)) {
+                on_bnd[T->tv[3 * t + (size_t)(j + 1) % 3]] = 1;
+                on_bnd[T->tv[3 * t + (size_t)(j + 2) % 3]] = 1;
+            }
+    }
+    for (t = 0; t < T->nt; t++) {
+        const int32_t *v = T->tv + 3 * t;
+        int bnd, bad;
+        if (group[t] < 0)
+            continue;
+        bnd = on_bnd[v[0]] || on_bnd[v[1]] || on_bnd[v[2]];
+        bad = cvm__dual_tri_status(T, vsize, tol, V, (int32_t)t) == 2;
+        n++;
+        nm += gsize[group[t]] > 1;
+        nn += (size_t)bad;
+        nb += (size_t)bnd;
+        nnb += (size_t)(bad && bnd);
+    }
+    cvm__free(&m->ctx, group);
+    cvm__free(&m->ctx, gsize);
+    cvm__free(&m->ctx, on_bnd);
+    cvm__free(&m->ctx, vsize);
+    cvm__free(&m->ctx, V);
+    *merged = n ? 100.0 * (double)nm / (double)n : 0.0;
+    *nc = n ? 100.0 * (double)nn / (double)n : 0.0;
+    *nc_bnd = nb ? 100.0 * (double)nnb / (double)nb : 0.0;
+    return CVM_OK;
+}
+
+cvm_status cvm__optimise_measure(double *out, cvm_mesh *m, cvm_measure which)
+{
+    double merged, nc, ncb;
+    cvm_status s;
+    if ((int)which >= (int)CVM_MEASURE_DUAL_OPT_SWEEPS &&
+        (int)which <= (int)CVM_MEASURE_DUAL_OPT_SECONDS) {
+        *out = m->dual_opt_report[(int)which - (int)CVM_MEASURE_DUAL_OPT_SWEEPS];
+        return CVM_OK;
+    }
+    if (!cvm__optimise_measure_needs_triangles(which))
+        return CVM_E_ARGUMENT;
+    if ((s = merge_stats(m, &merged, &nc, &ncb)))
+        return s;
+    *out = which == CVM_MEASURE_DUAL_MERGED_PCT ? merged
+         : which == CVM_MEASURE_DUAL_NONCOMPLIANT_PCT ? nc : ncb;
+    return CVM_OK;
+}

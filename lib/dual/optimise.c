@@ -1,0 +1,695 @@
+/*
+ * optimise.c - the sweep driver of the dual optimiser: scores every triangle,
+ * visits the vertices of the non-compliant ones worst first, solves each
+ * vertex's local problem, and restores the regular triangulation after each
+ * sweep.
+ *
+ * Score of domain triangle k: F_k = W_k L_k |C_k - V_k| (centroid C, power
+ * vertex V); W_k = 1 when V lies outside k (exact cvm__power_side2d) and k
+ * cannot be merged (merge.c), else 0; L_k = 2 when k touches the domain
+ * boundary, 1 inside (boundary cells first). Within a sweep the topology is
+ * fixed and only coordinates and weights change; the triangles with F > 0 are
+ * sorted by F (worst first, ties by slot), cut into min(20, N/25) bins of equal
+ * count and shuffled within each bin by a stream keyed by (seed, sweep); each
+ * vertex is solved at most once per sweep, and the triangles it touches (and
+ * their neighbours, whose merge state depends on it) are re-scored at once.
+ * After the sweep, Lawson flips under the exact power test restore the
+ * regular triangulation; a vertex whose power cell vanished (the blocking
+ * corner of an unflippable illegal edge) gets its weight raised (by 0.1,
+ * 0.2, 0.4 ... times its squared local size) until none vanishes; after 8
+ * rounds every weight is reset to 0, which always leaves a valid
+ * (constrained Delaunay) mesh. No vertex is ever removed. The run stops when
+ * nothing is non-compliant, a sweep moves nothing, or at the sweep limit, the
+ * time limit or cancellation.
+ *
+ * Parallel and deterministic: the order above is cut into batches of vertices
+ * no two of which are equal or share a triangle's vertex (so their local
+ * problems read no vertex that moves); a batch's problems are solved on
+ * OpenMP threads, then applied and re-scored in batch order. Batches depend
+ * only on the mesh and the order, so the result is identical for any
+ * CVM_OPT_THREADS.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+#include "optimise.h"
+#include "geom/geom_internal.h"
+
+#define FIX_ROUNDS 8
+#define BATCH 256
+
+typedef struct dopt {
+    cvm__tri2 *T;
+    const cvm__dual_opt_params *p;
+    double *vsize;   /* nv */
+    uint8_t *vbnd;   /* nv: on the domain boundary */
+    uint8_t *mark;   /* nv: scratch (visited / vanished) */
+    double *V;       /* 2 per slot */
+    double *F;       /* per slot */
+    uint8_t *st;     /* per slot: cvm__dual_tri_status */
+    uint8_t *weak;   /* per slot: compliant but an angle below the target, merged, or the
+                        power vertex within half the margin of an edge */
+    int32_t *list;   /* slots to visit */
+    int32_t *star;   /* scratch: sort buffer, then the stars of a batch (disjoint) */
+    struct job *jobs; /* BATCH entries */
+    uint32_t *stamp; /* nv: batch stamp of the vertices a batch holds or touches */
+    uint32_t cur_stamp;
+    int nthreads;
+    double *save;    /* 3 per vertex: x, y, w at the start of a sweep */
+    size_t nc, nc0;  /* current and initial non-compliant counts */
+    size_t nweak;
+    double sin2_min, sin2_target;
+    cvm__dual_opt_report *rep;
+} dopt;
+
+static uint64_t stream_key(uint64_t seed, uint64_t sweep, uint64_t v)
+{
+    return seed * 0x9E3779B97F4A7C15ull ^ (sweep + 1) * 0xC2B2AE3D27D4EB4Full ^ (v + 1) * 0x165667B19E3779F9ull;
+}
+
+static cvm_status sizes(dopt *D)
+{
+    cvm__tri2 *T = D->T;
+    size_t v;
+    cvm__dual_mesh_sizes(T, D->vsize);
+    if (!D->p->size_fn)
+        return CVM_OK;
+    for (v = 0; v < T->nv; v++) {
+        cvm_status s;
+        double h;
+        if (T->vtri[v] < 0)
+            continue;
+        if ((s = D->p->size_fn(D->p->size_payload, T->xy[2 * v], T->xy[2 * v + 1], &h)))
+            return s;
+        if (isfinite(h) && h > 0)
+            D->vsize[v] = h;
+    }
+    return CVM_OK;
+}
+
+static void boundary_flags(dopt *D)
+{
+    cvm__tri2 *T = D->T;
+    size_t t;
+    int j;
+    memset(D->vbnd, 0, T->nv);
+    for (t = 0; t < T->nt; t++) {
+        if (!cvm__tri2_in_domain(T, (int32_t)t))
+            continue;
+        for (j = 0; j < 3; j++) {
+            int32_t u = T->tn[3 * t + (size_t)j] / 3;
+            if (!cvm__tri2_in_domain(T, u)) {
+                D->vbnd[T->tv[3 * t + (size_t)(j + 1) % 3]] = 1;
+                D->vbnd[T->tv[3 * t + (size_t)(j + 2) % 3]] = 1;
+            }
+        }
+    }
+}
+
+static double score(const dopt *D, int32_t t)
+{
+    const cvm__tri2 *T = D->T;
+    const int32_t *v = T->tv + 3 * (size_t)t;
+    double cx, cy, prio;
+    if (D->st[t] != 2)
+        return 0.0;
+    cx = (T->xy[2 * (size_t)v[0]] + T->xy[2 * (size_t)v[1]] + T->xy[2 * (size_t)v[2]]) / 3.0;
+    cy = (T->xy[2 * (size_t)v[0] + 1] + T->xy[2 * (size_t)v[1] + 1] + T->xy[2 * (size_t)v[2] + 1]) / 3.0;
+    prio = D->vbnd[v[0]] || D->vbnd[v[1]] || D->vbnd[v[2]] ? 2.0 : 1.0;
+    return prio * hypot(cx - D->V[2 * (size_t)t], cy - D->V[2 * (size_t)t + 1]);
+}
+
+static double sq(double x)
+{
+    return x * x;
+}
+
+/* Weak (see dopt) for a compliant slot t: a measure in plain doubles. */
+static int is_weak(const dopt *D, int32_t t)
+{
+    const cvm__tri2 *T = D->T;
+    const int32_t *v = T->tv + 3 * (size_t)t;
+    const double *V = D->V + 2 * (size_t)t;
+    double l2[3], c;
+    int k;
+    if (D->st[t] == 1)
+        return 1;
+    {
+        const double *p0 = T->xy + 2 * (size_t)v[0], *p1 = T->xy + 2 * (size_t)v[1];
+        const double *p2 = T->xy + 2 * (size_t)v[2];
+        c = (p1[0] - p0[0]) * (p2[1] - p0[1]) - (p1[1] - p0[1]) * (p2[0] - p0[0]);
+    }
+    for (k = 0; k < 3; k++) {
+        const double *a = T->xy + 2 * (size_t)v[(k + 1) % 3], *b = T->xy + 2 * (size_t)v[(k + 2) % 3];
+        double s;
+        l2[k] = sq(b[0] - a[0]) + sq(b[1] - a[1]);
+        s = ((b[0] - a[0]) * (V[1] - a[1]) - (b[1] - a[1]) * (V[0] - a[0])) / sqrt(l2[k]);
+        if (s < 0.5 * D->p->margin * sqrt(l2[k]))
+            return 1;
+    }
+    for (k = 0; k < 3; k++)
+        if (c * c < D->sin2_target * l2[(k + 1) % 3] * l2[(k + 2) % 3])
+            return 1;
+    return 0;
+}
+
+/* Re-score slot t (a domain triangle), keeping the non-compliant and weak counts. */
+static void rescore(dopt *D, int32_t t)
+{
+    uint8_t old = D->st[t], oldw = D->weak[t];
+    D->st[t] = (uint8_t)cvm__dual_tri_status(D->T, D->vsize, D->p->merge_tol, D->V, t);
+    D->nc += (D->st[t] == 2) - (old == 2);
+    D->weak[t] = (uint8_t)(D->st[t] != 2 && is_weak(D, t));
+    D->nweak += D->weak[t];
+    D->nweak -= oldw;
+    D->F[t] = score(D, t);
+}
+
+static void score_all(dopt *D)
+{
+    cvm__tri2 *T = D->T;
+    size_t t;
+    for (t = 0; t < T->nt; t++)
+        if (cvm__tri2_in_domain(T, (int32_t)t))
+            cvm__dual_tri_vertex(T, (int32_t)t, D->V + 2 * t);
+    D->nc = D->nweak = 0;
+    for (t = 0; t < T->nt; t++) {
+        D->st[t] = D->weak[t] = 0;
+        D->F[t] = 0.0;
+        if (cvm__tri2_in_domain(T, (int32_t)t))
+            rescore(D, (int32_t)t);
+    }
+}
+
+/* Live triangles around v into star (room for them); their number. */
+static size_t gather_star(const dopt *D, int32_t v, int32_t *star)
+{
+    const cvm__tri2 *T = D->T;
+    int32_t t0 = T->vtri[v], t = t0;
+    size_t n = 0;
+    if (t0 < 0)
+        return 0;
+    do {
+        const int32_t *tv = T->tv + 3 * (size_t)t;
+        int i = tv[0] == v ? 0 : tv[1] == v ? 1 : 2;
+        star[n++] = t;
+        t = T->tn[3 * (size_t)t + (size_t)(i + 1) % 3] / 3;
+    } while (t != t0 && n < T->nt);
+    return n;
+}
+
+/* 1 when a triangle of the star is a domain triangle. */
+static int domain_of_star(const dopt *D, const int32_t *star, size_t n)
+{
+    size_t k;
+    for (k = 0; k < n; k++)
+        if (cvm__tri2_in_domain(D->T, star[k]))
+            return 1;
+    return 0;
+}
+
+/* Index of the ghost vertex in ghost triangle g. */
+static int ghost_corner(const cvm__tri2 *T, int32_t g)
+{
+    const int32_t *tv = T->tv + 3 * (size_t)g;
+    return tv[0] == CVM__GHOST ? 0 : tv[1] == CVM__GHOST ? 1 : 2;
+}
+
+/* 1 when moving a corner of the hull edge of ghost triangle g cannot break the
+ * hull convexity cvm__tri2_check asks of unconstrained hull edges: that edge
+ * and the hull edges of the two ghost triangles beside g are constrained. */
+static int hull_safe(const cvm__tri2 *T, int32_t g)
+{
+    int k = ghost_corner(T, g), e;
+    if (cvm__tri2_edge_seg(T, g, k) < 0)
+        return 0;
+    for (e = 1; e <= 2; e++) {
+        int32_t h = T->tn[3 * (size_t)g + (size_t)(k + e) % 3] / 3;
+        if (!cvm__tri2_is_ghost(T, h) || cvm__tri2_edge_seg(T, h, ghost_corner(T, h)) < 0)
+            return 0;
+    }
+    return 1;
+}
+
+/* Degrees of freedom of v (see optimise.h) and, for a vertex on a segment,
+ * the segment's direction. 0: v has no domain triangle. */
+static int vertex_mode(const dopt *D, int32_t v, const int32_t *star, size_t n, double *dir)
+{
+    const cvm__tri2 *T = D->T;
+    int32_t nb[2] = {-1, -1}, sg[2] = {-1, -1};
+    int ncon = 0, ghost = 0, domain = 0, other = 0;
+    size_t k;
+    for (k = 0; k < n; k++) {
+        int32_t t = star[k];
+        const int32_t *tv = T->tv + 3 * (size_t)t;
+        int i = tv[0] == v ? 0 : tv[1] == v ? 1 : 2, e;
+        if (cvm__tri2_is_ghost(T, t)) {
+            ghost = 1;
+            if (!hull_safe(T, t))
+                return domain_of_star(D, star, n) ? 1 : 0;
+            continue;
+        }
+        domain |= cvm__tri2_in_domain(T, t);
+        other |= !cvm__tri2_in_domain(T, t);
+        for (e = 1; e <= 2; e++) {
+            int32_t x = tv[(i + 3 - e) % 3], s = cvm__tri2_edge_seg(T, t, (i + e) % 3);
+            if (s < 0 || x == nb[0] || x == nb[1])
+                continue;
+            if (ncon < 2) {
+                nb[ncon] = x;
+                sg[ncon] = s;
+            }
+            ncon++;
+        }
+    }
+    if (!domain)
+        return 0;
+    if ((size_t)v < D->p->n_fixed)
+        return 1;
+    if (ncon == 0 && !ghost && !other)
+        return 3;
+    /* between two constrained edges of one segment, or of two exactly collinear ones */
+    if (ncon == 2 && (sg[0] == sg[1] || cvm__orient2d(T->xy + 2 * (size_t)nb[0], T->xy + 2 * (size_t)v,
+                                                        T->xy + 2 * (size_t)nb[1]) == 0)) {
+        const double *a = T->xy + 2 * (size_t)nb[0], *b = T->xy + 2 * (size_t)nb[1];
+        double len = hypot(b[0] - a[0], b[1] - a[1]);
+        dir[0] = (b[0] - a[0]) / len;
+        dir[1] = (b[1] - a[1]) / len;
+        return 2;
+    }
+    return 1;
+}
+
+/* One vertex of a batch: its star (in the batch's pool) and the outcome of its
+ * local problem. */
+typedef struct job {
+    int32_t v;
+    size_t star0, nstar;
+    int moved;
+    double p[2], w;
+} job;
+
+/* Solve the local problem of job J (reads the mesh, writes only J): the
+ * parallel part of a batch. */
+static void solve_job(const dopt *D, job *J, uint64_t sweep)
+{
+    const cvm__tri2 *T = D->T;
+    const int32_t *star = D->star + J->star0;
+    cvm__dopt_local L;
+    double u[CVM__DOPT_MAXDOF] = {0}, f0, f;
+    int32_t v = J->v;
+    J->moved = 0;
+    memset(&L, 0, sizeof L);
+    if (!J->nstar || !(D->vsize[v] > 0))
+        return;
+    L.ndof = vertex_mode(D, v, star, J->nstar, L.dir);
+    if (!L.ndof)
+        return;
+    L.T = T;
+    L.v = v;
+    L.p0[0] = T->xy[2 * (size_t)v];
+    L.p0[1] = T->xy[2 * (size_t)v + 1];
+    L.w0 = T->w[v];
+    L.h = D->vsize[v];
+    L.star = star;
+    L.nstar = J->nstar;
+    L.vbnd = D->vbnd;
+    L.margin = D->p->margin;
+    L.sin2_target = D->sin2_target;
+    L.sin2_bound = cvm__dopt_star_min_sin2(&L);
+    if (L.sin2_bound > D->sin2_min)
+        L.sin2_bound = D->sin2_min;
+    f0 = cvm__dopt_eval(&L, u);
+    if (D->p->solver == CVM__DUAL_SOLVER_CUCKOO) {
+        cvm__rng r;
+        cvm__rng_seed(&r, stream_key(D->p->seed, sweep, (uint64_t)v));
+        cvm__dopt_cuckoo(&L, D->p->cuckoo_budget, &r, f0, u, &f);
+    } else {
+        cvm__dopt_pattern(&L, D->p->pattern_budget, f0, u, &f);
+    }
+    if (!(f < f0))
+        return;
+    cvm__dopt_point(&L, u, J->p, &J->w);
+    J->moved = 1;
+}
+
+/* Apply a solved job: move the vertex, re-score its star and the triangles
+ * across its outer edges. Serial, in batch order. */
+static void apply_job(dopt *D, const job *J)
+{
+    cvm__tri2 *T = D->T;
+    const int32_t *star = D->star + J->star0;
+    size_t k;
+    int j;
+    if (!J->moved)
+        return;
+    T->xy[2 * (size_t)J->v] = J->p[0];
+    T->xy[2 * (size_t)J->v + 1] = J->p[1];
+    T->w[J->v] = J->w;
+    for (k = 0; k < J->nstar; k++)
+        if (cvm__tri2_in_domain(T, star[k]))
+            cvm__dual_tri_vertex(T, star[k], D->V + 2 * (size_t)star[k]);
+    for (k = 0; k < J->nstar; k++) {
+        int32_t t = star[k];
+        if (!cvm__tri2_in_domain(T, t))
+            continue;
+        rescore(D, t);
+        for (j = 0; j < 3; j++) {
+            int32_t u2 = T->tn[3 * (size_t)t + (size_t)j] / 3;
+            if (cvm__tri2_in_domain(T, u2))
+                rescore(D, u2);
+        }
+    }
+}
+
+/* Make T regular again with no vanished vertex (see the file comment). */
+static cvm_status restore(dopt *D)
+{
+    cvm__tri2 *T = D->T;
+    size_t nfl, v;
+    int round;
+    cvm_status s;
+    if ((s = cvm__tri2_make_regular(T, &nfl)))
+        return s;
+    D->rep->flips += nfl;
+    for (round = 0; round < FIX_ROUNDS; round++) {
+        if (!cvm__tri2_count_unregular(T, D->mark))
+            return CVM_OK;
+        for (v = 0; v < T->nv; v++)
+            if (D->mark[v]) {
+                double h = D->vsize[v] > 0 ? D->vsize[v] : 1.0;
+                T->w[v] += 0.1 * h * h * (double)(1 << round);
+                D->rep->weight_fixes++;
+            }
+        if ((s = cvm__tri2_make_regular(T, &nfl)))
+            return s;
+        D->rep->flips += nfl;
+    }
+    if (!cvm__tri2_count_unregular(T, D->mark))
+        return CVM_OK;
+    memset(T->w, 0, T->nv * sizeof *T->w);
+    D->rep->weight_fixes += T->nv;
+    if ((s = cvm__tri2_make_regular(T, &nfl)))
+        return s;
+    D->rep->flips += nfl;
+    return CVM_OK;
+}
+
+static int by_score(const void *a, const void *b, const double *F, const uint8_t *st)
+{
+    int32_t x = *(const int32_t *)a, y = *(const int32_t *)b;
+    if ((st[x] == 2) != (st[y] == 2))
+        return st[x] == 2 ? -1 : 1;
+    if (F[x] != F[y])
+        return F[x] > F[y] ? -1 : 1;
+    return x < y ? -1 : x > y;
+}
+
+/* Sort list[0..n) by (F descending, slot ascending): insertion into runs
+ * merged bottom-up would be faster; a plain merge sort keeps it total. */
+static void sort_list(int32_t *a, int32_t *tmp, size_t n, const double *F, const uint8_t *st)
+{
+    size_t width, i;
+    for (width = 1; width < n; width *= 2) {
+        for (i = 0; i < n; i += 2 * width) {
+            size_t lo = i, mid = i + width < n ? i + width : n, hi = i + 2 * width < n ? i + 2 * width : n;
+            size_t x = lo, y = mid, k = lo;
+            while (x < mid && y < hi)
+                tmp[k++] = by_score(&a[x], &a[y], F, st) <= 0 ? a[x++] : a[y++];
+            while (x < mid)
+                tmp[k++] = a[x++];
+            while (y < hi)
+                tmp[k++] = a[y++];
+        }
+        memcpy(a, tmp, n * sizeof *a);
+    }
+}
+
+/* Order of one sweep into D->list; returns its length. */
+static size_t sweep_order(dopt *D, uint64_t sweep)
+{
+    cvm__tri2 *T = D->T;
+    size_t t, n = 0, nb, b;
+    cvm__rng r;
+    for (t = 0; t < T->nt; t++)
+        if (D->st[t] == 2 || D->weak[t])
+            D->list[n++] = (int32_t)t;
+    sort_list(D->list, D->star, n, D->F, D->st);
+    nb = n / 25 < 20 ? n / 25 : 20;
+    if (nb < 1)
+        nb = 1;
+    cvm__rng_seed(&r, stream_key(D->p->seed, sweep, UINT64_MAX - 1));
+    for (b = 0; b < nb; b++) {
+        size_t lo = b * n / nb, hi = (b + 1) * n / nb, i;
+        for (i = hi; i > lo + 1; i--) {
+            size_t k = lo + (size_t)cvm__rng_below(&r, i - lo);
+            int32_t x = D->list[i - 1];
+            D->list[i - 1] = D->list[k];
+            D->list[k] = x;
+        }
+    }
+    return n;
+}
+
+static void save_state(dopt *D)
+{
+    cvm__tri2 *T = D->T;
+    size_t v;
+    for (v = 0; v < T->nv; v++) {
+        D->save[3 * v] = T->xy[2 * v];
+        D->save[3 * v + 1] = T->xy[2 * v + 1];
+        D->save[3 * v + 2] = T->w[v];
+    }
+}
+
+static void load_state(dopt *D)
+{
+    cvm__tri2 *T = D->T;
+    size_t v;
+    for (v = 0; v < T->nv; v++) {
+        T->xy[2 * v] = D->save[3 * v];
+        T->xy[2 * v + 1] = D->save[3 * v + 1];
+        T->w[v] = D->save[3 * v + 2];
+    }
+}
+
+static double progress(const dopt *D)
+{
+    return D->nc0 ? 1.0 - (double)D->nc / (double)D->nc0 : 1.0;
+}
+
+static double pct(const dopt *D)
+{
+    size_t t, n = 0;
+    for (t = 0; t < D->T->nt; t++)
+        n += cvm__tri2_in_domain(D->T, (int32_t)t);
+    return n ? 100.0 * (double)D->nc / (double)n : 0.0;
+}
+
+/* Add v to the batch being formed when no vertex of the batch is v or one of
+ * its neighbours (so the batch's local problems share no vertex that moves):
+ * gather its star into the pool and stamp its star's vertices. 0: blocked. */
+static int batch_add(dopt *D, int32_t v, size_t *nb, size_t *used)
+{
+    const cvm__tri2 *T = D->T;
+    job *J = D->jobs + *nb;
+    size_t k;
+    if (D->stamp[v] == D->cur_stamp)
+        return 0;
+    J->v = v;
+    J->star0 = *used;
+    J->nstar = gather_star(D, v, D->star + *used);
+    for (k = 0; k < J->nstar; k++) {
+        const int32_t *tv = T->tv + 3 * (size_t)D->star[*used + k];
+        int c;
+        for (c = 0; c < 3; c++)
+            if (tv[c] != CVM__GHOST && D->stamp[tv[c]] == D->cur_stamp) {
+                J->nstar = 0; /* a neighbour is in the batch: v waits */
+                return 0;
+            }
+    }
+    for (k = 0; k < J->nstar; k++) {
+        const int32_t *tv = T->tv + 3 * (size_t)D->star[*used + k];
+        int c;
+        for (c = 0; c < 3; c++)
+            if (tv[c] != CVM__GHOST)
+                D->stamp[tv[c]] = D->cur_stamp;
+    }
+    D->stamp[v] = D->cur_stamp;
+    *used += J->nstar;
+    ++*nb;
+    return 1;
+}
+
+/* One sweep; *moved_out receives the number of accepted moves. The visiting
+ * order is cut into batches of at most BATCH vertices, no two of them equal or
+ * adjacent, taken in order from the sorted list (a vertex that would join a
+ * batch holding one of its neighbours closes the batch). The local problems of
+ * a batch are independent, so they are solved in parallel; the moves are
+ * then applied and re-scored in batch order. Batches depend only on the mesh
+ * and the order, never on the thread count, so the result does not either. */
+static cvm_status sweep(dopt *D, uint64_t k, size_t *moved_out)
+{
+    cvm__tri2 *T = D->T;
+    size_t n = sweep_order(D, k), i = 0, moved = 0;
+    cvm_status s = CVM_OK;
+    memset(D->mark, 0, T->nv);
+    while (i < n && !s) {
+        size_t nb = 0, used = 0, b;
+        int closed = 0;
+        D->cur_stamp++;
+        while (i < n && nb < BATCH && !closed) {
+            int32_t t = D->list[i];
+            int j;
+            if ((D->st[t] != 2 && !D->weak[t]) || !cvm__tri2_in_domain(T, t)) {
+                i++;
+                continue;
+            }
+            for (j = 0; j < 3 && !closed; j++) {
+                int32_t v = T->tv[3 * (size_t)t + (size_t)j];
+                if (D->mark[v])
+                    continue;
+                if (nb == BATCH || !batch_add(D, v, &nb, &used))
+                    closed = 1;
+                else
+                    D->mark[v] = 1;
+            }
+            if (!closed)
+                i++;
+        }
+        {
+            long kk, nbl = (long)nb;
+#ifdef _OPENMP
+#pragma omp parallel for schedule(dynamic, 8) num_threads(D->nthreads) if (nb > 16)
+#endif
+            for (kk = 0; kk < nbl; kk++)
+                solve_job(D, D->jobs + kk, k);
+        }
+        for (b = 0; b < nb && !s; b++) {
+            apply_job(D, D->jobs + b);
+            moved += (size_t)D->jobs[b].moved;
+            s = cvm__tick(T->ctx, 1, CVM_STAGE_OPTIMISE_DUAL, progress(D));
+        }
+    }
+    *moved_out = moved;
+    return s;
+}
+
+static cvm_status run(dopt *D)
+{
+    const cvm__dual_opt_params *p = D->p;
+    cvm_status s, s2;
+    uint64_t k;
+    if ((s = sizes(D)))
+        return s;
+    boundary_flags(D);
+    if ((s = restore(D)))
+        return s;
+    score_all(D);
+    D->nc0 = D->nc;
+    D->rep->nc_before_pct = pct(D);
+    for (k = 0; k < (uint64_t)p->max_sweeps && (D->nc || D->nweak); k++) {
+        size_t moved = 0, nc_prev, nweak_prev, flips0;
+        if ((s = sizes(D)))
+            return s;
+        boundary_flags(D);
+        score_all(D);
+        if (!D->nc && !D->nweak)
+            break;
+        nc_prev = D->nc;
+        nweak_prev = D->nweak;
+        save_state(D);
+        s = sweep(D, k, &moved);
+        D->rep->moves += moved;
+        D->rep->sweeps++;
+        flips0 = D->rep->flips;
+        if ((s2 = restore(D))) {
+            /* out of memory: without a flip, go back to the regular state of the
+             * sweep's start; after flips the topology follows the new positions,
+             * which stay (conforming, counter-clockwise, maybe not regular) */
+            if (D->rep->flips == flips0)
+                load_state(D);
+            return s2;
+        }
+        if (s)
+            return s;
+        score_all(D);
+        /* stop when nothing moved, or when everything is compliant and the
+         * weak triangles no longer drop by 1% a sweep */
+        if (!moved || (!D->nc && !nc_prev && 100 * D->nweak >= 99 * nweak_prev))
+            break;
+    }
+    return CVM_OK;
+}
+
+cvm_status cvm__dual_optimise(cvm__tri2 *T, const cvm__dual_opt_params *p, cvm__dual_opt_report *rep)
+{
+    cvm__ctx *ctx = T->ctx;
+    dopt D;
+    size_t nv = T->nv, nt = T->nt;
+    double t0 = cvm__now();
+    cvm_status s;
+    memset(rep, 0, sizeof *rep);
+    memset(&D, 0, sizeof D);
+    D.T = T;
+    D.p = p;
+    D.rep = rep;
+    D.sin2_min = sin(p->min_angle_deg * 3.14159265358979323846 / 180.0);
+    D.sin2_min *= D.sin2_min;
+    D.nthreads = p->threads;
+#ifdef _OPENMP
+    if (D.nthreads <= 0)
+        D.nthreads = omp_get_max_threads();
+#endif
+    if (D.nthreads <= 0)
+        D.nthreads = 1;
+    D.sin2_target = sin(p->target_angle_deg * 3.14159265358979323846 / 180.0);
+    D.sin2_target *= D.sin2_target;
+    if (!T->w) {
+        T->w = cvm__calloc(ctx, T->cap_v ? T->cap_v : 1, sizeof *T->w);
+        if (!T->w)
+            return CVM_E_NOMEM;
+    }
+    D.vsize = cvm__malloc(ctx, (nv + 1) * sizeof *D.vsize);
+    D.vbnd = cvm__malloc(ctx, nv + 1);
+    D.mark = cvm__malloc(ctx, nv + 1);
+    D.V = cvm__malloc(ctx, (2 * nt + 1) * sizeof *D.V);
+    D.F = cvm__malloc(ctx, (nt + 1) * sizeof *D.F);
+    D.st = cvm__calloc(ctx, nt + 1, 1);
+    D.weak = cvm__calloc(ctx, nt + 1, 1);
+    D.list = cvm__malloc(ctx, (nt + 1) * sizeof *D.list);
+    D.star = cvm__malloc(ctx, (nt + 1) * sizeof *D.star);
+    D.save = cvm__malloc(ctx, (3 * nv + 1) * sizeof *D.save);
+    D.jobs = cvm__malloc(ctx, BATCH * sizeof *D.jobs);
+    D.stamp = cvm__calloc(ctx, nv + 1, sizeof *D.stamp);
+    if (!D.vsize || !D.vbnd || !D.mark || !D.V || !D.F || !D.st || !D.weak || !D.list || !D.star || !D.save || !D.jobs ||
+        !D.stamp)
+        s = CVM_E_NOMEM;
+    else
+        s = run(&D);
+    if (D.V && D.st && D.weak && D.F && D.vsize && D.vbnd) {
+        score_all(&D);
+        rep->nc_after_pct = pct(&D);
+        if (!rep->sweeps && !D.nc0)
+            rep->nc_before_pct = rep->nc_after_pct;
+    }
+    cvm__free(ctx, D.vsize);
+    cvm__free(ctx, D.vbnd);
+    cvm__free(ctx, D.mark);
+    cvm__free(ctx, D.V);
+    cvm__free(ctx, D.F);
+    cvm__free(ctx, D.st);
+    cvm__free(ctx, D.weak);
+    cvm__free(ctx, D.list);
+    cvm__free(ctx, D.star);
+    cvm__free(ctx, D.save);
+    cvm__free(ctx, D.jobs);
+    cvm__free(ctx, D.stamp);
+    rep->seconds = cvm__now() - t0;
+    return s;
+}

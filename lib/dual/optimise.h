@@ -1,0 +1,59 @@
+/*
+ * optimise.h - the parts of the dual optimiser shared by its files: the run
+ * state (optimise.c), the local problem of one vertex and its objective
+ * (optimise_objective.c), and the two local solvers (optimise_pattern.c,
+ * optimise_cuckoo.c).
+ *
+ * The local problem of vertex v: its degrees of freedom are scaled so that
+ * one unit is the local size h in position and h^2 in weight. ndof 3: an
+ * interior Steiner vertex, u = (dx, dy, dw); ndof 2: a Steiner vertex on a
+ * segment, u = (ds, dw) along the segment's direction; ndof 1: an input
+ * vertex, u = (dw). The objective is a smooth penalty, a plain-double
+ * measure; every candidate whose star would invert is rejected by the exact
+ * orient2d, so floating point only chooses which valid mesh results.
+ */
+#ifndef CVM_DUAL_OPTIMISE_H
+#define CVM_DUAL_OPTIMISE_H
+
+#include "dual_internal.h"
+
+#define CVM__DOPT_MAXDOF 3
+
+typedef struct cvm__dopt_local {
+    const cvm__tri2 *T;
+    int32_t v;
+    int ndof;
+    double p0[2], w0;      /* start position and weight */
+    double h;              /* scale */
+    double dir[2];         /* unit direction of the segment (ndof 2) */
+    const int32_t *star;   /* live triangles around v (ghosts included) */
+    size_t nstar;
+    const uint8_t *vbnd;   /* per vertex: 1 on the domain boundary (priority) */
+    double sin2_bound;     /* smallest sin^2 of an angle a candidate may create */
+    double sin2_target;    /* angles below this are penalised */
+    double margin;         /* fraction of each edge the power vertex should keep inside */
+    size_t evals;          /* evaluations so far */
+} cvm__dopt_local;
+
+/* Position and weight of v at scaled offset u into p[2], *w. */
+void cvm__dopt_point(const cvm__dopt_local *L, const double *u, double *p, double *w);
+
+/* Local objective at u: HUGE_VAL when infeasible (a star triangle not
+ * strictly counter-clockwise by exact orient2d, an angle below the bound in a
+ * domain triangle, or the power cell of v empty inside its star), else the
+ * penalty sum over the domain triangles of the star. Counts an evaluation. */
+double cvm__dopt_eval(cvm__dopt_local *L, const double *u);
+
+/* Smallest sin^2 of an angle over the domain triangles of the star at u = 0. */
+double cvm__dopt_star_min_sin2(const cvm__dopt_local *L);
+
+/* Deterministic compass (pattern) search from u = 0 with at most budget
+ * evaluations; writes the best point to u and its value to *f (the value
+ * at 0 is f0). */
+void cvm__dopt_pattern(cvm__dopt_local *L, int budget, double f0, double *u, double *f);
+
+/* Modified Cuckoo Search (Walton, Hassan, Morgan, Brown 2011) from u = 0 with
+ * at most budget evaluations and the random stream r; as above. */
+void cvm__dopt_cuckoo(cvm__dopt_local *L, int budget, cvm__rng *r, double f0, double *u, double *f);
+
+#endif
