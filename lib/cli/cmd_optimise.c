@@ -1,7 +1,7 @@
 /*
- * cmd_optimise.c - `cvmesh optimise IN.poly|IN.node [--algo delaunay|frontal] [--size H]
- * [-o OUT] [--quality] [option flags]`: read, triangulate, optionally refine, optimise
- * the power dual, write, report.
+ * cmd_optimise.c - `cvmesh optimise IN.poly|IN.node|IN.vtu [--algo delaunay|frontal]
+ * [--size H] [-o OUT] [--dual DUAL.vtu] [--quality] [option flags]`: read, triangulate
+ * (a .vtu is already a mesh), optionally refine, optimise the power dual, write, report.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -10,7 +10,7 @@
 #include "cli.h"
 
 typedef struct oargs {
-    const char *in, *out;
+    const char *in, *out, *dual;
     int quality, refine;
     cvm_algorithm algo;
     double size; /* 0: none */
@@ -21,10 +21,11 @@ typedef struct oargs {
 void cli_optimise_help(FILE *f)
 {
     fprintf(f,
-            "usage: cvmesh optimise IN.poly|IN.node [--algo delaunay|frontal] [--size H]\n"
-            "                       [-o OUT] [--quality] [option flags]\n"
+            "usage: cvmesh optimise IN.poly|IN.node|IN.vtu [--algo delaunay|frontal] [--size H]\n"
+            "                       [-o OUT] [--dual DUAL.vtu] [--quality] [option flags]\n"
             "\n"
-            "Triangulate IN (refined first when --algo or --size is given), then move the\n"
+            "Triangulate IN (a .vtu written by cvmesh is read back as its mesh, weights\n"
+            "included; refined first when --algo or --size is given), then move the\n"
             "vertices and set their power weights so that every triangle contains its power\n"
             "(weighted Voronoi) vertex or is merged with a neighbour, and dual edges are not\n"
             "tiny. Segments and input points are kept; the result is a regular triangulation.\n"
@@ -34,7 +35,10 @@ void cli_optimise_help(FILE *f)
             "  --size H                   target edge length of that refinement (uniform)\n"
             "  -o, --output OUT           write the mesh (.vtu, .msh, .svg, .node; .node files\n"
             "                             carry each vertex's weight as its first attribute)\n"
-            "  --quality                  print the quality report and the dual report\n"
+            "  --dual DUAL.vtu            write the power (Voronoi) cells as VTK polygons with\n"
+            "                             vertex id, area and weight\n"
+            "  --quality                  print the quality report (with the dual's q1-q5)\n"
+            "                             and the optimiser's report\n"
             "  -h, --help                 print this help\n");
     cli_print_option_flags(f, CLI_CMD_OPTIMISE);
     fprintf(f, "\nStopped by --time-limit the mesh is still a valid regular triangulation and\n"
@@ -71,7 +75,10 @@ static int parse_value(oargs *a, int argc, char **argv, int *i)
         }
         return CLI_EXIT_OK;
     }
-    a->out = argv[*i];
+    if (strcmp(s, "--dual") == 0)
+        a->dual = argv[*i];
+    else
+        a->out = argv[*i];
     return CLI_EXIT_OK;
 }
 
@@ -87,7 +94,7 @@ static int parse(oargs *a, int argc, char **argv)
             return -1;
         }
         if (strcmp(s, "--algo") == 0 || strcmp(s, "--size") == 0 || strcmp(s, "-o") == 0 ||
-            strcmp(s, "--output") == 0) {
+            strcmp(s, "--output") == 0 || strcmp(s, "--dual") == 0) {
             if ((r = parse_value(a, argc, argv, &i)))
                 return r;
             continue;
@@ -175,7 +182,7 @@ static int run(const oargs *a)
     }
     if (cvm_mesh_read(m, a->in) != CVM_OK)
         return ofail(m, sz, NULL);
-    if (cvm_mesh_triangulate(m) != CVM_OK)
+    if (!cli_is_triangulated(m) && cvm_mesh_triangulate(m) != CVM_OK) /* a .vtu is a mesh */
         return ofail(m, sz, a->in);
     if (a->refine) {
         s = cvm_mesh_refine(m, sz, a->algo);
@@ -191,6 +198,11 @@ static int run(const oargs *a)
         fprintf(stderr, "cvmesh: note: %s: %s\n", a->in, cvm_mesh_errmsg(m));
     if (a->out && cvm_mesh_write(m, a->out) != CVM_OK)
         return ofail(m, sz, NULL);
+    if (a->dual && (rc = cli_write_dual(m, a->dual))) {
+        cvm_sizing_free(sz);
+        cvm_mesh_free(m);
+        return rc;
+    }
     if (a->quality) {
         if ((rc = cli_print_quality(stdout, m))) {
             cvm_sizing_free(sz);

@@ -290,5 +290,15 @@ expect_exit 2 "--smooth out of range" "$CLI" refine "$SHARED/data/square.poly" -
 expect_exit 2 "--auto not positive" "$CLI" refine "$SHARED/data/square.poly" --auto 0 -o "$OUT/x.vtu"
 expect_exit 2 "--grading not a number" "$CLI" refine "$SHARED/data/square.poly" --auto 2 --grading x -o "$OUT/x.vtu"
 
+# ---- optimise a .vtu mesh read back, with its dual ---------------------------
+OUT=$TMP/optvtu
+mkdir -p "$OUT"
+expect_exit 0 "refine to .vtu" "$CLI" refine "$SHARED/data/square.poly" --algo frontal --size 0.1 -o "$OUT/sq.vtu"
+expect_exit 0 "optimise a .vtu" "$CLI" optimise "$OUT/sq.vtu" --time-limit 60 -o "$OUT/opt.vtu" \
+    --dual "$OUT/dual.vtu" --quality
+expect_grep "optimise .vtu: compliant" "$TMP/out" "non-compliant (not merged)   0.0000 %"
+expect_grep "optimise .vtu: dual cells written" "$OUT/dual.vtu" "<VTKFile"
+expect_exit 0 "optimised .vtu reads back" "$CLI" refine "$OUT/opt.vtu" --quality -o "$OUT/again.vtu"
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
