@@ -33,6 +33,8 @@ struct cvm_mesh {
     double refine_report[6]; /* the last cvm_mesh_refine(): CVM_MEASURE_REFINE_* */
     int32_t *front_marks;    /* cvm_mesh_set_front_markers() */
     size_t n_front_marks;
+    double *tlayer;          /* AFLR layer index per triangle slot of tri, or NULL */
+    size_t n_tlayer;         /* tri.nt when tlayer was made (stale when it differs) */
 };
 
 /* Slot of key in opt[], or -1 if the key is unknown. */

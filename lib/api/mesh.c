@@ -53,6 +53,9 @@ void cvm__mesh_drop_output(cvm_mesh *m)
     m->input_map = NULL;
     m->n_dup = 0;
     memset(m->refine_report, 0, sizeof m->refine_report);
+    cvm__free(&m->ctx, m->tlayer);
+    m->tlayer = NULL;
+    m->n_tlayer = 0;
 }
 
 void cvm_mesh_free(cvm_mesh *m)
@@ -67,6 +70,7 @@ void cvm_mesh_free(cvm_mesh *m)
     cvm__free(&m->ctx, m->vmark);
     cvm__free(&m->ctx, m->vattr);
     cvm__free(&m->ctx, m->front_marks);
+    cvm__free(&m->ctx, m->tlayer);
     f = m->ctx.free_fn;
     payload = m->ctx.payload;
     f(payload, m);

@@ -1,6 +1,6 @@
 /*
  * cmd_refine.c - `cvmesh refine IN.poly [--algo delaunay|frontal|aflr] [--size H]
- * [-o OUT] [--svg PIC.svg] [--quality] [option flags]`: read, triangulate,
+ * [--fronts M,...] [-o OUT] [--svg PIC.svg] [--quality] [option flags]`: read, triangulate,
  * refine, write, report.
  */
 #include <math.h>
@@ -14,6 +14,8 @@ typedef struct rargs {
     int quality;
     cvm_algorithm algo;
     double size; /* 0: none */
+    int32_t fronts[64]; /* --fronts: segment markers that start fronts (aflr) */
+    size_t nfronts;
     cli_setting set[CLI_MAX_SETTINGS];
     int nset;
 } rargs;
@@ -21,18 +23,22 @@ typedef struct rargs {
 void cli_refine_help(FILE *f)
 {
     fprintf(f,
-            "usage: cvmesh refine IN.poly [--algo delaunay|frontal] [--size H] [-o OUT]\n"
-            "                     [--svg PIC.svg] [--quality] [option flags]\n"
+            "usage: cvmesh refine IN.poly [--algo delaunay|frontal|aflr] [--size H]\n"
+            "                     [--fronts M1,M2,...] [-o OUT] [--svg PIC.svg] [--quality]\n"
+            "                     [option flags]\n"
             "\n"
             "Constrained Delaunay triangulation of IN, then refinement until every triangle\n"
             "meets the minimum angle, the size H and the maximum area. Segments are kept.\n"
             "\n"
-            "  --algo NAME                delaunay (Delaunay refinement, default) or frontal\n"
-            "                             (frontal-Delaunay: more regular triangles); aflr is\n"
-            "                             not available yet\n"
+            "  --algo NAME                delaunay (Delaunay refinement, default), frontal\n"
+            "                             (frontal-Delaunay: more regular triangles) or aflr\n"
+            "                             (advancing-front layers from the --fronts segments)\n"
+            "  --fronts M1,M2,...         aflr: segment markers whose segments start fronts\n"
+            "                             (default every segment)\n"
             "  --size H                   target edge length (uniform); default none\n"
             "  -o, --output OUT           write the mesh (.vtu, .msh, .svg, .node)\n"
             "  --svg PIC.svg              also draw the mesh, coloured by smallest angle\n"
+            "                             (by layer index for aflr)\n"
             "  --quality                  print the quality report and the refinement report\n"
             "  -h, --help                 print this help\n");
     cli_print_option_flags(f, CLI_CMD_REFINE);
@@ -55,6 +61,27 @@ static int parse_algo(rargs *a, const char *s)
     return CLI_EXIT_OK;
 }
 
+/* --fronts 1,2,...: integer markers separated by commas. */
+static int parse_fronts(rargs *a, const char *s)
+{
+    const char *p = s;
+    a->nfronts = 0;
+    for (;;) {
+        char *end;
+        long v = strtol(p, &end, 10);
+        if (end == p || v < INT32_MIN || v > INT32_MAX || (*end && *end != ',') ||
+            a->nfronts >= sizeof a->fronts / sizeof a->fronts[0]) {
+            fprintf(stderr, "cvmesh: --fronts %s: expected up to 64 integer markers separated by "
+                            "commas\n", s);
+            return CLI_EXIT_USAGE;
+        }
+        a->fronts[a->nfronts++] = (int32_t)v;
+        if (!*end)
+            return CLI_EXIT_OK;
+        p = end + 1;
+    }
+}
+
 static int parse_value(rargs *a, int argc, char **argv, int *i)
 {
     const char *s = argv[*i];
@@ -74,6 +101,8 @@ static int parse_value(rargs *a, int argc, char **argv, int *i)
         }
         return CLI_EXIT_OK;
     }
+    if (strcmp(s, "--fronts") == 0)
+        return parse_fronts(a, argv[*i]);
     if (strcmp(s, "--svg") == 0)
         a->svg = argv[*i];
     else
@@ -93,7 +122,7 @@ static int parse(rargs *a, int argc, char **argv)
             return -1;
         }
         if (strcmp(s, "--algo") == 0 || strcmp(s, "--size") == 0 || strcmp(s, "-o") == 0 ||
-            strcmp(s, "--output") == 0 || strcmp(s, "--svg") == 0) {
+            strcmp(s, "--output") == 0 || strcmp(s, "--svg") == 0 || strcmp(s, "--fronts") == 0) {
             if ((r = parse_value(a, argc, argv, &i)))
                 return r;
             continue;
@@ -173,6 +202,8 @@ static int run(const rargs *a)
         return rfail(m, sz, NULL);
     if (cvm_mesh_triangulate(m) != CVM_OK)
         return rfail(m, sz, a->in);
+    if (a->nfronts && cvm_mesh_set_front_markers(m, a->fronts, a->nfronts) != CVM_OK)
+        return rfail(m, sz, NULL);
     s = cvm_mesh_refine(m, sz, a->algo);
     if (cvm_status_is_error(s))
         return rfail(m, sz, a->in);

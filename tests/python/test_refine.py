@@ -112,8 +112,6 @@ def test_sizing_callback_errors(square_pslg):
 
 def test_refine_argument_errors(square_pslg):
     mesh = Mesh.from_pslg(*square_pslg)
-    with pytest.raises(cvmesh.UnsupportedError, match="AFLR"):
-        mesh.refine(algorithm="aflr")
     with pytest.raises(cvmesh.ArgumentError, match="known: delaunay, frontal"):
         mesh.refine(algorithm="bogus")
     with pytest.raises(ValueError, match="size or sizing"):
@@ -154,3 +152,14 @@ def test_refine_markers_on_boundary_steiner_points(square_pslg):
     marks = mesh.point_markers
     assert (marks[~on_boundary] == 0).all()
     assert set(marks[on_boundary][4:].tolist()) <= {5}
+
+
+def test_aflr_layers(square_pslg):
+    mesh = Mesh.from_pslg(*square_pslg)
+    mesh.refine(algorithm="aflr", size=0.1)
+    layers = mesh.layer_index
+    assert layers.shape == (mesh.count("triangle"),)
+    assert layers.dtype == np.float64
+    assert layers.min() >= 0 and layers.min() < 1.05
+    mesh.refine(algorithm="delaunay", size=0.05)
+    assert (mesh.layer_index == -1).all()

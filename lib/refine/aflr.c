@@ -1,0 +1,486 @@
+/*
+ * aflr.c - advancing-front local reconnection (Marcum 1995; Marcum and
+ * Weatherill 1995) inside the Delaunay kernel: fronts grow layer by layer
+ * from marked segments, one point per front edge.
+ *
+ * Every edge carries a layer index: a constrained edge 0 when its segment
+ * starts a front (else infinite); an edge made by inserting a point one more
+ * than the lowest layer on that point's cavity boundary; every other edge
+ * infinite. A triangle is good when each edge is shorter than AF_SIZE_BAD x
+ * the mean size at its ends and its smallest angle meets the bound. A front
+ * edge is a front-starting segment or an edge between a good and a bad
+ * triangle; bad triangles with a front edge are queued by the layer of their
+ * best front edge (lowest layer), then by its length relative to the local
+ * size, then by shape, with the queue's vertex-id tie-break. The point for a
+ * front edge lies on its perpendicular bisector, inside the bad triangle's
+ * circumcircle: the nearest to the edge of the equilateral point at the local
+ * size, the circumcentre and the shape- and size-optimal off-centres; a
+ * candidate closer than AF_PROX x the edge (or AF_PROX_SIZE x the local size)
+ * to an existing vertex (uniform grid, proximity_grid.c) is skipped for the
+ * next. Insertion is Bowyer-Watson with the refiner's encroachment rules
+ * (cvm__rf_insert_free), so "local reconnection" is the Delaunay cavity.
+ *
+ * Changes to the published rules, measured (bench_refine.py, uniform size):
+ * the equilateral point is taken at the local size clamped to
+ * [AF_SHRINK, AF_GROW] x the edge so one layer never jumps in size, and a
+ * rejected candidate falls back to the next one instead of dropping the edge.
+ * The Delaunay-refinement clean-up (cvm__rf_delaunay), then the frontal
+ * post-processing (swap, smooth, Delaunay restore), follow in refiner.c.
+ *
+ * Determinism: the edge-layer table is only looked up, never iterated; the
+ * queue orders by (layer, key, vertex ids).
+ */
+#include <math.h>
+#include <string.h>
+
+#include "refine_internal.h"
+#include "geom/geom_internal.h"
+
+/* Good needs every edge shorter than this times the mean size at its ends. */
+#define AF_SIZE_BAD 1.5
+/* A candidate point closer than this times the base edge to a vertex is rejected. */
+#define AF_PROX 0.7
+/* ... or closer than this times the local size (a floor that bounds the density). */
+#define AF_PROX_SIZE 0.35
+/* The equilateral point's edge length: the local size within these bounds x the base edge. */
+#define AF_SHRINK 0.8
+#define AF_GROW 1.25
+/* Off-centres are used above this requested angle (degrees). */
+#define AF_SHAPE_MIN_DEG 1.0
+/* Layer "infinite" and the largest queue class. */
+#define AF_INF INT32_MAX
+#define AF_PI 3.14159265358979323846
+
+typedef struct af_state {
+    uint64_t *hk;              /* edge keys (lo << 32 | hi), 0 = empty slot */
+    int32_t *hv;               /* layer of each key */
+    size_t hcap, hn;           /* capacity (power of two), used slots */
+    unsigned char *front;      /* per segment id: starts a front */
+    size_t nfront;
+    cvm__pgrid grid;
+    size_t ngrid;              /* vertices 0..ngrid-1 are in the grid */
+} af_state;
+
+static const double *af_pt(const cvm__refiner *R, int32_t v)
+{
+    return R->T->xy + 2 * (size_t)v;
+}
+
+/* ---- edge layers: open addressing keyed by the vertex pair ---- */
+
+static uint64_t af_key(int32_t a, int32_t b)
+{
+    uint32_t lo = (uint32_t)(a < b ? a : b), hi = (uint32_t)(a < b ? b : a);
+    return ((uint64_t)lo << 32) | hi; /* hi > lo >= 0, so never 0 */
+}
+
+static size_t af_slot(const af_state *A, uint64_t k)
+{
+    size_t i = (size_t)((k * UINT64_C(0x9E3779B97F4A7C15)) >> 17) & (A->hcap - 1);
+    while (A->hk[i] && A->hk[i] != k)
+        i = (i + 1) & (A->hcap - 1);
+    return i;
+}
+
+static int32_t af_get(const af_state *A, int32_t a, int32_t b)
+{
+    size_t i = af_slot(A, af_key(a, b));
+    return A->hk[i] ? A->hv[i] : AF_INF;
+}
+
+static cvm_status af_rehash(af_state *A, cvm__ctx *ctx, size_t cap)
+{
+    uint64_t *ok = A->hk;
+    int32_t *ov = A->hv;
+    size_t ocap = A->hcap, i;
+    A->hk = cvm__calloc(ctx, cap, sizeof *A->hk);
+    A->hv = cvm__malloc(ctx, cap * sizeof *A->hv);
+    if (!A->hk || !A->hv) {
+        cvm__free(ctx, A->hk);
+        cvm__free(ctx, A->hv);
+        A->hk = ok;
+        A->hv = ov;
+        return CVM_E_NOMEM;
+    }
+    A->hcap = cap;
+    for (i = 0; i < ocap; i++)
+        if (ok[i]) {
+            size_t j = af_slot(A, ok[i]);
+            A->hk[j] = ok[i];
+            A->hv[j] = ov[i];
+        }
+    cvm__free(ctx, ok);
+    cvm__free(ctx, ov);
+    return CVM_OK;
+}
+
+static cvm_status af_set(af_state *A, cvm__ctx *ctx, int32_t a, int32_t b, int32_t layer)
+{
+    uint64_t k = af_key(a, b);
+    size_t i;
+    if (2 * (A->hn + 1) > A->hcap && af_rehash(A, ctx, 2 * A->hcap))
+        return CVM_E_NOMEM;
+    i = af_slot(A, k);
+    if (!A->hk[i]) {
+        A->hk[i] = k;
+        A->hn++;
+    }
+    A->hv[i] = layer;
+    return CVM_OK;
+}
+
+/* Layer of edge j of triangle t. */
+static int32_t af_edge_layer(const cvm__refiner *R, int32_t t, int j)
+{
+    const af_state *A = R->aflr;
+    const int32_t *tv = R->T->tv + 3 * (size_t)t;
+    int32_t seg = R->T->te[3 * (size_t)t + (size_t)j];
+    if (seg >= 0)
+        return (size_t)seg < A->nfront && A->front[seg] ? 0 : AF_INF;
+    return af_get(A, tv[(j + 1) % 3], tv[(j + 2) % 3]);
+}
+
+/* ---- classification ---- */
+
+/* 1 when domain triangle t is good: edges within the size, shape above the
+ * bound (a triangle exempted at a small input angle counts as good), area
+ * within CVM_OPT_MAX_AREA. */
+static int af_good(cvm__refiner *R, int32_t t)
+{
+    const int32_t *tv = R->T->tv + 3 * (size_t)t;
+    const double *p[3];
+    double l[3], cross, sin2, lmin;
+    int k;
+    for (k = 0; k < 3; k++)
+        p[k] = af_pt(R, tv[k]);
+    for (k = 0; k < 3; k++) {
+        const double *a = p[(k + 1) % 3], *b = p[(k + 2) % 3];
+        double ls = (R->vls[tv[(k + 1) % 3]] + R->vls[tv[(k + 2) % 3]]) / 2;
+        l[k] = (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]);
+        if (isfinite(ls) && !(l[k] < AF_SIZE_BAD * AF_SIZE_BAD * ls * ls))
+            return 0;
+    }
+    cross = (p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[1][1] - p[0][1]) * (p[2][0] - p[0][0]);
+    if (R->p->max_area > 0 && cross / 2 > R->p->max_area)
+        return 0;
+    lmin = l[0] < l[1] ? (l[0] < l[2] ? l[0] : l[2]) : (l[1] < l[2] ? l[1] : l[2]);
+    sin2 = cross > 0 ? lmin * cross * cross / (l[0] * l[1] * l[2]) : 0.0;
+    if (sin2 >= R->sin2_min && cross > 0)
+        return 1;
+    return cvm__rf_classify(R, t, &sin2) == 3;
+}
+
+/* Best front edge of bad triangle t (lowest layer, then shortest relative to
+ * the size): *j_out, *layer_out, *key_out (relative length plus a shape term).
+ * Returns 0 when t has no front edge. */
+static int af_front_edge(cvm__refiner *R, int32_t t, int *j_out, int32_t *layer_out,
+                         double *key_out)
+{
+    const cvm__tri2 *T = R->T;
+    const int32_t *tv = T->tv + 3 * (size_t)t;
+    int j, found = 0;
+    double best = 0, sin2;
+    for (j = 0; j < 3; j++) {
+        int32_t a = tv[(j + 1) % 3], b = tv[(j + 2) % 3], nb = T->tn[3 * (size_t)t + (size_t)j] / 3;
+        int32_t layer;
+        double le, ls, rel;
+        if (T->te[3 * (size_t)t + (size_t)j] >= 0) {
+            layer = af_edge_layer(R, t, j);
+            if (layer == AF_INF)
+                continue;
+        } else {
+            if (!cvm__tri2_in_domain(T, nb) || !af_good(R, nb))
+                continue;
+            layer = af_edge_layer(R, t, j);
+        }
+        le = hypot(af_pt(R, a)[0] - af_pt(R, b)[0], af_pt(R, a)[1] - af_pt(R, b)[1]);
+        ls = (R->vls[a] + R->vls[b]) / 2;
+        rel = isfinite(ls) ? le / ls : le;
+        if (!found || layer < *layer_out || (layer == *layer_out && rel < best)) {
+            found = 1;
+            best = rel;
+            *layer_out = layer;
+            *j_out = j;
+        }
+    }
+    if (!found)
+        return 0;
+    cvm__rf_classify(R, t, &sin2);
+    *key_out = best + 1e-3 * (sin2 > 0 && sin2 <= 1 ? sin2 : 0);
+    return 1;
+}
+
+/* Queue domain triangle t when it is bad and has a front edge. */
+static cvm_status af_queue_triangle(cvm__refiner *R, int32_t t)
+{
+    int j;
+    int32_t layer;
+    double key;
+    if (!cvm__tri2_in_domain(R->T, t) || af_good(R, t) || !af_front_edge(R, t, &j, &layer, &key))
+        return CVM_OK;
+    if (cvm__bq_push(&R->q, R->T, t, layer, key))
+        return cvm__nomem(R->ctx);
+    return CVM_OK;
+}
+
+/* After vertex v was inserted (by this pass or by a segment split): give its
+ * spokes their layer, add it to the grid, queue its star and the triangles
+ * across the star's outer edges. */
+static cvm_status af_queue_star(cvm__refiner *R, int32_t v)
+{
+    af_state *A = R->aflr;
+    const cvm__tri2 *T = R->T;
+    size_t n = cvm__rf_star(R, v), k;
+    int32_t lmin = AF_INF, lnew;
+    cvm_status s;
+    if (n == 0)
+        return cvm__nomem(R->ctx);
+    for (; A->ngrid <= (size_t)v; A->ngrid++)
+        if (cvm__pgrid_add(&A->grid, (int32_t)A->ngrid, af_pt(R, (int32_t)A->ngrid)))
+            return cvm__nomem(R->ctx);
+    for (k = 0; k < n; k++) {
+        const int32_t *tv = T->tv + 3 * (size_t)R->star[k];
+        int i = tv[0] == v ? 0 : tv[1] == v ? 1 : 2;
+        int32_t l;
+        if (!cvm__tri2_in_domain(T, R->star[k]))
+            continue;
+        l = af_edge_layer(R, R->star[k], i);
+        if (l < lmin)
+            lmin = l;
+    }
+    lnew = lmin == AF_INF ? AF_INF : lmin + 1;
+    for (k = 0; k < n && lnew != AF_INF; k++) {
+        const int32_t *tv = T->tv + 3 * (size_t)R->star[k];
+        int i = tv[0] == v ? 0 : tv[1] == v ? 1 : 2;
+        if (cvm__tri2_in_domain(T, R->star[k]) &&
+            T->te[3 * (size_t)R->star[k] + (size_t)(i + 2) % 3] < 0 &&
+            af_set(A, R->ctx, v, tv[(i + 1) % 3], lnew))
+            return cvm__nomem(R->ctx);
+    }
+    for (k = 0; k < n; k++) {
+        int32_t t = R->star[k];
+        const int32_t *tv = T->tv + 3 * (size_t)t;
+        int i = tv[0] == v ? 0 : tv[1] == v ? 1 : 2;
+        if ((s = af_queue_triangle(R, t)) ||
+            (s = af_queue_triangle(R, T->tn[3 * (size_t)t + (size_t)i] / 3)))
+            return s;
+    }
+    return CVM_OK;
+}
+
+/* ---- point placement ---- */
+
+/* Candidate distances from the midpoint of edge j of t along its inward
+ * normal, ascending, into d (at most 4); returns their number. */
+static int af_candidates(cvm__refiner *R, int32_t t, int j, const double *m, const double *nrm,
+                         double le, double *d)
+{
+    const int32_t *tv = R->T->tv + 3 * (size_t)t;
+    double c[2], dc, rad, h = (R->vls[tv[(j + 1) % 3]] + R->vls[tv[(j + 2) % 3]]) / 2;
+    double cand[4], lim, L;
+    int n = 0, a, b;
+    cvm__circumcenter2d(af_pt(R, tv[0]), af_pt(R, tv[1]), af_pt(R, tv[2]), c);
+    dc = (c[0] - m[0]) * nrm[0] + (c[1] - m[1]) * nrm[1];
+    rad = hypot(c[0] - af_pt(R, tv[(j + 1) % 3])[0], c[1] - af_pt(R, tv[(j + 1) % 3])[1]);
+    lim = dc + rad; /* beyond this the point leaves t's circumcircle */
+    if (!isfinite(lim) || !(lim > 0))
+        return 0;
+    /* equilateral point at the local size, clamped against jumps */
+    L = isfinite(h) ? h : le;
+    L = L < AF_SHRINK * le ? AF_SHRINK * le : L > AF_GROW * le ? AF_GROW * le : L;
+    cand[n++] = sqrt(L * L - le * le / 4);
+    if (dc > 0)
+        cand[n++] = dc;
+    if (R->p->min_angle_deg >= AF_SHAPE_MIN_DEG)
+        cand[n++] = le / (2 * tan(R->p->min_angle_deg * AF_PI / 360.0));
+    if (isfinite(h) && h > le / 2)
+        cand[n++] = sqrt(h * h - le * le / 4);
+    /* sort (n <= 4) and keep those inside the circumcircle */
+    for (a = 1; a < n; a++)
+        for (b = a; b > 0 && cand[b] < cand[b - 1]; b--) {
+            double x = cand[b];
+            cand[b] = cand[b - 1];
+            cand[b - 1] = x;
+        }
+    for (a = b = 0; a < n; a++)
+        if (cand[a] > 0 && cand[a] < lim)
+            d[b++] = cand[a];
+    return b;
+}
+
+/* The point for front edge j of bad triangle t into x; 0 when every
+ * candidate is too close to an existing vertex. */
+static int af_point(cvm__refiner *R, int32_t t, int j, double *x)
+{
+    af_state *A = R->aflr;
+    const int32_t *tv = R->T->tv + 3 * (size_t)t;
+    const double *p = af_pt(R, tv[(j + 1) % 3]), *q = af_pt(R, tv[(j + 2) % 3]);
+    double le = hypot(q[0] - p[0], q[1] - p[1]), m[2], nrm[2], d[4], r;
+    double h = (R->vls[tv[(j + 1) % 3]] + R->vls[tv[(j + 2) % 3]]) / 2;
+    int n, k;
+    if (!(le > 0))
+        return 0;
+    m[0] = (p[0] + q[0]) / 2;
+    m[1] = (p[1] + q[1]) / 2;
+    nrm[0] = -(q[1] - p[1]) / le; /* t lies left of p -> q */
+    nrm[1] = (q[0] - p[0]) / le;
+    n = af_candidates(R, t, j, m, nrm, le, d);
+    r = AF_PROX * le;
+    if (isfinite(h) && AF_PROX_SIZE * h > r)
+        r = AF_PROX_SIZE * h;
+    for (k = 0; k < n; k++) {
+        x[0] = m[0] + d[k] * nrm[0];
+        x[1] = m[1] + d[k] * nrm[1];
+        if (!cvm__pgrid_any_within(&A->grid, R->T->xy, x, r))
+            return 1;
+    }
+    return 0;
+}
+
+/* ---- set-up and the pass ---- */
+
+static cvm_status af_setup(cvm__refiner *R)
+{
+    const cvm__tri2 *T = R->T;
+    af_state *A = cvm__calloc(R->ctx, 1, sizeof *A);
+    double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY, cs = INFINITY;
+    size_t k;
+    if (!A)
+        return cvm__nomem(R->ctx);
+    R->aflr = A;
+    A->nfront = R->nseg;
+    A->front = cvm__malloc(R->ctx, R->nseg + 1);
+    A->hcap = 1024;
+    A->hk = cvm__calloc(R->ctx, A->hcap, sizeof *A->hk);
+    A->hv = cvm__malloc(R->ctx, A->hcap * sizeof *A->hv);
+    if (!A->front || !A->hk || !A->hv)
+        return cvm__nomem(R->ctx);
+    for (k = 0; k < R->nseg; k++)
+        A->front[k] = !R->p->seg_front ? 1 : k < R->p->nseg ? R->p->seg_front[k] != 0 : 0;
+    for (k = 0; k < T->nv; k++) {
+        const double *p = af_pt(R, (int32_t)k);
+        if (T->vtri[k] < 0)
+            continue;
+        x0 = p[0] < x0 ? p[0] : x0;
+        x1 = p[0] > x1 ? p[0] : x1;
+        y0 = p[1] < y0 ? p[1] : y0;
+        y1 = p[1] > y1 ? p[1] : y1;
+        if (R->vls[k] < cs)
+            cs = R->vls[k];
+    }
+    if (!isfinite(x0))
+        x0 = y0 = 0, x1 = y1 = 1;
+    if (cvm__pgrid_init(&A->grid, R->ctx, x0, y0, x1, y1, cs, 4 * T->nv + (1u << 20)))
+        return cvm__nomem(R->ctx);
+    for (; A->ngrid < T->nv; A->ngrid++)
+        if (T->vtri[A->ngrid] >= 0 &&
+            cvm__pgrid_add(&A->grid, (int32_t)A->ngrid, af_pt(R, (int32_t)A->ngrid)))
+            return cvm__nomem(R->ctx);
+    return CVM_OK;
+}
+
+void cvm__rf_aflr_free(cvm__refiner *R)
+{
+    af_state *A = R->aflr;
+    if (!A)
+        return;
+    cvm__pgrid_destroy(&A->grid);
+    cvm__free(R->ctx, A->hk);
+    cvm__free(R->ctx, A->hv);
+    cvm__free(R->ctx, A->front);
+    cvm__free(R->ctx, A);
+    R->aflr = NULL;
+}
+
+cvm_status cvm__rf_aflr(cvm__refiner *R)
+{
+    cvm__bad_entry e;
+    cvm_status s;
+    size_t t;
+    if ((s = af_setup(R)))
+        return s;
+    R->queue_star = af_queue_star;
+    cvm__bq_clear(&R->q);
+    for (t = 0; t < R->T->nt; t++)
+        if ((s = af_queue_triangle(R, (int32_t)t)))
+            return s;
+    while (cvm__bq_pop(&R->q, &e)) {
+        double key, x[2];
+        int32_t v, layer;
+        int j, r;
+        if (!cvm__bq_valid(R->T, &e) || af_good(R, e.t) || !af_front_edge(R, e.t, &j, &layer, &key))
+            continue;
+        if (!af_point(R, e.t, j, x))
+            continue; /* every candidate too close: left to the clean-up */
+        r = cvm__rf_insert_free(R, e.t, x, &v, &s);
+        if (s)
+            return s;
+        if (r == CVM__RF_DONE)
+            s = af_queue_star(R, v);
+        else if (r == CVM__RF_SPLIT && cvm__bq_valid(R->T, &e))
+            s = cvm__bq_push(&R->q, R->T, e.t, e.cls, e.key) ? cvm__nomem(R->ctx) : CVM_OK;
+        if (!s)
+            s = cvm__rf_split_queued(R);
+        if (s)
+            return s;
+    }
+    R->queue_star = cvm__rf_queue_star;
+    return CVM_OK;
+}
+
+/* ---- output: the layer index of each cell ---- */
+
+cvm_status cvm__rf_aflr_cell_layers(cvm__refiner *R, double **out)
+{
+    const cvm__tri2 *T = R->T;
+    int32_t *vl;
+    double *cl;
+    size_t t;
+    *out = NULL;
+    if (!R->aflr)
+        return CVM_OK;
+    vl = cvm__malloc(R->ctx, (T->nv + 1) * sizeof *vl);
+    cl = cvm__malloc(R->ctx, (T->nt + 1) * sizeof *cl);
+    if (!vl || !cl) {
+        cvm__free(R->ctx, vl);
+        cvm__free(R->ctx, cl);
+        return cvm__nomem(R->ctx);
+    }
+    for (t = 0; t < T->nv; t++)
+        vl[t] = AF_INF;
+    /* lowest known layer at each vertex */
+    for (t = 0; t < T->nt; t++) {
+        int j;
+        if (!cvm__tri2_in_domain(T, (int32_t)t))
+            continue;
+        for (j = 0; j < 3; j++) {
+            int32_t l = af_edge_layer(R, (int32_t)t, j), a = T->tv[3 * t + (size_t)(j + 1) % 3];
+            int32_t b = T->tv[3 * t + (size_t)(j + 2) % 3];
+            vl[a] = l < vl[a] ? l : vl[a];
+            vl[b] = l < vl[b] ? l : vl[b];
+        }
+    }
+    for (t = 0; t < T->nt; t++) {
+        int32_t lo = AF_INF, hi = -1;
+        int j;
+        cl[t] = -1;
+        if (!cvm__tri2_in_domain(T, (int32_t)t))
+            continue;
+        for (j = 0; j < 3; j++) {
+            int32_t l = af_edge_layer(R, (int32_t)t, j);
+            if (l == AF_INF) { /* made after the pass, or a segment that starts no front */
+                int32_t a = vl[T->tv[3 * t + (size_t)(j + 1) % 3]];
+                int32_t b = vl[T->tv[3 * t + (size_t)(j + 2) % 3]];
+                l = a < b ? a : b;
+                l = l == AF_INF ? AF_INF : l + 1;
+            }
+            lo = l < lo ? l : lo;
+            hi = l > hi ? l : hi;
+        }
+        if (hi != AF_INF)
+            cl[t] = (double)hi + 0.1 * (double)lo;
+    }
+    cvm__free(R->ctx, vl);
+    *out = cl;
+    return CVM_OK;
+}
