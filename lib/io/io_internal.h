@@ -74,6 +74,7 @@ typedef struct cvm__mesh_out {
     const int32_t *smark;/* nseg or NULL */
     size_t nseg;
     const double *tquality; /* nt or NULL: per-triangle value for SVG colouring (min angle, degrees) */
+    const double *tlayer;   /* nt or NULL: AFLR layer index per triangle (SVG colours by it) */
 } cvm__mesh_out;
 
 /* Output formats, chosen by the extension of a path (case-insensitive). */

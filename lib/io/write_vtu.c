@@ -2,7 +2,8 @@
  * write_vtu.c - writes a mesh as a VTK XML UnstructuredGrid (.vtu, ASCII),
  * readable by ParaView and meshio: points (z = 0), triangles (VTK type 5),
  * point data "marker" (and "attribute" when there are point attributes), cell
- * data "attribute" (regional attribute) and "min_angle_deg" when given.
+ * data "attribute" (regional attribute), "min_angle_deg" and "layer_index"
+ * (AFLR) when given.
  */
 #include "formats.h"
 
@@ -63,6 +64,11 @@ static void cell_data(cvm__writer *w, const cvm__mesh_out *mo)
     if (mo->tquality) {
         begin_array(w, "Float64", "min_angle_deg", 1);
         doubles(w, mo->tquality, mo->nt, 1);
+        end_array(w);
+    }
+    if (mo->tlayer) {
+        begin_array(w, "Float64", "layer_index", 1);
+        doubles(w, mo->tlayer, mo->nt, 1);
         end_array(w);
     }
     cvm__writer_puts(w, "      </CellData>\n");

@@ -1,34 +1,45 @@
 /*
  * aflr.c - advancing-front local reconnection (Marcum 1995; Marcum and
- * Weatherill 1995) inside the Delaunay kernel: fronts grow layer by layer
- * from marked segments, one point per front edge.
+ * Weatherill 1995) inside the Delaunay kernel: fronts grow from marked
+ * segments, one point per front edge, every edge carrying a layer index.
  *
- * Every edge carries a layer index: a constrained edge 0 when its segment
- * starts a front (else infinite); an edge made by inserting a point one more
- * than the lowest layer on that point's cavity boundary; every other edge
- * infinite. A triangle is good when each edge is shorter than AF_SIZE_BAD x
- * the mean size at its ends and its smallest angle meets the bound. A front
- * edge is a front-starting segment or an edge between a good and a bad
- * triangle; bad triangles with a front edge are queued by the layer of their
- * best front edge (lowest layer), then by its length relative to the local
- * size, then by shape, with the queue's vertex-id tie-break. The point for a
- * front edge lies on its perpendicular bisector, inside the bad triangle's
- * circumcircle: the nearest to the edge of the equilateral point at the local
- * size, the circumcentre and the shape- and size-optimal off-centres; a
- * candidate closer than AF_PROX x the edge (or AF_PROX_SIZE x the local size)
- * to an existing vertex (uniform grid, proximity_grid.c) is skipped for the
- * next. Insertion is Bowyer-Watson with the refiner's encroachment rules
- * (cvm__rf_insert_free), so "local reconnection" is the Delaunay cavity.
+ * Layers: a constrained edge is 0 when its segment starts a front (else
+ * infinite); the edges made by inserting a point for a front edge of layer L
+ * are L + 1 (for a point from a segment split, or a front edge of infinite
+ * layer: one more than the lowest layer on its cavity boundary); every other
+ * edge is infinite. A triangle is good when each edge is shorter than
+ * AF_SIZE_BAD x the mean size at its ends and its smallest angle meets the
+ * bound. A front edge is a front-starting segment or an edge between a good
+ * and a bad triangle; a bad triangle with a front edge is queued, and its best
+ * front edge (lowest layer, then shortest relative to the size) is its base.
+ * The point lies on the base edge's perpendicular bisector, inside the bad
+ * triangle's circumcircle: the nearest to the edge of the equilateral point
+ * at the local size, the circumcentre and the shape- and size-optimal
+ * off-centres; a candidate closer than AF_PROX x the edge to an existing
+ * vertex (uniform grid, proximity_grid.c) is skipped. Insertion is
+ * Bowyer-Watson with the refiner's encroachment rules (cvm__rf_insert_free),
+ * so the "local reconnection" is the Delaunay cavity.
  *
- * Changes to the published rules, measured (bench_refine.py, uniform size):
- * the equilateral point is taken at the local size clamped to
- * [AF_SHRINK, AF_GROW] x the edge so one layer never jumps in size, and a
- * rejected candidate falls back to the next one instead of dropping the edge.
+ * Changes to the published rules, each measured with `cvmesh refine --algo
+ * aflr --quality` at the bench sizes (% of angles in [55, 65] degrees on
+ * square 0.02 / channel 0.02 / annulus 0.1 / cylinder 0.2 / NACA 0.2):
+ * - new edges take the base edge's layer + 1, not the cavity minimum: the
+ *   first cavities reach across the domain to other boundaries, so the
+ *   minimum labelled deep points layer 1 and their fronts raced ahead
+ *   (islands of low layers in the annulus);
+ * - the queue orders by the Delaunay-refinement key (largest circumradius /
+ *   size first, then worst shape), layer and relative edge length only
+ *   breaking ties: strict layer order gave 94.9 / 98.4 / 62.5 / 90.3 / 66.9
+ *   (curved fronts pile up their errors layer after layer, as the ~65-70% of
+ *   the thesis), this gives 95.9 / 98.4 / 93.7 / 94.7 / 94.7;
+ * - the equilateral point is taken at the local size clamped to
+ *   [AF_SHRINK, AF_GROW] x the edge so one layer never jumps in size, and a
+ *   rejected candidate falls back to the next one instead of dropping the edge.
  * The Delaunay-refinement clean-up (cvm__rf_delaunay), then the frontal
  * post-processing (swap, smooth, Delaunay restore), follow in refiner.c.
  *
  * Determinism: the edge-layer table is only looked up, never iterated; the
- * queue orders by (layer, key, vertex ids).
+ * queue orders by (key, vertex ids).
  */
 #include <math.h>
 #include <string.h>
@@ -40,15 +51,17 @@
 #define AF_SIZE_BAD 1.5
 /* A candidate point closer than this times the base edge to a vertex is rejected. */
 #define AF_PROX 0.7
-/* ... or closer than this times the local size (a floor that bounds the density). */
-#define AF_PROX_SIZE 0.35
 /* The equilateral point's edge length: the local size within these bounds x the base edge. */
 #define AF_SHRINK 0.8
 #define AF_GROW 1.25
 /* Off-centres are used above this requested angle (degrees). */
 #define AF_SHAPE_MIN_DEG 1.0
-/* Layer "infinite" and the largest queue class. */
+/* Weight of layer and edge length against shape in the queue key. */
+#define AF_TIE 1e-6
+/* Layer "infinite". */
 #define AF_INF INT32_MAX
+/* Sweeps that pass layers on to edges made after the fronts stopped. */
+#define AF_SWEEPS 64
 #define AF_PI 3.14159265358979323846
 
 typedef struct af_state {
@@ -206,7 +219,12 @@ static int af_front_edge(cvm__refiner *R, int32_t t, int *j_out, int32_t *layer_
     if (!found)
         return 0;
     cvm__rf_classify(R, t, &sin2);
-    *key_out = best + 1e-3 * (sin2 > 0 && sin2 <= 1 ? sin2 : 0);
+    /* the Delaunay-refinement key: -(circumradius / size)^2 when too big (the
+     * largest first), else sin^2 of the smallest angle (the worst first); then
+     * lower layer, then shorter edge (tiny terms) */
+    *key_out = (isfinite(sin2) ? sin2 : 0) +
+               AF_TIE * ((*layer_out == AF_INF ? 1.0 : 1.0 - 1.0 / (2.0 + *layer_out)) +
+                         best / (1.0 + best));
     return 1;
 }
 
@@ -218,20 +236,22 @@ static cvm_status af_queue_triangle(cvm__refiner *R, int32_t t)
     double key;
     if (!cvm__tri2_in_domain(R->T, t) || af_good(R, t) || !af_front_edge(R, t, &j, &layer, &key))
         return CVM_OK;
-    if (cvm__bq_push(&R->q, R->T, t, layer, key))
+    if (cvm__bq_push(&R->q, R->T, t, 0, key))
         return cvm__nomem(R->ctx);
     return CVM_OK;
 }
 
-/* After vertex v was inserted (by this pass or by a segment split): give its
- * spokes their layer, add it to the grid, queue its star and the triangles
+/* After vertex v was inserted (by this pass for a front edge of layer
+ * base_layer, or by a segment split: AF_INF): give its spokes their layer,
+ * one more than base_layer, or, when that is infinite, than the lowest layer
+ * on the cavity boundary; add it to the grid, queue its star and the triangles
  * across the star's outer edges. */
-static cvm_status af_queue_star(cvm__refiner *R, int32_t v)
+static cvm_status af_new_vertex(cvm__refiner *R, int32_t v, int32_t base_layer)
 {
     af_state *A = R->aflr;
     const cvm__tri2 *T = R->T;
     size_t n = cvm__rf_star(R, v), k;
-    int32_t lmin = AF_INF, lnew;
+    int32_t lmin = base_layer, lnew;
     cvm_status s;
     if (n == 0)
         return cvm__nomem(R->ctx);
@@ -242,7 +262,7 @@ static cvm_status af_queue_star(cvm__refiner *R, int32_t v)
         const int32_t *tv = T->tv + 3 * (size_t)R->star[k];
         int i = tv[0] == v ? 0 : tv[1] == v ? 1 : 2;
         int32_t l;
-        if (!cvm__tri2_in_domain(T, R->star[k]))
+        if (base_layer != AF_INF || !cvm__tri2_in_domain(T, R->star[k]))
             continue;
         l = af_edge_layer(R, R->star[k], i);
         if (l < lmin)
@@ -266,6 +286,12 @@ static cvm_status af_queue_star(cvm__refiner *R, int32_t v)
             return s;
     }
     return CVM_OK;
+}
+
+/* R->queue_star during the pass: a vertex inserted by a segment split. */
+static cvm_status af_queue_star(cvm__refiner *R, int32_t v)
+{
+    return af_new_vertex(R, v, AF_INF);
 }
 
 /* ---- point placement ---- */
@@ -316,7 +342,6 @@ static int af_point(cvm__refiner *R, int32_t t, int j, double *x)
     const int32_t *tv = R->T->tv + 3 * (size_t)t;
     const double *p = af_pt(R, tv[(j + 1) % 3]), *q = af_pt(R, tv[(j + 2) % 3]);
     double le = hypot(q[0] - p[0], q[1] - p[1]), m[2], nrm[2], d[4], r;
-    double h = (R->vls[tv[(j + 1) % 3]] + R->vls[tv[(j + 2) % 3]]) / 2;
     int n, k;
     if (!(le > 0))
         return 0;
@@ -326,8 +351,6 @@ static int af_point(cvm__refiner *R, int32_t t, int j, double *x)
     nrm[1] = (q[0] - p[0]) / le;
     n = af_candidates(R, t, j, m, nrm, le, d);
     r = AF_PROX * le;
-    if (isfinite(h) && AF_PROX_SIZE * h > r)
-        r = AF_PROX_SIZE * h;
     for (k = 0; k < n; k++) {
         x[0] = m[0] + d[k] * nrm[0];
         x[1] = m[1] + d[k] * nrm[1];
@@ -416,7 +439,7 @@ cvm_status cvm__rf_aflr(cvm__refiner *R)
         if (s)
             return s;
         if (r == CVM__RF_DONE)
-            s = af_queue_star(R, v);
+            s = af_new_vertex(R, v, layer);
         else if (r == CVM__RF_SPLIT && cvm__bq_valid(R->T, &e))
             s = cvm__bq_push(&R->q, R->T, e.t, e.cls, e.key) ? cvm__nomem(R->ctx) : CVM_OK;
         if (!s)
@@ -435,7 +458,8 @@ cvm_status cvm__rf_aflr_cell_layers(cvm__refiner *R, double **out)
     const cvm__tri2 *T = R->T;
     int32_t *vl;
     double *cl;
-    size_t t;
+    size_t t, k;
+    int changed, sweep;
     *out = NULL;
     if (!R->aflr)
         return CVM_OK;
@@ -458,6 +482,29 @@ cvm_status cvm__rf_aflr_cell_layers(cvm__refiner *R, double **out)
             int32_t b = T->tv[3 * t + (size_t)(j + 2) % 3];
             vl[a] = l < vl[a] ? l : vl[a];
             vl[b] = l < vl[b] ? l : vl[b];
+        }
+    }
+    /* edges without a layer pass one more than the lower end's on: sweeps in
+     * alternating slot order to a fixed point, at most AF_SWEEPS of them */
+    for (changed = 1, sweep = 0; changed && sweep < AF_SWEEPS; sweep++) {
+        changed = 0;
+        for (k = 0; k < T->nt; k++) {
+            int j;
+            t = sweep % 2 ? T->nt - 1 - k : k;
+            if (!cvm__tri2_in_domain(T, (int32_t)t))
+                continue;
+            for (j = 0; j < 3; j++) {
+                int32_t a = T->tv[3 * t + (size_t)(j + 1) % 3], b = T->tv[3 * t + (size_t)(j + 2) % 3];
+                if (af_edge_layer(R, (int32_t)t, j) != AF_INF)
+                    continue;
+                if (vl[a] != AF_INF && vl[a] + 1 < vl[b]) {
+                    vl[b] = vl[a] + 1;
+                    changed = 1;
+                } else if (vl[b] != AF_INF && vl[b] + 1 < vl[a]) {
+                    vl[a] = vl[b] + 1;
+                    changed = 1;
+                }
+            }
         }
     }
     for (t = 0; t < T->nt; t++) {

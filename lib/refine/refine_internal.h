@@ -218,7 +218,8 @@ cvm_status cvm__rf_aflr(cvm__refiner *R);
 /* Layer index of every triangle slot of the final mesh into a fresh array
  * *out (T->nt entries, through ctx): max + 0.1 x min of its edges' layers,
  * edges created after the AFLR pass (clean-up, swaps) taking one more than
- * the lowest layer at their ends; -1 where no front reached. CVM_OK or
+ * the lowest layer at their ends, passed on along such edges; -1 where no
+ * front reached. CVM_OK or
  * CVM_E_NOMEM. */
 cvm_status cvm__rf_aflr_cell_layers(cvm__refiner *R, double **out);
 /* Free R->aflr (NULL is fine). */
