@@ -4,10 +4,10 @@
  * segments, one point per front edge, every edge carrying a layer index.
  *
  * Layers: a constrained edge is 0 when its segment starts a front (else
- * infinite); the edges made by inserting a point for a front edge of layer L
- * are L + 1 (for a point from a segment split, or a front edge of infinite
- * layer: one more than the lowest layer on its cavity boundary); every other
- * edge is infinite. A triangle is good when each edge is shorter than
+ * infinite); an edge v-u made by inserting v for a front edge of layer L is
+ * one more than the lowest of L and the layers of the two cavity boundary
+ * edges at u beside it (L is infinite for a point from a segment split);
+ * every other edge is infinite. A triangle is good when each edge is shorter than
  * AF_SIZE_BAD x the mean size at its ends and its smallest angle meets the
  * bound. A front edge is a front-starting segment or an edge between a good
  * and a bad triangle; a bad triangle with a front edge is queued, and its best
@@ -23,10 +23,10 @@
  * Changes to the published rules, each measured with `cvmesh refine --algo
  * aflr --quality` at the bench sizes (% of angles in [55, 65] degrees on
  * square 0.02 / channel 0.02 / annulus 0.1 / cylinder 0.2 / NACA 0.2):
- * - new edges take the base edge's layer + 1, not the cavity minimum: the
+ * - a new edge takes its layer from the base edge and the cavity boundary
+ *   edges beside it, not the minimum over the whole cavity boundary: the
  *   first cavities reach across the domain to other boundaries, so the
- *   minimum labelled deep points layer 1 and their fronts raced ahead
- *   (islands of low layers in the annulus);
+ *   minimum labelled deep points layer 1 (islands of low layers);
  * - the queue orders by the Delaunay-refinement key (largest circumradius /
  *   size first, then worst shape), layer and relative edge length only
  *   breaking ties: strict layer order gave 94.9 / 98.4 / 62.5 / 90.3 / 66.9
@@ -242,40 +242,39 @@ static cvm_status af_queue_triangle(cvm__refiner *R, int32_t t)
 }
 
 /* After vertex v was inserted (by this pass for a front edge of layer
- * base_layer, or by a segment split: AF_INF): give its spokes their layer,
- * one more than base_layer, or, when that is infinite, than the lowest layer
- * on the cavity boundary; add it to the grid, queue its star and the triangles
+ * base_layer, or by a segment split: AF_INF): give each spoke its layer, one
+ * more than the lowest of base_layer and the cavity boundary edges beside
+ * the spoke; add it to the grid, queue its star and the triangles
  * across the star's outer edges. */
 static cvm_status af_new_vertex(cvm__refiner *R, int32_t v, int32_t base_layer)
 {
     af_state *A = R->aflr;
     const cvm__tri2 *T = R->T;
     size_t n = cvm__rf_star(R, v), k;
-    int32_t lmin = base_layer, lnew;
     cvm_status s;
     if (n == 0)
         return cvm__nomem(R->ctx);
     for (; A->ngrid <= (size_t)v; A->ngrid++)
         if (cvm__pgrid_add(&A->grid, (int32_t)A->ngrid, af_pt(R, (int32_t)A->ngrid)))
             return cvm__nomem(R->ctx);
+    /* each spoke: one more than the lowest of the base edge and the two outer
+     * (cavity boundary) edges beside it */
     for (k = 0; k < n; k++) {
         const int32_t *tv = T->tv + 3 * (size_t)R->star[k];
-        int i = tv[0] == v ? 0 : tv[1] == v ? 1 : 2;
-        int32_t l;
-        if (base_layer != AF_INF || !cvm__tri2_in_domain(T, R->star[k]))
+        int i = tv[0] == v ? 0 : tv[1] == v ? 1 : 2, e;
+        int32_t lo;
+        if (!cvm__tri2_in_domain(T, R->star[k]))
             continue;
-        l = af_edge_layer(R, R->star[k], i);
-        if (l < lmin)
-            lmin = l;
-    }
-    lnew = lmin == AF_INF ? AF_INF : lmin + 1;
-    for (k = 0; k < n && lnew != AF_INF; k++) {
-        const int32_t *tv = T->tv + 3 * (size_t)R->star[k];
-        int i = tv[0] == v ? 0 : tv[1] == v ? 1 : 2;
-        if (cvm__tri2_in_domain(T, R->star[k]) &&
-            T->te[3 * (size_t)R->star[k] + (size_t)(i + 2) % 3] < 0 &&
-            af_set(A, R->ctx, v, tv[(i + 1) % 3], lnew))
-            return cvm__nomem(R->ctx);
+        lo = af_edge_layer(R, R->star[k], i);
+        lo = base_layer < lo ? base_layer : lo;
+        if (lo == AF_INF)
+            continue;
+        for (e = 1; e <= 2; e++) {
+            int32_t u = tv[(i + e) % 3];
+            if (T->te[3 * (size_t)R->star[k] + (size_t)(i + 3 - e) % 3] < 0 &&
+                af_get(A, v, u) > lo + 1 && af_set(A, R->ctx, v, u, lo + 1))
+                return cvm__nomem(R->ctx);
+        }
     }
     for (k = 0; k < n; k++) {
         int32_t t = R->star[k];
