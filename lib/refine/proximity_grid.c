@@ -38,6 +38,8 @@ cvm_status cvm__pgrid_init(cvm__pgrid *g, cvm__ctx *ctx, double x0, double y0, d
 
 void cvm__pgrid_destroy(cvm__pgrid *g)
 {
+    if (!g->ctx)
+        return; /* never initialised */
     cvm__free(g->ctx, g->head);
     cvm__free(g->ctx, g->next);
     g->head = g->next = NULL;

@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "refine/refine_tests.h"
+#include "support/failing_alloc.h"
 #include "support/mesh_oracle.h"
 
 #define PI 3.14159265358979323846
@@ -384,17 +385,74 @@ static double af_poisson_error(cvm_mesh *m)
 }
 
 /* The manufactured-solution check of issue 4: at the same sizing the AFLR
- * mesh gives a lower maximum nodal error than the Delaunay-refinement mesh. */
+ * mesh gives a lower maximum nodal error than the Delaunay-refinement mesh,
+ * and still does against a Delaunay mesh refined to h / 1.4, which has more
+ * vertices than the AFLR mesh (counted here). */
 START_TEST(poisson_error_lower_on_aflr_than_delaunay)
 {
-    double e[2], h = 0.05;
+    static const double hs[3] = {0.05, 0.05, 0.05 / 1.4};
+    static const cvm_algorithm algo[3] = {CVM_ALGO_AFLR, CVM_ALGO_DELAUNAY, CVM_ALGO_DELAUNAY};
+    double e[3];
+    size_t nv[3];
     int k;
-    for (k = 0; k < 2; k++) {
-        cvm_mesh *m = af_square(h, k ? CVM_ALGO_AFLR : CVM_ALGO_DELAUNAY);
+    for (k = 0; k < 3; k++) {
+        cvm_mesh *m = af_square(hs[k], algo[k]);
         e[k] = af_poisson_error(m);
+        ck_assert_int_eq(cvm_mesh_count(&nv[k], m, CVM_ENT_VERTEX), CVM_OK);
         cvm_mesh_free(m);
     }
-    ck_assert_msg(e[1] > 0 && e[1] < e[0], "max nodal error: AFLR %g, Delaunay %g", e[1], e[0]);
+    ck_assert_msg(e[0] > 0 && e[0] < e[1], "max nodal error: AFLR %g, Delaunay %g", e[0], e[1]);
+    ck_assert_msg(nv[2] > nv[0], "Delaunay at h / 1.4: %lu vertices, AFLR %lu", (unsigned long)nv[2],
+                  (unsigned long)nv[0]);
+    ck_assert_msg(e[0] < e[2], "max nodal error: AFLR %g (%lu vertices), Delaunay %g (%lu vertices)",
+                  e[0], (unsigned long)nv[0], e[2], (unsigned long)nv[2]);
+}
+END_TEST
+
+/* Out of memory at every allocation of an AFLR refinement (transient and
+ * persistent): CVM_OK or CVM_E_NOMEM, nothing leaks, and the mesh, when kept,
+ * is a valid constrained Delaunay triangulation whose layer copy works. */
+START_TEST(out_of_memory_keeps_a_valid_mesh)
+{
+    static const double sq[] = {0, 0, 1, 0, 1, 1, 0, 1};
+    static const cvm_index seg[] = {0, 1, 1, 2, 2, 3, 3, 0};
+    int persistent;
+    for (persistent = 0; persistent <= 1; persistent++) {
+        long i;
+        for (i = 1; i < 100000; i++) {
+            cvmtest_alloc a;
+            cvm_mesh *m;
+            cvm_status st;
+            long failed;
+            size_t nt;
+            cvmtest_alloc_init(&a, 0, 0);
+            ck_assert_int_eq(cvmtest_mesh_create(&m, &a), CVM_OK);
+            ck_assert_int_eq(cvm_mesh_set_points(m, sq, 4, 2), CVM_OK);
+            ck_assert_int_eq(cvm_mesh_set_segments(m, seg, 4), CVM_OK);
+            ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+            cvmtest_alloc_arm(&a, a.n_calls + i, persistent);
+            st = rtest_refine_uniform(m, 0.1, CVM_ALGO_AFLR);
+            failed = a.n_failed;
+            cvmtest_alloc_arm(&a, 0, 0);
+            ck_assert_msg(st == CVM_OK || st == CVM_E_NOMEM, "allocation %ld: %s", i,
+                          cvm_status_str(st));
+            if (cvm_mesh_check(m) != CVM_E_STATE) {
+                double *layer;
+                cvmtest_assert_valid(m);
+                ck_assert_int_eq(cvm_mesh_count(&nt, m, CVM_ENT_TRIANGLE), CVM_OK);
+                layer = malloc((nt + 1) * sizeof *layer);
+                ck_assert_int_eq(cvm_mesh_copy_layer_index(layer, nt, m), CVM_OK);
+                free(layer);
+            }
+            cvm_mesh_free(m);
+            ck_assert_int_eq(a.live_blocks, 0);
+            if (failed == 0) {
+                ck_assert_int_eq(st, CVM_OK);
+                break;
+            }
+        }
+        ck_assert_msg(i > 20 && i < 100000, "%ld allocations in the refinement", i);
+    }
 }
 END_TEST
 
@@ -414,5 +472,6 @@ TCase *refine_aflr_tcase(void)
     tcase_add_test(tc, layer_index_without_fronts);
     tcase_add_test(tc, aflr_is_regular_on_the_square);
     tcase_add_test(tc, poisson_error_lower_on_aflr_than_delaunay);
+    tcase_add_test(tc, out_of_memory_keeps_a_valid_mesh);
     return tc;
 }
