@@ -58,6 +58,11 @@
 #define AF_SHAPE_MIN_DEG 1.0
 /* Weight of layer and edge length against shape in the queue key. */
 #define AF_TIE 1e-6
+/* A skinny (not too big) triangle is treated only from a front edge at least
+ * this times the local size long; shorter ones are left to the clean-up. */
+#define AF_MIN_BASE 0.5
+/* Triangle qualities. */
+enum { AF_OK = 0, AF_BIG = 1, AF_SKINNY = 2 };
 /* Layer "infinite". */
 #define AF_INF INT32_MAX
 /* Sweeps that pass layers on to edges made after the fronts stopped. */
@@ -72,6 +77,7 @@ typedef struct af_state {
     size_t nfront;
     cvm__pgrid grid;
     size_t ngrid;              /* vertices 0..ngrid-1 are in the grid */
+    double lmin0;              /* shortest domain edge when the pass started */
 } af_state;
 
 static const double *af_pt(const cvm__refiner *R, int32_t v)
@@ -155,10 +161,11 @@ static int32_t af_edge_layer(const cvm__refiner *R, int32_t t, int j)
 
 /* ---- classification ---- */
 
-/* 1 when domain triangle t is good: edges within the size, shape above the
- * bound (a triangle exempted at a small input angle counts as good), area
- * within CVM_OPT_MAX_AREA. */
-static int af_good(cvm__refiner *R, int32_t t)
+/* Quality of domain triangle t: AF_OK (edges within the size, shape above
+ * the bound, area within CVM_OPT_MAX_AREA; a triangle exempted at a small
+ * input angle counts as good), AF_BIG (an edge or the area too large) or
+ * AF_SKINNY (only the shape is bad). */
+static int af_quality(cvm__refiner *R, int32_t t)
 {
     const int32_t *tv = R->T->tv + 3 * (size_t)t;
     const double *p[3];
@@ -171,27 +178,36 @@ static int af_good(cvm__refiner *R, int32_t t)
         double ls = (R->vls[tv[(k + 1) % 3]] + R->vls[tv[(k + 2) % 3]]) / 2;
         l[k] = (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]);
         if (isfinite(ls) && !(l[k] < AF_SIZE_BAD * AF_SIZE_BAD * ls * ls))
-            return 0;
+            return AF_BIG;
     }
     cross = (p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[1][1] - p[0][1]) * (p[2][0] - p[0][0]);
     if (R->p->max_area > 0 && cross / 2 > R->p->max_area)
-        return 0;
+        return AF_BIG;
     lmin = l[0] < l[1] ? (l[0] < l[2] ? l[0] : l[2]) : (l[1] < l[2] ? l[1] : l[2]);
     sin2 = cross > 0 ? lmin * cross * cross / (l[0] * l[1] * l[2]) : 0.0;
     if (sin2 >= R->sin2_min && cross > 0)
-        return 1;
-    return cvm__rf_classify(R, t, &sin2) == 3;
+        return AF_OK;
+    return cvm__rf_classify(R, t, &sin2) == 3 ? AF_OK : AF_SKINNY;
+}
+
+static int af_good(cvm__refiner *R, int32_t t)
+{
+    return af_quality(R, t) == AF_OK;
 }
 
 /* Best front edge of bad triangle t (lowest layer, then shortest relative to
- * the size): *j_out, *layer_out, *key_out (relative length plus a shape term).
- * Returns 0 when t has no front edge. */
+ * the size): *j_out, *layer_out, *key_out (the queue key). When t is only
+ * skinny, edges shorter than AF_MIN_BASE x the size at them (without a size:
+ * x the shortest edge at the start of the pass) do not count: each point then
+ * keeps at least AF_PROX x AF_MIN_BASE x that length from every vertex, which
+ * bounds the pass. Returns 0 when t has no front edge. */
 static int af_front_edge(cvm__refiner *R, int32_t t, int *j_out, int32_t *layer_out,
                          double *key_out)
 {
+    const af_state *A = R->aflr;
     const cvm__tri2 *T = R->T;
     const int32_t *tv = T->tv + 3 * (size_t)t;
-    int j, found = 0;
+    int j, found = 0, skinny = af_quality(R, t) == AF_SKINNY;
     double best = 0, sin2;
     for (j = 0; j < 3; j++) {
         int32_t a = tv[(j + 1) % 3], b = tv[(j + 2) % 3], nb = T->tn[3 * (size_t)t + (size_t)j] / 3;
@@ -209,6 +225,8 @@ static int af_front_edge(cvm__refiner *R, int32_t t, int *j_out, int32_t *layer_
         le = hypot(af_pt(R, a)[0] - af_pt(R, b)[0], af_pt(R, a)[1] - af_pt(R, b)[1]);
         ls = (R->vls[a] + R->vls[b]) / 2;
         rel = isfinite(ls) ? le / ls : le;
+        if (skinny && !(le >= AF_MIN_BASE * (isfinite(ls) ? ls : A->lmin0)))
+            continue;
         if (!found || layer < *layer_out || (layer == *layer_out && rel < best)) {
             found = 1;
             best = rel;
@@ -392,6 +410,18 @@ static cvm_status af_setup(cvm__refiner *R)
     }
     if (!isfinite(x0))
         x0 = y0 = 0, x1 = y1 = 1;
+    A->lmin0 = INFINITY;
+    for (k = 0; k < T->nt; k++) {
+        int j;
+        if (!cvm__tri2_in_domain(T, (int32_t)k))
+            continue;
+        for (j = 0; j < 3; j++) {
+            const double *a = af_pt(R, T->tv[3 * k + (size_t)(j + 1) % 3]);
+            const double *b = af_pt(R, T->tv[3 * k + (size_t)(j + 2) % 3]);
+            double l = hypot(a[0] - b[0], a[1] - b[1]);
+            A->lmin0 = l < A->lmin0 ? l : A->lmin0;
+        }
+    }
     if (cvm__pgrid_init(&A->grid, R->ctx, x0, y0, x1, y1, cs, 4 * T->nv + (1u << 20)))
         return cvm__nomem(R->ctx);
     for (; A->ngrid < T->nv; A->ngrid++)
