@@ -95,7 +95,13 @@ static uint64_t af_key(int32_t a, int32_t b)
 
 static size_t af_slot(const af_state *A, uint64_t k)
 {
-    size_t i = (size_t)((k * UINT64_C(0x9E3779B97F4A7C15)) >> 17) & (A->hcap - 1);
+    uint64_t h = k ^ (k >> 33); /* MurmurHash3's 64-bit finaliser */
+    size_t i;
+    h *= UINT64_C(0xff51afd7ed558ccd);
+    h ^= h >> 33;
+    h *= UINT64_C(0xc4ceb9fe1a85ec53);
+    h ^= h >> 33;
+    i = (size_t)h & (A->hcap - 1);
     while (A->hk[i] && A->hk[i] != k)
         i = (i + 1) & (A->hcap - 1);
     return i;
@@ -485,7 +491,7 @@ cvm_status cvm__rf_aflr(cvm__refiner *R)
 cvm_status cvm__rf_aflr_cell_layers(cvm__refiner *R, double **out)
 {
     const cvm__tri2 *T = R->T;
-    int32_t *vl;
+    int32_t *vl, *el;
     double *cl;
     size_t t, k;
     int changed, sweep;
@@ -493,15 +499,17 @@ cvm_status cvm__rf_aflr_cell_layers(cvm__refiner *R, double **out)
     if (!R->aflr)
         return CVM_OK;
     vl = cvm__malloc(R->ctx, (T->nv + 1) * sizeof *vl);
+    el = cvm__malloc(R->ctx, (3 * T->nt + 1) * sizeof *el);
     cl = cvm__malloc(R->ctx, (T->nt + 1) * sizeof *cl);
-    if (!vl || !cl) {
+    if (!vl || !el || !cl) {
         cvm__free(R->ctx, vl);
+        cvm__free(R->ctx, el);
         cvm__free(R->ctx, cl);
         return cvm__nomem(R->ctx);
     }
     for (t = 0; t < T->nv; t++)
         vl[t] = AF_INF;
-    /* lowest known layer at each vertex */
+    /* each edge's layer once, and the lowest known layer at each vertex */
     for (t = 0; t < T->nt; t++) {
         int j;
         if (!cvm__tri2_in_domain(T, (int32_t)t))
@@ -509,6 +517,7 @@ cvm_status cvm__rf_aflr_cell_layers(cvm__refiner *R, double **out)
         for (j = 0; j < 3; j++) {
             int32_t l = af_edge_layer(R, (int32_t)t, j), a = T->tv[3 * t + (size_t)(j + 1) % 3];
             int32_t b = T->tv[3 * t + (size_t)(j + 2) % 3];
+            el[3 * t + (size_t)j] = l;
             vl[a] = l < vl[a] ? l : vl[a];
             vl[b] = l < vl[b] ? l : vl[b];
         }
@@ -524,7 +533,7 @@ cvm_status cvm__rf_aflr_cell_layers(cvm__refiner *R, double **out)
                 continue;
             for (j = 0; j < 3; j++) {
                 int32_t a = T->tv[3 * t + (size_t)(j + 1) % 3], b = T->tv[3 * t + (size_t)(j + 2) % 3];
-                if (af_edge_layer(R, (int32_t)t, j) != AF_INF)
+                if (el[3 * t + (size_t)j] != AF_INF)
                     continue;
                 if (vl[a] != AF_INF && vl[a] + 1 < vl[b]) {
                     vl[b] = vl[a] + 1;
@@ -543,7 +552,7 @@ cvm_status cvm__rf_aflr_cell_layers(cvm__refiner *R, double **out)
         if (!cvm__tri2_in_domain(T, (int32_t)t))
             continue;
         for (j = 0; j < 3; j++) {
-            int32_t l = af_edge_layer(R, (int32_t)t, j);
+            int32_t l = el[3 * t + (size_t)j];
             if (l == AF_INF) { /* made after the pass, or a segment that starts no front */
                 int32_t a = vl[T->tv[3 * t + (size_t)(j + 1) % 3]];
                 int32_t b = vl[T->tv[3 * t + (size_t)(j + 2) % 3]];
@@ -557,6 +566,7 @@ cvm_status cvm__rf_aflr_cell_layers(cvm__refiner *R, double **out)
             cl[t] = (double)hi + 0.1 * (double)lo;
     }
     cvm__free(R->ctx, vl);
+    cvm__free(R->ctx, el);
     *out = cl;
     return CVM_OK;
 }
