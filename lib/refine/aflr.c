@@ -70,9 +70,12 @@ enum { AF_OK = 0, AF_BIG = 1, AF_SKINNY = 2 };
 #define AF_PI 3.14159265358979323846
 
 typedef struct af_state {
-    uint64_t *hk;              /* edge keys (lo << 32 | hi), 0 = empty slot */
-    int32_t *hv;               /* layer of each key */
-    size_t hcap, hn;           /* capacity (power of two), used slots */
+    int32_t *sl;               /* per triangle slot, 3: layer of each edge */
+    int32_t *sv;               /* per slot, 3: its vertices when sl was written (sl is
+                                  valid while they match the slot's) */
+    size_t cap_sl, cap_sv;     /* in int32_t */
+    int32_t *lo;               /* scratch per star triangle: layer of its outer edge */
+    size_t cap_lo;
     unsigned char *front;      /* per segment id: starts a front */
     size_t nfront;
     cvm__pgrid grid;
@@ -85,84 +88,45 @@ static const double *af_pt(const cvm__refiner *R, int32_t v)
     return R->T->xy + 2 * (size_t)v;
 }
 
-/* ---- edge layers: open addressing keyed by the vertex pair ---- */
+/* ---- edge layers, per triangle slot ---- */
 
-static uint64_t af_key(int32_t a, int32_t b)
+/* 1 when the layers stored for slot t belong to the triangle now in it. */
+static int af_slot_valid(const af_state *A, const cvm__tri2 *T, int32_t t)
 {
-    uint32_t lo = (uint32_t)(a < b ? a : b), hi = (uint32_t)(a < b ? b : a);
-    return ((uint64_t)lo << 32) | hi; /* hi > lo >= 0, so never 0 */
+    const int32_t *tv = T->tv + 3 * (size_t)t, *sv = A->sv + 3 * (size_t)t;
+    return 3 * (size_t)t + 2 < A->cap_sv && sv[0] == tv[0] && sv[1] == tv[1] && sv[2] == tv[2];
 }
 
-static size_t af_slot(const af_state *A, uint64_t k)
-{
-    uint64_t h = k ^ (k >> 33); /* MurmurHash3's 64-bit finaliser */
-    size_t i;
-    h *= UINT64_C(0xff51afd7ed558ccd);
-    h ^= h >> 33;
-    h *= UINT64_C(0xc4ceb9fe1a85ec53);
-    h ^= h >> 33;
-    i = (size_t)h & (A->hcap - 1);
-    while (A->hk[i] && A->hk[i] != k)
-        i = (i + 1) & (A->hcap - 1);
-    return i;
-}
-
-static int32_t af_get(const af_state *A, int32_t a, int32_t b)
-{
-    size_t i = af_slot(A, af_key(a, b));
-    return A->hk[i] ? A->hv[i] : AF_INF;
-}
-
-static cvm_status af_rehash(af_state *A, cvm__ctx *ctx, size_t cap)
-{
-    uint64_t *ok = A->hk;
-    int32_t *ov = A->hv;
-    size_t ocap = A->hcap, i;
-    A->hk = cvm__calloc(ctx, cap, sizeof *A->hk);
-    A->hv = cvm__malloc(ctx, cap * sizeof *A->hv);
-    if (!A->hk || !A->hv) {
-        cvm__free(ctx, A->hk);
-        cvm__free(ctx, A->hv);
-        A->hk = ok;
-        A->hv = ov;
-        return CVM_E_NOMEM;
-    }
-    A->hcap = cap;
-    for (i = 0; i < ocap; i++)
-        if (ok[i]) {
-            size_t j = af_slot(A, ok[i]);
-            A->hk[j] = ok[i];
-            A->hv[j] = ov[i];
-        }
-    cvm__free(ctx, ok);
-    cvm__free(ctx, ov);
-    return CVM_OK;
-}
-
-static cvm_status af_set(af_state *A, cvm__ctx *ctx, int32_t a, int32_t b, int32_t layer)
-{
-    uint64_t k = af_key(a, b);
-    size_t i;
-    if (2 * (A->hn + 1) > A->hcap && af_rehash(A, ctx, 2 * A->hcap))
-        return CVM_E_NOMEM;
-    i = af_slot(A, k);
-    if (!A->hk[i]) {
-        A->hk[i] = k;
-        A->hn++;
-    }
-    A->hv[i] = layer;
-    return CVM_OK;
-}
-
-/* Layer of edge j of triangle t. */
+/* Layer of edge j of triangle t: from its segment when constrained, else
+ * what slot t (or the triangle across) stored, else AF_INF. */
 static int32_t af_edge_layer(const cvm__refiner *R, int32_t t, int j)
 {
     const af_state *A = R->aflr;
-    const int32_t *tv = R->T->tv + 3 * (size_t)t;
-    int32_t seg = R->T->te[3 * (size_t)t + (size_t)j];
+    const cvm__tri2 *T = R->T;
+    int32_t seg = T->te[3 * (size_t)t + (size_t)j], h;
     if (seg >= 0)
         return (size_t)seg < A->nfront && A->front[seg] ? 0 : AF_INF;
-    return af_get(A, tv[(j + 1) % 3], tv[(j + 2) % 3]);
+    if (af_slot_valid(A, T, t))
+        return A->sl[3 * (size_t)t + (size_t)j];
+    h = T->tn[3 * (size_t)t + (size_t)j];
+    if (af_slot_valid(A, T, h / 3))
+        return A->sl[(size_t)h];
+    return AF_INF;
+}
+
+/* Record the three edge layers of slot t. CVM_OK or CVM_E_NOMEM. */
+static cvm_status af_store(af_state *A, cvm__refiner *R, int32_t t, const int32_t *l)
+{
+    size_t need = 3 * (size_t)t + 3;
+    int k;
+    if ((need > A->cap_sl && cvm__grow(R->ctx, (void **)&A->sl, &A->cap_sl, need, sizeof *A->sl)) ||
+        (need > A->cap_sv && cvm__grow(R->ctx, (void **)&A->sv, &A->cap_sv, need, sizeof *A->sv)))
+        return CVM_E_NOMEM;
+    for (k = 0; k < 3; k++) {
+        A->sl[3 * (size_t)t + (size_t)k] = l[k];
+        A->sv[3 * (size_t)t + (size_t)k] = R->T->tv[3 * (size_t)t + (size_t)k];
+    }
+    return CVM_OK;
 }
 
 /* ---- classification ---- */
@@ -276,36 +240,49 @@ static cvm_status af_new_vertex(cvm__refiner *R, int32_t v, int32_t base_layer)
     const cvm__tri2 *T = R->T;
     size_t n = cvm__rf_star(R, v), k;
     cvm_status s;
-    if (n == 0)
+    if (n == 0 || (n > A->cap_lo && cvm__grow(R->ctx, (void **)&A->lo, &A->cap_lo, n, sizeof *A->lo)))
         return cvm__nomem(R->ctx);
     for (; A->ngrid <= (size_t)v; A->ngrid++)
         if (cvm__pgrid_add(&A->grid, (int32_t)A->ngrid, af_pt(R, (int32_t)A->ngrid)))
             return cvm__nomem(R->ctx);
-    /* each spoke: one more than the lowest of the base edge and the two outer
-     * (cavity boundary) edges beside it */
+    /* the outer (cavity boundary) edge of each star triangle keeps its layer,
+     * read from the unchanged triangle across it */
     for (k = 0; k < n; k++) {
-        const int32_t *tv = T->tv + 3 * (size_t)R->star[k];
-        int i = tv[0] == v ? 0 : tv[1] == v ? 1 : 2, e;
-        int32_t lo;
-        if (!cvm__tri2_in_domain(T, R->star[k]))
-            continue;
-        lo = af_edge_layer(R, R->star[k], i);
-        lo = base_layer < lo ? base_layer : lo;
-        if (lo == AF_INF)
-            continue;
-        for (e = 1; e <= 2; e++) {
-            int32_t u = tv[(i + e) % 3];
-            if (T->te[3 * (size_t)R->star[k] + (size_t)(i + 3 - e) % 3] < 0 &&
-                af_get(A, v, u) > lo + 1 && af_set(A, R->ctx, v, u, lo + 1))
-                return cvm__nomem(R->ctx);
-        }
+        int32_t t = R->star[k];
+        const int32_t *tv = T->tv + 3 * (size_t)t;
+        int i = tv[0] == v ? 0 : tv[1] == v ? 1 : 2;
+        int32_t h = T->tn[3 * (size_t)t + (size_t)i];
+        A->lo[k] = T->te[3 * (size_t)t + (size_t)i] >= 0 ? af_edge_layer(R, t, i)
+                   : af_slot_valid(A, T, h / 3) ? A->sl[(size_t)h] : AF_INF;
+    }
+    /* each spoke: one more than the lowest of the base edge and the outer
+     * edges of the two star triangles beside it (star[k] and star[k + 1]
+     * share the spoke opposite tv[i + 1] of star[k]) */
+    for (k = 0; k < n; k++) {
+        int32_t t = R->star[k], l[3], m;
+        const int32_t *tv = T->tv + 3 * (size_t)t;
+        int i = tv[0] == v ? 0 : tv[1] == v ? 1 : 2;
+        size_t next = (k + 1) % n, prev = (k + n - 1) % n;
+        l[i] = A->lo[k];
+        m = A->lo[k] < A->lo[next] ? A->lo[k] : A->lo[next];
+        m = !cvm__tri2_in_domain(T, t) || !cvm__tri2_in_domain(T, R->star[next]) ? AF_INF : m;
+        m = base_layer < m ? base_layer : m;
+        l[(i + 1) % 3] = m == AF_INF ? AF_INF : m + 1;
+        m = A->lo[k] < A->lo[prev] ? A->lo[k] : A->lo[prev];
+        m = !cvm__tri2_in_domain(T, t) || !cvm__tri2_in_domain(T, R->star[prev]) ? AF_INF : m;
+        m = base_layer < m ? base_layer : m;
+        l[(i + 2) % 3] = m == AF_INF ? AF_INF : m + 1;
+        if (af_store(A, R, t, l))
+            return cvm__nomem(R->ctx);
     }
     for (k = 0; k < n; k++) {
         int32_t t = R->star[k];
         const int32_t *tv = T->tv + 3 * (size_t)t;
         int i = tv[0] == v ? 0 : tv[1] == v ? 1 : 2;
+        /* the triangle across the outer edge gains a front edge only when t is good */
         if ((s = af_queue_triangle(R, t)) ||
-            (s = af_queue_triangle(R, T->tn[3 * (size_t)t + (size_t)i] / 3)))
+            (cvm__tri2_in_domain(T, t) && af_good(R, t) &&
+             (s = af_queue_triangle(R, T->tn[3 * (size_t)t + (size_t)i] / 3))))
             return s;
     }
     return CVM_OK;
@@ -396,13 +373,15 @@ static cvm_status af_setup(cvm__refiner *R)
     R->aflr = A;
     A->nfront = R->nseg;
     A->front = cvm__malloc(R->ctx, R->nseg + 1);
-    A->hcap = 1024;
-    A->hk = cvm__calloc(R->ctx, A->hcap, sizeof *A->hk);
-    A->hv = cvm__malloc(R->ctx, A->hcap * sizeof *A->hv);
-    if (!A->front || !A->hk || !A->hv)
+    if (!A->front)
         return cvm__nomem(R->ctx);
     for (k = 0; k < R->nseg; k++)
         A->front[k] = !R->p->seg_front ? 1 : k < R->p->nseg ? R->p->seg_front[k] != 0 : 0;
+    for (k = 0; k < T->nt; k++) { /* every unconstrained edge starts at layer infinite */
+        static const int32_t inf3[3] = {AF_INF, AF_INF, AF_INF};
+        if (af_store(A, R, (int32_t)k, inf3))
+            return cvm__nomem(R->ctx);
+    }
     for (k = 0; k < T->nv; k++) {
         const double *p = af_pt(R, (int32_t)k);
         if (T->vtri[k] < 0)
@@ -443,8 +422,9 @@ void cvm__rf_aflr_free(cvm__refiner *R)
     if (!A)
         return;
     cvm__pgrid_destroy(&A->grid);
-    cvm__free(R->ctx, A->hk);
-    cvm__free(R->ctx, A->hv);
+    cvm__free(R->ctx, A->sl);
+    cvm__free(R->ctx, A->sv);
+    cvm__free(R->ctx, A->lo);
     cvm__free(R->ctx, A->front);
     cvm__free(R->ctx, A);
     R->aflr = NULL;
