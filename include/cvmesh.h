@@ -387,7 +387,7 @@ typedef enum cvm_option {
      *  never flipped. Runs before smoothing and the Delaunay-restoring flips. 0: off.
      *  Not applied to CVM_ALGO_DELAUNAY. Integer, [0, 1]. */
     CVM_OPT_SWAP = 205,
-    /** Sweeps of smart Laplacian smoothing after CVM_ALGO_FRONTAL refinement (after
+    /** Sweeps of smart Laplacian smoothing after CVM_ALGO_FRONTAL and CVM_ALGO_AFLR (after
      *  CVM_OPT_SWAP, before the Delaunay-restoring flips), default 1, bounds [0, 100];
      *  0 = off. Only Steiner points whose triangles are all inside the domain move (never
      *  an input point or a vertex on a segment), in vertex index order, towards the
