@@ -165,19 +165,19 @@ static int af_good(cvm__refiner *R, int32_t t)
     return af_quality(R, t) == AF_OK;
 }
 
-/* Best front edge of bad triangle t (lowest layer, then shortest relative to
+/* Best front edge of bad triangle t of quality q (lowest layer, then shortest relative to
  * the size): *j_out, *layer_out, *key_out (the queue key). When t is only
  * skinny, edges shorter than AF_MIN_BASE x the size at them (without a size:
  * x the shortest edge at the start of the pass) do not count: each point then
  * keeps at least AF_PROX x AF_MIN_BASE x that length from every vertex, which
  * bounds the pass. Returns 0 when t has no front edge. */
-static int af_front_edge(cvm__refiner *R, int32_t t, int *j_out, int32_t *layer_out,
+static int af_front_edge(cvm__refiner *R, int32_t t, int q, int *j_out, int32_t *layer_out,
                          double *key_out)
 {
     const af_state *A = R->aflr;
     const cvm__tri2 *T = R->T;
     const int32_t *tv = T->tv + 3 * (size_t)t;
-    int j, found = 0, skinny = af_quality(R, t) == AF_SKINNY;
+    int j, found = 0, skinny = q == AF_SKINNY;
     double best = 0, sin2;
     for (j = 0; j < 3; j++) {
         int32_t a = tv[(j + 1) % 3], b = tv[(j + 2) % 3], nb = T->tn[3 * (size_t)t + (size_t)j] / 3;
@@ -216,13 +216,18 @@ static int af_front_edge(cvm__refiner *R, int32_t t, int *j_out, int32_t *layer_
     return 1;
 }
 
-/* Queue domain triangle t when it is bad and has a front edge. */
-static cvm_status af_queue_triangle(cvm__refiner *R, int32_t t)
+/* Queue domain triangle t when it is bad and has a front edge; its quality
+ * into *q_out (AF_BIG outside the domain). */
+static cvm_status af_queue_triangle(cvm__refiner *R, int32_t t, int *q_out)
 {
-    int j;
+    int j, q;
     int32_t layer;
     double key;
-    if (!cvm__tri2_in_domain(R->T, t) || af_good(R, t) || !af_front_edge(R, t, &j, &layer, &key))
+    *q_out = AF_BIG;
+    if (!cvm__tri2_in_domain(R->T, t))
+        return CVM_OK;
+    *q_out = q = af_quality(R, t);
+    if (q == AF_OK || !af_front_edge(R, t, q, &j, &layer, &key))
         return CVM_OK;
     if (cvm__bq_push(&R->q, R->T, t, 0, key))
         return cvm__nomem(R->ctx);
@@ -280,9 +285,9 @@ static cvm_status af_new_vertex(cvm__refiner *R, int32_t v, int32_t base_layer)
         const int32_t *tv = T->tv + 3 * (size_t)t;
         int i = tv[0] == v ? 0 : tv[1] == v ? 1 : 2;
         /* the triangle across the outer edge gains a front edge only when t is good */
-        if ((s = af_queue_triangle(R, t)) ||
-            (cvm__tri2_in_domain(T, t) && af_good(R, t) &&
-             (s = af_queue_triangle(R, T->tn[3 * (size_t)t + (size_t)i] / 3))))
+        int q, qn;
+        if ((s = af_queue_triangle(R, t, &q)) ||
+            (q == AF_OK && (s = af_queue_triangle(R, T->tn[3 * (size_t)t + (size_t)i] / 3, &qn))))
             return s;
     }
     return CVM_OK;
@@ -435,18 +440,20 @@ cvm_status cvm__rf_aflr(cvm__refiner *R)
     cvm__bad_entry e;
     cvm_status s;
     size_t t;
+    int q;
     if ((s = af_setup(R)))
         return s;
     R->queue_star = af_queue_star;
     cvm__bq_clear(&R->q);
     for (t = 0; t < R->T->nt; t++)
-        if ((s = af_queue_triangle(R, (int32_t)t)))
+        if ((s = af_queue_triangle(R, (int32_t)t, &q)))
             return s;
     while (cvm__bq_pop(&R->q, &e)) {
         double key, x[2];
         int32_t v, layer;
         int j, r;
-        if (!cvm__bq_valid(R->T, &e) || af_good(R, e.t) || !af_front_edge(R, e.t, &j, &layer, &key))
+        if (!cvm__bq_valid(R->T, &e) || (q = af_quality(R, e.t)) == AF_OK ||
+            !af_front_edge(R, e.t, q, &j, &layer, &key))
             continue;
         if (!af_point(R, e.t, j, x))
             continue; /* every candidate too close: left to the clean-up */
