@@ -31,7 +31,7 @@
  *   size first, then worst shape), layer and relative edge length only
  *   breaking ties: strict layer order gave 94.9 / 98.4 / 62.5 / 90.3 / 66.9
  *   (curved fronts pile up their errors layer after layer, as the ~65-70% of
- *   the thesis), this gives 95.9 / 98.4 / 93.7 / 94.7 / 94.7;
+ *   the thesis), this gives 95.6 / 98.4 / 94.0 / 95.1 / 94.7 (0.0-0.4% obtuse);
  * - the equilateral point is taken at the local size clamped to
  *   [AF_SHRINK, AF_GROW] x the edge so one layer never jumps in size, and a
  *   rejected candidate falls back to the next one instead of dropping the edge.
