@@ -212,7 +212,9 @@ demo: deps
 	  -o $(BUILD)/demo/naca0012_frontal.vtu --svg $(BUILD)/demo/naca0012_frontal.svg --quality
 	$(CLI) refine $(SHARED_DIR)/data/naca0012.poly --algo delaunay --size 0.5 \
 	  -o $(BUILD)/demo/naca0012_delaunay.vtu --svg $(BUILD)/demo/naca0012_delaunay.svg
-	@echo "demo: wrote $(BUILD)/demo/naca0012{,_frontal,_delaunay}.{vtu,svg}"
+	$(CLI) refine $(SHARED_DIR)/data/naca0012.poly --algo aflr --size 0.5 \
+	  -o $(BUILD)/demo/naca0012_aflr.vtu --svg $(BUILD)/demo/naca0012_aflr.svg
+	@echo "demo: wrote $(BUILD)/demo/naca0012{,_frontal,_delaunay,_aflr}.{vtu,svg}"
 
 # ---- make check ------------------------------------------------------------
 # Each step prints "== step ==" and its time; the first failure stops the run.

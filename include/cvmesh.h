@@ -420,7 +420,7 @@ typedef enum cvm_option {
      *  never flipped. Runs before smoothing and the Delaunay-restoring flips. 0: off.
      *  Not applied to CVM_ALGO_DELAUNAY. Integer, [0, 1]. */
     CVM_OPT_SWAP = 205,
-    /** Sweeps of smart Laplacian smoothing after CVM_ALGO_FRONTAL refinement (after
+    /** Sweeps of smart Laplacian smoothing after CVM_ALGO_FRONTAL and CVM_ALGO_AFLR (after
      *  CVM_OPT_SWAP, before the Delaunay-restoring flips), default 1, bounds [0, 100];
      *  0 = off. Only Steiner points whose triangles are all inside the domain move (never
      *  an input point or a vertex on a segment), in vertex index order, towards the
@@ -828,15 +828,22 @@ CVM_API cvm_status cvm_sizing_eval(double *out, cvm_sizing *s, double x, double 
 typedef enum cvm_algorithm {
     CVM_ALGO_DELAUNAY = 1, /**< Delaunay refinement (Ruppert, Shewchuk): circumcentres */
     CVM_ALGO_FRONTAL = 2,  /**< frontal-Delaunay (Engwirda): off-centres grown from the boundary */
-    CVM_ALGO_AFLR = 3      /**< advancing-front local reconnection (Marcum); reserved */
+    CVM_ALGO_AFLR = 3      /**< advancing-front local reconnection (Marcum): layers grown from
+                                front segments, see cvm_mesh_set_front_markers() */
 } cvm_algorithm;
 
 /**
  * Refine the triangulation of @p m by inserting Steiner points until every
  * triangle meets CVM_OPT_MIN_ANGLE_DEG, CVM_OPT_MAX_AREA and the @p sizing
  * (circumradius at most the mean size at its vertices for CVM_ALGO_DELAUNAY; mean
- * edge length at most 1.5 x the size for CVM_ALGO_FRONTAL, which then finishes with
- * a Delaunay-refinement pass so that both meet the same bounds). Segments are split
+ * edge length at most 1.5 x the size for CVM_ALGO_FRONTAL; every edge below 1.5 x the
+ * mean size at its ends for CVM_ALGO_AFLR; the last two then finish with a Delaunay-refinement
+ * pass so that all three meet the same bounds). CVM_ALGO_AFLR advances fronts layer
+ * by layer from the segments chosen by cvm_mesh_set_front_markers() (every segment
+ * by default), one point per front edge on its bisector (the nearest to the edge of
+ * the equilateral point at the local size, the circumcentre and two off-centres; a
+ * point closer than 0.7 x the edge to a vertex is skipped), and records a layer index
+ * per triangle (cvm_mesh_copy_layer_index()). Segments are split
  * where encroached (concentric shells near small input angles, as Triangle does), so
  * every input segment stays a union of mesh edges; with no segments, or with
  * CVM_OPT_KEEP_CONVEX_HULL, the convex hull edges become segments (with marker 0).
@@ -851,11 +858,11 @@ typedef enum cvm_algorithm {
  * @param m       mesh handle, triangulated (cvm_mesh_triangulate()); not NULL.
  * @param sizing  target sizes; may be NULL (angle and area bounds only). Read only
  *                during the call; not kept.
- * @param algo    CVM_ALGO_DELAUNAY or CVM_ALGO_FRONTAL.
+ * @param algo    CVM_ALGO_DELAUNAY, CVM_ALGO_FRONTAL or CVM_ALGO_AFLR.
  * Options:  CVM_OPT_MIN_ANGLE_DEG, CVM_OPT_MAX_AREA, CVM_OPT_ENCROACH_LENS,
  *           CVM_OPT_MARCH_SEGMENTS, CVM_OPT_MAX_STEINER, CVM_OPT_TIME_LIMIT_S; the
  *           progress callback (stage CVM_STAGE_REFINE) can cancel. CVM_ALGO_FRONTAL
- *           then post-processes (when refinement completed): CVM_OPT_SWAP, then
+ *           and CVM_ALGO_AFLR then post-process (when refinement completed): CVM_OPT_SWAP, then
  *           CVM_OPT_SMOOTH_SWEEPS (smoothing moves Steiner points), then
  *           CVM_OPT_RESTORE_DELAUNAY.
  * Stops:    on the Steiner limit, the time limit or cancellation the mesh is valid
@@ -869,7 +876,6 @@ typedef enum cvm_algorithm {
  *                                 (message names the callback and the position)
  *         CVM_E_INPUT_NONFINITE   the sizing callback returned NaN or infinity (message
  *                                 names the callback and the position)
- *         CVM_E_UNSUPPORTED       algo is CVM_ALGO_AFLR (not in this version)
  *         CVM_E_NOMEM             (the mesh keeps the points inserted before it and is valid)
  *         CVM_INCOMPLETE_STEINER_LIMIT, CVM_INCOMPLETE_TIME_LIMIT, CVM_INCOMPLETE_CANCELLED
  * @since 0.1
@@ -898,7 +904,9 @@ CVM_API cvm_status cvm_mesh_copy_refine_unmet(double *dst, size_t dst_len, const
 
 /**
  * Choose which segment markers start fronts (for CVM_ALGO_AFLR): the segments whose
- * marker is in @p markers. count 0 (the default) means every segment.
+ * marker is in @p markers (a segment's marker is 1 when no segment markers are set).
+ * count 0 (the default) means every segment, and the convex-hull edges that become
+ * segments too. Kept until changed; read by the next cvm_mesh_refine().
  *
  * @param markers  count marker values. Ownership: copied.
  * @return CVM_OK
@@ -969,6 +977,32 @@ CVM_API cvm_status cvm_mesh_copy_markers(int32_t *dst, size_t dst_len, const cvm
  */
 CVM_API cvm_status cvm_mesh_copy_triangle_attributes(double *dst, size_t dst_len,
                                                      const cvm_mesh *m);
+
+/**
+ * Copy the advancing-front layer index of each triangle (in CVM_ENT_TRIANGLE
+ * order) after a CVM_ALGO_AFLR refinement: max + 0.1 x min of the layer indices
+ * of its three edges. A front segment's edges have layer 0; an edge made by
+ * inserting a point has one more than the lowest layer on the boundary of that
+ * point's cavity; an edge made after the fronts stopped (clean-up, swaps) has one
+ * more than the lowest layer at its two ends. So a triangle on a front segment
+ * has 0.x or 1.0, the next layer 1.x or 2.x, and so on; -1 where no front reached.
+ * Every value is -1 when the last cvm_mesh_refine() was not CVM_ALGO_AFLR (or
+ * none ran, or it failed). The values belong to the mesh as refined; later
+ * changes of its triangles (cvm_mesh_set_weights() flips) keep each triangle
+ * slot's value.
+ *
+ * @param dst      count(CVM_ENT_TRIANGLE) doubles; NULL only with dst_len 0.
+ * @param dst_len  entries available in dst.
+ * @param m        mesh handle; not NULL.
+ * Ownership:    written into the caller's buffer; nothing kept.
+ * Units:        none (layer counts).
+ * Thread-safety: may run concurrently with other read-only calls on @p m.
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG         m is NULL, or dst is NULL while dst_len > 0
+ *         CVM_E_BUFFER_TOO_SMALL dst_len < the triangle count (nothing written)
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_mesh_copy_layer_index(double *dst, size_t dst_len, const cvm_mesh *m);
 
 /**
  * Copy the point attributes of each vertex: nattr per vertex (see

@@ -38,6 +38,8 @@ struct cvm_mesh {
 
     /* dual optimisation (lib/api/optimise.c) */
     double dual_opt_report[7]; /* the last cvm_mesh_optimise_dual(): CVM_MEASURE_DUAL_OPT_* */
+    double *tlayer;          /* AFLR layer index per triangle slot of tri, or NULL */
+    size_t n_tlayer;         /* tri.nt when tlayer was made (stale when it differs) */
 };
 
 /* Slot of key in opt[], or -1 if the key is unknown. */

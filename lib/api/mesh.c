@@ -57,6 +57,9 @@ void cvm__mesh_drop_output(cvm_mesh *m)
     m->refine_unmet = NULL;
     m->n_refine_unmet = 0;
     memset(m->dual_opt_report, 0, sizeof m->dual_opt_report);
+    cvm__free(&m->ctx, m->tlayer);
+    m->tlayer = NULL;
+    m->n_tlayer = 0;
 }
 
 void cvm_mesh_free(cvm_mesh *m)
@@ -72,6 +75,7 @@ void cvm_mesh_free(cvm_mesh *m)
     cvm__free(&m->ctx, m->vattr);
     cvm__free(&m->ctx, m->front_marks);
     cvm__free(&m->ctx, m->refine_unmet);
+    cvm__free(&m->ctx, m->tlayer);
     f = m->ctx.free_fn;
     payload = m->ctx.payload;
     f(payload, m);

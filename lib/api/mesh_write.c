@@ -12,12 +12,14 @@ void cvm__mesh_out_free(cvm_mesh *m, cvm__mesh_out *mo)
     cvm__free(&m->ctx, (void *)mo->seg);
     cvm__free(&m->ctx, (void *)mo->smark);
     cvm__free(&m->ctx, (void *)mo->tquality);
+    cvm__free(&m->ctx, (void *)mo->tlayer);
     if (mo->vattr != m->vattr)
         cvm__free(&m->ctx, (void *)mo->vattr); /* the weight column (lib/api/dual.c) */
     memset(mo, 0, sizeof *mo);
 }
 
-/* Triangles, their attributes and (want_quality) their smallest angles. */
+/* Triangles, their attributes and (want_quality) their smallest angles and
+ * AFLR layer indices. */
 static cvm_status gather_triangles(cvm_mesh *m, cvm__mesh_out *mo, int want_quality)
 {
     const cvm__tri2 *T = &m->tri;
@@ -25,10 +27,13 @@ static cvm_status gather_triangles(cvm_mesh *m, cvm__mesh_out *mo, int want_qual
     int32_t *tri = cvm__malloc(&m->ctx, (3 * nt + 1) * sizeof *tri);
     double *ta = T->ta ? cvm__malloc(&m->ctx, (nt + 1) * sizeof *ta) : NULL;
     double *q = want_quality ? cvm__malloc(&m->ctx, (nt + 1) * sizeof *q) : NULL;
+    int layers = want_quality && m->tlayer && m->n_tlayer == T->nt;
+    double *la = layers ? cvm__malloc(&m->ctx, (nt + 1) * sizeof *la) : NULL;
     mo->tri = tri;
     mo->tattr = ta;
     mo->tquality = q;
-    if (!tri || (T->ta && !ta) || (want_quality && !q))
+    mo->tlayer = la;
+    if (!tri || (T->ta && !ta) || (want_quality && !q) || (layers && !la))
         return CVM_E_NOMEM;
     for (t = 0; t < T->nt; t++) {
         const int32_t *v = T->tv + 3 * t;
@@ -37,6 +42,8 @@ static cvm_status gather_triangles(cvm_mesh *m, cvm__mesh_out *mo, int want_qual
         memcpy(tri + 3 * k, v, 3 * sizeof *tri);
         if (ta)
             ta[k] = T->ta[t];
+        if (la)
+            la[k] = m->tlayer[t];
         if (q)
             q[k] = cvm__min_angle_deg(T->xy + 2 * (size_t)v[0], T->xy + 2 * (size_t)v[1],
                                       T->xy + 2 * (size_t)v[2]);

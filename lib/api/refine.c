@@ -1,7 +1,7 @@
-/* refine.c - cvm_mesh_refine and its report: options in, lib/refine run, vertex markers and attributes out. */
+/* refine.c - cvm_mesh_refine and its report: options in, lib/refine run, vertex markers, attributes and layers out. */
 #include <string.h>
 
-#include "api_internal.h"
+#include "output_internal.h"
 #include "refine/refine_internal.h"
 
 enum { REP_STEINER, REP_UNMET_ANGLE, REP_UNMET_SIZE, REP_SMALL_ANGLE, REP_REQUESTED, REP_MET };
@@ -119,6 +119,26 @@ static cvm_status refine_regions_begin(cvm_mesh *m, double **area_out)
     return CVM_OK;
 }
 
+/* Per input segment: 1 when its marker is one of the front markers (AFLR);
+ * NULL in *out when no front markers are set (every segment starts a front). */
+static cvm_status refine_front_flags(cvm_mesh *m, unsigned char **out)
+{
+    size_t k, i;
+    *out = NULL;
+    if (!m->n_front_marks)
+        return CVM_OK;
+    if (!(*out = cvm__malloc(&m->ctx, m->in.nseg + 1)))
+        return CVM_E_NOMEM;
+    for (k = 0; k < m->in.nseg; k++) {
+        int32_t mk = cvm__segment_marker(m, (int32_t)k);
+        (*out)[k] = 0;
+        for (i = 0; i < m->n_front_marks; i++)
+            if (m->front_marks[i] == mk)
+                (*out)[k] = 1;
+    }
+    return CVM_OK;
+}
+
 /* Back from region indices to the regional attributes (0 outside every region). */
 static void refine_regions_end(cvm_mesh *m, double *area)
 {
@@ -141,9 +161,13 @@ static cvm_status refine_run(cvm_mesh *m, const cvm_sizing *sizing, cvm_algorith
     cvm__refine_params p;
     cvm__refine_report rep;
     int32_t *ends = NULL;
+    unsigned char *front = NULL;
     size_t k, nv0 = m->tri.nv;
     cvm_status s, s2;
     memset(&p, 0, sizeof p);
+    cvm__free(&m->ctx, m->tlayer);
+    m->tlayer = NULL;
+    m->n_tlayer = 0;
     if (m->in.nseg) {
         ends = cvm__malloc(&m->ctx, 2 * m->in.nseg * sizeof *ends);
         if (!ends)
@@ -151,13 +175,18 @@ static cvm_status refine_run(cvm_mesh *m, const cvm_sizing *sizing, cvm_algorith
         for (k = 0; k < 2 * m->in.nseg; k++)
             ends[k] = m->input_map[m->in.seg[k]];
     }
+    if (algo == CVM_ALGO_AFLR && refine_front_flags(m, &front)) {
+        cvm__free(&m->ctx, ends);
+        return cvm__nomem(&m->ctx);
+    }
+    p.seg_front = front;
     p.algo = (int)algo;
     p.min_angle_deg = cvm__opt(m, CVM_OPT_MIN_ANGLE_DEG);
     p.max_area = cvm__opt(m, CVM_OPT_MAX_AREA);
     p.max_steiner = (uint64_t)cvm__opt(m, CVM_OPT_MAX_STEINER);
     p.lens = cvm__opt(m, CVM_OPT_ENCROACH_LENS) != 0;
     p.march = cvm__opt(m, CVM_OPT_MARCH_SEGMENTS) != 0;
-    if (algo == CVM_ALGO_FRONTAL) {
+    if (algo == CVM_ALGO_FRONTAL || algo == CVM_ALGO_AFLR) {
         p.swap = cvm__opt(m, CVM_OPT_SWAP) != 0;
         p.smooth_sweeps = (int)cvm__opt(m, CVM_OPT_SMOOTH_SWEEPS);
     }
@@ -172,6 +201,7 @@ static cvm_status refine_run(cvm_mesh *m, const cvm_sizing *sizing, cvm_algorith
            through a private copy of the handle (the caller's stays untouched) */
         if ((s = refine_auto_field(m, sizing, &field)) != CVM_OK) {
             cvm__free(&m->ctx, ends);
+            cvm__free(&m->ctx, front);
             return s;
         }
         local = *sizing;
@@ -181,6 +211,7 @@ static cvm_status refine_run(cvm_mesh *m, const cvm_sizing *sizing, cvm_algorith
     if ((s = refine_regions_begin(m, &region_area)) != CVM_OK) {
         cvm__auto_field_free(&field, &m->ctx);
         cvm__free(&m->ctx, ends);
+        cvm__free(&m->ctx, front);
         return s;
     }
     p.region_area = region_area;
@@ -189,6 +220,9 @@ static cvm_status refine_run(cvm_mesh *m, const cvm_sizing *sizing, cvm_algorith
     refine_regions_end(m, region_area);
     cvm__auto_field_free(&field, &m->ctx);
     cvm__free(&m->ctx, ends);
+    cvm__free(&m->ctx, front);
+    m->tlayer = rep.cell_layer;
+    m->n_tlayer = rep.cell_layer ? m->tri.nt : 0;
     s2 = refine_vertex_data(m, nv0);
     if (s2) {
         /* the vertex arrays cannot follow the kernel: the mesh cannot be kept */
@@ -216,11 +250,7 @@ cvm_status cvm_mesh_refine(cvm_mesh *m, const cvm_sizing *sizing, cvm_algorithm 
     if (!m->triangulated)
         return cvm__error(&m->ctx, CVM_E_STATE, CVM_ENT_NONE, -1,
                           "no triangulation: call cvm_mesh_triangulate() first");
-    if (algo == CVM_ALGO_AFLR)
-        return cvm__error(&m->ctx, CVM_E_UNSUPPORTED, CVM_ENT_NONE, -1,
-                          "CVM_ALGO_AFLR (advancing-front local reconnection) is not available in "
-                          "this version; use CVM_ALGO_FRONTAL or CVM_ALGO_DELAUNAY");
-    if (algo != CVM_ALGO_DELAUNAY && algo != CVM_ALGO_FRONTAL)
+    if (algo != CVM_ALGO_DELAUNAY && algo != CVM_ALGO_FRONTAL && algo != CVM_ALGO_AFLR)
         return cvm__error(&m->ctx, CVM_E_ARGUMENT, CVM_ENT_NONE, -1, "unknown algorithm %d",
                           (int)algo);
     memset(m->refine_report, 0, sizeof m->refine_report);
@@ -271,5 +301,25 @@ cvm_status cvm_mesh_copy_refine_unmet(double *dst, size_t dst_len, const cvm_mes
         return CVM_E_BUFFER_TOO_SMALL;
     if (m->n_refine_unmet)
         memcpy(dst, m->refine_unmet, 3 * m->n_refine_unmet * sizeof *dst);
+    return CVM_OK;
+}
+
+cvm_status cvm_mesh_copy_layer_index(double *dst, size_t dst_len, const cvm_mesh *m)
+{
+    const cvm__tri2 *T;
+    size_t t, k = 0, nt;
+    int have;
+    if (!m)
+        return CVM_E_NULL_ARG;
+    T = &m->tri;
+    nt = m->triangulated ? cvm__domain_triangles(T) : 0;
+    if (!dst && dst_len)
+        return CVM_E_NULL_ARG;
+    if (dst_len < nt)
+        return CVM_E_BUFFER_TOO_SMALL;
+    have = m->tlayer && m->n_tlayer == T->nt;
+    for (t = 0; t < T->nt && nt; t++)
+        if (cvm__tri2_in_domain(T, (int32_t)t))
+            dst[k++] = have ? m->tlayer[t] : -1.0;
     return CVM_OK;
 }

@@ -1,7 +1,8 @@
 /*
  * cmd_refine.c - `cvmesh refine IN.poly|IN.vtu [--algo delaunay|frontal|aflr] [--size H]
- * [-o OUT] [--svg PIC.svg] [--dual DUAL.vtu] [--quality] [option flags]`: read,
- * triangulate (unless the input is a mesh), refine, write, report.
+ * [--auto R] [--grading G] [--fronts M,...] [-o OUT] [--svg PIC.svg] [--dual DUAL.vtu]
+ * [--quality] [option flags]`: read, triangulate (unless the input is a mesh), refine,
+ * write, report.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -15,6 +16,8 @@ typedef struct rargs {
     cvm_algorithm algo;
     double size; /* 0: none */
     double auto_r, grading; /* --auto R (0: off), --grading G */
+    int32_t fronts[64]; /* --fronts: segment markers that start fronts (aflr) */
+    size_t nfronts;
     cli_setting set[CLI_MAX_SETTINGS];
     int nset;
 } rargs;
@@ -22,16 +25,19 @@ typedef struct rargs {
 void cli_refine_help(FILE *f)
 {
     fprintf(f,
-            "usage: cvmesh refine IN.poly|IN.vtu [--algo delaunay|frontal] [--size H] [-o OUT]\n"
+            "usage: cvmesh refine IN.poly|IN.vtu [--algo delaunay|frontal|aflr] [--size H]\n"
+            "                     [--auto R [--grading G]] [--fronts M1,M2,...] [-o OUT]\n"
             "                     [--svg PIC.svg] [--dual DUAL.vtu] [--quality] [option flags]\n"
             "\n"
             "Constrained Delaunay triangulation of IN, then refinement until every triangle\n"
             "meets the minimum angle, the size H and the maximum area. Segments are kept.\n"
             "A .vtu mesh is read as it is (with its weights) and refined further.\n"
             "\n"
-            "  --algo NAME                delaunay (Delaunay refinement, default) or frontal\n"
-            "                             (frontal-Delaunay: more regular triangles); aflr is\n"
-            "                             not available yet\n"
+            "  --algo NAME                delaunay (Delaunay refinement, default), frontal\n"
+            "                             (frontal-Delaunay: more regular triangles) or aflr\n"
+            "                             (advancing-front layers from the --fronts segments)\n"
+            "  --fronts M1,M2,...         aflr: segment markers whose segments start fronts\n"
+            "                             (default every segment)\n"
             "  --size H                   target edge length (uniform); default none\n"
             "  --auto R                   automatic size from the geometry: local feature\n"
             "                             size / R (R edges per feature), graded by --grading\n"
@@ -39,6 +45,7 @@ void cli_refine_help(FILE *f)
             "                             of distance (default 4)\n"
             "  -o, --output OUT           write the mesh (.vtu, .msh, .svg, .node)\n"
             "  --svg PIC.svg              also draw the mesh, coloured by smallest angle\n"
+            "                             (by layer index for aflr)\n"
             "  --dual DUAL.vtu            write the power (Voronoi) cells as VTK polygons with\n"
             "                             vertex id, area and weight\n"
             "  --quality                  print the quality report (with the dual's q1-q5) and\n"
@@ -62,6 +69,27 @@ static int parse_algo(rargs *a, const char *s)
         return CLI_EXIT_USAGE;
     }
     return CLI_EXIT_OK;
+}
+
+/* --fronts 1,2,...: integer markers separated by commas. */
+static int parse_fronts(rargs *a, const char *s)
+{
+    const char *p = s;
+    a->nfronts = 0;
+    for (;;) {
+        char *end;
+        long v = strtol(p, &end, 10);
+        if (end == p || v < INT32_MIN || v > INT32_MAX || (*end && *end != ',') ||
+            a->nfronts >= sizeof a->fronts / sizeof a->fronts[0]) {
+            fprintf(stderr, "cvmesh: --fronts %s: expected up to 64 integer markers separated by "
+                            "commas\n", s);
+            return CLI_EXIT_USAGE;
+        }
+        a->fronts[a->nfronts++] = (int32_t)v;
+        if (!*end)
+            return CLI_EXIT_OK;
+        p = end + 1;
+    }
 }
 
 static int parse_value(rargs *a, int argc, char **argv, int *i)
@@ -89,6 +117,8 @@ static int parse_value(rargs *a, int argc, char **argv, int *i)
             a->grading = v;
         return CLI_EXIT_OK;
     }
+    if (strcmp(s, "--fronts") == 0)
+        return parse_fronts(a, argv[*i]);
     if (strcmp(s, "--svg") == 0)
         a->svg = argv[*i];
     else if (strcmp(s, "--dual") == 0)
@@ -111,8 +141,8 @@ static int parse(rargs *a, int argc, char **argv)
             return -1;
         }
         if (strcmp(s, "--algo") == 0 || strcmp(s, "--size") == 0 || strcmp(s, "--auto") == 0 ||
-            strcmp(s, "--grading") == 0 || strcmp(s, "-o") == 0 ||
-            strcmp(s, "--output") == 0 || strcmp(s, "--svg") == 0 || strcmp(s, "--dual") == 0) {
+            strcmp(s, "--grading") == 0 || strcmp(s, "-o") == 0 || strcmp(s, "--output") == 0 ||
+            strcmp(s, "--svg") == 0 || strcmp(s, "--dual") == 0 || strcmp(s, "--fronts") == 0) {
             if ((r = parse_value(a, argc, argv, &i)))
                 return r;
             continue;
@@ -212,6 +242,8 @@ static int run(const rargs *a)
         return rfail(m, sz, NULL);
     if (!cli_is_triangulated(m) && cvm_mesh_triangulate(m) != CVM_OK) /* a .vtu is a mesh */
         return rfail(m, sz, a->in);
+    if (a->nfronts && cvm_mesh_set_front_markers(m, a->fronts, a->nfronts) != CVM_OK)
+        return rfail(m, sz, NULL);
     s = cvm_mesh_refine(m, sz, a->algo);
     if (cvm_status_is_error(s))
         return rfail(m, sz, a->in);

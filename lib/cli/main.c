@@ -16,7 +16,7 @@ typedef struct cli_command {
 static const cli_command k_commands[] = {
     {"triangulate", "Delaunay / constrained Delaunay triangulation of a .node or .poly file",
      cli_triangulate, cli_triangulate_help},
-    {"refine", "quality mesh of a .poly file: Delaunay refinement or frontal-Delaunay",
+    {"refine", "quality mesh of a .poly file: Delaunay refinement, frontal-Delaunay or AFLR",
      cli_refine, cli_refine_help},
     {"optimise", "optimise a mesh's power (weighted Voronoi) dual: every triangle holds its dual vertex",
      cli_optimise, cli_optimise_help},

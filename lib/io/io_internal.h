@@ -96,6 +96,7 @@ typedef struct cvm__mesh_out {
     const double *tquality; /* nt or NULL: per-triangle value for SVG colouring (min angle, degrees) */
     const double *weight;   /* nv or NULL: vertex weights; when set, vattr's first column
                                holds them too (.node writes it; .vtu writes "weight" apart) */
+    const double *tlayer;   /* nt or NULL: AFLR layer index per triangle (SVG colours by it) */
 } cvm__mesh_out;
 
 /* ---- output: the power cells of a mesh (polygons), borrowed arrays ---- */

@@ -1,7 +1,9 @@
 /*
  * write_svg.c - draws a mesh as an SVG picture: triangles filled by a colour
  * ramp of their smallest angle (red 0 deg .. green 60 deg, from mo->tquality;
- * uniform grey-blue without it), thin triangle edges, segments drawn thicker,
+ * uniform grey-blue without it) or, for an AFLR mesh (mo->tlayer), by their
+ * layer index in eight colours that repeat (grey where no front reached),
+ * thin triangle edges, segments drawn thicker,
  * y pointing up, the view fitted to the mesh, and a legend for the ramp.
  * Coordinates are rounded to 0.01 px: this is a picture, not data.
  */
@@ -53,6 +55,20 @@ static void ramp(double q, int *rgb)
         rgb[k] = (int)lround(stops[i][k] + f * (stops[i + 1][k] - stops[i][k]));
 }
 
+/* Colour of layer index q: eight alternating hues by integer layer, grey below 0. */
+static void layer_colour(double q, int *rgb)
+{
+    static const int pal[8][3] = {{31, 119, 180}, {255, 187, 120}, {44, 160, 44}, {255, 152, 150},
+                                  {148, 103, 189}, {219, 219, 141}, {23, 190, 207}, {247, 182, 210}};
+    int k;
+    if (!(q >= 0) || !isfinite(q)) {
+        rgb[0] = rgb[1] = rgb[2] = 200;
+        return;
+    }
+    for (k = 0; k < 3; k++)
+        rgb[k] = pal[(long long)floor(q) % 8][k];
+}
+
 static void fit(view *vw, const cvm__mesh_out *mo, double *w_out, double *h_out)
 {
     double minx = 0, miny = 0, maxx = 1, maxy = 1, span;
@@ -78,6 +94,24 @@ static void fit(view *vw, const cvm__mesh_out *mo, double *w_out, double *h_out)
     vw->scale = (WIDTH - 2 * MARGIN) / span;
     *w_out = (maxx - minx) * vw->scale + 2 * MARGIN;
     *h_out = (maxy - miny) * vw->scale + 2 * MARGIN;
+}
+
+static void legend_layers(cvm__writer *w, double top)
+{
+    char bx[32], by[32];
+    int i, rgb[3];
+    for (i = 0; i < 8; i++) {
+        layer_colour(i, rgb);
+        cvm__writer_printf(w, "<rect x=\"%s\" y=\"%s\" width=\"20\" height=\"10\" fill=\"#%02x%02x%02x\"/>\n",
+                           px(bx, sizeof bx, MARGIN + 20.0 * i), px(by, sizeof by, top + 4), rgb[0],
+                           rgb[1], rgb[2]);
+    }
+    cvm__writer_printf(w, "<text x=\"%s\" y=\"%s\" font-family=\"sans-serif\" font-size=\"10\">"
+                          "0</text>\n", px(bx, sizeof bx, MARGIN), px(by, sizeof by, top + 26));
+    cvm__writer_printf(w, "<text x=\"%s\" y=\"%s\" font-family=\"sans-serif\" font-size=\"11\">"
+                          "advancing-front layer of each triangle (colours repeat every 8; grey: "
+                          "no front)</text>\n",
+                       px(bx, sizeof bx, MARGIN + 170), px(by, sizeof by, top + 13));
 }
 
 static void legend(cvm__writer *w, double top)
@@ -115,7 +149,7 @@ cvm_status cvm__write_svg(cvm__writer *w, cvm__ctx *ctx, const cvm__mesh_out *mo
     cvm__writer_printf(w, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
                           "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 %s %s\" "
                           "width=\"%s\" height=\"%s\">\n",
-                       px(bw, sizeof bw, width), px(bh, sizeof bh, height + (mo->tquality ? LEGEND : 0)),
+                       px(bw, sizeof bw, width), px(bh, sizeof bh, height + (mo->tquality || mo->tlayer ? LEGEND : 0)),
                        bw, bh);
     cvm__writer_printf(w, "<title>cvmesh: %lu vertices, %lu triangles, %lu segments</title>\n",
                        (unsigned long)mo->nv, (unsigned long)mo->nt, (unsigned long)mo->nseg);
@@ -132,9 +166,12 @@ cvm_status cvm__write_svg(cvm__writer *w, cvm__ctx *ctx, const cvm__mesh_out *mo
             point(w, &vw, mo->xy + 2 * (size_t)mo->tri[3 * t + k], k < 2 ? " " : "\"");
         if (own < 0.8 * stroke) /* a small triangle in a graded mesh: thinner edges */
             cvm__writer_printf(w, " stroke-width=\"%s\"", px(bs, sizeof bs, own < 0.01 ? 0.01 : own));
-        if (mo->tquality) {
+        if (mo->tlayer || mo->tquality) {
             int rgb[3];
-            ramp(mo->tquality[t], rgb);
+            if (mo->tlayer)
+                layer_colour(mo->tlayer[t], rgb);
+            else
+                ramp(mo->tquality[t], rgb);
             cvm__writer_printf(w, " fill=\"#%02x%02x%02x\"", rgb[0], rgb[1], rgb[2]);
         }
         cvm__writer_puts(w, "/>\n");
@@ -151,7 +188,9 @@ cvm_status cvm__write_svg(cvm__writer *w, cvm__ctx *ctx, const cvm__mesh_out *mo
         }
         cvm__writer_puts(w, "\"/>\n");
     }
-    if (mo->tquality)
+    if (mo->tlayer)
+        legend_layers(w, height);
+    else if (mo->tquality)
         legend(w, height);
     cvm__writer_puts(w, "</svg>\n");
     return CVM_OK;

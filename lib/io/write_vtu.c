@@ -4,8 +4,8 @@
  * triangles (VTK type 5) and then the segments as lines (VTK type 3); point
  * data "marker", "weight" (when weights are set) and "attribute" (the point
  * attributes, when there are any); cell data "marker" (the segment marker of
- * a line, 0 on a triangle), "attribute" (regional attribute) and
- * "min_angle_deg" when given (0 on a line).
+ * a line, 0 on a triangle), "attribute" (regional attribute), "min_angle_deg"
+ * and "layer_index" (AFLR) when given (0 on a line).
  * Also the power cells of a mesh as VTK polygons (type 7).
  */
 #include "formats.h"
@@ -76,7 +76,7 @@ static void doubles_then_zeros(cvm__writer *w, const double *x, size_t n, size_t
 static void cell_data(cvm__writer *w, const cvm__mesh_out *mo)
 {
     size_t k;
-    if (!mo->tattr && !mo->tquality && !mo->nseg)
+    if (!mo->tattr && !mo->tquality && !mo->tlayer && !mo->nseg)
         return;
     cvm__writer_puts(w, "      <CellData>\n");
     if (mo->nseg) {
@@ -94,6 +94,11 @@ static void cell_data(cvm__writer *w, const cvm__mesh_out *mo)
     if (mo->tquality) {
         begin_array(w, "Float64", "min_angle_deg", 1);
         doubles_then_zeros(w, mo->tquality, mo->nt, mo->nseg);
+        end_array(w);
+    }
+    if (mo->tlayer) {
+        begin_array(w, "Float64", "layer_index", 1);
+        doubles_then_zeros(w, mo->tlayer, mo->nt, mo->nseg);
         end_array(w);
     }
     cvm__writer_puts(w, "      </CellData>\n");

@@ -2,7 +2,8 @@
  * refine_internal.h - mesh refinement on the 2D kernel: the sizing handle,
  * the queue of bad triangles, segment encroachment and splitting, Delaunay
  * refinement (Ruppert 1995; Shewchuk 1997/2002, as in Triangle) and
- * frontal-Delaunay refinement (Engwirda 2014, off-centre placement).
+ * frontal-Delaunay refinement (Engwirda 2014, off-centre placement) and
+ * advancing-front local reconnection (Marcum 1995) inside the Delaunay kernel.
  *
  * The module works on a cvm__tri2 and plain parameters; it never sees the
  * cvm_mesh handle. Topological decisions (where a point lies, which triangles
@@ -172,7 +173,7 @@ int cvm__bq_valid(const cvm__tri2 *T, const cvm__bad_entry *e);
 
 /* What a run is asked to do. */
 typedef struct cvm__refine_params {
-    int algo;                  /* CVM_ALGO_DELAUNAY or CVM_ALGO_FRONTAL */
+    int algo;                  /* CVM_ALGO_DELAUNAY, CVM_ALGO_FRONTAL or CVM_ALGO_AFLR */
     double min_angle_deg;      /* requested minimum angle; 0 = none */
     double max_area;           /* 0 = none */
     uint64_t max_steiner;      /* 0 = none */
@@ -187,6 +188,8 @@ typedef struct cvm__refine_params {
     const double *region_area; /* NULL, or per region index the maximum area (<= 0: none);
                                   then T->ta holds each triangle's region index (-1: none) */
     size_t nregion;
+    const unsigned char *seg_front; /* AFLR: nseg flags, 1 when the segment starts a front;
+                                       NULL: every segment (hull segments too) */
 } cvm__refine_params;
 
 /* What a run did (see CVM_MEASURE_REFINE_* in cvmesh.h). */
@@ -199,6 +202,9 @@ typedef struct cvm__refine_report {
     double *unmet;             /* 3 per triangle left unmet: centroid x, y, reason bits
                                   (CVM_UNMET_*), allocated on the run's context */
     size_t n_unmet;
+    double *cell_layer;        /* AFLR: layer index per triangle slot (T->nt of the result,
+                                  -1 where no front reached), allocated through the
+                                  triangulation's ctx and owned by the caller; else NULL */
 } cvm__refine_report;
 
 /* Largest area allowed for triangle t: CVM_OPT_MAX_AREA and its region's
@@ -246,6 +252,7 @@ typedef struct cvm__refiner {
     int32_t *enc;              /* scratch: encroached subsegments (a, b, seg) */
     size_t nenc, cap_enc;
     size_t steiner;
+    void *aflr;                /* AFLR state (aflr.c) while an AFLR run lasts, else NULL */
 } cvm__refiner;
 
 /* Refine T in place (see cvm_mesh_refine). Returns CVM_OK, CVM_E_NOMEM,
@@ -313,6 +320,42 @@ cvm_status cvm__rf_delaunay(cvm__refiner *R);
 
 /* Run the frontal pass (then the caller runs cvm__rf_delaunay to clean up). */
 cvm_status cvm__rf_frontal(cvm__refiner *R);
+
+/* ---- advancing-front local reconnection (aflr.c, proximity_grid.c) ---- */
+
+/* Run the AFLR pass (the caller then runs cvm__rf_delaunay to clean up). Its
+ * state (edge layers) stays in R->aflr for cvm__rf_aflr_cell_layers() until
+ * cvm__rf_aflr_free(). CVM_OK, CVM_E_NOMEM, a sizing error or a stop status. */
+cvm_status cvm__rf_aflr(cvm__refiner *R);
+/* Layer index of every triangle slot of the final mesh into a fresh array
+ * *out (T->nt entries, through ctx): max + 0.1 x min of its edges' layers,
+ * edges created after the AFLR pass (clean-up, swaps) taking one more than
+ * the lowest layer at their ends, passed on along such edges; -1 where no
+ * front reached. CVM_OK or
+ * CVM_E_NOMEM. */
+cvm_status cvm__rf_aflr_cell_layers(cvm__refiner *R, double **out);
+/* Free R->aflr (NULL is fine). */
+void cvm__rf_aflr_free(cvm__refiner *R);
+
+/* A uniform grid of vertices for proximity queries (proximity_grid.c). */
+typedef struct cvm__pgrid {
+    cvm__ctx *ctx;
+    double x0, y0, inv;        /* origin and 1 / cell size */
+    int32_t nx, ny;
+    int32_t *head;             /* nx*ny: first vertex of each cell, -1 */
+    int32_t *next;             /* per vertex: next vertex of its cell, -1 */
+    size_t cap_next;
+} cvm__pgrid;
+
+/* Grid over the box [x0, x1] x [y0, y1] with cells of about size cs (coarser
+ * when that would need more than max_cells cells). CVM_OK or CVM_E_NOMEM. */
+cvm_status cvm__pgrid_init(cvm__pgrid *g, cvm__ctx *ctx, double x0, double y0, double x1,
+                           double y1, double cs, size_t max_cells);
+void cvm__pgrid_destroy(cvm__pgrid *g);
+/* Add vertex v at p (points outside the box go to the nearest cell). CVM_OK or CVM_E_NOMEM. */
+cvm_status cvm__pgrid_add(cvm__pgrid *g, int32_t v, const double *p);
+/* 1 when some vertex of the grid lies strictly closer than r to x (xy: all coordinates). */
+int cvm__pgrid_any_within(const cvm__pgrid *g, const double *xy, const double *x, double r);
 
 /* ---- post-processing (swap.c, smooth.c) ---- */
 

@@ -168,6 +168,7 @@ static void rf_teardown(cvm__refiner *R)
     cvm__free(R->ctx, R->star);
     cvm__free(R->ctx, R->cav);
     cvm__free(R->ctx, R->enc);
+    cvm__rf_aflr_free(R);
 }
 
 /* Smallest angle of triangle t in degrees, from its coordinates. */
@@ -288,6 +289,8 @@ cvm_status cvm__refine(cvm__tri2 *T, const cvm__refine_params *p, cvm__refine_re
         s = cvm__rf_split_queued(&R);
     if (!s && p->algo == CVM_ALGO_FRONTAL)
         s = cvm__rf_frontal(&R);
+    if (!s && p->algo == CVM_ALGO_AFLR)
+        s = cvm__rf_aflr(&R);
     if (!s)
         s = cvm__rf_delaunay(&R);
     if (!s)
@@ -298,6 +301,11 @@ cvm_status cvm__refine(cvm__tri2 *T, const cvm__refine_params *p, cvm__refine_re
             s = s2;
     }
     rep->steiner = R.steiner;
+    if (!cvm_status_is_error(s) && p->algo == CVM_ALGO_AFLR) {
+        cvm_status s2 = cvm__rf_aflr_cell_layers(&R, &rep->cell_layer);
+        if (s2)
+            s = s2;
+    }
     rf_teardown(&R);
     return s;
 }

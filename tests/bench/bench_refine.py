@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Refinement benchmark: cvmesh (Delaunay refinement and frontal-Delaunay) side by
+"""Refinement benchmark: cvmesh (Delaunay refinement, frontal-Delaunay and AFLR) side by
 side with Triangle (PyPI `triangle`, switches pq30a<A>) on the shared geometries
 at a uniform size h, in the same run, on one core.
 
@@ -230,7 +230,7 @@ def main():
                 rows.append(("triangle",) + run_triangle(poly, h))
             except ImportError:
                 print("# Triangle (pip triangle) not installed: skipped")
-            for algo, label in ((1, "cvm-del"), (2, "cvm-front")):
+            for algo, label in ((1, "cvm-del"), (2, "cvm-front"), (3, "cvm-aflr")):
                 rows.append((label,) + run_cvmesh(poly, h, algo, tmp))
             if gmsh_ok:
                 for algo, label in ((5, "gmsh-del"), (6, "gmsh-front")):

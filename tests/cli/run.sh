@@ -300,5 +300,28 @@ expect_grep "optimise .vtu: compliant" "$TMP/out" "non-compliant (not merged)   
 expect_grep "optimise .vtu: dual cells written" "$OUT/dual.vtu" "<VTKFile"
 expect_exit 0 "optimised .vtu reads back" "$CLI" refine "$OUT/opt.vtu" --quality -o "$OUT/again.vtu"
 
+# ---- refine --algo aflr: layers in the outputs, --fronts ---------------------
+OUT=$TMP/aflr
+mkdir "$OUT"
+expect_exit 0 "refine --help" "$CLI" refine --help
+expect_grep "refine --help" "$TMP/out" "--fronts M1,M2,..."
+expect_exit 0 "refine --algo aflr" "$CLI" refine "$SHARED/data/naca0012.poly" --algo aflr --size 0.5 \
+    --fronts 1,2 -o "$OUT/naca.vtu" --svg "$OUT/naca.svg" --quality
+expect_grep "aflr report" "$TMP/out" "triangles below the angle: 0"
+expect_grep "aflr .vtu layers" "$OUT/naca.vtu" 'Name="layer_index"'
+expect_grep "aflr .svg layers" "$OUT/naca.svg" "advancing-front layer"
+expect_exit 0 "refine --algo aflr to .node" "$CLI" refine "$SHARED/data/channel.poly" --algo aflr \
+    --size 0.1 -o "$OUT/channel.node"
+if [ "$HAVE_NUMPY" -eq 1 ]; then
+    if python3 "$SHARED/tools/verify_mesh.py" "$SHARED/data/channel.poly" "$OUT/channel" > "$OUT/verify.json" 2>&1; then
+        pass
+    else
+        fail "aflr channel: verify_mesh.py: $(tail -c 400 "$OUT/verify.json")"
+    fi
+fi
+expect_exit 2 "--fronts not a list" "$CLI" refine "$SHARED/data/square.poly" --algo aflr --fronts 1,x
+expect_grep "--fronts not a list" "$TMP/err" "--fronts 1,x"
+expect_exit 2 "--fronts without a value" "$CLI" refine "$SHARED/data/square.poly" --algo aflr --fronts
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -116,8 +116,6 @@ def test_sizing_callback_errors(square_pslg):
 
 def test_refine_argument_errors(square_pslg):
     mesh = Mesh.from_pslg(*square_pslg)
-    with pytest.raises(cvmesh.UnsupportedError, match="AFLR"):
-        mesh.refine(algorithm="aflr")
     with pytest.raises(cvmesh.ArgumentError, match="known: delaunay, frontal"):
         mesh.refine(algorithm="bogus")
     with pytest.raises(ValueError, match="size or sizing"):
@@ -178,3 +176,14 @@ def test_automatic_and_background_sizing(square_pslg):
     # the square's feature size is 1: edges about 1/8 with the automatic size
     assert 40 < meshes[1].triangles.shape[0] < 600
     assert meshes[0].triangles.shape[0] > meshes[1].triangles.shape[0] / 4
+
+
+def test_aflr_layers(square_pslg):
+    mesh = Mesh.from_pslg(*square_pslg)
+    mesh.refine(algorithm="aflr", size=0.1)
+    layers = mesh.layer_index
+    assert layers.shape == (mesh.count("triangle"),)
+    assert layers.dtype == np.float64
+    assert layers.min() >= 0 and layers.min() < 1.05
+    mesh.refine(algorithm="delaunay", size=0.05)
+    assert (mesh.layer_index == -1).all()

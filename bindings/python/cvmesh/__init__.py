@@ -370,8 +370,10 @@ class Mesh:
         """Refine the triangulation with Steiner points until every triangle
         meets the minimum angle, the maximum area and the sizing.
 
-        algorithm: "frontal" (off-centres grown from the boundary) or
-        "delaunay" (circumcentres), or an Algorithm. size: target edge length,
+        algorithm: "frontal" (off-centres grown from the boundary),
+        "aflr" (advancing-front layers grown from the segments; see
+        layer_index) or "delaunay"
+        (circumcentres), or an Algorithm. size: target edge length,
         a number or a callable size(x, y) (shortcut for a Sizing); sizing: a
         Sizing. min_angle: degrees; max_area; max_steiner: limit on added
         points. Triangulates first when nothing is triangulated yet. Returns
@@ -507,6 +509,15 @@ class Mesh:
         with self._handle() as m:
             n = capi.cvm_mesh_count(m, Entity.TRIANGLE)
             return capi.cvm_mesh_copy_triangle_attributes(n, m)
+
+    @property
+    def layer_index(self):
+        """(m,) float64 advancing-front layer index of each triangle after an
+        "aflr" refinement (max + 0.1 x min of its edges' layers; -1 where no
+        front reached, and everywhere after another algorithm)."""
+        with self._handle() as m:
+            n = capi.cvm_mesh_count(m, Entity.TRIANGLE)
+            return capi.cvm_mesh_copy_layer_index(n, m)
 
     @property
     def point_attributes(self):

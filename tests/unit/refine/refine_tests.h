@@ -9,6 +9,7 @@ TCase *refine_sizing_tcase(void);
 TCase *refine_bad_queue_tcase(void);
 TCase *refine_delaunay_tcase(void);
 TCase *refine_frontal_tcase(void);
+TCase *refine_aflr_tcase(void);
 TCase *refine_swap_smooth_tcase(void);
 TCase *refine_report_tcase(void);
 TCase *refine_random_domains_tcase(void);

@@ -9,6 +9,7 @@ Suite *refine_suite(void)
     suite_add_tcase(s, refine_bad_queue_tcase());
     suite_add_tcase(s, refine_delaunay_tcase());
     suite_add_tcase(s, refine_frontal_tcase());
+    suite_add_tcase(s, refine_aflr_tcase());
     suite_add_tcase(s, refine_swap_smooth_tcase());
     suite_add_tcase(s, refine_report_tcase());
     suite_add_tcase(s, refine_random_domains_tcase());

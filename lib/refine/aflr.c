@@ -1,0 +1,559 @@
+/*
+ * aflr.c - advancing-front local reconnection (Marcum 1995; Marcum and
+ * Weatherill 1995) inside the Delaunay kernel: fronts grow from marked
+ * segments, one point per front edge, every edge carrying a layer index.
+ *
+ * Layers: a constrained edge is 0 when its segment starts a front (else
+ * infinite); an edge v-u made by inserting v for a front edge of layer L is
+ * one more than the lowest of L and the layers of the two cavity boundary
+ * edges at u beside it (L is infinite for a point from a segment split);
+ * every other edge is infinite. A triangle is good when each edge is shorter than
+ * AF_SIZE_BAD x the mean size at its ends and its smallest angle meets the
+ * bound. A front edge is a front-starting segment or an edge between a good
+ * and a bad triangle; a bad triangle with a front edge is queued, and its best
+ * front edge (lowest layer, then shortest relative to the size) is its base.
+ * The point lies on the base edge's perpendicular bisector, inside the bad
+ * triangle's circumcircle: the nearest to the edge of the equilateral point
+ * at the local size, the circumcentre and the shape- and size-optimal
+ * off-centres; a candidate closer than AF_PROX x the edge to an existing
+ * vertex (uniform grid, proximity_grid.c) is skipped. Insertion is
+ * Bowyer-Watson with the refiner's encroachment rules (cvm__rf_insert_free),
+ * so the "local reconnection" is the Delaunay cavity.
+ *
+ * Changes to the published rules, each measured with `cvmesh refine --algo
+ * aflr --quality` at the bench sizes (% of angles in [55, 65] degrees on
+ * square 0.02 / channel 0.02 / annulus 0.1 / cylinder 0.2 / NACA 0.2):
+ * - a new edge takes its layer from the base edge and the cavity boundary
+ *   edges beside it, not the minimum over the whole cavity boundary: the
+ *   first cavities reach across the domain to other boundaries, so the
+ *   minimum labelled deep points layer 1 (islands of low layers);
+ * - the queue orders by the Delaunay-refinement key (largest circumradius /
+ *   size first, then worst shape), layer and relative edge length only
+ *   breaking ties: strict layer order gave 94.9 / 98.4 / 62.5 / 90.3 / 66.9
+ *   (curved fronts pile up their errors layer after layer, as the ~65-70% of
+ *   the thesis), this gives 95.6 / 98.4 / 94.0 / 95.1 / 94.7 (0.0-0.4% obtuse);
+ * - the equilateral point is taken at the local size clamped to
+ *   [AF_SHRINK, AF_GROW] x the edge so one layer never jumps in size, and a
+ *   rejected candidate falls back to the next one instead of dropping the edge.
+ * The Delaunay-refinement clean-up (cvm__rf_delaunay), then the frontal
+ * post-processing (swap, smooth, Delaunay restore), follow in refiner.c.
+ *
+ * Determinism: the edge-layer table is only looked up, never iterated; the
+ * queue orders by (key, vertex ids).
+ */
+#include <math.h>
+#include <string.h>
+
+#include "refine_internal.h"
+#include "geom/geom_internal.h"
+
+/* Good needs every edge shorter than this times the mean size at its ends. */
+#define AF_SIZE_BAD 1.5
+/* A candidate point closer than this times the base edge to a vertex is rejected. */
+#define AF_PROX 0.7
+/* The equilateral point's edge length: the local size within these bounds x the base edge. */
+#define AF_SHRINK 0.8
+#define AF_GROW 1.25
+/* Off-centres are used above this requested angle (degrees). */
+#define AF_SHAPE_MIN_DEG 1.0
+/* Weight of layer and edge length against shape in the queue key. */
+#define AF_TIE 1e-6
+/* A skinny (not too big) triangle is treated only from a front edge at least
+ * this times the local size long; shorter ones are left to the clean-up. */
+#define AF_MIN_BASE 0.5
+/* Triangle qualities. */
+enum { AF_OK = 0, AF_BIG = 1, AF_SKINNY = 2 };
+/* Layer "infinite". */
+#define AF_INF INT32_MAX
+/* Sweeps that pass layers on to edges made after the fronts stopped. */
+#define AF_SWEEPS 64
+#define AF_PI 3.14159265358979323846
+
+typedef struct af_state {
+    int32_t *sl;               /* per triangle slot, 3: layer of each edge */
+    int32_t *sv;               /* per slot, 3: its vertices when sl was written (sl is
+                                  valid while they match the slot's) */
+    size_t cap_sl, cap_sv;     /* in int32_t */
+    int32_t *lo;               /* scratch per star triangle: layer of its outer edge */
+    size_t cap_lo;
+    unsigned char *front;      /* per segment id: starts a front */
+    size_t nfront;
+    cvm__pgrid grid;
+    size_t ngrid;              /* vertices 0..ngrid-1 are in the grid */
+    double lmin0;              /* shortest domain edge when the pass started */
+} af_state;
+
+static const double *af_pt(const cvm__refiner *R, int32_t v)
+{
+    return R->T->xy + 2 * (size_t)v;
+}
+
+/* ---- edge layers, per triangle slot ---- */
+
+/* 1 when the layers stored for slot t belong to the triangle now in it. */
+static int af_slot_valid(const af_state *A, const cvm__tri2 *T, int32_t t)
+{
+    const int32_t *tv = T->tv + 3 * (size_t)t, *sv = A->sv + 3 * (size_t)t;
+    return 3 * (size_t)t + 2 < A->cap_sv && sv[0] == tv[0] && sv[1] == tv[1] && sv[2] == tv[2];
+}
+
+/* Layer of edge j of triangle t: from its segment when constrained, else
+ * what slot t (or the triangle across) stored, else AF_INF. */
+static int32_t af_edge_layer(const cvm__refiner *R, int32_t t, int j)
+{
+    const af_state *A = R->aflr;
+    const cvm__tri2 *T = R->T;
+    int32_t seg = T->te[3 * (size_t)t + (size_t)j], h;
+    if (seg >= 0)
+        return (size_t)seg < A->nfront && A->front[seg] ? 0 : AF_INF;
+    if (af_slot_valid(A, T, t))
+        return A->sl[3 * (size_t)t + (size_t)j];
+    h = T->tn[3 * (size_t)t + (size_t)j];
+    if (af_slot_valid(A, T, h / 3))
+        return A->sl[(size_t)h];
+    return AF_INF;
+}
+
+/* Record the three edge layers of slot t. CVM_OK or CVM_E_NOMEM. */
+static cvm_status af_store(af_state *A, cvm__refiner *R, int32_t t, const int32_t *l)
+{
+    size_t need = 3 * (size_t)t + 3;
+    int k;
+    if ((need > A->cap_sl && cvm__grow(R->ctx, (void **)&A->sl, &A->cap_sl, need, sizeof *A->sl)) ||
+        (need > A->cap_sv && cvm__grow(R->ctx, (void **)&A->sv, &A->cap_sv, need, sizeof *A->sv)))
+        return CVM_E_NOMEM;
+    for (k = 0; k < 3; k++) {
+        A->sl[3 * (size_t)t + (size_t)k] = l[k];
+        A->sv[3 * (size_t)t + (size_t)k] = R->T->tv[3 * (size_t)t + (size_t)k];
+    }
+    return CVM_OK;
+}
+
+/* ---- classification ---- */
+
+/* Quality of domain triangle t: AF_OK (edges within the size, shape above
+ * the bound, area within CVM_OPT_MAX_AREA; a triangle exempted at a small
+ * input angle counts as good), AF_BIG (an edge or the area too large) or
+ * AF_SKINNY (only the shape is bad). */
+static int af_quality(cvm__refiner *R, int32_t t)
+{
+    const int32_t *tv = R->T->tv + 3 * (size_t)t;
+    const double *p[3];
+    double l[3], cross, sin2, lmin;
+    int k;
+    for (k = 0; k < 3; k++)
+        p[k] = af_pt(R, tv[k]);
+    for (k = 0; k < 3; k++) {
+        const double *a = p[(k + 1) % 3], *b = p[(k + 2) % 3];
+        double ls = (R->vls[tv[(k + 1) % 3]] + R->vls[tv[(k + 2) % 3]]) / 2;
+        l[k] = (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]);
+        if (isfinite(ls) && !(l[k] < AF_SIZE_BAD * AF_SIZE_BAD * ls * ls))
+            return AF_BIG;
+    }
+    cross = (p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[1][1] - p[0][1]) * (p[2][0] - p[0][0]);
+    if (R->p->max_area > 0 && cross / 2 > R->p->max_area)
+        return AF_BIG;
+    lmin = l[0] < l[1] ? (l[0] < l[2] ? l[0] : l[2]) : (l[1] < l[2] ? l[1] : l[2]);
+    sin2 = cross > 0 ? lmin * cross * cross / (l[0] * l[1] * l[2]) : 0.0;
+    if (sin2 >= R->sin2_min && cross > 0)
+        return AF_OK;
+    return cvm__rf_classify(R, t, &sin2) == 3 ? AF_OK : AF_SKINNY;
+}
+
+static int af_good(cvm__refiner *R, int32_t t)
+{
+    return af_quality(R, t) == AF_OK;
+}
+
+/* Best front edge of bad triangle t of quality q (lowest layer, then shortest relative to
+ * the size): *j_out, *layer_out, *key_out (the queue key). When t is only
+ * skinny, edges shorter than AF_MIN_BASE x the size at them (without a size:
+ * x the shortest edge at the start of the pass) do not count: each point then
+ * keeps at least AF_PROX x AF_MIN_BASE x that length from every vertex, which
+ * bounds the pass. Returns 0 when t has no front edge. */
+static int af_front_edge(cvm__refiner *R, int32_t t, int q, int *j_out, int32_t *layer_out,
+                         double *key_out)
+{
+    const af_state *A = R->aflr;
+    const cvm__tri2 *T = R->T;
+    const int32_t *tv = T->tv + 3 * (size_t)t;
+    int j, found = 0, skinny = q == AF_SKINNY;
+    double best = 0, sin2;
+    for (j = 0; j < 3; j++) {
+        int32_t a = tv[(j + 1) % 3], b = tv[(j + 2) % 3], nb = T->tn[3 * (size_t)t + (size_t)j] / 3;
+        int32_t layer;
+        double le, ls, rel;
+        if (T->te[3 * (size_t)t + (size_t)j] >= 0) {
+            layer = af_edge_layer(R, t, j);
+            if (layer == AF_INF)
+                continue;
+        } else {
+            if (!cvm__tri2_in_domain(T, nb) || !af_good(R, nb))
+                continue;
+            layer = af_edge_layer(R, t, j);
+        }
+        le = hypot(af_pt(R, a)[0] - af_pt(R, b)[0], af_pt(R, a)[1] - af_pt(R, b)[1]);
+        ls = (R->vls[a] + R->vls[b]) / 2;
+        rel = isfinite(ls) ? le / ls : le;
+        if (skinny && !(le >= AF_MIN_BASE * (isfinite(ls) ? ls : A->lmin0)))
+            continue;
+        if (!found || layer < *layer_out || (layer == *layer_out && rel < best)) {
+            found = 1;
+            best = rel;
+            *layer_out = layer;
+            *j_out = j;
+        }
+    }
+    if (!found)
+        return 0;
+    cvm__rf_classify(R, t, &sin2);
+    /* the Delaunay-refinement key: -(circumradius / size)^2 when too big (the
+     * largest first), else sin^2 of the smallest angle (the worst first); then
+     * lower layer, then shorter edge (tiny terms) */
+    *key_out = (isfinite(sin2) ? sin2 : 0) +
+               AF_TIE * ((*layer_out == AF_INF ? 1.0 : 1.0 - 1.0 / (2.0 + *layer_out)) +
+                         best / (1.0 + best));
+    return 1;
+}
+
+/* Queue domain triangle t when it is bad and has a front edge; its quality
+ * into *q_out (AF_BIG outside the domain). */
+static cvm_status af_queue_triangle(cvm__refiner *R, int32_t t, int *q_out)
+{
+    int j, q;
+    int32_t layer;
+    double key;
+    *q_out = AF_BIG;
+    if (!cvm__tri2_in_domain(R->T, t))
+        return CVM_OK;
+    *q_out = q = af_quality(R, t);
+    if (q == AF_OK || !af_front_edge(R, t, q, &j, &layer, &key))
+        return CVM_OK;
+    if (cvm__bq_push(&R->q, R->T, t, 0, key))
+        return cvm__nomem(R->ctx);
+    return CVM_OK;
+}
+
+/* After vertex v was inserted (by this pass for a front edge of layer
+ * base_layer, or by a segment split: AF_INF): give each spoke its layer, one
+ * more than the lowest of base_layer and the cavity boundary edges beside
+ * the spoke; add it to the grid, queue its star and the triangles
+ * across the star's outer edges. */
+static cvm_status af_new_vertex(cvm__refiner *R, int32_t v, int32_t base_layer)
+{
+    af_state *A = R->aflr;
+    const cvm__tri2 *T = R->T;
+    size_t n = cvm__rf_star(R, v), k;
+    cvm_status s;
+    if (n == 0 || (n > A->cap_lo && cvm__grow(R->ctx, (void **)&A->lo, &A->cap_lo, n, sizeof *A->lo)))
+        return cvm__nomem(R->ctx);
+    for (; A->ngrid <= (size_t)v; A->ngrid++)
+        if (cvm__pgrid_add(&A->grid, (int32_t)A->ngrid, af_pt(R, (int32_t)A->ngrid)))
+            return cvm__nomem(R->ctx);
+    /* the outer (cavity boundary) edge of each star triangle keeps its layer,
+     * read from the unchanged triangle across it */
+    for (k = 0; k < n; k++) {
+        int32_t t = R->star[k];
+        const int32_t *tv = T->tv + 3 * (size_t)t;
+        int i = tv[0] == v ? 0 : tv[1] == v ? 1 : 2;
+        int32_t h = T->tn[3 * (size_t)t + (size_t)i];
+        A->lo[k] = T->te[3 * (size_t)t + (size_t)i] >= 0 ? af_edge_layer(R, t, i)
+                   : af_slot_valid(A, T, h / 3) ? A->sl[(size_t)h] : AF_INF;
+    }
+    /* each spoke: one more than the lowest of the base edge and the outer
+     * edges of the two star triangles beside it (star[k] and star[k + 1]
+     * share the spoke opposite tv[i + 1] of star[k]) */
+    for (k = 0; k < n; k++) {
+        int32_t t = R->star[k], l[3], m;
+        const int32_t *tv = T->tv + 3 * (size_t)t;
+        int i = tv[0] == v ? 0 : tv[1] == v ? 1 : 2;
+        size_t next = (k + 1) % n, prev = (k + n - 1) % n;
+        l[i] = A->lo[k];
+        m = A->lo[k] < A->lo[next] ? A->lo[k] : A->lo[next];
+        m = !cvm__tri2_in_domain(T, t) || !cvm__tri2_in_domain(T, R->star[next]) ? AF_INF : m;
+        m = base_layer < m ? base_layer : m;
+        l[(i + 1) % 3] = m == AF_INF ? AF_INF : m + 1;
+        m = A->lo[k] < A->lo[prev] ? A->lo[k] : A->lo[prev];
+        m = !cvm__tri2_in_domain(T, t) || !cvm__tri2_in_domain(T, R->star[prev]) ? AF_INF : m;
+        m = base_layer < m ? base_layer : m;
+        l[(i + 2) % 3] = m == AF_INF ? AF_INF : m + 1;
+        if (af_store(A, R, t, l))
+            return cvm__nomem(R->ctx);
+    }
+    for (k = 0; k < n; k++) {
+        int32_t t = R->star[k];
+        const int32_t *tv = T->tv + 3 * (size_t)t;
+        int i = tv[0] == v ? 0 : tv[1] == v ? 1 : 2;
+        /* the triangle across the outer edge gains a front edge only when t is good */
+        int q, qn;
+        if ((s = af_queue_triangle(R, t, &q)) ||
+            (q == AF_OK && (s = af_queue_triangle(R, T->tn[3 * (size_t)t + (size_t)i] / 3, &qn))))
+            return s;
+    }
+    return CVM_OK;
+}
+
+/* R->queue_star during the pass: a vertex inserted by a segment split. */
+static cvm_status af_queue_star(cvm__refiner *R, int32_t v)
+{
+    return af_new_vertex(R, v, AF_INF);
+}
+
+/* ---- point placement ---- */
+
+/* Candidate distances from the midpoint of edge j of t along its inward
+ * normal, ascending, into d (at most 4); returns their number. */
+static int af_candidates(cvm__refiner *R, int32_t t, int j, const double *m, const double *nrm,
+                         double le, double *d)
+{
+    const int32_t *tv = R->T->tv + 3 * (size_t)t;
+    double c[2], dc, rad, h = (R->vls[tv[(j + 1) % 3]] + R->vls[tv[(j + 2) % 3]]) / 2;
+    double cand[4], lim, L;
+    int n = 0, a, b;
+    cvm__circumcenter2d(af_pt(R, tv[0]), af_pt(R, tv[1]), af_pt(R, tv[2]), c);
+    dc = (c[0] - m[0]) * nrm[0] + (c[1] - m[1]) * nrm[1];
+    rad = hypot(c[0] - af_pt(R, tv[(j + 1) % 3])[0], c[1] - af_pt(R, tv[(j + 1) % 3])[1]);
+    lim = dc + rad; /* beyond this the point leaves t's circumcircle */
+    if (!isfinite(lim) || !(lim > 0))
+        return 0;
+    /* equilateral point at the local size, clamped against jumps */
+    L = isfinite(h) ? h : le;
+    L = L < AF_SHRINK * le ? AF_SHRINK * le : L > AF_GROW * le ? AF_GROW * le : L;
+    cand[n++] = sqrt(L * L - le * le / 4);
+    if (dc > 0)
+        cand[n++] = dc;
+    if (R->p->min_angle_deg >= AF_SHAPE_MIN_DEG)
+        cand[n++] = le / (2 * tan(R->p->min_angle_deg * AF_PI / 360.0));
+    if (isfinite(h) && h > le / 2)
+        cand[n++] = sqrt(h * h - le * le / 4);
+    /* sort (n <= 4) and keep those inside the circumcircle */
+    for (a = 1; a < n; a++)
+        for (b = a; b > 0 && cand[b] < cand[b - 1]; b--) {
+            double x = cand[b];
+            cand[b] = cand[b - 1];
+            cand[b - 1] = x;
+        }
+    for (a = b = 0; a < n; a++)
+        if (cand[a] > 0 && cand[a] < lim)
+            d[b++] = cand[a];
+    return b;
+}
+
+/* The point for front edge j of bad triangle t into x; 0 when every
+ * candidate is too close to an existing vertex. */
+static int af_point(cvm__refiner *R, int32_t t, int j, double *x)
+{
+    af_state *A = R->aflr;
+    const int32_t *tv = R->T->tv + 3 * (size_t)t;
+    const double *p = af_pt(R, tv[(j + 1) % 3]), *q = af_pt(R, tv[(j + 2) % 3]);
+    double le = hypot(q[0] - p[0], q[1] - p[1]), m[2], nrm[2], d[4], r;
+    int n, k;
+    if (!(le > 0))
+        return 0;
+    m[0] = (p[0] + q[0]) / 2;
+    m[1] = (p[1] + q[1]) / 2;
+    nrm[0] = -(q[1] - p[1]) / le; /* t lies left of p -> q */
+    nrm[1] = (q[0] - p[0]) / le;
+    n = af_candidates(R, t, j, m, nrm, le, d);
+    r = AF_PROX * le;
+    for (k = 0; k < n; k++) {
+        x[0] = m[0] + d[k] * nrm[0];
+        x[1] = m[1] + d[k] * nrm[1];
+        if (!cvm__pgrid_any_within(&A->grid, R->T->xy, x, r))
+            return 1;
+    }
+    return 0;
+}
+
+/* ---- set-up and the pass ---- */
+
+static cvm_status af_setup(cvm__refiner *R)
+{
+    const cvm__tri2 *T = R->T;
+    af_state *A = cvm__calloc(R->ctx, 1, sizeof *A);
+    double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY, cs = INFINITY;
+    size_t k;
+    if (!A)
+        return cvm__nomem(R->ctx);
+    R->aflr = A;
+    A->nfront = R->nseg;
+    A->front = cvm__malloc(R->ctx, R->nseg + 1);
+    if (!A->front)
+        return cvm__nomem(R->ctx);
+    for (k = 0; k < R->nseg; k++)
+        A->front[k] = !R->p->seg_front ? 1 : k < R->p->nseg ? R->p->seg_front[k] != 0 : 0;
+    for (k = 0; k < T->nt; k++) { /* every unconstrained edge starts at layer infinite */
+        static const int32_t inf3[3] = {AF_INF, AF_INF, AF_INF};
+        if (af_store(A, R, (int32_t)k, inf3))
+            return cvm__nomem(R->ctx);
+    }
+    for (k = 0; k < T->nv; k++) {
+        const double *p = af_pt(R, (int32_t)k);
+        if (T->vtri[k] < 0)
+            continue;
+        x0 = p[0] < x0 ? p[0] : x0;
+        x1 = p[0] > x1 ? p[0] : x1;
+        y0 = p[1] < y0 ? p[1] : y0;
+        y1 = p[1] > y1 ? p[1] : y1;
+        if (R->vls[k] < cs)
+            cs = R->vls[k];
+    }
+    if (!isfinite(x0))
+        x0 = y0 = 0, x1 = y1 = 1;
+    A->lmin0 = INFINITY;
+    for (k = 0; k < T->nt; k++) {
+        int j;
+        if (!cvm__tri2_in_domain(T, (int32_t)k))
+            continue;
+        for (j = 0; j < 3; j++) {
+            const double *a = af_pt(R, T->tv[3 * k + (size_t)(j + 1) % 3]);
+            const double *b = af_pt(R, T->tv[3 * k + (size_t)(j + 2) % 3]);
+            double l = hypot(a[0] - b[0], a[1] - b[1]);
+            A->lmin0 = l < A->lmin0 ? l : A->lmin0;
+        }
+    }
+    if (cvm__pgrid_init(&A->grid, R->ctx, x0, y0, x1, y1, cs, 4 * T->nv + (1u << 20)))
+        return cvm__nomem(R->ctx);
+    for (; A->ngrid < T->nv; A->ngrid++)
+        if (T->vtri[A->ngrid] >= 0 &&
+            cvm__pgrid_add(&A->grid, (int32_t)A->ngrid, af_pt(R, (int32_t)A->ngrid)))
+            return cvm__nomem(R->ctx);
+    return CVM_OK;
+}
+
+void cvm__rf_aflr_free(cvm__refiner *R)
+{
+    af_state *A = R->aflr;
+    if (!A)
+        return;
+    cvm__pgrid_destroy(&A->grid);
+    cvm__free(R->ctx, A->sl);
+    cvm__free(R->ctx, A->sv);
+    cvm__free(R->ctx, A->lo);
+    cvm__free(R->ctx, A->front);
+    cvm__free(R->ctx, A);
+    R->aflr = NULL;
+}
+
+cvm_status cvm__rf_aflr(cvm__refiner *R)
+{
+    cvm__bad_entry e;
+    cvm_status s;
+    size_t t;
+    int q;
+    if ((s = af_setup(R)))
+        return s;
+    R->queue_star = af_queue_star;
+    cvm__bq_clear(&R->q);
+    for (t = 0; t < R->T->nt; t++)
+        if ((s = af_queue_triangle(R, (int32_t)t, &q)))
+            return s;
+    while (cvm__bq_pop(&R->q, &e)) {
+        double key, x[2];
+        int32_t v, layer;
+        int j, r;
+        if (!cvm__bq_valid(R->T, &e) || (q = af_quality(R, e.t)) == AF_OK ||
+            !af_front_edge(R, e.t, q, &j, &layer, &key))
+            continue;
+        if (!af_point(R, e.t, j, x))
+            continue; /* every candidate too close: left to the clean-up */
+        r = cvm__rf_insert_free(R, e.t, x, &v, &s);
+        if (s)
+            return s;
+        if (r == CVM__RF_DONE)
+            s = af_new_vertex(R, v, layer);
+        else if (r == CVM__RF_SPLIT && cvm__bq_valid(R->T, &e))
+            s = cvm__bq_push(&R->q, R->T, e.t, e.cls, e.key) ? cvm__nomem(R->ctx) : CVM_OK;
+        if (!s)
+            s = cvm__rf_split_queued(R);
+        if (s)
+            return s;
+    }
+    R->queue_star = cvm__rf_queue_star;
+    return CVM_OK;
+}
+
+/* ---- output: the layer index of each cell ---- */
+
+cvm_status cvm__rf_aflr_cell_layers(cvm__refiner *R, double **out)
+{
+    const cvm__tri2 *T = R->T;
+    int32_t *vl, *el;
+    double *cl;
+    size_t t, k;
+    int changed, sweep;
+    *out = NULL;
+    if (!R->aflr)
+        return CVM_OK;
+    vl = cvm__malloc(R->ctx, (T->nv + 1) * sizeof *vl);
+    el = cvm__malloc(R->ctx, (3 * T->nt + 1) * sizeof *el);
+    cl = cvm__malloc(R->ctx, (T->nt + 1) * sizeof *cl);
+    if (!vl || !el || !cl) {
+        cvm__free(R->ctx, vl);
+        cvm__free(R->ctx, el);
+        cvm__free(R->ctx, cl);
+        return cvm__nomem(R->ctx);
+    }
+    for (t = 0; t < T->nv; t++)
+        vl[t] = AF_INF;
+    /* each edge's layer once, and the lowest known layer at each vertex */
+    for (t = 0; t < T->nt; t++) {
+        int j;
+        if (!cvm__tri2_in_domain(T, (int32_t)t))
+            continue;
+        for (j = 0; j < 3; j++) {
+            int32_t l = af_edge_layer(R, (int32_t)t, j), a = T->tv[3 * t + (size_t)(j + 1) % 3];
+            int32_t b = T->tv[3 * t + (size_t)(j + 2) % 3];
+            el[3 * t + (size_t)j] = l;
+            vl[a] = l < vl[a] ? l : vl[a];
+            vl[b] = l < vl[b] ? l : vl[b];
+        }
+    }
+    /* edges without a layer pass one more than the lower end's on: sweeps in
+     * alternating slot order to a fixed point, at most AF_SWEEPS of them */
+    for (changed = 1, sweep = 0; changed && sweep < AF_SWEEPS; sweep++) {
+        changed = 0;
+        for (k = 0; k < T->nt; k++) {
+            int j;
+            t = sweep % 2 ? T->nt - 1 - k : k;
+            if (!cvm__tri2_in_domain(T, (int32_t)t))
+                continue;
+            for (j = 0; j < 3; j++) {
+                int32_t a = T->tv[3 * t + (size_t)(j + 1) % 3], b = T->tv[3 * t + (size_t)(j + 2) % 3];
+                if (el[3 * t + (size_t)j] != AF_INF)
+                    continue;
+                if (vl[a] != AF_INF && vl[a] + 1 < vl[b]) {
+                    vl[b] = vl[a] + 1;
+                    changed = 1;
+                } else if (vl[b] != AF_INF && vl[b] + 1 < vl[a]) {
+                    vl[a] = vl[b] + 1;
+                    changed = 1;
+                }
+            }
+        }
+    }
+    for (t = 0; t < T->nt; t++) {
+        int32_t lo = AF_INF, hi = -1;
+        int j;
+        cl[t] = -1;
+        if (!cvm__tri2_in_domain(T, (int32_t)t))
+            continue;
+        for (j = 0; j < 3; j++) {
+            int32_t l = el[3 * t + (size_t)j];
+            if (l == AF_INF) { /* made after the pass, or a segment that starts no front */
+                int32_t a = vl[T->tv[3 * t + (size_t)(j + 1) % 3]];
+                int32_t b = vl[T->tv[3 * t + (size_t)(j + 2) % 3]];
+                l = a < b ? a : b;
+                l = l == AF_INF ? AF_INF : l + 1;
+            }
+            lo = l < lo ? l : lo;
+            hi = l > hi ? l : hi;
+        }
+        if (hi != AF_INF)
+            cl[t] = (double)hi + 0.1 * (double)lo;
+    }
+    cvm__free(R->ctx, vl);
+    cvm__free(R->ctx, el);
+    *out = cl;
+    return CVM_OK;
+}
