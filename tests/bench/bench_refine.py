@@ -12,6 +12,13 @@ measured here by the same numpy code: vertices, triangles, time (median of REPS
 runs of triangulate + refine; Triangle: triangulate(); Gmsh: generate(2)), min
 angle, % of angles in [55, 65] degrees, % obtuse triangles (an angle > 90), % of
 interior vertices (on no boundary edge) of degree 6, and mean edge / h.
+After each case a "tri-mv" row runs Triangle again with its area bound scaled so
+that its vertex count matches cvm-front's (Triangle's area bound gives edges of
+about 0.82 h). The "annulus-g" case uses the graded size h(r) = 0.4 + (r - 1)/2.5
+of the thesis: cvmesh through a sizing callback, Gmsh through its size callback,
+Triangle through repeated refinement (-r) with per-triangle area bounds from the
+size at each centroid until none is exceeded (all passes timed); edge/h is then
+the mean of edge length / h(midpoint).
 A last row times Delaunay refinement of the square to about 1e6 triangles
 against Triangle at a matched triangle count (the speed target of issue 4).
 
@@ -23,7 +30,14 @@ import numpy as np
 BUILD, SHARED = sys.argv[1], sys.argv[2]
 REPS = int(os.environ.get("CVM_BENCH_REPS", "5"))
 CASES = [("square", 0.02), ("channel", 0.02), ("annulus", 0.1), ("cylinder", 0.2),
-         ("naca0012", 0.2)]
+         ("naca0012", 0.2), ("annulus-g", -1.0)]
+
+
+def size_at(h, xy):
+    """Target size at points xy (n, 2): uniform h, or the graded annulus (h < 0)."""
+    if h > 0:
+        return np.full(len(xy), h)
+    return 0.4 + (np.hypot(xy[:, 0], xy[:, 1]) - 1) / 2.5
 DRIVER = os.path.join(BUILD, "bench", "bench_refine")
 
 
@@ -73,11 +87,12 @@ def quality(xy, tri, h):
     interior = used.copy()
     interior[boundary] = False
     lens = np.linalg.norm(xy[uniq[:, 0]] - xy[uniq[:, 1]], axis=1)
+    lens = lens / size_at(h, 0.5 * (xy[uniq[:, 0]] + xy[uniq[:, 1]]))  # edge / local size
     return dict(nv=int(used.sum()), nt=len(tri), minang=float(ang.min()),
                 reg=100.0 * float(((ang >= 55) & (ang <= 65)).mean()),
                 obt=100.0 * float((ang.max(1) > 90).mean()),
                 deg6=100.0 * float((deg[interior] == 6).mean()) if interior.any() else 0.0,
-                edge=float(lens.mean() / h))
+                edge=float(lens.mean()))
 
 
 def run_cvmesh(poly, h, algo, tmp):
@@ -91,17 +106,30 @@ def run_cvmesh(poly, h, algo, tmp):
     return t, xy, tri
 
 
-def run_triangle(poly, h):
+def run_triangle(poly, h, area_scale=1.0):
+    """Triangle pq30a<A>, A = area_scale x sqrt(3)/4 h^2; for the graded annulus
+    (h < 0), pq30 at the largest size then -rpq30a with per-triangle bounds from
+    the size at each centroid until none is exceeded (at most 12 passes)."""
     import triangle
     xy, segs, holes = read_poly(poly)
     a = dict(vertices=xy, segments=segs)
     if len(holes):
         a["holes"] = holes
-    sw = "pq30a%.12f" % (np.sqrt(3) / 4 * h * h)
     ts, t = [], None
     for _ in range(REPS):
         t0 = time.perf_counter()
-        t = triangle.triangulate(a, sw)
+        if h > 0:
+            t = triangle.triangulate(a, "pq30a%.12f" % (area_scale * np.sqrt(3) / 4 * h * h))
+        else:
+            t = triangle.triangulate(a, "pq30a%.12f" % (np.sqrt(3) / 4 * 1.6 ** 2))
+            for _ in range(12):
+                p = t["vertices"][t["triangles"]]
+                u, w = p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]
+                area = 0.5 * np.abs(u[:, 0] * w[:, 1] - u[:, 1] * w[:, 0])
+                bound = np.sqrt(3) / 4 * size_at(h, p.mean(axis=1)) ** 2
+                if (area <= bound).all():
+                    break
+                t = triangle.triangulate(dict(t, triangle_max_area=bound), "rpq30a")
         ts.append(time.perf_counter() - t0)
     ts.sort()
     return ts[len(ts) // 2], t["vertices"], t["triangles"]
@@ -147,15 +175,19 @@ def run_gmsh(poly, h, algo):
         raise ValueError("%d inner loops but %d holes" % (len(loops) - 1, len(holes)))
     gmsh.initialize(readConfigFiles=False)
     try:
+        hmin, hmax = (h, h) if h > 0 else (0.4, 1.6)
         for opt, val in (("General.Terminal", 0), ("General.NumThreads", 1),
-                         ("Mesh.Algorithm", algo), ("Mesh.MeshSizeMin", h),
-                         ("Mesh.MeshSizeMax", h), ("Mesh.MeshSizeFromPoints", 0),
+                         ("Mesh.Algorithm", algo), ("Mesh.MeshSizeMin", hmin),
+                         ("Mesh.MeshSizeMax", hmax), ("Mesh.MeshSizeFromPoints", 0),
                          ("Mesh.MeshSizeFromCurvature", 0),
                          ("Mesh.MeshSizeExtendFromBoundary", 0)):
             gmsh.option.setNumber(opt, val)
         gmsh.model.add("bench")
         geo = gmsh.model.geo
-        pt = [geo.addPoint(x, y, 0, h) for x, y in xy]
+        if h < 0:
+            gmsh.model.mesh.setSizeCallback(
+                lambda dim, tag, x, y, z, lc: 0.4 + (np.hypot(x, y) - 1) / 2.5)
+        pt = [geo.addPoint(x, y, 0, abs(h)) for x, y in xy]
         ln = [geo.addLine(pt[a], pt[b]) for a, b in segs]
         cl = [geo.addCurveLoop([ln[k] if f else -ln[k] for k, f in loop]) for loop in loops]
         geo.addPlaneSurface(cl)
@@ -224,7 +256,7 @@ def main():
         print("# Gmsh skipped (its system libraries are missing; see run.sh)")
     with tempfile.TemporaryDirectory() as tmp:
         for name, h in CASES:
-            poly = os.path.join(SHARED, "data", name + ".poly")
+            poly = os.path.join(SHARED, "data", name.split("-")[0] + ".poly")
             rows = []
             try:
                 rows.append(("triangle",) + run_triangle(poly, h))
@@ -232,13 +264,18 @@ def main():
                 print("# Triangle (pip triangle) not installed: skipped")
             for algo, label in ((1, "cvm-del"), (2, "cvm-front"), (3, "cvm-aflr")):
                 rows.append((label,) + run_cvmesh(poly, h, algo, tmp))
+            if rows[0][0] == "triangle" and h > 0:
+                # Triangle again at cvm-front's vertex count (vertices ~ 1 / area bound)
+                nv_tri = len(np.unique(np.asarray(rows[0][3]).ravel()))
+                nv_front = len(np.unique(np.asarray(rows[2][3]).ravel()))
+                rows.append(("tri-mv",) + run_triangle(poly, h, nv_tri / nv_front))
             if gmsh_ok:
                 for algo, label in ((5, "gmsh-del"), (6, "gmsh-front")):
                     rows.append((label,) + run_gmsh(poly, h, algo))
             for label, t, xy, tri in rows:
                 q = quality(np.asarray(xy), np.asarray(tri), h)
-                print("%-9s %-5g %-10s %7d %7d %9.4f %8.3f %7.2f %6.1f %6.1f %6.1f %6.3f" %
-                      (name, h, label, q["nv"], q["nt"], t, 1e6 * t / q["nt"], q["minang"], q["reg"],
+                print("%-9s %-5s %-10s %7d %7d %9.4f %8.3f %7.2f %6.1f %6.1f %6.1f %6.3f" %
+                      (name, "%g" % h if h > 0 else "graded", label, q["nv"], q["nt"], t, 1e6 * t / q["nt"], q["minang"], q["reg"],
                        q["obt"], q["deg6"], q["edge"]))
         try:
             run_1e6(SHARED, tmp)
