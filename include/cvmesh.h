@@ -1275,8 +1275,10 @@ typedef enum cvm_measure {
                                              (an angle > 90 degrees: not well-centred) */
     CVM_MEASURE_DEGREE6_PCT = 5,        /**< % of interior vertices of degree 6 (0 without
                                              interior vertices) */
-    CVM_MEASURE_MIN_DUAL_EDGE_RATIO = 6,/**< smallest Voronoi edge length over its primal edge
-                                             length, over interior edges (0 without any) */
+    CVM_MEASURE_MIN_DUAL_EDGE_RATIO = 6,/**< smallest power-dual edge length (between the power
+                                             vertices of the two triangles; the Voronoi edge
+                                             without weights) over its primal edge length,
+                                             over interior edges (0 without any) */
     CVM_MEASURE_MIN_EDGE = 7,           /**< shortest edge length */
     CVM_MEASURE_MAX_EDGE = 8,           /**< longest edge length */
     CVM_MEASURE_AREA = 9,               /**< total area */
