@@ -497,6 +497,14 @@ typedef enum cvm_option {
      *  collinear segments (exact orient2d); corners, segment ends and convex-hull
      *  vertices of unconstrained hulls never move. Integer, [0, 1]. */
     CVM_OPT_DUAL_KEEP_INPUT_POINTS = 507,
+    /** Layer priority c of the dual optimiser, default 1, bounds [0, 100]. The score
+     *  of a non-compliant triangle is F = L |C - V| with L = 1 + c / (1 + layer):
+     *  layer 0 are the domain triangles with a vertex on the domain boundary, layer
+     *  k + 1 the domain triangles sharing an edge with layer k and not in a lower
+     *  layer (breadth-first over triangles; a triangle the search never reaches has
+     *  L = 1). Higher scores are visited first, so c > 0 works from the boundary
+     *  inwards; c = 0 orders by |C - V| alone. Recomputed each sweep. */
+    CVM_OPT_DUAL_LAYER_PRIORITY = 508,
     /** Merge tolerance, a fraction of the local ideal dual edge l / sqrt(3), default
      *  0.1, bounds [0, 1]; 0 merges nothing. l at an edge is the mean of the local
      *  sizes of its two ends, each the mean length of the vertex's edges (taken from
@@ -1210,7 +1218,8 @@ CVM_API cvm_status cvm_mesh_copy_dual_merge_groups(cvm_index *dst, size_t dst_le
  * contains its power vertex or is merged (CVM_OPT_DUAL_MERGE_TOL), and dual
  * edges are not tiny. Per triangle k the score is F_k = W_k L_k |C_k - V_k|
  * (centroid C, power vertex V; W_k = 0 when V lies in k, decided exactly, or k is
- * merged, else 1; L_k = 2 for triangles touching the domain boundary, 1 inside).
+ * merged, else 1; L_k = 1 + c / (1 + layer_k), c = CVM_OPT_DUAL_LAYER_PRIORITY,
+ * layer_k the breadth-first layer of k from the boundary, see there).
  * Each sweep sorts the triangles with F > 0 worst first (then the "weak" ones of
  * CVM_OPT_DUAL_TARGET_ANGLE_DEG) into min(20, N/25) bins, shuffled within a bin
  * (stream keyed by CVM_OPT_SEED and the sweep), and solves each of their vertices

@@ -50,6 +50,7 @@ cvm_status cvm_mesh_optimise_dual(cvm_mesh *m, const cvm_sizing *sizing)
     p.pattern_budget = (int)cvm__opt(m, CVM_OPT_DUAL_PATTERN_BUDGET);
     p.margin = cvm__opt(m, CVM_OPT_DUAL_MARGIN);
     p.merge_tol = cvm__opt(m, CVM_OPT_DUAL_MERGE_TOL);
+    p.layer_priority = cvm__opt(m, CVM_OPT_DUAL_LAYER_PRIORITY);
     p.seed = (uint64_t)cvm__opt(m, CVM_OPT_SEED);
     p.threads = (int)cvm__opt(m, CVM_OPT_THREADS);
     p.n_fixed = cvm__opt(m, CVM_OPT_DUAL_KEEP_INPUT_POINTS) != 0 ? input_vertices(m) : 0;

@@ -70,6 +70,13 @@ cvm_status cvm__dual_merge_groups(cvm__ctx *ctx, const cvm__tri2 *T, const doubl
 
 /* ---- the dual optimiser (optimise*.c) ---- */
 
+/* Layer of every slot of T: 0 for the domain triangles with a vertex flagged
+ * in vbnd (T->nv entries), k + 1 for the domain triangles sharing an edge with
+ * a layer-k triangle and in no lower layer (breadth-first), INT32_MAX for
+ * domain triangles never reached and for every other slot. queue: scratch of
+ * T->nt entries. Deterministic (slot order). */
+void cvm__dual_layers(const cvm__tri2 *T, const uint8_t *vbnd, int32_t *layer, int32_t *queue);
+
 enum { CVM__DUAL_SOLVER_PATTERN = 1, CVM__DUAL_SOLVER_CUCKOO = 2 };
 
 /* Size callback of the optimiser: the local size at (x, y) into *h; a status
@@ -85,6 +92,7 @@ typedef struct cvm__dual_opt_params {
     int pattern_budget;     /* objective evaluations per vertex (pattern search) */
     double margin;          /* power vertex pushed this fraction of each edge inside */
     double merge_tol;       /* fraction of l / sqrt(3) */
+    double layer_priority;  /* c of L = 1 + c / (1 + layer) */
     uint64_t seed;
     int threads;            /* OpenMP threads for the local problems (0: default) */
     size_t n_fixed;         /* vertices 0..n_fixed-1 keep their position (input points

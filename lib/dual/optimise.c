@@ -6,8 +6,9 @@
  *
  * Score of domain triangle k: F_k = W_k L_k |C_k - V_k| (centroid C, power
  * vertex V); W_k = 1 when V lies outside k (exact cvm__power_side2d) and k
- * cannot be merged (merge.c), else 0; L_k = 2 when k touches the domain
- * boundary, 1 inside (boundary cells first). Within a sweep the topology is
+ * cannot be merged (merge.c), else 0; L_k = 1 + c / (1 + layer_k) with c the
+ * layer priority and layer_k the breadth-first layer of k from the boundary
+ * (cvm__dual_layers; boundary cells first). Within a sweep the topology is
  * fixed and only coordinates and weights change; the triangles with F > 0 are
  * sorted by F (worst first, ties by slot), cut into min(20, N/25) bins of equal
  * count and shuffled within each bin by a stream keyed by (seed, sweep); each
@@ -52,6 +53,7 @@ typedef struct dopt {
     double *V;       /* 2 per slot */
     double *F;       /* per slot */
     uint8_t *st;     /* per slot: cvm__dual_tri_status */
+    int32_t *layer;  /* per slot: cvm__dual_layers */
     uint8_t *weak;   /* per slot: compliant but an angle below the target, merged, or the
                         power vertex within half the margin of an edge */
     int32_t *list;   /* slots to visit */
@@ -111,6 +113,30 @@ static void boundary_flags(dopt *D)
     }
 }
 
+void cvm__dual_layers(const cvm__tri2 *T, const uint8_t *vbnd, int32_t *layer, int32_t *queue)
+{
+    size_t t, head = 0, tail = 0;
+    int j;
+    for (t = 0; t < T->nt; t++) {
+        const int32_t *v = T->tv + 3 * t;
+        layer[t] = INT32_MAX;
+        if (cvm__tri2_in_domain(T, (int32_t)t) && (vbnd[v[0]] || vbnd[v[1]] || vbnd[v[2]])) {
+            layer[t] = 0;
+            queue[tail++] = (int32_t)t;
+        }
+    }
+    while (head < tail) {
+        int32_t x = queue[head++];
+        for (j = 0; j < 3; j++) {
+            int32_t a = T->tn[3 * (size_t)x + (size_t)j], u = a < 0 ? -1 : a / 3;
+            if (u < 0 || layer[u] != INT32_MAX || !cvm__tri2_in_domain(T, u))
+                continue;
+            layer[u] = layer[x] + 1;
+            queue[tail++] = u;
+        }
+    }
+}
+
 static double score(const dopt *D, int32_t t)
 {
     const cvm__tri2 *T = D->T;
@@ -120,7 +146,7 @@ static double score(const dopt *D, int32_t t)
         return 0.0;
     cx = (T->xy[2 * (size_t)v[0]] + T->xy[2 * (size_t)v[1]] + T->xy[2 * (size_t)v[2]]) / 3.0;
     cy = (T->xy[2 * (size_t)v[0] + 1] + T->xy[2 * (size_t)v[1] + 1] + T->xy[2 * (size_t)v[2] + 1]) / 3.0;
-    prio = D->vbnd[v[0]] || D->vbnd[v[1]] || D->vbnd[v[2]] ? 2.0 : 1.0;
+    prio = D->layer[t] == INT32_MAX ? 1.0 : 1.0 + D->p->layer_priority / (1.0 + (double)D->layer[t]);
     return prio * hypot(cx - D->V[2 * (size_t)t], cy - D->V[2 * (size_t)t + 1]);
 }
 
@@ -590,6 +616,7 @@ static cvm_status run(dopt *D)
     boundary_flags(D);
     if ((s = restore(D)))
         return s;
+    cvm__dual_layers(D->T, D->vbnd, D->layer, D->list);
     score_all(D);
     D->nc0 = D->nc;
     D->rep->nc_before_pct = pct(D);
@@ -598,6 +625,7 @@ static cvm_status run(dopt *D)
         if ((s = sizes(D)))
             return s;
         boundary_flags(D);
+        cvm__dual_layers(D->T, D->vbnd, D->layer, D->list);
         score_all(D);
         if (!D->nc && !D->nweak)
             break;
@@ -662,17 +690,18 @@ cvm_status cvm__dual_optimise(cvm__tri2 *T, const cvm__dual_opt_params *p, cvm__
     D.F = cvm__malloc(ctx, (nt + 1) * sizeof *D.F);
     D.st = cvm__calloc(ctx, nt + 1, 1);
     D.weak = cvm__calloc(ctx, nt + 1, 1);
+    D.layer = cvm__calloc(ctx, nt + 1, sizeof *D.layer);
     D.list = cvm__malloc(ctx, (nt + 1) * sizeof *D.list);
     D.star = cvm__malloc(ctx, (nt + 1) * sizeof *D.star);
     D.save = cvm__malloc(ctx, (3 * nv + 1) * sizeof *D.save);
     D.jobs = cvm__malloc(ctx, BATCH * sizeof *D.jobs);
     D.stamp = cvm__calloc(ctx, nv + 1, sizeof *D.stamp);
-    if (!D.vsize || !D.vbnd || !D.mark || !D.V || !D.F || !D.st || !D.weak || !D.list || !D.star || !D.save || !D.jobs ||
+    if (!D.vsize || !D.vbnd || !D.mark || !D.V || !D.F || !D.st || !D.weak || !D.layer || !D.list || !D.star || !D.save || !D.jobs ||
         !D.stamp)
         s = CVM_E_NOMEM;
     else
         s = run(&D);
-    if (D.V && D.st && D.weak && D.F && D.vsize && D.vbnd) {
+    if (D.V && D.st && D.weak && D.layer && D.F && D.vsize && D.vbnd) {
         score_all(&D);
         rep->nc_after_pct = pct(&D);
         if (!rep->sweeps && !D.nc0)
@@ -685,6 +714,7 @@ cvm_status cvm__dual_optimise(cvm__tri2 *T, const cvm__dual_opt_params *p, cvm__
     cvm__free(ctx, D.F);
     cvm__free(ctx, D.st);
     cvm__free(ctx, D.weak);
+    cvm__free(ctx, D.layer);
     cvm__free(ctx, D.list);
     cvm__free(ctx, D.star);
     cvm__free(ctx, D.save);

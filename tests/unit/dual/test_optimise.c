@@ -287,6 +287,48 @@ START_TEST(same_seed_gives_same_bytes_for_1_2_4_threads_cuckoo)
 }
 END_TEST
 
+/* One sweep with layer priority c: positions, weights and triangles. */
+static void one_sweep_with_layer_priority(double c, dtest_mesh *d)
+{
+    cvm_mesh *m = refined(CVM_ALGO_DELAUNAY, 0.1);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_DUAL_MAX_SWEEPS, 1), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_THREADS, 2), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_DUAL_LAYER_PRIORITY, c), CVM_OK);
+    ck_assert_msg(cvm_mesh_optimise_dual(m, NULL) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    ck_assert_msg(cvm_mesh_check(m) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    dtest_get(m, d);
+    cvm_mesh_free(m);
+}
+
+/* The layer priority changes the visiting order, hence the outcome of one
+ * sweep (moves read the vertices moved before them), and the same priority
+ * reproduces it byte for byte. */
+START_TEST(layer_priority_changes_the_order_deterministically)
+{
+    dtest_mesh a, b, c;
+    double bad = -1;
+    cvm_mesh *m;
+    one_sweep_with_layer_priority(0, &a);
+    one_sweep_with_layer_priority(100, &b);
+    one_sweep_with_layer_priority(100, &c);
+    ck_assert_uint_eq(b.nv, c.nv);
+    ck_assert_uint_eq(b.nt, c.nt);
+    ck_assert_int_eq(memcmp(b.xy, c.xy, 2 * b.nv * sizeof *b.xy), 0);
+    ck_assert_int_eq(memcmp(b.w, c.w, b.nv * sizeof *b.w), 0);
+    ck_assert_int_eq(memcmp(b.tri, c.tri, 3 * b.nt * sizeof *b.tri), 0);
+    ck_assert_uint_eq(a.nv, b.nv);
+    ck_assert(memcmp(a.xy, b.xy, 2 * a.nv * sizeof *a.xy) != 0 || memcmp(a.w, b.w, a.nv * sizeof *a.w) != 0);
+    dtest_free(&a);
+    dtest_free(&b);
+    dtest_free(&c);
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_DUAL_LAYER_PRIORITY, -1), CVM_E_OPTION_RANGE);
+    ck_assert_int_eq(cvm_mesh_get_option(&bad, m, CVM_OPT_DUAL_LAYER_PRIORITY), CVM_OK);
+    ck_assert(bad == 1);
+    cvm_mesh_free(m);
+}
+END_TEST
+
 static double bad_size(void *payload, double x, double y)
 {
     (void)x;
@@ -384,6 +426,7 @@ TCase *dual_optimise_tcase(void)
     tcase_add_test(tc, optimise_delaunay_mesh_cuckoo_leaves_every_triangle_compliant);
     tcase_add_test(tc, same_seed_gives_same_bytes_for_1_2_4_threads_pattern);
     tcase_add_test(tc, same_seed_gives_same_bytes_for_1_2_4_threads_cuckoo);
+    tcase_add_test(tc, layer_priority_changes_the_order_deterministically);
     tcase_add_test(tc, optimise_rejects_null_untriangulated_and_bad_sizing);
     tcase_add_test(tc, cancelled_run_leaves_a_valid_regular_mesh);
     tcase_add_test(tc, out_of_memory_at_every_allocation_leaves_a_valid_mesh);
