@@ -16,10 +16,14 @@
  * their neighbours, whose merge state depends on it) are re-scored at once.
  * After the sweep, Lawson flips under the exact power test restore the
  * regular triangulation; a vertex whose power cell vanished (the blocking
- * corner of an unflippable illegal edge) gets its weight raised (by 0.1,
+ * corner of an unflippable illegal edge) is removed when it is a removable
+ * Steiner vertex and p->topology is set (topology.c; then compact() renumbers
+ * the vertices and carries vsize, vbnd and p->vmap along); any other gets its
+ * weight raised (by 0.1,
  * 0.2, 0.4 ... times its squared local size) until none vanishes; after 8
  * rounds every weight is reset to 0, which always leaves a valid
- * (constrained Delaunay) mesh. No vertex is ever removed. The run stops when
+ * (constrained Delaunay) mesh. With p->topology 2, repair_degrees() removes
+ * vertices after the first sweeps (experimental). The run stops when
  * nothing is non-compliant, a sweep moves nothing, or at the sweep limit, the
  * time limit or cancellation.
  *
@@ -43,6 +47,8 @@
 
 #define FIX_ROUNDS 8
 #define BATCH 256
+#define DEG_HIGH_DEG 47.0 /* average corner angle that calls for degree repair */
+#define DEG_SWEEPS 10     /* degree repair after the first DEG_SWEEPS sweeps only */
 
 typedef struct dopt {
     cvm__tri2 *T;
@@ -60,6 +66,10 @@ typedef struct dopt {
     int32_t *star;   /* scratch: sort buffer, then the stars of a batch (disjoint) */
     struct job *jobs; /* BATCH entries */
     uint32_t *stamp; /* nv: batch stamp of the vertices a batch holds or touches */
+    uint8_t *gone;   /* nv: removed, not yet compacted */
+    int32_t *dup, *map2; /* nv: scratch of compact() */
+    size_t nv0;      /* vertex count at the call (vmap's length) */
+    int topo;        /* vertex removal on (p->topology with p->vmap) */
     uint32_t cur_stamp;
     int nthreads;
     double *save;    /* 3 per vertex: x, y, w at the start of a sweep */
@@ -393,6 +403,130 @@ static void apply_job(dopt *D, const job *J)
     }
 }
 
+/* Drop the removed vertices (gone) from T's vertex arrays, renumbering the
+ * rest in order; carry vsize, vbnd and the caller's map along. */
+static void compact(dopt *D)
+{
+    cvm__tri2 *T = D->T;
+    size_t v, nv = T->nv;
+    for (v = 0; v < nv; v++)
+        D->dup[v] = D->gone[v] ? 0 : -1; /* vertex 0 is an input point: never gone */
+    cvm__tri2_compact(T, D->dup, D->map2);
+    for (v = 0; v < nv; v++) {
+        int32_t n = D->map2[v];
+        if (D->gone[v]) {
+            D->map2[v] = -1;
+            continue;
+        }
+        D->vsize[n] = D->vsize[v]; /* n <= v: in place */
+        D->vbnd[n] = D->vbnd[v];
+    }
+    memset(D->gone, 0, nv);
+    for (v = 0; v < D->nv0; v++)
+        if (D->p->vmap[v] >= 0)
+            D->p->vmap[v] = D->map2[D->p->vmap[v]];
+}
+
+/* Average angle, in degrees, of vertex v over its domain triangles (each
+ * corner's angle, plain doubles) into *avg; their number is returned. */
+static size_t corner_angles(const dopt *D, int32_t v, double *avg)
+{
+    const cvm__tri2 *T = D->T;
+    int32_t t0 = T->vtri[v], t = t0;
+    size_t n = 0, k = 0;
+    double sum = 0;
+    if (t0 < 0)
+        return 0;
+    do {
+        const int32_t *tv = T->tv + 3 * (size_t)t;
+        int i = tv[0] == v ? 0 : tv[1] == v ? 1 : 2;
+        if (cvm__tri2_in_domain(T, t)) {
+            const double *p = T->xy + 2 * (size_t)v, *a = T->xy + 2 * (size_t)tv[(i + 1) % 3];
+            const double *b = T->xy + 2 * (size_t)tv[(i + 2) % 3];
+            double ux = a[0] - p[0], uy = a[1] - p[1], wx = b[0] - p[0], wy = b[1] - p[1];
+            sum += atan2(fabs(ux * wy - uy * wx), ux * wx + uy * wy);
+            n++;
+        }
+        t = T->tn[3 * (size_t)t + (size_t)(i + 1) % 3] / 3;
+    } while (t != t0 && ++k < T->nt);
+    *avg = n ? sum / (double)n * (180.0 / 3.14159265358979323846) : 0.0;
+    return n;
+}
+
+/* 1 when a domain triangle around v has an angle below the target. */
+static int star_weak(const dopt *D, int32_t v)
+{
+    const cvm__tri2 *T = D->T;
+    int32_t t0 = T->vtri[v], t = t0;
+    size_t k = 0;
+    if (t0 < 0)
+        return 0;
+    do {
+        const int32_t *tv = T->tv + 3 * (size_t)t;
+        int i = tv[0] == v ? 0 : tv[1] == v ? 1 : 2;
+        if (cvm__tri2_in_domain(T, t) && D->weak[t])
+            return 1;
+        t = T->tn[3 * (size_t)t + (size_t)(i + 1) % 3] / 3;
+    } while (t != t0 && ++k < T->nt);
+    return 0;
+}
+
+/* Degree repair (see the file comment): a vertex whose corners average less
+ * than DEG_HIGH_DEG degrees (degree 8 and more inside) and that touches a weak
+ * triangle loses its removable Steiner neighbour of least degree; an interior
+ * removable Steiner vertex of degree 4 or less is removed. One operation per
+ * neighbourhood and pass (stamps); vertices in index order. The number
+ * removed; T is then valid but maybe not regular (restore() follows). */
+static size_t repair_degrees(dopt *D)
+{
+    cvm__tri2 *T = D->T;
+    size_t v, nrem = 0;
+    D->cur_stamp++;
+    for (v = 0; v < T->nv; v++) {
+        int32_t t0 = T->vtri[v], t, best = -1;
+        size_t deg, bdeg = 0, k = 0;
+        double avg;
+        if (t0 < 0 || D->gone[v] || D->stamp[v] == D->cur_stamp)
+            continue;
+        if (v >= D->p->n_input && cvm__dual_removable(T, (int32_t)v, &deg) && deg <= 4) {
+            best = (int32_t)v;
+        } else if (corner_angles(D, (int32_t)v, &avg) && avg < DEG_HIGH_DEG && star_weak(D, (int32_t)v)) {
+            t = t0;
+            do {
+                const int32_t *tv = T->tv + 3 * (size_t)t;
+                int i = tv[0] == (int32_t)v ? 0 : tv[1] == (int32_t)v ? 1 : 2;
+                int32_t x = tv[(i + 2) % 3];
+                size_t dx;
+                if (x >= 0 && (size_t)x >= D->p->n_input && D->stamp[x] != D->cur_stamp &&
+                    cvm__dual_removable(T, x, &dx) && (best < 0 || dx < bdeg)) {
+                    best = x;
+                    bdeg = dx;
+                }
+                t = T->tn[3 * (size_t)t + (size_t)(i + 1) % 3] / 3;
+            } while (t != t0 && ++k < T->nt);
+        }
+        if (best < 0)
+            continue;
+        {
+            /* stamp the neighbourhood of best before it goes */
+            int32_t s0 = T->vtri[best], s = s0;
+            k = 0;
+            do {
+                const int32_t *tv = T->tv + 3 * (size_t)s;
+                int i = tv[0] == best ? 0 : tv[1] == best ? 1 : 2;
+                D->stamp[tv[(i + 1) % 3]] = D->cur_stamp;
+                s = T->tn[3 * (size_t)s + (size_t)(i + 1) % 3] / 3;
+            } while (s != s0 && ++k < T->nt);
+            D->stamp[v] = D->cur_stamp;
+            if (cvm__dual_remove_vertex(T, best, best == (int32_t)v ? -1 : (int32_t)v)) {
+                D->gone[best] = 1;
+                nrem++;
+            }
+        }
+    }
+    return nrem;
+}
+
 /* Make T regular again with no vanished vertex (see the file comment). */
 static cvm_status restore(dopt *D)
 {
@@ -403,6 +537,23 @@ static cvm_status restore(dopt *D)
     if ((s = cvm__tri2_make_regular(T, &nfl)))
         return s;
     D->rep->flips += nfl;
+    for (round = 0; D->topo && round < FIX_ROUNDS; round++) {
+        size_t nrem = 0;
+        if (!cvm__tri2_count_unregular(T, D->mark))
+            return CVM_OK;
+        for (v = D->p->n_input; v < T->nv; v++)
+            if (D->mark[v] && cvm__dual_remove_vertex(T, (int32_t)v, -1)) {
+                D->gone[v] = 1;
+                nrem++;
+            }
+        if (!nrem)
+            break;
+        D->rep->removed_vanished += nrem;
+        compact(D);
+        if ((s = cvm__tri2_make_regular(T, &nfl)))
+            return s;
+        D->rep->flips += nfl;
+    }
     for (round = 0; round < FIX_ROUNDS; round++) {
         if (!cvm__tri2_count_unregular(T, D->mark))
             return CVM_OK;
@@ -621,7 +772,7 @@ static cvm_status run(dopt *D)
     D->nc0 = D->nc;
     D->rep->nc_before_pct = pct(D);
     for (k = 0; k < (uint64_t)p->max_sweeps && (D->nc || D->nweak); k++) {
-        size_t moved = 0, nc_prev, nweak_prev, flips0;
+        size_t moved = 0, nc_prev, nweak_prev, flips0, rem0;
         if ((s = sizes(D)))
             return s;
         boundary_flags(D);
@@ -636,17 +787,29 @@ static cvm_status run(dopt *D)
         D->rep->moves += moved;
         D->rep->sweeps++;
         flips0 = D->rep->flips;
+        rem0 = D->rep->removed_vanished;
         if ((s2 = restore(D))) {
             /* out of memory: without a flip, go back to the regular state of the
              * sweep's start; after flips the topology follows the new positions,
              * which stay (conforming, counter-clockwise, maybe not regular) */
-            if (D->rep->flips == flips0)
+            if (D->rep->flips == flips0 && D->rep->removed_vanished == rem0)
                 load_state(D);
             return s2;
         }
         if (s)
             return s;
         score_all(D);
+        if (D->topo && D->p->topology >= 2 && k < DEG_SWEEPS) {
+            size_t nrem = repair_degrees(D);
+            if (nrem) {
+                D->rep->removed_degree += nrem;
+                compact(D);
+                if ((s = restore(D)))
+                    return s;
+                score_all(D);
+                continue; /* the topology changed: sweep again */
+            }
+        }
         /* stop when nothing moved, or when everything is compliant and the
          * weak triangles no longer drop by 1% a sweep */
         if (!moved || (!D->nc && !nc_prev && 100 * D->nweak >= 99 * nweak_prev))
@@ -696,8 +859,18 @@ cvm_status cvm__dual_optimise(cvm__tri2 *T, const cvm__dual_opt_params *p, cvm__
     D.save = cvm__malloc(ctx, (3 * nv + 1) * sizeof *D.save);
     D.jobs = cvm__malloc(ctx, BATCH * sizeof *D.jobs);
     D.stamp = cvm__calloc(ctx, nv + 1, sizeof *D.stamp);
+    D.nv0 = nv;
+    D.topo = p->topology && p->vmap;
+    if (D.topo) {
+        size_t v;
+        for (v = 0; v < nv; v++)
+            p->vmap[v] = (int32_t)v;
+        D.gone = cvm__calloc(ctx, nv + 1, 1);
+        D.dup = cvm__malloc(ctx, (nv + 1) * sizeof *D.dup);
+        D.map2 = cvm__malloc(ctx, (nv + 1) * sizeof *D.map2);
+    }
     if (!D.vsize || !D.vbnd || !D.mark || !D.V || !D.F || !D.st || !D.weak || !D.layer || !D.list || !D.star || !D.save || !D.jobs ||
-        !D.stamp)
+        !D.stamp || (D.topo && (!D.gone || !D.dup || !D.map2)))
         s = CVM_E_NOMEM;
     else
         s = run(&D);
@@ -720,6 +893,9 @@ cvm_status cvm__dual_optimise(cvm__tri2 *T, const cvm__dual_opt_params *p, cvm__
     cvm__free(ctx, D.save);
     cvm__free(ctx, D.jobs);
     cvm__free(ctx, D.stamp);
+    cvm__free(ctx, D.gone);
+    cvm__free(ctx, D.dup);
+    cvm__free(ctx, D.map2);
     rep->seconds = cvm__now() - t0;
     return s;
 }
