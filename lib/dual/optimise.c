@@ -49,6 +49,11 @@
 #define BATCH 256
 #define DEG_HIGH_DEG 47.0 /* average corner angle that calls for degree repair */
 #define DEG_SWEEPS 10     /* degree repair after the first DEG_SWEEPS sweeps only */
+#define PATIENCE 8        /* sweeps without progress before the run stops */
+#define PUSHES 2
+#define PROGRESS_DEG 0.05 /* smallest-angle gain over PATIENCE sweeps that keeps the run going */
+#define PUSH_DEG 5.0      /* the second phase's target angle is the option's + PUSH_DEG */
+#define BEST_EPS_DEG 1e-3 /* smallest angle gain that makes a state the new best, degrees */
 
 typedef struct dopt {
     cvm__tri2 *T;
@@ -73,6 +78,8 @@ typedef struct dopt {
     uint32_t cur_stamp;
     int nthreads;
     double *save;    /* 3 per vertex: x, y, w at the start of a sweep */
+    double *best;    /* 3 per vertex: x, y, w of the best state (keep_best) */
+    size_t best_nv, best_removed;
     size_t nc, nc0;  /* current and initial non-compliant counts */
     size_t nweak;
     double sin2_min, sin2_target;
@@ -757,11 +764,80 @@ static cvm_status sweep(dopt *D, uint64_t k, size_t *moved_out)
     return s;
 }
 
+static double min_angle(const dopt *D);
+
+/* Go back to the best state kept by keep_best when it beats the current one
+ * and has the same vertices: its positions and weights, made regular again
+ * (the regular triangulation of a weighted point set is unique, so this is
+ * the triangulation it had). */
+static cvm_status end_at_best(dopt *D, size_t best_nc, double best_min)
+{
+    size_t v;
+    if (D->best_nv != D->T->nv || D->best_removed != D->rep->removed_vanished + D->rep->removed_degree)
+        return CVM_OK;
+    if (!(best_nc < D->nc || (best_nc == D->nc && best_min > min_angle(D) + BEST_EPS_DEG)))
+        return CVM_OK;
+    for (v = 0; v < D->T->nv; v++) {
+        D->T->xy[2 * v] = D->best[3 * v];
+        D->T->xy[2 * v + 1] = D->best[3 * v + 1];
+        D->T->w[v] = D->best[3 * v + 2];
+    }
+    return restore(D);
+}
+
+/* Smallest angle over the domain triangles, degrees (a measure). */
+static double min_angle(const dopt *D)
+{
+    const cvm__tri2 *T = D->T;
+    size_t t;
+    double best = 180.0;
+    for (t = 0; t < T->nt; t++) {
+        const int32_t *v = T->tv + 3 * t;
+        int q;
+        if (!cvm__tri2_in_domain(T, (int32_t)t))
+            continue;
+        for (q = 0; q < 3; q++) {
+            const double *P = T->xy + 2 * (size_t)v[q], *A = T->xy + 2 * (size_t)v[(q + 1) % 3];
+            const double *B = T->xy + 2 * (size_t)v[(q + 2) % 3];
+            double ux = A[0] - P[0], uy = A[1] - P[1], wx = B[0] - P[0], wy = B[1] - P[1];
+            double a = atan2(fabs(ux * wy - uy * wx), ux * wx + uy * wy) * (180.0 / 3.14159265358979323846);
+            if (a < best)
+                best = a;
+        }
+    }
+    return best;
+}
+
+/* The best state so far (see run): fewest non-compliant, then largest
+ * smallest angle. 1 when the current state is better (and is now the best). */
+static int keep_best(dopt *D, size_t *best_nc, double *best_min)
+{
+    double mn = min_angle(D);
+    size_t v;
+    if (!(D->nc < *best_nc || (D->nc == *best_nc && mn > *best_min + BEST_EPS_DEG)))
+        return 0;
+    *best_nc = D->nc;
+    *best_min = mn;
+    for (v = 0; v < D->T->nv; v++) {
+        D->best[3 * v] = D->T->xy[2 * v];
+        D->best[3 * v + 1] = D->T->xy[2 * v + 1];
+        D->best[3 * v + 2] = D->T->w[v];
+    }
+    D->best_nv = D->T->nv;
+    D->best_removed = D->rep->removed_vanished + D->rep->removed_degree;
+    return 1;
+}
+
 static cvm_status run(dopt *D)
 {
     const cvm__dual_opt_params *p = D->p;
     cvm_status s, s2;
     uint64_t k;
+    size_t best_nc = (size_t)-1, stall = 0;
+    double best_min = -1.0;
+    int phase = 0;
+    double prog_min;
+    size_t weak_low = (size_t)-1; /* fewest weak triangles at a progress mark */
     if ((s = sizes(D)))
         return s;
     boundary_flags(D);
@@ -771,8 +847,11 @@ static cvm_status run(dopt *D)
     score_all(D);
     D->nc0 = D->nc;
     D->rep->nc_before_pct = pct(D);
+    keep_best(D, &best_nc, &best_min);
+    prog_min = best_min;
     for (k = 0; k < (uint64_t)p->max_sweeps && (D->nc || D->nweak); k++) {
-        size_t moved = 0, nc_prev, nweak_prev, flips0, rem0;
+        size_t moved = 0, nc_prev, flips0, rem0;
+        int better;
         if ((s = sizes(D)))
             return s;
         boundary_flags(D);
@@ -781,7 +860,6 @@ static cvm_status run(dopt *D)
         if (!D->nc && !D->nweak)
             break;
         nc_prev = D->nc;
-        nweak_prev = D->nweak;
         save_state(D);
         s = sweep(D, k, &moved);
         D->rep->moves += moved;
@@ -807,15 +885,38 @@ static cvm_status run(dopt *D)
                 if ((s = restore(D)))
                     return s;
                 score_all(D);
+                best_nc = (size_t)-1; /* the old best had other vertices */
+                keep_best(D, &best_nc, &best_min);
                 continue; /* the topology changed: sweep again */
             }
         }
-        /* stop when nothing moved, or when everything is compliant and the
-         * weak triangles no longer drop by 1% a sweep */
-        if (!moved || (!D->nc && !nc_prev && 100 * D->nweak >= 99 * nweak_prev))
+        keep_best(D, &best_nc, &best_min);
+        better = best_min > prog_min + PROGRESS_DEG;
+        if (better)
+            prog_min = best_min;
+        /* stop when nothing moved, or when everything is compliant and for
+         * PATIENCE sweeps neither the smallest angle improved by PROGRESS_DEG
+         * nor the weak triangles dropped 1% below their last low; then the
+         * target angle is raised (PUSHES times) before the run ends */
+        if (!moved)
             break;
+        if (!D->nc && !nc_prev) {
+            if (better || 100 * D->nweak < 99 * weak_low) {
+                stall = 0;
+                weak_low = D->nweak < weak_low ? D->nweak : weak_low;
+            } else if (++stall >= PATIENCE) {
+                double push = p->target_angle_deg + PUSH_DEG * (phase + 1);
+                if (phase >= PUSHES || !(p->target_angle_deg > 0) || push > 60.0)
+                    break;
+                /* next phase: a higher target angle; keep_best keeps the best end */
+                phase++;
+                stall = 0;
+                D->sin2_target = sin(push * 3.14159265358979323846 / 180.0);
+                D->sin2_target *= D->sin2_target;
+            }
+        }
     }
-    return CVM_OK;
+    return end_at_best(D, best_nc, best_min);
 }
 
 cvm_status cvm__dual_optimise(cvm__tri2 *T, const cvm__dual_opt_params *p, cvm__dual_opt_report *rep)
@@ -857,6 +958,7 @@ cvm_status cvm__dual_optimise(cvm__tri2 *T, const cvm__dual_opt_params *p, cvm__
     D.list = cvm__malloc(ctx, (nt + 1) * sizeof *D.list);
     D.star = cvm__malloc(ctx, (nt + 1) * sizeof *D.star);
     D.save = cvm__malloc(ctx, (3 * nv + 1) * sizeof *D.save);
+    D.best = cvm__malloc(ctx, (3 * nv + 1) * sizeof *D.best);
     D.jobs = cvm__malloc(ctx, BATCH * sizeof *D.jobs);
     D.stamp = cvm__calloc(ctx, nv + 1, sizeof *D.stamp);
     D.nv0 = nv;
@@ -869,7 +971,7 @@ cvm_status cvm__dual_optimise(cvm__tri2 *T, const cvm__dual_opt_params *p, cvm__
         D.dup = cvm__malloc(ctx, (nv + 1) * sizeof *D.dup);
         D.map2 = cvm__malloc(ctx, (nv + 1) * sizeof *D.map2);
     }
-    if (!D.vsize || !D.vbnd || !D.mark || !D.V || !D.F || !D.st || !D.weak || !D.layer || !D.list || !D.star || !D.save || !D.jobs ||
+    if (!D.vsize || !D.vbnd || !D.mark || !D.V || !D.F || !D.st || !D.weak || !D.layer || !D.list || !D.star || !D.save || !D.best || !D.jobs ||
         !D.stamp || (D.topo && (!D.gone || !D.dup || !D.map2)))
         s = CVM_E_NOMEM;
     else
@@ -891,6 +993,7 @@ cvm_status cvm__dual_optimise(cvm__tri2 *T, const cvm__dual_opt_params *p, cvm__
     cvm__free(ctx, D.list);
     cvm__free(ctx, D.star);
     cvm__free(ctx, D.save);
+    cvm__free(ctx, D.best);
     cvm__free(ctx, D.jobs);
     cvm__free(ctx, D.stamp);
     cvm__free(ctx, D.gone);
