@@ -24,8 +24,14 @@
  * rounds every weight is reset to 0, which always leaves a valid
  * (constrained Delaunay) mesh. With p->topology 2, repair_degrees() removes
  * vertices after the first sweeps (experimental). The run stops when
- * nothing is non-compliant, a sweep moves nothing, or at the sweep limit, the
- * time limit or cancellation.
+ * nothing is non-compliant or weak, a sweep moves nothing, or at the sweep
+ * limit, the time limit or cancellation; once all is compliant, PATIENCE
+ * sweeps without progress (smallest angle up by PROGRESS_DEG, or the weak
+ * count 1% below its last low) raise the target angle by PUSH_DEG (PUSHES
+ * times), then end the run. keep_best() remembers the best state (fewest
+ * non-compliant, then largest smallest angle) and end_at_best() returns to it
+ * at a normal end: a later sweep can lower the smallest angle, since moves
+ * trade angles against the penalty of others.
  *
  * Parallel and deterministic: the order above is cut into batches of vertices
  * no two of which are equal or share a triangle's vertex (so their local
