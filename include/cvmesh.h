@@ -488,10 +488,11 @@ typedef enum cvm_option {
      *  angle below it (or merged, or whose power vertex lies within half the margin of
      *  an edge) are visited too, after the non-compliant ones, and the local objective
      *  adds (1 - sin^2(angle) / sin^2(target))^2 for each triangle below it.
-     *  When the run stalls it raises the target by 5 degrees, twice (see
+     *  When the run stalls it raises the target by 5 degrees once (see
      *  cvm_mesh_optimise_dual()). Measured (tests/bench/bench_dual.py, frontal
-     *  meshes): with 40 and the two raises the smallest angle ends at 39.8-43.7
-     *  degrees on square, channel, annulus and cylinder and 32.8 on the NACA 0012.
+     *  meshes): with 40 and the raise the smallest angle ends at 39.8-43.2 degrees
+     *  on square, channel, annulus and cylinder and 32.7 on the NACA 0012 (without
+     *  the raise: 38.4-40.0 and 32.6).
      *  0: only non-compliant triangles are visited. */
     CVM_OPT_DUAL_TARGET_ANGLE_DEG = 506,
     /** 1: input points keep their position (only their weights change); 0 (default):
@@ -522,8 +523,9 @@ typedef enum cvm_option {
      *  CVM_OPT_DUAL_TARGET_ANGLE_DEG, its removable Steiner neighbour of least degree
      *  is removed, and interior Steiner vertices of degree 4 or less are removed
      *  (CVM_MEASURE_DUAL_OPT_REMOVED_DEGREE). Experimental: measured on the shared
-     *  geometries (frontal meshes) it lowers the minimum angle (e.g. cylinder 32.9 to
-     *  11.7 degrees), so it is not the default. 0: no vertex is ever removed. */
+     *  geometries (frontal meshes, tests/bench/bench_dual.c) it lowers the minimum
+     *  angle (to 10.8-31.9 degrees, against 32.7-43.2 with 1), so it is not the
+     *  default. 0: no vertex is ever removed. */
     CVM_OPT_DUAL_TOPOLOGY = 509,
     /** Merge tolerance, a fraction of the local ideal dual edge l / sqrt(3), default
      *  0.1, bounds [0, 1]; 0 merges nothing. l at an edge is the mean of the local
@@ -1259,9 +1261,9 @@ CVM_API cvm_status cvm_mesh_copy_dual_merge_groups(cvm_index *dst, size_t dst_le
  * every weight is reset to 0). No vertex is added, input points are never
  * removed, segments and regions are kept. The run stops when no triangle is
  * non-compliant or weak, a sweep moves nothing, or at CVM_OPT_DUAL_MAX_SWEEPS;
- * once every triangle is compliant, after 8 sweeps in which neither the
+ * once every triangle is compliant, after 4 sweeps in which neither the
  * smallest angle rose by 0.05 degrees nor the weak triangles fell 1% below
- * their last low, the target angle is raised by 5 degrees (twice, up to 60) and
+ * their last low, the target angle is raised by 5 degrees (once, up to 60) and
  * the run ends at the next such stall. It returns the best state it met (fewest
  * non-compliant triangles, then the largest smallest angle): that state's
  * positions and weights and their regular triangulation. The report of the run

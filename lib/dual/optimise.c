@@ -55,10 +55,10 @@
 #define BATCH 256
 #define DEG_HIGH_DEG 47.0 /* average corner angle that calls for degree repair */
 #define DEG_SWEEPS 10     /* degree repair after the first DEG_SWEEPS sweeps only */
-#define PATIENCE 8        /* sweeps without progress before the run stops */
-#define PUSHES 2
+#define PATIENCE 4        /* sweeps without progress before the run stops */
+#define PUSHES 1          /* target raises before the run ends */
 #define PROGRESS_DEG 0.05 /* smallest-angle gain over PATIENCE sweeps that keeps the run going */
-#define PUSH_DEG 5.0      /* the second phase's target angle is the option's + PUSH_DEG */
+#define PUSH_DEG 5.0      /* each raise of the target angle, degrees */
 #define BEST_EPS_DEG 1e-3 /* smallest angle gain that makes a state the new best, degrees */
 
 typedef struct dopt {
