@@ -491,8 +491,9 @@ typedef enum cvm_option {
      *  When the run stalls it raises the target by 5 degrees once (see
      *  cvm_mesh_optimise_dual()). Measured (tests/bench/bench_dual.py, frontal
      *  meshes): with 40 and the raise the smallest angle ends at 39.8-43.2 degrees
-     *  on square, channel, annulus and cylinder and 32.7 on the NACA 0012 (without
-     *  the raise: 38.4-40.0 and 32.6).
+     *  on square, channel, annulus and cylinder and 32.7 on the NACA 0012 (the
+     *  earlier rule, which stopped as soon as one sweep cut the weak triangles by
+     *  less than 1%: 34.9-39.9 and 32.6).
      *  0: only non-compliant triangles are visited. */
     CVM_OPT_DUAL_TARGET_ANGLE_DEG = 506,
     /** 1: input points keep their position (only their weights change); 0 (default):
