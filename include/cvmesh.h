@@ -488,6 +488,12 @@ typedef enum cvm_option {
      *  angle below it (or merged, or whose power vertex lies within half the margin of
      *  an edge) are visited too, after the non-compliant ones, and the local objective
      *  adds (1 - sin^2(angle) / sin^2(target))^2 for each triangle below it.
+     *  When the run stalls it raises the target by 5 degrees once (see
+     *  cvm_mesh_optimise_dual()). Measured (tests/bench/bench_dual.py, frontal
+     *  meshes): with 40 and the raise the smallest angle ends at 39.8-43.2 degrees
+     *  on square, channel, annulus and cylinder and 32.7 on the NACA 0012 (the
+     *  earlier rule, which stopped as soon as one sweep cut the weak triangles by
+     *  less than 1%: 34.9-39.9 and 32.6).
      *  0: only non-compliant triangles are visited. */
     CVM_OPT_DUAL_TARGET_ANGLE_DEG = 506,
     /** 1: input points keep their position (only their weights change); 0 (default):
@@ -497,6 +503,31 @@ typedef enum cvm_option {
      *  collinear segments (exact orient2d); corners, segment ends and convex-hull
      *  vertices of unconstrained hulls never move. Integer, [0, 1]. */
     CVM_OPT_DUAL_KEEP_INPUT_POINTS = 507,
+    /** Layer priority c of the dual optimiser, default 1, bounds [0, 100]. The score
+     *  of a non-compliant triangle is F = L |C - V| with L = 1 + c / (1 + layer):
+     *  layer 0 are the domain triangles with a vertex on the domain boundary, layer
+     *  k + 1 the domain triangles sharing an edge with layer k and not in a lower
+     *  layer (breadth-first over triangles; a triangle the search never reaches has
+     *  L = 1). Higher scores are visited first, so c > 0 works from the boundary
+     *  inwards; c = 0 orders by |C - V| alone. Recomputed each sweep. */
+    CVM_OPT_DUAL_LAYER_PRIORITY = 508,
+    /** Vertex removal by the dual optimiser, integer, [0, 2], default 1. 1: a Steiner
+     *  vertex whose power cell vanished (the blocking corner of an illegal edge no
+     *  flip can fix) is removed, counted in CVM_MEASURE_DUAL_OPT_REMOVED_VANISHED,
+     *  instead of being kept by raising its weight; input points and vertices on a
+     *  segment, the hull or a region border are never removed (their weight is raised
+     *  as with 0). Removal flips the vertex's edges away (exact orient2d) and ends
+     *  with the 3-to-1 flip; the remaining vertices keep their order and are
+     *  renumbered (markers and attributes follow). 2: also a degree repair after each
+     *  of the first 10 sweeps: around every vertex whose corners average under 47
+     *  degrees (degree 8 or more inside) and that touches a triangle below
+     *  CVM_OPT_DUAL_TARGET_ANGLE_DEG, its removable Steiner neighbour of least degree
+     *  is removed, and interior Steiner vertices of degree 4 or less are removed
+     *  (CVM_MEASURE_DUAL_OPT_REMOVED_DEGREE). Experimental: measured on the shared
+     *  geometries (frontal meshes, tests/bench/bench_dual.c) it lowers the minimum
+     *  angle (to 10.8-31.9 degrees, against 32.7-43.2 with 1), so it is not the
+     *  default. 0: no vertex is ever removed. */
+    CVM_OPT_DUAL_TOPOLOGY = 509,
     /** Merge tolerance, a fraction of the local ideal dual edge l / sqrt(3), default
      *  0.1, bounds [0, 1]; 0 merges nothing. l at an edge is the mean of the local
      *  sizes of its two ends, each the mean length of the vertex's edges (taken from
@@ -987,9 +1018,9 @@ CVM_API cvm_status cvm_mesh_copy_triangle_attributes(double *dst, size_t dst_len
  * more than the lowest layer at its two ends. So a triangle on a front segment
  * has 0.x or 1.0, the next layer 1.x or 2.x, and so on; -1 where no front reached.
  * Every value is -1 when the last cvm_mesh_refine() was not CVM_ALGO_AFLR (or
- * none ran, or it failed). The values belong to the mesh as refined; later
- * changes of its triangles (cvm_mesh_set_weights() flips) keep each triangle
- * slot's value.
+ * none ran, or it failed), and after any later call that changes the triangles
+ * (cvm_mesh_set_weights(), cvm_mesh_insert_points(), cvm_mesh_optimise_dual()):
+ * the values belong to the mesh as refined.
  *
  * @param dst      count(CVM_ENT_TRIANGLE) doubles; NULL only with dst_len 0.
  * @param dst_len  entries available in dst.
@@ -1071,8 +1102,8 @@ CVM_API cvm_status cvm_mesh_write(cvm_mesh *m, const char *path);
  * and CVM_MEASURE_VANISHED_VERTICES counts such vertices. When that count is 0
  * the mesh is the (constrained) regular triangulation and cvm_mesh_check()
  * verifies it with the exact power test; otherwise cvm_mesh_check() reports
- * the illegal edges (CVM_E_INTERNAL). Removing such vertices is left to the
- * dual optimiser (a later version).
+ * the illegal edges (CVM_E_INTERNAL). cvm_mesh_optimise_dual() removes such
+ * vertices when they are removable Steiner points (CVM_OPT_DUAL_TOPOLOGY).
  *
  * @param m      mesh handle, triangulated; not NULL.
  * @param w      count weights, one per vertex in CVM_ENT_VERTEX order; NULL with
@@ -1244,7 +1275,8 @@ CVM_API cvm_status cvm_mesh_copy_dual_merge_groups(cvm_index *dst, size_t dst_le
  * contains its power vertex or is merged (CVM_OPT_DUAL_MERGE_TOL), and dual
  * edges are not tiny. Per triangle k the score is F_k = W_k L_k |C_k - V_k|
  * (centroid C, power vertex V; W_k = 0 when V lies in k, decided exactly, or k is
- * merged, else 1; L_k = 2 for triangles touching the domain boundary, 1 inside).
+ * merged, else 1; L_k = 1 + c / (1 + layer_k), c = CVM_OPT_DUAL_LAYER_PRIORITY,
+ * layer_k the breadth-first layer of k from the boundary, see there).
  * Each sweep sorts the triangles with F > 0 worst first (then the "weak" ones of
  * CVM_OPT_DUAL_TARGET_ANGLE_DEG) into min(20, N/25) bins, shuffled within a bin
  * (stream keyed by CVM_OPT_SEED and the sweep), and solves each of their vertices
@@ -1257,12 +1289,20 @@ CVM_API cvm_status cvm_mesh_copy_dual_merge_groups(cvm_index *dst, size_t dst_le
  * rejected when a star triangle would not be strictly counter-clockwise (exact
  * orient2d), an angle would drop below CVM_OPT_DUAL_MIN_ANGLE_DEG (see there), or
  * the vertex's power cell in its star would be empty. After each sweep, Lawson
- * flips under the exact power test restore the regular triangulation; a vertex
- * whose power cell vanished gets its weight raised until none vanishes (after 8
- * rounds every weight is reset to 0). No vertex is added or removed, segments and
- * regions are kept. The run stops when no triangle is non-compliant, a sweep
- * moves nothing, or at CVM_OPT_DUAL_MAX_SWEEPS. The report of the run is
- * CVM_MEASURE_DUAL_OPT_*.
+ * flips under the exact power test restore the regular triangulation; a Steiner
+ * vertex whose power cell vanished is removed (CVM_OPT_DUAL_TOPOLOGY, reported in
+ * CVM_MEASURE_DUAL_OPT_REMOVED_VANISHED; the remaining vertices are renumbered in
+ * order), any other gets its weight raised until none vanishes (after 8 rounds
+ * every weight is reset to 0). No vertex is added, input points are never
+ * removed, segments and regions are kept. The run stops when no triangle is
+ * non-compliant or weak, a sweep moves nothing, or at CVM_OPT_DUAL_MAX_SWEEPS;
+ * once every triangle is compliant, after 4 sweeps in which neither the
+ * smallest angle rose by 0.05 degrees nor the weak triangles fell 1% below
+ * their last low, the target angle is raised by 5 degrees (once, up to 60) and
+ * the run ends at the next such stall. It returns the best state it met (fewest
+ * non-compliant triangles, then the largest smallest angle): that state's
+ * positions and weights and their regular triangulation. The report of the run
+ * is CVM_MEASURE_DUAL_OPT_*.
  *
  * @param m       mesh handle, triangulated; not NULL. Existing weights are the start.
  * @param sizing  local size for the solver's step lengths; may be NULL: then the
@@ -1309,8 +1349,10 @@ typedef enum cvm_measure {
                                              (an angle > 90 degrees: not well-centred) */
     CVM_MEASURE_DEGREE6_PCT = 5,        /**< % of interior vertices of degree 6 (0 without
                                              interior vertices) */
-    CVM_MEASURE_MIN_DUAL_EDGE_RATIO = 6,/**< smallest Voronoi edge length over its primal edge
-                                             length, over interior edges (0 without any) */
+    CVM_MEASURE_MIN_DUAL_EDGE_RATIO = 6,/**< smallest power-dual edge length (between the power
+                                             vertices of the two triangles; the Voronoi edge
+                                             without weights) over its primal edge length,
+                                             over interior edges (0 without any) */
     CVM_MEASURE_MIN_EDGE = 7,           /**< shortest edge length */
     CVM_MEASURE_MAX_EDGE = 8,           /**< longest edge length */
     CVM_MEASURE_AREA = 9,               /**< total area */
@@ -1372,7 +1414,11 @@ typedef enum cvm_measure {
     CVM_MEASURE_DUAL_OPT_FLIPS = 44,    /**< flips restoring the regular triangulation */
     CVM_MEASURE_DUAL_OPT_WEIGHT_FIXES = 45, /**< weights raised so that no power cell vanished
                                              (vertices removed: always 0, none are) */
-    CVM_MEASURE_DUAL_OPT_SECONDS = 46   /**< wall time of the run, seconds (not deterministic) */
+    CVM_MEASURE_DUAL_OPT_SECONDS = 46,  /**< wall time of the run, seconds (not deterministic) */
+    CVM_MEASURE_DUAL_OPT_REMOVED_VANISHED = 47, /**< Steiner vertices removed because their
+                                             power cell vanished (CVM_OPT_DUAL_TOPOLOGY) */
+    CVM_MEASURE_DUAL_OPT_REMOVED_DEGREE = 48 /**< Steiner vertices removed by the degree
+                                             repair (CVM_OPT_DUAL_TOPOLOGY) */
 } cvm_measure;
 
 /**

@@ -37,7 +37,7 @@ struct cvm_mesh {
     size_t n_front_marks;
 
     /* dual optimisation (lib/api/optimise.c) */
-    double dual_opt_report[7]; /* the last cvm_mesh_optimise_dual(): CVM_MEASURE_DUAL_OPT_* */
+    double dual_opt_report[9]; /* the last cvm_mesh_optimise_dual(): CVM_MEASURE_DUAL_OPT_* */
     double *tlayer;          /* AFLR layer index per triangle slot of tri, or NULL */
     size_t n_tlayer;         /* tri.nt when tlayer was made (stale when it differs) */
 };
@@ -54,6 +54,9 @@ double cvm__opt(const cvm_mesh *m, cvm_option key);
 
 /* The triangle holding point p (a hole or region seed), or -1 outside the triangulation. */
 int32_t cvm__mesh_seed_triangle(cvm_mesh *m, const double *p);
+
+/* Forget the AFLR layer indices (the triangles they belong to are changing). */
+void cvm__mesh_forget_layers(cvm_mesh *m);
 
 /* Forget the triangulation (input kept). */
 void cvm__mesh_drop_output(cvm_mesh *m);

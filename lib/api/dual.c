@@ -66,6 +66,7 @@ cvm_status cvm_mesh_set_weights(cvm_mesh *m, const double *w, size_t count)
     if (!m)
         return CVM_E_NULL_ARG;
     CVM__BEGIN(m);
+    cvm__mesh_forget_layers(m);
     T = &m->tri;
     if (!w && count)
         return cvm__error(&m->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "w is NULL");

@@ -45,6 +45,13 @@ cvm_status cvm_mesh_create_with_allocator(cvm_mesh **out, cvm_malloc_fn alloc_fn
     return create(out, &proto);
 }
 
+void cvm__mesh_forget_layers(cvm_mesh *m)
+{
+    cvm__free(&m->ctx, m->tlayer);
+    m->tlayer = NULL;
+    m->n_tlayer = 0;
+}
+
 void cvm__mesh_drop_output(cvm_mesh *m)
 {
     cvm__tri2_clear(&m->tri);

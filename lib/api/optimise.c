@@ -6,7 +6,8 @@
 #include "dual/dual_internal.h"
 #include "refine/refine_internal.h"
 
-enum { REP_SWEEPS, REP_BEFORE, REP_AFTER, REP_MOVES, REP_FLIPS, REP_FIXES, REP_SECONDS };
+enum { REP_SWEEPS, REP_BEFORE, REP_AFTER, REP_MOVES, REP_FLIPS, REP_FIXES, REP_SECONDS,
+       REP_REMOVED_VANISHED, REP_REMOVED_DEGREE };
 
 typedef struct size_payload {
     const cvm_sizing *sizing;
@@ -29,15 +30,36 @@ static size_t input_vertices(const cvm_mesh *m)
     return n;
 }
 
+/* The optimiser removed vertices (vmap: old id -> new id or -1, nv0 entries):
+ * renumber the per-vertex markers and attributes the same way. Removed
+ * vertices are Steiner points, so input_map is unchanged. */
+static void drop_vertex_data(cvm_mesh *m, const int32_t *vmap, size_t nv0)
+{
+    size_t v, na = m->vattr ? m->in.nattr : 0;
+    for (v = 0; v < nv0; v++) {
+        size_t n;
+        if (vmap[v] < 0)
+            continue;
+        n = (size_t)vmap[v]; /* n <= v: in place */
+        if (m->vmark)
+            m->vmark[n] = m->vmark[v];
+        if (na)
+            memmove(m->vattr + n * na, m->vattr + v * na, na * sizeof *m->vattr);
+    }
+}
+
 cvm_status cvm_mesh_optimise_dual(cvm_mesh *m, const cvm_sizing *sizing)
 {
     cvm__dual_opt_params p;
     cvm__dual_opt_report rep;
     size_payload sp;
     cvm_status s;
+    int32_t *vmap = NULL;
+    size_t nv0;
     if (!m)
         return CVM_E_NULL_ARG;
     CVM__BEGIN(m);
+    cvm__mesh_forget_layers(m);
     if (!m->triangulated || !cvm__domain_triangles(&m->tri))
         return cvm__error(&m->ctx, CVM_E_STATE, CVM_ENT_NONE, -1,
                           "no triangulation: call cvm_mesh_triangulate() first");
@@ -50,9 +72,19 @@ cvm_status cvm_mesh_optimise_dual(cvm_mesh *m, const cvm_sizing *sizing)
     p.pattern_budget = (int)cvm__opt(m, CVM_OPT_DUAL_PATTERN_BUDGET);
     p.margin = cvm__opt(m, CVM_OPT_DUAL_MARGIN);
     p.merge_tol = cvm__opt(m, CVM_OPT_DUAL_MERGE_TOL);
+    p.layer_priority = cvm__opt(m, CVM_OPT_DUAL_LAYER_PRIORITY);
     p.seed = (uint64_t)cvm__opt(m, CVM_OPT_SEED);
     p.threads = (int)cvm__opt(m, CVM_OPT_THREADS);
     p.n_fixed = cvm__opt(m, CVM_OPT_DUAL_KEEP_INPUT_POINTS) != 0 ? input_vertices(m) : 0;
+    p.n_input = input_vertices(m);
+    p.topology = (int)cvm__opt(m, CVM_OPT_DUAL_TOPOLOGY);
+    nv0 = m->tri.nv;
+    if (p.topology) {
+        vmap = cvm__malloc(&m->ctx, (nv0 + 1) * sizeof *vmap);
+        if (!vmap)
+            return cvm__nomem(&m->ctx);
+        p.vmap = vmap;
+    }
     if (!cvm__sizing_is_empty(sizing)) {
         sp.sizing = sizing;
         sp.err = &m->ctx;
@@ -62,6 +94,9 @@ cvm_status cvm_mesh_optimise_dual(cvm_mesh *m, const cvm_sizing *sizing)
     memset(m->dual_opt_report, 0, sizeof m->dual_opt_report);
     cvm__run_begin(&m->ctx, cvm__opt(m, CVM_OPT_TIME_LIMIT_S));
     s = cvm__dual_optimise(&m->tri, &p, &rep);
+    if (vmap && m->tri.nv < nv0)
+        drop_vertex_data(m, vmap, nv0);
+    cvm__free(&m->ctx, vmap);
     m->dual_opt_report[REP_SWEEPS] = (double)rep.sweeps;
     m->dual_opt_report[REP_BEFORE] = rep.nc_before_pct;
     m->dual_opt_report[REP_AFTER] = rep.nc_after_pct;
@@ -69,6 +104,8 @@ cvm_status cvm_mesh_optimise_dual(cvm_mesh *m, const cvm_sizing *sizing)
     m->dual_opt_report[REP_FLIPS] = (double)rep.flips;
     m->dual_opt_report[REP_FIXES] = (double)rep.weight_fixes;
     m->dual_opt_report[REP_SECONDS] = rep.seconds;
+    m->dual_opt_report[REP_REMOVED_VANISHED] = (double)rep.removed_vanished;
+    m->dual_opt_report[REP_REMOVED_DEGREE] = (double)rep.removed_degree;
     switch (s) {
     case CVM_OK:
         return CVM_OK;
@@ -216,7 +253,7 @@ cvm_status cvm__optimise_measure(double *out, cvm_mesh *m, cvm_measure which)
     double merged, nc, ncb;
     cvm_status s;
     if ((int)which >= (int)CVM_MEASURE_DUAL_OPT_SWEEPS &&
-        (int)which <= (int)CVM_MEASURE_DUAL_OPT_SECONDS) {
+        (int)which <= (int)CVM_MEASURE_DUAL_OPT_REMOVED_DEGREE) {
         *out = m->dual_opt_report[(int)which - (int)CVM_MEASURE_DUAL_OPT_SWEEPS];
         return CVM_OK;
     }

@@ -10,12 +10,14 @@
  * its edge, is not counted. Interior vertices are vertices of domain
  * triangles that lie on no boundary edge of the domain; interior edges have a
  * domain triangle on both sides (constrained or not). The dual edge of an
- * interior edge joins the circumcentres of its two triangles.
+ * interior edge joins the power vertices of its two triangles (the
+ * circumcentres when no weights are set): the power dual.
  */
 #include <math.h>
 #include <string.h>
 
 #include "output_internal.h"
+#include "dual/dual_internal.h"
 
 #define RAD2DEG (180.0 / 3.14159265358979323846)
 #define NBIN_ANGLE 18
@@ -131,18 +133,9 @@ static cvm_status degree_stats(cvm_mesh *m, double *hist, size_t *n_interior)
     return CVM_OK;
 }
 
-static void circumcentre(const cvm__tri2 *T, size_t t, double *cc)
-{
-    const double *a = T->xy + 2 * (size_t)T->tv[3 * t];
-    const double *b = T->xy + 2 * (size_t)T->tv[3 * t + 1];
-    const double *c = T->xy + 2 * (size_t)T->tv[3 * t + 2];
-    double bx = b[0] - a[0], by = b[1] - a[1], cx = c[0] - a[0], cy = c[1] - a[1];
-    double d = 2.0 * (bx * cy - by * cx), bb = bx * bx + by * by, ccn = cx * cx + cy * cy;
-    cc[0] = a[0] + (cy * bb - by * ccn) / d;
-    cc[1] = a[1] + (bx * ccn - cx * bb) / d;
-}
-
-/* Smallest |dual edge| / |primal edge| over interior edges; 0 when there is none. */
+/* Smallest |dual edge| / |primal edge| over interior edges; 0 when there is none.
+ * The dual edge joins the power vertices of the two triangles (the
+ * circumcentres when the mesh has no weights). */
 static double dual_ratio(const cvm__tri2 *T)
 {
     double best = HUGE_VAL;
@@ -160,10 +153,10 @@ static double dual_ratio(const cvm__tri2 *T)
             if (u < 0 || (size_t)u < t || !cvm__tri2_in_domain(T, u))
                 continue;
             if (!have) {
-                circumcentre(T, t, ct);
+                cvm__dual_tri_vertex(T, (int32_t)t, ct);
                 have = 1;
             }
-            circumcentre(T, (size_t)u, cu);
+            cvm__dual_tri_vertex(T, u, cu);
             p = T->xy + 2 * (size_t)T->tv[3 * t + (size_t)(j + 1) % 3];
             q = T->xy + 2 * (size_t)T->tv[3 * t + (size_t)(j + 2) % 3];
             r = hypot(ct[0] - cu[0], ct[1] - cu[1]) / hypot(p[0] - q[0], p[1] - q[1]);

@@ -301,6 +301,7 @@ cvm_status cvm_mesh_insert_points(cvm_index *ids_out, cvm_mesh *m, const double 
     if (!m)
         return CVM_E_NULL_ARG;
     CVM__BEGIN(m);
+    cvm__mesh_forget_layers(m);
     T = &m->tri;
     if (!xy && count > 0)
         return cvm__error(&m->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "xy is NULL");

@@ -145,6 +145,8 @@ static void print_dual_report(FILE *f, cvm_mesh *m)
         {CVM_MEASURE_DUAL_OPT_MOVES, "moves", "%.0f"},
         {CVM_MEASURE_DUAL_OPT_FLIPS, "flips", "%.0f"},
         {CVM_MEASURE_DUAL_OPT_WEIGHT_FIXES, "weight fixes", "%.0f"},
+        {CVM_MEASURE_DUAL_OPT_REMOVED_VANISHED, "removed (vanished)", "%.0f"},
+        {CVM_MEASURE_DUAL_OPT_REMOVED_DEGREE, "removed (degree repair)", "%.0f"},
         {CVM_MEASURE_DUAL_OPT_SECONDS, "optimisation time", "%.3f s"},
     };
     size_t i;

@@ -68,7 +68,26 @@ int cvm__dual_tri_status(const cvm__tri2 *T, const double *vsize, double tol, co
 cvm_status cvm__dual_merge_groups(cvm__ctx *ctx, const cvm__tri2 *T, const double *vsize, double tol,
                                   const double *V, int32_t *group);
 
-/* ---- the dual optimiser (optimise*.c) ---- */
+/* ---- the dual optimiser (optimise*.c, topology.c) ---- */
+
+/* 1 when vertex v can be removed by cvm__dual_remove_vertex: it has at least
+ * three triangles, all domain triangles of one region, and none of its edges
+ * is constrained (so it is no hull, segment or region-border vertex); its
+ * number of triangles into *deg (may be NULL). */
+int cvm__dual_removable(const cvm__tri2 *T, int32_t v, size_t *deg);
+
+/* Remove v (see cvm__dual_removable) by flips of its edges down to three
+ * triangles and the 3-to-1 flip (topology.c); avoid: a vertex that should
+ * gain no edge (-1: none). 1 removed (v then has vtri -1; the triangulation
+ * is valid, possibly not regular), 0 not removable. Exact orient2d. */
+int cvm__dual_remove_vertex(cvm__tri2 *T, int32_t v, int32_t avoid);
+
+/* Layer of every slot of T: 0 for the domain triangles with a vertex flagged
+ * in vbnd (T->nv entries), k + 1 for the domain triangles sharing an edge with
+ * a layer-k triangle and in no lower layer (breadth-first), INT32_MAX for
+ * domain triangles never reached and for every other slot. queue: scratch of
+ * T->nt entries. Deterministic (slot order). */
+void cvm__dual_layers(const cvm__tri2 *T, const uint8_t *vbnd, int32_t *layer, int32_t *queue);
 
 enum { CVM__DUAL_SOLVER_PATTERN = 1, CVM__DUAL_SOLVER_CUCKOO = 2 };
 
@@ -85,10 +104,18 @@ typedef struct cvm__dual_opt_params {
     int pattern_budget;     /* objective evaluations per vertex (pattern search) */
     double margin;          /* power vertex pushed this fraction of each edge inside */
     double merge_tol;       /* fraction of l / sqrt(3) */
+    double layer_priority;  /* c of L = 1 + c / (1 + layer) */
     uint64_t seed;
     int threads;            /* OpenMP threads for the local problems (0: default) */
     size_t n_fixed;         /* vertices 0..n_fixed-1 keep their position (input points
                                with CVM_OPT_DUAL_KEEP_INPUT_POINTS), else 0 */
+    size_t n_input;         /* vertices 0..n_input-1 are input points: never removed */
+    int topology;           /* CVM_OPT_DUAL_TOPOLOGY: 1 vanished vertices removed, 2 and
+                               degree repair, 0 no vertex removed */
+    int32_t *vmap;          /* T->nv entries (the count at the call), needed when
+                               topology is 1: on return old vertex id -> new id, -1
+                               for a removed vertex (T's vertices are renumbered in
+                               order by cvm__tri2_compact) */
     cvm__dual_size_fn size_fn; /* NULL: sizes from the mesh (cvm__dual_mesh_sizes) */
     void *size_payload;
 } cvm__dual_opt_params;
@@ -99,6 +126,8 @@ typedef struct cvm__dual_opt_report {
     size_t moves;           /* accepted local moves */
     size_t flips;           /* flips restoring the regular triangulation */
     size_t weight_fixes;    /* weights raised so that no vertex vanishes */
+    size_t removed_vanished; /* vertices removed because their power cell vanished */
+    size_t removed_degree;  /* vertices removed to repair a vertex degree */
     double seconds;
 } cvm__dual_opt_report;
 

@@ -6,8 +6,9 @@
  *
  * Score of domain triangle k: F_k = W_k L_k |C_k - V_k| (centroid C, power
  * vertex V); W_k = 1 when V lies outside k (exact cvm__power_side2d) and k
- * cannot be merged (merge.c), else 0; L_k = 2 when k touches the domain
- * boundary, 1 inside (boundary cells first). Within a sweep the topology is
+ * cannot be merged (merge.c), else 0; L_k = 1 + c / (1 + layer_k) with c the
+ * layer priority and layer_k the breadth-first layer of k from the boundary
+ * (cvm__dual_layers; boundary cells first). Within a sweep the topology is
  * fixed and only coordinates and weights change; the triangles with F > 0 are
  * sorted by F (worst first, ties by slot), cut into min(20, N/25) bins of equal
  * count and shuffled within each bin by a stream keyed by (seed, sweep); each
@@ -15,12 +16,22 @@
  * their neighbours, whose merge state depends on it) are re-scored at once.
  * After the sweep, Lawson flips under the exact power test restore the
  * regular triangulation; a vertex whose power cell vanished (the blocking
- * corner of an unflippable illegal edge) gets its weight raised (by 0.1,
+ * corner of an unflippable illegal edge) is removed when it is a removable
+ * Steiner vertex and p->topology is set (topology.c; then compact() renumbers
+ * the vertices and carries vsize, vbnd and p->vmap along); any other gets its
+ * weight raised (by 0.1,
  * 0.2, 0.4 ... times its squared local size) until none vanishes; after 8
  * rounds every weight is reset to 0, which always leaves a valid
- * (constrained Delaunay) mesh. No vertex is ever removed. The run stops when
- * nothing is non-compliant, a sweep moves nothing, or at the sweep limit, the
- * time limit or cancellation.
+ * (constrained Delaunay) mesh. With p->topology 2, repair_degrees() removes
+ * vertices after the first sweeps (experimental). The run stops when
+ * nothing is non-compliant or weak, a sweep moves nothing, or at the sweep
+ * limit, the time limit or cancellation; once all is compliant, PATIENCE
+ * sweeps without progress (smallest angle up by PROGRESS_DEG, or the weak
+ * count 1% below its last low) raise the target angle by PUSH_DEG (PUSHES
+ * times), then end the run. keep_best() remembers the best state (fewest
+ * non-compliant, then largest smallest angle) and end_at_best() returns to it
+ * at a normal end: a later sweep can lower the smallest angle, since moves
+ * trade angles against the penalty of others.
  *
  * Parallel and deterministic: the order above is cut into batches of vertices
  * no two of which are equal or share a triangle's vertex (so their local
@@ -42,6 +53,13 @@
 
 #define FIX_ROUNDS 8
 #define BATCH 256
+#define DEG_HIGH_DEG 47.0 /* average corner angle that calls for degree repair */
+#define DEG_SWEEPS 10     /* degree repair after the first DEG_SWEEPS sweeps only */
+#define PATIENCE 4        /* sweeps without progress before the run stops */
+#define PUSHES 1          /* target raises before the run ends */
+#define PROGRESS_DEG 0.05 /* smallest-angle gain over PATIENCE sweeps that keeps the run going */
+#define PUSH_DEG 5.0      /* each raise of the target angle, degrees */
+#define BEST_EPS_DEG 1e-3 /* smallest angle gain that makes a state the new best, degrees */
 
 typedef struct dopt {
     cvm__tri2 *T;
@@ -52,15 +70,22 @@ typedef struct dopt {
     double *V;       /* 2 per slot */
     double *F;       /* per slot */
     uint8_t *st;     /* per slot: cvm__dual_tri_status */
+    int32_t *layer;  /* per slot: cvm__dual_layers */
     uint8_t *weak;   /* per slot: compliant but an angle below the target, merged, or the
                         power vertex within half the margin of an edge */
     int32_t *list;   /* slots to visit */
     int32_t *star;   /* scratch: sort buffer, then the stars of a batch (disjoint) */
     struct job *jobs; /* BATCH entries */
     uint32_t *stamp; /* nv: batch stamp of the vertices a batch holds or touches */
+    uint8_t *gone;   /* nv: removed, not yet compacted */
+    int32_t *dup, *map2; /* nv: scratch of compact() */
+    size_t nv0;      /* vertex count at the call (vmap's length) */
+    int topo;        /* vertex removal on (p->topology with p->vmap) */
     uint32_t cur_stamp;
     int nthreads;
     double *save;    /* 3 per vertex: x, y, w at the start of a sweep */
+    double *best;    /* 3 per vertex: x, y, w of the best state (keep_best) */
+    size_t best_nv, best_removed;
     size_t nc, nc0;  /* current and initial non-compliant counts */
     size_t nweak;
     double sin2_min, sin2_target;
@@ -111,6 +136,30 @@ static void boundary_flags(dopt *D)
     }
 }
 
+void cvm__dual_layers(const cvm__tri2 *T, const uint8_t *vbnd, int32_t *layer, int32_t *queue)
+{
+    size_t t, head = 0, tail = 0;
+    int j;
+    for (t = 0; t < T->nt; t++) {
+        const int32_t *v = T->tv + 3 * t;
+        layer[t] = INT32_MAX;
+        if (cvm__tri2_in_domain(T, (int32_t)t) && (vbnd[v[0]] || vbnd[v[1]] || vbnd[v[2]])) {
+            layer[t] = 0;
+            queue[tail++] = (int32_t)t;
+        }
+    }
+    while (head < tail) {
+        int32_t x = queue[head++];
+        for (j = 0; j < 3; j++) {
+            int32_t a = T->tn[3 * (size_t)x + (size_t)j], u = a < 0 ? -1 : a / 3;
+            if (u < 0 || layer[u] != INT32_MAX || !cvm__tri2_in_domain(T, u))
+                continue;
+            layer[u] = layer[x] + 1;
+            queue[tail++] = u;
+        }
+    }
+}
+
 static double score(const dopt *D, int32_t t)
 {
     const cvm__tri2 *T = D->T;
@@ -120,7 +169,7 @@ static double score(const dopt *D, int32_t t)
         return 0.0;
     cx = (T->xy[2 * (size_t)v[0]] + T->xy[2 * (size_t)v[1]] + T->xy[2 * (size_t)v[2]]) / 3.0;
     cy = (T->xy[2 * (size_t)v[0] + 1] + T->xy[2 * (size_t)v[1] + 1] + T->xy[2 * (size_t)v[2] + 1]) / 3.0;
-    prio = D->vbnd[v[0]] || D->vbnd[v[1]] || D->vbnd[v[2]] ? 2.0 : 1.0;
+    prio = D->layer[t] == INT32_MAX ? 1.0 : 1.0 + D->p->layer_priority / (1.0 + (double)D->layer[t]);
     return prio * hypot(cx - D->V[2 * (size_t)t], cy - D->V[2 * (size_t)t + 1]);
 }
 
@@ -367,6 +416,130 @@ static void apply_job(dopt *D, const job *J)
     }
 }
 
+/* Drop the removed vertices (gone) from T's vertex arrays, renumbering the
+ * rest in order; carry vsize, vbnd and the caller's map along. */
+static void compact(dopt *D)
+{
+    cvm__tri2 *T = D->T;
+    size_t v, nv = T->nv;
+    for (v = 0; v < nv; v++)
+        D->dup[v] = D->gone[v] ? 0 : -1; /* vertex 0 is an input point: never gone */
+    cvm__tri2_compact(T, D->dup, D->map2);
+    for (v = 0; v < nv; v++) {
+        int32_t n = D->map2[v];
+        if (D->gone[v]) {
+            D->map2[v] = -1;
+            continue;
+        }
+        D->vsize[n] = D->vsize[v]; /* n <= v: in place */
+        D->vbnd[n] = D->vbnd[v];
+    }
+    memset(D->gone, 0, nv);
+    for (v = 0; v < D->nv0; v++)
+        if (D->p->vmap[v] >= 0)
+            D->p->vmap[v] = D->map2[D->p->vmap[v]];
+}
+
+/* Average angle, in degrees, of vertex v over its domain triangles (each
+ * corner's angle, plain doubles) into *avg; their number is returned. */
+static size_t corner_angles(const dopt *D, int32_t v, double *avg)
+{
+    const cvm__tri2 *T = D->T;
+    int32_t t0 = T->vtri[v], t = t0;
+    size_t n = 0, k = 0;
+    double sum = 0;
+    if (t0 < 0)
+        return 0;
+    do {
+        const int32_t *tv = T->tv + 3 * (size_t)t;
+        int i = tv[0] == v ? 0 : tv[1] == v ? 1 : 2;
+        if (cvm__tri2_in_domain(T, t)) {
+            const double *p = T->xy + 2 * (size_t)v, *a = T->xy + 2 * (size_t)tv[(i + 1) % 3];
+            const double *b = T->xy + 2 * (size_t)tv[(i + 2) % 3];
+            double ux = a[0] - p[0], uy = a[1] - p[1], wx = b[0] - p[0], wy = b[1] - p[1];
+            sum += atan2(fabs(ux * wy - uy * wx), ux * wx + uy * wy);
+            n++;
+        }
+        t = T->tn[3 * (size_t)t + (size_t)(i + 1) % 3] / 3;
+    } while (t != t0 && ++k < T->nt);
+    *avg = n ? sum / (double)n * (180.0 / 3.14159265358979323846) : 0.0;
+    return n;
+}
+
+/* 1 when a domain triangle around v has an angle below the target. */
+static int star_weak(const dopt *D, int32_t v)
+{
+    const cvm__tri2 *T = D->T;
+    int32_t t0 = T->vtri[v], t = t0;
+    size_t k = 0;
+    if (t0 < 0)
+        return 0;
+    do {
+        const int32_t *tv = T->tv + 3 * (size_t)t;
+        int i = tv[0] == v ? 0 : tv[1] == v ? 1 : 2;
+        if (cvm__tri2_in_domain(T, t) && D->weak[t])
+            return 1;
+        t = T->tn[3 * (size_t)t + (size_t)(i + 1) % 3] / 3;
+    } while (t != t0 && ++k < T->nt);
+    return 0;
+}
+
+/* Degree repair (see the file comment): a vertex whose corners average less
+ * than DEG_HIGH_DEG degrees (degree 8 and more inside) and that touches a weak
+ * triangle loses its removable Steiner neighbour of least degree; an interior
+ * removable Steiner vertex of degree 4 or less is removed. One operation per
+ * neighbourhood and pass (stamps); vertices in index order. The number
+ * removed; T is then valid but maybe not regular (restore() follows). */
+static size_t repair_degrees(dopt *D)
+{
+    cvm__tri2 *T = D->T;
+    size_t v, nrem = 0;
+    D->cur_stamp++;
+    for (v = 0; v < T->nv; v++) {
+        int32_t t0 = T->vtri[v], t, best = -1;
+        size_t deg, bdeg = 0, k = 0;
+        double avg;
+        if (t0 < 0 || D->gone[v] || D->stamp[v] == D->cur_stamp)
+            continue;
+        if (v >= D->p->n_input && cvm__dual_removable(T, (int32_t)v, &deg) && deg <= 4) {
+            best = (int32_t)v;
+        } else if (corner_angles(D, (int32_t)v, &avg) && avg < DEG_HIGH_DEG && star_weak(D, (int32_t)v)) {
+            t = t0;
+            do {
+                const int32_t *tv = T->tv + 3 * (size_t)t;
+                int i = tv[0] == (int32_t)v ? 0 : tv[1] == (int32_t)v ? 1 : 2;
+                int32_t x = tv[(i + 2) % 3];
+                size_t dx;
+                if (x >= 0 && (size_t)x >= D->p->n_input && D->stamp[x] != D->cur_stamp &&
+                    cvm__dual_removable(T, x, &dx) && (best < 0 || dx < bdeg)) {
+                    best = x;
+                    bdeg = dx;
+                }
+                t = T->tn[3 * (size_t)t + (size_t)(i + 1) % 3] / 3;
+            } while (t != t0 && ++k < T->nt);
+        }
+        if (best < 0)
+            continue;
+        {
+            /* stamp the neighbourhood of best before it goes */
+            int32_t s0 = T->vtri[best], s = s0;
+            k = 0;
+            do {
+                const int32_t *tv = T->tv + 3 * (size_t)s;
+                int i = tv[0] == best ? 0 : tv[1] == best ? 1 : 2;
+                D->stamp[tv[(i + 1) % 3]] = D->cur_stamp;
+                s = T->tn[3 * (size_t)s + (size_t)(i + 1) % 3] / 3;
+            } while (s != s0 && ++k < T->nt);
+            D->stamp[v] = D->cur_stamp;
+            if (cvm__dual_remove_vertex(T, best, best == (int32_t)v ? -1 : (int32_t)v)) {
+                D->gone[best] = 1;
+                nrem++;
+            }
+        }
+    }
+    return nrem;
+}
+
 /* Make T regular again with no vanished vertex (see the file comment). */
 static cvm_status restore(dopt *D)
 {
@@ -377,6 +550,23 @@ static cvm_status restore(dopt *D)
     if ((s = cvm__tri2_make_regular(T, &nfl)))
         return s;
     D->rep->flips += nfl;
+    for (round = 0; D->topo && round < FIX_ROUNDS; round++) {
+        size_t nrem = 0;
+        if (!cvm__tri2_count_unregular(T, D->mark))
+            return CVM_OK;
+        for (v = D->p->n_input; v < T->nv; v++)
+            if (D->mark[v] && cvm__dual_remove_vertex(T, (int32_t)v, -1)) {
+                D->gone[v] = 1;
+                nrem++;
+            }
+        if (!nrem)
+            break;
+        D->rep->removed_vanished += nrem;
+        compact(D);
+        if ((s = cvm__tri2_make_regular(T, &nfl)))
+            return s;
+        D->rep->flips += nfl;
+    }
     for (round = 0; round < FIX_ROUNDS; round++) {
         if (!cvm__tri2_count_unregular(T, D->mark))
             return CVM_OK;
@@ -580,51 +770,159 @@ static cvm_status sweep(dopt *D, uint64_t k, size_t *moved_out)
     return s;
 }
 
+static double min_angle(const dopt *D);
+
+/* Go back to the best state kept by keep_best when it beats the current one
+ * and has the same vertices: its positions and weights, made regular again
+ * (the regular triangulation of a weighted point set is unique, so this is
+ * the triangulation it had). */
+static cvm_status end_at_best(dopt *D, size_t best_nc, double best_min)
+{
+    size_t v;
+    if (D->best_nv != D->T->nv || D->best_removed != D->rep->removed_vanished + D->rep->removed_degree)
+        return CVM_OK;
+    if (!(best_nc < D->nc || (best_nc == D->nc && best_min > min_angle(D) + BEST_EPS_DEG)))
+        return CVM_OK;
+    for (v = 0; v < D->T->nv; v++) {
+        D->T->xy[2 * v] = D->best[3 * v];
+        D->T->xy[2 * v + 1] = D->best[3 * v + 1];
+        D->T->w[v] = D->best[3 * v + 2];
+    }
+    return restore(D);
+}
+
+/* Smallest angle over the domain triangles, degrees (a measure). */
+static double min_angle(const dopt *D)
+{
+    const cvm__tri2 *T = D->T;
+    size_t t;
+    double best = 180.0;
+    for (t = 0; t < T->nt; t++) {
+        const int32_t *v = T->tv + 3 * t;
+        int q;
+        if (!cvm__tri2_in_domain(T, (int32_t)t))
+            continue;
+        for (q = 0; q < 3; q++) {
+            const double *P = T->xy + 2 * (size_t)v[q], *A = T->xy + 2 * (size_t)v[(q + 1) % 3];
+            const double *B = T->xy + 2 * (size_t)v[(q + 2) % 3];
+            double ux = A[0] - P[0], uy = A[1] - P[1], wx = B[0] - P[0], wy = B[1] - P[1];
+            double a = atan2(fabs(ux * wy - uy * wx), ux * wx + uy * wy) * (180.0 / 3.14159265358979323846);
+            if (a < best)
+                best = a;
+        }
+    }
+    return best;
+}
+
+/* The best state so far (see run): fewest non-compliant, then largest
+ * smallest angle. 1 when the current state is better (and is now the best). */
+static int keep_best(dopt *D, size_t *best_nc, double *best_min)
+{
+    double mn = min_angle(D);
+    size_t v;
+    if (!(D->nc < *best_nc || (D->nc == *best_nc && mn > *best_min + BEST_EPS_DEG)))
+        return 0;
+    *best_nc = D->nc;
+    *best_min = mn;
+    for (v = 0; v < D->T->nv; v++) {
+        D->best[3 * v] = D->T->xy[2 * v];
+        D->best[3 * v + 1] = D->T->xy[2 * v + 1];
+        D->best[3 * v + 2] = D->T->w[v];
+    }
+    D->best_nv = D->T->nv;
+    D->best_removed = D->rep->removed_vanished + D->rep->removed_degree;
+    return 1;
+}
+
 static cvm_status run(dopt *D)
 {
     const cvm__dual_opt_params *p = D->p;
     cvm_status s, s2;
     uint64_t k;
+    size_t best_nc = (size_t)-1, stall = 0;
+    double best_min = -1.0;
+    int phase = 0;
+    double prog_min;
+    size_t weak_low = (size_t)-1; /* fewest weak triangles at a progress mark */
     if ((s = sizes(D)))
         return s;
     boundary_flags(D);
     if ((s = restore(D)))
         return s;
+    cvm__dual_layers(D->T, D->vbnd, D->layer, D->list);
     score_all(D);
     D->nc0 = D->nc;
     D->rep->nc_before_pct = pct(D);
+    keep_best(D, &best_nc, &best_min);
+    prog_min = best_min;
     for (k = 0; k < (uint64_t)p->max_sweeps && (D->nc || D->nweak); k++) {
-        size_t moved = 0, nc_prev, nweak_prev, flips0;
+        size_t moved = 0, nc_prev, flips0, rem0;
+        int better;
         if ((s = sizes(D)))
             return s;
         boundary_flags(D);
+        cvm__dual_layers(D->T, D->vbnd, D->layer, D->list);
         score_all(D);
         if (!D->nc && !D->nweak)
             break;
         nc_prev = D->nc;
-        nweak_prev = D->nweak;
         save_state(D);
         s = sweep(D, k, &moved);
         D->rep->moves += moved;
         D->rep->sweeps++;
         flips0 = D->rep->flips;
+        rem0 = D->rep->removed_vanished;
         if ((s2 = restore(D))) {
             /* out of memory: without a flip, go back to the regular state of the
              * sweep's start; after flips the topology follows the new positions,
              * which stay (conforming, counter-clockwise, maybe not regular) */
-            if (D->rep->flips == flips0)
+            if (D->rep->flips == flips0 && D->rep->removed_vanished == rem0)
                 load_state(D);
             return s2;
         }
         if (s)
             return s;
         score_all(D);
-        /* stop when nothing moved, or when everything is compliant and the
-         * weak triangles no longer drop by 1% a sweep */
-        if (!moved || (!D->nc && !nc_prev && 100 * D->nweak >= 99 * nweak_prev))
+        if (D->topo && D->p->topology >= 2 && k < DEG_SWEEPS) {
+            size_t nrem = repair_degrees(D);
+            if (nrem) {
+                D->rep->removed_degree += nrem;
+                compact(D);
+                if ((s = restore(D)))
+                    return s;
+                score_all(D);
+                best_nc = (size_t)-1; /* the old best had other vertices */
+                keep_best(D, &best_nc, &best_min);
+                continue; /* the topology changed: sweep again */
+            }
+        }
+        keep_best(D, &best_nc, &best_min);
+        better = best_min > prog_min + PROGRESS_DEG;
+        if (better)
+            prog_min = best_min;
+        /* stop when nothing moved, or when everything is compliant and for
+         * PATIENCE sweeps neither the smallest angle improved by PROGRESS_DEG
+         * nor the weak triangles dropped 1% below their last low; then the
+         * target angle is raised (PUSHES times) before the run ends */
+        if (!moved)
             break;
+        if (!D->nc && !nc_prev) {
+            if (better || 100 * D->nweak < 99 * weak_low) {
+                stall = 0;
+                weak_low = D->nweak < weak_low ? D->nweak : weak_low;
+            } else if (++stall >= PATIENCE) {
+                double push = p->target_angle_deg + PUSH_DEG * (phase + 1);
+                if (phase >= PUSHES || !(p->target_angle_deg > 0) || push > 60.0)
+                    break;
+                /* next phase: a higher target angle; keep_best keeps the best end */
+                phase++;
+                stall = 0;
+                D->sin2_target = sin(push * 3.14159265358979323846 / 180.0);
+                D->sin2_target *= D->sin2_target;
+            }
+        }
     }
-    return CVM_OK;
+    return end_at_best(D, best_nc, best_min);
 }
 
 cvm_status cvm__dual_optimise(cvm__tri2 *T, const cvm__dual_opt_params *p, cvm__dual_opt_report *rep)
@@ -662,17 +960,29 @@ cvm_status cvm__dual_optimise(cvm__tri2 *T, const cvm__dual_opt_params *p, cvm__
     D.F = cvm__malloc(ctx, (nt + 1) * sizeof *D.F);
     D.st = cvm__calloc(ctx, nt + 1, 1);
     D.weak = cvm__calloc(ctx, nt + 1, 1);
+    D.layer = cvm__calloc(ctx, nt + 1, sizeof *D.layer);
     D.list = cvm__malloc(ctx, (nt + 1) * sizeof *D.list);
     D.star = cvm__malloc(ctx, (nt + 1) * sizeof *D.star);
     D.save = cvm__malloc(ctx, (3 * nv + 1) * sizeof *D.save);
+    D.best = cvm__malloc(ctx, (3 * nv + 1) * sizeof *D.best);
     D.jobs = cvm__malloc(ctx, BATCH * sizeof *D.jobs);
     D.stamp = cvm__calloc(ctx, nv + 1, sizeof *D.stamp);
-    if (!D.vsize || !D.vbnd || !D.mark || !D.V || !D.F || !D.st || !D.weak || !D.list || !D.star || !D.save || !D.jobs ||
-        !D.stamp)
+    D.nv0 = nv;
+    D.topo = p->topology && p->vmap;
+    if (D.topo) {
+        size_t v;
+        for (v = 0; v < nv; v++)
+            p->vmap[v] = (int32_t)v;
+        D.gone = cvm__calloc(ctx, nv + 1, 1);
+        D.dup = cvm__malloc(ctx, (nv + 1) * sizeof *D.dup);
+        D.map2 = cvm__malloc(ctx, (nv + 1) * sizeof *D.map2);
+    }
+    if (!D.vsize || !D.vbnd || !D.mark || !D.V || !D.F || !D.st || !D.weak || !D.layer || !D.list || !D.star || !D.save || !D.best || !D.jobs ||
+        !D.stamp || (D.topo && (!D.gone || !D.dup || !D.map2)))
         s = CVM_E_NOMEM;
     else
         s = run(&D);
-    if (D.V && D.st && D.weak && D.F && D.vsize && D.vbnd) {
+    if (D.V && D.st && D.weak && D.layer && D.F && D.vsize && D.vbnd) {
         score_all(&D);
         rep->nc_after_pct = pct(&D);
         if (!rep->sweeps && !D.nc0)
@@ -685,11 +995,16 @@ cvm_status cvm__dual_optimise(cvm__tri2 *T, const cvm__dual_opt_params *p, cvm__
     cvm__free(ctx, D.F);
     cvm__free(ctx, D.st);
     cvm__free(ctx, D.weak);
+    cvm__free(ctx, D.layer);
     cvm__free(ctx, D.list);
     cvm__free(ctx, D.star);
     cvm__free(ctx, D.save);
+    cvm__free(ctx, D.best);
     cvm__free(ctx, D.jobs);
     cvm__free(ctx, D.stamp);
+    cvm__free(ctx, D.gone);
+    cvm__free(ctx, D.dup);
+    cvm__free(ctx, D.map2);
     rep->seconds = cvm__now() - t0;
     return s;
 }

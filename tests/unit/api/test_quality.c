@@ -60,6 +60,20 @@ START_TEST(hexagon_is_perfectly_regular)
 }
 END_TEST
 
+/* With weights the dual edge joins power vertices: centre weight w moves the
+ * power vertex of each spoke triangle to distance (1 + w) / sqrt(3) from the
+ * centre (equal power |V|^2 - w = |V - A|^2 on the triangle's bisector), and
+ * neighbouring ones, 60 degrees apart, are that far from each other. */
+START_TEST(dual_edge_ratio_uses_power_vertices)
+{
+    cvm_mesh *m = hexagon();
+    double w[7] = {0.5, 0, 0, 0, 0, 0, 0};
+    ck_assert_int_eq(cvm_mesh_set_weights(m, w, 7), CVM_OK);
+    ck_assert_double_eq_tol(measure(m, CVM_MEASURE_MIN_DUAL_EDGE_RATIO), 1.5 / sqrt(3.0), TOL);
+    cvm_mesh_free(m);
+}
+END_TEST
+
 START_TEST(right_triangles_are_not_obtuse_but_have_zero_dual_edges)
 {
     cvm_mesh *m;
@@ -138,6 +152,7 @@ TCase *api_quality_tcase(void)
 {
     TCase *tc = tcase_create("quality");
     tcase_add_test(tc, hexagon_is_perfectly_regular);
+    tcase_add_test(tc, dual_edge_ratio_uses_power_vertices);
     tcase_add_test(tc, right_triangles_are_not_obtuse_but_have_zero_dual_edges);
     tcase_add_test(tc, flat_triangle_is_obtuse);
     tcase_add_test(tc, degree_histogram_counts_interior_vertices_only);

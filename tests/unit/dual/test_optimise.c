@@ -205,7 +205,7 @@ static void check_optimised(cvm_algorithm algo, int solver)
     ck_assert_msg(cvm_mesh_optimise_dual(m, NULL) == CVM_OK, "%s", cvm_mesh_errmsg(m));
     ck_assert_msg(cvm_mesh_check(m) == CVM_OK, "%s", cvm_mesh_errmsg(m));
     dtest_get(m, &d);
-    ck_assert_uint_eq(d.nv, d0.nv);
+    ck_assert_uint_eq(d.nv + (size_t)measure(m, CVM_MEASURE_DUAL_OPT_REMOVED_VANISHED), d0.nv);
     ck_assert_uint_eq(d.nseg, d0.nseg);
     ck_assert_int_eq(memcmp(d.seg, d0.seg, 2 * d.nseg * sizeof *d.seg), 0);
     ck_assert_uint_eq(dtest_power_violations(&d, d.w), 0);
@@ -284,6 +284,122 @@ END_TEST
 START_TEST(same_seed_gives_same_bytes_for_1_2_4_threads_cuckoo)
 {
     same_bytes(2);
+}
+END_TEST
+
+/* One sweep with layer priority c: positions, weights and triangles. */
+static void one_sweep_with_layer_priority(double c, dtest_mesh *d)
+{
+    cvm_mesh *m = refined(CVM_ALGO_DELAUNAY, 0.1);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_DUAL_MAX_SWEEPS, 1), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_THREADS, 2), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_DUAL_LAYER_PRIORITY, c), CVM_OK);
+    ck_assert_msg(cvm_mesh_optimise_dual(m, NULL) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    ck_assert_msg(cvm_mesh_check(m) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    dtest_get(m, d);
+    cvm_mesh_free(m);
+}
+
+/* The layer priority changes the visiting order, hence the outcome of one
+ * sweep (moves read the vertices moved before them), and the same priority
+ * reproduces it byte for byte. */
+START_TEST(layer_priority_changes_the_order_deterministically)
+{
+    dtest_mesh a, b, c;
+    double bad = -1;
+    cvm_mesh *m;
+    one_sweep_with_layer_priority(0, &a);
+    one_sweep_with_layer_priority(100, &b);
+    one_sweep_with_layer_priority(100, &c);
+    ck_assert_uint_eq(b.nv, c.nv);
+    ck_assert_uint_eq(b.nt, c.nt);
+    ck_assert_int_eq(memcmp(b.xy, c.xy, 2 * b.nv * sizeof *b.xy), 0);
+    ck_assert_int_eq(memcmp(b.w, c.w, b.nv * sizeof *b.w), 0);
+    ck_assert_int_eq(memcmp(b.tri, c.tri, 3 * b.nt * sizeof *b.tri), 0);
+    ck_assert_uint_eq(a.nv, b.nv);
+    ck_assert(memcmp(a.xy, b.xy, 2 * a.nv * sizeof *a.xy) != 0 || memcmp(a.w, b.w, a.nv * sizeof *a.w) != 0);
+    dtest_free(&a);
+    dtest_free(&b);
+    dtest_free(&c);
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_DUAL_LAYER_PRIORITY, -1), CVM_E_OPTION_RANGE);
+    ck_assert_int_eq(cvm_mesh_get_option(&bad, m, CVM_OPT_DUAL_LAYER_PRIORITY), CVM_OK);
+    ck_assert(bad == 1);
+    cvm_mesh_free(m);
+}
+END_TEST
+
+/* A Steiner vertex given a weight so low that its power cell vanishes is
+ * removed by the optimiser (reported), not kept by raising its weight: the
+ * vertex count drops by the reported number, input points and segments stay,
+ * and the result is the regular triangulation (independent power test). */
+START_TEST(vanished_steiner_vertex_is_removed_and_reported)
+{
+    cvm_mesh *m = refined(CVM_ALGO_FRONTAL, 0.1);
+    dtest_mesh d0, d;
+    size_t k, nin, best = 0;
+    double bd = 1e300, *w, removed;
+    int32_t *mk;
+    dtest_get(m, &d0);
+    ck_assert_int_eq(cvm_mesh_count(&nin, m, CVM_ENT_INPUT_POINT), CVM_OK);
+    for (k = nin; k < d0.nv; k++) { /* the Steiner vertex nearest (0.75, 0.25), far from segments */
+        double dd = hypot(d0.xy[2 * k] - 0.75, d0.xy[2 * k + 1] - 0.25);
+        if (dd < bd) {
+            bd = dd;
+            best = k;
+        }
+    }
+    ck_assert(bd < 0.1);
+    w = calloc(d0.nv, sizeof *w);
+    w[best] = -1.0; /* a hundred squared local sizes */
+    ck_assert_int_eq(cvm_mesh_set_weights(m, w, d0.nv), CVM_OK);
+    ck_assert_double_ge(measure(m, CVM_MEASURE_VANISHED_VERTICES), 1.0);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_DUAL_MAX_SWEEPS, 0), CVM_OK);
+    ck_assert_msg(cvm_mesh_optimise_dual(m, NULL) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    ck_assert_msg(cvm_mesh_check(m) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    removed = measure(m, CVM_MEASURE_DUAL_OPT_REMOVED_VANISHED);
+    ck_assert_double_ge(removed, 1.0);
+    ck_assert_double_eq(measure(m, CVM_MEASURE_DUAL_OPT_REMOVED_DEGREE), 0.0);
+    ck_assert_double_eq(measure(m, CVM_MEASURE_VANISHED_VERTICES), 0.0);
+    dtest_get(m, &d);
+    ck_assert_uint_eq(d.nv + (size_t)removed, d0.nv);
+    ck_assert_uint_eq(d.nseg, d0.nseg);
+    ck_assert_int_eq(memcmp(d.seg, d0.seg, 2 * d.nseg * sizeof *d.seg), 0);
+    ck_assert_uint_eq(dtest_power_violations(&d, d.w), 0);
+    for (k = 0; k < d.nv; k++) /* the removed vertex is gone, nothing else moved */
+        ck_assert(d.xy[2 * k] != d0.xy[2 * best] || d.xy[2 * k + 1] != d0.xy[2 * best + 1]);
+    for (k = 0; k < nin; k++)
+        ck_assert(d.xy[2 * k] == d0.xy[2 * k] && d.xy[2 * k + 1] == d0.xy[2 * k + 1]);
+    mk = malloc(d.nv * sizeof *mk);
+    ck_assert_int_eq(cvm_mesh_copy_markers(mk, d.nv, m, CVM_ENT_VERTEX), CVM_OK);
+    free(mk);
+    free(w);
+    dtest_free(&d0);
+    dtest_free(&d);
+    cvm_mesh_free(m);
+}
+END_TEST
+
+/* With CVM_OPT_DUAL_TOPOLOGY 0 the same vertex keeps its place (weight raised). */
+START_TEST(topology_0_keeps_every_vertex)
+{
+    cvm_mesh *m = refined(CVM_ALGO_FRONTAL, 0.1);
+    size_t nv0, nv1;
+    double *w;
+    ck_assert_int_eq(cvm_mesh_count(&nv0, m, CVM_ENT_VERTEX), CVM_OK);
+    w = calloc(nv0, sizeof *w);
+    w[nv0 - 1] = -1.0;
+    ck_assert_int_eq(cvm_mesh_set_weights(m, w, nv0), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_DUAL_TOPOLOGY, 0), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_DUAL_MAX_SWEEPS, 0), CVM_OK);
+    ck_assert_msg(cvm_mesh_optimise_dual(m, NULL) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    ck_assert_msg(cvm_mesh_check(m) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    ck_assert_int_eq(cvm_mesh_count(&nv1, m, CVM_ENT_VERTEX), CVM_OK);
+    ck_assert_uint_eq(nv1, nv0);
+    ck_assert_double_eq(measure(m, CVM_MEASURE_DUAL_OPT_REMOVED_VANISHED), 0.0);
+    ck_assert_double_eq(measure(m, CVM_MEASURE_VANISHED_VERTICES), 0.0);
+    free(w);
+    cvm_mesh_free(m);
 }
 END_TEST
 
@@ -384,6 +500,9 @@ TCase *dual_optimise_tcase(void)
     tcase_add_test(tc, optimise_delaunay_mesh_cuckoo_leaves_every_triangle_compliant);
     tcase_add_test(tc, same_seed_gives_same_bytes_for_1_2_4_threads_pattern);
     tcase_add_test(tc, same_seed_gives_same_bytes_for_1_2_4_threads_cuckoo);
+    tcase_add_test(tc, layer_priority_changes_the_order_deterministically);
+    tcase_add_test(tc, vanished_steiner_vertex_is_removed_and_reported);
+    tcase_add_test(tc, topology_0_keeps_every_vertex);
     tcase_add_test(tc, optimise_rejects_null_untriangulated_and_bad_sizing);
     tcase_add_test(tc, cancelled_run_leaves_a_valid_regular_mesh);
     tcase_add_test(tc, out_of_memory_at_every_allocation_leaves_a_valid_mesh);
