@@ -4,10 +4,10 @@
 #include "refine_internal.h"
 #include "geom/geom_internal.h"
 
-/* Accepted (Rebay's "small enough"): circumradius at most this times the local
- * size. A right isosceles triangle with legs of the local size sits at the
- * limit; the equilateral triangle of that size has 1/sqrt(3) = 0.577. */
-#define FR_ACCEPT 0.70710678118654752
+/* Accepted (Rebay's "small enough"): circumradius at most sqrt(this) times
+ * the local size. A right isosceles triangle with legs of the local size sits
+ * at the limit (0.707); the equilateral triangle of that size has 0.577. */
+#define FR_ACCEPT2 0.5
 
 static const double *fr_pt(const cvm__refiner *R, int32_t v)
 {
@@ -27,9 +27,9 @@ static double fr_size(const cvm__refiner *R, int32_t v)
     return h;
 }
 
-/* Circumradius of domain triangle t over its mean local size (*ratio; 0 when
- * there is no size) and sin^2 of its smallest angle (*sin2; 0 when it is too
- * thin for floating point). */
+/* Squared circumradius of domain triangle t over its squared mean local size
+ * (*ratio; 0 when there is no size) and sin^2 of its smallest angle (*sin2;
+ * 0 when it is too thin for floating point). */
 static void fr_measure(const cvm__refiner *R, int32_t t, double *ratio, double *sin2)
 {
     const int32_t *tv = R->T->tv + 3 * (size_t)t;
@@ -47,7 +47,7 @@ static void fr_measure(const cvm__refiner *R, int32_t t, double *ratio, double *
     }
     lmin = l0 < l1 ? (l0 < l2 ? l0 : l2) : (l1 < l2 ? l1 : l2);
     *sin2 = lmin * cross * cross / (l0 * l1 * l2);
-    *ratio = isfinite(ls) ? sqrt(l0 * l1 * l2) / (2 * cross * ls) : 0;
+    *ratio = isfinite(ls) ? l0 * l1 * l2 / (4 * cross * cross * ls * ls) : 0;
 }
 
 /* Domain triangle t is accepted: small enough and well shaped. */
@@ -55,14 +55,15 @@ static int fr_accepted(const cvm__refiner *R, int32_t t)
 {
     double ratio, sin2;
     fr_measure(R, t, &ratio, &sin2);
-    return ratio <= FR_ACCEPT && sin2 >= R->sin2_min;
+    return ratio <= FR_ACCEPT2 && sin2 >= R->sin2_min;
 }
 
 /* 1 when domain triangle t is active: too big, not exempt (a small input
  * angle subtends it) and on the front, i.e. with an edge on a segment or
  * shared with an accepted triangle. Triangles small enough but badly shaped
  * are neither active nor part of the front: the clean-up pass splits them by
- * circumcentres, which never crowd points as a frontal point could. *jf: the
+ * circumcentres, which never crowd points as a frontal point could. The
+ * small-input-angle exemption is tested when t is popped. *jf: the
  * front edge (of several, the one whose length is nearest the local size,
  * then the lowest index); *key: its queue position (largest circumradius over
  * size first). Without any size bound nothing is active. */
@@ -70,30 +71,32 @@ static int fr_active(cvm__refiner *R, int32_t t, int *jf, double *key)
 {
     const cvm__tri2 *T = R->T;
     const int32_t *tv = T->tv + 3 * (size_t)t;
-    double ratio, sin2, best = HUGE_VAL, dummy;
+    double ratio, sin2, best = HUGE_VAL;
     int j;
     fr_measure(R, t, &ratio, &sin2);
-    if (ratio <= FR_ACCEPT)
+    if (ratio <= FR_ACCEPT2)
         return 0;
     *jf = -1;
     for (j = 0; j < 3; j++) {
         int32_t u = T->tn[3 * (size_t)t + (size_t)j] / 3;
         const double *a, *b;
-        double len, h, dev;
+        double len2, h, dev;
         if (T->te[3 * (size_t)t + (size_t)j] < 0 &&
             !(cvm__tri2_in_domain(T, u) && fr_accepted(R, u)))
             continue;
         a = fr_pt(R, tv[(j + 1) % 3]);
         b = fr_pt(R, tv[(j + 2) % 3]);
-        len = hypot(b[0] - a[0], b[1] - a[1]);
+        len2 = (b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]);
         h = (fr_size(R, tv[(j + 1) % 3]) + fr_size(R, tv[(j + 2) % 3])) / 2;
-        dev = len > 0 ? fabs(log(len / h)) : HUGE_VAL;
+        h *= h;
+        /* max(len/h, h/len)^2: grows with |log(len / h)| */
+        dev = len2 >= h ? len2 / h : len2 > 0 ? h / len2 : HUGE_VAL;
         if (dev < best) {
             best = dev;
             *jf = j;
         }
     }
-    if (*jf < 0 || cvm__rf_classify(R, t, &dummy) == 3)
+    if (*jf < 0)
         return 0;
     *key = -ratio;
     return 1;
@@ -225,7 +228,8 @@ cvm_status cvm__rf_frontal(cvm__refiner *R)
         double key, x[2];
         int32_t v;
         int jf, r;
-        if (!cvm__bq_valid(R->T, &e) || !fr_active(R, e.t, &jf, &key))
+        if (!cvm__bq_valid(R->T, &e) || !fr_active(R, e.t, &jf, &key) ||
+            cvm__rf_classify(R, e.t, &key) == 3)
             continue;
         if (!fr_point(R, e.t, jf, x))
             continue;
