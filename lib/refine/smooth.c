@@ -1,5 +1,6 @@
 /* smooth.c - post-processing by "smart" Laplacian smoothing: a free Steiner vertex moves towards the centroid of its neighbours when no star triangle inverts (exact orient2d) and the star gets more regular without losing angle or size bounds. */
 #include <math.h>
+#include <string.h>
 
 #include "refine_internal.h"
 #include "delaunay/tri2_store.h"
@@ -83,22 +84,55 @@ static int sm_star_eval(const cvm__refiner *R, int32_t v, const double *p, const
     return 1;
 }
 
+/* Mark v and its neighbours (the vertices of its star) in mark[]. */
+static void sm_mark_star(const cvm__tri2 *T, int32_t v, const int32_t *star, size_t n,
+                         uint8_t *mark)
+{
+    size_t k;
+    mark[v] = 1;
+    for (k = 0; k < n; k++) {
+        const int32_t *tv = T->tv + 3 * (size_t)star[k];
+        mark[tv[0]] = mark[tv[1]] = mark[tv[2]] = 1;
+    }
+}
+
 cvm_status cvm__rf_smooth(cvm__refiner *R, size_t first, int sweeps, size_t *moves_out)
 {
     cvm__tri2 *T = R->T;
     int32_t *star = NULL;
+    uint8_t *cur = NULL, *next = NULL;
     size_t cap = 0, v, moves = 0;
     int sweep, err = 0;
     if (moves_out)
         *moves_out = 0;
+    if (sweeps <= 0 || first >= T->nv)
+        return CVM_OK;
+    /* A vertex is evaluated again only when it or a neighbour moved in the
+     * sweep before: otherwise its star is unchanged and so is the decision,
+     * so the result is that of full sweeps. */
+    cur = cvm__malloc(T->ctx, T->nv);
+    next = cvm__malloc(T->ctx, T->nv);
+    if (!cur || !next) {
+        cvm__free(T->ctx, cur);
+        cvm__free(T->ctx, next);
+        return cvm__nomem(T->ctx);
+    }
+    memset(cur, 1, T->nv);
     for (sweep = 0; sweep < sweeps; sweep++) {
+        size_t moved_before = moves;
+        memset(next, 0, T->nv);
         for (v = first; v < T->nv; v++) {
-            size_t n = sm_star(T, (int32_t)v, &star, &cap, &err), k;
+            size_t n, k;
             double p[2] = {0, 0}, b0, b1, q0, q1;
             double *x = T->xy + 2 * v;
             int big0, big1;
+            if (!cur[v])
+                continue;
+            n = sm_star(T, (int32_t)v, &star, &cap, &err);
             if (err) {
                 cvm__free(T->ctx, star);
+                cvm__free(T->ctx, cur);
+                cvm__free(T->ctx, next);
                 return cvm__nomem(T->ctx);
             }
             if (n < 3)
@@ -142,10 +176,28 @@ cvm_status cvm__rf_smooth(cvm__refiner *R, size_t first, int sweeps, size_t *mov
                 x[0] = best[0];
                 x[1] = best[1];
             }
+            /* this sweep's later vertices see the move already; the next
+             * sweep re-evaluates the whole neighbourhood */
+            sm_mark_star(T, (int32_t)v, star, n, next);
+            for (k = 0; k < n; k++) {
+                const int32_t *tv = T->tv + 3 * (size_t)star[k];
+                cur[tv[0]] = cur[tv[0]] || (size_t)tv[0] > v;
+                cur[tv[1]] = cur[tv[1]] || (size_t)tv[1] > v;
+                cur[tv[2]] = cur[tv[2]] || (size_t)tv[2] > v;
+            }
             moves++;
+        }
+        if (moves == moved_before)
+            break;
+        {
+            uint8_t *sw = cur;
+            cur = next;
+            next = sw;
         }
     }
     cvm__free(T->ctx, star);
+    cvm__free(T->ctx, cur);
+    cvm__free(T->ctx, next);
     if (moves_out)
         *moves_out = moves;
     return CVM_OK;
