@@ -58,31 +58,19 @@ static int fr_accepted(const cvm__refiner *R, int32_t t)
     return ratio <= FR_ACCEPT2 && sin2 >= R->sin2_min;
 }
 
-/* 1 when domain triangle t is active: too big, not exempt (a small input
- * angle subtends it) and on the front, i.e. with an edge on a segment or
- * shared with an accepted triangle. Triangles small enough but badly shaped
- * are neither active nor part of the front: the clean-up pass splits them by
- * circumcentres, which never crowd points as a frontal point could. The
- * small-input-angle exemption is tested when t is popped. *jf: the
- * front edge (of several, the one whose length is nearest the local size,
- * then the lowest index); *key: its queue position (largest circumradius over
- * size first). Without any size bound nothing is active. */
-static int fr_active(cvm__refiner *R, int32_t t, int *jf, double *key)
+/* The front edge of a triangle t that is too big (squared ratio > FR_ACCEPT2):
+ * of the edges j with acc[j] set (on a segment, or shared with an accepted
+ * triangle), the one whose length is nearest the local size, then the lowest
+ * index; -1 when there is none. */
+static int fr_front_edge(const cvm__refiner *R, int32_t t, const int *acc)
 {
-    const cvm__tri2 *T = R->T;
-    const int32_t *tv = T->tv + 3 * (size_t)t;
-    double ratio, sin2, best = HUGE_VAL;
-    int j;
-    fr_measure(R, t, &ratio, &sin2);
-    if (ratio <= FR_ACCEPT2)
-        return 0;
-    *jf = -1;
+    const int32_t *tv = R->T->tv + 3 * (size_t)t;
+    double best = HUGE_VAL;
+    int j, jf = -1;
     for (j = 0; j < 3; j++) {
-        int32_t u = T->tn[3 * (size_t)t + (size_t)j] / 3;
         const double *a, *b;
         double len2, h, dev;
-        if (T->te[3 * (size_t)t + (size_t)j] < 0 &&
-            !(cvm__tri2_in_domain(T, u) && fr_accepted(R, u)))
+        if (!acc[j])
             continue;
         a = fr_pt(R, tv[(j + 1) % 3]);
         b = fr_pt(R, tv[(j + 2) % 3]);
@@ -93,13 +81,40 @@ static int fr_active(cvm__refiner *R, int32_t t, int *jf, double *key)
         dev = len2 >= h ? len2 / h : len2 > 0 ? h / len2 : HUGE_VAL;
         if (dev < best) {
             best = dev;
-            *jf = j;
+            jf = j;
         }
     }
-    if (*jf < 0)
+    return jf;
+}
+
+/* Edge j of domain triangle t is a segment or is shared with an accepted triangle. */
+static int fr_edge_on_front(const cvm__refiner *R, int32_t t, int j)
+{
+    const cvm__tri2 *T = R->T;
+    int32_t u = T->tn[3 * (size_t)t + (size_t)j] / 3;
+    return T->te[3 * (size_t)t + (size_t)j] >= 0 || (cvm__tri2_in_domain(T, u) && fr_accepted(R, u));
+}
+
+/* 1 when domain triangle t is active: too big, and on the front, i.e. with an
+ * edge on a segment or shared with an accepted triangle. Triangles small
+ * enough but badly shaped are neither active nor part of the front: the
+ * clean-up pass splits them by circumcentres, which never crowd points as a
+ * frontal point could. The small-input-angle exemption is tested when t is
+ * popped. *jf: the front edge (fr_front_edge); *key: its queue position
+ * (largest circumradius over size first). Without any size bound nothing is
+ * active. */
+static int fr_active(cvm__refiner *R, int32_t t, int *jf, double *key)
+{
+    double ratio, sin2;
+    int acc[3], j;
+    fr_measure(R, t, &ratio, &sin2);
+    if (ratio <= FR_ACCEPT2)
         return 0;
+    for (j = 0; j < 3; j++)
+        acc[j] = fr_edge_on_front(R, t, j);
+    *jf = fr_front_edge(R, t, acc);
     *key = -ratio;
-    return 1;
+    return *jf >= 0;
 }
 
 /* Queue domain triangle t if it is active. */
@@ -113,27 +128,65 @@ static cvm_status fr_queue_triangle(cvm__refiner *R, int32_t t)
     return CVM_OK;
 }
 
+/* Star triangles measured at once by fr_queue_star (larger stars: one by one). */
+#define FR_STAR_MAX 32
+
 /* After vertex v was inserted: queue the active triangles of its star, and,
- * behind each accepted one, the neighbour that now lies on the front. */
+ * behind each accepted one, the neighbour that now lies on the front. Each
+ * star triangle is measured once; its neighbours in the star are looked up. */
 static cvm_status fr_queue_star(cvm__refiner *R, int32_t v)
 {
     const cvm__tri2 *T = R->T;
     size_t n = cvm__rf_star(R, v), k;
+    double ratio[FR_STAR_MAX], sin2;
+    int acc[FR_STAR_MAX];
     cvm_status s;
     if (n == 0)
         return cvm__nomem(R->ctx);
+    if (n > FR_STAR_MAX) {
+        for (k = 0; k < n; k++) {
+            int32_t t = R->star[k];
+            const int32_t *tv = T->tv + 3 * (size_t)t;
+            int i = tv[0] == v ? 0 : tv[1] == v ? 1 : 2;
+            if (!cvm__tri2_in_domain(T, t))
+                continue;
+            s = fr_accepted(R, t) ? fr_queue_triangle(R, T->tn[3 * (size_t)t + (size_t)i] / 3)
+                                  : fr_queue_triangle(R, t);
+            if (s)
+                return s;
+        }
+        return CVM_OK;
+    }
+    for (k = 0; k < n; k++) {
+        int32_t t = R->star[k];
+        if (cvm__tri2_in_domain(T, t)) {
+            fr_measure(R, t, &ratio[k], &sin2);
+            acc[k] = ratio[k] <= FR_ACCEPT2 && sin2 >= R->sin2_min;
+        } else {
+            ratio[k] = 0;
+            acc[k] = -1;
+        }
+    }
     for (k = 0; k < n; k++) {
         int32_t t = R->star[k];
         const int32_t *tv = T->tv + 3 * (size_t)t;
-        int i = tv[0] == v ? 0 : tv[1] == v ? 1 : 2;
-        if (!cvm__tri2_in_domain(T, t))
+        int i = tv[0] == v ? 0 : tv[1] == v ? 1 : 2, e[3], jf;
+        if (acc[k] < 0)
             continue;
-        if (!fr_accepted(R, t)) {
-            if ((s = fr_queue_triangle(R, t)))
+        if (acc[k]) {
+            if ((s = fr_queue_triangle(R, T->tn[3 * (size_t)t + (size_t)i] / 3)))
                 return s;
-        } else if ((s = fr_queue_triangle(R, T->tn[3 * (size_t)t + (size_t)i] / 3))) {
-            return s;
+            continue;
         }
+        if (ratio[k] <= FR_ACCEPT2)
+            continue; /* small enough, badly shaped: for the clean-up pass */
+        /* the star turns through edge i+1 to the next triangle, i+2 to the previous */
+        e[i] = fr_edge_on_front(R, t, i);
+        e[(i + 1) % 3] = T->te[3 * (size_t)t + (size_t)(i + 1) % 3] >= 0 || acc[(k + 1) % n] == 1;
+        e[(i + 2) % 3] = T->te[3 * (size_t)t + (size_t)(i + 2) % 3] >= 0 || acc[(k + n - 1) % n] == 1;
+        jf = fr_front_edge(R, t, e);
+        if (jf >= 0 && cvm__bq_push(&R->q, R->T, t, 0, -ratio[k]))
+            return cvm__nomem(R->ctx);
     }
     return CVM_OK;
 }
