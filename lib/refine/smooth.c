@@ -84,6 +84,31 @@ static int sm_star_eval(const cvm__refiner *R, int32_t v, const double *p, const
     return 1;
 }
 
+/* 1 when every angle of domain triangle t is in [55, 65] degrees, by the
+ * same test as sm_star_eval. */
+static int sm_perfect(const cvm__tri2 *T, int32_t t)
+{
+    const double lo2 = 0.42261826174069944 * 0.42261826174069944;
+    const double hi2 = 0.57357643635104616 * 0.57357643635104616;
+    const int32_t *tv = T->tv + 3 * (size_t)t;
+    const double *p = cvm__tri2_pt(T, tv[0]), *a = cvm__tri2_pt(T, tv[1]), *b = cvm__tri2_pt(T, tv[2]);
+    double lpa = (a[0] - p[0]) * (a[0] - p[0]) + (a[1] - p[1]) * (a[1] - p[1]);
+    double lpb = (b[0] - p[0]) * (b[0] - p[0]) + (b[1] - p[1]) * (b[1] - p[1]);
+    double lab = (b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]);
+    double num[3], den[3];
+    int j;
+    num[0] = lpa + lpb - lab;
+    den[0] = 4 * lpa * lpb;
+    num[1] = lpa + lab - lpb;
+    den[1] = 4 * lpa * lab;
+    num[2] = lpb + lab - lpa;
+    den[2] = 4 * lpb * lab;
+    for (j = 0; j < 3; j++)
+        if (!(num[j] >= 0 && num[j] * num[j] >= lo2 * den[j] && num[j] * num[j] <= hi2 * den[j]))
+            return 0;
+    return 1;
+}
+
 /* Mark v and its neighbours (the vertices of its star) in mark[]. */
 static void sm_mark_star(const cvm__tri2 *T, int32_t v, const int32_t *star, size_t n,
                          uint8_t *mark)
@@ -117,7 +142,17 @@ cvm_status cvm__rf_smooth(cvm__refiner *R, size_t first, int sweeps, size_t *mov
         cvm__free(T->ctx, next);
         return cvm__nomem(T->ctx);
     }
-    memset(cur, 1, T->nv);
+    /* the first sweep visits the vertices of triangles with an angle outside
+     * [55, 65] degrees: the others are left alone by the rule below anyway */
+    memset(cur, 0, T->nv);
+    {
+        size_t t;
+        for (t = 0; t < T->nt; t++) {
+            const int32_t *tv = T->tv + 3 * t;
+            if (cvm__tri2_in_domain(T, (int32_t)t) && !sm_perfect(T, (int32_t)t))
+                cur[tv[0]] = cur[tv[1]] = cur[tv[2]] = 1;
+        }
+    }
     for (sweep = 0; sweep < sweeps; sweep++) {
         size_t moved_before = moves;
         memset(next, 0, T->nv);
