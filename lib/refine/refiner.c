@@ -170,22 +170,27 @@ static void rf_teardown(cvm__refiner *R)
     cvm__free(R->ctx, R->enc);
 }
 
-/* Smallest angle of triangle t in degrees, from its coordinates. */
+/* Smallest angle of triangle t in degrees, from its coordinates: the angle
+ * opposite the shortest edge (one atan2 instead of three). */
 static double rf_min_angle_deg(const cvm__tri2 *T, int32_t t)
 {
     const int32_t *tv = T->tv + 3 * (size_t)t;
-    double best = 180.0;
-    int k;
+    double l[3];
+    int k, m = 0;
     for (k = 0; k < 3; k++) {
-        const double *o = T->xy + 2 * (size_t)tv[k];
         const double *a = T->xy + 2 * (size_t)tv[(k + 1) % 3];
         const double *b = T->xy + 2 * (size_t)tv[(k + 2) % 3];
-        double ux = a[0] - o[0], uy = a[1] - o[1], wx = b[0] - o[0], wy = b[1] - o[1];
-        double ang = atan2(fabs(ux * wy - uy * wx), ux * wx + uy * wy) * 180.0 / 3.14159265358979323846;
-        if (ang < best)
-            best = ang;
+        l[k] = (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]);
+        if (l[k] < l[m])
+            m = k;
     }
-    return best;
+    {
+        const double *o = T->xy + 2 * (size_t)tv[m];
+        const double *a = T->xy + 2 * (size_t)tv[(m + 1) % 3];
+        const double *b = T->xy + 2 * (size_t)tv[(m + 2) % 3];
+        double ux = a[0] - o[0], uy = a[1] - o[1], wx = b[0] - o[0], wy = b[1] - o[1];
+        return atan2(fabs(ux * wy - uy * wx), ux * wx + uy * wy) * 180.0 / 3.14159265358979323846;
+    }
 }
 
 static void rf_report(cvm__refiner *R, cvm__refine_report *rep)
