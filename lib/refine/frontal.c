@@ -196,10 +196,15 @@ static cvm_status fr_queue_star(cvm__refiner *R, int32_t v)
  * d = rho + sqrt(rho^2 - p^2) that makes the new triangle on the edge have
  * circumradius rho = min(max(rho_M, p), (p^2 + q^2) / (2 q)), with rho_M the
  * circumradius of the equilateral triangle of the size at the edge and q the
- * distance from the edge midpoint to the circumcentre of t: the point lies
- * between the midpoint and that circumcentre (on the Voronoi edge). Returns 0
- * (no point) when that circumcentre is not beyond the edge: t's angle
- * opposite the front edge is not acute, and the clean-up pass handles t. */
+ * distance from the edge midpoint to the circumcentre c of t (the cap keeps
+ * the point at or before c when q >= p). When q < p the formula can pass c;
+ * d is then capped at q + R/2 (R: t's circumradius), so the point stays in
+ * t's circumcircle, at least R/2 from its boundary. Either way no vertex
+ * visible from t lies closer than min(R/2, rho_M) to the point (up to the
+ * 1e-9 jitter below), a fixed fraction of the local size since t is too big
+ * (R > 0.707 x its size): the frontal pass cannot crowd points. (On the shared geometries the cap never acts.)
+ * Returns 0 (no point) when c is not beyond the edge: t's angle opposite the
+ * front edge is not acute, and the clean-up pass handles t. */
 static int fr_point(const cvm__refiner *R, int32_t t, int jf, double *x)
 {
     const int32_t *tv = R->T->tv + 3 * (size_t)t;
@@ -225,6 +230,8 @@ static int fr_point(const cvm__refiner *R, int32_t t, int jf, double *x)
     if (q > 0 && rho > (p * p + q * q) / (2 * q))
         rho = (p * p + q * q) / (2 * q);
     d = rho + sqrt(rho * rho > p * p ? rho * rho - p * p : 0);
+    if (d > q + 0.5 * sqrt(p * p + q * q))
+        d = q + 0.5 * sqrt(p * p + q * q);
     /* A relative change below 1e-9, deterministic in the vertex count, keeps
      * the frontal points off an exact lattice: lattice points are cocircular
      * in many fours, which sends the in-circle tests of the insertion to their
