@@ -695,16 +695,19 @@ CVM_API cvm_status cvm_sizing_eval(double *out, cvm_sizing *s, double x, double 
 /** Refinement algorithms of cvm_mesh_refine(). Values never change. */
 typedef enum cvm_algorithm {
     CVM_ALGO_DELAUNAY = 1, /**< Delaunay refinement (Ruppert, Shewchuk): circumcentres */
-    CVM_ALGO_FRONTAL = 2,  /**< frontal-Delaunay (Engwirda): off-centres grown from the boundary */
+    CVM_ALGO_FRONTAL = 2,  /**< frontal-Delaunay (Rebay): near-equilateral points grown from the boundary */
     CVM_ALGO_AFLR = 3      /**< advancing-front local reconnection (Marcum); reserved */
 } cvm_algorithm;
 
 /**
  * Refine the triangulation of @p m by inserting Steiner points until every
  * triangle meets CVM_OPT_MIN_ANGLE_DEG, CVM_OPT_MAX_AREA and the @p sizing
- * (circumradius at most the mean size at its vertices for CVM_ALGO_DELAUNAY; mean
- * edge length at most 1.5 x the size for CVM_ALGO_FRONTAL, which then finishes with
- * a Delaunay-refinement pass so that both meet the same bounds). Segments are split
+ * (circumradius at most the mean size at its vertices). CVM_ALGO_FRONTAL first grows
+ * triangles from the segments and from accepted triangles (circumradius at most
+ * 0.707 x the mean size, smallest angle at least CVM_OPT_MIN_ANGLE_DEG), largest
+ * circumradius first, each new point on the bisector of a front edge where it makes
+ * a near-equilateral triangle of the local size (Rebay 1993); it then finishes with a
+ * Delaunay-refinement pass, so both algorithms meet the same bounds. Segments are split
  * where encroached (concentric shells near small input angles, as Triangle does), so
  * every input segment stays a union of mesh edges; with no segments, or with
  * CVM_OPT_KEEP_CONVEX_HULL, the convex hull edges become segments (with marker 0).

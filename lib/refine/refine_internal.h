@@ -2,7 +2,8 @@
  * refine_internal.h - mesh refinement on the 2D kernel: the sizing handle,
  * the queue of bad triangles, segment encroachment and splitting, Delaunay
  * refinement (Ruppert 1995; Shewchuk 1997/2002, as in Triangle) and
- * frontal-Delaunay refinement (Engwirda 2014, off-centre placement).
+ * frontal-Delaunay refinement (Rebay 1993: points on the bisectors of front
+ * edges, grown from the boundary).
  *
  * The module works on a cvm__tri2 and plain parameters; it never sees the
  * cvm_mesh handle. Topological decisions (where a point lies, which triangles
