@@ -231,7 +231,7 @@ static cvm_status rf_post(cvm__refiner *R, size_t first)
     if (R->T->w)
         return CVM_OK; /* a weighted (regular) triangulation: left as refined */
     if (p->swap)
-        s = cvm__rf_swap_degree(R->T, R->sin2_min, NULL);
+        s = cvm__rf_swap_degree(R, NULL);
     if (!s && p->smooth_sweeps > 0)
         s = cvm__rf_smooth(R, first, p->smooth_sweeps, NULL);
     /* restored even after an error above: it finishes without memory if it must */
@@ -258,6 +258,10 @@ cvm_status cvm__refine(cvm__tri2 *T, const cvm__refine_params *p, cvm__refine_re
         s = cvm__rf_delaunay(&R);
     if (!s)
         s = rf_post(&R, first);
+    /* the Delaunay-restoring flips may make a triangle too big or too thin
+     * again: refine those (nothing to do in most runs, one scan) */
+    if (!s && (p->swap || p->smooth_sweeps > 0) && !T->w)
+        s = cvm__rf_delaunay(&R);
     if (!cvm_status_is_error(s))
         rf_report(&R, rep);
     rep->steiner = R.steiner;

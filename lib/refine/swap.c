@@ -164,8 +164,26 @@ static void sw_mark_around(const cvm__tri2 *T, int32_t v, size_t t_now, uint8_t 
     } while (t != t0 && ++n <= T->nt);
 }
 
-cvm_status cvm__rf_swap_degree(cvm__tri2 *T, double sin2_min, size_t *flips_out)
+/* Triangle (p, q, r) (counter-clockwise) with vertices a, b, c would be too
+ * big for the refiner's bounds: circumradius above the mean size at its
+ * vertices, or area above max_area (the test of Delaunay refinement). */
+static int sw_too_big(const cvm__refiner *R, int32_t a, int32_t b, int32_t c)
 {
+    const double *p = cvm__tri2_pt(R->T, a), *q = cvm__tri2_pt(R->T, b), *r = cvm__tri2_pt(R->T, c);
+    double l0 = (q[0] - r[0]) * (q[0] - r[0]) + (q[1] - r[1]) * (q[1] - r[1]);
+    double l1 = (p[0] - r[0]) * (p[0] - r[0]) + (p[1] - r[1]) * (p[1] - r[1]);
+    double l2 = (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]);
+    double cross = (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0]);
+    double ls = (R->vls[a] + R->vls[b] + R->vls[c]) / 3;
+    if (R->p->max_area > 0 && cross / 2 > R->p->max_area)
+        return 1;
+    return isfinite(ls) && l0 * l1 * l2 > 4 * cross * cross * ls * ls;
+}
+
+cvm_status cvm__rf_swap_degree(const cvm__refiner *R, size_t *flips_out)
+{
+    cvm__tri2 *T = R->T;
+    const double sin2_min = R->sin2_min;
     int32_t *deg = NULL, *ideal = NULL;
     uint8_t *cur, *next;
     size_t t, flips = 0;
@@ -210,7 +228,8 @@ cvm_status cvm__rf_swap_degree(cvm__tri2 *T, double sin2_min, size_t *flips_out)
                 if (cvm__rf_min_sin2(cvm__tri2_pt(T, a), cvm__tri2_pt(T, b), cvm__tri2_pt(T, d)) <
                         sin2_min ||
                     cvm__rf_min_sin2(cvm__tri2_pt(T, d), cvm__tri2_pt(T, c), cvm__tri2_pt(T, a)) <
-                        sin2_min)
+                        sin2_min ||
+                    sw_too_big(R, a, b, d) || sw_too_big(R, d, c, a))
                     continue;
                 sw_flip(T, (int32_t)t, j);
                 deg[a]++;
