@@ -222,8 +222,9 @@ static void rf_report(cvm__refiner *R, cvm__refine_report *rep)
 }
 
 /* Post-processing (swap.c, smooth.c) of the Steiner vertices first..nv-1:
- * degree swapping, smoothing, then the Delaunay-restoring flips. */
-static cvm_status rf_post(cvm__refiner *R, size_t first)
+ * degree swapping, smoothing, then the Delaunay-restoring flips (their
+ * number into *flips). */
+static cvm_status rf_post(cvm__refiner *R, size_t first, size_t *flips)
 {
     const cvm__refine_params *p = R->p;
     cvm_status s = CVM_OK;
@@ -236,7 +237,7 @@ static cvm_status rf_post(cvm__refiner *R, size_t first)
         s = cvm__rf_smooth(R, first, p->smooth_sweeps, NULL);
     /* restored even after an error above: it finishes without memory if it must */
     if (p->restore_delaunay && (p->swap || p->smooth_sweeps > 0) &&
-        (s2 = cvm__rf_restore_delaunay(R->T, NULL)) != CVM_OK && !s)
+        (s2 = cvm__rf_restore_delaunay(R->T, flips)) != CVM_OK && !s)
         s = s2;
     return s;
 }
@@ -245,7 +246,7 @@ cvm_status cvm__refine(cvm__tri2 *T, const cvm__refine_params *p, cvm__refine_re
 {
     cvm__refiner R;
     cvm_status s;
-    size_t first = T->nv;
+    size_t first = T->nv, flips = 0;
     memset(rep, 0, sizeof *rep);
     s = rf_setup(&R, T, p);
     if (!s && p->march && !cvm__sizing_is_empty(p->sizing))
@@ -257,10 +258,10 @@ cvm_status cvm__refine(cvm__tri2 *T, const cvm__refine_params *p, cvm__refine_re
     if (!s)
         s = cvm__rf_delaunay(&R);
     if (!s)
-        s = rf_post(&R, first);
-    /* the Delaunay-restoring flips may make a triangle too big or too thin
-     * again: refine those (nothing to do in most runs, one scan) */
-    if (!s && (p->swap || p->smooth_sweeps > 0) && !T->w)
+        s = rf_post(&R, first, &flips);
+    /* swapping and smoothing keep the bounds, but the Delaunay-restoring flips
+     * may make a triangle too big or too thin again: refine those */
+    if (!s && flips > 0)
         s = cvm__rf_delaunay(&R);
     if (!cvm_status_is_error(s))
         rf_report(&R, rep);
