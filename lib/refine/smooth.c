@@ -43,9 +43,10 @@ static int sm_star_eval(const cvm__refiner *R, int32_t v, const double *p, const
     const double lo2 = 0.42261826174069944 * 0.42261826174069944;
     const double hi2 = 0.57357643635104616 * 0.57357643635104616;
     size_t k;
-    *bad = 0;
-    *q = 1.0;
-    *big = 0;
+    /* local sums (stored at the end): *bad may alias the coordinates, so
+     * updating it in the loop would reload them every time */
+    double sbad = 0, sq = 1.0;
+    int sbig = 0;
     for (k = 0; k < n; k++) {
         const int32_t *tv = T->tv + 3 * (size_t)star[k];
         int i = tv[0] == v ? 0 : tv[1] == v ? 1 : 2;
@@ -68,19 +69,22 @@ static int sm_star_eval(const cvm__refiner *R, int32_t v, const double *p, const
         den[2] = 4 * lpb * lab;
         for (j = 0; j < 3; j++) {
             double n2 = num[j] * num[j];
-            *bad += (num[j] < 0) - (num[j] >= 0 && n2 >= lo2 * den[j] && n2 <= hi2 * den[j]);
+            sbad += (num[j] < 0) - (num[j] >= 0 && n2 >= lo2 * den[j] && n2 <= hi2 * den[j]);
         }
-        *bad += 1e-3 * (1 - 2 * 1.7320508075688772 * ar / (lpa + lpb + lab));
+        sbad += 1e-3 * (1 - 2 * 1.7320508075688772 * ar / (lpa + lpb + lab));
         lmin = lpa < lpb ? (lpa < lab ? lpa : lab) : (lpb < lab ? lpb : lab);
         s = lmin * ar * ar / (lpa * lpb * lab);
-        if (s < *q)
-            *q = s;
+        if (s < sq)
+            sq = s;
         /* too big as in Delaunay refinement: circumradius above the mean size, or the area bound */
         ls = (R->vls[v] + R->vls[ia] + R->vls[ib]) / 3;
         if ((isfinite(ls) && lpa * lpb * lab > 4 * ls * ls * ar * ar) ||
             (R->p->max_area > 0 && ar > 2 * R->p->max_area))
-            (*big)++;
+            sbig++;
     }
+    *bad = sbad;
+    *q = sq;
+    *big = sbig;
     return 1;
 }
 
