@@ -166,7 +166,7 @@ START_TEST(swap_only_and_input_points_fixed)
     ck_assert_int_eq(cvm_option_bounds(&b, CVM_OPT_SWAP), CVM_OK);
     ck_assert(b.lo == 0 && b.hi == 1 && b.def == 1 && b.is_integer);
     ck_assert_int_eq(cvm_option_bounds(&b, CVM_OPT_SMOOTH_SWEEPS), CVM_OK);
-    ck_assert(b.lo == 0 && b.hi == 100 && b.def == 5 && b.is_integer);
+    ck_assert(b.lo == 0 && b.hi == 100 && b.def == 3 && b.is_integer);
     ck_assert_int_eq(cvm_option_bounds(&b, CVM_OPT_RESTORE_DELAUNAY), CVM_OK);
     ck_assert(b.lo == 1 && b.hi == 1 && b.def == 1 && b.is_integer);
     ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
