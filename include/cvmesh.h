@@ -421,15 +421,20 @@ typedef enum cvm_option {
      *  Not applied to CVM_ALGO_DELAUNAY. Integer, [0, 1]. */
     CVM_OPT_SWAP = 205,
     /** Sweeps of smart Laplacian smoothing after CVM_ALGO_FRONTAL and CVM_ALGO_AFLR (after
-     *  CVM_OPT_SWAP, before the Delaunay-restoring flips), default 1, bounds [0, 100];
+     *  CVM_OPT_SWAP, before the Delaunay-restoring flips), default 3, bounds [0, 100];
      *  0 = off. Only Steiner points whose triangles are all inside the domain move (never
      *  an input point or a vertex on a segment), in vertex index order, towards the
      *  centroid of their neighbours (the best of 0.5, 1 and 1.5 times that step), and
      *  only when no triangle inverts (exact test), the neighbourhood gets more regular
      *  (fewer obtuse angles, more angles in [55, 65] degrees), no angle drops below
      *  min(its old smallest angle, CVM_OPT_MIN_ANGLE_DEG) and no more triangles exceed
-     *  the size bound. Each sweep costs about 0.1-0.15 microseconds per triangle.
-     *  Not applied to CVM_ALGO_DELAUNAY. Integer. */
+     *  the size bound. The first sweep visits the vertices of triangles with an angle
+     *  outside [55, 65] degrees, each later one only the neighbourhoods of the vertices
+     *  moved by the sweep before (the result is that of full sweeps); smoothing stops
+     *  early when a sweep moves nothing. Measured on the shared geometries at uniform
+     *  size: 3 sweeps cost 7-10% more than 1 and add 0.2-1.1 points of angles in
+     *  [55, 65] degrees; more sweeps add at most 0.1. Not applied to CVM_ALGO_DELAUNAY.
+     *  Integer. */
     CVM_OPT_SMOOTH_SWEEPS = 206,
     /** 1 (default): after swapping and smoothing, flip every non-locally-Delaunay
      *  unconstrained edge (exact in-circle), so the result stays a constrained Delaunay
@@ -858,7 +863,7 @@ CVM_API cvm_status cvm_sizing_eval(double *out, cvm_sizing *s, double x, double 
 /** Refinement algorithms of cvm_mesh_refine(). Values never change. */
 typedef enum cvm_algorithm {
     CVM_ALGO_DELAUNAY = 1, /**< Delaunay refinement (Ruppert, Shewchuk): circumcentres */
-    CVM_ALGO_FRONTAL = 2,  /**< frontal-Delaunay (Engwirda): off-centres grown from the boundary */
+    CVM_ALGO_FRONTAL = 2,  /**< frontal-Delaunay (Rebay): near-equilateral points grown from the boundary */
     CVM_ALGO_AFLR = 3      /**< advancing-front local reconnection (Marcum): layers grown from
                                 front segments, see cvm_mesh_set_front_markers() */
 } cvm_algorithm;
@@ -866,15 +871,18 @@ typedef enum cvm_algorithm {
 /**
  * Refine the triangulation of @p m by inserting Steiner points until every
  * triangle meets CVM_OPT_MIN_ANGLE_DEG, CVM_OPT_MAX_AREA and the @p sizing
- * (circumradius at most the mean size at its vertices for CVM_ALGO_DELAUNAY; mean
- * edge length at most 1.5 x the size for CVM_ALGO_FRONTAL; every edge below 1.5 x the
- * mean size at its ends for CVM_ALGO_AFLR; the last two then finish with a Delaunay-refinement
- * pass so that all three meet the same bounds). CVM_ALGO_AFLR advances fronts layer
+ * (circumradius at most the mean size at its vertices). CVM_ALGO_FRONTAL first grows
+ * triangles from the segments and from accepted triangles (circumradius at most
+ * 0.707 x the mean size, smallest angle at least CVM_OPT_MIN_ANGLE_DEG), largest
+ * circumradius first, each new point on the bisector of a front edge where it makes
+ * a near-equilateral triangle of the local size (Rebay 1993). CVM_ALGO_AFLR (every
+ * edge below 1.5 x the mean size at its ends) advances fronts layer
  * by layer from the segments chosen by cvm_mesh_set_front_markers() (every segment
  * by default), one point per front edge on its bisector (the nearest to the edge of
  * the equilateral point at the local size, the circumcentre and two off-centres; a
  * point closer than 0.7 x the edge to a vertex is skipped), and records a layer index
- * per triangle (cvm_mesh_copy_layer_index()). Segments are split
+ * per triangle (cvm_mesh_copy_layer_index()). Both finish with a Delaunay-refinement
+ * pass, so all three algorithms meet the same bounds. Segments are split
  * where encroached (concentric shells near small input angles, as Triangle does), so
  * every input segment stays a union of mesh edges; with no segments, or with
  * CVM_OPT_KEEP_CONVEX_HULL, the convex hull edges become segments (with marker 0).

@@ -151,7 +151,7 @@ static int af_quality(cvm__refiner *R, int32_t t)
             return AF_BIG;
     }
     cross = (p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[1][1] - p[0][1]) * (p[2][0] - p[0][0]);
-    if (R->p->max_area > 0 && cross / 2 > R->p->max_area)
+    if (cvm__rf_max_area(R, t) > 0 && cross / 2 > cvm__rf_max_area(R, t))
         return AF_BIG;
     lmin = l[0] < l[1] ? (l[0] < l[2] ? l[0] : l[2]) : (l[1] < l[2] ? l[1] : l[2]);
     sin2 = cross > 0 ? lmin * cross * cross / (l[0] * l[1] * l[2]) : 0.0;

@@ -1,150 +1,274 @@
-/* frontal.c - frontal-Delaunay refinement (Engwirda 2014): off-centres on the Voronoi edge of the shortest edge, grown from the boundary. */
+/* frontal.c - frontal-Delaunay refinement after Rebay (1993): triangles grow layer by layer from the boundary and from accepted triangles, each new point placed on the bisector of a front edge so that it forms a triangle of the local size. */
 #include <math.h>
 
 #include "refine_internal.h"
 #include "geom/geom_internal.h"
 
-/* Too big: mean edge length above this times the mean size at the vertices. */
-#define FR_SIZE_BAD 1.5
-/* A bad triangle enters the queue only when its shortest edge is already
- * shorter than this times the size at that edge: the front. */
-#define FR_ADMIT 1.5
-/* The shape-optimal off-centre makes the apex angle the requested minimum
- * angle (|e| / (2 tan(alpha_min / 2)) from the edge), so the front may grow
- * by up to 1/(2 sin(alpha_min / 2)) per layer; below this angle it is not used. */
-#define FR_SHAPE_MIN_DEG 1.0
-/* Bisection tolerance of the size-optimal off-centre, relative to the edge. */
-#define FR_BISECT_TOL 1e-4
+/* Accepted (Rebay's "small enough"): circumradius at most sqrt(this) times
+ * the local size. A right isosceles triangle with legs of the local size sits
+ * at the limit (0.707); the equilateral triangle of that size has 0.577. */
+#define FR_ACCEPT2 0.5
 
 static const double *fr_pt(const cvm__refiner *R, int32_t v)
 {
     return R->T->xy + 2 * (size_t)v;
 }
 
-/* 1 when t is bad under the frontal rules and on the front; *key (shape,
- * worst first) and *jmin (its shortest edge) are set. */
-static int fr_classify(cvm__refiner *R, int32_t t, double *key, int *jmin)
+/* Local size at vertex v: the sizing, capped by the edge of the equilateral
+ * triangle of area max_area; +infinity when neither bounds the size. */
+static double fr_size(const cvm__refiner *R, int32_t v)
 {
-    const int32_t *tv = R->T->tv + 3 * (size_t)t;
-    const double *p[3];
-    double l[3], cross, sin2, ls, lse, mean;
-    int k, bad, dr;
-    for (k = 0; k < 3; k++)
-        p[k] = fr_pt(R, tv[k]);
-    for (k = 0; k < 3; k++) {
-        const double *a = p[(k + 1) % 3], *b = p[(k + 2) % 3];
-        l[k] = (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]);
+    double h = R->vls[v];
+    if (R->p->max_area > 0) {
+        double ha = sqrt(4.0 * R->p->max_area / 1.7320508075688772);
+        if (!(h <= ha))
+            h = ha;
     }
-    *jmin = l[0] <= l[1] && l[0] <= l[2] ? 0 : l[1] <= l[2] ? 1 : 2;
-    cross = (p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[1][1] - p[0][1]) * (p[2][0] - p[0][0]);
-    dr = cvm__rf_classify(R, t, &sin2);
-    if (dr == 3)
-        return 0; /* subtended by a small input angle */
-    sin2 = cross > 0 ? l[*jmin] * cross * cross / (l[0] * l[1] * l[2]) : 0.0;
-    ls = (R->vls[tv[0]] + R->vls[tv[1]] + R->vls[tv[2]]) / 3;
-    mean = (sqrt(l[0]) + sqrt(l[1]) + sqrt(l[2])) / 3;
-    bad = dr != 0 || sin2 < R->sin2_min || (isfinite(ls) && mean > FR_SIZE_BAD * ls);
-    if (!bad)
-        return 0;
-    lse = (R->vls[tv[(*jmin + 1) % 3]] + R->vls[tv[(*jmin + 2) % 3]]) / 2;
-    if (isfinite(lse) && !(sqrt(l[*jmin]) < FR_ADMIT * lse))
-        return 0;
-    *key = sin2;
-    return 1;
+    return h;
 }
 
-/* Queue domain triangle t if the front has reached it and it is bad. */
+/* Squared circumradius of domain triangle t over its squared mean local size
+ * (*ratio; 0 when there is no size) and sin^2 of its smallest angle (*sin2;
+ * 0 when it is too thin for floating point). */
+static void fr_measure(const cvm__refiner *R, int32_t t, double *ratio, double *sin2)
+{
+    const int32_t *tv = R->T->tv + 3 * (size_t)t;
+    const double *p0 = fr_pt(R, tv[0]), *p1 = fr_pt(R, tv[1]), *p2 = fr_pt(R, tv[2]);
+    double l0, l1, l2, cross, lmin, ls;
+    l0 = (p1[0] - p2[0]) * (p1[0] - p2[0]) + (p1[1] - p2[1]) * (p1[1] - p2[1]);
+    l1 = (p2[0] - p0[0]) * (p2[0] - p0[0]) + (p2[1] - p0[1]) * (p2[1] - p0[1]);
+    l2 = (p0[0] - p1[0]) * (p0[0] - p1[0]) + (p0[1] - p1[1]) * (p0[1] - p1[1]);
+    cross = (p1[0] - p0[0]) * (p2[1] - p0[1]) - (p1[1] - p0[1]) * (p2[0] - p0[0]);
+    ls = (fr_size(R, tv[0]) + fr_size(R, tv[1]) + fr_size(R, tv[2])) / 3;
+    if (!(cross > 0)) {
+        *sin2 = 0;
+        *ratio = isfinite(ls) ? HUGE_VAL : 0;
+        return;
+    }
+    lmin = l0 < l1 ? (l0 < l2 ? l0 : l2) : (l1 < l2 ? l1 : l2);
+    *sin2 = lmin * cross * cross / (l0 * l1 * l2);
+    *ratio = isfinite(ls) ? l0 * l1 * l2 / (4 * cross * cross * ls * ls) : 0;
+}
+
+/* Domain triangle t is accepted: small enough and well shaped. */
+static int fr_accepted(const cvm__refiner *R, int32_t t)
+{
+    double ratio, sin2;
+    fr_measure(R, t, &ratio, &sin2);
+    return ratio <= FR_ACCEPT2 && sin2 >= R->sin2_min;
+}
+
+/* The front edge of a triangle t that is too big (squared ratio > FR_ACCEPT2):
+ * of the edges j with acc[j] set (on a segment, or shared with an accepted
+ * triangle), the one whose length is nearest the local size, then the lowest
+ * index; -1 when there is none. */
+static int fr_front_edge(const cvm__refiner *R, int32_t t, const int *acc)
+{
+    const int32_t *tv = R->T->tv + 3 * (size_t)t;
+    double best = HUGE_VAL;
+    int j, jf = -1;
+    for (j = 0; j < 3; j++) {
+        const double *a, *b;
+        double len2, h, dev;
+        if (!acc[j])
+            continue;
+        a = fr_pt(R, tv[(j + 1) % 3]);
+        b = fr_pt(R, tv[(j + 2) % 3]);
+        len2 = (b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]);
+        h = (fr_size(R, tv[(j + 1) % 3]) + fr_size(R, tv[(j + 2) % 3])) / 2;
+        h *= h;
+        /* max(len/h, h/len)^2: grows with |log(len / h)| */
+        dev = len2 >= h ? len2 / h : len2 > 0 ? h / len2 : HUGE_VAL;
+        if (dev < best) {
+            best = dev;
+            jf = j;
+        }
+    }
+    return jf;
+}
+
+/* Edge j of domain triangle t is a segment or is shared with an accepted triangle. */
+static int fr_edge_on_front(const cvm__refiner *R, int32_t t, int j)
+{
+    const cvm__tri2 *T = R->T;
+    int32_t u = T->tn[3 * (size_t)t + (size_t)j] / 3;
+    return T->te[3 * (size_t)t + (size_t)j] >= 0 || (cvm__tri2_in_domain(T, u) && fr_accepted(R, u));
+}
+
+/* 1 when domain triangle t is active: too big, and on the front, i.e. with an
+ * edge on a segment or shared with an accepted triangle. Triangles small
+ * enough but badly shaped are neither active nor part of the front: the
+ * clean-up pass splits them by circumcentres, which never crowd points as a
+ * frontal point could. The small-input-angle exemption is tested when t is
+ * popped. *jf: the front edge (fr_front_edge); *key: its queue position
+ * (largest circumradius over size first). Without any size bound nothing is
+ * active. */
+static int fr_active(cvm__refiner *R, int32_t t, int *jf, double *key)
+{
+    double ratio, sin2;
+    int acc[3], j;
+    fr_measure(R, t, &ratio, &sin2);
+    if (ratio <= FR_ACCEPT2)
+        return 0;
+    for (j = 0; j < 3; j++)
+        acc[j] = fr_edge_on_front(R, t, j);
+    *jf = fr_front_edge(R, t, acc);
+    *key = -ratio;
+    return *jf >= 0;
+}
+
+/* Queue domain triangle t if it is active. */
 static cvm_status fr_queue_triangle(cvm__refiner *R, int32_t t)
 {
     double key;
-    int jmin;
-    if (cvm__tri2_in_domain(R->T, t) && fr_classify(R, t, &key, &jmin) &&
+    int jf;
+    if (cvm__tri2_in_domain(R->T, t) && fr_active(R, t, &jf, &key) &&
         cvm__bq_push(&R->q, R->T, t, 0, key))
         return cvm__nomem(R->ctx);
     return CVM_OK;
 }
 
+/* Star triangles measured at once by fr_queue_star (larger stars: one by one). */
+#define FR_STAR_MAX 32
+
+/* After vertex v was inserted: queue the active triangles of its star, and,
+ * behind each accepted one, the neighbour that now lies on the front. Each
+ * star triangle is measured once; its neighbours in the star are looked up. */
 static cvm_status fr_queue_star(cvm__refiner *R, int32_t v)
 {
+    const cvm__tri2 *T = R->T;
     size_t n = cvm__rf_star(R, v), k;
+    double ratio[FR_STAR_MAX], sin2;
+    int acc[FR_STAR_MAX];
     cvm_status s;
     if (n == 0)
         return cvm__nomem(R->ctx);
-    for (k = 0; k < n; k++)
-        if ((s = fr_queue_triangle(R, R->star[k])))
-            return s;
-    return CVM_OK;
-}
-
-/* Distance along the bisector, from the midpoint m towards the circumcentre
- * (unit direction u, at distance dc), where the new edges reach the local
- * size: bisection to FR_BISECT_TOL x |e|. Returns dc when the size there is
- * still larger than the edges (or no sizing), and via *d. */
-static cvm_status fr_size_optimal(cvm__refiner *R, const double *m, const double *u, double dc,
-                                  double le, double *d)
-{
-    double lo = 0, hi = dc, h;
-    cvm_status s;
-    *d = dc;
-    if (cvm__sizing_is_empty(R->p->sizing))
+    if (n > FR_STAR_MAX) {
+        for (k = 0; k < n; k++) {
+            int32_t t = R->star[k];
+            const int32_t *tv = T->tv + 3 * (size_t)t;
+            int i = tv[0] == v ? 0 : tv[1] == v ? 1 : 2;
+            if (!cvm__tri2_in_domain(T, t))
+                continue;
+            s = fr_accepted(R, t) ? fr_queue_triangle(R, T->tn[3 * (size_t)t + (size_t)i] / 3)
+                                  : fr_queue_triangle(R, t);
+            if (s)
+                return s;
+        }
         return CVM_OK;
-    if ((s = cvm__sizing_at(R->p->sizing, m[0] + dc * u[0], m[1] + dc * u[1], &h, R->ctx)))
-        return s;
-    if (sqrt(le * le / 4 + dc * dc) <= h)
-        return CVM_OK;
-    if ((s = cvm__sizing_at(R->p->sizing, m[0], m[1], &h, R->ctx)))
-        return s;
-    if (le / 2 >= h)
-        return CVM_OK; /* the edge itself is already too long: no size-optimal point */
-    while (hi - lo > FR_BISECT_TOL * le) {
-        double mid = (lo + hi) / 2;
-        if ((s = cvm__sizing_at(R->p->sizing, m[0] + mid * u[0], m[1] + mid * u[1], &h, R->ctx)))
-            return s;
-        if (sqrt(le * le / 4 + mid * mid) < h)
-            lo = mid;
-        else
-            hi = mid;
     }
-    *d = (lo + hi) / 2;
+    for (k = 0; k < n; k++) {
+        int32_t t = R->star[k];
+        if (cvm__tri2_in_domain(T, t)) {
+            fr_measure(R, t, &ratio[k], &sin2);
+            acc[k] = ratio[k] <= FR_ACCEPT2 && sin2 >= R->sin2_min;
+        } else {
+            ratio[k] = 0;
+            acc[k] = -1;
+        }
+    }
+    for (k = 0; k < n; k++) {
+        int32_t t = R->star[k];
+        const int32_t *tv = T->tv + 3 * (size_t)t;
+        int i = tv[0] == v ? 0 : tv[1] == v ? 1 : 2, e[3], jf;
+        if (acc[k] < 0)
+            continue;
+        if (acc[k]) {
+            if ((s = fr_queue_triangle(R, T->tn[3 * (size_t)t + (size_t)i] / 3)))
+                return s;
+            continue;
+        }
+        if (ratio[k] <= FR_ACCEPT2)
+            continue; /* small enough, badly shaped: for the clean-up pass */
+        /* the star turns through edge i+1 to the next triangle, i+2 to the previous */
+        e[i] = fr_edge_on_front(R, t, i);
+        e[(i + 1) % 3] = T->te[3 * (size_t)t + (size_t)(i + 1) % 3] >= 0 || acc[(k + 1) % n] == 1;
+        e[(i + 2) % 3] = T->te[3 * (size_t)t + (size_t)(i + 2) % 3] >= 0 || acc[(k + n - 1) % n] == 1;
+        jf = fr_front_edge(R, t, e);
+        if (jf >= 0 && cvm__bq_push(&R->q, R->T, t, 0, -ratio[k]))
+            return cvm__nomem(R->ctx);
+    }
     return CVM_OK;
 }
 
-/* The Steiner point for t: on the Voronoi edge of its shortest edge jmin, the
- * one nearest that edge among the circumcentre, the shape-optimal and the
- * size-optimal off-centres. */
-static cvm_status fr_point(cvm__refiner *R, int32_t t, int jmin, double *x)
+/* Rebay's point for active triangle t with front edge jf: on the bisector of
+ * the edge (half length p), on the side of t, at the distance
+ * d = rho + sqrt(rho^2 - p^2) that makes the new triangle on the edge have
+ * circumradius rho = min(max(rho_M, p), (p^2 + q^2) / (2 q)), with rho_M the
+ * circumradius of the equilateral triangle of the size at the edge and q the
+ * distance from the edge midpoint to the circumcentre c of t (the cap keeps
+ * the point at or before c when q >= p). When q < p the formula can pass c;
+ * d is then capped at q + R/2 (R: t's circumradius), so the point stays in
+ * t's circumcircle, at least R/2 from its boundary. Either way no vertex
+ * visible from t lies closer than min(R/2, rho_M) to the point (up to the
+ * 1e-9 jitter below), a fixed fraction of the local size since t is too big
+ * (R > 0.707 x its size): the frontal pass cannot crowd points. (On the shared geometries the cap never acts.)
+ * Returns 0 (no point) when c is not beyond the edge: t's angle opposite the
+ * front edge is not acute, and the clean-up pass handles t. */
+static int fr_point(const cvm__refiner *R, int32_t t, int jf, double *x)
 {
     const int32_t *tv = R->T->tv + 3 * (size_t)t;
-    const double *p = fr_pt(R, tv[(jmin + 1) % 3]), *q = fr_pt(R, tv[(jmin + 2) % 3]);
-    double c[2], m[2], u[2], dc, le, d, ds;
-    cvm_status s;
+    int32_t ia = tv[(jf + 1) % 3], ib = tv[(jf + 2) % 3];
+    const double *a = fr_pt(R, ia), *b = fr_pt(R, ib);
+    double c[2], m[2], nx, ny, len, p, q, rho, d, h;
     cvm__circumcenter2d(fr_pt(R, tv[0]), fr_pt(R, tv[1]), fr_pt(R, tv[2]), c);
-    m[0] = (p[0] + q[0]) / 2;
-    m[1] = (p[1] + q[1]) / 2;
-    u[0] = c[0] - m[0];
-    u[1] = c[1] - m[1];
-    dc = hypot(u[0], u[1]);
-    le = hypot(q[0] - p[0], q[1] - p[1]);
-    if (!(dc > 0) || !isfinite(dc)) {
-        x[0] = c[0];
-        x[1] = c[1];
-        return CVM_OK;
+    m[0] = (a[0] + b[0]) / 2;
+    m[1] = (a[1] + b[1]) / 2;
+    len = hypot(b[0] - a[0], b[1] - a[1]);
+    if (!(len > 0) || !isfinite(c[0]) || !isfinite(c[1])) {
+        return 0;
     }
-    u[0] /= dc;
-    u[1] /= dc;
-    d = dc;
-    if (R->p->min_angle_deg >= FR_SHAPE_MIN_DEG) {
-        ds = le / (2 * tan(R->p->min_angle_deg * 3.14159265358979323846 / 360.0));
-        if (ds < d)
-            d = ds;
+    /* unit normal of a->b towards the apex (t is counter-clockwise) */
+    nx = -(b[1] - a[1]) / len;
+    ny = (b[0] - a[0]) / len;
+    p = len / 2;
+    q = (c[0] - m[0]) * nx + (c[1] - m[1]) * ny;
+    h = (fr_size(R, ia) + fr_size(R, ib)) / 2;
+    rho = h / 1.7320508075688772;
+    if (!(rho >= p))
+        rho = p;
+    if (q > 0 && rho > (p * p + q * q) / (2 * q))
+        rho = (p * p + q * q) / (2 * q);
+    d = rho + sqrt(rho * rho > p * p ? rho * rho - p * p : 0);
+    if (d > q + 0.5 * sqrt(p * p + q * q))
+        d = q + 0.5 * sqrt(p * p + q * q);
+    /* A relative change below 1e-9, deterministic in the vertex count, keeps
+     * the frontal points off an exact lattice: lattice points are cocircular
+     * in many fours, which sends the in-circle tests of the insertion to their
+     * slow exact stages (measured: 10% of the instructions of a naca0012 run). */
+    d *= 1 + 1e-9 * ((double)(((uint32_t)R->T->nv * 2654435761u) % 2048u) / 1024.0 - 1.0);
+    x[0] = m[0] + d * nx;
+    x[1] = m[1] + d * ny;
+    return q > 0;
+}
+
+/* 1 when x is reached from triangle t by a visibility walk (exact orient2d)
+ * that crosses no constrained edge and never leaves the domain: the point lies
+ * on t's side of every segment, so inserting it splits no segment. */
+static int fr_reachable(const cvm__refiner *R, int32_t t, const double *x)
+{
+    const cvm__tri2 *T = R->T;
+    int32_t prev = -1;
+    size_t steps = 0;
+    for (;;) {
+        const int32_t *tv = T->tv + 3 * (size_t)t;
+        int k, moved = 0;
+        if (++steps > T->nt + 3)
+            return 0;
+        for (k = 0; k < 3 && !moved; k++) {
+            int j = (int)((k + steps) % 3);
+            int32_t nb = T->tn[3 * (size_t)t + (size_t)j] / 3;
+            if (nb == prev || cvm__orient2d(fr_pt(R, tv[(j + 1) % 3]), fr_pt(R, tv[(j + 2) % 3]), x) >= 0)
+                continue;
+            if (T->te[3 * (size_t)t + (size_t)j] >= 0 || !cvm__tri2_in_domain(T, nb))
+                return 0;
+            prev = t;
+            t = nb;
+            moved = 1;
+        }
+        if (!moved)
+            return 1;
     }
-    if ((s = fr_size_optimal(R, m, u, dc, le, &ds)))
-        return s;
-    if (ds < d)
-        d = ds;
-    x[0] = m[0] + d * u[0];
-    x[1] = m[1] + d * u[1];
-    return CVM_OK;
 }
 
 static cvm_status fr_queue_all(cvm__refiner *R)
@@ -168,18 +292,21 @@ cvm_status cvm__rf_frontal(cvm__refiner *R)
     while (cvm__bq_pop(&R->q, &e)) {
         double key, x[2];
         int32_t v;
-        int jmin, r;
-        if (!cvm__bq_valid(R->T, &e) || !fr_classify(R, e.t, &key, &jmin))
+        int jf, r;
+        if (!cvm__bq_valid(R->T, &e) || !fr_active(R, e.t, &jf, &key) ||
+            cvm__rf_classify(R, e.t, &key) == 3)
             continue;
-        if ((s = fr_point(R, e.t, jmin, x)))
-            return s;
+        if (!fr_point(R, e.t, jf, x))
+            continue;
+        /* a point beyond a segment is left to the clean-up pass: splitting the
+         * segment where the walk meets it would not remove t */
+        if (!isfinite(x[0]) || !isfinite(x[1]) || !fr_reachable(R, e.t, x))
+            continue;
         r = cvm__rf_insert_free(R, e.t, x, &v, &s);
         if (s)
             return s;
         if (r == CVM__RF_DONE)
             s = fr_queue_star(R, v);
-        else if (r == CVM__RF_SPLIT && cvm__bq_valid(R->T, &e))
-            s = cvm__bq_push(&R->q, R->T, e.t, e.cls, e.key) ? cvm__nomem(R->ctx) : CVM_OK;
         if (!s)
             s = cvm__rf_split_queued(R);
         if (s)

@@ -2,8 +2,9 @@
  * refine_internal.h - mesh refinement on the 2D kernel: the sizing handle,
  * the queue of bad triangles, segment encroachment and splitting, Delaunay
  * refinement (Ruppert 1995; Shewchuk 1997/2002, as in Triangle) and
- * frontal-Delaunay refinement (Engwirda 2014, off-centre placement) and
- * advancing-front local reconnection (Marcum 1995) inside the Delaunay kernel.
+ * frontal-Delaunay refinement (Rebay 1993: points on the bisectors of front
+ * edges, grown from the boundary) and advancing-front local reconnection
+ * (Marcum 1995) inside the Delaunay kernel.
  *
  * The module works on a cvm__tri2 and plain parameters; it never sees the
  * cvm_mesh handle. Topological decisions (where a point lies, which triangles
@@ -365,10 +366,11 @@ double cvm__rf_min_sin2(const double *p, const double *q, const double *r);
  * (6 inside; round(boundary angle / 60 degrees) + 1 on the boundary): an
  * unconstrained edge between two domain triangles whose quadrilateral is
  * strictly convex (exact orient2d) is flipped when the sum of squared degree
- * deviations of its four vertices drops and both new triangles keep every
- * angle with sin^2 >= sin2_min. The result need not be Delaunay.
+ * deviations of its four vertices drops, both new triangles keep every angle
+ * with sin^2 >= R->sin2_min and neither is too big for the size bounds
+ * (R->vls, max_area). The result need not be Delaunay.
  * CVM_OK or CVM_E_NOMEM (the triangulation stays valid). */
-cvm_status cvm__rf_swap_degree(cvm__tri2 *T, double sin2_min, size_t *flips_out);
+cvm_status cvm__rf_swap_degree(const cvm__refiner *R, size_t *flips_out);
 /* Lawson flips (exact in-circle) until every unconstrained edge between two
  * domain triangles is locally Delaunay. CVM_OK, or CVM_E_NOMEM when the edge
  * stack could not grow: the flips are then finished by allocation-free sweeps,

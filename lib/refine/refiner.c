@@ -171,22 +171,27 @@ static void rf_teardown(cvm__refiner *R)
     cvm__rf_aflr_free(R);
 }
 
-/* Smallest angle of triangle t in degrees, from its coordinates. */
+/* Smallest angle of triangle t in degrees, from its coordinates: the angle
+ * opposite the shortest edge (one atan2 instead of three). */
 static double rf_min_angle_deg(const cvm__tri2 *T, int32_t t)
 {
     const int32_t *tv = T->tv + 3 * (size_t)t;
-    double best = 180.0;
-    int k;
+    double l[3];
+    int k, m = 0;
     for (k = 0; k < 3; k++) {
-        const double *o = T->xy + 2 * (size_t)tv[k];
         const double *a = T->xy + 2 * (size_t)tv[(k + 1) % 3];
         const double *b = T->xy + 2 * (size_t)tv[(k + 2) % 3];
-        double ux = a[0] - o[0], uy = a[1] - o[1], wx = b[0] - o[0], wy = b[1] - o[1];
-        double ang = atan2(fabs(ux * wy - uy * wx), ux * wx + uy * wy) * 180.0 / 3.14159265358979323846;
-        if (ang < best)
-            best = ang;
+        l[k] = (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]);
+        if (l[k] < l[m])
+            m = k;
     }
-    return best;
+    {
+        const double *o = T->xy + 2 * (size_t)tv[m];
+        const double *a = T->xy + 2 * (size_t)tv[(m + 1) % 3];
+        const double *b = T->xy + 2 * (size_t)tv[(m + 2) % 3];
+        double ux = a[0] - o[0], uy = a[1] - o[1], wx = b[0] - o[0], wy = b[1] - o[1];
+        return atan2(fabs(ux * wy - uy * wx), ux * wx + uy * wy) * 180.0 / 3.14159265358979323846;
+    }
 }
 
 /* Record where triangle t was left unmet (reason bits CVM_UNMET_*). */
@@ -257,8 +262,9 @@ static cvm_status rf_report(cvm__refiner *R, cvm__refine_report *rep)
 }
 
 /* Post-processing (swap.c, smooth.c) of the Steiner vertices first..nv-1:
- * degree swapping, smoothing, then the Delaunay-restoring flips. */
-static cvm_status rf_post(cvm__refiner *R, size_t first)
+ * degree swapping, smoothing, then the Delaunay-restoring flips (their
+ * number into *flips). */
+static cvm_status rf_post(cvm__refiner *R, size_t first, size_t *flips)
 {
     const cvm__refine_params *p = R->p;
     cvm_status s = CVM_OK;
@@ -266,12 +272,12 @@ static cvm_status rf_post(cvm__refiner *R, size_t first)
     if (R->T->w)
         return CVM_OK; /* a weighted (regular) triangulation: left as refined */
     if (p->swap)
-        s = cvm__rf_swap_degree(R->T, R->sin2_min, NULL);
+        s = cvm__rf_swap_degree(R, NULL);
     if (!s && p->smooth_sweeps > 0)
         s = cvm__rf_smooth(R, first, p->smooth_sweeps, NULL);
     /* restored even after an error above: it finishes without memory if it must */
     if (p->restore_delaunay && (p->swap || p->smooth_sweeps > 0) &&
-        (s2 = cvm__rf_restore_delaunay(R->T, NULL)) != CVM_OK && !s)
+        (s2 = cvm__rf_restore_delaunay(R->T, flips)) != CVM_OK && !s)
         s = s2;
     return s;
 }
@@ -280,7 +286,7 @@ cvm_status cvm__refine(cvm__tri2 *T, const cvm__refine_params *p, cvm__refine_re
 {
     cvm__refiner R;
     cvm_status s;
-    size_t first = T->nv;
+    size_t first = T->nv, flips = 0;
     memset(rep, 0, sizeof *rep);
     s = rf_setup(&R, T, p);
     if (!s && p->march && !cvm__sizing_is_empty(p->sizing))
@@ -294,7 +300,11 @@ cvm_status cvm__refine(cvm__tri2 *T, const cvm__refine_params *p, cvm__refine_re
     if (!s)
         s = cvm__rf_delaunay(&R);
     if (!s)
-        s = rf_post(&R, first);
+        s = rf_post(&R, first, &flips);
+    /* swapping and smoothing keep the bounds, but the Delaunay-restoring flips
+     * may make a triangle too big or too thin again: refine those */
+    if (!s && flips > 0)
+        s = cvm__rf_delaunay(&R);
     if (!cvm_status_is_error(s)) {
         cvm_status s2 = rf_report(&R, rep);
         if (s2)

@@ -1,5 +1,6 @@
 /* smooth.c - post-processing by "smart" Laplacian smoothing: a free Steiner vertex moves towards the centroid of its neighbours when no star triangle inverts (exact orient2d) and the star gets more regular without losing angle or size bounds. */
 #include <math.h>
+#include <string.h>
 
 #include "refine_internal.h"
 #include "delaunay/tri2_store.h"
@@ -42,9 +43,10 @@ static int sm_star_eval(const cvm__refiner *R, int32_t v, const double *p, const
     const double lo2 = 0.42261826174069944 * 0.42261826174069944;
     const double hi2 = 0.57357643635104616 * 0.57357643635104616;
     size_t k;
-    *bad = 0;
-    *q = 1.0;
-    *big = 0;
+    /* local sums (stored at the end): *bad may alias the coordinates, so
+     * updating it in the loop would reload them every time */
+    double sbad = 0, sq = 1.0;
+    int sbig = 0;
     for (k = 0; k < n; k++) {
         const int32_t *tv = T->tv + 3 * (size_t)star[k];
         int i = tv[0] == v ? 0 : tv[1] == v ? 1 : 2;
@@ -67,38 +69,109 @@ static int sm_star_eval(const cvm__refiner *R, int32_t v, const double *p, const
         den[2] = 4 * lpb * lab;
         for (j = 0; j < 3; j++) {
             double n2 = num[j] * num[j];
-            *bad += (num[j] < 0) - (num[j] >= 0 && n2 >= lo2 * den[j] && n2 <= hi2 * den[j]);
+            sbad += (num[j] < 0) - (num[j] >= 0 && n2 >= lo2 * den[j] && n2 <= hi2 * den[j]);
         }
-        *bad += 1e-3 * (1 - 2 * 1.7320508075688772 * ar / (lpa + lpb + lab));
+        sbad += 1e-3 * (1 - 2 * 1.7320508075688772 * ar / (lpa + lpb + lab));
         lmin = lpa < lpb ? (lpa < lab ? lpa : lab) : (lpb < lab ? lpb : lab);
         s = lmin * ar * ar / (lpa * lpb * lab);
-        if (s < *q)
-            *q = s;
+        if (s < sq)
+            sq = s;
         /* too big as in Delaunay refinement: circumradius above the mean size, or the area bound */
         ls = (R->vls[v] + R->vls[ia] + R->vls[ib]) / 3;
         if ((isfinite(ls) && lpa * lpb * lab > 4 * ls * ls * ar * ar) ||
             (cvm__rf_max_area(R, star[k]) > 0 && ar > 2 * cvm__rf_max_area(R, star[k])))
-            (*big)++;
+            sbig++;
     }
+    *bad = sbad;
+    *q = sq;
+    *big = sbig;
     return 1;
+}
+
+/* 1 when every angle of domain triangle t is in [55, 65] degrees, by the
+ * same test as sm_star_eval. */
+static int sm_perfect(const cvm__tri2 *T, int32_t t)
+{
+    const double lo2 = 0.42261826174069944 * 0.42261826174069944;
+    const double hi2 = 0.57357643635104616 * 0.57357643635104616;
+    const int32_t *tv = T->tv + 3 * (size_t)t;
+    const double *p = cvm__tri2_pt(T, tv[0]), *a = cvm__tri2_pt(T, tv[1]), *b = cvm__tri2_pt(T, tv[2]);
+    double lpa = (a[0] - p[0]) * (a[0] - p[0]) + (a[1] - p[1]) * (a[1] - p[1]);
+    double lpb = (b[0] - p[0]) * (b[0] - p[0]) + (b[1] - p[1]) * (b[1] - p[1]);
+    double lab = (b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]);
+    double num[3], den[3];
+    int j;
+    num[0] = lpa + lpb - lab;
+    den[0] = 4 * lpa * lpb;
+    num[1] = lpa + lab - lpb;
+    den[1] = 4 * lpa * lab;
+    num[2] = lpb + lab - lpa;
+    den[2] = 4 * lpb * lab;
+    for (j = 0; j < 3; j++)
+        if (!(num[j] >= 0 && num[j] * num[j] >= lo2 * den[j] && num[j] * num[j] <= hi2 * den[j]))
+            return 0;
+    return 1;
+}
+
+/* Mark v and its neighbours (the vertices of its star) in mark[]. */
+static void sm_mark_star(const cvm__tri2 *T, int32_t v, const int32_t *star, size_t n,
+                         uint8_t *mark)
+{
+    size_t k;
+    mark[v] = 1;
+    for (k = 0; k < n; k++) {
+        const int32_t *tv = T->tv + 3 * (size_t)star[k];
+        mark[tv[0]] = mark[tv[1]] = mark[tv[2]] = 1;
+    }
 }
 
 cvm_status cvm__rf_smooth(cvm__refiner *R, size_t first, int sweeps, size_t *moves_out)
 {
     cvm__tri2 *T = R->T;
     int32_t *star = NULL;
+    uint8_t *cur = NULL, *next = NULL;
     size_t cap = 0, v, moves = 0;
     int sweep, err = 0;
     if (moves_out)
         *moves_out = 0;
+    if (sweeps <= 0 || first >= T->nv)
+        return CVM_OK;
+    /* A vertex is evaluated again only when it or a neighbour moved in the
+     * sweep before: otherwise its star is unchanged and so is the decision,
+     * so the result is that of full sweeps. */
+    cur = cvm__malloc(T->ctx, T->nv);
+    next = cvm__malloc(T->ctx, T->nv);
+    if (!cur || !next) {
+        cvm__free(T->ctx, cur);
+        cvm__free(T->ctx, next);
+        return cvm__nomem(T->ctx);
+    }
+    /* the first sweep visits the vertices of triangles with an angle outside
+     * [55, 65] degrees: the others are left alone by the rule below anyway */
+    memset(cur, 0, T->nv);
+    {
+        size_t t;
+        for (t = 0; t < T->nt; t++) {
+            const int32_t *tv = T->tv + 3 * t;
+            if (cvm__tri2_in_domain(T, (int32_t)t) && !sm_perfect(T, (int32_t)t))
+                cur[tv[0]] = cur[tv[1]] = cur[tv[2]] = 1;
+        }
+    }
     for (sweep = 0; sweep < sweeps; sweep++) {
+        size_t moved_before = moves;
+        memset(next, 0, T->nv);
         for (v = first; v < T->nv; v++) {
-            size_t n = sm_star(T, (int32_t)v, &star, &cap, &err), k;
+            size_t n, k;
             double p[2] = {0, 0}, b0, b1, q0, q1;
             double *x = T->xy + 2 * v;
             int big0, big1;
+            if (!cur[v])
+                continue;
+            n = sm_star(T, (int32_t)v, &star, &cap, &err);
             if (err) {
                 cvm__free(T->ctx, star);
+                cvm__free(T->ctx, cur);
+                cvm__free(T->ctx, next);
                 return cvm__nomem(T->ctx);
             }
             if (n < 3)
@@ -142,10 +215,28 @@ cvm_status cvm__rf_smooth(cvm__refiner *R, size_t first, int sweeps, size_t *mov
                 x[0] = best[0];
                 x[1] = best[1];
             }
+            /* this sweep's later vertices see the move already; the next
+             * sweep re-evaluates the whole neighbourhood */
+            sm_mark_star(T, (int32_t)v, star, n, next);
+            for (k = 0; k < n; k++) {
+                const int32_t *tv = T->tv + 3 * (size_t)star[k];
+                cur[tv[0]] = cur[tv[0]] || (size_t)tv[0] > v;
+                cur[tv[1]] = cur[tv[1]] || (size_t)tv[1] > v;
+                cur[tv[2]] = cur[tv[2]] || (size_t)tv[2] > v;
+            }
             moves++;
+        }
+        if (moves == moved_before)
+            break;
+        {
+            uint8_t *sw = cur;
+            cur = next;
+            next = sw;
         }
     }
     cvm__free(T->ctx, star);
+    cvm__free(T->ctx, cur);
+    cvm__free(T->ctx, next);
     if (moves_out)
         *moves_out = moves;
     return CVM_OK;

@@ -139,9 +139,54 @@ static cvm_status sw_degrees(const cvm__tri2 *T, cvm__ctx *ctx, int32_t **deg_ou
     return CVM_OK;
 }
 
-cvm_status cvm__rf_swap_degree(cvm__tri2 *T, double sin2_min, size_t *flips_out)
+/* After a flip in the sweep at triangle t_now: every triangle with an edge
+ * whose decision may have changed (those around the four vertices of the
+ * flip, and their neighbours, since an edge is looked at from its lower
+ * triangle) is marked for the next sweep, and for this one when it comes
+ * later in it. */
+static void sw_mark_around(const cvm__tri2 *T, int32_t v, size_t t_now, uint8_t *cur, uint8_t *next)
 {
+    int32_t t0 = T->vtri[v], t = t0;
+    size_t n = 0;
+    int k;
+    if (t0 < 0)
+        return;
+    do {
+        const int32_t *tv = T->tv + 3 * (size_t)t;
+        int i = tv[0] == v ? 0 : tv[1] == v ? 1 : 2;
+        for (k = 0; k < 4; k++) {
+            int32_t w = k < 3 ? T->tn[3 * (size_t)t + (size_t)k] / 3 : t;
+            next[w] = 1;
+            if ((size_t)w > t_now)
+                cur[w] = 1;
+        }
+        t = T->tn[3 * (size_t)t + (size_t)(i + 1) % 3] / 3;
+    } while (t != t0 && ++n <= T->nt);
+}
+
+/* Triangle (p, q, r) (counter-clockwise) with vertices a, b, c would be too
+ * big for the refiner's bounds: circumradius above the mean size at its
+ * vertices, or area above max_area (the test of Delaunay refinement). */
+static int sw_too_big(const cvm__refiner *R, int32_t t, int32_t a, int32_t b, int32_t c)
+{
+    const double *p = cvm__tri2_pt(R->T, a), *q = cvm__tri2_pt(R->T, b), *r = cvm__tri2_pt(R->T, c);
+    double l0 = (q[0] - r[0]) * (q[0] - r[0]) + (q[1] - r[1]) * (q[1] - r[1]);
+    double l1 = (p[0] - r[0]) * (p[0] - r[0]) + (p[1] - r[1]) * (p[1] - r[1]);
+    double l2 = (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]);
+    double cross = (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0]);
+    double ls = (R->vls[a] + R->vls[b] + R->vls[c]) / 3;
+    double ma = cvm__rf_max_area(R, t); /* the flip stays in t's region */
+    if (ma > 0 && cross / 2 > ma)
+        return 1;
+    return isfinite(ls) && l0 * l1 * l2 > 4 * cross * cross * ls * ls;
+}
+
+cvm_status cvm__rf_swap_degree(const cvm__refiner *R, size_t *flips_out)
+{
+    cvm__tri2 *T = R->T;
+    const double sin2_min = R->sin2_min;
     int32_t *deg = NULL, *ideal = NULL;
+    uint8_t *cur, *next;
     size_t t, flips = 0;
     int sweep, any = 1;
     cvm_status s;
@@ -149,11 +194,25 @@ cvm_status cvm__rf_swap_degree(cvm__tri2 *T, double sin2_min, size_t *flips_out)
         *flips_out = 0;
     if ((s = sw_degrees(T, T->ctx, &deg, &ideal)))
         return s;
+    /* Sweeps after the first visit only the triangles marked by the flips of
+     * the sweep before (sw_mark_around): the others would decide as before,
+     * so the result is that of full sweeps. */
+    cur = cvm__malloc(T->ctx, T->nt + 1);
+    next = cvm__malloc(T->ctx, T->nt + 1);
+    if (!cur || !next) {
+        cvm__free(T->ctx, cur);
+        cvm__free(T->ctx, next);
+        cvm__free(T->ctx, deg);
+        cvm__free(T->ctx, ideal);
+        return cvm__nomem(T->ctx);
+    }
+    memset(cur, 1, T->nt);
     for (sweep = 0; sweep < SW_MAX_SWEEPS && any; sweep++) {
         any = 0;
+        memset(next, 0, T->nt);
         for (t = 0; t < T->nt; t++) {
             int j;
-            if (!cvm__tri2_in_domain(T, (int32_t)t))
+            if (!cur[t] || !cvm__tri2_in_domain(T, (int32_t)t))
                 continue;
             for (j = 0; j < 3; j++) {
                 int32_t h = T->tn[3 * t + (size_t)j], u = h / 3;
@@ -170,7 +229,8 @@ cvm_status cvm__rf_swap_degree(cvm__tri2 *T, double sin2_min, size_t *flips_out)
                 if (cvm__rf_min_sin2(cvm__tri2_pt(T, a), cvm__tri2_pt(T, b), cvm__tri2_pt(T, d)) <
                         sin2_min ||
                     cvm__rf_min_sin2(cvm__tri2_pt(T, d), cvm__tri2_pt(T, c), cvm__tri2_pt(T, a)) <
-                        sin2_min)
+                        sin2_min ||
+                    sw_too_big(R, (int32_t)t, a, b, d) || sw_too_big(R, (int32_t)t, d, c, a))
                     continue;
                 sw_flip(T, (int32_t)t, j);
                 deg[a]++;
@@ -179,9 +239,20 @@ cvm_status cvm__rf_swap_degree(cvm__tri2 *T, double sin2_min, size_t *flips_out)
                 deg[c]--;
                 flips++;
                 any = 1;
+                sw_mark_around(T, a, t, cur, next);
+                sw_mark_around(T, b, t, cur, next);
+                sw_mark_around(T, c, t, cur, next);
+                sw_mark_around(T, d, t, cur, next);
             }
         }
+        {
+            uint8_t *sw = cur;
+            cur = next;
+            next = sw;
+        }
     }
+    cvm__free(T->ctx, cur);
+    cvm__free(T->ctx, next);
     cvm__free(T->ctx, deg);
     cvm__free(T->ctx, ideal);
     if (flips_out)

@@ -52,12 +52,10 @@ static void sides(cvm_mesh *m, double *amax, size_t *count)
 START_TEST(each_region_meets_its_area)
 {
     int algo;
-    for (algo = CVM_ALGO_DELAUNAY; algo <= CVM_ALGO_FRONTAL; algo++) {
+    for (algo = CVM_ALGO_DELAUNAY; algo <= CVM_ALGO_AFLR; algo++) {
         cvm_mesh *m = two_regions(0.001, 0.01);
         double amax[2];
         size_t count[2];
-        /* degree swapping does not look at sizes yet */
-        ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_SWAP, 0), CVM_OK);
         ck_assert_int_eq(cvm_mesh_refine(m, NULL, (cvm_algorithm)algo), CVM_OK);
         ck_assert_int_eq(cvm_mesh_check(m), CVM_OK);
         sides(m, amax, count);
