@@ -38,6 +38,26 @@ typedef struct cli_setting {
 
 #define CLI_MAX_SETTINGS 32
 
+/* The shared end of refine and optimise: s is the status of their main call on
+ * m (input file in). An error fails (message printed); an incomplete status
+ * prints a note and goes on. Then write out, svg and dual (each when not
+ * NULL), print the quality report and report(stdout, m) when quality, and free
+ * m and sz. Returns CLI_EXIT_OK or the exit status of the first failure. */
+int cli_finish(cvm_mesh *m, cvm_sizing *sz, const char *in, cvm_status s, const char *out,
+               const char *svg, const char *dual, int quality, void (*report)(FILE *, cvm_mesh *));
+
+/* The shared tail of a subcommand's argument loop, after its own flags:
+ * argv[*i] is an option flag of cmd (recorded in set), or else the one input
+ * file (*in). Returns CLI_EXIT_OK, or CLI_EXIT_USAGE after printing why
+ * ("cvmesh: NAME: ..."). */
+int cli_parse_tail(const char *name, unsigned cmd, int argc, char **argv, int *i,
+                   cli_setting *set, int *nset, const char **in);
+/* After the loop: CLI_EXIT_OK when an input file was named, else a usage error. */
+int cli_need_input(const char *name, const char *in);
+/* Print the last error of m (after "prefix: " when prefix is not NULL), free
+ * m and sz (either may be NULL) and return CLI_EXIT_FAIL. */
+int cli_fail(cvm_mesh *m, cvm_sizing *sz, const char *prefix);
+
 /* If argv[*i] is an option flag of cmd, record its setting (taking its value
  * from "--flag=V" or the next argument) and return 1; return 0 if it is not
  * one; return -1 after printing a usage error. */

@@ -151,30 +151,10 @@ static int parse(rargs *a, int argc, char **argv)
             a->quality = 1;
             continue;
         }
-        r = cli_parse_option_flag(CLI_CMD_REFINE, argc, argv, &i, a->set, &a->nset);
-        if (r < 0)
-            return CLI_EXIT_USAGE;
-        if (r > 0)
-            continue;
-        if ((s[0] == '-' && s[1] != '\0') || a->in) {
-            fprintf(stderr, "cvmesh: refine: unexpected argument '%s' (see cvmesh refine --help)\n", s);
-            return CLI_EXIT_USAGE;
-        }
-        a->in = s;
+        if ((r = cli_parse_tail("refine", CLI_CMD_REFINE, argc, argv, &i, a->set, &a->nset, &a->in)))
+            return r;
     }
-    if (!a->in) {
-        fprintf(stderr, "cvmesh: refine: no input file (see cvmesh refine --help)\n");
-        return CLI_EXIT_USAGE;
-    }
-    return CLI_EXIT_OK;
-}
-
-static int rfail(cvm_mesh *m, cvm_sizing *sz, const char *prefix)
-{
-    fprintf(stderr, "cvmesh: %s%s%s\n", prefix ? prefix : "", prefix ? ": " : "", cvm_mesh_errmsg(m));
-    cvm_sizing_free(sz);
-    cvm_mesh_free(m);
-    return CLI_EXIT_FAIL;
+    return cli_need_input("refine", a->in);
 }
 
 /* The refinement report: Steiner points and what was left unmet. */
@@ -239,36 +219,13 @@ static int run(const rargs *a)
         return CLI_EXIT_USAGE;
     }
     if (cvm_mesh_read(m, a->in) != CVM_OK)
-        return rfail(m, sz, NULL);
+        return cli_fail(m, sz, NULL);
     if (!cli_is_triangulated(m) && cvm_mesh_triangulate(m) != CVM_OK) /* a .vtu is a mesh */
-        return rfail(m, sz, a->in);
+        return cli_fail(m, sz, a->in);
     if (a->nfronts && cvm_mesh_set_front_markers(m, a->fronts, a->nfronts) != CVM_OK)
-        return rfail(m, sz, NULL);
+        return cli_fail(m, sz, NULL);
     s = cvm_mesh_refine(m, sz, a->algo);
-    if (cvm_status_is_error(s))
-        return rfail(m, sz, a->in);
-    if (s != CVM_OK)
-        fprintf(stderr, "cvmesh: note: %s: %s\n", a->in, cvm_mesh_errmsg(m));
-    if (a->out && cvm_mesh_write(m, a->out) != CVM_OK)
-        return rfail(m, sz, NULL);
-    if (a->svg && cvm_mesh_write(m, a->svg) != CVM_OK)
-        return rfail(m, sz, NULL);
-    if (a->dual && (rc = cli_write_dual(m, a->dual))) {
-        cvm_sizing_free(sz);
-        cvm_mesh_free(m);
-        return rc;
-    }
-    if (a->quality) {
-        if ((rc = cli_print_quality(stdout, m))) {
-            cvm_sizing_free(sz);
-            cvm_mesh_free(m);
-            return rc;
-        }
-        print_report(stdout, m);
-    }
-    cvm_sizing_free(sz);
-    cvm_mesh_free(m);
-    return CLI_EXIT_OK;
+    return cli_finish(m, sz, a->in, s, a->out, a->svg, a->dual, a->quality, print_report);
 }
 
 int cli_refine(int argc, char **argv)

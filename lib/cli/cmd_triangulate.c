@@ -87,25 +87,12 @@ static int parse(args *a, int argc, char **argv)
             a->timings = 1;
             continue;
         }
-        r = cli_parse_option_flag(CLI_CMD_TRIANGULATE, argc, argv, &i, a->set, &a->nset);
-        if (r < 0)
-            return CLI_EXIT_USAGE;
-        if (r > 0)
-            continue;
-        if (s[0] == '-' && s[1] != '\0') {
-            fprintf(stderr, "cvmesh: triangulate: unknown flag '%s' (see cvmesh triangulate --help)\n", s);
-            return CLI_EXIT_USAGE;
-        }
-        if (a->in) {
-            fprintf(stderr, "cvmesh: triangulate: more than one input file ('%s' and '%s')\n", a->in, s);
-            return CLI_EXIT_USAGE;
-        }
-        a->in = s;
+        if ((r = cli_parse_tail("triangulate", CLI_CMD_TRIANGULATE, argc, argv, &i, a->set,
+                                &a->nset, &a->in)))
+            return r;
     }
-    if (!a->in) {
-        fprintf(stderr, "cvmesh: triangulate: no input file (see cvmesh triangulate --help)\n");
+    if (cli_need_input("triangulate", a->in))
         return CLI_EXIT_USAGE;
-    }
     if (a->out && !has_ext(a->out, ".vtu") && !has_ext(a->out, ".msh") &&
         !has_ext(a->out, ".node") && !has_ext(a->out, ".svg")) {
         fprintf(stderr, "cvmesh: %s: unknown output format (use .vtu, .msh, .node or .svg)\n", a->out);
@@ -151,16 +138,6 @@ static void remove_output(const char *out)
     }
 }
 
-static int fail(cvm_mesh *m, const char *prefix)
-{
-    if (prefix)
-        fprintf(stderr, "cvmesh: %s: %s\n", prefix, cvm_mesh_errmsg(m));
-    else
-        fprintf(stderr, "cvmesh: %s\n", cvm_mesh_errmsg(m));
-    cvm_mesh_free(m);
-    return CLI_EXIT_FAIL;
-}
-
 static int run(const args *a)
 {
     cvm_mesh *m;
@@ -179,21 +156,21 @@ static int run(const args *a)
     }
     t0 = cli_now();
     if (cvm_mesh_read(m, a->in) != CVM_OK)
-        return fail(m, NULL);
+        return cli_fail(m, NULL, NULL);
     t_read = cli_now();
     if (a->timings)
         cvm_mesh_set_progress(m, on_progress, 1, &ph);
     s = cli_is_triangulated(m) ? CVM_OK : cvm_mesh_triangulate(m); /* a .vtu is a mesh */
     if (s != CVM_OK)
-        return fail(m, a->in);
+        return cli_fail(m, NULL, a->in);
     t_tri = cli_now();
     if (cvm_mesh_count(&ndup, m, CVM_ENT_DUPLICATE) == CVM_OK && ndup)
         fprintf(stderr, "cvmesh: note: %s: %lu duplicate points merged\n", a->in, (unsigned long)ndup);
     if (a->out && cvm_mesh_write(m, a->out) != CVM_OK)
-        return fail(m, NULL);
+        return cli_fail(m, NULL, NULL);
     if (a->svg && cvm_mesh_write(m, a->svg) != CVM_OK) {
         remove_output(a->out); /* all outputs or none */
-        return fail(m, NULL);
+        return cli_fail(m, NULL, NULL);
     }
     if (a->dual && (rc = cli_write_dual(m, a->dual))) {
         remove_output(a->out);

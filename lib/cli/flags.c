@@ -135,3 +135,40 @@ void cli_print_option_flags(FILE *f, unsigned cmd)
         fputc('\n', f);
     }
 }
+
+int cli_parse_tail(const char *name, unsigned cmd, int argc, char **argv, int *i,
+                   cli_setting *set, int *nset, const char **in)
+{
+    const char *s = argv[*i];
+    int r = cli_parse_option_flag(cmd, argc, argv, i, set, nset);
+    if (r < 0)
+        return CLI_EXIT_USAGE;
+    if (r > 0)
+        return CLI_EXIT_OK;
+    if (s[0] == '-' && s[1] != '\0') {
+        fprintf(stderr, "cvmesh: %s: unknown flag '%s' (see cvmesh %s --help)\n", name, s, name);
+        return CLI_EXIT_USAGE;
+    }
+    if (*in) {
+        fprintf(stderr, "cvmesh: %s: more than one input file ('%s' and '%s')\n", name, *in, s);
+        return CLI_EXIT_USAGE;
+    }
+    *in = s;
+    return CLI_EXIT_OK;
+}
+
+int cli_need_input(const char *name, const char *in)
+{
+    if (in)
+        return CLI_EXIT_OK;
+    fprintf(stderr, "cvmesh: %s: no input file (see cvmesh %s --help)\n", name, name);
+    return CLI_EXIT_USAGE;
+}
+
+int cli_fail(cvm_mesh *m, cvm_sizing *sz, const char *prefix)
+{
+    fprintf(stderr, "cvmesh: %s%s%s\n", prefix ? prefix : "", prefix ? ": " : "", cvm_mesh_errmsg(m));
+    cvm_sizing_free(sz);
+    cvm_mesh_free(m);
+    return CLI_EXIT_FAIL;
+}

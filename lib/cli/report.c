@@ -184,3 +184,22 @@ int cli_write_dual(cvm_mesh *m, const char *path)
     }
     return CLI_EXIT_OK;
 }
+
+int cli_finish(cvm_mesh *m, cvm_sizing *sz, const char *in, cvm_status s, const char *out,
+               const char *svg, const char *dual, int quality, void (*report)(FILE *, cvm_mesh *))
+{
+    int rc = CLI_EXIT_OK;
+    if (cvm_status_is_error(s))
+        return cli_fail(m, sz, in);
+    if (s != CVM_OK)
+        fprintf(stderr, "cvmesh: note: %s: %s\n", in, cvm_mesh_errmsg(m));
+    if ((out && cvm_mesh_write(m, out) != CVM_OK) || (svg && cvm_mesh_write(m, svg) != CVM_OK))
+        return cli_fail(m, sz, NULL);
+    if (dual)
+        rc = cli_write_dual(m, dual);
+    if (!rc && quality && !(rc = cli_print_quality(stdout, m)) && report)
+        report(stdout, m);
+    cvm_sizing_free(sz);
+    cvm_mesh_free(m);
+    return rc;
+}
