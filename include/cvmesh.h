@@ -442,6 +442,16 @@ typedef enum cvm_option {
      *  Delaunay, but keeps the regularity gained by smoothing. 0 (a non-Delaunay
      *  result) is reserved. Integer, bounds [1, 1]. */
     CVM_OPT_RESTORE_DELAUNAY = 207,
+    /** Smoothing method of CVM_OPT_SMOOTH_SWEEPS, integer, [0, 2]: 0 (default) the smart
+     *  Laplacian described there; 1 max-min optimisation (Freitag and Ollivier's
+     *  active-set method): each visited Steiner point moves to increase the smallest
+     *  angle of its star (the minimum sine of its angles), along the smallest-norm point
+     *  of the convex hull of the active gradients, with a line search; a move is kept
+     *  only when that smallest angle strictly grows, no triangle inverts (exact test)
+     *  and no more triangles exceed the size bound, so the smallest angle of the mesh
+     *  never drops; same vertices, order and sweep rule as the Laplacian; 2: the
+     *  Laplacian sweeps, then the max-min sweeps. Not applied to CVM_ALGO_DELAUNAY. */
+    CVM_OPT_SMOOTH_METHOD = 208,
 
     /** Run control (400..499). */
     /** Time limit, seconds on a monotonic clock, 0 = none (default), bounds [0, 1e9].
