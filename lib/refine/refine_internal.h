@@ -185,7 +185,8 @@ typedef struct cvm__refine_params {
     size_t nseg;               /* segment ids 0..nseg-1 */
     int swap;                  /* 1: swap edges towards degree 6 after refining */
     int smooth_sweeps;         /* sweeps of smoothing after refining */
-    int smooth_method;         /* 0 smart Laplacian, 1 max-min (Freitag), 2 both in turn */
+    int smooth_method;         /* 0 smart Laplacian, 1 max-min (Freitag), 2 both in turn,
+                                  3 Laplacian then guarded max-min */
     int restore_delaunay;      /* 1: restore the constrained Delaunay property at the end */
     const double *region_area; /* NULL, or per region index the maximum area (<= 0: none);
                                   then T->ta holds each triangle's region index (-1: none) */
@@ -401,8 +402,12 @@ cvm_status cvm__rf_smooth(cvm__refiner *R, size_t first, int sweeps, size_t *mov
  * orient2d) and no more star triangles exceed the size bound; up to 12
  * steps, stopping when the gain falls below 1e-6 of the minimum. So the
  * smallest angle of a moved vertex's star strictly grows with each move.
+ * guard = 1: only vertices whose star has an angle below 40 degrees move,
+ * and only when the star keeps its number of obtuse angles minus angles in
+ * [55, 65] degrees (as cvm__rf_smooth counts them) or lowers it.
  * Breaks the Delaunay property. CVM_OK or CVM_E_NOMEM (the triangulation
  * stays valid). */
-cvm_status cvm__rf_smooth_maxmin(cvm__refiner *R, size_t first, int sweeps, size_t *moves_out);
+cvm_status cvm__rf_smooth_maxmin(cvm__refiner *R, size_t first, int sweeps, int guard,
+                                 size_t *moves_out);
 
 #endif

@@ -351,8 +351,11 @@ static int mm_direction(const double *g, const size_t *act, size_t na, double *d
     return found;
 }
 
-cvm_status cvm__rf_smooth_maxmin(cvm__refiner *R, size_t first, int sweeps, size_t *moves_out)
+cvm_status cvm__rf_smooth_maxmin(cvm__refiner *R, size_t first, int sweeps, int guard,
+                                 size_t *moves_out)
 {
+    /* guard: only stars with an angle below 40 degrees (sin 40) */
+    const double fmax = guard ? 0.64278760968653925 : 2.0;
     cvm__tri2 *T = R->T;
     int32_t *star = NULL;
     double *f = NULL, *g = NULL, *f1 = NULL;
@@ -406,7 +409,7 @@ cvm_status cvm__rf_smooth_maxmin(cvm__refiner *R, size_t first, int sweeps, size
             }
             p[0] = x[0];
             p[1] = x[1];
-            if (!mm_eval(R, (int32_t)v, p, star, n, f, g, &f0, &big0))
+            if (!mm_eval(R, (int32_t)v, p, star, n, f, g, &f0, &big0) || f0 >= fmax)
                 continue;
             for (k = 0; k < n; k++) {
                 const int32_t *tv = T->tv + 3 * (size_t)star[k];
@@ -465,6 +468,17 @@ cvm_status cvm__rf_smooth_maxmin(cvm__refiner *R, size_t first, int sweeps, size
             }
             if (!moved || !(fm > f0) || bigm > big0)
                 continue;
+            if (guard) {
+                /* keep the regularity: no more obtuse angles - angles in [55, 65]
+                 * (the integer part of sm_star_eval's score; the mean-ratio
+                 * term of a star is below 0.05) */
+                double b0, b1, q0, q1;
+                int g0, g1;
+                if (!sm_star_eval(R, (int32_t)v, x, star, n, &b0, &q0, &g0) ||
+                    !sm_star_eval(R, (int32_t)v, p, star, n, &b1, &q1, &g1) ||
+                    floor(b1 + 0.5) > floor(b0 + 0.5))
+                    continue;
+            }
             x[0] = p[0];
             x[1] = p[1];
             sm_mark_star(T, (int32_t)v, star, n, next);

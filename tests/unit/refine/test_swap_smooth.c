@@ -327,7 +327,7 @@ static void maxmin_direct(const char *name, double h)
                 if (a < amin0)
                     amin0 = a;
             }
-        ck_assert_int_eq(cvm__rf_smooth_maxmin(&R, 0, 3, &moves[r]), CVM_OK);
+        ck_assert_int_eq(cvm__rf_smooth_maxmin(&R, 0, 3, 0, &moves[r]), CVM_OK);
         ck_assert_int_eq(T->nv, nv);
         ck_assert_int_eq(T->nt, nt);
         if (r == 0) {
@@ -435,12 +435,13 @@ START_TEST(method_options)
     cvm_bounds b;
     cvm_mesh *m;
     ck_assert_int_eq(cvm_option_bounds(&b, CVM_OPT_SMOOTH_METHOD), CVM_OK);
-    ck_assert(b.lo == 0 && b.hi == 2 && b.def == 0 && b.is_integer);
+    ck_assert(b.lo == 0 && b.hi == 3 && b.def == 0 && b.is_integer);
     ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
-    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_SMOOTH_METHOD, 3), CVM_E_OPTION_RANGE);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_SMOOTH_METHOD, 4), CVM_E_OPTION_RANGE);
     cvm_mesh_free(m);
     method_geometry("square.poly", 0.05, 1);
     method_geometry("cylinder.poly", 0.1, 2);
+    method_geometry("annulus.poly", 0.2, 3);
 }
 END_TEST
 
