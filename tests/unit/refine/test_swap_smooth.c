@@ -393,7 +393,7 @@ END_TEST
 
 START_TEST(maxmin_naca0012)
 {
-    maxmin_direct("naca0012.poly", 0.02);
+    maxmin_direct("naca0012.poly", 0.1);
 }
 END_TEST
 
