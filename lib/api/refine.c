@@ -189,6 +189,7 @@ static cvm_status refine_run(cvm_mesh *m, const cvm_sizing *sizing, cvm_algorith
     if (algo == CVM_ALGO_FRONTAL || algo == CVM_ALGO_AFLR) {
         p.swap = cvm__opt(m, CVM_OPT_SWAP) != 0;
         p.smooth_sweeps = (int)cvm__opt(m, CVM_OPT_SMOOTH_SWEEPS);
+        p.smooth_method = (int)cvm__opt(m, CVM_OPT_SMOOTH_METHOD);
     }
     p.restore_delaunay = cvm__opt(m, CVM_OPT_RESTORE_DELAUNAY) != 0;
     p.sizing = sizing;

@@ -184,7 +184,9 @@ typedef struct cvm__refine_params {
     const int32_t *seg_ends;   /* 2 per segment id: the vertices ending the input segment */
     size_t nseg;               /* segment ids 0..nseg-1 */
     int swap;                  /* 1: swap edges towards degree 6 after refining */
-    int smooth_sweeps;         /* sweeps of smart Laplacian smoothing after refining */
+    int smooth_sweeps;         /* sweeps of smoothing after refining */
+    int smooth_method;         /* 0 smart Laplacian, 1 max-min (Freitag), 2 both in turn,
+                                  3 Laplacian then guarded max-min */
     int restore_delaunay;      /* 1: restore the constrained Delaunay property at the end */
     const double *region_area; /* NULL, or per region index the maximum area (<= 0: none);
                                   then T->ta holds each triangle's region index (-1: none) */
@@ -388,5 +390,24 @@ cvm_status cvm__rf_restore_delaunay(cvm__tri2 *T, size_t *flips_out);
  * decides only which valid mesh results. Breaks the Delaunay property.
  * CVM_OK or CVM_E_NOMEM (the triangulation stays valid). */
 cvm_status cvm__rf_smooth(cvm__refiner *R, size_t first, int sweeps, size_t *moves_out);
+/* Max-min smoothing (Freitag and Ollivier's active-set method): the same
+ * vertices, order and sweep rule as cvm__rf_smooth; each visited vertex
+ * maximises the smallest sine of the angles of its star (= the sine of the
+ * star's smallest angle): the active functions are those within 1e-6 of the
+ * minimum, the search direction is the smallest-norm point of the convex
+ * hull of their gradients (none: v is already max-min optimal), the first
+ * step is where an inactive function meets them to first order (at most a
+ * quarter of the shortest spoke), halved until the minimum grows by more
+ * than 1e-12, every star triangle stays strictly counter-clockwise (exact
+ * orient2d) and no more star triangles exceed the size bound; up to 12
+ * steps, stopping when the gain falls below 1e-6 of the minimum. So the
+ * smallest angle of a moved vertex's star strictly grows with each move.
+ * guard = 1: only vertices whose star has an angle below 40 degrees move,
+ * and only when the star keeps its number of obtuse angles minus angles in
+ * [55, 65] degrees (as cvm__rf_smooth counts them) or lowers it.
+ * Breaks the Delaunay property. CVM_OK or CVM_E_NOMEM (the triangulation
+ * stays valid). */
+cvm_status cvm__rf_smooth_maxmin(cvm__refiner *R, size_t first, int sweeps, int guard,
+                                 size_t *moves_out);
 
 #endif

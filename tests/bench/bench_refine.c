@@ -55,6 +55,12 @@ int main(int argc, char **argv)
             fprintf(stderr, "%s\n", cvm_mesh_errmsg(m));
             return 1;
         }
+        /* CVM_BENCH_SMOOTH_METHOD: CVM_OPT_SMOOTH_METHOD to compare (unset: the default) */
+        if (getenv("CVM_BENCH_SMOOTH_METHOD") &&
+            cvm_mesh_set_option(m, CVM_OPT_SMOOTH_METHOD, atof(getenv("CVM_BENCH_SMOOTH_METHOD")))) {
+            fprintf(stderr, "%s\n", cvm_mesh_errmsg(m));
+            return 1;
+        }
         t0 = now();
         if (cvm_mesh_triangulate(m) || (st = cvm_mesh_refine(m, s, (cvm_algorithm)algo)) != CVM_OK) {
             fprintf(stderr, "%s\n", cvm_mesh_errmsg(m));

@@ -29,6 +29,7 @@ import numpy as np
 
 BUILD, SHARED = sys.argv[1], sys.argv[2]
 REPS = int(os.environ.get("CVM_BENCH_REPS", "5"))
+METHODS = [int(x) for x in os.environ.get("CVM_BENCH_SMOOTH_METHODS", "").split(",") if x]
 CASES = [("square", 0.02), ("channel", 0.02), ("annulus", 0.1), ("cylinder", 0.2),
          ("naca0012", 0.2), ("annulus-g", -1.0)]
 
@@ -95,9 +96,13 @@ def quality(xy, tri, h):
                 edge=float(lens.mean()))
 
 
-def run_cvmesh(poly, h, algo, tmp):
+def run_cvmesh(poly, h, algo, tmp, smooth_method=None):
+    env = dict(os.environ)
+    env.pop("CVM_BENCH_SMOOTH_METHOD", None)
+    if smooth_method is not None:
+        env["CVM_BENCH_SMOOTH_METHOD"] = str(smooth_method)
     out = subprocess.run([DRIVER, poly, str(h), str(algo), str(REPS), os.path.join(tmp, "m")],
-                         capture_output=True, text=True)
+                         capture_output=True, text=True, env=env)
     if out.returncode:
         raise SystemExit("bench_refine: cvmesh failed on %s: %s" % (poly, out.stderr))
     t = float(out.stdout.split()[0])
@@ -269,16 +274,22 @@ def main():
                 nv_tri = len(np.unique(np.asarray(rows[0][3]).ravel()))
                 nv_front = len(np.unique(np.asarray(rows[2][3]).ravel()))
                 rows.append(("tri-mv",) + run_triangle(poly, h, nv_tri / nv_front))
+            # CVM_BENCH_SMOOTH_METHODS=1,2: extra frontal/AFLR rows (label -mN) with
+            # CVM_OPT_SMOOTH_METHOD = N, in the same run (the 1e6 row is then skipped)
+            for meth in METHODS:
+                for algo, label in ((2, "cvm-front"), (3, "cvm-aflr")):
+                    rows.append(("%s-m%d" % (label, meth),) + run_cvmesh(poly, h, algo, tmp, meth))
             if gmsh_ok:
                 for algo, label in ((5, "gmsh-del"), (6, "gmsh-front")):
                     rows.append((label,) + run_gmsh(poly, h, algo))
             for label, t, xy, tri in rows:
                 q = quality(np.asarray(xy), np.asarray(tri), h)
-                print("%-9s %-5s %-10s %7d %7d %9.4f %8.3f %7.2f %6.1f %6.1f %6.1f %6.3f" %
+                print("%-9s %-5s %-12s %7d %7d %9.4f %8.3f %7.2f %6.1f %6.1f %6.1f %6.3f" %
                       (name, "%g" % h if h > 0 else "graded", label, q["nv"], q["nt"], t, 1e6 * t / q["nt"], q["minang"], q["reg"],
                        q["obt"], q["deg6"], q["edge"]))
         try:
-            run_1e6(SHARED, tmp)
+            if not METHODS:
+                run_1e6(SHARED, tmp)
         except ImportError:
             print("# Triangle (pip triangle) not installed: 1e6 square row skipped")
 

@@ -3,6 +3,8 @@
 #include <stdlib.h>
 
 #include "refine/refine_tests.h"
+#include "refine/refine_internal.h"
+#include "api/api_internal.h"
 #include "support/failing_alloc.h"
 #include "support/mesh_oracle.h"
 
@@ -260,6 +262,189 @@ START_TEST(out_of_memory_keeps_a_valid_mesh)
 }
 END_TEST
 
+/* Smallest angle (degrees) of triangle t of T, from its coordinates; -1 when
+ * it is not strictly counter-clockwise. */
+static double mm_tri_min_angle(const cvm__tri2 *T, size_t t)
+{
+    const double *p[3];
+    double best = 180, cr;
+    int k;
+    for (k = 0; k < 3; k++)
+        p[k] = T->xy + 2 * (size_t)T->tv[3 * t + (size_t)k];
+    cr = (p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[1][1] - p[0][1]) * (p[2][0] - p[0][0]);
+    if (!(cr > 0))
+        return -1;
+    for (k = 0; k < 3; k++) {
+        const double *a = p[k], *b = p[(k + 1) % 3], *c = p[(k + 2) % 3];
+        double u0 = b[0] - a[0], u1 = b[1] - a[1], w0 = c[0] - a[0], w1 = c[1] - a[1];
+        double ang = atan2(fabs(u0 * w1 - u1 * w0), u0 * w0 + u1 * w1) * 57.29577951308232;
+        if (ang < best)
+            best = ang;
+    }
+    return best;
+}
+
+/* Max-min smoothing (cvm__rf_smooth_maxmin) of a Delaunay-refined mesh, called
+ * directly (no Delaunay-restoring flips after it): it moves vertices, never
+ * inverts a triangle, never moves a vertex of a constrained edge, the smallest
+ * angle over the stars of the moved vertices does not decrease (nor does the
+ * mesh's), and two runs give the same coordinates bit for bit. */
+static void maxmin_direct(const char *name, double h)
+{
+    char path[1024];
+    cvm_mesh *m[2];
+    size_t nv = 0, nt, t, v, moves[2] = {0, 0};
+    double *xy0, amin0 = 180, amin1 = 180, star0 = 180, star1 = 180;
+    unsigned char *moved, *onseg;
+    int r, k;
+    rtest_shared_path(path, sizeof path, name);
+    for (r = 0; r < 2; r++) {
+        cvm__refine_params prm;
+        cvm__refiner R;
+        cvm__tri2 *T;
+        ck_assert_int_eq(cvm_mesh_create(&m[r]), CVM_OK);
+        ck_assert_msg(cvm_mesh_read(m[r], path) == CVM_OK, "%s", cvm_mesh_errmsg(m[r]));
+        ck_assert_int_eq(cvm_mesh_triangulate(m[r]), CVM_OK);
+        ck_assert_int_eq(rtest_refine_uniform(m[r], h, CVM_ALGO_DELAUNAY), CVM_OK);
+        T = &m[r]->tri;
+        nv = T->nv;
+        nt = T->nt;
+        memset(&prm, 0, sizeof prm);
+        memset(&R, 0, sizeof R);
+        R.T = T;
+        R.ctx = &m[r]->ctx;
+        R.p = &prm;
+        R.vls = malloc(nv * sizeof *R.vls);
+        ck_assert_ptr_nonnull(R.vls);
+        for (v = 0; v < nv; v++)
+            R.vls[v] = INFINITY;
+        xy0 = malloc(2 * nv * sizeof *xy0);
+        ck_assert_ptr_nonnull(xy0);
+        memcpy(xy0, T->xy, 2 * nv * sizeof *xy0);
+        for (t = 0; t < nt; t++)
+            if (cvm__tri2_in_domain(T, (int32_t)t)) {
+                double a = mm_tri_min_angle(T, t);
+                if (a < amin0)
+                    amin0 = a;
+            }
+        ck_assert_int_eq(cvm__rf_smooth_maxmin(&R, 0, 3, 0, &moves[r]), CVM_OK);
+        ck_assert_int_eq(T->nv, nv);
+        ck_assert_int_eq(T->nt, nt);
+        if (r == 0) {
+            moved = calloc(nv, 1);
+            onseg = calloc(nv, 1);
+            ck_assert(moved && onseg);
+            for (v = 0; v < nv; v++)
+                moved[v] = xy0[2 * v] != T->xy[2 * v] || xy0[2 * v + 1] != T->xy[2 * v + 1];
+            /* vertices of constrained edges (edge k is opposite corner k) */
+            for (t = 0; t < nt; t++)
+                for (k = 0; k < 3 && cvm__tri2_in_domain(T, (int32_t)t); k++)
+                    if (cvm__tri2_edge_seg(T, (int32_t)t, k) >= 0) {
+                        onseg[T->tv[3 * t + (size_t)(k + 1) % 3]] = 1;
+                        onseg[T->tv[3 * t + (size_t)(k + 2) % 3]] = 1;
+                    }
+            for (t = 0; t < nt; t++) {
+                double a1, a0;
+                int touch = 0;
+                double *tmp;
+                if (!cvm__tri2_in_domain(T, (int32_t)t))
+                    continue;
+                a1 = mm_tri_min_angle(T, t);
+                ck_assert_msg(a1 > 0, "%s: triangle %zu inverted or flat", name, t);
+                if (a1 < amin1)
+                    amin1 = a1;
+                for (k = 0; k < 3; k++)
+                    touch |= moved[T->tv[3 * t + (size_t)k]];
+                if (!touch)
+                    continue;
+                /* the same triangle at the old coordinates */
+                tmp = T->xy;
+                T->xy = xy0;
+                a0 = mm_tri_min_angle(T, t);
+                T->xy = tmp;
+                if (a0 < star0)
+                    star0 = a0;
+                if (a1 < star1)
+                    star1 = a1;
+            }
+            for (v = 0; v < nv; v++)
+                ck_assert_msg(!(moved[v] && onseg[v]), "%s: vertex %zu of a segment moved", name, v);
+            free(moved);
+            free(onseg);
+        }
+        free(R.vls);
+        free(xy0);
+    }
+    ck_assert_msg(moves[0] > 0, "%s: nothing moved", name);
+    ck_assert_msg(star1 >= star0, "%s: smallest angle of the moved stars %.6f < %.6f before", name,
+                  star1, star0);
+    ck_assert_msg(amin1 >= amin0, "%s: smallest angle %.6f < %.6f before", name, amin1, amin0);
+    ck_assert_int_eq(moves[0], moves[1]);
+    ck_assert(memcmp(m[0]->tri.xy, m[1]->tri.xy, 2 * nv * sizeof(double)) == 0);
+    cvm_mesh_free(m[0]);
+    cvm_mesh_free(m[1]);
+}
+
+START_TEST(maxmin_square)
+{
+    maxmin_direct("square.poly", 0.05);
+}
+END_TEST
+
+START_TEST(maxmin_naca0012)
+{
+    maxmin_direct("naca0012.poly", 0.1);
+}
+END_TEST
+
+/* Through cvm_mesh_refine: methods 1 and 2 keep every segment, the angle bound,
+ * a constrained Delaunay result, and are reproducible byte for byte. */
+static void method_geometry(const char *name, double h, double method)
+{
+    char path[1024];
+    cvm_mesh *m[2];
+    cvmtest_expect e;
+    rtest_quality q;
+    size_t nseg;
+    cvm_index *segs;
+    int r;
+    rtest_shared_path(path, sizeof path, name);
+    segs = rtest_poly_segments(path, &nseg);
+    for (r = 0; r < 2; r++) {
+        ck_assert_int_eq(cvm_mesh_create(&m[r]), CVM_OK);
+        ck_assert_int_eq(cvm_mesh_set_option(m[r], CVM_OPT_SMOOTH_METHOD, method), CVM_OK);
+        ck_assert_msg(cvm_mesh_read(m[r], path) == CVM_OK, "%s", cvm_mesh_errmsg(m[r]));
+        ck_assert_int_eq(cvm_mesh_triangulate(m[r]), CVM_OK);
+        ck_assert_int_eq(rtest_refine_uniform(m[r], h, CVM_ALGO_FRONTAL), CVM_OK);
+    }
+    cvmtest_expect_init(&e);
+    e.delaunay = 1;
+    e.segs = segs;
+    e.nseg = nseg;
+    cvmtest_assert_valid_ex(m[0], &e);
+    rtest_measure(m[0], &q);
+    ck_assert_msg(q.min_angle >= 30 - 1e-9, "%s method %g: min angle %.4f", name, method, q.min_angle);
+    rtest_assert_identical(m[0], m[1]);
+    free(segs);
+    cvm_mesh_free(m[0]);
+    cvm_mesh_free(m[1]);
+}
+
+START_TEST(method_options)
+{
+    cvm_bounds b;
+    cvm_mesh *m;
+    ck_assert_int_eq(cvm_option_bounds(&b, CVM_OPT_SMOOTH_METHOD), CVM_OK);
+    ck_assert(b.lo == 0 && b.hi == 3 && b.def == 0 && b.is_integer);
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_SMOOTH_METHOD, 4), CVM_E_OPTION_RANGE);
+    cvm_mesh_free(m);
+    method_geometry("square.poly", 0.05, 1);
+    method_geometry("cylinder.poly", 0.1, 2);
+    method_geometry("annulus.poly", 0.2, 3);
+}
+END_TEST
+
 TCase *refine_swap_smooth_tcase(void)
 {
     TCase *tc = tcase_create("swap_smooth");
@@ -272,5 +457,8 @@ TCase *refine_swap_smooth_tcase(void)
     tcase_add_test(tc, swap_only_and_input_points_fixed);
     tcase_add_test(tc, area_bound_survives_post_processing);
     tcase_add_test(tc, out_of_memory_keeps_a_valid_mesh);
+    tcase_add_test(tc, maxmin_square);
+    tcase_add_test(tc, maxmin_naca0012);
+    tcase_add_test(tc, method_options);
     return tc;
 }
