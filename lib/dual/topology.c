@@ -61,10 +61,10 @@ static double min_sin2(const double *a, const double *b, const double *c)
     double bc = (c[0] - b[0]) * (c[0] - b[0]) + (c[1] - b[1]) * (c[1] - b[1]);
     double ca = (a[0] - c[0]) * (a[0] - c[0]) + (a[1] - c[1]) * (a[1] - c[1]);
     double cr = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
-    double mx = ab > bc ? (ab > ca ? ab : ca) : (bc > ca ? bc : ca);
+    double mn = ab < bc ? (ab < ca ? ab : ca) : (bc < ca ? bc : ca);
     double pr = ab * bc * ca;
     /* the smallest angle faces the shortest edge: sin^2 = cr^2 / (product of the two longer) */
-    return pr > 0 ? cr * cr * mx / pr : 0.0;
+    return pr > 0 ? cr * cr * mn / pr : 0.0;
 }
 
 /* The 3-to-1 flip of v's three triangles. */
