@@ -119,7 +119,7 @@ static int wants_removal(pre *P, int32_t v)
     cvm__tri2 *T = P->T;
     int32_t t0 = T->vtri[v], t = t0;
     const double *pv = T->xy + 2 * (size_t)v;
-    double sx = 0, sy = 0;
+    double sx = 0, sy = 0, sw = 0;
     size_t n = 0;
     int shortie = 0, bad = 0;
     do {
@@ -137,15 +137,16 @@ static int wants_removal(pre *P, int32_t v)
             bad = 1; /* v ends the shortest edge of a triangle below the target */
         sx += pa[0];
         sy += pa[1];
+        sw += 1.0;
         n++;
         t = T->tn[3 * (size_t)t + (size_t)(i + 1) % 3] / 3;
     } while (t != t0 && n <= T->nt);
     if (!shortie && !bad)
         return 0;
     P->seed_xy[2 * (size_t)v] = P->seed_xy[2 * (size_t)v + 1] = NAN;
-    if (!shortie && n) {
-        P->seed_xy[2 * (size_t)v] = sx / (double)n;
-        P->seed_xy[2 * (size_t)v + 1] = sy / (double)n;
+    if (!shortie && sw > 0) {
+        P->seed_xy[2 * (size_t)v] = sx / sw;
+        P->seed_xy[2 * (size_t)v + 1] = sy / sw;
     }
     return 1;
 }
