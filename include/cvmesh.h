@@ -550,6 +550,20 @@ typedef enum cvm_option {
      *  angle (to 10.8-31.9 degrees, against 32.7-43.2 with 1), so it is not the
      *  default. 0: no vertex is ever removed. */
     CVM_OPT_DUAL_TOPOLOGY = 509,
+    /** Topology pre-pass of cvm_mesh_optimise_dual(), integer, [0, 1], default 0 (off;
+     *  measured in the README). 1: before the sweeps, up to two rounds of: removal of
+     *  every removable Steiner vertex (no segment, hull or region-border vertex; no
+     *  two neighbours in one round) with an edge shorter than 0.5 x the local size,
+     *  or ending the shortest edge of a triangle below min(35 degrees,
+     *  CVM_OPT_DUAL_TARGET_ANGLE_DEG), the latter re-seeded at the mean of its former
+     *  neighbours; then every unconstrained interior edge longer than 1.5 x the local
+     *  size gets its midpoint inserted (no point closer than 0.5 x the size to a
+     *  vertex). Local size: the sizing when given, else the mean edge length at the
+     *  vertex. Input points and segments are untouched; flips restore the regular
+     *  triangulation. Vertices are renumbered as with CVM_OPT_DUAL_TOPOLOGY (markers
+     *  and attributes follow); added vertices have marker 0 and attributes 0. Needs
+     *  CVM_OPT_DUAL_TOPOLOGY >= 1 (ignored with 0). Deterministic. */
+    CVM_OPT_DUAL_PREPASS = 510,
     /** Merge tolerance, a fraction of the local ideal dual edge l / sqrt(3), default
      *  0.1, bounds [0, 1]; 0 merges nothing. l at an edge is the mean of the local
      *  sizes of its two ends, each the mean length of the vertex's edges (taken from

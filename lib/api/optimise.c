@@ -48,6 +48,32 @@ static void drop_vertex_data(cvm_mesh *m, const int32_t *vmap, size_t nv0)
     }
 }
 
+/* The pre-pass appended vertices after the survivors of the nv0 old ones:
+ * marker 0 and attributes 0 (they are interior points: no constrained edge is
+ * split). CVM_OK or CVM_E_NOMEM (the mesh stays valid; the new vertices then
+ * have no marker or attribute storage yet, so the caller reports the error). */
+static cvm_status new_vertex_data(cvm_mesh *m, const int32_t *vmap, size_t nv0)
+{
+    size_t v, kept = 0, nv = m->tri.nv, na = m->vattr ? m->in.nattr : 0;
+    for (v = 0; v < nv0; v++)
+        kept += vmap[v] >= 0;
+    if (nv <= kept)
+        return CVM_OK;
+    if (m->vmark && nv > m->cap_vmark &&
+        cvm__grow(&m->ctx, (void **)&m->vmark, &m->cap_vmark, nv, sizeof(int32_t)))
+        return CVM_E_NOMEM;
+    if (na && nv * na > m->cap_vattr &&
+        cvm__grow(&m->ctx, (void **)&m->vattr, &m->cap_vattr, nv * na, sizeof(double)))
+        return CVM_E_NOMEM;
+    for (v = kept; v < nv; v++) {
+        if (m->vmark)
+            m->vmark[v] = 0;
+        if (na)
+            memset(m->vattr + v * na, 0, na * sizeof *m->vattr);
+    }
+    return CVM_OK;
+}
+
 cvm_status cvm_mesh_optimise_dual(cvm_mesh *m, const cvm_sizing *sizing)
 {
     cvm__dual_opt_params p;
@@ -78,6 +104,7 @@ cvm_status cvm_mesh_optimise_dual(cvm_mesh *m, const cvm_sizing *sizing)
     p.n_fixed = cvm__opt(m, CVM_OPT_DUAL_KEEP_INPUT_POINTS) != 0 ? input_vertices(m) : 0;
     p.n_input = input_vertices(m);
     p.topology = (int)cvm__opt(m, CVM_OPT_DUAL_TOPOLOGY);
+    p.prepass = (int)cvm__opt(m, CVM_OPT_DUAL_PREPASS);
     nv0 = m->tri.nv;
     if (p.topology) {
         vmap = cvm__malloc(&m->ctx, (nv0 + 1) * sizeof *vmap);
@@ -94,8 +121,10 @@ cvm_status cvm_mesh_optimise_dual(cvm_mesh *m, const cvm_sizing *sizing)
     memset(m->dual_opt_report, 0, sizeof m->dual_opt_report);
     cvm__run_begin(&m->ctx, cvm__opt(m, CVM_OPT_TIME_LIMIT_S));
     s = cvm__dual_optimise(&m->tri, &p, &rep);
-    if (vmap && m->tri.nv < nv0)
+    if (vmap && (m->tri.nv < nv0 || rep.prepass_removed || rep.prepass_added))
         drop_vertex_data(m, vmap, nv0);
+    if (vmap && rep.prepass_added && new_vertex_data(m, vmap, nv0) && s == CVM_OK)
+        s = CVM_E_NOMEM;
     cvm__free(&m->ctx, vmap);
     m->dual_opt_report[REP_SWEEPS] = (double)rep.sweeps;
     m->dual_opt_report[REP_BEFORE] = rep.nc_before_pct;

@@ -116,6 +116,7 @@ typedef struct cvm__dual_opt_params {
                                topology is 1: on return old vertex id -> new id, -1
                                for a removed vertex (T's vertices are renumbered in
                                order by cvm__tri2_compact) */
+    int prepass;            /* CVM_OPT_DUAL_PREPASS: run cvm__dual_prepass first (needs vmap) */
     cvm__dual_size_fn size_fn; /* NULL: sizes from the mesh (cvm__dual_mesh_sizes) */
     void *size_payload;
 } cvm__dual_opt_params;
@@ -128,8 +129,23 @@ typedef struct cvm__dual_opt_report {
     size_t weight_fixes;    /* weights raised so that no vertex vanishes */
     size_t removed_vanished; /* vertices removed because their power cell vanished */
     size_t removed_degree;  /* vertices removed to repair a vertex degree */
+    size_t prepass_removed; /* Steiner vertices removed by the pre-pass */
+    size_t prepass_added;   /* vertices inserted by the pre-pass */
     double seconds;
 } cvm__dual_opt_report;
+
+/* Topology pre-pass (prepass.c): collapse Steiner vertices with an edge
+ * shorter than 0.5 x the local size, re-seed the Steiner vertices of triangles
+ * below min(35, p->target_angle_deg) degrees at the mean of their neighbours,
+ * split unconstrained edges longer than 1.5 x the local size at their
+ * midpoint; local size from p->size_fn, else the mean edge length. Input
+ * points (ids < p->n_input) and constrained edges are never touched. Removed
+ * vertices are dropped (ids renumbered in order; p->vmap, nv0 entries already
+ * holding old id -> current id, follows); inserted ones are appended. Does
+ * nothing without p->vmap. On return T is Delaunay/regular up to vertices the
+ * weights would drop. CVM_OK, CVM_E_NOMEM, a size_fn error. Deterministic. */
+cvm_status cvm__dual_prepass(cvm__tri2 *T, const cvm__dual_opt_params *p, size_t nv0,
+                             size_t *removed, size_t *added);
 
 /* Optimise positions and weights of the vertices of T (see
  * cvm_mesh_optimise_dual). Run control through T->ctx (armed by the caller).

@@ -953,6 +953,21 @@ cvm_status cvm__dual_optimise(cvm__tri2 *T, const cvm__dual_opt_params *p, cvm__
         if (!T->w)
             return CVM_E_NOMEM;
     }
+    if (p->topology && p->vmap) {
+        size_t v;
+        for (v = 0; v < nv; v++)
+            p->vmap[v] = (int32_t)v;
+    }
+    D.nv0 = nv;
+    if (p->prepass && p->topology && p->vmap) {
+        /* before the per-vertex and per-triangle arrays: counts may change */
+        if ((s = cvm__dual_prepass(T, p, nv, &rep->prepass_removed, &rep->prepass_added))) {
+            rep->seconds = cvm__now() - t0;
+            return s;
+        }
+        nv = T->nv;
+        nt = T->nt;
+    }
     D.vsize = cvm__malloc(ctx, (nv + 1) * sizeof *D.vsize);
     D.vbnd = cvm__malloc(ctx, nv + 1);
     D.mark = cvm__malloc(ctx, nv + 1);
@@ -967,12 +982,8 @@ cvm_status cvm__dual_optimise(cvm__tri2 *T, const cvm__dual_opt_params *p, cvm__
     D.best = cvm__malloc(ctx, (3 * nv + 1) * sizeof *D.best);
     D.jobs = cvm__malloc(ctx, BATCH * sizeof *D.jobs);
     D.stamp = cvm__calloc(ctx, nv + 1, sizeof *D.stamp);
-    D.nv0 = nv;
     D.topo = p->topology && p->vmap;
     if (D.topo) {
-        size_t v;
-        for (v = 0; v < nv; v++)
-            p->vmap[v] = (int32_t)v;
         D.gone = cvm__calloc(ctx, nv + 1, 1);
         D.dup = cvm__malloc(ctx, (nv + 1) * sizeof *D.dup);
         D.map2 = cvm__malloc(ctx, (nv + 1) * sizeof *D.map2);

@@ -9,6 +9,7 @@ TCase *dual_api_tcase(void);        /* lib/api/dual.c */
 TCase *dual_quality_tcase(void);    /* lib/api/dual_quality.c */
 TCase *dual_cells_tcase(void);      /* lib/api/dual_cells.c */
 TCase *dual_optimise_tcase(void);   /* lib/api/optimise.c, lib/dual/optimise*.c, lib/dual/merge.c */
+TCase *dual_prepass_tcase(void);    /* lib/dual/prepass.c (CVM_OPT_DUAL_PREPASS) */
 
 /* Helpers (util.c). */
 #include <stddef.h>

@@ -1,0 +1,293 @@
+/*
+ * prepass.c - topology pre-pass of the dual optimiser (CVM_OPT_DUAL_PREPASS):
+ * edge collapse and split until edge lengths follow the local size, and
+ * re-seeding of the Steiner vertices of triangles below the target angle.
+ *
+ * Local size h(v): the sizing at v when the caller gave one, else the mean
+ * length of v's edges (cvm__dual_mesh_sizes), both taken at the start of each
+ * round. The size of an edge is the mean of its ends' sizes.
+ *
+ * One round:
+ *  1. Removal. Steiner vertices (id >= n_input) are visited in id order; a
+ *     removable one (cvm__dual_removable: no constrained edge, so no segment
+ *     or hull vertex) with no neighbour already picked in this round is picked
+ *     when one of its edges is shorter than PRE_SHORT x the edge's size
+ *     (collapse), or when it is an end of the shortest edge of one of its
+ *     triangles whose smallest angle is below the target angle (re-seed; the
+ *     mean of its neighbours is recorded). Picked vertices are removed
+ *     (topology.c), then Lawson flips restore the regular triangulation.
+ *  2. Re-seeding: a new vertex at the recorded mean of each re-seeded vertex's
+ *     former neighbours, inserted by Bowyer-Watson (domain only, rejected when
+ *     closer than PRE_SHORT x its size to an existing vertex).
+ *  3. Split: every unconstrained edge between two domain triangles of the same
+ *     region longer than PRE_LONG x its size gets its midpoint inserted the
+ *     same way (edges listed first in slot order, then inserted).
+ * Vertices that were removed, or added and then rejected, are dropped from
+ * the vertex arrays (cvm__tri2_compact); vmap follows. Input points and
+ * segments are never touched (no constrained edge is split). Everything is
+ * sequential and in slot/id order: deterministic, thread-count independent.
+ */
+#include <math.h>
+#include <string.h>
+
+#include "dual_internal.h"
+#include "delaunay/tri2_store.h"
+
+#define PRE_SHORT 0.5
+#define PRE_LONG 1.5
+#define PRE_ROUNDS 2
+#define PRE_BAD_DEG 35.0 /* re-seed below min(this, the target angle) */
+
+static int corner_of(const cvm__tri2 *T, int32_t t, int32_t v)
+{
+    const int32_t *tv = T->tv + 3 * (size_t)t;
+    return tv[0] == v ? 0 : tv[1] == v ? 1 : 2;
+}
+
+static double dist2(const double *a, const double *b)
+{
+    return (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]);
+}
+
+/* sin^2 of the smallest angle of a, b, c (plain doubles). */
+static double min_sin2(const double *a, const double *b, const double *c)
+{
+    double ab = dist2(a, b), bc = dist2(b, c), ca = dist2(c, a);
+    double cr = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+    double mn = ab < bc ? (ab < ca ? ab : ca) : (bc < ca ? bc : ca);
+    double pr = ab * bc * ca;
+    /* law of sines: sin^2 of the angle facing edge e is cr^2 e^2 / pr; the smallest faces mn */
+    return pr > 0 ? cr * cr * mn / pr : 0.0;
+}
+
+typedef struct pre {
+    cvm__tri2 *T;
+    const cvm__dual_opt_params *p;
+    double *h;        /* size per vertex */
+    uint8_t *pick;    /* 1 picked for removal, 2 removed (gone) */
+    double *seed_xy;  /* 2 per vertex: re-seed point, NaN when none */
+    int32_t *dup, *map;
+    double *mid;      /* split points, 3 per edge (x, y, h) */
+    size_t cap;       /* entries of the per-vertex arrays */
+    double sin2_target;
+} pre;
+
+static cvm_status grow(pre *P, size_t need)
+{
+    cvm__ctx *ctx = P->T->ctx;
+    size_t n = need + need / 2 + 16;
+    void *a;
+    if (need <= P->cap)
+        return CVM_OK;
+#define RE(ptr, sz)                                                                                \
+    do {                                                                                           \
+        a = cvm__realloc(ctx, ptr, n * (sz));                                                      \
+        if (!a)                                                                                    \
+            return CVM_E_NOMEM;                                                                    \
+        ptr = a;                                                                                   \
+    } while (0)
+    RE(P->h, sizeof *P->h);
+    RE(P->pick, 1);
+    RE(P->seed_xy, 2 * sizeof *P->seed_xy);
+    RE(P->dup, sizeof *P->dup);
+    RE(P->map, sizeof *P->map);
+#undef RE
+    P->cap = n;
+    return CVM_OK;
+}
+
+static cvm_status sizes(pre *P)
+{
+    cvm__tri2 *T = P->T;
+    size_t v;
+    cvm__dual_mesh_sizes(T, P->h);
+    if (!P->p->size_fn)
+        return CVM_OK;
+    for (v = 0; v < T->nv; v++) {
+        cvm_status s;
+        if (T->vtri[v] < 0)
+            continue;
+        if ((s = P->p->size_fn(P->p->size_payload, T->xy[2 * v], T->xy[2 * v + 1], P->h + v)))
+            return s;
+    }
+    return CVM_OK;
+}
+
+/* Decide whether removable Steiner vertex v is picked (see the file comment). */
+static int wants_removal(pre *P, int32_t v)
+{
+    cvm__tri2 *T = P->T;
+    int32_t t0 = T->vtri[v], t = t0;
+    const double *pv = T->xy + 2 * (size_t)v;
+    double sx = 0, sy = 0, sw = 0;
+    size_t n = 0;
+    int shortie = 0, bad = 0;
+    do {
+        int i = corner_of(T, t, v);
+        int32_t a = T->tv[3 * (size_t)t + (size_t)(i + 1) % 3];
+        int32_t b = T->tv[3 * (size_t)t + (size_t)(i + 2) % 3];
+        const double *pa = T->xy + 2 * (size_t)a, *pb = T->xy + 2 * (size_t)b;
+        double ea = dist2(pv, pa), eb = dist2(pv, pb), ab = dist2(pa, pb);
+        double ha = PRE_SHORT * 0.5 * (P->h[v] + P->h[a]);
+        if (P->pick[a])
+            return 0; /* a neighbour goes already: keep v this round */
+        if (ea < ha * ha)
+            shortie = 1;
+        if (min_sin2(pv, pa, pb) < P->sin2_target && (ea <= ab || eb <= ab))
+            bad = 1; /* v ends the shortest edge of a triangle below the target */
+        sx += pa[0];
+        sy += pa[1];
+        sw += 1.0;
+        n++;
+        t = T->tn[3 * (size_t)t + (size_t)(i + 1) % 3] / 3;
+    } while (t != t0 && n <= T->nt);
+    if (!shortie && !bad)
+        return 0;
+    P->seed_xy[2 * (size_t)v] = P->seed_xy[2 * (size_t)v + 1] = NAN;
+    if (!shortie && sw > 0) {
+        P->seed_xy[2 * (size_t)v] = sx / sw;
+        P->seed_xy[2 * (size_t)v + 1] = sy / sw;
+    }
+    return 1;
+}
+
+/* Add a vertex at xy and insert it (domain only, min distance md); a rejected
+ * one is flagged gone. *added counts the inserted ones. */
+static cvm_status add_point(pre *P, const double *xy, double md, int32_t hint, size_t *added)
+{
+    cvm__tri2 *T = P->T;
+    int32_t id, other;
+    cvm__ins res;
+    cvm_status s;
+    if ((s = grow(P, T->nv + 1)))
+        return s;
+    if ((s = cvm__tri2_add_vertex(T, xy, &id)))
+        return s;
+    P->pick[id] = 0;
+    if ((s = cvm__tri2_insert_vertex(T, id, hint, CVM__INSF_DOMAIN_ONLY, md, &res, &other))) {
+        P->pick[id] = 2;
+        return s;
+    }
+    if (res != CVM__INS_DONE)
+        P->pick[id] = 2;
+    else
+        (*added)++;
+    return CVM_OK;
+}
+
+static cvm_status round_once(pre *P, size_t nv0, size_t *nrem, size_t *nadd)
+{
+    cvm__tri2 *T = P->T;
+    const cvm__dual_opt_params *p = P->p;
+    cvm__ctx *ctx = T->ctx;
+    size_t v, t, nv = T->nv, nmid = 0, cap_mid = 0, k, ngone = 0;
+    cvm_status s;
+    if ((s = grow(P, nv)) || (s = sizes(P)))
+        return s;
+    memset(P->pick, 0, nv);
+    for (v = p->n_input; v < nv; v++)
+        if (cvm__dual_removable(T, (int32_t)v, NULL) && wants_removal(P, (int32_t)v))
+            P->pick[v] = 1;
+    for (v = p->n_input; v < nv; v++)
+        if (P->pick[v] == 1) {
+            if (cvm__dual_remove_vertex(T, (int32_t)v, -1)) {
+                P->pick[v] = 2;
+                (*nrem)++;
+            } else {
+                P->pick[v] = 0;
+            }
+        }
+    if ((s = cvm__tri2_make_regular(T, NULL)))
+        return s;
+    for (v = p->n_input; v < nv; v++)
+        if (P->pick[v] == 2 && !isnan(P->seed_xy[2 * v])) {
+            double xy[2];
+            xy[0] = P->seed_xy[2 * v];
+            xy[1] = P->seed_xy[2 * v + 1];
+            if ((s = add_point(P, xy, PRE_SHORT * P->h[v], -1, nadd)))
+                return s;
+        }
+    /* splits: list, then insert */
+    for (t = 0; t < T->nt; t++) {
+        int j;
+        if (!cvm__tri2_in_domain(T, (int32_t)t))
+            continue;
+        for (j = 0; j < 3; j++) {
+            int32_t u = T->tn[3 * t + (size_t)j] / 3;
+            int32_t a = T->tv[3 * t + (size_t)(j + 1) % 3], b = T->tv[3 * t + (size_t)(j + 2) % 3];
+            double he, l2;
+            if ((size_t)u <= t || !cvm__tri2_in_domain(T, u) || cvm__tri2_edge_seg(T, (int32_t)t, j) >= 0 ||
+                (T->ta && T->ta[u] != T->ta[t]) || (size_t)a >= nv || (size_t)b >= nv)
+                continue;
+            he = 0.5 * (P->h[a] + P->h[b]);
+            l2 = dist2(T->xy + 2 * (size_t)a, T->xy + 2 * (size_t)b);
+            if (!(he > 0) || l2 <= PRE_LONG * PRE_LONG * he * he)
+                continue;
+            if (nmid + 1 > cap_mid) {
+                size_t nc = 2 * cap_mid + 64;
+                double *m2 = cvm__realloc(ctx, P->mid, nc * 3 * sizeof *m2);
+                if (!m2)
+                    return CVM_E_NOMEM;
+                P->mid = m2;
+                cap_mid = nc;
+            }
+            P->mid[3 * nmid] = 0.5 * (T->xy[2 * (size_t)a] + T->xy[2 * (size_t)b]);
+            P->mid[3 * nmid + 1] = 0.5 * (T->xy[2 * (size_t)a + 1] + T->xy[2 * (size_t)b + 1]);
+            P->mid[3 * nmid + 2] = he;
+            nmid++;
+        }
+    }
+    for (k = 0; k < nmid; k++)
+        if ((s = add_point(P, P->mid + 3 * k, PRE_SHORT * P->mid[3 * k + 2], -1, nadd)))
+            return s;
+    /* drop removed and rejected vertices; vmap follows */
+    nv = T->nv;
+    for (v = 0; v < nv; v++) {
+        P->dup[v] = P->pick[v] == 2 ? 0 : -1; /* vertex 0 is an input point: never gone */
+        ngone += P->pick[v] == 2;
+    }
+    if (!ngone)
+        return CVM_OK;
+    cvm__tri2_compact(T, P->dup, P->map);
+    for (v = 0; v < nv; v++)
+        if (P->pick[v] == 2)
+            P->map[v] = -1;
+    for (v = 0; v < nv0; v++)
+        if (p->vmap[v] >= 0)
+            p->vmap[v] = P->map[p->vmap[v]];
+    return CVM_OK;
+}
+
+cvm_status cvm__dual_prepass(cvm__tri2 *T, const cvm__dual_opt_params *p, size_t nv0,
+                             size_t *removed, size_t *added)
+{
+    pre P;
+    int r;
+    cvm_status s = CVM_OK;
+    *removed = *added = 0;
+    if (!p->vmap || p->n_input == 0)
+        return CVM_OK;
+    memset(&P, 0, sizeof P);
+    P.T = T;
+    P.p = p;
+    P.sin2_target = sin((p->target_angle_deg < PRE_BAD_DEG ? p->target_angle_deg : PRE_BAD_DEG) *
+                        3.14159265358979323846 / 180.0);
+    P.sin2_target *= P.sin2_target;
+    for (r = 0; r < PRE_ROUNDS && !s; r++) {
+        size_t nr = 0, na = 0;
+        s = round_once(&P, nv0, &nr, &na);
+        *removed += nr;
+        *added += na;
+        if (!nr && !na)
+            break;
+    }
+    if (!s)
+        s = cvm__tri2_make_regular(T, NULL);
+    cvm__free(T->ctx, P.h);
+    cvm__free(T->ctx, P.pick);
+    cvm__free(T->ctx, P.seed_xy);
+    cvm__free(T->ctx, P.dup);
+    cvm__free(T->ctx, P.map);
+    cvm__free(T->ctx, P.mid);
+    return s;
+}

@@ -1,0 +1,267 @@
+/* test_prepass.c - the topology pre-pass of the dual optimiser (lib/dual/prepass.c, CVM_OPT_DUAL_PREPASS). */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "dual/dual_tests.h"
+#include "support/failing_alloc.h"
+
+/* The unit square with a slanted interior segment, Delaunay-refined at size h
+ * (Delaunay refinement leaves triangles below 35 degrees for the re-seeding). */
+static cvm_mesh *refined(double h)
+{
+    static const double pts[] = {0, 0, 1, 0, 1, 1, 0, 1, 0.2, 0.3, 0.7, 0.8};
+    static const cvm_index seg[] = {0, 1, 1, 2, 2, 3, 3, 0, 4, 5};
+    cvm_mesh *m;
+    cvm_sizing *s;
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_points(m, pts, 6, 2), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_segments(m, seg, 5), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+    ck_assert_int_eq(cvm_sizing_create(&s), CVM_OK);
+    ck_assert_int_eq(cvm_sizing_set_uniform(s, h), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_refine(m, s, CVM_ALGO_DELAUNAY), CVM_OK);
+    cvm_sizing_free(s);
+    return m;
+}
+
+/* Segment edges as sorted coordinate quadruples (ids change with renumbering). */
+static int cmp4(const void *a, const void *b)
+{
+    const double *x = a, *y = b;
+    int i;
+    for (i = 0; i < 4; i++)
+        if (x[i] != y[i])
+            return x[i] < y[i] ? -1 : 1;
+    return 0;
+}
+
+static double *segment_coords(const dtest_mesh *d)
+{
+    double *c = malloc((4 * d->nseg + 1) * sizeof *c);
+    size_t k;
+    ck_assert_ptr_nonnull(c);
+    for (k = 0; k < d->nseg; k++) {
+        const double *p = d->xy + 2 * d->seg[2 * k], *q = d->xy + 2 * d->seg[2 * k + 1];
+        int swap = p[0] > q[0] || (p[0] == q[0] && p[1] > q[1]);
+        const double *a = swap ? q : p, *b = swap ? p : q;
+        c[4 * k] = a[0];
+        c[4 * k + 1] = a[1];
+        c[4 * k + 2] = b[0];
+        c[4 * k + 3] = b[1];
+    }
+    qsort(c, d->nseg, 4 * sizeof *c, cmp4);
+    return c;
+}
+
+/* Smallest angle over the triangles of d, degrees (own computation). */
+static double min_angle(const dtest_mesh *d)
+{
+    double best = 180;
+    size_t t;
+    int i;
+    for (t = 0; t < d->nt; t++)
+        for (i = 0; i < 3; i++) {
+            const double *a = d->xy + 2 * d->tri[3 * t + i], *b = d->xy + 2 * d->tri[3 * t + (i + 1) % 3],
+                         *c = d->xy + 2 * d->tri[3 * t + (i + 2) % 3];
+            double ux = b[0] - a[0], uy = b[1] - a[1], vx = c[0] - a[0], vy = c[1] - a[1];
+            double ang = atan2(fabs(ux * vy - uy * vx), ux * vx + uy * vy) * 180 / 3.14159265358979323846;
+            if (ang < best)
+                best = ang;
+        }
+    return best;
+}
+
+/* Pre-pass only (no sweep) with a uniform sizing hs on a mesh refined at 0.1:
+ * checks what must hold whatever the pre-pass did; returns the vertex count. */
+static size_t prepass_only(double hs, size_t *nv0_out, double *ang0, double *ang1)
+{
+    cvm_mesh *m = refined(0.1);
+    cvm_sizing *s;
+    dtest_mesh d0, d;
+    double *c0, *c1;
+    size_t k, nin, nmark0 = 0, nmark1 = 0;
+    int32_t *mk;
+    ck_assert_int_eq(cvm_mesh_count(&nin, m, CVM_ENT_INPUT_POINT), CVM_OK);
+    dtest_get(m, &d0);
+    mk = malloc((d0.nv + 1) * sizeof *mk);
+    ck_assert_int_eq(cvm_mesh_copy_markers(mk, d0.nv, m, CVM_ENT_VERTEX), CVM_OK);
+    for (k = 0; k < d0.nv; k++)
+        nmark0 += mk[k] != 0;
+    free(mk);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_DUAL_PREPASS, 1), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_DUAL_MAX_SWEEPS, 0), CVM_OK);
+    ck_assert_int_eq(cvm_sizing_create(&s), CVM_OK);
+    ck_assert_int_eq(cvm_sizing_set_uniform(s, hs), CVM_OK);
+    ck_assert_msg(cvm_mesh_optimise_dual(m, s) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    cvm_sizing_free(s);
+    ck_assert_msg(cvm_mesh_check(m) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    dtest_get(m, &d);
+    /* input points kept, in place, first */
+    for (k = 0; k < nin; k++)
+        ck_assert(d.xy[2 * k] == d0.xy[2 * k] && d.xy[2 * k + 1] == d0.xy[2 * k + 1]);
+    /* segments intact: the same constrained edges, by coordinates */
+    ck_assert_uint_eq(d.nseg, d0.nseg);
+    c0 = segment_coords(&d0);
+    c1 = segment_coords(&d);
+    ck_assert_int_eq(memcmp(c0, c1, 4 * d.nseg * sizeof *c0), 0);
+    /* regular (here Delaunay) by the test's own power test */
+    ck_assert_uint_eq(dtest_power_violations(&d, d.w), 0);
+    /* markers follow: the marked (segment) vertices are the same number, new ones 0 */
+    mk = malloc((d.nv + 1) * sizeof *mk);
+    ck_assert_int_eq(cvm_mesh_copy_markers(mk, d.nv, m, CVM_ENT_VERTEX), CVM_OK);
+    for (k = 0; k < d.nv; k++)
+        nmark1 += mk[k] != 0;
+    free(mk);
+    ck_assert_uint_eq(nmark1, nmark0);
+    *nv0_out = d0.nv;
+    *ang0 = min_angle(&d0);
+    *ang1 = min_angle(&d);
+    k = d.nv;
+    free(c0);
+    free(c1);
+    dtest_free(&d0);
+    dtest_free(&d);
+    cvm_mesh_free(m);
+    return k;
+}
+
+START_TEST(prepass_splits_long_edges_and_keeps_input_and_segments)
+{
+    size_t nv0, nv;
+    double a0, a1;
+    nv = prepass_only(0.05, &nv0, &a0, &a1); /* every edge ~2x the size: splits */
+    ck_assert_uint_gt(nv, nv0 + nv0 / 4);
+}
+END_TEST
+
+START_TEST(prepass_collapses_short_edges_and_keeps_input_and_segments)
+{
+    size_t nv0, nv;
+    double a0, a1;
+    nv = prepass_only(0.25, &nv0, &a0, &a1); /* every edge ~0.4x the size: removals */
+    ck_assert_uint_lt(nv, nv0);
+}
+END_TEST
+
+START_TEST(prepass_reseeds_steiner_vertices_of_small_angles)
+{
+    cvm_mesh *m = refined(0.1);
+    dtest_mesh d0, d;
+    double a0;
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_DUAL_PREPASS, 1), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_DUAL_MAX_SWEEPS, 0), CVM_OK);
+    dtest_get(m, &d0);
+    a0 = min_angle(&d0);
+    ck_assert_double_lt(a0, 35.0); /* the premise: something to re-seed */
+    ck_assert_msg(cvm_mesh_optimise_dual(m, NULL) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    ck_assert_msg(cvm_mesh_check(m) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    dtest_get(m, &d);
+    /* something changed: a vertex not at any former position */
+    {
+        size_t k, j, moved = 0;
+        for (k = 0; k < d.nv && !moved; k++) {
+            int found = 0;
+            for (j = 0; j < d0.nv && !found; j++)
+                found = d.xy[2 * k] == d0.xy[2 * j] && d.xy[2 * k + 1] == d0.xy[2 * j + 1];
+            moved += !found;
+        }
+        ck_assert_uint_gt(moved, 0);
+    }
+    ck_assert_uint_eq(dtest_power_violations(&d, d.w), 0);
+    dtest_free(&d0);
+    dtest_free(&d);
+    cvm_mesh_free(m);
+}
+END_TEST
+
+static void run_threads(int threads, dtest_mesh *d)
+{
+    cvm_mesh *m = refined(0.1);
+    cvm_sizing *s;
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_SEED, 777), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_THREADS, threads), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_DUAL_PREPASS, 1), CVM_OK);
+    ck_assert_int_eq(cvm_sizing_create(&s), CVM_OK);
+    ck_assert_int_eq(cvm_sizing_set_uniform(s, 0.07), CVM_OK);
+    ck_assert_msg(cvm_mesh_optimise_dual(m, s) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    cvm_sizing_free(s);
+    ck_assert_msg(cvm_mesh_check(m) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    dtest_get(m, d);
+    cvm_mesh_free(m);
+}
+
+START_TEST(prepass_same_bytes_for_1_2_4_threads)
+{
+    dtest_mesh a, b;
+    int threads[] = {2, 4}, i;
+    run_threads(1, &a);
+    ck_assert_uint_eq(dtest_power_violations(&a, a.w), 0);
+    for (i = 0; i < 2; i++) {
+        run_threads(threads[i], &b);
+        ck_assert_uint_eq(a.nv, b.nv);
+        ck_assert_uint_eq(a.nt, b.nt);
+        ck_assert_int_eq(memcmp(a.xy, b.xy, 2 * a.nv * sizeof *a.xy), 0);
+        ck_assert_int_eq(memcmp(a.w, b.w, a.nv * sizeof *a.w), 0);
+        ck_assert_int_eq(memcmp(a.tri, b.tri, 3 * a.nt * sizeof *a.tri), 0);
+        dtest_free(&b);
+    }
+    dtest_free(&a);
+}
+END_TEST
+
+/* Allocation k fails (transient and persistent): CVM_OK or CVM_E_NOMEM, the
+ * mesh valid, nothing leaked. */
+START_TEST(prepass_out_of_memory_leaves_a_valid_mesh)
+{
+    long k, base, total = -1;
+    int persistent;
+    for (persistent = 0; persistent <= 1; persistent++) {
+        total = -1;
+        for (k = 1; total < 0 || k <= total + 1; k++) {
+            static const double pts[] = {0, 0, 1, 0, 1, 1, 0, 1};
+            static const cvm_index seg[] = {0, 1, 1, 2, 2, 3, 3, 0};
+            cvmtest_alloc a;
+            cvm_mesh *m = NULL;
+            cvm_sizing *s = NULL;
+            cvm_status st;
+            cvmtest_alloc_init(&a, 0, 0);
+            ck_assert_int_eq(cvmtest_mesh_create(&m, &a), CVM_OK);
+            ck_assert_int_eq(cvm_mesh_set_points(m, pts, 4, 2), CVM_OK);
+            ck_assert_int_eq(cvm_mesh_set_segments(m, seg, 4), CVM_OK);
+            ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+            ck_assert_int_eq(cvm_sizing_create(&s), CVM_OK);
+            ck_assert_int_eq(cvm_sizing_set_uniform(s, 0.25), CVM_OK);
+            ck_assert_int_eq(cvm_mesh_refine(m, s, CVM_ALGO_DELAUNAY), CVM_OK);
+            ck_assert_int_eq(cvm_sizing_set_uniform(s, 0.12), CVM_OK);
+            ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_DUAL_PREPASS, 1), CVM_OK);
+            ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_DUAL_MAX_SWEEPS, 2), CVM_OK);
+            base = a.n_calls;
+            cvmtest_alloc_arm(&a, base + k, persistent);
+            st = cvm_mesh_optimise_dual(m, s);
+            ck_assert_msg(st == CVM_OK || st == CVM_E_NOMEM, "k=%ld: status %d", k, (int)st);
+            if (st == CVM_OK && total < 0)
+                total = a.n_calls - base;
+            cvmtest_alloc_arm(&a, 0, 0);
+            ck_assert_msg(cvm_mesh_check(m) == CVM_OK, "k=%ld: %s", k, cvm_mesh_errmsg(m));
+            cvm_sizing_free(s);
+            cvm_mesh_free(m);
+            ck_assert_int_eq(a.live_blocks, 0);
+            if (st == CVM_OK && k > total)
+                break;
+        }
+    }
+}
+END_TEST
+
+TCase *dual_prepass_tcase(void)
+{
+    TCase *tc = tcase_create("prepass");
+    tcase_set_timeout(tc, 120);
+    tcase_add_test(tc, prepass_splits_long_edges_and_keeps_input_and_segments);
+    tcase_add_test(tc, prepass_collapses_short_edges_and_keeps_input_and_segments);
+    tcase_add_test(tc, prepass_reseeds_steiner_vertices_of_small_angles);
+    tcase_add_test(tc, prepass_same_bytes_for_1_2_4_threads);
+    tcase_add_test(tc, prepass_out_of_memory_leaves_a_valid_mesh);
+    return tc;
+}
