@@ -93,7 +93,7 @@ static const double *af_pt(const cvm__refiner *R, int32_t v)
 /* ---- edge layers, per triangle slot ---- */
 
 /* 1 when the layers stored for slot t belong to the triangle now in it. */
-static int af_slot_valid(const af_state *A, const cvm__tri2 *T, int32_t t)
+static inline int af_slot_valid(const af_state *A, const cvm__tri2 *T, int32_t t)
 {
     const int32_t *tv = T->tv + 3 * (size_t)t, *sv = A->sv + 3 * (size_t)t;
     return 3 * (size_t)t + 2 < A->cap_sv && sv[0] == tv[0] && sv[1] == tv[1] && sv[2] == tv[2];
@@ -175,17 +175,12 @@ static int af_quality_any(cvm__refiner *R, int32_t t)
 /* af_quality_any, from slot t's record when it is valid: the vertices do not
  * move during the pass, so a triangle's quality never changes, and each
  * triangle is measured once, when made, instead of at every look. */
-static int af_quality_cached(cvm__refiner *R, int32_t t)
+static inline int af_quality_cached(cvm__refiner *R, int32_t t)
 {
     const af_state *A = R->aflr;
     if ((size_t)t < A->cap_sq && af_slot_valid(A, R->T, t))
         return A->sq[t];
     return af_quality_any(R, t);
-}
-
-static int af_good(cvm__refiner *R, int32_t t)
-{
-    return af_quality_cached(R, t) == AF_OK;
 }
 
 /* Best front edge of bad triangle t of quality q (lowest layer, then shortest relative to
@@ -200,35 +195,57 @@ static int af_front_edge(cvm__refiner *R, int32_t t, int q, int *j_out, int32_t 
     const af_state *A = R->aflr;
     const cvm__tri2 *T = R->T;
     const int32_t *tv = T->tv + 3 * (size_t)t;
-    int j, found = 0, skinny = q == AF_SKINNY;
+    int j, found = 0, skinny = q == AF_SKINNY, tvalid = af_slot_valid(A, T, t);
     double best = 0, sin2;
     for (j = 0; j < 3; j++) {
-        int32_t a = tv[(j + 1) % 3], b = tv[(j + 2) % 3], nb = T->tn[3 * (size_t)t + (size_t)j] / 3;
+        int32_t a = tv[(j + 1) % 3], b = tv[(j + 2) % 3], h = T->tn[3 * (size_t)t + (size_t)j];
         int32_t layer;
-        double le, ls, rel;
+        const double *pa, *pb;
+        double le2, ls, rel2, dx, dy;
         if (T->te[3 * (size_t)t + (size_t)j] >= 0) {
             layer = af_edge_layer(R, t, j);
             if (layer == AF_INF)
                 continue;
         } else {
-            if (!cvm__tri2_in_domain(T, nb) || !af_good(R, nb))
+            int32_t nb = h / 3;
+            if (!cvm__tri2_in_domain(T, nb))
                 continue;
-            layer = af_edge_layer(R, t, j);
+            if (af_slot_valid(A, T, nb)) { /* both looks at nb's record at once */
+                if (A->sq[nb] != AF_OK)
+                    continue;
+                layer = tvalid ? A->sl[3 * (size_t)t + (size_t)j] : A->sl[(size_t)h];
+            } else {
+                if (af_quality_any(R, nb) != AF_OK)
+                    continue;
+                layer = tvalid ? A->sl[3 * (size_t)t + (size_t)j] : AF_INF;
+            }
         }
-        le = hypot(af_pt(R, a)[0] - af_pt(R, b)[0], af_pt(R, a)[1] - af_pt(R, b)[1]);
+        /* squared lengths: the square root only for the chosen edge */
+        pa = af_pt(R, a);
+        pb = af_pt(R, b);
+        dx = pa[0] - pb[0];
+        dy = pa[1] - pb[1];
+        le2 = dx * dx + dy * dy;
         ls = (R->vls[a] + R->vls[b]) / 2;
-        rel = isfinite(ls) ? le / ls : le;
-        if (skinny && !(le >= AF_MIN_BASE * (isfinite(ls) ? ls : A->lmin0)))
-            continue;
-        if (!found || layer < *layer_out || (layer == *layer_out && rel < best)) {
+        if (!isfinite(ls)) {
+            if (skinny && !(le2 >= AF_MIN_BASE * AF_MIN_BASE * A->lmin0 * A->lmin0))
+                continue;
+            rel2 = le2;
+        } else {
+            if (skinny && !(le2 >= AF_MIN_BASE * AF_MIN_BASE * ls * ls))
+                continue;
+            rel2 = le2 / (ls * ls);
+        }
+        if (!found || layer < *layer_out || (layer == *layer_out && rel2 < best)) {
             found = 1;
-            best = rel;
+            best = rel2;
             *layer_out = layer;
             *j_out = j;
         }
     }
     if (!found)
         return 0;
+    best = sqrt(best);
     cvm__rf_classify(R, t, &sin2);
     /* the Delaunay-refinement key: -(circumradius / size)^2 when too big (the
      * largest first), else sin^2 of the smallest angle (the worst first); then
