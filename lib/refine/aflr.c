@@ -525,9 +525,10 @@ cvm_status cvm__rf_aflr(cvm__refiner *R)
 cvm_status cvm__rf_aflr_cell_layers(cvm__refiner *R, double **out)
 {
     const cvm__tri2 *T = R->T;
-    int32_t *vl, *el;
+    int32_t *vl, *el, *ie; /* ie: the layerless edges, 2 vertices each, in slot order */
+    size_t *tb;            /* tb[g] .. tb[g + 1]: the edges of the g-th slot that has any */
     double *cl;
-    size_t t, k;
+    size_t t, k, ne = 0, ng = 0;
     int changed, sweep;
     *out = NULL;
     if (!R->aflr)
@@ -535,10 +536,14 @@ cvm_status cvm__rf_aflr_cell_layers(cvm__refiner *R, double **out)
     vl = cvm__malloc(R->ctx, (T->nv + 1) * sizeof *vl);
     el = cvm__malloc(R->ctx, (3 * T->nt + 1) * sizeof *el);
     cl = cvm__malloc(R->ctx, (T->nt + 1) * sizeof *cl);
-    if (!vl || !el || !cl) {
+    ie = cvm__malloc(R->ctx, (6 * T->nt + 1) * sizeof *ie);
+    tb = cvm__malloc(R->ctx, (T->nt + 2) * sizeof *tb);
+    if (!vl || !el || !cl || !ie || !tb) {
         cvm__free(R->ctx, vl);
         cvm__free(R->ctx, el);
         cvm__free(R->ctx, cl);
+        cvm__free(R->ctx, ie);
+        cvm__free(R->ctx, tb);
         return cvm__nomem(R->ctx);
     }
     for (t = 0; t < T->nv; t++)
@@ -556,19 +561,30 @@ cvm_status cvm__rf_aflr_cell_layers(cvm__refiner *R, double **out)
             vl[b] = l < vl[b] ? l : vl[b];
         }
     }
+    /* the sweeps below only visit these, in the same order as a scan of all slots */
+    tb[0] = 0;
+    for (t = 0; t < T->nt; t++) {
+        int j;
+        size_t ne0 = ne;
+        if (!cvm__tri2_in_domain(T, (int32_t)t))
+            continue;
+        for (j = 0; j < 3; j++)
+            if (el[3 * t + (size_t)j] == AF_INF) {
+                ie[2 * ne] = T->tv[3 * t + (size_t)(j + 1) % 3];
+                ie[2 * ne + 1] = T->tv[3 * t + (size_t)(j + 2) % 3];
+                ne++;
+            }
+        if (ne > ne0)
+            tb[++ng] = ne;
+    }
     /* edges without a layer pass one more than the lower end's on: sweeps in
      * alternating slot order to a fixed point, at most AF_SWEEPS of them */
     for (changed = 1, sweep = 0; changed && sweep < AF_SWEEPS; sweep++) {
         changed = 0;
-        for (k = 0; k < T->nt; k++) {
-            int j;
-            t = sweep % 2 ? T->nt - 1 - k : k;
-            if (!cvm__tri2_in_domain(T, (int32_t)t))
-                continue;
-            for (j = 0; j < 3; j++) {
-                int32_t a = T->tv[3 * t + (size_t)(j + 1) % 3], b = T->tv[3 * t + (size_t)(j + 2) % 3];
-                if (el[3 * t + (size_t)j] != AF_INF)
-                    continue;
+        for (k = 0; k < ng; k++) {
+            size_t g = sweep % 2 ? ng - 1 - k : k, e;
+            for (e = tb[g]; e < tb[g + 1]; e++) {
+                int32_t a = ie[2 * e], b = ie[2 * e + 1];
                 if (vl[a] != AF_INF && vl[a] + 1 < vl[b]) {
                     vl[b] = vl[a] + 1;
                     changed = 1;
@@ -601,6 +617,8 @@ cvm_status cvm__rf_aflr_cell_layers(cvm__refiner *R, double **out)
     }
     cvm__free(R->ctx, vl);
     cvm__free(R->ctx, el);
+    cvm__free(R->ctx, ie);
+    cvm__free(R->ctx, tb);
     *out = cl;
     return CVM_OK;
 }
