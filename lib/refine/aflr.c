@@ -68,6 +68,8 @@ enum { AF_OK = 0, AF_BIG = 1, AF_SKINNY = 2 };
 /* Sweeps that pass layers on to edges made after the fronts stopped. */
 #define AF_SWEEPS 64
 #define AF_PI 3.14159265358979323846
+/* The next and the previous corner of a triangle (faster than % 3 in the hot loops). */
+static const int af_n1[3] = {1, 2, 0}, af_n2[3] = {2, 0, 1};
 
 typedef struct af_state {
     int32_t *sl;               /* per triangle slot, 3: layer of each edge */
@@ -150,8 +152,8 @@ static int af_quality(cvm__refiner *R, int32_t t)
     for (k = 0; k < 3; k++)
         p[k] = af_pt(R, tv[k]);
     for (k = 0; k < 3; k++) {
-        const double *a = p[(k + 1) % 3], *b = p[(k + 2) % 3];
-        double ls = (R->vls[tv[(k + 1) % 3]] + R->vls[tv[(k + 2) % 3]]) / 2;
+        const double *a = p[af_n1[k]], *b = p[af_n2[k]];
+        double ls = (R->vls[tv[af_n1[k]]] + R->vls[tv[af_n2[k]]]) / 2;
         l[k] = (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]);
         if (isfinite(ls) && !(l[k] < AF_SIZE_BAD * AF_SIZE_BAD * ls * ls))
             return AF_BIG;
@@ -198,7 +200,7 @@ static int af_front_edge(cvm__refiner *R, int32_t t, int q, int *j_out, int32_t 
     int j, found = 0, skinny = q == AF_SKINNY, tvalid = af_slot_valid(A, T, t);
     double best = 0, sin2;
     for (j = 0; j < 3; j++) {
-        int32_t a = tv[(j + 1) % 3], b = tv[(j + 2) % 3], h = T->tn[3 * (size_t)t + (size_t)j];
+        int32_t a = tv[af_n1[j]], b = tv[af_n2[j]], h = T->tn[3 * (size_t)t + (size_t)j];
         int32_t layer;
         const double *pa, *pb;
         double le2, ls, rel2, dx, dy;
@@ -312,11 +314,11 @@ static cvm_status af_new_vertex(cvm__refiner *R, int32_t v, int32_t base_layer)
         m = A->lo[k] < A->lo[next] ? A->lo[k] : A->lo[next];
         m = !cvm__tri2_in_domain(T, t) || !cvm__tri2_in_domain(T, R->star[next]) ? AF_INF : m;
         m = base_layer < m ? base_layer : m;
-        l[(i + 1) % 3] = m == AF_INF ? AF_INF : m + 1;
+        l[af_n1[i]] = m == AF_INF ? AF_INF : m + 1;
         m = A->lo[k] < A->lo[prev] ? A->lo[k] : A->lo[prev];
         m = !cvm__tri2_in_domain(T, t) || !cvm__tri2_in_domain(T, R->star[prev]) ? AF_INF : m;
         m = base_layer < m ? base_layer : m;
-        l[(i + 2) % 3] = m == AF_INF ? AF_INF : m + 1;
+        l[af_n2[i]] = m == AF_INF ? AF_INF : m + 1;
         if (af_store(A, R, t, l, af_quality_any(R, t)))
             return cvm__nomem(R->ctx);
     }
@@ -347,12 +349,12 @@ static int af_candidates(cvm__refiner *R, int32_t t, int j, const double *m, con
                          double le, double *d)
 {
     const int32_t *tv = R->T->tv + 3 * (size_t)t;
-    double c[2], dc, rad, h = (R->vls[tv[(j + 1) % 3]] + R->vls[tv[(j + 2) % 3]]) / 2;
+    double c[2], dc, rad, h = (R->vls[tv[af_n1[j]]] + R->vls[tv[af_n2[j]]]) / 2;
     double cand[4], lim, L;
     int n = 0, a, b;
     cvm__circumcenter2d(af_pt(R, tv[0]), af_pt(R, tv[1]), af_pt(R, tv[2]), c);
     dc = (c[0] - m[0]) * nrm[0] + (c[1] - m[1]) * nrm[1];
-    rad = hypot(c[0] - af_pt(R, tv[(j + 1) % 3])[0], c[1] - af_pt(R, tv[(j + 1) % 3])[1]);
+    rad = hypot(c[0] - af_pt(R, tv[af_n1[j]])[0], c[1] - af_pt(R, tv[af_n1[j]])[1]);
     lim = dc + rad; /* beyond this the point leaves t's circumcircle */
     if (!isfinite(lim) || !(lim > 0))
         return 0;
@@ -385,7 +387,7 @@ static int af_point(cvm__refiner *R, int32_t t, int j, double *x)
 {
     af_state *A = R->aflr;
     const int32_t *tv = R->T->tv + 3 * (size_t)t;
-    const double *p = af_pt(R, tv[(j + 1) % 3]), *q = af_pt(R, tv[(j + 2) % 3]);
+    const double *p = af_pt(R, tv[af_n1[j]]), *q = af_pt(R, tv[af_n2[j]]);
     double le = hypot(q[0] - p[0], q[1] - p[1]), m[2], nrm[2], d[4], r, jit;
     int n, k;
     if (!(le > 0))
@@ -452,8 +454,8 @@ static cvm_status af_setup(cvm__refiner *R)
         if (!cvm__tri2_in_domain(T, (int32_t)k))
             continue;
         for (j = 0; j < 3; j++) {
-            const double *a = af_pt(R, T->tv[3 * k + (size_t)(j + 1) % 3]);
-            const double *b = af_pt(R, T->tv[3 * k + (size_t)(j + 2) % 3]);
+            const double *a = af_pt(R, T->tv[3 * k + (size_t)af_n1[j]]);
+            const double *b = af_pt(R, T->tv[3 * k + (size_t)af_n2[j]]);
             double l = hypot(a[0] - b[0], a[1] - b[1]);
             A->lmin0 = l < A->lmin0 ? l : A->lmin0;
         }
@@ -554,8 +556,8 @@ cvm_status cvm__rf_aflr_cell_layers(cvm__refiner *R, double **out)
         if (!cvm__tri2_in_domain(T, (int32_t)t))
             continue;
         for (j = 0; j < 3; j++) {
-            int32_t l = af_edge_layer(R, (int32_t)t, j), a = T->tv[3 * t + (size_t)(j + 1) % 3];
-            int32_t b = T->tv[3 * t + (size_t)(j + 2) % 3];
+            int32_t l = af_edge_layer(R, (int32_t)t, j), a = T->tv[3 * t + (size_t)af_n1[j]];
+            int32_t b = T->tv[3 * t + (size_t)af_n2[j]];
             el[3 * t + (size_t)j] = l;
             vl[a] = l < vl[a] ? l : vl[a];
             vl[b] = l < vl[b] ? l : vl[b];
@@ -570,8 +572,8 @@ cvm_status cvm__rf_aflr_cell_layers(cvm__refiner *R, double **out)
             continue;
         for (j = 0; j < 3; j++)
             if (el[3 * t + (size_t)j] == AF_INF) {
-                ie[2 * ne] = T->tv[3 * t + (size_t)(j + 1) % 3];
-                ie[2 * ne + 1] = T->tv[3 * t + (size_t)(j + 2) % 3];
+                ie[2 * ne] = T->tv[3 * t + (size_t)af_n1[j]];
+                ie[2 * ne + 1] = T->tv[3 * t + (size_t)af_n2[j]];
                 ne++;
             }
         if (ne > ne0)
@@ -604,8 +606,8 @@ cvm_status cvm__rf_aflr_cell_layers(cvm__refiner *R, double **out)
         for (j = 0; j < 3; j++) {
             int32_t l = el[3 * t + (size_t)j];
             if (l == AF_INF) { /* made after the pass, or a segment that starts no front */
-                int32_t a = vl[T->tv[3 * t + (size_t)(j + 1) % 3]];
-                int32_t b = vl[T->tv[3 * t + (size_t)(j + 2) % 3]];
+                int32_t a = vl[T->tv[3 * t + (size_t)af_n1[j]]];
+                int32_t b = vl[T->tv[3 * t + (size_t)af_n2[j]]];
                 l = a < b ? a : b;
                 l = l == AF_INF ? AF_INF : l + 1;
             }
