@@ -38,6 +38,11 @@ typedef struct cli_setting {
 
 #define CLI_MAX_SETTINGS 32
 
+/* The shared start of refine and optimise: a new mesh with the option
+ * settings applied and a sizing, uniform size when size > 0. Returns
+ * CLI_EXIT_OK, or an exit status after printing why (nothing left allocated). */
+int cli_start(cvm_mesh **m, cvm_sizing **sz, const cli_setting *set, int nset, double size);
+
 /* The shared end of refine and optimise: s is the status of their main call on
  * m (input file in). An error fails (message printed); an incomplete status
  * prints a note and goes on. Then write out, svg and dual (each when not

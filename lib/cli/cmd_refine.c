@@ -196,22 +196,8 @@ static int run(const rargs *a)
     cvm_sizing *sz = NULL;
     cvm_status s;
     int rc;
-    if (cvm_mesh_create(&m) != CVM_OK || cvm_sizing_create(&sz) != CVM_OK) {
-        fprintf(stderr, "cvmesh: out of memory\n");
-        cvm_mesh_free(m);
-        return CLI_EXIT_FAIL;
-    }
-    if ((rc = cli_apply_settings(m, a->set, a->nset))) {
-        cvm_sizing_free(sz);
-        cvm_mesh_free(m);
+    if ((rc = cli_start(&m, &sz, a->set, a->nset, a->size)))
         return rc;
-    }
-    if (a->size > 0 && cvm_sizing_set_uniform(sz, a->size) != CVM_OK) {
-        fprintf(stderr, "cvmesh: --size: %s\n", cvm_sizing_errmsg(sz));
-        cvm_sizing_free(sz);
-        cvm_mesh_free(m);
-        return CLI_EXIT_USAGE;
-    }
     if (a->auto_r > 0 && cvm_sizing_set_automatic(sz, a->auto_r, a->grading) != CVM_OK) {
         fprintf(stderr, "cvmesh: --auto: %s\n", cvm_sizing_errmsg(sz));
         cvm_sizing_free(sz);

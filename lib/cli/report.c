@@ -203,3 +203,27 @@ int cli_finish(cvm_mesh *m, cvm_sizing *sz, const char *in, cvm_status s, const 
     cvm_mesh_free(m);
     return rc;
 }
+
+int cli_start(cvm_mesh **m, cvm_sizing **sz, const cli_setting *set, int nset, double size)
+{
+    int rc;
+    *m = NULL;
+    *sz = NULL;
+    if (cvm_mesh_create(m) != CVM_OK || cvm_sizing_create(sz) != CVM_OK) {
+        fprintf(stderr, "cvmesh: out of memory\n");
+        cvm_mesh_free(*m);
+        return CLI_EXIT_FAIL;
+    }
+    if ((rc = cli_apply_settings(*m, set, nset)) == CLI_EXIT_OK && size > 0 &&
+        cvm_sizing_set_uniform(*sz, size) != CVM_OK) {
+        fprintf(stderr, "cvmesh: --size: %s\n", cvm_sizing_errmsg(*sz));
+        rc = CLI_EXIT_USAGE;
+    }
+    if (rc) {
+        cvm_sizing_free(*sz);
+        cvm_mesh_free(*m);
+        *m = NULL;
+        *sz = NULL;
+    }
+    return rc;
+}

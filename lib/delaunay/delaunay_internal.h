@@ -73,6 +73,11 @@ static inline int cvm__tri2_is_live(const cvm__tri2 *T, int32_t t)
     return !(T->tf[t] & CVM__TF_DEAD);
 }
 
+/* The live triangles around vertex v, counter-clockwise from vtri[v] (ghosts
+ * included), into out[0..cap-1]; returns how many there are (possibly more
+ * than cap: then only the first cap were written), 0 for an unused vertex. */
+size_t cvm__tri2_star(const cvm__tri2 *T, int32_t v, int32_t *out, size_t cap);
+
 /* A real (non-ghost) live triangle inside the domain. */
 static inline int cvm__tri2_in_domain(const cvm__tri2 *T, int32_t t)
 {

@@ -206,3 +206,20 @@ void cvm__tri2_compact(cvm__tri2 *T, const int32_t *dup_of, int32_t *map_out)
     }
     T->nv = n;
 }
+
+size_t cvm__tri2_star(const cvm__tri2 *T, int32_t v, int32_t *out, size_t cap)
+{
+    int32_t t0 = T->vtri[v], t = t0;
+    size_t n = 0;
+    if (t0 < 0)
+        return 0;
+    do {
+        const int32_t *tv = T->tv + 3 * (size_t)t;
+        int i = tv[0] == v ? 0 : tv[1] == v ? 1 : 2;
+        if (n < cap)
+            out[n] = t;
+        n++;
+        t = T->tn[3 * (size_t)t + (size_t)(i + 1) % 3] / 3;
+    } while (t != t0 && n <= T->nt);
+    return n;
+}

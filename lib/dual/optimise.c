@@ -238,18 +238,7 @@ static void score_all(dopt *D)
 /* Live triangles around v into star (room for them); their number. */
 static size_t gather_star(const dopt *D, int32_t v, int32_t *star)
 {
-    const cvm__tri2 *T = D->T;
-    int32_t t0 = T->vtri[v], t = t0;
-    size_t n = 0;
-    if (t0 < 0)
-        return 0;
-    do {
-        const int32_t *tv = T->tv + 3 * (size_t)t;
-        int i = tv[0] == v ? 0 : tv[1] == v ? 1 : 2;
-        star[n++] = t;
-        t = T->tn[3 * (size_t)t + (size_t)(i + 1) % 3] / 3;
-    } while (t != t0 && n < T->nt);
-    return n;
+    return cvm__tri2_star(D->T, v, star, (size_t)-1);
 }
 
 /* 1 when a triangle of the star is a domain triangle. */

@@ -7,20 +7,12 @@
 
 size_t cvm__rf_star(cvm__refiner *R, int32_t v)
 {
-    const cvm__tri2 *T = R->T;
-    int32_t t0 = T->vtri[v], t = t0;
-    size_t n = 0;
-    if (t0 < 0)
-        return 0;
-    do {
-        const int32_t *tv = T->tv + 3 * (size_t)t;
-        int i = tv[0] == v ? 0 : tv[1] == v ? 1 : 2;
-        if (n >= R->cap_star &&
-            cvm__grow(R->ctx, (void **)&R->star, &R->cap_star, n + 1, sizeof *R->star))
+    size_t n = cvm__tri2_star(R->T, v, R->star, R->cap_star);
+    if (n > R->cap_star) {
+        if (cvm__grow(R->ctx, (void **)&R->star, &R->cap_star, n, sizeof *R->star))
             return 0;
-        R->star[n++] = t;
-        t = T->tn[3 * (size_t)t + (i + 1) % 3] / 3;
-    } while (t != t0 && n <= T->nt);
+        n = cvm__tri2_star(R->T, v, R->star, R->cap_star);
+    }
     return n;
 }
 

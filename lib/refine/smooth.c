@@ -125,6 +125,21 @@ static void sm_mark_star(const cvm__tri2 *T, int32_t v, const int32_t *star, siz
     }
 }
 
+/* Vertex v moved: its star's vertices are revisited in the next sweep, and
+ * those after v in this one. */
+static void sm_moved(const cvm__tri2 *T, size_t v, const int32_t *star, size_t n, uint8_t *cur,
+                     uint8_t *next)
+{
+    size_t k;
+    sm_mark_star(T, (int32_t)v, star, n, next);
+    for (k = 0; k < n; k++) {
+        const int32_t *tv = T->tv + 3 * (size_t)star[k];
+        cur[tv[0]] = cur[tv[0]] || (size_t)tv[0] > v;
+        cur[tv[1]] = cur[tv[1]] || (size_t)tv[1] > v;
+        cur[tv[2]] = cur[tv[2]] || (size_t)tv[2] > v;
+    }
+}
+
 cvm_status cvm__rf_smooth(cvm__refiner *R, size_t first, int sweeps, size_t *moves_out)
 {
     cvm__tri2 *T = R->T;
@@ -217,13 +232,7 @@ cvm_status cvm__rf_smooth(cvm__refiner *R, size_t first, int sweeps, size_t *mov
             }
             /* this sweep's later vertices see the move already; the next
              * sweep re-evaluates the whole neighbourhood */
-            sm_mark_star(T, (int32_t)v, star, n, next);
-            for (k = 0; k < n; k++) {
-                const int32_t *tv = T->tv + 3 * (size_t)star[k];
-                cur[tv[0]] = cur[tv[0]] || (size_t)tv[0] > v;
-                cur[tv[1]] = cur[tv[1]] || (size_t)tv[1] > v;
-                cur[tv[2]] = cur[tv[2]] || (size_t)tv[2] > v;
-            }
+            sm_moved(T, v, star, n, cur, next);
             moves++;
         }
         if (moves == moved_before)
@@ -481,13 +490,7 @@ cvm_status cvm__rf_smooth_maxmin(cvm__refiner *R, size_t first, int sweeps, int 
             }
             x[0] = p[0];
             x[1] = p[1];
-            sm_mark_star(T, (int32_t)v, star, n, next);
-            for (k = 0; k < n; k++) {
-                const int32_t *tv = T->tv + 3 * (size_t)star[k];
-                cur[tv[0]] = cur[tv[0]] || (size_t)tv[0] > v;
-                cur[tv[1]] = cur[tv[1]] || (size_t)tv[1] > v;
-                cur[tv[2]] = cur[tv[2]] || (size_t)tv[2] > v;
-            }
+            sm_moved(T, v, star, n, cur, next);
             moves++;
         }
         if (err || moves == moved_before)

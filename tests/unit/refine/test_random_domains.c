@@ -99,10 +99,6 @@ static void check_algo(cvm_algorithm algo)
         const double h = 0.06;
         make_domain(&d, seed);
         m = refined(&d, algo, h, &st);
-        if (st == CVM_E_UNSUPPORTED) {
-            cvm_mesh_free(m);
-            return;
-        }
         ck_assert_msg(st == CVM_OK, "seed %lu: %s", seed, cvm_mesh_errmsg(m));
         cvmtest_expect_init(&e);
         e.segs = d.seg;
