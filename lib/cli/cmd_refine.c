@@ -133,7 +133,7 @@ static int parse(rargs *a, int argc, char **argv)
     int i, r;
     memset(a, 0, sizeof *a);
     a->algo = CVM_ALGO_DELAUNAY;
-    a->grading = 4;
+    a->grading = 0; /* 0: not given (4 with --auto) */
     for (i = 1; i < argc; i++) {
         const char *s = argv[i];
         if (strcmp(s, "-h") == 0 || strcmp(s, "--help") == 0) {
@@ -154,6 +154,12 @@ static int parse(rargs *a, int argc, char **argv)
         if ((r = cli_parse_tail("refine", CLI_CMD_REFINE, argc, argv, &i, a->set, &a->nset, &a->in)))
             return r;
     }
+    if (a->grading > 0 && !(a->auto_r > 0)) {
+        fprintf(stderr, "cvmesh: refine: --grading needs --auto (it grades the automatic size)\n");
+        return CLI_EXIT_USAGE;
+    }
+    if (a->grading == 0)
+        a->grading = 4;
     return cli_need_input("refine", a->in);
 }
 

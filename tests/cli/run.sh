@@ -288,6 +288,8 @@ expect_exit 0 "refine --no-swap --smooth 3" "$CLI" refine "$SHARED/data/square.p
     --no-swap --smooth 3 -o "$OUT/sq.vtu"
 expect_exit 2 "--smooth out of range" "$CLI" refine "$SHARED/data/square.poly" --smooth 1000 -o "$OUT/x.vtu"
 expect_exit 2 "--auto not positive" "$CLI" refine "$SHARED/data/square.poly" --auto 0 -o "$OUT/x.vtu"
+expect_exit 2 "--grading without --auto" "$CLI" refine "$SHARED/data/square.poly" --grading 3 -o "$OUT/x.vtu"
+expect_grep "--grading without --auto" "$TMP/err" "--grading needs --auto"
 expect_exit 2 "--grading not a number" "$CLI" refine "$SHARED/data/square.poly" --auto 2 --grading x -o "$OUT/x.vtu"
 
 # ---- optimise a .vtu mesh read back, with its dual ---------------------------
