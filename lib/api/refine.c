@@ -190,6 +190,7 @@ static cvm_status refine_run(cvm_mesh *m, const cvm_sizing *sizing, cvm_algorith
         p.swap = cvm__opt(m, CVM_OPT_SWAP) != 0;
         p.smooth_sweeps = (int)cvm__opt(m, CVM_OPT_SMOOTH_SWEEPS);
         p.smooth_method = (int)cvm__opt(m, CVM_OPT_SMOOTH_METHOD);
+        p.relax_sweeps = (int)cvm__opt(m, CVM_OPT_RELAX_SWEEPS);
     }
     p.restore_delaunay = cvm__opt(m, CVM_OPT_RESTORE_DELAUNAY) != 0;
     p.sizing = sizing;

@@ -185,6 +185,7 @@ typedef struct cvm__refine_params {
     size_t nseg;               /* segment ids 0..nseg-1 */
     int swap;                  /* 1: swap edges towards degree 6 after refining */
     int smooth_sweeps;         /* sweeps of smoothing after refining */
+    int relax_sweeps;          /* relaxation sweeps before them (method 0, 2, 3) */
     int smooth_method;         /* 0 smart Laplacian, 1 max-min (Freitag), 2 both in turn,
                                   3 Laplacian then guarded max-min */
     int restore_delaunay;      /* 1: restore the constrained Delaunay property at the end */
@@ -389,7 +390,7 @@ cvm_status cvm__rf_restore_delaunay(cvm__tri2 *T, size_t *flips_out);
  * below min(the star's smallest angle, the requested angle). Floating point
  * decides only which valid mesh results. Breaks the Delaunay property.
  * CVM_OK or CVM_E_NOMEM (the triangulation stays valid). */
-cvm_status cvm__rf_smooth(cvm__refiner *R, size_t first, int sweeps, size_t *moves_out);
+cvm_status cvm__rf_smooth(cvm__refiner *R, size_t first, int relax, int sweeps, size_t *moves_out);
 /* Max-min smoothing (Freitag and Ollivier's active-set method): the same
  * vertices, order and sweep rule as cvm__rf_smooth; each visited vertex
  * maximises the smallest sine of the angles of its star (= the sine of the

@@ -6,6 +6,16 @@
 #include "delaunay/tri2_store.h"
 #include "geom/geom_internal.h"
 
+/* Weight of an obtuse angle against an angle in [55, 65] degrees in the
+ * regularity count: with 1 the ODT candidates trade obtuse triangles for
+ * regular angles (annulus: 0.05% -> 0.12% obtuse); 4 keeps every shared
+ * geometry at or below the obtuse share of the smart Laplacian alone. */
+#define SM_OBTUSE_WEIGHT 4.0
+/* Relaxation accepts a move that worsens the star's count by at most this. */
+#define SM_RELAX_SLACK 1.0
+/* (1% of the shortest edge)^2 as a fraction of its square. */
+#define SM_RELAX_WAKE2 1e-4
+
 /* Star of v into *star (triangles, counter-clockwise); returns the count, or 0
  * when v may not move: a star triangle outside the domain or a constrained
  * spoke edge. *err is set on NOMEM. */
@@ -69,7 +79,7 @@ static int sm_star_eval(const cvm__refiner *R, int32_t v, const double *p, const
         den[2] = 4 * lpb * lab;
         for (j = 0; j < 3; j++) {
             double n2 = num[j] * num[j];
-            sbad += (num[j] < 0) - (num[j] >= 0 && n2 >= lo2 * den[j] && n2 <= hi2 * den[j]);
+            sbad += SM_OBTUSE_WEIGHT * (num[j] < 0) - (num[j] >= 0 && n2 >= lo2 * den[j] && n2 <= hi2 * den[j]);
         }
         sbad += 1e-3 * (1 - 2 * 1.7320508075688772 * ar / (lpa + lpb + lab));
         lmin = lpa < lpb ? (lpa < lab ? lpa : lab) : (lpb < lab ? lpb : lab);
@@ -140,7 +150,74 @@ static void sm_moved(const cvm__tri2 *T, size_t v, const int32_t *star, size_t n
     }
 }
 
-cvm_status cvm__rf_smooth(cvm__refiner *R, size_t first, int sweeps, size_t *moves_out)
+/* Mark in cur the vertices of domain triangles with an angle outside [55, 65]
+ * degrees (the others are left alone by the smart rule anyway). */
+static void sm_mark_imperfect(const cvm__tri2 *T, uint8_t *cur)
+{
+    size_t t;
+    memset(cur, 0, T->nv);
+    for (t = 0; t < T->nt; t++) {
+        const int32_t *tv = T->tv + 3 * t;
+        if (cvm__tri2_in_domain(T, (int32_t)t) && !sm_perfect(T, (int32_t)t))
+            cur[tv[0]] = cur[tv[1]] = cur[tv[2]] = 1;
+    }
+}
+
+/* Add to cur every vertex sharing a domain triangle with a marked one; tmp
+ * is scratch of T->nv bytes. */
+static void sm_dilate(const cvm__tri2 *T, uint8_t *cur, uint8_t *tmp)
+{
+    size_t t;
+    memcpy(tmp, cur, T->nv);
+    for (t = 0; t < T->nt; t++) {
+        const int32_t *tv = T->tv + 3 * t;
+        if (cvm__tri2_in_domain(T, (int32_t)t) && (tmp[tv[0]] || tmp[tv[1]] || tmp[tv[2]]))
+            cur[tv[0]] = cur[tv[1]] = cur[tv[2]] = 1;
+    }
+}
+
+/* The two targets of v (at x) from its star: c = the centroid of its
+ * neighbours, o = the optimal-Delaunay (ODT) point, the area-weighted mean of
+ * the star's circumcentres (Chen and Xu), which makes uniform stars
+ * equilateral where the centroid only evens out edge lengths; o = c when no
+ * star triangle has positive area in floating point. *l2 = the squared
+ * length of v's shortest edge. */
+static void sm_targets(const cvm__tri2 *T, int32_t v, const double *x, const int32_t *star,
+                       size_t n, double *c, double *o, double *l2)
+{
+    double sx = 0, sy = 0, sa = 0;
+    size_t k;
+    c[0] = c[1] = 0;
+    *l2 = HUGE_VAL;
+    for (k = 0; k < n; k++) {
+        const int32_t *tv = T->tv + 3 * (size_t)star[k];
+        int i = tv[0] == v ? 0 : tv[1] == v ? 1 : 2;
+        const double *a = cvm__tri2_pt(T, tv[(i + 1) % 3]), *b = cvm__tri2_pt(T, tv[(i + 2) % 3]);
+        double ax = a[0] - x[0], ay = a[1] - x[1], bx = b[0] - x[0], by = b[1] - x[1];
+        double d = 2 * (ax * by - ay * bx), la = ax * ax + ay * ay, lb = bx * bx + by * by;
+        c[0] += a[0];
+        c[1] += a[1];
+        if (la < *l2)
+            *l2 = la;
+        if (!(d > 0))
+            continue;
+        /* circumcentre x + ((by la - ay lb), (ax lb - bx la)) / d, weight area d / 4 */
+        sx += 0.25 * d * x[0] + 0.25 * (by * la - ay * lb);
+        sy += 0.25 * d * x[1] + 0.25 * (ax * lb - bx * la);
+        sa += 0.25 * d;
+    }
+    c[0] /= (double)n;
+    c[1] /= (double)n;
+    if (sa > 0) {
+        o[0] = sx / sa;
+        o[1] = sy / sa;
+    } else {
+        o[0] = c[0];
+        o[1] = c[1];
+    }
+}
+
+cvm_status cvm__rf_smooth(cvm__refiner *R, size_t first, int relax, int sweeps, size_t *moves_out)
 {
     cvm__tri2 *T = R->T;
     int32_t *star = NULL;
@@ -149,7 +226,11 @@ cvm_status cvm__rf_smooth(cvm__refiner *R, size_t first, int sweeps, size_t *mov
     int sweep, err = 0;
     if (moves_out)
         *moves_out = 0;
-    if (sweeps <= 0 || first >= T->nv)
+    if (relax < 0)
+        relax = 0;
+    if (sweeps < 0)
+        sweeps = 0;
+    if (sweeps + relax <= 0 || first >= T->nv)
         return CVM_OK;
     /* A vertex is evaluated again only when it or a neighbour moved in the
      * sweep before: otherwise its star is unchanged and so is the decision,
@@ -161,23 +242,18 @@ cvm_status cvm__rf_smooth(cvm__refiner *R, size_t first, int sweeps, size_t *mov
         cvm__free(T->ctx, next);
         return cvm__nomem(T->ctx);
     }
-    /* the first sweep visits the vertices of triangles with an angle outside
-     * [55, 65] degrees: the others are left alone by the rule below anyway */
-    memset(cur, 0, T->nv);
-    {
-        size_t t;
-        for (t = 0; t < T->nt; t++) {
-            const int32_t *tv = T->tv + 3 * t;
-            if (cvm__tri2_in_domain(T, (int32_t)t) && !sm_perfect(T, (int32_t)t))
-                cur[tv[0]] = cur[tv[1]] = cur[tv[2]] = 1;
-        }
-    }
-    for (sweep = 0; sweep < sweeps; sweep++) {
+    sm_mark_imperfect(T, cur);
+    if (relax > 0)
+        sm_dilate(T, cur, next);
+    for (sweep = 0; sweep < relax + sweeps; sweep++) {
         size_t moved_before = moves;
+        int relaxing = sweep < relax;
+        if (sweep == relax && relax > 0)
+            sm_mark_imperfect(T, cur); /* the smart sweeps start afresh */
         memset(next, 0, T->nv);
         for (v = first; v < T->nv; v++) {
-            size_t n, k;
-            double p[2] = {0, 0}, b0, b1, q0, q1;
+            size_t n;
+            double c[2], o[2], l2, b0, b1, q0, q1, qlo;
             double *x = T->xy + 2 * v;
             int big0, big1;
             if (!cur[v])
@@ -191,34 +267,47 @@ cvm_status cvm__rf_smooth(cvm__refiner *R, size_t first, int sweeps, size_t *mov
             }
             if (n < 3)
                 continue;
-            for (k = 0; k < n; k++) {
-                const int32_t *tv = T->tv + 3 * (size_t)star[k];
-                int i = tv[0] == (int32_t)v ? 0 : tv[1] == (int32_t)v ? 1 : 2;
-                const double *a = cvm__tri2_pt(T, tv[(i + 1) % 3]);
-                p[0] += a[0];
-                p[1] += a[1];
-            }
-            p[0] /= (double)n;
-            p[1] /= (double)n;
-            if (!isfinite(p[0]) || !isfinite(p[1]) || (p[0] == x[0] && p[1] == x[1]))
+            sm_targets(T, (int32_t)v, x, star, n, c, o, &l2);
+            if (!isfinite(c[0]) || !isfinite(c[1]) || !isfinite(o[0]) || !isfinite(o[1]))
                 continue;
+            if (!sm_star_eval(R, (int32_t)v, x, star, n, &b0, &q0, &big0))
+                continue;
+            qlo = q0 < R->sin2_min ? q0 : R->sin2_min;
+            if (relaxing) {
+                /* relaxation: straight to the ODT point unless the star loses more
+                 * than one unit of the regularity count or a bound; only moves
+                 * longer than 1% of the shortest edge wake the neighbours */
+                double dx = o[0] - x[0], dy = o[1] - x[1];
+                if ((dx == 0 && dy == 0) ||
+                    !sm_star_eval(R, (int32_t)v, o, star, n, &b1, &q1, &big1) || big1 > big0 ||
+                    q1 < qlo || b1 > b0 + SM_RELAX_SLACK)
+                    continue;
+                x[0] = o[0];
+                x[1] = o[1];
+                moves++;
+                if (dx * dx + dy * dy > SM_RELAX_WAKE2 * l2)
+                    sm_moved(T, v, star, n, cur, next);
+                continue;
+            }
             /* a star whose angles are all in [55, 65] degrees is left alone */
-            if (!sm_star_eval(R, (int32_t)v, x, star, n, &b0, &q0, &big0) ||
-                b0 < -3.0 * (double)n + 0.5)
+            if (b0 < -3.0 * (double)n + 0.5)
                 continue;
             {
-                /* candidates: the centroid, and half and one and a half times the step
-                 * towards it; the most regular one that meets the bounds is taken */
+                /* candidates: half, one and one and a half times the step towards
+                 * the centroid and towards the ODT point; the most regular one that
+                 * meets the bounds is taken (first found on ties) */
                 static const double step[3] = {1.0, 0.5, 1.5};
                 double best[2] = {0, 0}, bb = b0;
-                int c, found = 0;
-                for (c = 0; c < 3; c++) {
-                    double f = step[c], pc[2];
-                    pc[0] = x[0] + f * (p[0] - x[0]);
-                    pc[1] = x[1] + f * (p[1] - x[1]);
-                    if (!sm_star_eval(R, (int32_t)v, pc, star, n, &b1, &q1, &big1))
+                int k, found = 0;
+                for (k = 0; k < 6; k++) {
+                    const double *tg = k < 3 ? c : o;
+                    double f = step[k % 3], pc[2];
+                    pc[0] = x[0] + f * (tg[0] - x[0]);
+                    pc[1] = x[1] + f * (tg[1] - x[1]);
+                    if ((pc[0] == x[0] && pc[1] == x[1]) ||
+                        !sm_star_eval(R, (int32_t)v, pc, star, n, &b1, &q1, &big1))
                         continue;
-                    if (!(b1 < bb) || big1 > big0 || q1 < (q0 < R->sin2_min ? q0 : R->sin2_min))
+                    if (!(b1 < bb) || big1 > big0 || q1 < qlo)
                         continue;
                     bb = b1;
                     best[0] = pc[0];
@@ -235,7 +324,7 @@ cvm_status cvm__rf_smooth(cvm__refiner *R, size_t first, int sweeps, size_t *mov
             sm_moved(T, v, star, n, cur, next);
             moves++;
         }
-        if (moves == moved_before)
+        if (moves == moved_before && !relaxing)
             break;
         {
             uint8_t *sw = cur;
