@@ -422,7 +422,7 @@ typedef enum cvm_option {
     CVM_OPT_SWAP = 205,
     /** Sweeps of smart smoothing after CVM_ALGO_FRONTAL and CVM_ALGO_AFLR (after
      *  CVM_OPT_SWAP and the CVM_OPT_RELAX_SWEEPS relaxation, before the
-     *  Delaunay-restoring flips), default 5, bounds [0, 100]; 0 = off (no relaxation
+     *  Delaunay-restoring flips), default 3, bounds [0, 100]; 0 = off (no relaxation
      *  either). Only Steiner points whose triangles are all inside the domain move
      *  (never an input point or a vertex on a segment), in vertex index order. Each
      *  visited vertex tries 0.5, 1 and 1.5 times the step towards the centroid of its
@@ -465,7 +465,7 @@ typedef enum cvm_option {
      *  Not applied to CVM_ALGO_DELAUNAY. */
     CVM_OPT_SMOOTH_METHOD = 208,
     /** Relaxation sweeps before the smart sweeps of CVM_OPT_SMOOTH_SWEEPS (smoothing
-     *  methods 0, 2 and 3), default 10, bounds [0, 100]; 0 = none. A relaxation sweep
+     *  methods 0, 2 and 3), default 5, bounds [0, 100]; 0 = none. A relaxation sweep
      *  moves each visited Steiner point (same rule of which may move) straight to its
      *  ODT point when no triangle inverts (exact orient2d), no angle drops below
      *  min(its old smallest angle, CVM_OPT_MIN_ANGLE_DEG), no more triangles exceed
@@ -475,7 +475,7 @@ typedef enum cvm_option {
      *  rows instead of one, which the strictly improving smart sweeps cannot do. The
      *  first sweep visits the vertices of triangles with an angle outside [55, 65]
      *  degrees and their neighbours, later ones the neighbourhoods of moves longer
-     *  than 1% of the vertex's shortest edge. Integer. */
+     *  than about 3% of the vertex's shortest edge. Integer. */
     CVM_OPT_RELAX_SWEEPS = 209,
 
     /** Run control (400..499). */

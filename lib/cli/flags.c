@@ -34,7 +34,7 @@ static const cli_option_flag k_flags[] = {
     {"--smooth", "SWEEPS", CVM_OPT_SMOOTH_SWEEPS, 0, REF,
      "frontal: sweeps of smoothing after refining (0: none)"},
     {"--relax", "SWEEPS", CVM_OPT_RELAX_SWEEPS, 0, REF,
-     "frontal/aflr: ODT relaxation sweeps before smoothing (default 10, 0: none)"},
+     "frontal/aflr: ODT relaxation sweeps before smoothing (default 5, 0: none)"},
     {"--smooth-method", "N", CVM_OPT_SMOOTH_METHOD, 0, REF,
      "frontal/aflr smoothing: 0 smart Laplacian (default), 1 max-min angle (Freitag), 2 both, 3 both, max-min guarded"},
     {"--solver", "N", CVM_OPT_DUAL_SOLVER, 0, OPT,

@@ -1,4 +1,5 @@
 /* smooth.c - post-processing by "smart" Laplacian smoothing (a free Steiner vertex moves towards the centroid of its neighbours when no star triangle inverts (exact orient2d) and the star gets more regular without losing angle or size bounds) and by Freitag-Ollivier max-min optimisation of the sines of the star's angles (active-set method). */
+#include <limits.h>
 #include <math.h>
 #include <string.h>
 
@@ -10,11 +11,12 @@
  * regularity count: with 1 the ODT candidates trade obtuse triangles for
  * regular angles (annulus: 0.05% -> 0.12% obtuse); 4 keeps every shared
  * geometry at or below the obtuse share of the smart Laplacian alone. */
-#define SM_OBTUSE_WEIGHT 4.0
+#define SM_OBTUSE_WEIGHT 4
 /* Relaxation accepts a move that worsens the star's count by at most this. */
 #define SM_RELAX_SLACK 1.0
-/* (1% of the shortest edge)^2 as a fraction of its square. */
-#define SM_RELAX_WAKE2 1e-4
+/* A relaxation move wakes the neighbours when longer than about 3% of the
+ * vertex's shortest edge (the square of the fraction). */
+#define SM_RELAX_WAKE2 1e-3
 
 /* Star of v into *star (triangles, counter-clockwise); returns the count, or 0
  * when v may not move: a star triangle outside the domain or a constrained
@@ -44,9 +46,10 @@ static size_t sm_star(const cvm__tri2 *T, int32_t v, int32_t **star, size_t *cap
 /* Regularity of the star of v with v at p: *bad (lower is better) = number of
  * obtuse angles - number of angles in [55, 65] degrees + 1e-3 x sum of (1 -
  * mean ratio); *q = smallest sin^2; *big = triangles above the size bound.
- * Returns 0 when a triangle is not strictly counter-clockwise (exact orient2d). */
+ * Returns 0 when a triangle is not strictly counter-clockwise (exact orient2d),
+ * or as soon as *bad is sure to end >= cut (pass HUGE_VAL for the full count). */
 static int sm_star_eval(const cvm__refiner *R, int32_t v, const double *p, const int32_t *star,
-                        size_t n, double *bad, double *q, int *big)
+                        size_t n, double cut, double *bad, double *q, int *big)
 {
     const cvm__tri2 *T = R->T;
     /* cos^2 of 65 and 55 degrees */
@@ -55,8 +58,8 @@ static int sm_star_eval(const cvm__refiner *R, int32_t v, const double *p, const
     size_t k;
     /* local sums (stored at the end): *bad may alias the coordinates, so
      * updating it in the loop would reload them every time */
-    double sbad = 0, sq = 1.0;
-    int sbig = 0;
+    double smr = 0, sq = 1.0;
+    int sbig = 0, nobt = 0, nreg = 0;
     for (k = 0; k < n; k++) {
         const int32_t *tv = T->tv + 3 * (size_t)star[k];
         int i = tv[0] == v ? 0 : tv[1] == v ? 1 : 2;
@@ -79,20 +82,132 @@ static int sm_star_eval(const cvm__refiner *R, int32_t v, const double *p, const
         den[2] = 4 * lpb * lab;
         for (j = 0; j < 3; j++) {
             double n2 = num[j] * num[j];
-            sbad += SM_OBTUSE_WEIGHT * (num[j] < 0) - (num[j] >= 0 && n2 >= lo2 * den[j] && n2 <= hi2 * den[j]);
+            nobt += num[j] < 0;
+            nreg += (num[j] >= 0) & (n2 >= lo2 * den[j]) & (n2 <= hi2 * den[j]);
         }
-        sbad += 1e-3 * (1 - 2 * 1.7320508075688772 * ar / (lpa + lpb + lab));
+        smr += 1e-3 * (1 - 2 * 1.7320508075688772 * ar / (lpa + lpb + lab));
         lmin = lpa < lpb ? (lpa < lab ? lpa : lab) : (lpb < lab ? lpb : lab);
         s = lmin * ar * ar / (lpa * lpb * lab);
         if (s < sq)
             sq = s;
+        /* each remaining triangle adds at least -3: stop once *bad cannot
+         * get below cut (the caller rejects such a candidate anyway) */
+        if (SM_OBTUSE_WEIGHT * nobt - nreg - 3 * (int)(n - k - 1) + smr >= cut)
+            return 0;
         /* too big as in Delaunay refinement: circumradius above the mean size, or the area bound */
         ls = (R->vls[v] + R->vls[ia] + R->vls[ib]) / 3;
         if ((isfinite(ls) && lpa * lpb * lab > 4 * ls * ls * ar * ar) ||
             (cvm__rf_max_area(R, star[k]) > 0 && ar > 2 * cvm__rf_max_area(R, star[k])))
             sbig++;
     }
-    *bad = sbad;
+    *bad = SM_OBTUSE_WEIGHT * nobt - nreg + smr;
+    *q = sq;
+    *big = sbig;
+    return 1;
+}
+
+/* The star of a visited vertex, gathered once per visit: ring vertex k is the
+ * second corner of star triangle k, whose third corner is ring vertex k + 1
+ * (mod n, sm_star walks counter-clockwise); per triangle the squared length
+ * of its outer edge, 4 x its size squared (HUGE_VAL: no size) and twice its
+ * area bound (0: none). */
+typedef struct sm_ring {
+    size_t n, cap;
+    double *a;   /* 2 per ring vertex */
+    double *lab; /* per triangle */
+    double *ls4;
+    double *amax2;
+} sm_ring;
+
+static void sm_ring_free(cvm__ctx *ctx, sm_ring *r)
+{
+    cvm__free(ctx, r->a);
+    cvm__free(ctx, r->lab);
+    cvm__free(ctx, r->ls4);
+    cvm__free(ctx, r->amax2);
+}
+
+/* Fill r from the star of v; returns 0 on NOMEM. */
+static int sm_ring_build(const cvm__refiner *R, int32_t v, const int32_t *star, size_t n,
+                         sm_ring *r)
+{
+    const cvm__tri2 *T = R->T;
+    size_t k;
+    if (n > r->cap) {
+        size_t c2 = r->cap, c1 = r->cap, c3 = r->cap, c4 = r->cap;
+        if (cvm__grow(T->ctx, (void **)&r->a, &c1, 2 * n, sizeof *r->a) ||
+            cvm__grow(T->ctx, (void **)&r->lab, &c2, n, sizeof *r->lab) ||
+            cvm__grow(T->ctx, (void **)&r->ls4, &c3, n, sizeof *r->ls4) ||
+            cvm__grow(T->ctx, (void **)&r->amax2, &c4, n, sizeof *r->amax2))
+            return 0;
+        r->cap = n;
+    }
+    r->n = n;
+    for (k = 0; k < n; k++) {
+        const int32_t *tv = T->tv + 3 * (size_t)star[k];
+        int i = tv[0] == v ? 0 : tv[1] == v ? 1 : 2;
+        int32_t ia = tv[(i + 1) % 3], ib = tv[(i + 2) % 3];
+        const double *a = cvm__tri2_pt(T, ia), *b = cvm__tri2_pt(T, ib);
+        double ls = (R->vls[v] + R->vls[ia] + R->vls[ib]) / 3, am = cvm__rf_max_area(R, star[k]);
+        r->a[2 * k] = a[0];
+        r->a[2 * k + 1] = a[1];
+        r->lab[k] = (b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]);
+        r->ls4[k] = isfinite(ls) ? 4 * ls * ls : HUGE_VAL;
+        r->amax2[k] = am > 0 ? 2 * am : 0;
+    }
+    return 1;
+}
+
+/* sm_star_eval on a gathered ring: the same values, each spoke measured once.
+ * A candidate (qmin >= 0) is also rejected (0) as soon as a triangle has an
+ * angle whose sin^2 is below qmin or more than bigmax triangles exceed the
+ * size bound; *q is then not computed. */
+static int sm_ring_eval(const sm_ring *r, const double *p, double cut, double qmin, int bigmax,
+                        double *bad, double *q, int *big)
+{
+    const double lo2 = 0.42261826174069944 * 0.42261826174069944;
+    const double hi2 = 0.57357643635104616 * 0.57357643635104616;
+    size_t k, n = r->n;
+    double smr = 0, sq = 1.0, lpa, lp0;
+    int sbig = 0, nobt = 0, nreg = 0;
+    lp0 = lpa = (r->a[0] - p[0]) * (r->a[0] - p[0]) + (r->a[1] - p[1]) * (r->a[1] - p[1]);
+    for (k = 0; k < n; k++) {
+        const double *a = r->a + 2 * k, *b = r->a + 2 * (k + 1 < n ? k + 1 : 0);
+        double lpb = k + 1 < n ? (b[0] - p[0]) * (b[0] - p[0]) + (b[1] - p[1]) * (b[1] - p[1]) : lp0;
+        double lab = r->lab[k], ar, num[3], den[3], s, lmin;
+        int j;
+        if (cvm__orient2d_inline(p, a, b) <= 0)
+            return 0;
+        ar = (a[0] - p[0]) * (b[1] - p[1]) - (a[1] - p[1]) * (b[0] - p[0]); /* 2 x area */
+        num[0] = lpa + lpb - lab;
+        den[0] = 4 * lpa * lpb;
+        num[1] = lpa + lab - lpb;
+        den[1] = 4 * lpa * lab;
+        num[2] = lpb + lab - lpa;
+        den[2] = 4 * lpb * lab;
+        for (j = 0; j < 3; j++) {
+            double n2 = num[j] * num[j];
+            nobt += num[j] < 0;
+            nreg += (num[j] >= 0) & (n2 >= lo2 * den[j]) & (n2 <= hi2 * den[j]);
+        }
+        smr += 1e-3 * (1 - 2 * 1.7320508075688772 * ar / (lpa + lpb + lab));
+        lmin = lpa < lpb ? (lpa < lab ? lpa : lab) : (lpb < lab ? lpb : lab);
+        if (qmin >= 0) {
+            if (lmin * ar * ar < qmin * (lpa * lpb * lab))
+                return 0;
+        } else {
+            s = lmin * ar * ar / (lpa * lpb * lab);
+            if (s < sq)
+                sq = s;
+        }
+        if (SM_OBTUSE_WEIGHT * nobt - nreg - 3 * (int)(n - k - 1) + smr >= cut)
+            return 0;
+        if ((lpa * lpb * lab > r->ls4[k] * ar * ar || (r->amax2[k] > 0 && ar > r->amax2[k])) &&
+            ++sbig > bigmax)
+            return 0;
+        lpa = lpb;
+    }
+    *bad = SM_OBTUSE_WEIGHT * nobt - nreg + smr;
     *q = sq;
     *big = sbig;
     return 1;
@@ -221,6 +336,7 @@ cvm_status cvm__rf_smooth(cvm__refiner *R, size_t first, int relax, int sweeps, 
 {
     cvm__tri2 *T = R->T;
     int32_t *star = NULL;
+    sm_ring ring = {0, 0, NULL, NULL, NULL, NULL};
     uint8_t *cur = NULL, *next = NULL;
     size_t cap = 0, v, moves = 0;
     int sweep, err = 0;
@@ -259,7 +375,8 @@ cvm_status cvm__rf_smooth(cvm__refiner *R, size_t first, int relax, int sweeps, 
             if (!cur[v])
                 continue;
             n = sm_star(T, (int32_t)v, &star, &cap, &err);
-            if (err) {
+            if (err || (n >= 3 && !sm_ring_build(R, (int32_t)v, star, n, &ring))) {
+                sm_ring_free(T->ctx, &ring);
                 cvm__free(T->ctx, star);
                 cvm__free(T->ctx, cur);
                 cvm__free(T->ctx, next);
@@ -270,17 +387,17 @@ cvm_status cvm__rf_smooth(cvm__refiner *R, size_t first, int relax, int sweeps, 
             sm_targets(T, (int32_t)v, x, star, n, c, o, &l2);
             if (!isfinite(c[0]) || !isfinite(c[1]) || !isfinite(o[0]) || !isfinite(o[1]))
                 continue;
-            if (!sm_star_eval(R, (int32_t)v, x, star, n, &b0, &q0, &big0))
+            if (!sm_ring_eval(&ring, x, HUGE_VAL, -1.0, INT_MAX, &b0, &q0, &big0))
                 continue;
             qlo = q0 < R->sin2_min ? q0 : R->sin2_min;
             if (relaxing) {
                 /* relaxation: straight to the ODT point unless the star loses more
                  * than one unit of the regularity count or a bound; only moves
-                 * longer than 1% of the shortest edge wake the neighbours */
+                 * longer than about 3% of the shortest edge wake the neighbours */
                 double dx = o[0] - x[0], dy = o[1] - x[1];
                 if ((dx == 0 && dy == 0) ||
-                    !sm_star_eval(R, (int32_t)v, o, star, n, &b1, &q1, &big1) || big1 > big0 ||
-                    q1 < qlo || b1 > b0 + SM_RELAX_SLACK)
+                    !sm_ring_eval(&ring, o, b0 + SM_RELAX_SLACK + 1e-9, qlo, big0, &b1, &q1, &big1) ||
+                    b1 > b0 + SM_RELAX_SLACK)
                     continue;
                 x[0] = o[0];
                 x[1] = o[1];
@@ -305,9 +422,7 @@ cvm_status cvm__rf_smooth(cvm__refiner *R, size_t first, int relax, int sweeps, 
                     pc[0] = x[0] + f * (tg[0] - x[0]);
                     pc[1] = x[1] + f * (tg[1] - x[1]);
                     if ((pc[0] == x[0] && pc[1] == x[1]) ||
-                        !sm_star_eval(R, (int32_t)v, pc, star, n, &b1, &q1, &big1))
-                        continue;
-                    if (!(b1 < bb) || big1 > big0 || q1 < qlo)
+                        !sm_ring_eval(&ring, pc, bb, qlo, big0, &b1, &q1, &big1) || !(b1 < bb))
                         continue;
                     bb = b1;
                     best[0] = pc[0];
@@ -332,6 +447,7 @@ cvm_status cvm__rf_smooth(cvm__refiner *R, size_t first, int relax, int sweeps, 
             next = sw;
         }
     }
+    sm_ring_free(T->ctx, &ring);
     cvm__free(T->ctx, star);
     cvm__free(T->ctx, cur);
     cvm__free(T->ctx, next);
@@ -572,8 +688,8 @@ cvm_status cvm__rf_smooth_maxmin(cvm__refiner *R, size_t first, int sweeps, int 
                  * term of a star is below 0.05) */
                 double b0, b1, q0, q1;
                 int g0, g1;
-                if (!sm_star_eval(R, (int32_t)v, x, star, n, &b0, &q0, &g0) ||
-                    !sm_star_eval(R, (int32_t)v, p, star, n, &b1, &q1, &g1) ||
+                if (!sm_star_eval(R, (int32_t)v, x, star, n, HUGE_VAL, &b0, &q0, &g0) ||
+                    !sm_star_eval(R, (int32_t)v, p, star, n, HUGE_VAL, &b1, &q1, &g1) ||
                     floor(b1 + 0.5) > floor(b0 + 0.5))
                     continue;
             }

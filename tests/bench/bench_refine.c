@@ -56,6 +56,10 @@ int main(int argc, char **argv)
             return 1;
         }
         /* CVM_BENCH_SMOOTH_METHOD: CVM_OPT_SMOOTH_METHOD to compare (unset: the default) */
+        if (getenv("CVM_BENCH_RELAX"))
+            cvm_mesh_set_option(m, CVM_OPT_RELAX_SWEEPS, atof(getenv("CVM_BENCH_RELAX")));
+        if (getenv("CVM_BENCH_SMOOTH"))
+            cvm_mesh_set_option(m, CVM_OPT_SMOOTH_SWEEPS, atof(getenv("CVM_BENCH_SMOOTH")));
         if (getenv("CVM_BENCH_SMOOTH_METHOD") &&
             cvm_mesh_set_option(m, CVM_OPT_SMOOTH_METHOD, atof(getenv("CVM_BENCH_SMOOTH_METHOD")))) {
             fprintf(stderr, "%s\n", cvm_mesh_errmsg(m));
