@@ -475,7 +475,9 @@ typedef enum cvm_option {
      *  rows instead of one, which the strictly improving smart sweeps cannot do. The
      *  first sweep visits the vertices of triangles with an angle outside [55, 65]
      *  degrees and their neighbours, later ones the neighbourhoods of moves longer
-     *  than about 3% of the vertex's shortest edge. Integer. */
+     *  than about 3% of the vertex's shortest edge; a vertex whose longest edge is
+     *  more than 1.5 times its shortest (a graded star, where the ODT point is not
+     *  the target) is left to the smart sweeps. Integer. */
     CVM_OPT_RELAX_SWEEPS = 209,
 
     /** Run control (400..499). */
