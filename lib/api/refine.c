@@ -186,6 +186,7 @@ static cvm_status refine_run(cvm_mesh *m, const cvm_sizing *sizing, cvm_algorith
     p.max_steiner = (uint64_t)cvm__opt(m, CVM_OPT_MAX_STEINER);
     p.lens = cvm__opt(m, CVM_OPT_ENCROACH_LENS) != 0;
     p.march = cvm__opt(m, CVM_OPT_MARCH_SEGMENTS) != 0;
+    p.march_grade = CVM__MARCH_GRADE;
     if (algo == CVM_ALGO_FRONTAL || algo == CVM_ALGO_AFLR) {
         p.swap = cvm__opt(m, CVM_OPT_SWAP) != 0;
         p.smooth_sweeps = (int)cvm__opt(m, CVM_OPT_SMOOTH_SWEEPS);
