@@ -410,8 +410,12 @@ typedef enum cvm_option {
     CVM_OPT_KEEP_SEGMENT_VERTICES = 203,
     /** 1 (default): before refining, each input segment is split by marching along it
      *  with the sizing (pieces of about the local size, no 2:1 jumps); only when a sizing
-     *  is given. 0: segments are split only when encroached (Triangle's behaviour).
-     *  Integer, [0, 1]. */
+     *  is given. Along each segment the size is capped by h_b(x) = min(h(x), l(e) + 0.3
+     *  d(x, e)) over both ends e, l(e) the shortest piece of the neighbouring segments at
+     *  e and d the distance along the segment, so pieces grow geometrically (ratio about
+     *  1.35) away from a short neighbour instead of jumping (re-planned until the end
+     *  pieces settle; input vertices are kept). 0: segments are split only when
+     *  encroached (Triangle's behaviour). Integer, [0, 1]. */
     CVM_OPT_MARCH_SEGMENTS = 204,
     /** 1 (default): after CVM_ALGO_FRONTAL refinement, flip interior unconstrained edges
      *  towards the ideal vertex degree (6 inside, round(boundary angle / 60 degrees) + 1
