@@ -15,5 +15,6 @@ Suite *refine_suite(void)
     suite_add_tcase(s, refine_random_domains_tcase());
     suite_add_tcase(s, refine_regions_tcase());
     suite_add_tcase(s, refine_march_tcase());
+    suite_add_tcase(s, refine_resample_tcase());
     return s;
 }
