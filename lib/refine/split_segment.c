@@ -121,7 +121,13 @@ static cvm_status ss_insert_on(cvm__refiner *R, int32_t t, int j, int32_t seg, c
         return s == CVM_E_NOMEM ? cvm__nomem(R->ctx)
                                 : cvm__error(R->ctx, s, CVM_ENT_NONE, -1, "too many vertices");
     if ((s = cvm__tri2_split_edge(T, v, t, j))) {
-        T->nv--;
+        if (T->vtri[v] < 0) {
+            T->nv--; /* not inserted: nothing changed */
+            return s == CVM_E_NOMEM ? cvm__nomem(R->ctx) : s;
+        }
+        /* inserted, only the Delaunay flips around it ran out of memory: the
+           triangulation is valid and holds v, so v must be recorded */
+        (void)cvm__rf_new_vertex(R, v, seg);
         return s == CVM_E_NOMEM ? cvm__nomem(R->ctx) : s;
     }
     *v_out = v;

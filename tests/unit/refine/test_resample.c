@@ -1,6 +1,5 @@
 /* test_resample.c - CVM_OPT_KEEP_SEGMENT_VERTICES = 0: smooth chains of segments re-discretised with the sizing. */
 #include <math.h>
-#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -257,16 +256,13 @@ static void check_annulus(double h, double lo, double hi)
         rtest_quality q;
         rs_meas r;
         measure(m, h, in_xy, N_IN + N_OUT, in_seg, N_IN + N_OUT, &r);
-        fprintf(stderr, "h %g algo %d: nb %lu ratio [%g, %g] off %g area %.15g boundary %.15g input %.15g removed %g perim %g splits %lu\n",
-                h, (int)algos[a], (unsigned long)r.nb, r.min_ratio, r.max_ratio, r.max_off, r.area,
-                r.boundary_area, in_area, r.max_removed_dist, r.perimeter,
-                (unsigned long)r.n_chord_splits);
         assert_valid_resampled(m, 0, r.boundary_area);
         ck_assert_double_le(r.max_off, 1e-12 * 8.0);
         ck_assert_double_eq_tol(r.area, r.boundary_area, 1e-12 * r.area);
         ck_assert_double_le(fabs(r.area - in_area), r.perimeter * r.max_removed_dist);
         ck_assert_double_lt(r.area, in_area); /* chords cut the outer circle, widen the hole */
         ck_assert_double_ge(r.min_ratio, lo);
+        ck_assert_uint_lt(r.nb, N_IN + N_OUT); /* fewer pieces than input segments */
         ck_assert_double_le(r.max_ratio, hi);
         rtest_measure(m, &q);
         ck_assert_double_ge(q.min_angle, 30.0 - 1e-9);
@@ -289,11 +285,232 @@ START_TEST(annulus_graded_follows_size)
 }
 END_TEST
 
+/* A shared geometry with its input points (as triangulated: no duplicates
+ * there) and segments; caller frees. */
+static void shared_input(const char *name, double **xy, size_t *np, cvm_index **seg, size_t *ns)
+{
+    char path[1024];
+    cvm_mesh *m;
+    rtest_shared_path(path, sizeof path, name);
+    *seg = rtest_poly_segments(path, ns);
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_read(m, path), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_count(np, m, CVM_ENT_INPUT_POINT), CVM_OK);
+    *xy = malloc((2 * *np + 1) * sizeof **xy);
+    ck_assert_ptr_nonnull(*xy);
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+    {
+        size_t nv, k;
+        double *v;
+        cvm_index *map = malloc((*np + 1) * sizeof *map);
+        ck_assert_int_eq(cvm_mesh_count(&nv, m, CVM_ENT_VERTEX), CVM_OK);
+        v = malloc((2 * nv + 1) * sizeof *v);
+        ck_assert(map && v);
+        ck_assert_int_eq(cvm_mesh_copy_points(v, 2 * nv, m), CVM_OK);
+        ck_assert_int_eq(cvm_mesh_copy_input_map(map, *np, m), CVM_OK);
+        for (k = 0; k < *np; k++) {
+            (*xy)[2 * k] = v[2 * (size_t)map[k]];
+            (*xy)[2 * k + 1] = v[2 * (size_t)map[k] + 1];
+        }
+        free(map);
+        free(v);
+    }
+    cvm_mesh_free(m);
+}
+
+/* 1 when the point (x, y) is a vertex of m. */
+static int has_point(cvm_mesh *m, double x, double y)
+{
+    double *xy;
+    cvm_index *tri;
+    size_t nv, nt, k;
+    int found = 0;
+    rtest_fetch(m, &xy, &nv, &tri, &nt);
+    for (k = 0; k < nv && !found; k++)
+        found = xy[2 * k] == x && xy[2 * k + 1] == y;
+    free(xy);
+    free(tri);
+    return found;
+}
+
+/* The shared geometry re-discretised at size h: valid, its corners kept
+ * (given as input point ids), boundary turning points on the input polyline,
+ * boundary pieces no shorter than min_ratio x the size. */
+static void check_shared(const char *name, double h, long euler, const size_t *corner, size_t ncorner,
+                         double min_ratio)
+{
+    static const cvm_algorithm algos[] = {CVM_ALGO_DELAUNAY, CVM_ALGO_FRONTAL, CVM_ALGO_AFLR};
+    char path[1024];
+    double *in_xy, diam = 0;
+    cvm_index *in_seg;
+    size_t np, ns, a, k;
+    shared_input(name, &in_xy, &np, &in_seg, &ns);
+    for (k = 0; k < np; k++) {
+        double d = hypot(in_xy[2 * k] - in_xy[0], in_xy[2 * k + 1] - in_xy[1]);
+        diam = d > diam ? d : diam;
+    }
+    rtest_shared_path(path, sizeof path, name);
+    for (a = 0; a < 3; a++) {
+        cvm_mesh *m, *keep;
+        rs_meas r, rk;
+        rtest_quality q;
+        cvm_status st;
+        ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+        ck_assert_int_eq(cvm_mesh_read(m, path), CVM_OK);
+        ck_assert_int_eq(cvm_mesh_create(&keep), CVM_OK);
+        ck_assert_int_eq(cvm_mesh_read(keep, path), CVM_OK);
+        ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_KEEP_SEGMENT_VERTICES, 0), CVM_OK);
+        ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+        ck_assert_int_eq(cvm_mesh_triangulate(keep), CVM_OK);
+        st = refine_with(m, h, algos[a]);
+        ck_assert_msg(st == CVM_OK, "%s: %s", cvm_status_str(st), cvm_mesh_errmsg(m));
+        ck_assert_int_eq(refine_with(keep, h, algos[a]), CVM_OK);
+        measure(m, h, in_xy, 0, in_seg, ns, &r);
+        measure(keep, h, in_xy, 0, in_seg, ns, &rk);
+        assert_valid_resampled(m, euler, r.boundary_area);
+        ck_assert_double_le(r.max_off, 1e-12 * diam);
+        ck_assert_double_eq_tol(r.area, r.boundary_area, 1e-12 * r.area);
+        for (k = 0; k < ncorner; k++)
+            ck_assert_msg(has_point(m, in_xy[2 * corner[k]], in_xy[2 * corner[k] + 1]),
+                          "%s: corner %lu (%g, %g) is gone", name, (unsigned long)corner[k],
+                          in_xy[2 * corner[k]], in_xy[2 * corner[k] + 1]);
+        rtest_measure(m, &q);
+        ck_assert_double_ge(q.min_angle, 30.0 - 1e-9);
+        /* the pieces follow the size no worse than the input vertices do */
+        ck_assert_double_ge(r.min_ratio, min_ratio);
+        ck_assert_uint_gt(r.nb, 0);
+        ck_assert_uint_gt(rk.nb, 0);
+        cvm_mesh_free(m);
+        cvm_mesh_free(keep);
+    }
+    free(in_xy);
+    free(in_seg);
+}
+
+/* The input point of largest x with |y| <= ymax and x <= xmax (a trailing edge). */
+static size_t rightmost(const double *xy, size_t np, double xmax, double ymax)
+{
+    size_t k, best = 0;
+    double bx = -HUGE_VAL;
+    for (k = 0; k < np; k++)
+        if (fabs(xy[2 * k + 1]) <= ymax && xy[2 * k] <= xmax && xy[2 * k] > bx) {
+            bx = xy[2 * k];
+            best = k;
+        }
+    return best;
+}
+
+START_TEST(naca_trailing_edge_is_kept)
+{
+    double *xy;
+    cvm_index *seg;
+    size_t np, ns, te;
+    shared_input("naca0012.poly", &xy, &np, &seg, &ns);
+    te = rightmost(xy, np, 1.5, 0.1);
+    ck_assert_double_gt(xy[2 * te], 0.99);
+    free(xy);
+    free(seg);
+    /* at the uniform size 0.2 the chord across the leading edge (radius 0.016)
+       would replace an arc turning by more than 90 degrees: the profile's
+       chain keeps its vertices (short input pieces stay), the far field is
+       re-discretised */
+    check_shared("naca0012.poly", 0.2, 0, &te, 1, 0.0);
+}
+END_TEST
+
+START_TEST(channel_and_cylinder_corners_are_kept)
+{
+    /* the box corners are the first four points of both files */
+    static const size_t corners[] = {0, 1, 2, 3};
+    check_shared("channel.poly", 0.1, 1, corners, 4, 0.45);
+    check_shared("cylinder.poly", 0.2, 0, corners, 4, 0.45);
+}
+END_TEST
+
+/* Without a sizing the option changes nothing; out-of-range values, a mesh
+ * that was refined or had points inserted, are refused with clear statuses. */
+START_TEST(option_and_state_errors)
+{
+    static const double extra[2] = {2.0, 0.5};
+    cvm_mesh *m, *m2;
+    cvm_index id;
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    set_annulus(m);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_KEEP_SEGMENT_VERTICES, 2), CVM_E_OPTION_RANGE);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_KEEP_SEGMENT_VERTICES, -1), CVM_E_OPTION_RANGE);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_KEEP_SEGMENT_VERTICES, 0.5), CVM_E_OPTION_RANGE);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_KEEP_SEGMENT_VERTICES, 0), CVM_OK);
+    /* no sizing: nothing to re-discretise with, the same mesh as with 1 */
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_refine(m, NULL, CVM_ALGO_DELAUNAY), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_create(&m2), CVM_OK);
+    set_annulus(m2);
+    ck_assert_int_eq(cvm_mesh_triangulate(m2), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_refine(m2, NULL, CVM_ALGO_DELAUNAY), CVM_OK);
+    rtest_assert_identical(m, m2);
+    cvm_mesh_free(m2);
+    /* refined already: refused, mesh unchanged and valid */
+    ck_assert_int_eq(refine_with(m, 0.3, CVM_ALGO_FRONTAL), CVM_E_STATE);
+    ck_assert_ptr_nonnull(strstr(cvm_mesh_errmsg(m), "KEEP_SEGMENT_VERTICES"));
+    cvmtest_assert_valid(m);
+    /* points inserted after triangulating: refused too */
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_insert_points(&id, m, extra, 1, 0.0), CVM_OK);
+    ck_assert_int_eq(refine_with(m, 0.3, CVM_ALGO_DELAUNAY), CVM_E_STATE);
+    /* triangulated again: accepted */
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+    ck_assert_int_eq(refine_with(m, 0.3, CVM_ALGO_DELAUNAY), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_check(m), CVM_OK);
+    cvm_mesh_free(m);
+}
+END_TEST
+
+/* Out of memory at every allocation of a re-discretising refinement: a
+ * status, no leak, and a valid mesh (the rebuilt one or the old one). */
+START_TEST(out_of_memory_is_a_status)
+{
+    int persistent;
+    for (persistent = 0; persistent <= 1; persistent++) {
+        long i;
+        for (i = 1; i < 100000; i++) {
+            cvmtest_alloc a;
+            cvm_mesh *m;
+            cvm_status st;
+            long failed;
+            cvmtest_alloc_init(&a, 0, 0);
+            ck_assert_int_eq(cvmtest_mesh_create(&m, &a), CVM_OK);
+            set_annulus(m);
+            ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_KEEP_SEGMENT_VERTICES, 0), CVM_OK);
+            ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+            cvmtest_alloc_arm(&a, i, persistent); /* counts from 0 again */
+            st = refine_with(m, 1.0, CVM_ALGO_DELAUNAY);
+            failed = a.n_failed;
+            cvmtest_alloc_arm(&a, 0, 0);
+            ck_assert_msg(st == CVM_OK || st == CVM_E_NOMEM, "allocation %ld: %s", i,
+                          cvm_status_str(st));
+            if (cvm_mesh_check(m) != CVM_E_STATE)
+                ck_assert_int_eq(cvm_mesh_check(m), CVM_OK);
+            cvm_mesh_free(m);
+            ck_assert_int_eq(a.live_blocks, 0);
+            if (failed == 0) {
+                ck_assert_int_eq(st, CVM_OK);
+                break;
+            }
+        }
+        ck_assert_msg(i > 20 && i < 100000, "%ld allocations", i);
+    }
+}
+END_TEST
+
 TCase *refine_resample_tcase(void)
 {
     TCase *tc = tcase_create("resample");
     tcase_set_timeout(tc, 120);
     tcase_add_test(tc, annulus_uniform_follows_size);
     tcase_add_test(tc, annulus_graded_follows_size);
+    tcase_add_test(tc, naca_trailing_edge_is_kept);
+    tcase_add_test(tc, channel_and_cylinder_corners_are_kept);
+    tcase_add_test(tc, option_and_state_errors);
+    tcase_add_test(tc, out_of_memory_is_a_status);
     return tc;
 }
