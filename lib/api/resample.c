@@ -428,8 +428,8 @@ static cvm_status rs_chain(rs_state *S, int closed)
     n = (long)floor(total + 0.5);
     if (n < 1)
         n = 1;
-    if (closed && n < 3)
-        return CVM_OK;
+    if ((closed || S->pv[0] == S->pv[S->np - 1]) && n < 3)
+        return CVM_OK; /* a loop needs 3 pieces to keep an area */
     /* positions: arc lengths of the n - 1 new points, and their coordinates */
     if (cvm__grow(S->ctx, (void **)&S->pos, &S->cap_pos, 3 * (size_t)n + 3, sizeof *S->pos))
         return CVM_E_NOMEM;
@@ -533,6 +533,48 @@ static int rs_has_edge(const cvm__tri2 *T, int32_t a, int32_t b)
     return 0;
 }
 
+static int cmp_pair(const void *pa, const void *pb)
+{
+    const int32_t *a = pa, *b = pb;
+    if (a[0] != b[0])
+        return a[0] < b[0] ? -1 : 1;
+    return (a[1] > b[1]) - (a[1] < b[1]);
+}
+
+/* 1 when two of the final edges (kept edges, new pieces; ends as new vertex
+ * ids) join the same two vertices: two chains cut down to the same chord
+ * would collapse the domain between them. */
+static cvm_status rs_duplicate_edges(const rs_state *S, const int32_t *newid, size_t nk, int *dup)
+{
+    size_t n = 0, k;
+    int32_t *e = cvm__malloc(S->ctx, (2 * (S->ne + S->npc) + 2) * sizeof *e);
+    *dup = 0;
+    if (!e)
+        return CVM_E_NOMEM;
+    for (k = 0; k < S->ne + S->npc; k++) {
+        int32_t a, b;
+        if (k < S->ne) {
+            if (S->replaced[k])
+                continue;
+            a = newid[S->e[k].a];
+            b = newid[S->e[k].b];
+        } else {
+            a = S->pc[3 * (k - S->ne)];
+            b = S->pc[3 * (k - S->ne) + 1];
+            a = a >= 0 ? newid[a] : (int32_t)nk + (-2 - a);
+            b = b >= 0 ? newid[b] : (int32_t)nk + (-2 - b);
+        }
+        e[2 * n] = a < b ? a : b;
+        e[2 * n + 1] = a < b ? b : a;
+        n++;
+    }
+    qsort(e, n, 2 * sizeof *e, cmp_pair);
+    for (k = 1; k < n && !*dup; k++)
+        *dup = e[2 * k] == e[2 * k - 2] && e[2 * k + 1] == e[2 * k - 1];
+    cvm__free(S->ctx, e);
+    return CVM_OK;
+}
+
 /* Build the triangulation of the re-discretised input into T2 and swap it
  * into m. *fallback = 1 (m unchanged) when the new pieces do not make a
  * valid constrained triangulation. */
@@ -552,6 +594,14 @@ static cvm_status rs_rebuild(rs_state *S, int *fallback)
     for (v = 0; v < S->nv; v++)
         newid[v] = S->removed[v] ? -1 : (int32_t)nk++;
     nv2 = nk + S->nnew;
+    {
+        int d;
+        if ((s = rs_duplicate_edges(S, newid, nk, &d)) || d) {
+            *fallback = d;
+            cvm__free(S->ctx, newid);
+            return s;
+        }
+    }
     dup = cvm__malloc(S->ctx, (nv2 + 1) * sizeof *dup);
     ends = cvm__malloc(S->ctx, (2 * S->npc + 1) * sizeof *ends);
     vmark = cvm__malloc(S->ctx, (nv2 + 1) * sizeof *vmark);

@@ -465,6 +465,34 @@ START_TEST(option_and_state_errors)
 }
 END_TEST
 
+/* A flat rhombus (-1, 0), (0, -0.25), (1, 0), (0, 0.25): the vertices at
+ * +-0.25 turn by 28 degrees, so each side pair is a chain between the corners
+ * (+-1, 0). At size 10 each chain alone would become the chord between the
+ * corners, and both would collapse onto one edge: the re-discretisation must
+ * fall back and keep the rhombus (its area). */
+START_TEST(collapsing_chains_fall_back)
+{
+    static const double xy[] = {-1, 0, 0, -0.25, 1, 0, 0, 0.25};
+    static const cvm_index seg[] = {0, 1, 1, 2, 2, 3, 3, 0};
+    cvm_mesh *m;
+    double a2;
+    size_t nv;
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_points(m, xy, 4, 2), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_segments(m, seg, 4), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_KEEP_SEGMENT_VERTICES, 0), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+    ck_assert_int_eq(refine_with(m, 10.0, CVM_ALGO_FRONTAL), CVM_OK);
+    assert_valid_resampled(m, 1, 0.5);
+    ck_assert_int_eq(cvm_mesh_get_measure(&a2, m, CVM_MEASURE_AREA), CVM_OK);
+    ck_assert_double_eq_tol(a2, 0.5, 1e-15);
+    ck_assert(has_point(m, 0, 0.25) && has_point(m, 0, -0.25));
+    ck_assert_int_eq(cvm_mesh_count(&nv, m, CVM_ENT_VERTEX), CVM_OK);
+    ck_assert_uint_ge(nv, 4);
+    cvm_mesh_free(m);
+}
+END_TEST
+
 /* Out of memory at every allocation of a re-discretising refinement: a
  * status, no leak, and a valid mesh (the rebuilt one or the old one). */
 START_TEST(out_of_memory_is_a_status)
@@ -511,6 +539,7 @@ TCase *refine_resample_tcase(void)
     tcase_add_test(tc, naca_trailing_edge_is_kept);
     tcase_add_test(tc, channel_and_cylinder_corners_are_kept);
     tcase_add_test(tc, option_and_state_errors);
+    tcase_add_test(tc, collapsing_chains_fall_back);
     tcase_add_test(tc, out_of_memory_is_a_status);
     return tc;
 }
