@@ -420,12 +420,15 @@ typedef enum cvm_option {
      *  triangulation is then rebuilt (constrained Delaunay, holes and regions as in
      *  cvm_mesh_triangulate()) before the refiners run; each piece carries the index
      *  of the input segment holding its midpoint (its first and last: the chain's
-     *  end segments). Safe fallback: a chain keeps all its vertices when a chord
-     *  would replace an arc turning more than 90 degrees, would enclose (between
-     *  chord and polyline) or touch another vertex, a hole or region point, would
-     *  pass closer than 0.1 x its length to another vertex, or when another segment
-     *  at a chain end points into the cut; and if the rebuilt triangulation does not
-     *  take every piece as one edge, nothing changes. Needs the mesh as
+     *  end segments). Safe fallback: a chord fails when it would replace an arc
+     *  turning more than 90 degrees, enclose (between chord and polyline) or touch
+     *  another vertex, a hole or region point, pass closer than 0.1 x its length to
+     *  another vertex, or when another segment at a chain end points into the cut;
+     *  the inner vertex turning most under a failed chord then becomes a corner and
+     *  the chains are planned again (at most 64 passes); a chain with a failed chord
+     *  that has no inner vertex keeps all its vertices. If the pieces would join two
+     *  vertices twice, or the rebuilt triangulation does not take every piece as one
+     *  edge, nothing changes. Needs the mesh as
      *  cvm_mesh_triangulate() left it (CVM_E_STATE after a refinement, inserted
      *  points or weights: triangulate again). Without a sizing, 0 changes nothing.
      *  Integer, bounds [0, 1]. */

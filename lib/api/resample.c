@@ -14,6 +14,8 @@
 #define RS_ARC_TURN_DEG 90.0
 /* No other vertex may come closer to a chord than this times its length. */
 #define RS_CLOSE 0.1
+/* Passes that split chains at failed chords before the last one is taken. */
+#define RS_MAX_PASSES 64
 
 typedef struct rs_edge {
     int32_t a, b, seg;
@@ -55,6 +57,9 @@ typedef struct rs_state {
     /* new pieces: 3 ints: ends (old vertex v >= 0, or new point k as -2 - k), segment */
     int32_t *pc;
     size_t npc, cap_pc;
+    /* inner vertices to turn into corners before the next pass */
+    int32_t *split;
+    size_t nsplit, cap_split;
     int32_t serial;
 } rs_state;
 
@@ -81,6 +86,7 @@ static void rs_free(rs_state *S)
     cvm__free(c, S->nfrac);
     cvm__free(c, S->ninfo);
     cvm__free(c, S->pc);
+    cvm__free(c, S->split);
 }
 
 static const double *rs_pt(const rs_state *S, int32_t v)
@@ -399,6 +405,32 @@ static cvm_status rs_piece(rs_state *S, int32_t a, int32_t b, int32_t seg)
     return CVM_OK;
 }
 
+/* A chord over the arc s0..s1 failed: ask to make the inner vertex of the
+ * arc that turns most (the first on ties) a corner, so that the next pass
+ * re-discretises the chain in two parts. Nothing when the arc has no inner
+ * vertex (the chain then keeps its vertices). */
+static cvm_status rs_request_split(rs_state *S, double s0, double s1)
+{
+    size_t i, best = 0;
+    double turn = -1;
+    for (i = 1; i + 1 < S->np; i++) {
+        double t;
+        if (S->cum[i] < s0 || S->cum[i] > s1 || !S->inner[S->pv[i]])
+            continue;
+        t = rs_turn(rs_pt(S, S->pv[i - 1]), rs_pt(S, S->pv[i]), rs_pt(S, S->pv[i + 1]));
+        if (t > turn) {
+            turn = t;
+            best = i;
+        }
+    }
+    if (!best)
+        return CVM_OK;
+    if (cvm__grow(S->ctx, (void **)&S->split, &S->cap_split, S->nsplit + 1, sizeof *S->split))
+        return CVM_E_NOMEM;
+    S->split[S->nsplit++] = S->pv[best];
+    return CVM_OK;
+}
+
 /* Re-discretise the chain in pv/pe (closed: pv[0] == pv[np-1]) when it has
  * inner vertices and every chord is safe; otherwise leave it. */
 static cvm_status rs_chain(rs_state *S, int closed)
@@ -465,10 +497,15 @@ static cvm_status rs_chain(rs_state *S, int closed)
         }
         if (xy[2 * n] == xy[2 * n - 2] && xy[2 * n + 1] == xy[2 * n - 1])
             return CVM_OK;
-        for (k = 0; k < (size_t)n && ok; k++)
+        for (k = 0; k < (size_t)n; k++) {
+            int ok_k;
             if ((s = rs_chord_ok(S, xy + 2 * k, xy + 2 * k + 2, S->pos[k], S->pos[k + 1], k == 0,
-                                 k + 1 == (size_t)n, &ok)))
+                                 k + 1 == (size_t)n, &ok_k)))
                 return s;
+            if (!ok_k && (s = rs_request_split(S, S->pos[k], S->pos[k + 1])))
+                return s;
+            ok &= ok_k;
+        }
         if (!ok)
             return CVM_OK;
         /* accepted: new points, pieces, removed vertices and edges */
@@ -718,10 +755,44 @@ done:
     return s;
 }
 
+/* One pass over every chain: open chains from each end (a vertex that is not
+ * inner) in vertex order, then closed loops of inner vertices anchored at
+ * their lowest vertex. */
+static cvm_status rs_pass(rs_state *S, size_t *n_chains)
+{
+    size_t v, k;
+    cvm_status s = CVM_OK;
+    *n_chains = 0;
+    for (v = 0; v < S->nv && !s; v++) {
+        if (S->inner[v])
+            continue;
+        for (k = S->first[v]; k < S->first[v + 1] && !s; k++) {
+            size_t ek = (size_t)S->inc[k];
+            size_t before = S->npc;
+            if (S->used[ek])
+                continue;
+            if (!(s = rs_walk(S, (int32_t)v, ek)))
+                s = rs_chain(S, 0);
+            *n_chains += S->npc > before;
+        }
+    }
+    for (v = 0; v < S->nv && !s; v++) {
+        size_t before = S->npc;
+        if (!S->inner[v] || S->used[S->inc[S->first[v]]])
+            continue;
+        if (!(s = rs_walk(S, (int32_t)v, (size_t)S->inc[S->first[v]])))
+            s = rs_chain(S, 1);
+        if (!s && S->npc > before)
+            S->removed[v] = 0; /* the anchor stays */
+        *n_chains += S->npc > before;
+    }
+    return s;
+}
+
 cvm_status cvm__mesh_resample_boundary(cvm_mesh *m, const cvm_sizing *sizing, size_t *n_chains)
 {
     rs_state S;
-    size_t v, k;
+    size_t k, pass;
     cvm_status s = CVM_OK;
     int fallback = 0;
     *n_chains = 0;
@@ -742,30 +813,17 @@ cvm_status cvm__mesh_resample_boundary(cvm_mesh *m, const cvm_sizing *sizing, si
     S.nv = m->tri.nv;
     if ((s = rs_graph(&S)))
         goto done;
-    /* open chains: from each end (a vertex that is not inner), in vertex order */
-    for (v = 0; v < S.nv && !s; v++) {
-        if (S.inner[v])
-            continue;
-        for (k = S.first[v]; k < S.first[v + 1] && !s; k++) {
-            size_t ek = (size_t)S.inc[k];
-            size_t before = S.npc;
-            if (S.used[ek])
-                continue;
-            if (!(s = rs_walk(&S, (int32_t)v, ek)))
-                s = rs_chain(&S, 0);
-            *n_chains += S.npc > before;
-        }
-    }
-    /* closed loops of inner vertices: anchored at their lowest vertex */
-    for (v = 0; v < S.nv && !s; v++) {
-        size_t before = S.npc;
-        if (!S.inner[v] || S.used[S.inc[S.first[v]]])
-            continue;
-        if (!(s = rs_walk(&S, (int32_t)v, (size_t)S.inc[S.first[v]])))
-            s = rs_chain(&S, 1);
-        if (!s && S.npc > before)
-            S.removed[v] = 0; /* the anchor stays */
-        *n_chains += S.npc > before;
+    for (pass = 0;; pass++) {
+        if ((s = rs_pass(&S, n_chains)) || S.nsplit == 0 || pass == RS_MAX_PASSES)
+            break;
+        /* failed chords: their chains are split at the vertex turning most
+           under each, and every chain is planned again */
+        for (k = 0; k < S.nsplit; k++)
+            S.inner[S.split[k]] = 0;
+        memset(S.used, 0, S.ne);
+        memset(S.removed, 0, S.nv);
+        memset(S.replaced, 0, S.ne);
+        S.nnew = S.npc = S.nsplit = 0;
     }
     if (!s && S.npc)
         s = rs_rebuild(&S, &fallback);

@@ -410,10 +410,9 @@ START_TEST(naca_trailing_edge_is_kept)
     ck_assert_double_gt(xy[2 * te], 0.99);
     free(xy);
     free(seg);
-    /* at the uniform size 0.2 the chord across the leading edge (radius 0.016)
-       would replace an arc turning by more than 90 degrees: the profile's
-       chain keeps its vertices (short input pieces stay), the far field is
-       re-discretised */
+    /* at the uniform size 0.2 a chord across the leading edge (radius 0.016)
+       would replace an arc turning by more than 90 degrees: the profile is
+       split there and keeps its short input pieces around it */
     check_shared("naca0012.poly", 0.2, 0, &te, 1, 0.0);
 }
 END_TEST
