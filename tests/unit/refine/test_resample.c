@@ -464,6 +464,87 @@ START_TEST(option_and_state_errors)
 }
 END_TEST
 
+/* Markers and attributes follow the chains: with the attribute of each input
+ * point set to its x, every boundary vertex of the re-discretised annulus
+ * (uniform 0.3: no piece is split later) carries its own x, and the marker
+ * of its circle (1 inner, 2 outer), segment markers too. */
+START_TEST(markers_and_attributes_follow_the_chain)
+{
+    double attr[N_IN + N_OUT], xy_in[2 * (N_IN + N_OUT)], *xy, *va;
+    cvm_index seg[2 * (N_IN + N_OUT)], *tri, *be;
+    int32_t smark[N_IN + N_OUT], *vm, *sm;
+    size_t nv, nt, nb, na, ns, k;
+    cvm_mesh *m;
+    annulus_input(xy_in, seg, smark);
+    for (k = 0; k < N_IN + N_OUT; k++)
+        attr[k] = xy_in[2 * k];
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    set_annulus(m);
+    ck_assert_int_eq(cvm_mesh_set_point_attributes(m, attr, N_IN + N_OUT, 1), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_KEEP_SEGMENT_VERTICES, 0), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+    ck_assert_int_eq(refine_with(m, 0.3, CVM_ALGO_FRONTAL), CVM_OK);
+    rtest_fetch(m, &xy, &nv, &tri, &nt);
+    be = boundary_edges(tri, nt, &nb);
+    va = malloc((nv + 1) * sizeof *va);
+    vm = malloc((nv + 1) * sizeof *vm);
+    ck_assert(va && vm);
+    ck_assert_int_eq(cvm_mesh_copy_point_attributes(va, nv, &na, m), CVM_OK);
+    ck_assert_uint_eq(na, 1);
+    ck_assert_int_eq(cvm_mesh_copy_markers(vm, nv, m, CVM_ENT_VERTEX), CVM_OK);
+    ck_assert_uint_eq(nb, 105);
+    for (k = 0; k < 2 * nb; k++) {
+        cvm_index v = be[k];
+        double r = hypot(xy[2 * (size_t)v], xy[2 * (size_t)v + 1]);
+        ck_assert_double_eq_tol(va[v], xy[2 * (size_t)v], 1e-12);
+        ck_assert_int_eq(vm[v], r < 2 ? 1 : 2);
+    }
+    ck_assert_int_eq(cvm_mesh_count(&ns, m, CVM_ENT_SEGMENT), CVM_OK);
+    ck_assert_uint_eq(ns, 105);
+    sm = malloc((ns + 1) * sizeof *sm);
+    ck_assert_ptr_nonnull(sm);
+    ck_assert_int_eq(cvm_mesh_copy_markers(sm, ns, m, CVM_ENT_SEGMENT), CVM_OK);
+    for (k = 0; k < ns; k++)
+        ck_assert(sm[k] == 1 || sm[k] == 2);
+    free(sm);
+    free(va);
+    free(vm);
+    free(be);
+    free(xy);
+    free(tri);
+    cvm_mesh_free(m);
+}
+END_TEST
+
+static double bad_size(void *payload, double x, double y)
+{
+    (void)payload;
+    return x > 3.5 && y > 0 ? -1.0 : 0.3;
+}
+
+/* A sizing callback that fails during the re-discretisation: its status, and
+ * the mesh as triangulated (valid). */
+START_TEST(sizing_error_during_resampling)
+{
+    cvm_mesh *m;
+    cvm_sizing *s;
+    size_t nv0, nv1;
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    set_annulus(m);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_KEEP_SEGMENT_VERTICES, 0), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_count(&nv0, m, CVM_ENT_VERTEX), CVM_OK);
+    ck_assert_int_eq(cvm_sizing_create(&s), CVM_OK);
+    ck_assert_int_eq(cvm_sizing_set_callback(s, bad_size, NULL), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_refine(m, s, CVM_ALGO_DELAUNAY), CVM_E_ARGUMENT);
+    cvm_sizing_free(s);
+    ck_assert_int_eq(cvm_mesh_check(m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_count(&nv1, m, CVM_ENT_VERTEX), CVM_OK);
+    ck_assert_uint_eq(nv1, nv0);
+    cvm_mesh_free(m);
+}
+END_TEST
+
 /* A flat rhombus (-1, 0), (0, -0.25), (1, 0), (0, 0.25): the vertices at
  * +-0.25 turn by 28 degrees, so each side pair is a chain between the corners
  * (+-1, 0). At size 10 each chain alone would become the chord between the
@@ -539,6 +620,8 @@ TCase *refine_resample_tcase(void)
     tcase_add_test(tc, channel_and_cylinder_corners_are_kept);
     tcase_add_test(tc, option_and_state_errors);
     tcase_add_test(tc, collapsing_chains_fall_back);
+    tcase_add_test(tc, markers_and_attributes_follow_the_chain);
+    tcase_add_test(tc, sizing_error_during_resampling);
     tcase_add_test(tc, out_of_memory_is_a_status);
     return tc;
 }
