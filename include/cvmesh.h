@@ -405,13 +405,42 @@ typedef enum cvm_option {
      *  degrees. Integer, [0, 1]. */
     CVM_OPT_ENCROACH_LENS = 202,
     /** 1 (default): every input vertex of a segment stays where it is; segments are
-     *  marched one by one. 0 (re-discretising smooth chains of segments as one curve,
-     *  moving their inner vertices) is reserved. Integer, bounds [1, 1]. */
+     *  marched one by one (CVM_OPT_MARCH_SEGMENTS). 0: when cvm_mesh_refine() gets a
+     *  non-empty sizing, first every chain of segments that forms a smooth curve is
+     *  re-discretised as one curve. A chain runs between corners; an inner vertex of a
+     *  chain has exactly two incident segments (constrained edges bordering the
+     *  domain), both with the same marker, turning by less than 30 degrees; closed
+     *  loops without a corner are one chain anchored (kept) at their lowest vertex id.
+     *  Its n = round(integral of ds/h) new pieces (at least 1; at least 3 for a loop)
+     *  equidistribute ds/h along the arc length; the new points lie ON the input
+     *  polyline (rounded), so the domain becomes the input polygon with the corners
+     *  of the chain cut by chords (area change within the sagitta bound). The inner
+     *  input vertices disappear: cvm_mesh_copy_input_map() gives -1 for them; markers
+     *  of new points are the chain's, attributes are interpolated along it. The
+     *  triangulation is then rebuilt (constrained Delaunay, holes and regions as in
+     *  cvm_mesh_triangulate()) before the refiners run; each piece carries the index
+     *  of the input segment holding its midpoint (its first and last: the chain's
+     *  end segments). Safe fallback: a chord fails when it would replace an arc
+     *  turning more than 90 degrees, enclose (between chord and polyline) or touch
+     *  another vertex, a hole or region point, pass closer than 0.1 x its length to
+     *  another vertex, or when another segment at a chain end points into the cut;
+     *  the inner vertex turning most under a failed chord then becomes a corner and
+     *  the chains are planned again (at most 64 passes); a chain with a failed chord
+     *  that has no inner vertex keeps all its vertices. If the pieces would join two
+     *  vertices twice, or the rebuilt triangulation does not take every piece as one
+     *  edge, nothing changes. Needs the mesh as
+     *  cvm_mesh_triangulate() left it (CVM_E_STATE after a refinement, inserted
+     *  points or weights: triangulate again). Without a sizing, 0 changes nothing.
+     *  Integer, bounds [0, 1]. */
     CVM_OPT_KEEP_SEGMENT_VERTICES = 203,
     /** 1 (default): before refining, each input segment is split by marching along it
      *  with the sizing (pieces of about the local size, no 2:1 jumps); only when a sizing
-     *  is given. 0: segments are split only when encroached (Triangle's behaviour).
-     *  Integer, [0, 1]. */
+     *  is given. Along each segment the size is capped by h_b(x) = min(h(x), l(e) + 0.3
+     *  d(x, e)) over both ends e, l(e) the shortest piece of the neighbouring segments at
+     *  e and d the distance along the segment, so pieces grow geometrically (ratio about
+     *  1.35) away from a short neighbour instead of jumping (re-planned until the end
+     *  pieces settle; input vertices are kept). 0: segments are split only when
+     *  encroached (Triangle's behaviour). Integer, [0, 1]. */
     CVM_OPT_MARCH_SEGMENTS = 204,
     /** 1 (default): after CVM_ALGO_FRONTAL refinement, flip interior unconstrained edges
      *  towards the ideal vertex degree (6 inside, round(boundary angle / 60 degrees) + 1
@@ -721,7 +750,9 @@ CVM_API cvm_status cvm_mesh_insert_points(cvm_index *ids_out, cvm_mesh *m, const
 /**
  * Re-verify @p m with exact predicates: every triangle counter-clockwise,
  * adjacency symmetric, each edge in at most two triangles, every input segment
- * a chain of constrained mesh edges from end to end, every interior
+ * a chain of constrained mesh edges from end to end (segments of a chain
+ * re-discretised by CVM_OPT_KEEP_SEGMENT_VERTICES = 0, whose inner ends are gone,
+ * are replaced by its new pieces, checked as constrained edges), every interior
  * non-constrained edge locally Delaunay (in-circle, or the power test with
  * weights), the domain bounded by constrained edges or the convex hull.
  * @return CVM_OK, CVM_E_NULL_ARG, CVM_E_STATE (nothing triangulated),
@@ -937,7 +968,10 @@ typedef enum cvm_algorithm {
  * where encroached (concentric shells near small input angles, as Triangle does), so
  * every input segment stays a union of mesh edges; with no segments, or with
  * CVM_OPT_KEEP_CONVEX_HULL, the convex hull edges become segments (with marker 0).
- * Before refining, segments are marched with the sizing (CVM_OPT_MARCH_SEGMENTS).
+ * Before refining, with CVM_OPT_KEEP_SEGMENT_VERTICES = 0 smooth chains of segments
+ * are re-discretised with the sizing and the triangulation rebuilt (see that option:
+ * inner input vertices of such chains disappear, the input map gives -1 for them);
+ * then segments are marched with the sizing (CVM_OPT_MARCH_SEGMENTS).
  * The result stays a constrained Delaunay triangulation. New vertices get the marker
  * of the segment they lie on (else 0) and attributes interpolated along it (else 0).
  * The report (CVM_MEASURE_REFINE_*) says what was asked and what was met.
@@ -950,7 +984,7 @@ typedef enum cvm_algorithm {
  *                during the call; not kept.
  * @param algo    CVM_ALGO_DELAUNAY, CVM_ALGO_FRONTAL or CVM_ALGO_AFLR.
  * Options:  CVM_OPT_MIN_ANGLE_DEG, CVM_OPT_MAX_AREA, CVM_OPT_ENCROACH_LENS,
- *           CVM_OPT_MARCH_SEGMENTS, CVM_OPT_MAX_STEINER, CVM_OPT_TIME_LIMIT_S; the
+ *           CVM_OPT_KEEP_SEGMENT_VERTICES, CVM_OPT_MARCH_SEGMENTS, CVM_OPT_MAX_STEINER, CVM_OPT_TIME_LIMIT_S; the
  *           progress callback (stage CVM_STAGE_REFINE) can cancel. CVM_ALGO_FRONTAL
  *           and CVM_ALGO_AFLR then post-process (when refinement completed): CVM_OPT_SWAP, then
  *           CVM_OPT_SMOOTH_SWEEPS (smoothing moves Steiner points), then
@@ -961,7 +995,9 @@ typedef enum cvm_algorithm {
  *           where the time limit stops the run).
  * @return CVM_OK
  *         CVM_E_NULL_ARG          m is NULL
- *         CVM_E_STATE             nothing triangulated
+ *         CVM_E_STATE             nothing triangulated; or CVM_OPT_KEEP_SEGMENT_VERTICES = 0
+ *                                 with a sizing on a mesh that is not as cvm_mesh_triangulate()
+ *                                 left it (refined, points inserted, weights; mesh unchanged)
  *         CVM_E_ARGUMENT          unknown algo, or the sizing callback returned a value <= 0
  *                                 (message names the callback and the position)
  *         CVM_E_INPUT_NONFINITE   the sizing callback returned NaN or infinity (message
@@ -1105,7 +1141,8 @@ CVM_API cvm_status cvm_mesh_copy_point_attributes(double *dst, size_t dst_len, s
 
 /**
  * For each input point, the mesh vertex it became (a duplicate maps to the
- * vertex of its first occurrence). count = CVM_ENT_INPUT_POINT.
+ * vertex of its first occurrence), or -1 for an inner vertex of a chain that
+ * CVM_OPT_KEEP_SEGMENT_VERTICES = 0 re-discretised. count = CVM_ENT_INPUT_POINT.
  * @return CVM_OK, CVM_E_NULL_ARG, CVM_E_STATE, CVM_E_BUFFER_TOO_SMALL
  * @since 0.1
  */

@@ -22,7 +22,9 @@ struct cvm_mesh {
     /* output */
     int triangulated;        /* 1 once cvm_mesh_triangulate() succeeded */
     cvm__tri2 tri;           /* vertices: input less duplicates, then Steiner points */
-    int32_t *input_map;      /* in.np entries: input point -> vertex */
+    int32_t *input_map;      /* in.np entries: input point -> vertex (-1: an inner vertex of a
+                                chain re-discretised by CVM_OPT_KEEP_SEGMENT_VERTICES = 0) */
+    size_t nv_triangulated;  /* tri.nv as cvm_mesh_triangulate() left it (0: not from it) */
     size_t n_dup;
     int32_t *vmark;          /* marker per vertex (tri.nv), grown with Steiner points */
     double *vattr;           /* nattr per vertex, or NULL */
@@ -57,6 +59,18 @@ int32_t cvm__mesh_seed_triangle(cvm_mesh *m, const double *p);
 
 /* Forget the AFLR layer indices (the triangles they belong to are changing). */
 void cvm__mesh_forget_layers(cvm_mesh *m);
+
+/* Remove the exterior and the holes of the triangulation of m (its segments
+ * recovered) and flood the regional attributes; lib/api/triangulate.c. */
+cvm_status cvm__mesh_carve(cvm_mesh *m);
+
+/* CVM_OPT_KEEP_SEGMENT_VERTICES = 0 (lib/api/resample.c): re-discretise the
+ * chains of segments of m that form smooth curves with sizing and rebuild the
+ * triangulation; *n_chains receives how many chains were re-discretised.
+ * CVM_OK (also when no chain could be: m unchanged), CVM_E_STATE (m is not as
+ * cvm_mesh_triangulate() left it), CVM_E_NOMEM (m unchanged), the sizing's
+ * errors, CVM_INCOMPLETE_* (m unchanged). Sets the message. */
+cvm_status cvm__mesh_resample_boundary(cvm_mesh *m, const cvm_sizing *sizing, size_t *n_chains);
 
 /* Forget the triangulation (input kept). */
 void cvm__mesh_drop_output(cvm_mesh *m);

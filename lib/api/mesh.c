@@ -59,6 +59,7 @@ void cvm__mesh_drop_output(cvm_mesh *m)
     cvm__free(&m->ctx, m->input_map);
     m->input_map = NULL;
     m->n_dup = 0;
+    m->nv_triangulated = 0;
     memset(m->refine_report, 0, sizeof m->refine_report);
     cvm__free(&m->ctx, m->refine_unmet);
     m->refine_unmet = NULL;

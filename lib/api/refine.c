@@ -162,30 +162,19 @@ static cvm_status refine_run(cvm_mesh *m, const cvm_sizing *sizing, cvm_algorith
     cvm__refine_report rep;
     int32_t *ends = NULL;
     unsigned char *front = NULL;
-    size_t k, nv0 = m->tri.nv;
+    size_t k, nv0, n_chains = 0;
     cvm_status s, s2;
     memset(&p, 0, sizeof p);
     cvm__free(&m->ctx, m->tlayer);
     m->tlayer = NULL;
     m->n_tlayer = 0;
-    if (m->in.nseg) {
-        ends = cvm__malloc(&m->ctx, 2 * m->in.nseg * sizeof *ends);
-        if (!ends)
-            return cvm__nomem(&m->ctx);
-        for (k = 0; k < 2 * m->in.nseg; k++)
-            ends[k] = m->input_map[m->in.seg[k]];
-    }
-    if (algo == CVM_ALGO_AFLR && refine_front_flags(m, &front)) {
-        cvm__free(&m->ctx, ends);
-        return cvm__nomem(&m->ctx);
-    }
-    p.seg_front = front;
     p.algo = (int)algo;
     p.min_angle_deg = cvm__opt(m, CVM_OPT_MIN_ANGLE_DEG);
     p.max_area = cvm__opt(m, CVM_OPT_MAX_AREA);
     p.max_steiner = (uint64_t)cvm__opt(m, CVM_OPT_MAX_STEINER);
     p.lens = cvm__opt(m, CVM_OPT_ENCROACH_LENS) != 0;
     p.march = cvm__opt(m, CVM_OPT_MARCH_SEGMENTS) != 0;
+    p.march_grade = CVM__MARCH_GRADE;
     if (algo == CVM_ALGO_FRONTAL || algo == CVM_ALGO_AFLR) {
         p.swap = cvm__opt(m, CVM_OPT_SWAP) != 0;
         p.smooth_sweeps = (int)cvm__opt(m, CVM_OPT_SMOOTH_SWEEPS);
@@ -194,22 +183,42 @@ static cvm_status refine_run(cvm_mesh *m, const cvm_sizing *sizing, cvm_algorith
     }
     p.restore_delaunay = cvm__opt(m, CVM_OPT_RESTORE_DELAUNAY) != 0;
     p.sizing = sizing;
-    p.seg_ends = ends;
     p.nseg = m->in.nseg;
     cvm__run_begin(&m->ctx, cvm__opt(m, CVM_OPT_TIME_LIMIT_S));
     memset(&field, 0, sizeof field);
     if (sizing && sizing->has_auto) {
         /* the automatic length scale needs the domain: built here, evaluated
            through a private copy of the handle (the caller's stays untouched) */
-        if ((s = refine_auto_field(m, sizing, &field)) != CVM_OK) {
-            cvm__free(&m->ctx, ends);
-            cvm__free(&m->ctx, front);
+        if ((s = refine_auto_field(m, sizing, &field)) != CVM_OK)
             return s;
-        }
         local = *sizing;
         local.autof = &field;
         p.sizing = &local;
     }
+    /* CVM_OPT_KEEP_SEGMENT_VERTICES = 0: smooth chains re-discretised, the
+       triangulation rebuilt (unchanged when no chain qualifies) */
+    if (cvm__opt(m, CVM_OPT_KEEP_SEGMENT_VERTICES) == 0 && p.sizing &&
+        !cvm__sizing_is_empty(p.sizing) &&
+        (s = cvm__mesh_resample_boundary(m, p.sizing, &n_chains)) != CVM_OK) {
+        cvm__auto_field_free(&field, &m->ctx);
+        return s;
+    }
+    nv0 = m->tri.nv;
+    if (m->in.nseg) {
+        ends = cvm__malloc(&m->ctx, 2 * m->in.nseg * sizeof *ends);
+        if (!ends) {
+            cvm__auto_field_free(&field, &m->ctx);
+            return cvm__nomem(&m->ctx);
+        }
+        for (k = 0; k < 2 * m->in.nseg; k++)
+            ends[k] = m->input_map[m->in.seg[k]];
+    }
+    if (algo == CVM_ALGO_AFLR && refine_front_flags(m, &front)) {
+        cvm__auto_field_free(&field, &m->ctx);
+        cvm__free(&m->ctx, ends);
+        return cvm__nomem(&m->ctx);
+    }
+    (void)n_chains; /* how many chains were re-discretised: not reported yet */
     if ((s = refine_regions_begin(m, &region_area)) != CVM_OK) {
         cvm__auto_field_free(&field, &m->ctx);
         cvm__free(&m->ctx, ends);
@@ -217,6 +226,8 @@ static cvm_status refine_run(cvm_mesh *m, const cvm_sizing *sizing, cvm_algorith
         return s;
     }
     p.region_area = region_area;
+    p.seg_ends = ends;
+    p.seg_front = front;
     p.nregion = m->in.nregions;
     s = cvm__refine(&m->tri, &p, &rep);
     refine_regions_end(m, region_area);

@@ -119,7 +119,7 @@ int32_t cvm__mesh_seed_triangle(cvm_mesh *m, const double *p)
     return t;
 }
 
-static cvm_status carve(cvm_mesh *m)
+cvm_status cvm__mesh_carve(cvm_mesh *m)
 {
     cvm__tri2 *T = &m->tri;
     size_t k;
@@ -266,7 +266,7 @@ static cvm_status triangulate(cvm_mesh *m)
             return s;
     }
     if (m->in.nseg || m->in.nholes || m->in.nregions) {
-        if ((s = carve(m)))
+        if ((s = cvm__mesh_carve(m)))
             return s;
     }
     boundary_vertex_markers(m);
@@ -289,6 +289,7 @@ cvm_status cvm_mesh_triangulate(cvm_mesh *m)
         return s;
     }
     m->triangulated = 1;
+    m->nv_triangulated = m->tri.nv;
     return CVM_OK;
 }
 
@@ -461,6 +462,9 @@ static cvm_status check_segment_chains(cvm_mesh *m)
         int32_t ck = canon[k];
         size_t n = 0, head = 0, q;
         int found = a == b;
+        if (a < 0 || b < 0)
+            continue; /* an end removed by CVM_OPT_KEEP_SEGMENT_VERTICES = 0: the chain was
+                         re-discretised, its pieces are checked as constrained edges */
         if (cvm__grow(T->ctx, (void **)&T->stack, &T->cap_stack, 1, sizeof(int32_t))) {
             s = cvm__nomem(&m->ctx);
             break;

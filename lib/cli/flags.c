@@ -28,6 +28,9 @@ static const cli_option_flag k_flags[] = {
     {"--lens", NULL, CVM_OPT_ENCROACH_LENS, 1, REF | OPT, "diametral lenses instead of circles"},
     {"--no-march", NULL, CVM_OPT_MARCH_SEGMENTS, 0, REF | OPT,
      "split segments only when encroached (no marching with the size)"},
+    {"--resample-boundary", NULL, CVM_OPT_KEEP_SEGMENT_VERTICES, 0, REF | OPT,
+     "re-discretise chains of segments forming smooth curves with the size (inner input "
+     "vertices move onto new points on the input polyline; corners above 30 degrees stay)"},
     {"--swap", NULL, CVM_OPT_SWAP, 1, REF,
      "frontal: swap edges towards vertex degree 6 after refining (the default)"},
     {"--no-swap", NULL, CVM_OPT_SWAP, 0, REF, "frontal: no degree swapping"},

@@ -180,6 +180,9 @@ typedef struct cvm__refine_params {
     uint64_t max_steiner;      /* 0 = none */
     int lens;                  /* 1: diametral lens instead of circle */
     int march;                 /* 1: march segments with the sizing first */
+    double march_grade;        /* > 0: the march grades pieces away from short pieces at
+                                  subsegment ends at this rate (CVM__MARCH_GRADE);
+                                  0: each subsegment is marched on its own */
     const cvm_sizing *sizing;  /* may be NULL */
     const int32_t *seg_ends;   /* 2 per segment id: the vertices ending the input segment */
     size_t nseg;               /* segment ids 0..nseg-1 */
@@ -302,6 +305,13 @@ cvm_status cvm__rf_split_segment(cvm__refiner *R, int32_t a, int32_t b, int32_t 
                                  int *done_out);
 /* March every subsegment with the sizing (CVM_OPT_MARCH_SEGMENTS). */
 cvm_status cvm__rf_march_segments(cvm__refiner *R);
+/* The grading rate g of the march (h_b = min(h, l(e) + g d(x, e)), see
+ * split_segment.c); consecutive pieces then differ by about exp(g). Chosen by
+ * measurement (bench_refine, the NACA trailing edge); a build may override it
+ * to compare. */
+#ifndef CVM__MARCH_GRADE
+#define CVM__MARCH_GRADE 0.3
+#endif
 
 /* ---- Delaunay refinement (delaunay_refine.c) ---- */
 

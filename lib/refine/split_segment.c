@@ -1,5 +1,6 @@
 /* split_segment.c - splitting subsegments: the encroached-segment queue, concentric shells near small angles, and marching with the sizing. */
 #include <math.h>
+#include <string.h>
 
 #include "refine_internal.h"
 #include "geom/geom_internal.h"
@@ -120,7 +121,13 @@ static cvm_status ss_insert_on(cvm__refiner *R, int32_t t, int j, int32_t seg, c
         return s == CVM_E_NOMEM ? cvm__nomem(R->ctx)
                                 : cvm__error(R->ctx, s, CVM_ENT_NONE, -1, "too many vertices");
     if ((s = cvm__tri2_split_edge(T, v, t, j))) {
-        T->nv--;
+        if (T->vtri[v] < 0) {
+            T->nv--; /* not inserted: nothing changed */
+            return s == CVM_E_NOMEM ? cvm__nomem(R->ctx) : s;
+        }
+        /* inserted, only the Delaunay flips around it ran out of memory: the
+           triangulation is valid and holds v, so v must be recorded */
+        (void)cvm__rf_new_vertex(R, v, seg);
         return s == CVM_E_NOMEM ? cvm__nomem(R->ctx) : s;
     }
     *v_out = v;
@@ -157,27 +164,56 @@ cvm_status cvm__rf_split_segment(cvm__refiner *R, int32_t a, int32_t b, int32_t 
 
 /* ---- marching ---- */
 
-/* Size at the point a + (d/len)(b - a). */
-static cvm_status ss_size_along(cvm__refiner *R, const double *pa, double dx, double dy,
-                                double frac, double *h)
+/* A subsegment a-b being marched: a's coordinates, b - a, its length, and the
+ * limits la, lb on the pieces at a and b set by the pieces of the neighbouring
+ * subsegments there (HUGE_VAL: none), graded at rate g. */
+typedef struct ss_line {
+    double pa[2], dx, dy, len, la, lb, g;
+} ss_line;
+
+static void ss_line_init(ss_line *L, const cvm__refiner *R, int32_t a, int32_t b, double la,
+                         double lb)
 {
-    return cvm__sizing_at(R->p->sizing, pa[0] + dx * frac, pa[1] + dy * frac, h, R->ctx);
+    const double *p = ss_pt(R, a), *q = ss_pt(R, b);
+    L->pa[0] = p[0];
+    L->pa[1] = p[1];
+    L->dx = q[0] - p[0];
+    L->dy = q[1] - p[1];
+    L->len = hypot(L->dx, L->dy);
+    L->la = la;
+    L->lb = lb;
+    L->g = R->p->march_grade;
 }
 
-/* Tabulate I(s) = integral from 0 to s of du / h(u) along a-b (midpoint rule,
- * steps of h/8) into pairs (s, I) of *tab; *n_out pairs. */
-static cvm_status ss_integrate(cvm__refiner *R, const double *pa, double dx, double dy, double len,
-                               double **tab, size_t *cap, size_t *n_out)
+/* The size at distance d from a along the line: the sizing, capped by
+ * la + g d and lb + g (len - d) when grading (so pieces grow geometrically
+ * away from a short neighbour instead of jumping). */
+static cvm_status ss_size_along(cvm__refiner *R, const ss_line *L, double d, double *h)
+{
+    double f = d / L->len;
+    cvm_status s = cvm__sizing_at(R->p->sizing, L->pa[0] + L->dx * f, L->pa[1] + L->dy * f, h, R->ctx);
+    if (!s && L->g > 0) {
+        double ha = L->la + L->g * d, hb = L->lb + L->g * (L->len - d);
+        *h = ha < *h ? ha : *h;
+        *h = hb < *h ? hb : *h;
+    }
+    return s;
+}
+
+/* Tabulate I(s) = integral from 0 to s of du / h(u) along the line (midpoint
+ * rule, steps of h/8) into pairs (s, I) of *tab; *n_out pairs. */
+static cvm_status ss_integrate(cvm__refiner *R, const ss_line *L, double **tab, size_t *cap,
+                               size_t *n_out)
 {
     double sofar = 0, total = 0;
     size_t n = 0;
     cvm_status s;
-    while (sofar < len && total <= 1e7) {
+    while (sofar < L->len && total <= 1e7) {
         double h, ds;
-        if ((s = ss_size_along(R, pa, dx, dy, sofar / len, &h)))
+        if ((s = ss_size_along(R, L, sofar, &h)))
             return s;
-        ds = h / 8 < len - sofar ? h / 8 : len - sofar;
-        if ((s = ss_size_along(R, pa, dx, dy, (sofar + ds / 2) / len, &h)))
+        ds = h / 8 < L->len - sofar ? h / 8 : L->len - sofar;
+        if ((s = ss_size_along(R, L, sofar + ds / 2, &h)))
             return s;
         total += ds / h;
         sofar += ds;
@@ -191,41 +227,64 @@ static cvm_status ss_integrate(cvm__refiner *R, const double *pa, double dx, dou
     return CVM_OK;
 }
 
-/* March subsegment a-b: n = round(I(len)) pieces, vertex k where I reaches
- * k I(len) / n, so the pieces follow the sizing with no 2:1 jumps. */
-static cvm_status ss_march_one(cvm__refiner *R, int32_t a, int32_t b, double **tab, size_t *cap)
+/* Distance along the line at which the tabulated integral (ns pairs) reaches
+ * target; *i: the table position to search from (targets ascend). */
+static double ss_reach(const double *tab, size_t ns, double target, size_t *i)
 {
-    double pa[2], pb[2], dx, dy, len, total; /* copies: inserting may move T->xy */
+    double s0, i0, f;
+    while (*i + 1 < ns && tab[2 * *i + 1] < target)
+        (*i)++;
+    s0 = *i ? tab[2 * *i - 2] : 0.0;
+    i0 = *i ? tab[2 * *i - 1] : 0.0;
+    f = tab[2 * *i + 1] > i0 ? (target - i0) / (tab[2 * *i + 1] - i0) : 0.0;
+    return s0 + f * (tab[2 * *i] - s0);
+}
+
+/* Plan the march of the line: n = round(I(len)) pieces (*n_out; < 2: the
+ * subsegment stays whole), vertex k where I reaches k I(len) / n, so the pieces
+ * follow the (graded) sizing with no 2:1 jumps. *first, *last: the lengths
+ * of the pieces at a and at b. The table stays in *tab (*ns pairs). */
+static cvm_status ss_plan(cvm__refiner *R, const ss_line *L, double **tab, size_t *cap, size_t *ns,
+                          long *n_out, double *first, double *last)
+{
+    double total;
+    size_t i = 0;
+    cvm_status s;
+    *n_out = 1;
+    *first = *last = L->len;
+    if ((s = ss_integrate(R, L, tab, cap, ns)) || *ns == 0)
+        return s;
+    total = (*tab)[2 * *ns - 1];
+    if (total > 1e7 || (long)floor(total + 0.5) < 2)
+        return CVM_OK;
+    *n_out = (long)floor(total + 0.5);
+    *first = ss_reach(*tab, *ns, total / (double)*n_out, &i);
+    *last = L->len - ss_reach(*tab, *ns, total * (double)(*n_out - 1) / (double)*n_out, &i);
+    return CVM_OK;
+}
+
+/* March subsegment a-b as planned with the limits la, lb. */
+static cvm_status ss_march_one(cvm__refiner *R, int32_t a, int32_t b, double la, double lb,
+                               double **tab, size_t *cap)
+{
+    ss_line L; /* a copy: inserting may move T->xy */
+    double pb[2], first, last;
     size_t ns = 0, i = 0;
     long n, k;
     int32_t prev = a;
     cvm_status s;
-    pa[0] = ss_pt(R, a)[0];
-    pa[1] = ss_pt(R, a)[1];
+    ss_line_init(&L, R, a, b, la, lb);
     pb[0] = ss_pt(R, b)[0];
     pb[1] = ss_pt(R, b)[1];
-    dx = pb[0] - pa[0];
-    dy = pb[1] - pa[1];
-    len = hypot(dx, dy);
-    if ((s = ss_integrate(R, pa, dx, dy, len, tab, cap, &ns)) || ns == 0)
+    if ((s = ss_plan(R, &L, tab, cap, &ns, &n, &first, &last)) || n < 2)
         return s;
-    total = (*tab)[2 * ns - 1];
-    n = (long)floor(total + 0.5);
-    if (n < 2 || total > 1e7)
-        return CVM_OK;
     for (k = 1; k < n; k++) {
-        double target = total * (double)k / (double)n, s0, i0, f;
+        double f = ss_reach(*tab, ns, (*tab)[2 * ns - 1] * (double)k / (double)n, &i) / L.len;
         int32_t t, v;
         int j;
-        while (i + 1 < ns && (*tab)[2 * i + 1] < target)
-            i++;
-        s0 = i ? (*tab)[2 * i - 2] : 0.0;
-        i0 = i ? (*tab)[2 * i - 1] : 0.0;
-        f = (*tab)[2 * i + 1] > i0 ? (target - i0) / ((*tab)[2 * i + 1] - i0) : 0.0;
-        f = (s0 + f * ((*tab)[2 * i] - s0)) / len;
         if (!ss_domain_side(R, prev, b, &t, &j) || R->T->te[3 * (size_t)t + (size_t)j] < 0)
             return CVM_OK;
-        if ((s = ss_insert_on(R, t, j, R->T->te[3 * (size_t)t + (size_t)j], pa, pb, f, &v)))
+        if ((s = ss_insert_on(R, t, j, R->T->te[3 * (size_t)t + (size_t)j], L.pa, pb, f, &v)))
             return s;
         if (v >= 0)
             prev = v;
@@ -233,14 +292,126 @@ static cvm_status ss_march_one(cvm__refiner *R, int32_t a, int32_t b, double **t
     return CVM_OK;
 }
 
+/* The subsegments to march and their grading state. */
+typedef struct ss_subs {
+    int32_t *ab;    /* 2 per subsegment: its ends */
+    double *lim;    /* 2 per subsegment: the limits at its ends (HUGE_VAL: none) */
+    double *piece;  /* 2 per subsegment: its planned pieces at its ends */
+    size_t n;
+    size_t *first;  /* per vertex + 1: start of its incidences in inc */
+    int32_t *inc;   /* 2 per subsegment: 2 i + e for end e of subsegment i */
+    int32_t *queue; /* FIFO of subsegments to plan again */
+    unsigned char *queued;
+} ss_subs;
+
+static void ss_subs_free(cvm__ctx *ctx, ss_subs *S)
+{
+    cvm__free(ctx, S->ab);
+    cvm__free(ctx, S->lim);
+    cvm__free(ctx, S->piece);
+    cvm__free(ctx, S->first);
+    cvm__free(ctx, S->inc);
+    cvm__free(ctx, S->queue);
+    cvm__free(ctx, S->queued);
+}
+
+/* The limit at end e of subsegment i: the shortest planned piece of the other
+ * subsegments at that vertex. */
+static double ss_limit(const ss_subs *S, size_t i, int e)
+{
+    int32_t v = S->ab[2 * i + (size_t)e];
+    double l = HUGE_VAL;
+    size_t k;
+    for (k = S->first[v]; k < S->first[v + 1]; k++) {
+        size_t o = (size_t)S->inc[k];
+        if (o / 2 != i && S->piece[o] < l)
+            l = S->piece[o];
+    }
+    return l;
+}
+
+/* Grade the plans across subsegment ends: every subsegment's limits are the
+ * shortest pieces of its neighbours at its ends (l(e) in h_b = min(h, l(e) +
+ * g d(x, e))); a subsegment is planned again (FIFO, in collection order, so
+ * the result is deterministic) when a neighbouring end piece changes, until
+ * nothing changes or after 50 plans per subsegment. */
+static cvm_status ss_grade(cvm__refiner *R, ss_subs *S, double **tab, size_t *cap)
+{
+    const cvm__tri2 *T = R->T;
+    size_t i, k, nv = T->nv, head = 0, count, budget;
+    cvm_status s;
+    int e;
+    S->lim = cvm__malloc(R->ctx, (2 * S->n + 1) * sizeof *S->lim);
+    S->piece = cvm__malloc(R->ctx, (2 * S->n + 1) * sizeof *S->piece);
+    S->first = cvm__malloc(R->ctx, (nv + 2) * sizeof *S->first);
+    S->inc = cvm__malloc(R->ctx, (2 * S->n + 1) * sizeof *S->inc);
+    S->queue = cvm__malloc(R->ctx, (S->n + 1) * sizeof *S->queue);
+    S->queued = cvm__malloc(R->ctx, S->n + 1);
+    if (!S->lim || !S->piece || !S->first || !S->inc || !S->queue || !S->queued)
+        return cvm__nomem(R->ctx);
+    for (k = 0; k < nv + 2; k++)
+        S->first[k] = 0;
+    for (k = 0; k < 2 * S->n; k++)
+        S->first[S->ab[k] + 2]++;
+    for (k = 2; k < nv + 2; k++)
+        S->first[k] += S->first[k - 1];
+    for (k = 0; k < 2 * S->n; k++)
+        S->inc[S->first[S->ab[k] + 1]++] = (int32_t)k;
+    /* first plans: ungraded */
+    for (i = 0; i < S->n; i++) {
+        ss_line L;
+        size_t ns;
+        long n;
+        S->lim[2 * i] = S->lim[2 * i + 1] = HUGE_VAL;
+        ss_line_init(&L, R, S->ab[2 * i], S->ab[2 * i + 1], HUGE_VAL, HUGE_VAL);
+        if ((s = ss_plan(R, &L, tab, cap, &ns, &n, &S->piece[2 * i], &S->piece[2 * i + 1])))
+            return s;
+        S->queue[i] = (int32_t)i;
+        S->queued[i] = 1;
+    }
+    count = S->n;
+    budget = 50 * S->n;
+    while (count > 0 && budget-- > 0) {
+        ss_line L;
+        size_t ns;
+        long n;
+        double p[2];
+        i = (size_t)S->queue[head];
+        head = head + 1 == S->n ? 0 : head + 1;
+        count--;
+        S->queued[i] = 0;
+        S->lim[2 * i] = ss_limit(S, i, 0);
+        S->lim[2 * i + 1] = ss_limit(S, i, 1);
+        ss_line_init(&L, R, S->ab[2 * i], S->ab[2 * i + 1], S->lim[2 * i], S->lim[2 * i + 1]);
+        if ((s = ss_plan(R, &L, tab, cap, &ns, &n, &p[0], &p[1])))
+            return s;
+        for (e = 0; e < 2; e++) {
+            int32_t v = S->ab[2 * i + (size_t)e];
+            if (fabs(p[e] - S->piece[2 * i + (size_t)e]) <= 1e-9 * p[e])
+                continue;
+            S->piece[2 * i + (size_t)e] = p[e];
+            for (k = S->first[v]; k < S->first[v + 1]; k++) {
+                size_t o = (size_t)S->inc[k] / 2;
+                if (o == i || S->queued[o])
+                    continue;
+                S->queue[(head + count) % S->n] = (int32_t)o;
+                S->queued[o] = 1;
+                count++;
+            }
+        }
+    }
+    return CVM_OK;
+}
+
 cvm_status cvm__rf_march_segments(cvm__refiner *R)
 {
     const cvm__tri2 *T = R->T;
-    int32_t *list = NULL;
+    ss_subs S;
     double *tab = NULL;
-    size_t n = 0, cap = 0, cap_tab = 0, t, i;
+    size_t cap = 0, cap_tab = 0, t, i;
     cvm_status s = CVM_OK;
     int j;
+    memset(&S, 0, sizeof S);
     /* collect first: marching changes the triangles */
     for (t = 0; t < T->nt && !s; t++) {
         if (!cvm__tri2_in_domain(T, (int32_t)t))
@@ -250,17 +421,21 @@ cvm_status cvm__rf_march_segments(cvm__refiner *R)
             int32_t a = T->tv[3 * t + (size_t)(j + 1) % 3], b = T->tv[3 * t + (size_t)(j + 2) % 3];
             if (T->te[h] < 0 || (cvm__tri2_in_domain(T, T->tn[h] / 3) && a > b))
                 continue;
-            if (cvm__grow(R->ctx, (void **)&list, &cap, n + 2, sizeof *list)) {
+            if (cvm__grow(R->ctx, (void **)&S.ab, &cap, 2 * S.n + 2, sizeof *S.ab)) {
                 s = cvm__nomem(R->ctx);
                 break;
             }
-            list[n++] = a;
-            list[n++] = b;
+            S.ab[2 * S.n] = a;
+            S.ab[2 * S.n + 1] = b;
+            S.n++;
         }
     }
-    for (i = 0; i + 1 < n && !s; i += 2)
-        s = ss_march_one(R, list[i], list[i + 1], &tab, &cap_tab);
-    cvm__free(R->ctx, list);
+    if (!s && S.n && R->p->march_grade > 0)
+        s = ss_grade(R, &S, &tab, &cap_tab);
+    for (i = 0; i < S.n && !s; i++)
+        s = ss_march_one(R, S.ab[2 * i], S.ab[2 * i + 1], S.lim ? S.lim[2 * i] : HUGE_VAL,
+                         S.lim ? S.lim[2 * i + 1] : HUGE_VAL, &tab, &cap_tab);
+    ss_subs_free(R->ctx, &S);
     cvm__free(R->ctx, tab);
     return s;
 }

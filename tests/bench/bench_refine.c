@@ -65,6 +65,12 @@ int main(int argc, char **argv)
             fprintf(stderr, "%s\n", cvm_mesh_errmsg(m));
             return 1;
         }
+        /* CVM_BENCH_RESAMPLE=1: CVM_OPT_KEEP_SEGMENT_VERTICES = 0 (smooth chains re-discretised) */
+        if (getenv("CVM_BENCH_RESAMPLE") && atoi(getenv("CVM_BENCH_RESAMPLE")) &&
+            cvm_mesh_set_option(m, CVM_OPT_KEEP_SEGMENT_VERTICES, 0)) {
+            fprintf(stderr, "%s\n", cvm_mesh_errmsg(m));
+            return 1;
+        }
         t0 = now();
         if (cvm_mesh_triangulate(m) || (st = cvm_mesh_refine(m, s, (cvm_algorithm)algo)) != CVM_OK) {
             fprintf(stderr, "%s\n", cvm_mesh_errmsg(m));

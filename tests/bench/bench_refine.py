@@ -18,7 +18,9 @@ about 0.82 h). The "annulus-g" case uses the graded size h(r) = 0.4 + (r - 1)/2.
 of the thesis: cvmesh through a sizing callback, Gmsh through its size callback,
 Triangle through repeated refinement (-r) with per-triangle area bounds from the
 size at each centroid until none is exceeded (all passes timed); edge/h is then
-the mean of edge length / h(midpoint).
+the mean of edge length / h(midpoint). Its "-rs" rows run cvmesh with
+CVM_OPT_KEEP_SEGMENT_VERTICES = 0: the input circles (spacing 0.1 and 0.2) are
+re-discretised with the size before refining.
 A last row times Delaunay refinement of the square to about 1e6 triangles
 against Triangle at a matched triangle count (the speed target of issue 4).
 
@@ -96,11 +98,14 @@ def quality(xy, tri, h):
                 edge=float(lens.mean()))
 
 
-def run_cvmesh(poly, h, algo, tmp, smooth_method=None):
+def run_cvmesh(poly, h, algo, tmp, smooth_method=None, resample=False):
     env = dict(os.environ)
     env.pop("CVM_BENCH_SMOOTH_METHOD", None)
+    env.pop("CVM_BENCH_RESAMPLE", None)
     if smooth_method is not None:
         env["CVM_BENCH_SMOOTH_METHOD"] = str(smooth_method)
+    if resample:
+        env["CVM_BENCH_RESAMPLE"] = "1"
     out = subprocess.run([DRIVER, poly, str(h), str(algo), str(REPS), os.path.join(tmp, "m")],
                          capture_output=True, text=True, env=env)
     if out.returncode:
@@ -269,6 +274,11 @@ def main():
                 print("# Triangle (pip triangle) not installed: skipped")
             for algo, label in ((1, "cvm-del"), (2, "cvm-front"), (3, "cvm-aflr")):
                 rows.append((label,) + run_cvmesh(poly, h, algo, tmp))
+            if h < 0:
+                # the thesis case: input polylines at 0.1/0.2 spacing against sizes
+                # 0.4-1.6; -rs rows re-discretise them (CVM_OPT_KEEP_SEGMENT_VERTICES = 0)
+                for algo, label in ((1, "cvm-del-rs"), (2, "cvm-front-rs"), (3, "cvm-aflr-rs")):
+                    rows.append((label,) + run_cvmesh(poly, h, algo, tmp, resample=True))
             if rows[0][0] == "triangle" and h > 0:
                 # Triangle again at cvm-front's vertex count (vertices ~ 1 / area bound)
                 nv_tri = len(np.unique(np.asarray(rows[0][3]).ravel()))

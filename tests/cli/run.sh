@@ -325,5 +325,19 @@ expect_exit 2 "--fronts not a list" "$CLI" refine "$SHARED/data/square.poly" --a
 expect_grep "--fronts not a list" "$TMP/err" "--fronts 1,x"
 expect_exit 2 "--fronts without a value" "$CLI" refine "$SHARED/data/square.poly" --algo aflr --fronts
 
+# ---- refine --resample-boundary (CVM_OPT_KEEP_SEGMENT_VERTICES = 0) ------------
+OUT=$TMP/resample
+mkdir "$OUT"
+expect_exit 0 "refine --help lists --resample-boundary" "$CLI" refine --help
+expect_grep "refine --help lists --resample-boundary" "$TMP/out" "--resample-boundary"
+expect_exit 0 "refine --resample-boundary" "$CLI" refine "$SHARED/data/annulus.poly" --algo frontal \
+    --size 0.3 --resample-boundary --quality -o "$OUT/annulus.vtu"
+expect_grep "--resample-boundary meets the angle" "$TMP/out" "triangles below the angle: 0"
+# 192 input segments (spacing 0.1 and 0.2) become 21 + 84 pieces of about 0.3
+expect_grep "--resample-boundary re-discretises the circles" "$TMP/out" "segments                     105"
+expect_exit 0 "--resample-boundary without a size changes nothing" "$CLI" refine \
+    "$SHARED/data/annulus.poly" --resample-boundary --quality -o "$OUT/plain.vtu"
+expect_grep "--resample-boundary without a size" "$TMP/out" "segments                     192"
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

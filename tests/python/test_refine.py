@@ -187,3 +187,31 @@ def test_aflr_layers(square_pslg):
     assert layers.min() >= 0 and layers.min() < 1.05
     mesh.refine(algorithm="delaunay", size=0.05)
     assert (mesh.layer_index == -1).all()
+
+
+def test_resample_boundary_through_the_option_setter():
+    """CVM_OPT_KEEP_SEGMENT_VERTICES = 0 through the generic setter: the circles of an
+    annulus (spacing 0.1) are re-discretised at the size 0.3, inner input points get -1
+    in the input map, the new boundary points lie on the input polygon."""
+    n_in, n_out = 64, 128
+    t_in = 2 * np.pi * np.arange(n_in) / n_in
+    t_out = 2 * np.pi * np.arange(n_out) / n_out
+    pts = np.concatenate([np.c_[np.cos(t_in), np.sin(t_in)], 4 * np.c_[np.cos(t_out), np.sin(t_out)]])
+    segs = np.concatenate([np.c_[np.arange(n_in), (np.arange(n_in) + 1) % n_in],
+                           n_in + np.c_[np.arange(n_out), (np.arange(n_out) + 1) % n_out]])
+    kept, resampled = [], []
+    for keep in (1, 0):
+        mesh = Mesh.from_pslg(pts, segs, holes=[[0.0, 0.0]])
+        mesh.set_option(cvmesh.Option.KEEP_SEGMENT_VERTICES, keep)
+        assert mesh.refine(algorithm="frontal", size=0.3) == Status.OK
+        mesh.check()
+        (kept if keep else resampled).append(mesh)
+    a, b = kept[0], resampled[0]
+    assert len(b.segments) < len(a.segments) < 300
+    assert (a.input_map >= 0).all()
+    removed = (b.input_map < 0).sum()
+    assert 150 <= removed < n_in + n_out
+    r = np.hypot(*b.points[np.unique(b.segments)].T)
+    # boundary points on (or, where refinement split a new piece, near) the input circles
+    assert (((r <= 1 + 1e-12) & (r >= 0.97)) | ((r <= 4 + 1e-12) & (r >= 3.95))).all()
+    assert b.quality().min_angle_deg >= 30 - 1e-9

@@ -538,7 +538,8 @@ class Mesh:
 
     @property
     def input_map(self):
-        """(n_input,) int32: the vertex each input point became."""
+        """(n_input,) int32: the vertex each input point became (-1: an inner vertex
+        of a chain re-discretised with the option keep_segment_vertices = 0)."""
         with self._handle() as m:
             n = capi.cvm_mesh_count(m, Entity.INPUT_POINT)
             return capi.cvm_mesh_copy_input_map(n, m)

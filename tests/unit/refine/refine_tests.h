@@ -14,6 +14,8 @@ TCase *refine_swap_smooth_tcase(void);
 TCase *refine_report_tcase(void);
 TCase *refine_random_domains_tcase(void);
 TCase *refine_regions_tcase(void);
+TCase *refine_march_tcase(void);
+TCase *refine_resample_tcase(void);
 
 /* Directory of the shared geometries: $CVM_SHARED_DIR/data, default ../shared/data. */
 void rtest_shared_path(char *buf, size_t len, const char *name);

@@ -14,5 +14,7 @@ Suite *refine_suite(void)
     suite_add_tcase(s, refine_report_tcase());
     suite_add_tcase(s, refine_random_domains_tcase());
     suite_add_tcase(s, refine_regions_tcase());
+    suite_add_tcase(s, refine_march_tcase());
+    suite_add_tcase(s, refine_resample_tcase());
     return s;
 }
