@@ -564,6 +564,9 @@ typedef enum cvm_option {
      *  and attributes follow); added vertices have marker 0 and attributes 0. Needs
      *  CVM_OPT_DUAL_TOPOLOGY >= 1 (ignored with 0). Deterministic. */
     CVM_OPT_DUAL_PREPASS = 510,
+    /** Rounds of the max-min-angle phase of cvm_mesh_optimise_dual(), integer,
+     *  default 30, bounds [0, 10000]; 0: no such phase. (Measured effect: TBD.) */
+    CVM_OPT_DUAL_MAXMIN_ROUNDS = 511,
     /** Merge tolerance, a fraction of the local ideal dual edge l / sqrt(3), default
      *  0.1, bounds [0, 1]; 0 merges nothing. l at an edge is the mean of the local
      *  sizes of its two ends, each the mean length of the vertex's edges (taken from

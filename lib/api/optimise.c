@@ -105,6 +105,7 @@ cvm_status cvm_mesh_optimise_dual(cvm_mesh *m, const cvm_sizing *sizing)
     p.n_input = input_vertices(m);
     p.topology = (int)cvm__opt(m, CVM_OPT_DUAL_TOPOLOGY);
     p.prepass = (int)cvm__opt(m, CVM_OPT_DUAL_PREPASS);
+    p.maxmin_rounds = (int)cvm__opt(m, CVM_OPT_DUAL_MAXMIN_ROUNDS);
     nv0 = m->tri.nv;
     if (p.topology) {
         vmap = cvm__malloc(&m->ctx, (nv0 + 1) * sizeof *vmap);

@@ -60,6 +60,11 @@
 #define PROGRESS_DEG 0.05 /* smallest-angle gain over PATIENCE sweeps that keeps the run going */
 #define PUSH_DEG 5.0      /* each raise of the target angle, degrees */
 #define BEST_EPS_DEG 1e-3 /* smallest angle gain that makes a state the new best, degrees */
+#define MM_BAND_DEG 5.0   /* max-min phase: visit triangles below the smallest angle + this */
+#define MM_PATIENCE 3     /* max-min phase: rounds without MM_PROGRESS_DEG gain before it ends */
+#define MM_PROGRESS_DEG 0.01
+#define MM_SLACK_F (1.0 / 3.0) /* max-min phase: containment slack kept, x the margin */
+#define MM_DUAL_F 1.1     /* max-min phase: dual/primal edge ratio kept, x the margin */
 
 typedef struct dopt {
     cvm__tri2 *T;
@@ -89,6 +94,8 @@ typedef struct dopt {
     size_t nc, nc0;  /* current and initial non-compliant counts */
     size_t nweak;
     double sin2_min, sin2_target;
+    int mm;          /* 1 during the max-min-angle phase (maxmin_phase) */
+    double mm_goal;  /* its sin^2 bound: triangles with a smaller angle are visited */
     cvm__dual_opt_report *rep;
 } dopt;
 
@@ -362,6 +369,14 @@ static void solve_job(const dopt *D, job *J, uint64_t sweep)
     L.sin2_bound = cvm__dopt_star_min_sin2(&L);
     if (L.sin2_bound > D->sin2_min)
         L.sin2_bound = D->sin2_min;
+    if (D->mm) {
+        double m0[2];
+        if (cvm__dopt_eval_maxmin(&L, u, m0) == HUGE_VAL)
+            return; /* not regular or too large a star: leave it */
+        L.slack_bound = m0[0] < MM_SLACK_F * D->p->margin ? m0[0] : MM_SLACK_F * D->p->margin;
+        L.dual_bound = m0[1] < MM_DUAL_F * D->p->margin ? m0[1] : MM_DUAL_F * D->p->margin;
+        L.maxmin = 1;
+    }
     f0 = cvm__dopt_eval(&L, u);
     if (D->p->solver == CVM__DUAL_SOLVER_CUCKOO) {
         cvm__rng r;
@@ -376,23 +391,46 @@ static void solve_job(const dopt *D, job *J, uint64_t sweep)
     J->moved = 1;
 }
 
+static void rescore_star(dopt *D, const int32_t *star, size_t nstar);
+
 /* Apply a solved job: move the vertex, re-score its star and the triangles
- * across its outer edges. Serial, in batch order. */
-static void apply_job(dopt *D, const job *J)
+ * across its outer edges; in the max-min phase, undo a move that made a
+ * triangle non-compliant (then J->moved is 0). Serial, in batch order. */
+static void apply_job(dopt *D, job *J)
 {
     cvm__tri2 *T = D->T;
     const int32_t *star = D->star + J->star0;
-    size_t k;
-    int j;
+    size_t nc0 = D->nc;
+    double old[3];
     if (!J->moved)
         return;
+    old[0] = T->xy[2 * (size_t)J->v];
+    old[1] = T->xy[2 * (size_t)J->v + 1];
+    old[2] = T->w[J->v];
     T->xy[2 * (size_t)J->v] = J->p[0];
     T->xy[2 * (size_t)J->v + 1] = J->p[1];
     T->w[J->v] = J->w;
-    for (k = 0; k < J->nstar; k++)
+    rescore_star(D, star, J->nstar);
+    if (D->mm && D->nc > nc0) {
+        /* the max-min phase keeps every triangle compliant (exact test) */
+        T->xy[2 * (size_t)J->v] = old[0];
+        T->xy[2 * (size_t)J->v + 1] = old[1];
+        T->w[J->v] = old[2];
+        rescore_star(D, star, J->nstar);
+        J->moved = 0;
+    }
+}
+
+/* Power vertices and scores of the triangles of a star and of those across its outer edges. */
+static void rescore_star(dopt *D, const int32_t *star, size_t nstar)
+{
+    cvm__tri2 *T = D->T;
+    size_t k;
+    int j;
+    for (k = 0; k < nstar; k++)
         if (cvm__tri2_in_domain(T, star[k]))
             cvm__dual_tri_vertex(T, star[k], D->V + 2 * (size_t)star[k]);
-    for (k = 0; k < J->nstar; k++) {
+    for (k = 0; k < nstar; k++) {
         int32_t t = star[k];
         if (!cvm__tri2_in_domain(T, t))
             continue;
@@ -635,6 +673,46 @@ static size_t sweep_order(dopt *D, uint64_t sweep)
     return n;
 }
 
+/* Smallest sin^2 of an angle of triangle t (plain doubles). */
+static double tri_min_sin2(const cvm__tri2 *T, int32_t t)
+{
+    const int32_t *v = T->tv + 3 * (size_t)t;
+    double l2[3], c, m = 1.0;
+    int k;
+    const double *p0 = T->xy + 2 * (size_t)v[0], *p1 = T->xy + 2 * (size_t)v[1], *p2 = T->xy + 2 * (size_t)v[2];
+    c = (p1[0] - p0[0]) * (p2[1] - p0[1]) - (p1[1] - p0[1]) * (p2[0] - p0[0]);
+    for (k = 0; k < 3; k++) {
+        const double *a = T->xy + 2 * (size_t)v[(k + 1) % 3], *b = T->xy + 2 * (size_t)v[(k + 2) % 3];
+        l2[k] = sq(b[0] - a[0]) + sq(b[1] - a[1]);
+    }
+    for (k = 0; k < 3; k++) {
+        double s = c * c / (l2[(k + 1) % 3] * l2[(k + 2) % 3]);
+        m = s < m ? s : m;
+    }
+    return m;
+}
+
+/* Order of a max-min round into D->list: the domain triangles whose smallest
+ * angle is below D->mm_goal, smallest first (ties by slot; the key is kept in
+ * D->F, which the phase does not otherwise read). Returns the length. */
+static size_t mm_order(dopt *D)
+{
+    cvm__tri2 *T = D->T;
+    size_t t, n = 0;
+    for (t = 0; t < T->nt; t++) {
+        double m;
+        if (!cvm__tri2_in_domain(T, (int32_t)t))
+            continue;
+        m = tri_min_sin2(T, (int32_t)t);
+        if (m < D->mm_goal) {
+            D->F[t] = -m;
+            D->list[n++] = (int32_t)t;
+        }
+    }
+    sort_list(D->list, D->star, n, D->F, D->st);
+    return n;
+}
+
 static void save_state(dopt *D)
 {
     cvm__tri2 *T = D->T;
@@ -715,7 +793,7 @@ static int batch_add(dopt *D, int32_t v, size_t *nb, size_t *used)
 static cvm_status sweep(dopt *D, uint64_t k, size_t *moved_out)
 {
     cvm__tri2 *T = D->T;
-    size_t n = sweep_order(D, k), i = 0, moved = 0;
+    size_t n = D->mm ? mm_order(D) : sweep_order(D, k), i = 0, moved = 0;
     cvm_status s = CVM_OK;
     memset(D->mark, 0, T->nv);
     while (i < n && !s) {
@@ -725,7 +803,7 @@ static cvm_status sweep(dopt *D, uint64_t k, size_t *moved_out)
         while (i < n && nb < BATCH && !closed) {
             int32_t t = D->list[i];
             int j;
-            if ((D->st[t] != 2 && !D->weak[t]) || !cvm__tri2_in_domain(T, t)) {
+            if ((!D->mm && D->st[t] != 2 && !D->weak[t]) || !cvm__tri2_in_domain(T, t)) {
                 i++;
                 continue;
             }
@@ -823,6 +901,56 @@ static int keep_best(dopt *D, size_t *best_nc, double *best_min)
     return 1;
 }
 
+/* The max-min-angle phase, once every triangle is compliant: rounds over the
+ * vertices of the triangles whose smallest angle is below the current
+ * smallest + MM_BAND_DEG, smallest first, each solving max over its degrees
+ * of freedom of its star's smallest angle with every star triangle kept
+ * compliant with a slack and dual edges kept long
+ * (cvm__dopt_eval_maxmin), the star regular (so no flip follows a move;
+ * restore() still runs as a safety net) and a move that made a triangle
+ * non-compliant (exact test) undone. The smallest angle never drops; the
+ * phase ends after p->maxmin_rounds rounds, a round that moves nothing, or
+ * MM_PATIENCE rounds without MM_PROGRESS_DEG gain. */
+static cvm_status maxmin_phase(dopt *D, uint64_t k0, size_t *best_nc, double *best_min)
+{
+    const cvm__dual_opt_params *p = D->p;
+    cvm_status s = CVM_OK;
+    int r, stall = 0;
+    double last = min_angle(D);
+    for (r = 0; r < p->maxmin_rounds; r++) {
+        size_t moved = 0;
+        double mn, g;
+        if ((s = sizes(D)))
+            break;
+        boundary_flags(D);
+        score_all(D);
+        if (D->nc)
+            break;
+        g = sin((min_angle(D) + MM_BAND_DEG) * 3.14159265358979323846 / 180.0);
+        D->mm_goal = g * g;
+        D->mm = 1;
+        s = sweep(D, k0 + (uint64_t)r, &moved);
+        D->mm = 0;
+        D->rep->moves += moved;
+        D->rep->maxmin_rounds++;
+        if (s || (s = restore(D)))
+            break;
+        score_all(D);
+        keep_best(D, best_nc, best_min);
+        mn = min_angle(D);
+        if (!moved)
+            break;
+        if (mn > last + MM_PROGRESS_DEG) {
+            last = mn;
+            stall = 0;
+        } else if (++stall >= MM_PATIENCE) {
+            break;
+        }
+    }
+    D->mm = 0;
+    return s;
+}
+
 static cvm_status run(dopt *D)
 {
     const cvm__dual_opt_params *p = D->p;
@@ -911,7 +1039,15 @@ static cvm_status run(dopt *D)
             }
         }
     }
-    return end_at_best(D, best_nc, best_min);
+    if ((s = end_at_best(D, best_nc, best_min)))
+        return s;
+    if (p->maxmin_rounds > 0 && !D->nc) {
+        score_all(D);
+        if (!D->nc && (s = maxmin_phase(D, k, &best_nc, &best_min)))
+            return s;
+        return end_at_best(D, best_nc, best_min);
+    }
+    return CVM_OK;
 }
 
 cvm_status cvm__dual_optimise(cvm__tri2 *T, const cvm__dual_opt_params *p, cvm__dual_opt_report *rep)
