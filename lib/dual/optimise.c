@@ -378,6 +378,23 @@ static void solve_job(const dopt *D, job *J, uint64_t sweep)
         L.maxmin = 1;
     }
     f0 = cvm__dopt_eval(&L, u);
+    if (D->mm) {
+        /* the active-set ascent of the position, then the compass search over
+         * every degree of freedom from where it ended */
+        double ua[CVM__DOPT_MAXDOF], fa;
+        cvm__dopt_maxmin_active(&L, f0, ua, &fa);
+        if (fa < f0) {
+            double w;
+            cvm__dopt_point(&L, ua, L.p0, &w);
+            L.w0 = w;
+        }
+        cvm__dopt_pattern(&L, D->p->pattern_budget, fa, u, &f);
+        if (!(f < f0))
+            return;
+        cvm__dopt_point(&L, u, J->p, &J->w);
+        J->moved = 1;
+        return;
+    }
     if (D->p->solver == CVM__DUAL_SOLVER_CUCKOO) {
         cvm__rng r;
         cvm__rng_seed(&r, stream_key(D->p->seed, sweep, (uint64_t)v));

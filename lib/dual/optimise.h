@@ -65,6 +65,13 @@ double cvm__dopt_eval(cvm__dopt_local *L, const double *u);
  * the bounds are not applied. */
 double cvm__dopt_eval_maxmin(cvm__dopt_local *L, const double *u, double *slack_out);
 
+/* The position solver of the max-min-angle phase (L->maxmin set, ndof 2 or
+ * 3): Freitag's active-set ascent on the sines of the angles of the star's
+ * domain triangles, weight unchanged, every step checked by cvm__dopt_eval
+ * (exact orientation and regularity, the bounds); from u = 0 with value f0,
+ * the best point into u and its value into *f. */
+void cvm__dopt_maxmin_active(cvm__dopt_local *L, double f0, double *u, double *f);
+
 /* Smallest sin^2 of an angle over the domain triangles of the star at u = 0. */
 double cvm__dopt_star_min_sin2(const cvm__dopt_local *L);
 
