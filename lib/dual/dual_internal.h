@@ -133,6 +133,7 @@ typedef struct cvm__dual_opt_report {
     size_t prepass_removed; /* Steiner vertices removed by the pre-pass */
     size_t prepass_added;   /* vertices inserted by the pre-pass */
     size_t maxmin_rounds;   /* rounds of the max-min-angle phase run */
+    size_t removed_maxmin;  /* vertices removed by its kept removal trials */
     double seconds;
 } cvm__dual_opt_report;
 

@@ -65,6 +65,11 @@
 #define MM_PROGRESS_DEG 0.01
 #define MM_SLACK_F (1.0 / 3.0) /* max-min phase: containment slack kept, x the margin */
 #define MM_DUAL_F 1.1     /* max-min phase: dual/primal edge ratio kept, x the margin */
+#define RM_BAND_DEG 0.5   /* removal trials: corners of triangles below the smallest angle + this */
+#define RM_TRIES 4        /* removal trials: at most this many per call */
+#define RM_CALLS 3        /* removal trials: calls per phase */
+#define RM_SWEEPS 8       /* removal trials: penalty sweeps to regain compliance */
+#define RM_ROUNDS 15      /* removal trials: max-min rounds before a trial is judged */
 
 typedef struct dopt {
     cvm__tri2 *T;
@@ -95,7 +100,9 @@ typedef struct dopt {
     size_t nweak;
     double sin2_min, sin2_target;
     int mm;          /* 1 during the max-min-angle phase (maxmin_phase) */
-    double mm_goal;  /* its sin^2 bound: triangles with a smaller angle are visited */
+    double mm_min;   /* smallest angle when its round's order was made, degrees */
+    int nc_only;     /* 1: a sweep visits the non-compliant triangles only */
+    struct snap *snap; /* removal trials: the state to go back to */
     cvm__dual_opt_report *rep;
 } dopt;
 
@@ -376,6 +383,7 @@ static void solve_job(const dopt *D, job *J, uint64_t sweep)
         L.slack_bound = m0[0] < MM_SLACK_F * D->p->margin ? m0[0] : MM_SLACK_F * D->p->margin;
         L.dual_bound = m0[1] < MM_DUAL_F * D->p->margin ? m0[1] : MM_DUAL_F * D->p->margin;
         L.maxmin = 1;
+        L.mm_m0 = cvm__dopt_star_min_sin2(&L);
     }
     f0 = cvm__dopt_eval(&L, u);
     if (D->mm) {
@@ -671,7 +679,7 @@ static size_t sweep_order(dopt *D, uint64_t sweep)
     size_t t, n = 0, nb, b;
     cvm__rng r;
     for (t = 0; t < T->nt; t++)
-        if (D->st[t] == 2 || D->weak[t])
+        if (D->st[t] == 2 || (D->weak[t] && !D->nc_only))
             D->list[n++] = (int32_t)t;
     sort_list(D->list, D->star, n, D->F, D->st);
     nb = n / 25 < 20 ? n / 25 : 20;
@@ -710,21 +718,28 @@ static double tri_min_sin2(const cvm__tri2 *T, int32_t t)
 }
 
 /* Order of a max-min round into D->list: the domain triangles whose smallest
- * angle is below D->mm_goal, smallest first (ties by slot; the key is kept in
+ * angle is below the smallest over the mesh + MM_BAND_DEG (that smallest, in
+ * degrees, into D->mm_min), smallest first (ties by slot; the key is kept in
  * D->F, which the phase does not otherwise read). Returns the length. */
 static size_t mm_order(dopt *D)
 {
     cvm__tri2 *T = D->T;
     size_t t, n = 0;
+    double m = 1.0, g;
     for (t = 0; t < T->nt; t++) {
-        double m;
         if (!cvm__tri2_in_domain(T, (int32_t)t))
             continue;
-        m = tri_min_sin2(T, (int32_t)t);
-        if (m < D->mm_goal) {
-            D->F[t] = -m;
-            D->list[n++] = (int32_t)t;
-        }
+        D->F[t] = tri_min_sin2(T, (int32_t)t);
+        m = D->F[t] < m ? D->F[t] : m;
+    }
+    D->mm_min = asin(sqrt(m)) * (180.0 / 3.14159265358979323846);
+    g = D->mm_min + MM_BAND_DEG < 90.0 ? sin((D->mm_min + MM_BAND_DEG) * 3.14159265358979323846 / 180.0) : 1.0;
+    g *= g;
+    for (t = 0; t < T->nt; t++) {
+        if (!cvm__tri2_in_domain(T, (int32_t)t) || !(D->F[t] < g))
+            continue;
+        D->F[t] = -D->F[t];
+        D->list[n++] = (int32_t)t;
     }
     sort_list(D->list, D->star, n, D->F, D->st);
     return n;
@@ -863,7 +878,7 @@ static double min_angle(const dopt *D);
 static cvm_status end_at_best(dopt *D, size_t best_nc, double best_min)
 {
     size_t v;
-    if (D->best_nv != D->T->nv || D->best_removed != D->rep->removed_vanished + D->rep->removed_degree)
+    if (D->best_nv != D->T->nv || D->best_removed != D->rep->removed_vanished + D->rep->removed_degree + D->rep->removed_maxmin)
         return CVM_OK;
     if (!(best_nc < D->nc || (best_nc == D->nc && best_min > min_angle(D) + BEST_EPS_DEG)))
         return CVM_OK;
@@ -914,7 +929,7 @@ static int keep_best(dopt *D, size_t *best_nc, double *best_min)
         D->best[3 * v + 2] = D->T->w[v];
     }
     D->best_nv = D->T->nv;
-    D->best_removed = D->rep->removed_vanished + D->rep->removed_degree;
+    D->best_removed = D->rep->removed_vanished + D->rep->removed_degree + D->rep->removed_maxmin;
     return 1;
 }
 
@@ -928,43 +943,288 @@ static int keep_best(dopt *D, size_t *best_nc, double *best_min)
  * non-compliant (exact test) undone. The smallest angle never drops; the
  * phase ends after p->maxmin_rounds rounds, a round that moves nothing, or
  * MM_PATIENCE rounds without MM_PROGRESS_DEG gain. */
-static cvm_status maxmin_phase(dopt *D, uint64_t k0, size_t *best_nc, double *best_min)
+/* The whole triangulation (and the caller's vertex map) before a removal
+ * trial: vertices are only removed and triangles only killed or flipped
+ * during a trial, so the arrays keep their capacity and copying back
+ * restores it exactly. */
+typedef struct snap {
+    double *xy, *w, *ta;
+    int32_t *vtri, *tv, *tn, *te, *vmap;
+    uint8_t *tf;
+    size_t nv, nt, n_dead, cap_nv, cap_nt;
+    int32_t free_head, last;
+    cvm__dual_opt_report rep;
+} snap;
+
+static void snap_free(cvm__ctx *ctx, snap *S)
 {
-    const cvm__dual_opt_params *p = D->p;
+    if (!S)
+        return;
+    cvm__free(ctx, S->xy);
+    cvm__free(ctx, S->w);
+    cvm__free(ctx, S->ta);
+    cvm__free(ctx, S->vtri);
+    cvm__free(ctx, S->tv);
+    cvm__free(ctx, S->tn);
+    cvm__free(ctx, S->te);
+    cvm__free(ctx, S->vmap);
+    cvm__free(ctx, S->tf);
+    cvm__free(ctx, S);
+}
+
+static cvm_status snap_take(dopt *D)
+{
+    cvm__tri2 *T = D->T;
+    cvm__ctx *ctx = T->ctx;
+    snap *S = D->snap;
+    size_t nv = T->nv, nt = T->nt;
+    if (S && (S->cap_nv < nv || S->cap_nt < nt)) {
+        snap_free(ctx, S);
+        D->snap = S = NULL;
+    }
+    if (!S) {
+        S = cvm__calloc(ctx, 1, sizeof *S);
+        if (!S)
+            return CVM_E_NOMEM;
+        D->snap = S; /* S->nv 0: nothing to go back to yet */
+        S->cap_nv = nv;
+        S->cap_nt = nt;
+        S->xy = cvm__malloc(ctx, (2 * nv + 1) * sizeof *S->xy);
+        S->w = cvm__malloc(ctx, (nv + 1) * sizeof *S->w);
+        S->vtri = cvm__malloc(ctx, (nv + 1) * sizeof *S->vtri);
+        S->tv = cvm__malloc(ctx, (3 * nt + 1) * sizeof *S->tv);
+        S->tn = cvm__malloc(ctx, (3 * nt + 1) * sizeof *S->tn);
+        S->tf = cvm__malloc(ctx, nt + 1);
+        S->te = T->te ? cvm__malloc(ctx, (3 * nt + 1) * sizeof *S->te) : NULL;
+        S->ta = T->ta ? cvm__malloc(ctx, (nt + 1) * sizeof *S->ta) : NULL;
+        S->vmap = D->topo ? cvm__malloc(ctx, (D->nv0 + 1) * sizeof *S->vmap) : NULL;
+        if (!S->xy || !S->w || !S->vtri || !S->tv || !S->tn || !S->tf || (T->te && !S->te) ||
+            (T->ta && !S->ta) || (D->topo && !S->vmap))
+            return CVM_E_NOMEM; /* D->snap is freed by the caller */
+    }
+    S->nv = nv;
+    S->nt = nt;
+    S->n_dead = T->n_dead;
+    S->free_head = T->free_head;
+    S->last = T->last;
+    S->rep = *D->rep;
+    memcpy(S->xy, T->xy, 2 * nv * sizeof *S->xy);
+    memcpy(S->w, T->w, nv * sizeof *S->w);
+    memcpy(S->vtri, T->vtri, nv * sizeof *S->vtri);
+    memcpy(S->tv, T->tv, 3 * nt * sizeof *S->tv);
+    memcpy(S->tn, T->tn, 3 * nt * sizeof *S->tn);
+    memcpy(S->tf, T->tf, nt);
+    if (T->te)
+        memcpy(S->te, T->te, 3 * nt * sizeof *S->te);
+    if (T->ta)
+        memcpy(S->ta, T->ta, nt * sizeof *S->ta);
+    if (D->topo)
+        memcpy(S->vmap, D->p->vmap, D->nv0 * sizeof *S->vmap);
+    return CVM_OK;
+}
+
+static void snap_back(dopt *D)
+{
+    cvm__tri2 *T = D->T;
+    const snap *S = D->snap;
+    size_t nt = S->nt, nv = S->nv;
+    double seconds = D->rep->seconds;
+    T->nv = nv;
+    T->nt = nt;
+    T->n_dead = S->n_dead;
+    T->free_head = S->free_head;
+    T->last = S->last;
+    *D->rep = S->rep;
+    D->rep->seconds = seconds;
+    memcpy(T->xy, S->xy, 2 * nv * sizeof *S->xy);
+    memcpy(T->w, S->w, nv * sizeof *S->w);
+    memcpy(T->vtri, S->vtri, nv * sizeof *S->vtri);
+    memcpy(T->tv, S->tv, 3 * nt * sizeof *S->tv);
+    memcpy(T->tn, S->tn, 3 * nt * sizeof *S->tn);
+    memcpy(T->tf, S->tf, nt);
+    if (T->te)
+        memcpy(T->te, S->te, 3 * nt * sizeof *S->te);
+    if (T->ta)
+        memcpy(T->ta, S->ta, nt * sizeof *S->ta);
+    if (D->topo)
+        memcpy(D->p->vmap, S->vmap, D->nv0 * sizeof *S->vmap);
+}
+
+static cvm_status maxmin_rounds(dopt *D, uint64_t k0, int rounds, size_t *best_nc, double *best_min,
+                                int *stalled);
+
+/* Removal trials of the max-min phase (with p->topology and its vertex map):
+ * a removable Steiner vertex (cvm__dual_removable) at a corner of a triangle
+ * within RM_BAND_DEG of the smallest angle (the RM_TRIES of highest
+ * degree, then lowest index; in that order) is removed; up to
+ * RM_SWEEPS penalty sweeps make every triangle compliant again and RM_ROUNDS
+ * max-min rounds follow; the result is kept when every triangle is
+ * compliant and the smallest angle rose by MM_PROGRESS_DEG, else the
+ * triangulation goes back to its state before the trial (snapshot). At most
+ * RM_TRIES trials; stops at the first kept one (*kept_out 1). Deterministic:
+ * the order and the sweeps depend only on the mesh. */
+static cvm_status removal_trials(dopt *D, uint64_t k0, size_t *best_nc, double *best_min, int *kept_out)
+{
+    cvm__tri2 *T = D->T;
+    int32_t cand[RM_TRIES];
+    size_t n, i, nc = 0, t, cdeg[RM_TRIES];
+    double g, gmin = min_angle(D), target = D->sin2_target;
+    cvm_status s = CVM_OK;
+    *kept_out = 0;
+    if (!D->topo)
+        return CVM_OK;
+    g = sin((gmin + RM_BAND_DEG) * 3.14159265358979323846 / 180.0);
+    g *= g;
+    /* candidates: removable Steiner corners of the worst triangles, by index */
+    memset(D->mark, 0, T->nv);
+    for (t = 0; t < T->nt; t++) {
+        int j;
+        if (!cvm__tri2_in_domain(T, (int32_t)t) || !(tri_min_sin2(T, (int32_t)t) < g))
+            continue;
+        for (j = 0; j < 3; j++)
+            D->mark[T->tv[3 * t + (size_t)j]] = 1;
+    }
+    for (i = D->p->n_input; i < T->nv; i++) {
+        size_t deg, q;
+        if (!D->mark[i] || !cvm__dual_removable(T, (int32_t)i, &deg))
+            continue;
+        /* keep the RM_TRIES of highest degree (then lowest index), in that order */
+        for (q = nc; q > 0 && cdeg[q - 1] < deg; q--)
+            if (q < RM_TRIES) {
+                cand[q] = cand[q - 1];
+                cdeg[q] = cdeg[q - 1];
+            }
+        if (q < RM_TRIES) {
+            cand[q] = (int32_t)i;
+            cdeg[q] = deg;
+            nc += nc < RM_TRIES;
+        }
+    }
+    /* trials aim at the target the caller set, not at a raised one */
+    D->sin2_target = sin(D->p->target_angle_deg * 3.14159265358979323846 / 180.0);
+    D->sin2_target *= D->sin2_target;
+    for (n = 0; n < nc && !s; n++) {
+        size_t k, moved;
+        int stalled;
+        double mn;
+        if ((s = snap_take(D)))
+            break;
+        if (!cvm__dual_remove_vertex(T, cand[n], -1))
+            continue;
+        D->gone[cand[n]] = 1;
+        D->rep->removed_maxmin++;
+        compact(D);
+        if ((s = restore(D)))
+            break;
+        for (k = 0; k < RM_SWEEPS && !s; k++) {
+            if ((s = sizes(D)))
+                break;
+            boundary_flags(D);
+            cvm__dual_layers(T, D->vbnd, D->layer, D->list);
+            score_all(D);
+            if (!D->nc)
+                break;
+            D->nc_only = 1;
+            s = sweep(D, k0 + 1000 * (n + 1) + k, &moved);
+            D->nc_only = 0;
+            if (s || (s = restore(D)))
+                break;
+        }
+        if (s)
+            break;
+        score_all(D);
+        if (!D->nc) {
+            if ((s = maxmin_rounds(D, k0 + 1000 * (n + 1) + 100, RM_ROUNDS, NULL, NULL, &stalled)))
+                break;
+            score_all(D);
+        }
+        mn = D->nc ? -1.0 : min_angle(D);
+        if (mn > gmin + MM_PROGRESS_DEG) {
+            *best_nc = (size_t)-1; /* the old best had other vertices */
+            keep_best(D, best_nc, best_min);
+            *kept_out = 1;
+            break;
+        }
+        snap_back(D);
+        if ((s = sizes(D)))
+            break;
+        boundary_flags(D);
+        score_all(D);
+    }
+    if (s && n < nc && D->snap && D->snap->nv) {
+        /* out of memory or stopped inside a trial: back to its regular start */
+        snap_back(D);
+        score_all(D);
+    }
+    D->sin2_target = target;
+    return s;
+}
+
+/* Up to rounds max-min rounds (see maxmin_phase); with best_nc, keep_best
+ * follows the last. Moves keep every triangle compliant and the
+ * triangulation regular, and no star's smallest angle drops, so the
+ * per-triangle state is kept up to date by the moves alone and one restore()
+ * at the end is only a safety net. *stalled: 1 when the rounds ended because
+ * a round moved nothing or MM_PATIENCE rounds gained less than
+ * MM_PROGRESS_DEG. Needs sizes, boundary flags and scores up to date. */
+static cvm_status maxmin_rounds(dopt *D, uint64_t k0, int rounds, size_t *best_nc, double *best_min,
+                                int *stalled)
+{
     cvm_status s = CVM_OK;
     int r, stall = 0;
-    double last = min_angle(D);
-    for (r = 0; r < p->maxmin_rounds; r++) {
+    double last = -1.0;
+    *stalled = 0;
+    for (r = 0; r < rounds && !D->nc; r++) {
         size_t moved = 0;
-        double mn, g;
+        D->mm = 1;
+        s = sweep(D, k0 + (uint64_t)r, &moved); /* its order (mm_order) sets D->mm_min */
+        D->mm = 0;
+        D->rep->moves += moved;
+        D->rep->maxmin_rounds++;
+        if (s)
+            break;
+        if (D->mm_min > last + MM_PROGRESS_DEG) {
+            last = D->mm_min;
+            stall = 0;
+        } else if (++stall >= MM_PATIENCE) {
+            *stalled = 1;
+            break;
+        }
+        if (!moved) {
+            *stalled = 1;
+            break;
+        }
+    }
+    D->mm = 0;
+    if (!s && !(s = restore(D))) {
+        score_all(D);
+        if (best_nc)
+            keep_best(D, best_nc, best_min);
+    }
+    return s;
+}
+
+static cvm_status maxmin_phase(dopt *D, uint64_t k0, size_t *best_nc, double *best_min)
+{
+    cvm_status s = CVM_OK;
+    int calls, rounds = D->p->maxmin_rounds;
+    for (calls = 0; calls <= RM_CALLS && !s; calls++) {
+        int stalled = 0, kept = 0;
         if ((s = sizes(D)))
             break;
         boundary_flags(D);
         score_all(D);
         if (D->nc)
             break;
-        g = sin((min_angle(D) + MM_BAND_DEG) * 3.14159265358979323846 / 180.0);
-        D->mm_goal = g * g;
-        D->mm = 1;
-        s = sweep(D, k0 + (uint64_t)r, &moved);
-        D->mm = 0;
-        D->rep->moves += moved;
-        D->rep->maxmin_rounds++;
-        if (s || (s = restore(D)))
+        if ((s = maxmin_rounds(D, k0, rounds, best_nc, best_min, &stalled)))
             break;
-        score_all(D);
-        keep_best(D, best_nc, best_min);
-        mn = min_angle(D);
-        if (!moved)
+        k0 += (uint64_t)rounds;
+        if (!stalled || calls == RM_CALLS)
             break;
-        if (mn > last + MM_PROGRESS_DEG) {
-            last = mn;
-            stall = 0;
-        } else if (++stall >= MM_PATIENCE) {
+        if ((s = removal_trials(D, k0, best_nc, best_min, &kept)) || !kept)
             break;
-        }
+        k0 += 100000;
     }
-    D->mm = 0;
     return s;
 }
 
@@ -1158,6 +1418,7 @@ cvm_status cvm__dual_optimise(cvm__tri2 *T, const cvm__dual_opt_params *p, cvm__
     cvm__free(ctx, D.gone);
     cvm__free(ctx, D.dup);
     cvm__free(ctx, D.map2);
+    snap_free(ctx, D.snap);
     rep->seconds = cvm__now() - t0;
     return s;
 }

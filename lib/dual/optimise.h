@@ -37,6 +37,7 @@ typedef struct cvm__dopt_local {
     int maxmin;            /* 1: cvm__dopt_eval is cvm__dopt_eval_maxmin */
     double slack_bound;    /* smallest containment slack a candidate may leave */
     double dual_bound;     /* smallest dual/primal edge ratio a candidate may leave */
+    double mm_m0;          /* smallest sin^2 of the star at the start: never less */
 } cvm__dopt_local;
 
 /* Stars larger than this are not solved by the max-min-angle phase. */

@@ -267,7 +267,7 @@ double cvm__dopt_eval_maxmin(cvm__dopt_local *L, const double *u, double *slack_
     if (slack_out) {
         slack_out[0] = slack;
         slack_out[1] = dual;
-    } else if (slack < L->slack_bound || dual < L->dual_bound) {
+    } else if (slack < L->slack_bound || dual < L->dual_bound || m < L->mm_m0) {
         return HUGE_VAL;
     }
     return -m - MM_SLACK_W * (slack < 0.5 ? slack : 0.5);
