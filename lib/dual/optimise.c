@@ -60,7 +60,7 @@
 #define PROGRESS_DEG 0.05 /* smallest-angle gain over PATIENCE sweeps that keeps the run going */
 #define PUSH_DEG 5.0      /* each raise of the target angle, degrees */
 #define BEST_EPS_DEG 1e-3 /* smallest angle gain that makes a state the new best, degrees */
-#define MM_BAND_DEG 5.0   /* max-min phase: visit triangles below the smallest angle + this */
+#define MM_BAND_DEG 2.0   /* max-min phase: visit triangles below the smallest angle + this */
 #define MM_PATIENCE 3     /* max-min phase: rounds without MM_PROGRESS_DEG gain before it ends */
 #define MM_PROGRESS_DEG 0.01
 #define MM_SLACK_F (1.0 / 3.0) /* max-min phase: containment slack kept, x the margin */
@@ -70,6 +70,8 @@
 #define RM_CALLS 3        /* removal trials: calls per phase */
 #define RM_SWEEPS 8       /* removal trials: penalty sweeps to regain compliance */
 #define RM_ROUNDS 15      /* removal trials: max-min rounds before a trial is judged */
+#define RM_RINGS 4        /* removal trials: rings around the removed vertex its rounds visit */
+#define RM_MAXNB 96       /* removal trials: neighbour slots (a star's corners, repeats included) */
 
 typedef struct dopt {
     cvm__tri2 *T;
@@ -88,6 +90,8 @@ typedef struct dopt {
     struct job *jobs; /* BATCH entries */
     uint32_t *stamp; /* nv: batch stamp of the vertices a batch holds or touches */
     uint8_t *gone;   /* nv: removed, not yet compacted */
+    uint8_t *region; /* nv: removal trials: the vertices whose triangles its rounds visit */
+    int region_on;   /* 1: max-min rounds visit only triangles with a vertex in region */
     int32_t *dup, *map2; /* nv: scratch of compact() */
     size_t nv0;      /* vertex count at the call (vmap's length) */
     int topo;        /* vertex removal on (p->topology with p->vmap) */
@@ -736,7 +740,9 @@ static size_t mm_order(dopt *D)
     g = D->mm_min + MM_BAND_DEG < 90.0 ? sin((D->mm_min + MM_BAND_DEG) * 3.14159265358979323846 / 180.0) : 1.0;
     g *= g;
     for (t = 0; t < T->nt; t++) {
-        if (!cvm__tri2_in_domain(T, (int32_t)t) || !(D->F[t] < g))
+        const int32_t *tv = T->tv + 3 * t;
+        if (!cvm__tri2_in_domain(T, (int32_t)t) || !(D->F[t] < g) ||
+            (D->region_on && !D->region[tv[0]] && !D->region[tv[1]] && !D->region[tv[2]]))
             continue;
         D->F[t] = -D->F[t];
         D->list[n++] = (int32_t)t;
@@ -1053,6 +1059,37 @@ static void snap_back(dopt *D)
 static cvm_status maxmin_rounds(dopt *D, uint64_t k0, int rounds, size_t *best_nc, double *best_min,
                                 int *stalled);
 
+/* Mark in D->region the n vertices seed[] and RM_RINGS rings of neighbours
+ * around them (breadth first; D->list is the queue, D->star scratch). */
+static void mark_region(dopt *D, const int32_t *seed, size_t n)
+{
+    cvm__tri2 *T = D->T;
+    size_t head = 0, tail = 0, ring_end, i;
+    int ring;
+    memset(D->region, 0, T->nv);
+    for (i = 0; i < n; i++)
+        if (seed[i] >= 0 && !D->region[seed[i]]) {
+            D->region[seed[i]] = 1;
+            D->list[tail++] = seed[i];
+        }
+    for (ring = 0; ring < RM_RINGS; ring++) {
+        ring_end = tail;
+        while (head < ring_end) {
+            int32_t v = D->list[head++];
+            size_t ns = gather_star(D, v, D->star), k;
+            for (k = 0; k < ns; k++) {
+                const int32_t *tv = T->tv + 3 * (size_t)D->star[k];
+                int c;
+                for (c = 0; c < 3; c++)
+                    if (tv[c] != CVM__GHOST && !D->region[tv[c]]) {
+                        D->region[tv[c]] = 1;
+                        D->list[tail++] = tv[c];
+                    }
+            }
+        }
+    }
+}
+
 /* Removal trials of the max-min phase (with p->topology and its vertex map):
  * a removable Steiner vertex (cvm__dual_removable) at a corner of a triangle
  * within RM_BAND_DEG of the smallest angle (the RM_TRIES of highest
@@ -1066,8 +1103,8 @@ static cvm_status maxmin_rounds(dopt *D, uint64_t k0, int rounds, size_t *best_n
 static cvm_status removal_trials(dopt *D, uint64_t k0, size_t *best_nc, double *best_min, int *kept_out)
 {
     cvm__tri2 *T = D->T;
-    int32_t cand[RM_TRIES];
-    size_t n, i, nc = 0, t, cdeg[RM_TRIES];
+    int32_t cand[RM_TRIES], nb[RM_MAXNB];
+    size_t n, i, nc = 0, t, cdeg[RM_TRIES], nnb = 0;
     double g, gmin = min_angle(D), target = D->sin2_target;
     cvm_status s = CVM_OK;
     *kept_out = 0;
@@ -1109,11 +1146,25 @@ static cvm_status removal_trials(dopt *D, uint64_t k0, size_t *best_nc, double *
         double mn;
         if ((s = snap_take(D)))
             break;
+        {
+            /* its neighbours, to seed the region of the trial's rounds */
+            size_t ns = gather_star(D, cand[n], D->star), q;
+            nnb = 0;
+            for (q = 0; q < ns && nnb < RM_MAXNB; q++) {
+                const int32_t *tv = T->tv + 3 * (size_t)D->star[q];
+                int c;
+                for (c = 0; c < 3; c++)
+                    if (tv[c] != CVM__GHOST && tv[c] != cand[n] && nnb < RM_MAXNB)
+                        nb[nnb++] = tv[c];
+            }
+        }
         if (!cvm__dual_remove_vertex(T, cand[n], -1))
             continue;
         D->gone[cand[n]] = 1;
         D->rep->removed_maxmin++;
         compact(D);
+        for (i = 0; i < nnb; i++)
+            nb[i] = D->map2[nb[i]];
         if ((s = restore(D)))
             break;
         for (k = 0; k < RM_SWEEPS && !s; k++) {
@@ -1134,7 +1185,11 @@ static cvm_status removal_trials(dopt *D, uint64_t k0, size_t *best_nc, double *
             break;
         score_all(D);
         if (!D->nc) {
-            if ((s = maxmin_rounds(D, k0 + 1000 * (n + 1) + 100, RM_ROUNDS, NULL, NULL, &stalled)))
+            mark_region(D, nb, nnb);
+            D->region_on = 1;
+            s = maxmin_rounds(D, k0 + 1000 * (n + 1) + 100, RM_ROUNDS, NULL, NULL, &stalled);
+            D->region_on = 0;
+            if (s)
                 break;
             score_all(D);
         }
@@ -1206,25 +1261,21 @@ static cvm_status maxmin_rounds(dopt *D, uint64_t k0, int rounds, size_t *best_n
 
 static cvm_status maxmin_phase(dopt *D, uint64_t k0, size_t *best_nc, double *best_min)
 {
-    cvm_status s = CVM_OK;
-    int calls, rounds = D->p->maxmin_rounds;
-    for (calls = 0; calls <= RM_CALLS && !s; calls++) {
-        int stalled = 0, kept = 0;
-        if ((s = sizes(D)))
-            break;
-        boundary_flags(D);
-        score_all(D);
-        if (D->nc)
-            break;
-        if ((s = maxmin_rounds(D, k0, rounds, best_nc, best_min, &stalled)))
-            break;
-        k0 += (uint64_t)rounds;
-        if (!stalled || calls == RM_CALLS)
-            break;
-        if ((s = removal_trials(D, k0, best_nc, best_min, &kept)) || !kept)
-            break;
-        k0 += 100000;
-    }
+    cvm_status s;
+    int calls, stalled = 0, kept = 1;
+    if ((s = sizes(D)))
+        return s;
+    boundary_flags(D);
+    score_all(D);
+    if (D->nc)
+        return CVM_OK;
+    if ((s = maxmin_rounds(D, k0, D->p->maxmin_rounds, best_nc, best_min, &stalled)) || !stalled)
+        return s;
+    /* a kept trial's rounds already ran to a stall around it, and the rest
+     * of the mesh did before: the next trials follow at once */
+    for (calls = 0; calls < RM_CALLS && kept && !s; calls++)
+        s = removal_trials(D, k0 + (uint64_t)D->p->maxmin_rounds + 100000 * (uint64_t)calls, best_nc,
+                           best_min, &kept);
     return s;
 }
 
@@ -1384,6 +1435,7 @@ cvm_status cvm__dual_optimise(cvm__tri2 *T, const cvm__dual_opt_params *p, cvm__
     D.best = cvm__malloc(ctx, (3 * nv + 1) * sizeof *D.best);
     D.jobs = cvm__malloc(ctx, BATCH * sizeof *D.jobs);
     D.stamp = cvm__calloc(ctx, nv + 1, sizeof *D.stamp);
+    D.region = cvm__calloc(ctx, nv + 1, 1);
     D.topo = p->topology && p->vmap;
     if (D.topo) {
         D.gone = cvm__calloc(ctx, nv + 1, 1);
@@ -1391,7 +1443,7 @@ cvm_status cvm__dual_optimise(cvm__tri2 *T, const cvm__dual_opt_params *p, cvm__
         D.map2 = cvm__malloc(ctx, (nv + 1) * sizeof *D.map2);
     }
     if (!D.vsize || !D.vbnd || !D.mark || !D.V || !D.F || !D.st || !D.weak || !D.layer || !D.list || !D.star || !D.save || !D.best || !D.jobs ||
-        !D.stamp || (D.topo && (!D.gone || !D.dup || !D.map2)))
+        !D.stamp || !D.region || (D.topo && (!D.gone || !D.dup || !D.map2)))
         s = CVM_E_NOMEM;
     else
         s = run(&D);
@@ -1415,6 +1467,7 @@ cvm_status cvm__dual_optimise(cvm__tri2 *T, const cvm__dual_opt_params *p, cvm__
     cvm__free(ctx, D.best);
     cvm__free(ctx, D.jobs);
     cvm__free(ctx, D.stamp);
+    cvm__free(ctx, D.region);
     cvm__free(ctx, D.gone);
     cvm__free(ctx, D.dup);
     cvm__free(ctx, D.map2);
