@@ -1459,8 +1459,11 @@ typedef enum cvm_measure {
     CVM_MEASURE_DUAL_OPT_SECONDS = 46,  /**< wall time of the run, seconds (not deterministic) */
     CVM_MEASURE_DUAL_OPT_REMOVED_VANISHED = 47, /**< Steiner vertices removed because their
                                              power cell vanished (CVM_OPT_DUAL_TOPOLOGY) */
-    CVM_MEASURE_DUAL_OPT_REMOVED_DEGREE = 48 /**< Steiner vertices removed by the degree
+    CVM_MEASURE_DUAL_OPT_REMOVED_DEGREE = 48, /**< Steiner vertices removed by the degree
                                              repair (CVM_OPT_DUAL_TOPOLOGY) */
+    CVM_MEASURE_DUAL_OPT_REMOVED_MAXMIN = 49 /**< Steiner vertices removed by the kept removal
+                                             trials of the max-min-angle phase
+                                             (CVM_OPT_DUAL_MAXMIN_ROUNDS) */
 } cvm_measure;
 
 /**
