@@ -33,6 +33,13 @@
  * at a normal end: a later sweep can lower the smallest angle, since moves
  * trade angles against the penalty of others.
  *
+ * When the run ends compliant, maxmin_phase() raises the smallest angle with
+ * every triangle kept compliant: rounds of per-vertex max-min solves under
+ * constraints that keep the star regular (so no flip follows and the
+ * per-triangle state is kept up to date by the moves), then removal trials on
+ * a snapshot of the whole triangulation (see CVM_OPT_DUAL_MAXMIN_ROUNDS in
+ * cvmesh.h for the rules and the measured effect).
+ *
  * Parallel and deterministic: the order above is cut into batches of vertices
  * no two of which are equal or share a triangle's vertex (so their local
  * problems read no vertex that moves); a batch's problems are solved on
@@ -1369,7 +1376,7 @@ static cvm_status run(dopt *D)
     }
     if ((s = end_at_best(D, best_nc, best_min)))
         return s;
-    if (p->maxmin_rounds > 0 && !D->nc) {
+    if (p->maxmin_rounds > 0 && p->max_sweeps > 0 && !D->nc) {
         score_all(D);
         if (!D->nc && (s = maxmin_phase(D, k, &best_nc, &best_min)))
             return s;
