@@ -72,6 +72,7 @@
 #define MM_PROGRESS_DEG 0.01
 #define MM_SLACK_F (1.0 / 3.0) /* max-min phase: containment slack kept, x the margin */
 #define MM_DUAL_F 1.1     /* max-min phase: dual/primal edge ratio kept, x the margin */
+#define MM_PATTERN_BUDGET 20 /* max-min phase: compass evaluations after the active-set ascent */
 #define RM_BAND_DEG 0.5   /* removal trials: corners of triangles below the smallest angle + this */
 #define RM_TRIES 4        /* removal trials: at most this many per call */
 #define RM_CALLS 3        /* removal trials: calls per phase */
@@ -389,6 +390,7 @@ static void solve_job(const dopt *D, job *J, uint64_t sweep)
         L.sin2_bound = D->sin2_min;
     if (D->mm) {
         double m0[2];
+        cvm__dopt_maxmin_cache(&L);
         if (cvm__dopt_eval_maxmin(&L, u, m0) == HUGE_VAL)
             return; /* not regular or too large a star: leave it */
         L.slack_bound = m0[0] < MM_SLACK_F * D->p->margin ? m0[0] : MM_SLACK_F * D->p->margin;
@@ -407,7 +409,8 @@ static void solve_job(const dopt *D, job *J, uint64_t sweep)
             cvm__dopt_point(&L, ua, L.p0, &w);
             L.w0 = w;
         }
-        cvm__dopt_pattern(&L, D->p->pattern_budget, fa, u, &f);
+        cvm__dopt_pattern(&L, D->p->pattern_budget < MM_PATTERN_BUDGET ? D->p->pattern_budget : MM_PATTERN_BUDGET,
+                          fa, u, &f);
         if (!(f < f0))
             return;
         cvm__dopt_point(&L, u, J->p, &J->w);

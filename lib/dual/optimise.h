@@ -19,6 +19,9 @@
 
 #define CVM__DOPT_MAXDOF 3
 
+/* Stars larger than this are not solved by the max-min-angle phase. */
+#define CVM__DOPT_MM_MAXSTAR 48
+
 typedef struct cvm__dopt_local {
     const cvm__tri2 *T;
     int32_t v;
@@ -38,10 +41,12 @@ typedef struct cvm__dopt_local {
     double slack_bound;    /* smallest containment slack a candidate may leave */
     double dual_bound;     /* smallest dual/primal edge ratio a candidate may leave */
     double mm_m0;          /* smallest sin^2 of the star at the start: never less */
+    int vnb_ok;            /* 1: vnb holds the power vertices across the star's edges */
+    double vnb[6 * CVM__DOPT_MM_MAXSTAR]; /* per star triangle and edge: the power vertex of
+                                             the domain triangle across when it is not in the
+                                             star (it does not move with v) */
 } cvm__dopt_local;
 
-/* Stars larger than this are not solved by the max-min-angle phase. */
-#define CVM__DOPT_MM_MAXSTAR 48
 
 /* Position and weight of v at scaled offset u into p[2], *w. */
 void cvm__dopt_point(const cvm__dopt_local *L, const double *u, double *p, double *w);
@@ -65,6 +70,11 @@ double cvm__dopt_eval(cvm__dopt_local *L, const double *u);
  * measured smallest slack and dual ratio are written to slack_out[0..1] and
  * the bounds are not applied. */
 double cvm__dopt_eval_maxmin(cvm__dopt_local *L, const double *u, double *slack_out);
+
+/* Fill L->vnb (the power vertices across the star's outer edges, which no
+ * candidate of v moves) and set L->vnb_ok; stars above CVM__DOPT_MM_MAXSTAR
+ * are left alone. */
+void cvm__dopt_maxmin_cache(cvm__dopt_local *L);
 
 /* The position solver of the max-min-angle phase (L->maxmin set, ndof 2 or
  * 3): Freitag's active-set ascent on the sines of the angles of the star's

@@ -195,6 +195,32 @@ static int edge_regular(const cvm__dopt_local *L, int32_t t, int j, const double
     return cvm__power2d_sos(q[0], q[1], q[2], q[3], w[0], w[1], w[2], w[3], tv[0], tv[1], tv[2], d) <= 0;
 }
 
+void cvm__dopt_maxmin_cache(cvm__dopt_local *L)
+{
+    const cvm__tri2 *T = L->T;
+    size_t i, j;
+    int k;
+    L->vnb_ok = 0;
+    if (L->nstar > CVM__DOPT_MM_MAXSTAR)
+        return;
+    for (i = 0; i < L->nstar; i++) {
+        int32_t t = L->star[i];
+        if (!cvm__tri2_in_domain(T, t))
+            continue;
+        for (k = 0; k < 3; k++) {
+            int32_t nb = T->tn[3 * (size_t)t + (size_t)k] / 3;
+            int in_star = 0;
+            if (!cvm__tri2_in_domain(T, nb))
+                continue;
+            for (j = 0; j < L->nstar && !in_star; j++)
+                in_star = L->star[j] == nb;
+            if (!in_star)
+                cvm__dual_tri_vertex(T, nb, L->vnb + 2 * (3 * i + (size_t)k));
+        }
+    }
+    L->vnb_ok = 1;
+}
+
 double cvm__dopt_eval_maxmin(cvm__dopt_local *L, const double *u, double *slack_out)
 {
     const cvm__tri2 *T = L->T;
@@ -252,7 +278,9 @@ double cvm__dopt_eval_maxmin(cvm__dopt_local *L, const double *u, double *slack_
             for (j = 0; j < n && !Vu; j++)
                 if (L->star[j] == nb)
                     Vu = Vs + 2 * j;
-            if (!Vu) {
+            if (!Vu && L->vnb_ok) {
+                Vu = L->vnb + 2 * (3 * i + (size_t)k);
+            } else if (!Vu) {
                 cvm__dual_tri_vertex(T, nb, Vo); /* not in the star: v is no corner of it */
                 Vu = Vo;
             }
