@@ -1066,7 +1066,7 @@ static void snap_back(dopt *D)
         memcpy(D->p->vmap, S->vmap, D->nv0 * sizeof *S->vmap);
 }
 
-static cvm_status maxmin_rounds(dopt *D, uint64_t k0, int rounds, size_t *best_nc, double *best_min,
+static cvm_status mm_rounds(dopt *D, uint64_t k0, int rounds, size_t *best_nc, double *best_min,
                                 int *stalled);
 
 /* Mark in D->region the n vertices seed[] and RM_RINGS rings of neighbours
@@ -1197,7 +1197,7 @@ static cvm_status removal_trials(dopt *D, uint64_t k0, size_t *best_nc, double *
         if (!D->nc) {
             mark_region(D, nb, nnb);
             D->region_on = 1;
-            s = maxmin_rounds(D, k0 + 1000 * (n + 1) + 100, RM_ROUNDS, NULL, NULL, &stalled);
+            s = mm_rounds(D, k0 + 1000 * (n + 1) + 100, RM_ROUNDS, NULL, NULL, &stalled);
             D->region_on = 0;
             if (s)
                 break;
@@ -1232,7 +1232,7 @@ static cvm_status removal_trials(dopt *D, uint64_t k0, size_t *best_nc, double *
  * at the end is only a safety net. *stalled: 1 when the rounds ended because
  * a round moved nothing or MM_PATIENCE rounds gained less than
  * MM_PROGRESS_DEG. Needs sizes, boundary flags and scores up to date. */
-static cvm_status maxmin_rounds(dopt *D, uint64_t k0, int rounds, size_t *best_nc, double *best_min,
+static cvm_status mm_rounds(dopt *D, uint64_t k0, int rounds, size_t *best_nc, double *best_min,
                                 int *stalled)
 {
     cvm_status s = CVM_OK;
@@ -1279,7 +1279,7 @@ static cvm_status maxmin_phase(dopt *D, uint64_t k0, size_t *best_nc, double *be
     score_all(D);
     if (D->nc)
         return CVM_OK;
-    if ((s = maxmin_rounds(D, k0, D->p->maxmin_rounds, best_nc, best_min, &stalled)) || !stalled)
+    if ((s = mm_rounds(D, k0, D->p->maxmin_rounds, best_nc, best_min, &stalled)) || !stalled)
         return s;
     /* a kept trial's rounds already ran to a stall around it, and the rest
      * of the mesh did before: the next trials follow at once */
