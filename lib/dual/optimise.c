@@ -75,9 +75,11 @@
 #define MM_PATTERN_BUDGET 20 /* max-min phase: compass evaluations after the active-set ascent */
 #define RM_BAND_DEG 0.5   /* removal trials: corners of triangles below the smallest angle + this */
 #define RM_TRIES 4        /* removal trials: at most this many per call */
-#define RM_CALLS 3        /* removal trials: calls per phase */
+#define RM_CALLS 8        /* removal trials: calls per phase (each after a kept trial) */
 #define RM_SWEEPS 8       /* removal trials: penalty sweeps to regain compliance */
 #define RM_ROUNDS 15      /* removal trials: max-min rounds before a trial is judged */
+#define RM_FAILED 64      /* removal trials: failed positions remembered (not tried again) */
+#define RM_HUB_DEG 8      /* removal trials: triangles around a vertex that make it a hub */
 #define RM_RINGS 4        /* removal trials: rings around the removed vertex its rounds visit */
 #define RM_MAXNB 96       /* removal trials: neighbour slots (a star's corners, repeats included) */
 
@@ -115,6 +117,8 @@ typedef struct dopt {
     double mm_min;   /* smallest angle when its round's order was made, degrees */
     int nc_only;     /* 1: a sweep visits the non-compliant triangles only */
     struct snap *snap; /* removal trials: the state to go back to */
+    double failed[2 * RM_FAILED]; /* removal trials: positions of vertices whose trial failed */
+    size_t nfailed;
     cvm__dual_opt_report *rep;
 } dopt;
 
@@ -1100,6 +1104,18 @@ static void mark_region(dopt *D, const int32_t *seed, size_t n)
     }
 }
 
+/* Number of domain triangles with an angle below deg degrees (plain doubles). */
+static size_t count_below(const dopt *D, double deg)
+{
+    const cvm__tri2 *T = D->T;
+    double g = sin(deg * 3.14159265358979323846 / 180.0);
+    size_t t, n = 0;
+    g *= g;
+    for (t = 0; t < T->nt; t++)
+        n += cvm__tri2_in_domain(T, (int32_t)t) && tri_min_sin2(T, (int32_t)t) < g;
+    return n;
+}
+
 /* Removal trials of the max-min phase (with p->topology and its vertex map):
  * a removable Steiner vertex (cvm__dual_removable) at a corner of a triangle
  * within RM_BAND_DEG of the smallest angle (the RM_TRIES of highest
@@ -1114,7 +1130,7 @@ static cvm_status removal_trials(dopt *D, uint64_t k0, size_t *best_nc, double *
 {
     cvm__tri2 *T = D->T;
     int32_t cand[RM_TRIES], nb[RM_MAXNB];
-    size_t n, i, nc = 0, t, cdeg[RM_TRIES], nnb = 0;
+    size_t n, i, nc = 0, t, cdeg[RM_TRIES], nnb = 0, nlow0;
     double g, gmin = min_angle(D), target = D->sin2_target;
     cvm_status s = CVM_OK;
     *kept_out = 0;
@@ -1122,21 +1138,62 @@ static cvm_status removal_trials(dopt *D, uint64_t k0, size_t *best_nc, double *
         return CVM_OK;
     g = sin((gmin + RM_BAND_DEG) * 3.14159265358979323846 / 180.0);
     g *= g;
-    /* candidates: removable Steiner corners of the worst triangles, by index */
+    /* candidates: the removable Steiner neighbour of least degree of each hub
+     * (an interior vertex of RM_HUB_DEG or more triangles at the smallest
+     * angle of a worst triangle: it caps that angle at 360 / its degree),
+     * mark 2; the removable Steiner corners of the worst triangles, mark 1 */
     memset(D->mark, 0, T->nv);
     for (t = 0; t < T->nt; t++) {
-        int j;
+        const int32_t *tv = T->tv + 3 * t;
+        double l2[3];
+        int j, c = 0;
+        size_t ns;
         if (!cvm__tri2_in_domain(T, (int32_t)t) || !(tri_min_sin2(T, (int32_t)t) < g))
             continue;
-        for (j = 0; j < 3; j++)
-            D->mark[T->tv[3 * t + (size_t)j]] = 1;
+        for (j = 0; j < 3; j++) {
+            const double *p = T->xy + 2 * (size_t)tv[(j + 1) % 3], *q = T->xy + 2 * (size_t)tv[(j + 2) % 3];
+            l2[j] = sq(p[0] - q[0]) + sq(p[1] - q[1]);
+            c = l2[j] < l2[c] ? j : c; /* the smallest angle is opposite the shortest edge */
+            if (D->mark[tv[j]] < 1)
+                D->mark[tv[j]] = 1;
+        }
+        if (D->vbnd[tv[c]] || (ns = gather_star(D, tv[c], D->star)) < RM_HUB_DEG)
+            continue;
+        {
+            int32_t best = -1;
+            size_t bdeg = 0, q;
+            for (q = 0; q < ns; q++) {
+                const int32_t *sv = T->tv + 3 * (size_t)D->star[q];
+                int e;
+                for (e = 0; e < 3; e++) {
+                    int32_t x = sv[e];
+                    size_t dx;
+                    if (x == CVM__GHOST || x == tv[c] || (size_t)x < D->p->n_input ||
+                        !cvm__dual_removable(T, x, &dx))
+                        continue;
+                    if (best < 0 || dx < bdeg || (dx == bdeg && x < best)) {
+                        best = x;
+                        bdeg = dx;
+                    }
+                }
+            }
+            if (best >= 0)
+                D->mark[best] = 2;
+        }
     }
     for (i = D->p->n_input; i < T->nv; i++) {
-        size_t deg, q;
+        size_t deg, q, f;
         if (!D->mark[i] || !cvm__dual_removable(T, (int32_t)i, &deg))
             continue;
-        /* keep the RM_TRIES of highest degree (then lowest index), in that order */
-        for (q = nc; q > 0 && cdeg[q - 1] < deg; q--)
+        for (f = 0; f < D->nfailed; f++)
+            if (D->failed[2 * f] == T->xy[2 * i] && D->failed[2 * f + 1] == T->xy[2 * i + 1])
+                break;
+        if (f < D->nfailed)
+            continue; /* tried at this very position before, and failed */
+        /* keep the RM_TRIES best: mark 2 before 1, then the higher degree, then
+         * the lower index (earlier in this loop) */
+        for (q = nc; q > 0 && (D->mark[cand[q - 1]] < D->mark[i] ||
+                               (D->mark[cand[q - 1]] == D->mark[i] && cdeg[q - 1] < deg)); q--)
             if (q < RM_TRIES) {
                 cand[q] = cand[q - 1];
                 cdeg[q] = cdeg[q - 1];
@@ -1147,6 +1204,7 @@ static cvm_status removal_trials(dopt *D, uint64_t k0, size_t *best_nc, double *
             nc += nc < RM_TRIES;
         }
     }
+    nlow0 = count_below(D, gmin + MM_PROGRESS_DEG);
     /* trials aim at the target the caller set, not at a raised one */
     D->sin2_target = sin(D->p->target_angle_deg * 3.14159265358979323846 / 180.0);
     D->sin2_target *= D->sin2_target;
@@ -1204,13 +1262,18 @@ static cvm_status removal_trials(dopt *D, uint64_t k0, size_t *best_nc, double *
             score_all(D);
         }
         mn = D->nc ? -1.0 : min_angle(D);
-        if (mn > gmin + MM_PROGRESS_DEG) {
+        if (mn > gmin + MM_PROGRESS_DEG || (mn >= gmin && count_below(D, gmin + MM_PROGRESS_DEG) < nlow0)) {
             *best_nc = (size_t)-1; /* the old best had other vertices */
             keep_best(D, best_nc, best_min);
             *kept_out = 1;
             break;
         }
         snap_back(D);
+        if (D->nfailed < RM_FAILED) {
+            D->failed[2 * D->nfailed] = T->xy[2 * (size_t)cand[n]];
+            D->failed[2 * D->nfailed + 1] = T->xy[2 * (size_t)cand[n] + 1];
+            D->nfailed++;
+        }
         if ((s = sizes(D)))
             break;
         boundary_flags(D);
