@@ -577,22 +577,26 @@ typedef enum cvm_option {
      *  its primal edge, and the star's smallest angle does not drop; a move that
      *  makes a triangle non-compliant (exact test) is undone. The rounds end at
      *  this count, when a round moves nothing, or after 3 rounds gaining less
-     *  than 0.01 degree. Then, with CVM_OPT_DUAL_TOPOLOGY >= 1, removal trials:
-     *  up to 4 removable Steiner vertices of the triangles within 0.5 degree of
-     *  the smallest angle (highest degree first) are removed one at a time on a
-     *  copy of the state; sweeps over the non-compliant triangles and up to 15
-     *  rounds over 4 rings around the vertex follow, and the trial is kept only
-     *  when every triangle is compliant and the smallest angle rose, else the
-     *  copy comes back (up to 3 such calls while trials are kept; removals in
-     *  CVM_MEASURE_DUAL_OPT_REMOVED_MAXMIN). Deterministic. Measured
-     *  (tests/bench/bench_dual.py geometries, one thread, frontal / Delaunay
-     *  start meshes; smallest angle with 0 -> with 30): square 40.0 -> 45.0 /
-     *  36.5 -> 39.4, channel 40.4 -> 45.0 / 39.1 -> 40.0, annulus 40.0 -> 45.0 /
-     *  33.9 -> 40.0, cylinder 37.9 -> 41.1 / 37.4 -> 39.8, NACA 0012 30.1 -> 33.9
-     *  / 30.3 -> 33.1, still 0% non-compliant and 0% merged, smallest dual edge
-     *  over primal edge >= 0.151 (as before on the Delaunay channel and
-     *  cylinder, >= 0.165 elsewhere); optimisation time up by 0.1-0.5 s on the
-     *  frontal meshes (NACA 0012, 43k triangles: about 0.55 s in all). */
+     *  than 0.01 degree. Then, with CVM_OPT_DUAL_TOPOLOGY >= 1, removal trials
+     *  for the triangles within 0.5 degree of the smallest angle: up to 4
+     *  removable Steiner vertices (first the least-degree neighbour of each hub,
+     *  an interior vertex of 8 or more triangles holding such a smallest angle,
+     *  which caps it at 360 / its degree; then the triangles' corners, highest
+     *  degree first) are removed one at a time on a copy of the state; sweeps
+     *  over the non-compliant triangles and up to 15 rounds over 4 rings around
+     *  the vertex follow, and the trial is kept when every triangle is compliant
+     *  and the smallest angle rose, or did not drop and fewer triangles lie
+     *  within 0.01 degree of it; else the copy comes back and that position is
+     *  not tried again. Up to 8 such calls while one keeps a trial; removals in
+     *  CVM_MEASURE_DUAL_OPT_REMOVED_MAXMIN. Deterministic. Measured
+     *  (tests/bench/bench_dual.py, one thread; smallest angle with 0 -> with
+     *  30, frontal / Delaunay start meshes): square 40.0 -> 45.0 / 36.5 -> 39.4,
+     *  channel 40.4 -> 45.0 / 39.1 -> 41.2, annulus 40.0 -> 45.0 / 33.9 -> 40.0,
+     *  cylinder 37.9 -> 41.2 / 37.4 -> 39.7, NACA 0012 30.1 -> 33.8 / 30.3 ->
+     *  33.0; still 0% non-compliant and 0% merged everywhere, smallest dual edge
+     *  over primal edge >= 0.151 (0.18-0.35 on the frontal meshes); optimisation
+     *  of the frontal NACA 0012 (43k triangles) about 0.55 s, of the 64k-triangle
+     *  frontal square about 1.1-1.5 s (0.8 s without the phase). */
     CVM_OPT_DUAL_MAXMIN_ROUNDS = 511,
     /** Merge tolerance, a fraction of the local ideal dual edge l / sqrt(3), default
      *  0.1, bounds [0, 1]; 0 merges nothing. l at an edge is the mean of the local

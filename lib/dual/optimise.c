@@ -1117,15 +1117,18 @@ static size_t count_below(const dopt *D, double deg)
 }
 
 /* Removal trials of the max-min phase (with p->topology and its vertex map):
- * a removable Steiner vertex (cvm__dual_removable) at a corner of a triangle
- * within RM_BAND_DEG of the smallest angle (the RM_TRIES of highest
- * degree, then lowest index; in that order) is removed; up to
- * RM_SWEEPS penalty sweeps make every triangle compliant again and RM_ROUNDS
- * max-min rounds follow; the result is kept when every triangle is
- * compliant and the smallest angle rose by MM_PROGRESS_DEG, else the
- * triangulation goes back to its state before the trial (snapshot). At most
- * RM_TRIES trials; stops at the first kept one (*kept_out 1). Deterministic:
- * the order and the sweeps depend only on the mesh. */
+ * for the triangles within RM_BAND_DEG of the smallest angle, up to RM_TRIES
+ * removable Steiner vertices (cvm__dual_removable) - first the least-degree
+ * neighbour of each hub (see below), then the triangles' corners, highest
+ * degree first, lower index on ties; none at a position whose trial failed
+ * before (D->failed) - are removed one at a time; up to RM_SWEEPS sweeps over
+ * the non-compliant triangles make every triangle compliant again and up to
+ * RM_ROUNDS max-min rounds over RM_RINGS rings around the vertex follow. The
+ * result is kept when every triangle is compliant and the smallest angle
+ * rose by MM_PROGRESS_DEG, or did not drop and fewer triangles lie within
+ * MM_PROGRESS_DEG of it; else the triangulation goes back to its snapshot.
+ * Stops at the first kept trial (*kept_out 1). Deterministic: the order and
+ * the sweeps depend only on the mesh. */
 static cvm_status removal_trials(dopt *D, uint64_t k0, size_t *best_nc, double *best_min, int *kept_out)
 {
     cvm__tri2 *T = D->T;
