@@ -578,7 +578,7 @@ typedef enum cvm_option {
      *  makes a triangle non-compliant (exact test) is undone. The rounds end at
      *  this count, when a round moves nothing, or after 3 rounds gaining less
      *  than 0.01 degree. Then, with CVM_OPT_DUAL_TOPOLOGY >= 1, removal trials
-     *  for the triangles within 0.5 degree of the smallest angle: up to 4
+     *  for the triangles within 0.5 degree of the smallest angle: up to 8
      *  removable Steiner vertices (first the least-degree neighbour of each hub,
      *  an interior vertex of 8 or more triangles holding such a smallest angle,
      *  which caps it at 360 / its degree; then the triangles' corners, highest

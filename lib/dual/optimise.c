@@ -74,7 +74,7 @@
 #define MM_DUAL_F 1.1     /* max-min phase: dual/primal edge ratio kept, x the margin */
 #define MM_PATTERN_BUDGET 20 /* max-min phase: compass evaluations after the active-set ascent */
 #define RM_BAND_DEG 0.5   /* removal trials: corners of triangles below the smallest angle + this */
-#define RM_TRIES 4        /* removal trials: at most this many per call */
+#define RM_TRIES 8        /* removal trials: at most this many per call */
 #define RM_CALLS 8        /* removal trials: calls per phase (each after a kept trial) */
 #define RM_SWEEPS 8       /* removal trials: penalty sweeps to regain compliance */
 #define RM_ROUNDS 15      /* removal trials: max-min rounds before a trial is judged */
