@@ -591,12 +591,13 @@ typedef enum cvm_option {
      *  CVM_MEASURE_DUAL_OPT_REMOVED_MAXMIN. Deterministic. Measured
      *  (tests/bench/bench_dual.py, one thread; smallest angle with 0 -> with
      *  30, frontal / Delaunay start meshes): square 40.0 -> 45.0 / 36.5 -> 39.4,
-     *  channel 40.4 -> 45.0 / 39.1 -> 41.2, annulus 40.0 -> 45.0 / 33.9 -> 40.0,
-     *  cylinder 37.9 -> 41.2 / 37.4 -> 39.7, NACA 0012 30.1 -> 33.8 / 30.3 ->
+     *  channel 40.4 -> 45.0 / 39.1 -> 41.2, annulus 40.0 -> 47.0 / 33.9 -> 40.2,
+     *  cylinder 37.9 -> 41.2 / 37.4 -> 39.8, NACA 0012 30.1 -> 33.9 / 30.3 ->
      *  33.0; still 0% non-compliant and 0% merged everywhere, smallest dual edge
      *  over primal edge >= 0.151 (0.18-0.35 on the frontal meshes); optimisation
-     *  of the frontal NACA 0012 (43k triangles) about 0.55 s, of the 64k-triangle
-     *  frontal square about 1.1-1.5 s (0.8 s without the phase). */
+     *  time of the frontal NACA 0012 (43k triangles) 0.31 -> 0.64 s, of the
+     *  64k-triangle frontal square 0.76 -> 1.70 s, of the 37k-triangle Delaunay
+     *  square 1.39 -> 2.33 s. */
     CVM_OPT_DUAL_MAXMIN_ROUNDS = 511,
     /** Merge tolerance, a fraction of the local ideal dual edge l / sqrt(3), default
      *  0.1, bounds [0, 1]; 0 merges nothing. l at an edge is the mean of the local
