@@ -39,7 +39,7 @@ struct cvm_mesh {
     size_t n_front_marks;
 
     /* dual optimisation (lib/api/optimise.c) */
-    double dual_opt_report[9]; /* the last cvm_mesh_optimise_dual(): CVM_MEASURE_DUAL_OPT_* */
+    double dual_opt_report[10]; /* the last cvm_mesh_optimise_dual(): CVM_MEASURE_DUAL_OPT_* */
     double *tlayer;          /* AFLR layer index per triangle slot of tri, or NULL */
     size_t n_tlayer;         /* tri.nt when tlayer was made (stale when it differs) */
 };

@@ -7,7 +7,7 @@
 #include "refine/refine_internal.h"
 
 enum { REP_SWEEPS, REP_BEFORE, REP_AFTER, REP_MOVES, REP_FLIPS, REP_FIXES, REP_SECONDS,
-       REP_REMOVED_VANISHED, REP_REMOVED_DEGREE };
+       REP_REMOVED_VANISHED, REP_REMOVED_DEGREE, REP_REMOVED_MAXMIN };
 
 typedef struct size_payload {
     const cvm_sizing *sizing;
@@ -105,6 +105,7 @@ cvm_status cvm_mesh_optimise_dual(cvm_mesh *m, const cvm_sizing *sizing)
     p.n_input = input_vertices(m);
     p.topology = (int)cvm__opt(m, CVM_OPT_DUAL_TOPOLOGY);
     p.prepass = (int)cvm__opt(m, CVM_OPT_DUAL_PREPASS);
+    p.maxmin_rounds = (int)cvm__opt(m, CVM_OPT_DUAL_MAXMIN_ROUNDS);
     nv0 = m->tri.nv;
     if (p.topology) {
         vmap = cvm__malloc(&m->ctx, (nv0 + 1) * sizeof *vmap);
@@ -135,6 +136,7 @@ cvm_status cvm_mesh_optimise_dual(cvm_mesh *m, const cvm_sizing *sizing)
     m->dual_opt_report[REP_SECONDS] = rep.seconds;
     m->dual_opt_report[REP_REMOVED_VANISHED] = (double)rep.removed_vanished;
     m->dual_opt_report[REP_REMOVED_DEGREE] = (double)rep.removed_degree;
+    m->dual_opt_report[REP_REMOVED_MAXMIN] = (double)rep.removed_maxmin;
     switch (s) {
     case CVM_OK:
         return CVM_OK;
@@ -282,7 +284,7 @@ cvm_status cvm__optimise_measure(double *out, cvm_mesh *m, cvm_measure which)
     double merged, nc, ncb;
     cvm_status s;
     if ((int)which >= (int)CVM_MEASURE_DUAL_OPT_SWEEPS &&
-        (int)which <= (int)CVM_MEASURE_DUAL_OPT_REMOVED_DEGREE) {
+        (int)which <= (int)CVM_MEASURE_DUAL_OPT_REMOVED_MAXMIN) {
         *out = m->dual_opt_report[(int)which - (int)CVM_MEASURE_DUAL_OPT_SWEEPS];
         return CVM_OK;
     }

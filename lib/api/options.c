@@ -41,6 +41,7 @@ static const option_def k_options[] = {
     {CVM_OPT_DUAL_LAYER_PRIORITY, "DUAL_LAYER_PRIORITY", {0, 100, 1, 0}},
     {CVM_OPT_DUAL_TOPOLOGY, "DUAL_TOPOLOGY", {0, 2, 1, 1}},
     {CVM_OPT_DUAL_PREPASS, "DUAL_PREPASS", {0, 1, 0, 1}},
+    {CVM_OPT_DUAL_MAXMIN_ROUNDS, "DUAL_MAXMIN_ROUNDS", {0, 10000, 30, 1}},
     {CVM_OPT_DUAL_MERGE_TOL, "DUAL_MERGE_TOL", {0, 1, 0.1, 0}},
 };
 

@@ -128,6 +128,7 @@ static void print_dual_report(FILE *f, cvm_mesh *m)
         {CVM_MEASURE_DUAL_OPT_WEIGHT_FIXES, "weight fixes", "%.0f"},
         {CVM_MEASURE_DUAL_OPT_REMOVED_VANISHED, "removed (vanished)", "%.0f"},
         {CVM_MEASURE_DUAL_OPT_REMOVED_DEGREE, "removed (degree repair)", "%.0f"},
+        {CVM_MEASURE_DUAL_OPT_REMOVED_MAXMIN, "removed (max-min trials)", "%.0f"},
         {CVM_MEASURE_DUAL_OPT_SECONDS, "optimisation time", "%.3f s"},
     };
     size_t i;

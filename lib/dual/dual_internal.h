@@ -117,6 +117,7 @@ typedef struct cvm__dual_opt_params {
                                for a removed vertex (T's vertices are renumbered in
                                order by cvm__tri2_compact) */
     int prepass;            /* CVM_OPT_DUAL_PREPASS: run cvm__dual_prepass first (needs vmap) */
+    int maxmin_rounds;      /* CVM_OPT_DUAL_MAXMIN_ROUNDS: rounds of the max-min-angle phase */
     cvm__dual_size_fn size_fn; /* NULL: sizes from the mesh (cvm__dual_mesh_sizes) */
     void *size_payload;
 } cvm__dual_opt_params;
@@ -131,6 +132,8 @@ typedef struct cvm__dual_opt_report {
     size_t removed_degree;  /* vertices removed to repair a vertex degree */
     size_t prepass_removed; /* Steiner vertices removed by the pre-pass */
     size_t prepass_added;   /* vertices inserted by the pre-pass */
+    size_t maxmin_rounds;   /* rounds of the max-min-angle phase run */
+    size_t removed_maxmin;  /* vertices removed by its kept removal trials */
     double seconds;
 } cvm__dual_opt_report;
 

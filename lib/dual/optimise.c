@@ -33,6 +33,13 @@
  * at a normal end: a later sweep can lower the smallest angle, since moves
  * trade angles against the penalty of others.
  *
+ * When the run ends compliant, maxmin_phase() raises the smallest angle with
+ * every triangle kept compliant: rounds of per-vertex max-min solves under
+ * constraints that keep the star regular (so no flip follows and the
+ * per-triangle state is kept up to date by the moves), then removal trials on
+ * a snapshot of the whole triangulation (see CVM_OPT_DUAL_MAXMIN_ROUNDS in
+ * cvmesh.h for the rules and the measured effect).
+ *
  * Parallel and deterministic: the order above is cut into batches of vertices
  * no two of which are equal or share a triangle's vertex (so their local
  * problems read no vertex that moves); a batch's problems are solved on
@@ -60,6 +67,21 @@
 #define PROGRESS_DEG 0.05 /* smallest-angle gain over PATIENCE sweeps that keeps the run going */
 #define PUSH_DEG 5.0      /* each raise of the target angle, degrees */
 #define BEST_EPS_DEG 1e-3 /* smallest angle gain that makes a state the new best, degrees */
+#define MM_BAND_DEG 2.0   /* max-min phase: visit triangles below the smallest angle + this */
+#define MM_PATIENCE 3     /* max-min phase: rounds without MM_PROGRESS_DEG gain before it ends */
+#define MM_PROGRESS_DEG 0.01
+#define MM_SLACK_F (1.0 / 3.0) /* max-min phase: containment slack kept, x the margin */
+#define MM_DUAL_F 1.1     /* max-min phase: dual/primal edge ratio kept, x the margin */
+#define MM_PATTERN_BUDGET 20 /* max-min phase: compass evaluations after the active-set ascent */
+#define RM_BAND_DEG 0.5   /* removal trials: corners of triangles below the smallest angle + this */
+#define RM_TRIES 8        /* removal trials: at most this many per call */
+#define RM_CALLS 8        /* removal trials: calls per phase (each after a kept trial) */
+#define RM_SWEEPS 8       /* removal trials: penalty sweeps to regain compliance */
+#define RM_ROUNDS 15      /* removal trials: max-min rounds before a trial is judged */
+#define RM_FAILED 64      /* removal trials: failed positions remembered (not tried again) */
+#define RM_HUB_DEG 8      /* removal trials: triangles around a vertex that make it a hub */
+#define RM_RINGS 4        /* removal trials: rings around the removed vertex its rounds visit */
+#define RM_MAXNB 96       /* removal trials: neighbour slots (a star's corners, repeats included) */
 
 typedef struct dopt {
     cvm__tri2 *T;
@@ -78,6 +100,8 @@ typedef struct dopt {
     struct job *jobs; /* BATCH entries */
     uint32_t *stamp; /* nv: batch stamp of the vertices a batch holds or touches */
     uint8_t *gone;   /* nv: removed, not yet compacted */
+    uint8_t *region; /* nv: removal trials: the vertices whose triangles its rounds visit */
+    int region_on;   /* 1: max-min rounds visit only triangles with a vertex in region */
     int32_t *dup, *map2; /* nv: scratch of compact() */
     size_t nv0;      /* vertex count at the call (vmap's length) */
     int topo;        /* vertex removal on (p->topology with p->vmap) */
@@ -89,6 +113,12 @@ typedef struct dopt {
     size_t nc, nc0;  /* current and initial non-compliant counts */
     size_t nweak;
     double sin2_min, sin2_target;
+    int mm;          /* 1 during the max-min-angle phase (maxmin_phase) */
+    double mm_min;   /* smallest angle when its round's order was made, degrees */
+    int nc_only;     /* 1: a sweep visits the non-compliant triangles only */
+    struct snap *snap; /* removal trials: the state to go back to */
+    double failed[2 * RM_FAILED]; /* removal trials: positions of vertices whose trial failed */
+    size_t nfailed;
     cvm__dual_opt_report *rep;
 } dopt;
 
@@ -362,7 +392,35 @@ static void solve_job(const dopt *D, job *J, uint64_t sweep)
     L.sin2_bound = cvm__dopt_star_min_sin2(&L);
     if (L.sin2_bound > D->sin2_min)
         L.sin2_bound = D->sin2_min;
+    if (D->mm) {
+        double m0[2];
+        cvm__dopt_maxmin_cache(&L);
+        if (cvm__dopt_eval_maxmin(&L, u, m0) == HUGE_VAL)
+            return; /* not regular or too large a star: leave it */
+        L.slack_bound = m0[0] < MM_SLACK_F * D->p->margin ? m0[0] : MM_SLACK_F * D->p->margin;
+        L.dual_bound = m0[1] < MM_DUAL_F * D->p->margin ? m0[1] : MM_DUAL_F * D->p->margin;
+        L.maxmin = 1;
+        L.mm_m0 = cvm__dopt_star_min_sin2(&L);
+    }
     f0 = cvm__dopt_eval(&L, u);
+    if (D->mm) {
+        /* the active-set ascent of the position, then the compass search over
+         * every degree of freedom from where it ended */
+        double ua[CVM__DOPT_MAXDOF], fa;
+        cvm__dopt_maxmin_active(&L, f0, ua, &fa);
+        if (fa < f0) {
+            double w;
+            cvm__dopt_point(&L, ua, L.p0, &w);
+            L.w0 = w;
+        }
+        cvm__dopt_pattern(&L, D->p->pattern_budget < MM_PATTERN_BUDGET ? D->p->pattern_budget : MM_PATTERN_BUDGET,
+                          fa, u, &f);
+        if (!(f < f0))
+            return;
+        cvm__dopt_point(&L, u, J->p, &J->w);
+        J->moved = 1;
+        return;
+    }
     if (D->p->solver == CVM__DUAL_SOLVER_CUCKOO) {
         cvm__rng r;
         cvm__rng_seed(&r, stream_key(D->p->seed, sweep, (uint64_t)v));
@@ -376,23 +434,46 @@ static void solve_job(const dopt *D, job *J, uint64_t sweep)
     J->moved = 1;
 }
 
+static void rescore_star(dopt *D, const int32_t *star, size_t nstar);
+
 /* Apply a solved job: move the vertex, re-score its star and the triangles
- * across its outer edges. Serial, in batch order. */
-static void apply_job(dopt *D, const job *J)
+ * across its outer edges; in the max-min phase, undo a move that made a
+ * triangle non-compliant (then J->moved is 0). Serial, in batch order. */
+static void apply_job(dopt *D, job *J)
 {
     cvm__tri2 *T = D->T;
     const int32_t *star = D->star + J->star0;
-    size_t k;
-    int j;
+    size_t nc0 = D->nc;
+    double old[3];
     if (!J->moved)
         return;
+    old[0] = T->xy[2 * (size_t)J->v];
+    old[1] = T->xy[2 * (size_t)J->v + 1];
+    old[2] = T->w[J->v];
     T->xy[2 * (size_t)J->v] = J->p[0];
     T->xy[2 * (size_t)J->v + 1] = J->p[1];
     T->w[J->v] = J->w;
-    for (k = 0; k < J->nstar; k++)
+    rescore_star(D, star, J->nstar);
+    if (D->mm && D->nc > nc0) {
+        /* the max-min phase keeps every triangle compliant (exact test) */
+        T->xy[2 * (size_t)J->v] = old[0];
+        T->xy[2 * (size_t)J->v + 1] = old[1];
+        T->w[J->v] = old[2];
+        rescore_star(D, star, J->nstar);
+        J->moved = 0;
+    }
+}
+
+/* Power vertices and scores of the triangles of a star and of those across its outer edges. */
+static void rescore_star(dopt *D, const int32_t *star, size_t nstar)
+{
+    cvm__tri2 *T = D->T;
+    size_t k;
+    int j;
+    for (k = 0; k < nstar; k++)
         if (cvm__tri2_in_domain(T, star[k]))
             cvm__dual_tri_vertex(T, star[k], D->V + 2 * (size_t)star[k]);
-    for (k = 0; k < J->nstar; k++) {
+    for (k = 0; k < nstar; k++) {
         int32_t t = star[k];
         if (!cvm__tri2_in_domain(T, t))
             continue;
@@ -616,7 +697,7 @@ static size_t sweep_order(dopt *D, uint64_t sweep)
     size_t t, n = 0, nb, b;
     cvm__rng r;
     for (t = 0; t < T->nt; t++)
-        if (D->st[t] == 2 || D->weak[t])
+        if (D->st[t] == 2 || (D->weak[t] && !D->nc_only))
             D->list[n++] = (int32_t)t;
     sort_list(D->list, D->star, n, D->F, D->st);
     nb = n / 25 < 20 ? n / 25 : 20;
@@ -632,6 +713,55 @@ static size_t sweep_order(dopt *D, uint64_t sweep)
             D->list[k] = x;
         }
     }
+    return n;
+}
+
+/* Smallest sin^2 of an angle of triangle t (plain doubles). */
+static double tri_min_sin2(const cvm__tri2 *T, int32_t t)
+{
+    const int32_t *v = T->tv + 3 * (size_t)t;
+    double l2[3], c, m = 1.0;
+    int k;
+    const double *p0 = T->xy + 2 * (size_t)v[0], *p1 = T->xy + 2 * (size_t)v[1], *p2 = T->xy + 2 * (size_t)v[2];
+    c = (p1[0] - p0[0]) * (p2[1] - p0[1]) - (p1[1] - p0[1]) * (p2[0] - p0[0]);
+    for (k = 0; k < 3; k++) {
+        const double *a = T->xy + 2 * (size_t)v[(k + 1) % 3], *b = T->xy + 2 * (size_t)v[(k + 2) % 3];
+        l2[k] = sq(b[0] - a[0]) + sq(b[1] - a[1]);
+    }
+    for (k = 0; k < 3; k++) {
+        double s = c * c / (l2[(k + 1) % 3] * l2[(k + 2) % 3]);
+        m = s < m ? s : m;
+    }
+    return m;
+}
+
+/* Order of a max-min round into D->list: the domain triangles whose smallest
+ * angle is below the smallest over the mesh + MM_BAND_DEG (that smallest, in
+ * degrees, into D->mm_min), smallest first (ties by slot; the key is kept in
+ * D->F, which the phase does not otherwise read). Returns the length. */
+static size_t mm_order(dopt *D)
+{
+    cvm__tri2 *T = D->T;
+    size_t t, n = 0;
+    double m = 1.0, g;
+    for (t = 0; t < T->nt; t++) {
+        if (!cvm__tri2_in_domain(T, (int32_t)t))
+            continue;
+        D->F[t] = tri_min_sin2(T, (int32_t)t);
+        m = D->F[t] < m ? D->F[t] : m;
+    }
+    D->mm_min = asin(sqrt(m)) * (180.0 / 3.14159265358979323846);
+    g = D->mm_min + MM_BAND_DEG < 90.0 ? sin((D->mm_min + MM_BAND_DEG) * 3.14159265358979323846 / 180.0) : 1.0;
+    g *= g;
+    for (t = 0; t < T->nt; t++) {
+        const int32_t *tv = T->tv + 3 * t;
+        if (!cvm__tri2_in_domain(T, (int32_t)t) || !(D->F[t] < g) ||
+            (D->region_on && !D->region[tv[0]] && !D->region[tv[1]] && !D->region[tv[2]]))
+            continue;
+        D->F[t] = -D->F[t];
+        D->list[n++] = (int32_t)t;
+    }
+    sort_list(D->list, D->star, n, D->F, D->st);
     return n;
 }
 
@@ -715,7 +845,7 @@ static int batch_add(dopt *D, int32_t v, size_t *nb, size_t *used)
 static cvm_status sweep(dopt *D, uint64_t k, size_t *moved_out)
 {
     cvm__tri2 *T = D->T;
-    size_t n = sweep_order(D, k), i = 0, moved = 0;
+    size_t n = D->mm ? mm_order(D) : sweep_order(D, k), i = 0, moved = 0;
     cvm_status s = CVM_OK;
     memset(D->mark, 0, T->nv);
     while (i < n && !s) {
@@ -725,7 +855,7 @@ static cvm_status sweep(dopt *D, uint64_t k, size_t *moved_out)
         while (i < n && nb < BATCH && !closed) {
             int32_t t = D->list[i];
             int j;
-            if ((D->st[t] != 2 && !D->weak[t]) || !cvm__tri2_in_domain(T, t)) {
+            if ((!D->mm && D->st[t] != 2 && !D->weak[t]) || !cvm__tri2_in_domain(T, t)) {
                 i++;
                 continue;
             }
@@ -768,7 +898,7 @@ static double min_angle(const dopt *D);
 static cvm_status end_at_best(dopt *D, size_t best_nc, double best_min)
 {
     size_t v;
-    if (D->best_nv != D->T->nv || D->best_removed != D->rep->removed_vanished + D->rep->removed_degree)
+    if (D->best_nv != D->T->nv || D->best_removed != D->rep->removed_vanished + D->rep->removed_degree + D->rep->removed_maxmin)
         return CVM_OK;
     if (!(best_nc < D->nc || (best_nc == D->nc && best_min > min_angle(D) + BEST_EPS_DEG)))
         return CVM_OK;
@@ -819,8 +949,410 @@ static int keep_best(dopt *D, size_t *best_nc, double *best_min)
         D->best[3 * v + 2] = D->T->w[v];
     }
     D->best_nv = D->T->nv;
-    D->best_removed = D->rep->removed_vanished + D->rep->removed_degree;
+    D->best_removed = D->rep->removed_vanished + D->rep->removed_degree + D->rep->removed_maxmin;
     return 1;
+}
+
+/* The max-min-angle phase, once every triangle is compliant: rounds over the
+ * vertices of the triangles whose smallest angle is below the current
+ * smallest + MM_BAND_DEG, smallest first, each solving max over its degrees
+ * of freedom of its star's smallest angle with every star triangle kept
+ * compliant with a slack and dual edges kept long
+ * (cvm__dopt_eval_maxmin), the star regular (so no flip follows a move;
+ * restore() still runs as a safety net) and a move that made a triangle
+ * non-compliant (exact test) undone. The smallest angle never drops; the
+ * phase ends after p->maxmin_rounds rounds, a round that moves nothing, or
+ * MM_PATIENCE rounds without MM_PROGRESS_DEG gain. */
+/* The whole triangulation (and the caller's vertex map) before a removal
+ * trial: vertices are only removed and triangles only killed or flipped
+ * during a trial, so the arrays keep their capacity and copying back
+ * restores it exactly. */
+typedef struct snap {
+    double *xy, *w, *ta;
+    int32_t *vtri, *tv, *tn, *te, *vmap;
+    uint8_t *tf;
+    size_t nv, nt, n_dead, cap_nv, cap_nt;
+    int32_t free_head, last;
+    cvm__dual_opt_report rep;
+} snap;
+
+static void snap_free(cvm__ctx *ctx, snap *S)
+{
+    if (!S)
+        return;
+    cvm__free(ctx, S->xy);
+    cvm__free(ctx, S->w);
+    cvm__free(ctx, S->ta);
+    cvm__free(ctx, S->vtri);
+    cvm__free(ctx, S->tv);
+    cvm__free(ctx, S->tn);
+    cvm__free(ctx, S->te);
+    cvm__free(ctx, S->vmap);
+    cvm__free(ctx, S->tf);
+    cvm__free(ctx, S);
+}
+
+static cvm_status snap_take(dopt *D)
+{
+    cvm__tri2 *T = D->T;
+    cvm__ctx *ctx = T->ctx;
+    snap *S = D->snap;
+    size_t nv = T->nv, nt = T->nt;
+    if (S && (S->cap_nv < nv || S->cap_nt < nt)) {
+        snap_free(ctx, S);
+        D->snap = S = NULL;
+    }
+    if (!S) {
+        S = cvm__calloc(ctx, 1, sizeof *S);
+        if (!S)
+            return CVM_E_NOMEM;
+        D->snap = S; /* S->nv 0: nothing to go back to yet */
+        S->cap_nv = nv;
+        S->cap_nt = nt;
+        S->xy = cvm__malloc(ctx, (2 * nv + 1) * sizeof *S->xy);
+        S->w = cvm__malloc(ctx, (nv + 1) * sizeof *S->w);
+        S->vtri = cvm__malloc(ctx, (nv + 1) * sizeof *S->vtri);
+        S->tv = cvm__malloc(ctx, (3 * nt + 1) * sizeof *S->tv);
+        S->tn = cvm__malloc(ctx, (3 * nt + 1) * sizeof *S->tn);
+        S->tf = cvm__malloc(ctx, nt + 1);
+        S->te = T->te ? cvm__malloc(ctx, (3 * nt + 1) * sizeof *S->te) : NULL;
+        S->ta = T->ta ? cvm__malloc(ctx, (nt + 1) * sizeof *S->ta) : NULL;
+        S->vmap = D->topo ? cvm__malloc(ctx, (D->nv0 + 1) * sizeof *S->vmap) : NULL;
+        if (!S->xy || !S->w || !S->vtri || !S->tv || !S->tn || !S->tf || (T->te && !S->te) ||
+            (T->ta && !S->ta) || (D->topo && !S->vmap))
+            return CVM_E_NOMEM; /* D->snap is freed by the caller */
+    }
+    S->nv = nv;
+    S->nt = nt;
+    S->n_dead = T->n_dead;
+    S->free_head = T->free_head;
+    S->last = T->last;
+    S->rep = *D->rep;
+    memcpy(S->xy, T->xy, 2 * nv * sizeof *S->xy);
+    memcpy(S->w, T->w, nv * sizeof *S->w);
+    memcpy(S->vtri, T->vtri, nv * sizeof *S->vtri);
+    memcpy(S->tv, T->tv, 3 * nt * sizeof *S->tv);
+    memcpy(S->tn, T->tn, 3 * nt * sizeof *S->tn);
+    memcpy(S->tf, T->tf, nt);
+    if (T->te)
+        memcpy(S->te, T->te, 3 * nt * sizeof *S->te);
+    if (T->ta)
+        memcpy(S->ta, T->ta, nt * sizeof *S->ta);
+    if (D->topo)
+        memcpy(S->vmap, D->p->vmap, D->nv0 * sizeof *S->vmap);
+    return CVM_OK;
+}
+
+static void snap_back(dopt *D)
+{
+    cvm__tri2 *T = D->T;
+    const snap *S = D->snap;
+    size_t nt = S->nt, nv = S->nv;
+    double seconds = D->rep->seconds;
+    T->nv = nv;
+    T->nt = nt;
+    T->n_dead = S->n_dead;
+    T->free_head = S->free_head;
+    T->last = S->last;
+    *D->rep = S->rep;
+    D->rep->seconds = seconds;
+    memcpy(T->xy, S->xy, 2 * nv * sizeof *S->xy);
+    memcpy(T->w, S->w, nv * sizeof *S->w);
+    memcpy(T->vtri, S->vtri, nv * sizeof *S->vtri);
+    memcpy(T->tv, S->tv, 3 * nt * sizeof *S->tv);
+    memcpy(T->tn, S->tn, 3 * nt * sizeof *S->tn);
+    memcpy(T->tf, S->tf, nt);
+    if (T->te)
+        memcpy(T->te, S->te, 3 * nt * sizeof *S->te);
+    if (T->ta)
+        memcpy(T->ta, S->ta, nt * sizeof *S->ta);
+    if (D->topo)
+        memcpy(D->p->vmap, S->vmap, D->nv0 * sizeof *S->vmap);
+}
+
+static cvm_status mm_rounds(dopt *D, uint64_t k0, int rounds, size_t *best_nc, double *best_min,
+                                int *stalled);
+
+/* Mark in D->region the n vertices seed[] and RM_RINGS rings of neighbours
+ * around them (breadth first; D->list is the queue, D->star scratch). */
+static void mark_region(dopt *D, const int32_t *seed, size_t n)
+{
+    cvm__tri2 *T = D->T;
+    size_t head = 0, tail = 0, ring_end, i;
+    int ring;
+    memset(D->region, 0, T->nv);
+    for (i = 0; i < n; i++)
+        if (seed[i] >= 0 && !D->region[seed[i]]) {
+            D->region[seed[i]] = 1;
+            D->list[tail++] = seed[i];
+        }
+    for (ring = 0; ring < RM_RINGS; ring++) {
+        ring_end = tail;
+        while (head < ring_end) {
+            int32_t v = D->list[head++];
+            size_t ns = gather_star(D, v, D->star), k;
+            for (k = 0; k < ns; k++) {
+                const int32_t *tv = T->tv + 3 * (size_t)D->star[k];
+                int c;
+                for (c = 0; c < 3; c++)
+                    if (tv[c] != CVM__GHOST && !D->region[tv[c]]) {
+                        D->region[tv[c]] = 1;
+                        D->list[tail++] = tv[c];
+                    }
+            }
+        }
+    }
+}
+
+/* Number of domain triangles with an angle below deg degrees (plain doubles). */
+static size_t count_below(const dopt *D, double deg)
+{
+    const cvm__tri2 *T = D->T;
+    double g = sin(deg * 3.14159265358979323846 / 180.0);
+    size_t t, n = 0;
+    g *= g;
+    for (t = 0; t < T->nt; t++)
+        n += cvm__tri2_in_domain(T, (int32_t)t) && tri_min_sin2(T, (int32_t)t) < g;
+    return n;
+}
+
+/* Removal trials of the max-min phase (with p->topology and its vertex map):
+ * for the triangles within RM_BAND_DEG of the smallest angle, up to RM_TRIES
+ * removable Steiner vertices (cvm__dual_removable) - first the least-degree
+ * neighbour of each hub (see below), then the triangles' corners, highest
+ * degree first, lower index on ties; none at a position whose trial failed
+ * before (D->failed) - are removed one at a time; up to RM_SWEEPS sweeps over
+ * the non-compliant triangles make every triangle compliant again and up to
+ * RM_ROUNDS max-min rounds over RM_RINGS rings around the vertex follow. The
+ * result is kept when every triangle is compliant and the smallest angle
+ * rose by MM_PROGRESS_DEG, or did not drop and fewer triangles lie within
+ * MM_PROGRESS_DEG of it; else the triangulation goes back to its snapshot.
+ * Stops at the first kept trial (*kept_out 1). Deterministic: the order and
+ * the sweeps depend only on the mesh. */
+static cvm_status removal_trials(dopt *D, uint64_t k0, size_t *best_nc, double *best_min, int *kept_out)
+{
+    cvm__tri2 *T = D->T;
+    int32_t cand[RM_TRIES], nb[RM_MAXNB];
+    size_t n, i, nc = 0, t, cdeg[RM_TRIES], nnb = 0, nlow0;
+    double g, gmin = min_angle(D), target = D->sin2_target;
+    cvm_status s = CVM_OK;
+    *kept_out = 0;
+    if (!D->topo)
+        return CVM_OK;
+    g = sin((gmin + RM_BAND_DEG) * 3.14159265358979323846 / 180.0);
+    g *= g;
+    /* candidates: the removable Steiner neighbour of least degree of each hub
+     * (an interior vertex of RM_HUB_DEG or more triangles at the smallest
+     * angle of a worst triangle: it caps that angle at 360 / its degree),
+     * mark 2; the removable Steiner corners of the worst triangles, mark 1 */
+    memset(D->mark, 0, T->nv);
+    for (t = 0; t < T->nt; t++) {
+        const int32_t *tv = T->tv + 3 * t;
+        double l2[3];
+        int j, c = 0;
+        size_t ns;
+        if (!cvm__tri2_in_domain(T, (int32_t)t) || !(tri_min_sin2(T, (int32_t)t) < g))
+            continue;
+        for (j = 0; j < 3; j++) {
+            const double *p = T->xy + 2 * (size_t)tv[(j + 1) % 3], *q = T->xy + 2 * (size_t)tv[(j + 2) % 3];
+            l2[j] = sq(p[0] - q[0]) + sq(p[1] - q[1]);
+            c = l2[j] < l2[c] ? j : c; /* the smallest angle is opposite the shortest edge */
+            if (D->mark[tv[j]] < 1)
+                D->mark[tv[j]] = 1;
+        }
+        if (D->vbnd[tv[c]] || (ns = gather_star(D, tv[c], D->star)) < RM_HUB_DEG)
+            continue;
+        {
+            int32_t best = -1;
+            size_t bdeg = 0, q;
+            for (q = 0; q < ns; q++) {
+                const int32_t *sv = T->tv + 3 * (size_t)D->star[q];
+                int e;
+                for (e = 0; e < 3; e++) {
+                    int32_t x = sv[e];
+                    size_t dx;
+                    if (x == CVM__GHOST || x == tv[c] || (size_t)x < D->p->n_input ||
+                        !cvm__dual_removable(T, x, &dx))
+                        continue;
+                    if (best < 0 || dx < bdeg || (dx == bdeg && x < best)) {
+                        best = x;
+                        bdeg = dx;
+                    }
+                }
+            }
+            if (best >= 0)
+                D->mark[best] = 2;
+        }
+    }
+    for (i = D->p->n_input; i < T->nv; i++) {
+        size_t deg, q, f;
+        if (!D->mark[i] || !cvm__dual_removable(T, (int32_t)i, &deg))
+            continue;
+        for (f = 0; f < D->nfailed; f++)
+            if (D->failed[2 * f] == T->xy[2 * i] && D->failed[2 * f + 1] == T->xy[2 * i + 1])
+                break;
+        if (f < D->nfailed)
+            continue; /* tried at this very position before, and failed */
+        /* keep the RM_TRIES best: mark 2 before 1, then the higher degree, then
+         * the lower index (earlier in this loop) */
+        for (q = nc; q > 0 && (D->mark[cand[q - 1]] < D->mark[i] ||
+                               (D->mark[cand[q - 1]] == D->mark[i] && cdeg[q - 1] < deg)); q--)
+            if (q < RM_TRIES) {
+                cand[q] = cand[q - 1];
+                cdeg[q] = cdeg[q - 1];
+            }
+        if (q < RM_TRIES) {
+            cand[q] = (int32_t)i;
+            cdeg[q] = deg;
+            nc += nc < RM_TRIES;
+        }
+    }
+    nlow0 = count_below(D, gmin + MM_PROGRESS_DEG);
+    /* trials aim at the target the caller set, not at a raised one */
+    D->sin2_target = sin(D->p->target_angle_deg * 3.14159265358979323846 / 180.0);
+    D->sin2_target *= D->sin2_target;
+    for (n = 0; n < nc && !s; n++) {
+        size_t k, moved;
+        int stalled;
+        double mn;
+        if ((s = snap_take(D)))
+            break;
+        {
+            /* its neighbours, to seed the region of the trial's rounds */
+            size_t ns = gather_star(D, cand[n], D->star), q;
+            nnb = 0;
+            for (q = 0; q < ns && nnb < RM_MAXNB; q++) {
+                const int32_t *tv = T->tv + 3 * (size_t)D->star[q];
+                int c;
+                for (c = 0; c < 3; c++)
+                    if (tv[c] != CVM__GHOST && tv[c] != cand[n] && nnb < RM_MAXNB)
+                        nb[nnb++] = tv[c];
+            }
+        }
+        if (!cvm__dual_remove_vertex(T, cand[n], -1))
+            continue;
+        D->gone[cand[n]] = 1;
+        D->rep->removed_maxmin++;
+        compact(D);
+        for (i = 0; i < nnb; i++)
+            nb[i] = D->map2[nb[i]];
+        if ((s = restore(D)))
+            break;
+        for (k = 0; k < RM_SWEEPS && !s; k++) {
+            if ((s = sizes(D)))
+                break;
+            boundary_flags(D);
+            cvm__dual_layers(T, D->vbnd, D->layer, D->list);
+            score_all(D);
+            if (!D->nc)
+                break;
+            D->nc_only = 1;
+            s = sweep(D, k0 + 1000 * (n + 1) + k, &moved);
+            D->nc_only = 0;
+            if (s || (s = restore(D)))
+                break;
+        }
+        if (s)
+            break;
+        score_all(D);
+        if (!D->nc) {
+            mark_region(D, nb, nnb);
+            D->region_on = 1;
+            s = mm_rounds(D, k0 + 1000 * (n + 1) + 100, RM_ROUNDS, NULL, NULL, &stalled);
+            D->region_on = 0;
+            if (s)
+                break;
+            score_all(D);
+        }
+        mn = D->nc ? -1.0 : min_angle(D);
+        if (mn > gmin + MM_PROGRESS_DEG || (mn >= gmin && count_below(D, gmin + MM_PROGRESS_DEG) < nlow0)) {
+            *best_nc = (size_t)-1; /* the old best had other vertices */
+            keep_best(D, best_nc, best_min);
+            *kept_out = 1;
+            break;
+        }
+        snap_back(D);
+        if (D->nfailed < RM_FAILED) {
+            D->failed[2 * D->nfailed] = T->xy[2 * (size_t)cand[n]];
+            D->failed[2 * D->nfailed + 1] = T->xy[2 * (size_t)cand[n] + 1];
+            D->nfailed++;
+        }
+        if ((s = sizes(D)))
+            break;
+        boundary_flags(D);
+        score_all(D);
+    }
+    if (s && n < nc && D->snap && D->snap->nv) {
+        /* out of memory or stopped inside a trial: back to its regular start */
+        snap_back(D);
+        score_all(D);
+    }
+    D->sin2_target = target;
+    return s;
+}
+
+/* Up to rounds max-min rounds (see maxmin_phase); with best_nc, keep_best
+ * follows the last. Moves keep every triangle compliant and the
+ * triangulation regular, and no star's smallest angle drops, so the
+ * per-triangle state is kept up to date by the moves alone and one restore()
+ * at the end is only a safety net. *stalled: 1 when the rounds ended because
+ * a round moved nothing or MM_PATIENCE rounds gained less than
+ * MM_PROGRESS_DEG. Needs sizes, boundary flags and scores up to date. */
+static cvm_status mm_rounds(dopt *D, uint64_t k0, int rounds, size_t *best_nc, double *best_min,
+                                int *stalled)
+{
+    cvm_status s = CVM_OK;
+    int r, stall = 0;
+    double last = -1.0;
+    *stalled = 0;
+    for (r = 0; r < rounds && !D->nc; r++) {
+        size_t moved = 0;
+        D->mm = 1;
+        s = sweep(D, k0 + (uint64_t)r, &moved); /* its order (mm_order) sets D->mm_min */
+        D->mm = 0;
+        D->rep->moves += moved;
+        D->rep->maxmin_rounds++;
+        if (s)
+            break;
+        if (D->mm_min > last + MM_PROGRESS_DEG) {
+            last = D->mm_min;
+            stall = 0;
+        } else if (++stall >= MM_PATIENCE) {
+            *stalled = 1;
+            break;
+        }
+        if (!moved) {
+            *stalled = 1;
+            break;
+        }
+    }
+    D->mm = 0;
+    if (!s && !(s = restore(D))) {
+        score_all(D);
+        if (best_nc)
+            keep_best(D, best_nc, best_min);
+    }
+    return s;
+}
+
+static cvm_status maxmin_phase(dopt *D, uint64_t k0, size_t *best_nc, double *best_min)
+{
+    cvm_status s;
+    int calls, stalled = 0, kept = 1;
+    if ((s = sizes(D)))
+        return s;
+    boundary_flags(D);
+    score_all(D);
+    if (D->nc)
+        return CVM_OK;
+    if ((s = mm_rounds(D, k0, D->p->maxmin_rounds, best_nc, best_min, &stalled)) || !stalled)
+        return s;
+    /* a kept trial's rounds already ran to a stall around it, and the rest
+     * of the mesh did before: the next trials follow at once */
+    for (calls = 0; calls < RM_CALLS && kept && !s; calls++)
+        s = removal_trials(D, k0 + (uint64_t)D->p->maxmin_rounds + 100000 * (uint64_t)calls, best_nc,
+                           best_min, &kept);
+    return s;
 }
 
 static cvm_status run(dopt *D)
@@ -911,7 +1443,15 @@ static cvm_status run(dopt *D)
             }
         }
     }
-    return end_at_best(D, best_nc, best_min);
+    if ((s = end_at_best(D, best_nc, best_min)))
+        return s;
+    if (p->maxmin_rounds > 0 && p->max_sweeps > 0 && !D->nc) {
+        score_all(D);
+        if (!D->nc && (s = maxmin_phase(D, k, &best_nc, &best_min)))
+            return s;
+        return end_at_best(D, best_nc, best_min);
+    }
+    return CVM_OK;
 }
 
 cvm_status cvm__dual_optimise(cvm__tri2 *T, const cvm__dual_opt_params *p, cvm__dual_opt_report *rep)
@@ -971,6 +1511,7 @@ cvm_status cvm__dual_optimise(cvm__tri2 *T, const cvm__dual_opt_params *p, cvm__
     D.best = cvm__malloc(ctx, (3 * nv + 1) * sizeof *D.best);
     D.jobs = cvm__malloc(ctx, BATCH * sizeof *D.jobs);
     D.stamp = cvm__calloc(ctx, nv + 1, sizeof *D.stamp);
+    D.region = cvm__calloc(ctx, nv + 1, 1);
     D.topo = p->topology && p->vmap;
     if (D.topo) {
         D.gone = cvm__calloc(ctx, nv + 1, 1);
@@ -978,7 +1519,7 @@ cvm_status cvm__dual_optimise(cvm__tri2 *T, const cvm__dual_opt_params *p, cvm__
         D.map2 = cvm__malloc(ctx, (nv + 1) * sizeof *D.map2);
     }
     if (!D.vsize || !D.vbnd || !D.mark || !D.V || !D.F || !D.st || !D.weak || !D.layer || !D.list || !D.star || !D.save || !D.best || !D.jobs ||
-        !D.stamp || (D.topo && (!D.gone || !D.dup || !D.map2)))
+        !D.stamp || !D.region || (D.topo && (!D.gone || !D.dup || !D.map2)))
         s = CVM_E_NOMEM;
     else
         s = run(&D);
@@ -1002,9 +1543,11 @@ cvm_status cvm__dual_optimise(cvm__tri2 *T, const cvm__dual_opt_params *p, cvm__
     cvm__free(ctx, D.best);
     cvm__free(ctx, D.jobs);
     cvm__free(ctx, D.stamp);
+    cvm__free(ctx, D.region);
     cvm__free(ctx, D.gone);
     cvm__free(ctx, D.dup);
     cvm__free(ctx, D.map2);
+    snap_free(ctx, D.snap);
     rep->seconds = cvm__now() - t0;
     return s;
 }

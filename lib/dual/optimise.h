@@ -19,6 +19,9 @@
 
 #define CVM__DOPT_MAXDOF 3
 
+/* Stars larger than this are not solved by the max-min-angle phase. */
+#define CVM__DOPT_MM_MAXSTAR 48
+
 typedef struct cvm__dopt_local {
     const cvm__tri2 *T;
     int32_t v;
@@ -33,7 +36,17 @@ typedef struct cvm__dopt_local {
     double sin2_target;    /* angles below this are penalised */
     double margin;         /* fraction of each edge the power vertex should keep inside */
     size_t evals;          /* evaluations so far */
+    /* max-min-angle phase (see cvm__dopt_eval_maxmin): */
+    int maxmin;            /* 1: cvm__dopt_eval is cvm__dopt_eval_maxmin */
+    double slack_bound;    /* smallest containment slack a candidate may leave */
+    double dual_bound;     /* smallest dual/primal edge ratio a candidate may leave */
+    double mm_m0;          /* smallest sin^2 of the star at the start: never less */
+    int vnb_ok;            /* 1: vnb holds the power vertices across the star's edges */
+    double vnb[6 * CVM__DOPT_MM_MAXSTAR]; /* per star triangle and edge: the power vertex of
+                                             the domain triangle across when it is not in the
+                                             star (it does not move with v) */
 } cvm__dopt_local;
+
 
 /* Position and weight of v at scaled offset u into p[2], *w. */
 void cvm__dopt_point(const cvm__dopt_local *L, const double *u, double *p, double *w);
@@ -43,6 +56,32 @@ void cvm__dopt_point(const cvm__dopt_local *L, const double *u, double *p, doubl
  * domain triangle, or the power cell of v empty inside its star), else the
  * penalty sum over the domain triangles of the star. Counts an evaluation. */
 double cvm__dopt_eval(cvm__dopt_local *L, const double *u);
+
+/* The max-min-angle objective at u: HUGE_VAL when a star triangle would not
+ * be strictly counter-clockwise (exact orient2d), an unconstrained edge of the
+ * star or of its outline would fail the exact power test (so the star stays
+ * regular and no flip follows the move), the power vertex of a domain
+ * triangle would keep less than slack_bound x an edge's length inside that
+ * edge, or a dual edge across an edge of the star between two domain
+ * triangles would be shorter than dual_bound x that edge; else minus the
+ * smallest sin^2 of an angle of the star's domain triangles, minus a small
+ * multiple of the smallest containment slack (so a weight move that makes
+ * room counts). Counts an evaluation. With slack_out (may be NULL) the
+ * measured smallest slack and dual ratio are written to slack_out[0..1] and
+ * the bounds are not applied. */
+double cvm__dopt_eval_maxmin(cvm__dopt_local *L, const double *u, double *slack_out);
+
+/* Fill L->vnb (the power vertices across the star's outer edges, which no
+ * candidate of v moves) and set L->vnb_ok; stars above CVM__DOPT_MM_MAXSTAR
+ * are left alone. */
+void cvm__dopt_maxmin_cache(cvm__dopt_local *L);
+
+/* The position solver of the max-min-angle phase (L->maxmin set, ndof 2 or
+ * 3): Freitag's active-set ascent on the sines of the angles of the star's
+ * domain triangles, weight unchanged, every step checked by cvm__dopt_eval
+ * (exact orientation and regularity, the bounds); from u = 0 with value f0,
+ * the best point into u and its value into *f. */
+void cvm__dopt_maxmin_active(cvm__dopt_local *L, double f0, double *u, double *f);
 
 /* Smallest sin^2 of an angle over the domain triangles of the star at u = 0. */
 double cvm__dopt_star_min_sin2(const cvm__dopt_local *L);
