@@ -614,7 +614,7 @@ typedef enum cvm_option {
      *  CVM_OPT_DUAL_TOPOLOGY >= 1 (ignored with 0). Deterministic. */
     CVM_OPT_DUAL_PREPASS = 510,
     /** Rounds of the max-min-angle phase of cvm_mesh_optimise_dual(), integer,
-     *  default 30, bounds [0, 10000]; 0: no such phase (nor with
+     *  default 10, bounds [0, 10000]; 0: no such phase (nor with
      *  CVM_OPT_DUAL_MAX_SWEEPS 0). Once every triangle is
      *  compliant, each round visits the vertices of the triangles within 2 degrees
      *  of the smallest angle (smallest first) and maximises the smallest angle of
@@ -626,28 +626,32 @@ typedef enum cvm_option {
      *  its primal edge, and the star's smallest angle does not drop; a move that
      *  makes a triangle non-compliant (exact test) is undone. The rounds end at
      *  this count, when a round moves nothing, or after 3 rounds gaining less
-     *  than 0.01 degree. Then, with CVM_OPT_DUAL_TOPOLOGY >= 1, removal trials
-     *  for the triangles within 0.5 degree of the smallest angle: up to 8
-     *  removable Steiner vertices (first the least-degree neighbour of each hub,
-     *  an interior vertex of 8 or more triangles holding such a smallest angle,
-     *  which caps it at 360 / its degree; then the triangles' corners, highest
-     *  degree first) are removed one at a time on a copy of the state; sweeps
-     *  over the non-compliant triangles and up to 15 rounds over 4 rings around
-     *  the vertex follow, and the trial is kept when every triangle is compliant
-     *  and the smallest angle rose, or did not drop and fewer triangles lie
-     *  within 0.01 degree of it; else the copy comes back and that position is
-     *  not tried again. Up to 8 such calls while one keeps a trial; removals in
-     *  CVM_MEASURE_DUAL_OPT_REMOVED_MAXMIN. Deterministic. Measured
-     *  (tests/bench/bench_dual.py, one thread; smallest angle with 0 -> with
-     *  30, frontal / Delaunay start meshes): square 40.0 -> 45.0 / 36.5 -> 39.4,
-     *  channel 40.4 -> 45.0 / 39.1 -> 41.2, annulus 40.0 -> 47.0 / 33.9 -> 40.2,
-     *  cylinder 37.9 -> 41.2 / 37.4 -> 39.8, NACA 0012 30.1 -> 33.9 / 30.3 ->
-     *  33.0; still 0% non-compliant and 0% merged everywhere, smallest dual edge
-     *  over primal edge >= 0.151 (0.18-0.35 on the frontal meshes); optimisation
-     *  time of the frontal NACA 0012 (43k triangles) 0.31 -> 0.64 s, of the
-     *  64k-triangle frontal square 0.76 -> 1.70 s, of the 37k-triangle Delaunay
-     *  square 1.39 -> 2.33 s. */
+     *  than 0.01 degree; removal trials (CVM_OPT_DUAL_MAXMIN_TRIALS) may follow.
+     *  Deterministic. Measured (tests/bench/bench_dual.py, one thread; see the
+     *  README for the table): from the frontal meshes the smallest angle reaches
+     *  45 degrees on the square and channel and 45-47 on the annulus (40.0-40.4
+     *  with 0); 30 rounds instead of 10 changed no frontal result and cost the
+     *  37k-triangle Delaunay square 0.07 s more (1.91 -> 1.98 s). */
     CVM_OPT_DUAL_MAXMIN_ROUNDS = 511,
+    /** Removal-trial calls after the max-min rounds of cvm_mesh_optimise_dual(),
+     *  integer, default 0 (none), bounds [0, 64]; needs CVM_OPT_DUAL_TOPOLOGY >= 1
+     *  and CVM_OPT_DUAL_MAXMIN_ROUNDS >= 1. Each call tries removal for the
+     *  triangles within 0.5 degree of the smallest angle: up to 8 removable
+     *  Steiner vertices (first the least-degree neighbour of each hub, an interior
+     *  vertex of 8 or more triangles holding such a smallest angle, which caps it
+     *  at 360 / its degree; then the triangles' corners, highest degree first) are
+     *  removed one at a time on a copy of the state; sweeps over the non-compliant
+     *  triangles and up to 15 rounds over 4 rings around the vertex follow, and the
+     *  trial is kept when every triangle is compliant and the smallest angle rose,
+     *  or did not drop and fewer triangles lie within 0.01 degree of it; else the
+     *  copy comes back and that position is not tried again. A call that keeps a
+     *  trial is followed by the next, up to this count; removals are counted in
+     *  CVM_MEASURE_DUAL_OPT_REMOVED_MAXMIN. Deterministic. Measured (bench_dual, one
+     *  thread, 8 calls against 0): frontal cylinder 37.7 -> 39.6 degrees at 2.5x
+     *  the optimisation time (0.23 -> 0.58 s); Delaunay NACA 0012 36.1 -> 37.9 at
+     *  1.4 -> 2.4 s and the 37k-triangle Delaunay square 1.9 -> 2.4 s, over the
+     *  2 s budget of issue 6 - hence off by default. */
+    CVM_OPT_DUAL_MAXMIN_TRIALS = 512,
     /** Merge tolerance, a fraction of the local ideal dual edge l / sqrt(3), default
      *  0.1, bounds [0, 1]; 0 merges nothing. l at an edge is the mean of the local
      *  sizes of its two ends, each the mean length of the vertex's edges (taken from
@@ -1435,7 +1439,8 @@ CVM_API cvm_status cvm_mesh_copy_dual_merge_groups(cvm_index *dst, size_t dst_le
  * positions and weights and their regular triangulation. When that state is
  * compliant, the max-min-angle phase of CVM_OPT_DUAL_MAXMIN_ROUNDS follows (it
  * keeps every triangle compliant and never lowers the smallest angle; its
- * removal trials may remove Steiner vertices, renumbered as above). The
+ * removal trials, CVM_OPT_DUAL_MAXMIN_TRIALS, may remove Steiner vertices,
+ * renumbered as above). The
  * report of the run is CVM_MEASURE_DUAL_OPT_*.
  *
  * @param m       mesh handle, triangulated; not NULL. Existing weights are the start.

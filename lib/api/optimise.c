@@ -106,6 +106,7 @@ cvm_status cvm_mesh_optimise_dual(cvm_mesh *m, const cvm_sizing *sizing)
     p.topology = (int)cvm__opt(m, CVM_OPT_DUAL_TOPOLOGY);
     p.prepass = (int)cvm__opt(m, CVM_OPT_DUAL_PREPASS);
     p.maxmin_rounds = (int)cvm__opt(m, CVM_OPT_DUAL_MAXMIN_ROUNDS);
+    p.maxmin_trials = (int)cvm__opt(m, CVM_OPT_DUAL_MAXMIN_TRIALS);
     nv0 = m->tri.nv;
     if (p.topology) {
         vmap = cvm__malloc(&m->ctx, (nv0 + 1) * sizeof *vmap);

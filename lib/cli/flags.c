@@ -55,6 +55,8 @@ static const cli_option_flag k_flags[] = {
      "the dual optimiser moves no input point (only its weight)"},
     {"--merge-tol", "F", CVM_OPT_DUAL_MERGE_TOL, 0, OPT,
      "merge triangles whose dual edge is below F x l/sqrt(3) (default 0.1)"},
+    {"--maxmin-trials", "N", CVM_OPT_DUAL_MAXMIN_TRIALS, 0, OPT,
+     "dual optimiser: removal-trial calls after the max-min rounds (default 0: none)"},
     {"--maxmin-rounds", "N", CVM_OPT_DUAL_MAXMIN_ROUNDS, 0, OPT,
      "rounds of the dual optimiser's final max-min-angle phase (0: none; default 30)"},
 };

@@ -118,6 +118,7 @@ typedef struct cvm__dual_opt_params {
                                order by cvm__tri2_compact) */
     int prepass;            /* CVM_OPT_DUAL_PREPASS: run cvm__dual_prepass first (needs vmap) */
     int maxmin_rounds;      /* CVM_OPT_DUAL_MAXMIN_ROUNDS: rounds of the max-min-angle phase */
+    int maxmin_trials;      /* CVM_OPT_DUAL_MAXMIN_TRIALS: removal-trial calls after them */
     cvm__dual_size_fn size_fn; /* NULL: sizes from the mesh (cvm__dual_mesh_sizes) */
     void *size_payload;
 } cvm__dual_opt_params;

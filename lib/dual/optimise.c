@@ -37,7 +37,8 @@
  * every triangle kept compliant: rounds of per-vertex max-min solves under
  * constraints that keep the star regular (so no flip follows and the
  * per-triangle state is kept up to date by the moves), then removal trials on
- * a snapshot of the whole triangulation (see CVM_OPT_DUAL_MAXMIN_ROUNDS in
+ * a snapshot of the whole triangulation when CVM_OPT_DUAL_MAXMIN_TRIALS asks
+ * (see CVM_OPT_DUAL_MAXMIN_ROUNDS and _TRIALS in
  * cvmesh.h for the rules and the measured effect).
  *
  * Parallel and deterministic: the order above is cut into batches of vertices
@@ -75,7 +76,6 @@
 #define MM_PATTERN_BUDGET 20 /* max-min phase: compass evaluations after the active-set ascent */
 #define RM_BAND_DEG 0.5   /* removal trials: corners of triangles below the smallest angle + this */
 #define RM_TRIES 8        /* removal trials: at most this many per call */
-#define RM_CALLS 8        /* removal trials: calls per phase (each after a kept trial) */
 #define RM_SWEEPS 8       /* removal trials: penalty sweeps to regain compliance */
 #define RM_ROUNDS 15      /* removal trials: max-min rounds before a trial is judged */
 #define RM_FAILED 64      /* removal trials: failed positions remembered (not tried again) */
@@ -1349,7 +1349,7 @@ static cvm_status maxmin_phase(dopt *D, uint64_t k0, size_t *best_nc, double *be
         return s;
     /* a kept trial's rounds already ran to a stall around it, and the rest
      * of the mesh did before: the next trials follow at once */
-    for (calls = 0; calls < RM_CALLS && kept && !s; calls++)
+    for (calls = 0; calls < D->p->maxmin_trials && kept && !s; calls++)
         s = removal_trials(D, k0 + (uint64_t)D->p->maxmin_rounds + 100000 * (uint64_t)calls, best_nc,
                            best_min, &kept);
     return s;

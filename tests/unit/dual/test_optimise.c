@@ -417,6 +417,48 @@ START_TEST(maxmin_phase_raises_the_smallest_angle_and_keeps_compliance)
 }
 END_TEST
 
+/* Removal trials (CVM_OPT_DUAL_MAXMIN_TRIALS, off by default) on a Delaunay
+ * start mesh, where the rounds alone stall: every triangle stays compliant
+ * (independent test), the triangulation regular, the vertex count drops by
+ * exactly the reported removals, and the smallest angle is never below the
+ * one without trials (a trial is kept only if it does not lower it). */
+START_TEST(maxmin_removal_trials_keep_compliance_and_never_lower_the_angle)
+{
+    double amin[2], ratio[2];
+    int with;
+    for (with = 0; with <= 1; with++) {
+        cvm_mesh *m = refined(CVM_ALGO_DELAUNAY, 0.05);
+        dtest_mesh d0, d;
+        indep r;
+        size_t t;
+        cvm_bounds b;
+        dtest_get(m, &d0);
+        ck_assert_int_eq(cvm_option_bounds(&b, CVM_OPT_DUAL_MAXMIN_TRIALS), CVM_OK);
+        ck_assert(b.lo == 0 && b.hi == 64 && b.def == 0 && b.is_integer);
+        ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_DUAL_MAXMIN_TRIALS, with ? 8 : 0), CVM_OK);
+        ck_assert_msg(cvm_mesh_optimise_dual(m, NULL) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+        ck_assert_msg(cvm_mesh_check(m) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+        dtest_get(m, &d);
+        ck_assert_uint_eq(d.nv + (size_t)measure(m, CVM_MEASURE_DUAL_OPT_REMOVED_VANISHED) +
+                              (size_t)measure(m, CVM_MEASURE_DUAL_OPT_REMOVED_MAXMIN),
+                          d0.nv);
+        if (!with)
+            ck_assert_double_eq(measure(m, CVM_MEASURE_DUAL_OPT_REMOVED_MAXMIN), 0.0);
+        ck_assert_uint_eq(dtest_power_violations(&d, d.w), 0);
+        independent(&d, 0.1, &r);
+        for (t = 0; t < d.nt; t++)
+            ck_assert_msg(!r.noncompliant[t], "triangle %zu: power vertex outside and not merged", t);
+        angle_and_dual_ratio(&d, &amin[with], &ratio[with]);
+        ck_assert_double_ge(ratio[with], 0.15);
+        indep_free(&r);
+        dtest_free(&d0);
+        dtest_free(&d);
+        cvm_mesh_free(m);
+    }
+    ck_assert_double_ge(amin[1], amin[0] - 1e-9);
+}
+END_TEST
+
 /* A Steiner vertex given a weight so low that its power cell vanishes is
  * removed by the optimiser (reported), not kept by raising its weight: the
  * vertex count drops by the reported number, input points and segments stay,
@@ -590,6 +632,7 @@ TCase *dual_optimise_tcase(void)
     tcase_add_test(tc, same_seed_gives_same_bytes_for_1_2_4_threads_cuckoo);
     tcase_add_test(tc, layer_priority_changes_the_order_deterministically);
     tcase_add_test(tc, maxmin_phase_raises_the_smallest_angle_and_keeps_compliance);
+    tcase_add_test(tc, maxmin_removal_trials_keep_compliance_and_never_lower_the_angle);
     tcase_add_test(tc, vanished_steiner_vertex_is_removed_and_reported);
     tcase_add_test(tc, topology_0_keeps_every_vertex);
     tcase_add_test(tc, optimise_rejects_null_untriangulated_and_bad_sizing);
