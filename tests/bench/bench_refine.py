@@ -98,7 +98,7 @@ def quality(xy, tri, h):
                 edge=float(lens.mean()))
 
 
-def run_cvmesh(poly, h, algo, tmp, smooth_method=None, resample=False):
+def run_cvmesh(poly, h, algo, tmp, smooth_method=None, resample=False, reps=None):
     env = dict(os.environ)
     env.pop("CVM_BENCH_SMOOTH_METHOD", None)
     env.pop("CVM_BENCH_RESAMPLE", None)
@@ -106,7 +106,7 @@ def run_cvmesh(poly, h, algo, tmp, smooth_method=None, resample=False):
         env["CVM_BENCH_SMOOTH_METHOD"] = str(smooth_method)
     if resample:
         env["CVM_BENCH_RESAMPLE"] = "1"
-    out = subprocess.run([DRIVER, poly, str(h), str(algo), str(REPS), os.path.join(tmp, "m")],
+    out = subprocess.run([DRIVER, poly, str(h), str(algo), str(reps or REPS), os.path.join(tmp, "m")],
                          capture_output=True, text=True, env=env)
     if out.returncode:
         raise SystemExit("bench_refine: cvmesh failed on %s: %s" % (poly, out.stderr))
@@ -116,7 +116,7 @@ def run_cvmesh(poly, h, algo, tmp, smooth_method=None, resample=False):
     return t, xy, tri
 
 
-def run_triangle(poly, h, area_scale=1.0):
+def run_triangle(poly, h, area_scale=1.0, reps=None):
     """Triangle pq30a<A>, A = area_scale x sqrt(3)/4 h^2; for the graded annulus
     (h < 0), pq30 at the largest size then -rpq30a with per-triangle bounds from
     the size at each centroid until none is exceeded (at most 12 passes)."""
@@ -126,7 +126,7 @@ def run_triangle(poly, h, area_scale=1.0):
     if len(holes):
         a["holes"] = holes
     ts, t = [], None
-    for _ in range(REPS):
+    for _ in range(reps or REPS):
         t0 = time.perf_counter()
         if h > 0:
             t = triangle.triangulate(a, "pq30a%.12f" % (area_scale * np.sqrt(3) / 4 * h * h))
@@ -251,7 +251,8 @@ def run_1e6(shared, tmp):
 
 def main():
     build_driver()
-    print("# bench_refine: uniform size h; time = median of %d runs (triangulate + refine), one core" % REPS)
+    print("# bench_refine: uniform size h; time = median of %d runs (triangulate + refine), one core; "
+          "Triangle and the cvmesh refiners interleaved run by run" % REPS)
     print("%-9s %-5s %-9s %7s %7s %9s %8s %7s %6s %6s %6s %6s" %
           ("case", "h", "mesher", "verts", "tris", "time_s", "us/tri", "minang", "%55-65", "%obt",
            "%deg6", "edge/h"))
@@ -268,12 +269,24 @@ def main():
         for name, h in CASES:
             poly = os.path.join(SHARED, "data", name.split("-")[0] + ".poly")
             rows = []
-            try:
-                rows.append(("triangle",) + run_triangle(poly, h))
-            except ImportError:
-                print("# Triangle (pip triangle) not installed: skipped")
-            for algo, label in ((1, "cvm-del"), (2, "cvm-front"), (3, "cvm-aflr")):
-                rows.append((label,) + run_cvmesh(poly, h, algo, tmp))
+            # Triangle and the three cvmesh refiners run interleaved, one run each
+            # per round, so that drift of the machine's speed hits all alike;
+            # each time is the median over the rounds (the meshes are identical)
+            runs = {}
+            have_triangle = True
+            for _ in range(REPS):
+                if have_triangle:
+                    try:
+                        runs.setdefault("triangle", []).append(run_triangle(poly, h, reps=1))
+                    except ImportError:
+                        print("# Triangle (pip triangle) not installed: skipped")
+                        have_triangle = False
+                for algo, label in ((1, "cvm-del"), (2, "cvm-front"), (3, "cvm-aflr")):
+                    runs.setdefault(label, []).append(run_cvmesh(poly, h, algo, tmp, reps=1))
+            for label in ("triangle", "cvm-del", "cvm-front", "cvm-aflr"):
+                if label in runs:
+                    ts = sorted(r[0] for r in runs[label])
+                    rows.append((label, ts[len(ts) // 2]) + tuple(runs[label][-1][1:]))
             if h < 0:
                 # the thesis case: input polylines at 0.1/0.2 spacing against sizes
                 # 0.4-1.6; -rs rows re-discretise them (CVM_OPT_KEEP_SEGMENT_VERTICES = 0)
