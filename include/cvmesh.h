@@ -614,7 +614,7 @@ typedef enum cvm_option {
      *  CVM_OPT_DUAL_TOPOLOGY >= 1 (ignored with 0). Deterministic. */
     CVM_OPT_DUAL_PREPASS = 510,
     /** Rounds of the max-min-angle phase of cvm_mesh_optimise_dual(), integer,
-     *  default 10, bounds [0, 10000]; 0: no such phase (nor with
+     *  default 5, bounds [0, 10000]; 0: no such phase (nor with
      *  CVM_OPT_DUAL_MAX_SWEEPS 0). Once every triangle is
      *  compliant, each round visits the vertices of the triangles within 2 degrees
      *  of the smallest angle (smallest first) and maximises the smallest angle of
@@ -630,8 +630,10 @@ typedef enum cvm_option {
      *  Deterministic. Measured (tests/bench/bench_dual.py, one thread; see the
      *  README for the table): from the frontal meshes the smallest angle reaches
      *  45 degrees on the square and channel and 45-47 on the annulus (40.0-40.4
-     *  with 0); 30 rounds instead of 10 changed no frontal result and cost the
-     *  37k-triangle Delaunay square 0.07 s more (1.91 -> 1.98 s). */
+     *  with 0); 10 rounds instead of 5 move the frontal results by at most 0.3
+     *  degree (NACA 0012 37.8 -> 38.1) and cost the 37k-triangle Delaunay square
+     *  0.23 s more (1.74 -> 1.97 s, against issue 6's 2 s for refinement and
+     *  optimisation of about 4e4 triangles). */
     CVM_OPT_DUAL_MAXMIN_ROUNDS = 511,
     /** Removal-trial calls after the max-min rounds of cvm_mesh_optimise_dual(),
      *  integer, default 0 (none), bounds [0, 64]; needs CVM_OPT_DUAL_TOPOLOGY >= 1
@@ -646,11 +648,13 @@ typedef enum cvm_option {
      *  or did not drop and fewer triangles lie within 0.01 degree of it; else the
      *  copy comes back and that position is not tried again. A call that keeps a
      *  trial is followed by the next, up to this count; removals are counted in
-     *  CVM_MEASURE_DUAL_OPT_REMOVED_MAXMIN. Deterministic. Measured (bench_dual, one
-     *  thread, 8 calls against 0): frontal cylinder 37.7 -> 39.6 degrees at 2.5x
-     *  the optimisation time (0.23 -> 0.58 s); Delaunay NACA 0012 36.1 -> 37.9 at
-     *  1.4 -> 2.4 s and the 37k-triangle Delaunay square 1.9 -> 2.4 s, over the
-     *  2 s budget of issue 6 - hence off by default. */
+     *  CVM_MEASURE_DUAL_OPT_REMOVED_MAXMIN. The trials follow the rounds whether
+     *  or not those stalled. Deterministic. Measured (bench_dual, one thread, 8
+     *  calls against 0, 10 rounds): frontal cylinder 37.7 -> 39.8 degrees at
+     *  0.24 -> 0.66 s, frontal annulus 45.0 -> 47.1 at 0.17 -> 0.40 s; Delaunay
+     *  NACA 0012 36.1 -> 37.7 at 1.5 -> 2.2 s, the 37k-triangle Delaunay square
+     *  unchanged at 2.0 -> 2.3 s: over the 2 s budget of issue 6, hence off by
+     *  default. */
     CVM_OPT_DUAL_MAXMIN_TRIALS = 512,
     /** Merge tolerance, a fraction of the local ideal dual edge l / sqrt(3), default
      *  0.1, bounds [0, 1]; 0 merges nothing. l at an edge is the mean of the local

@@ -1345,10 +1345,11 @@ static cvm_status maxmin_phase(dopt *D, uint64_t k0, size_t *best_nc, double *be
     score_all(D);
     if (D->nc)
         return CVM_OK;
-    if ((s = mm_rounds(D, k0, D->p->maxmin_rounds, best_nc, best_min, &stalled)) || !stalled)
+    if ((s = mm_rounds(D, k0, D->p->maxmin_rounds, best_nc, best_min, &stalled)) || D->p->maxmin_trials <= 0)
         return s;
-    /* a kept trial's rounds already ran to a stall around it, and the rest
-     * of the mesh did before: the next trials follow at once */
+    /* the trials follow the rounds when asked for, stalled or not (at the
+     * default 10 rounds the shared meshes end by the count); a kept trial's
+     * rounds ran to a stall around it, so the next trials follow at once */
     for (calls = 0; calls < D->p->maxmin_trials && kept && !s; calls++)
         s = removal_trials(D, k0 + (uint64_t)D->p->maxmin_rounds + 100000 * (uint64_t)calls, best_nc,
                            best_min, &kept);
