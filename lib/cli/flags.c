@@ -58,7 +58,7 @@ static const cli_option_flag k_flags[] = {
     {"--maxmin-trials", "N", CVM_OPT_DUAL_MAXMIN_TRIALS, 0, OPT,
      "dual optimiser: removal-trial calls after the max-min rounds (default 0: none)"},
     {"--maxmin-rounds", "N", CVM_OPT_DUAL_MAXMIN_ROUNDS, 0, OPT,
-     "rounds of the dual optimiser's final max-min-angle phase (0: none; default 30)"},
+     "rounds of the dual optimiser's final max-min-angle phase (0: none; default 5)"},
 };
 
 #define NFLAGS (sizeof k_flags / sizeof k_flags[0])
