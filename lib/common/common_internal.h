@@ -74,6 +74,13 @@ void cvm__run_begin(cvm__ctx *ctx, double time_limit_s);
  * the caller says what the stop left). */
 cvm_status cvm__tick(cvm__ctx *ctx, int64_t n, cvm_stage stage, double fraction);
 
+/* Smallest-norm point d (nd = 1 or 2 components) of the convex hull of the
+ * gradients g + nd * act[k], k < na: the shortest of the hull's vertices and of
+ * the origin's projections on its edges that has d . g_i >= |d|^2 (1 - 1e-9)
+ * for every active i (Freitag and Ollivier's search direction of max-min
+ * optimisation). Returns 0 when there is none: a max-min point to first order. */
+int cvm__minnorm_hull(const double *g, int nd, const size_t *act, size_t na, double *d);
+
 /* Small deterministic random stream (xoshiro256** seeded by splitmix64). */
 typedef struct cvm__rng { uint64_t s[4]; } cvm__rng;
 void cvm__rng_seed(cvm__rng *r, uint64_t seed);

@@ -75,60 +75,11 @@ static int sines(const cvm__dopt_local *L, const double *p, double *f, double *g
     return n;
 }
 
-/* Smallest-norm point d (nd components) of the convex hull of the active
- * gradients act[0..na): among the hull's vertices and edge projections, the
- * shortest one with d . g_i >= |d|^2 for every active i. 0 when there is none
- * (v is at a max-min point to first order). */
-static int direction(const double *g, int nd, const int *act, int na, double *d)
-{
-    int i, j, l, found = 0;
-    double best = HUGE_VAL;
-    for (i = 0; i < na; i++)
-        for (j = i; j < na; j++) {
-            const double *gi = g + nd * act[i], *gj = g + nd * act[j];
-            double e[2] = {0, 0}, c[2] = {0, 0}, ee = 0, t = 0, cc = 0;
-            int ok = 1, q;
-            for (q = 0; q < nd; q++) {
-                e[q] = gj[q] - gi[q];
-                ee += e[q] * e[q];
-            }
-            if (j > i) {
-                double ge = 0;
-                if (!(ee > 0))
-                    continue;
-                for (q = 0; q < nd; q++)
-                    ge += gi[q] * e[q];
-                t = -ge / ee;
-                if (!(t > 0 && t < 1))
-                    continue;
-            }
-            for (q = 0; q < nd; q++) {
-                c[q] = gi[q] + t * e[q];
-                cc += c[q] * c[q];
-            }
-            if (!(cc < best) || !(cc > 0))
-                continue;
-            for (l = 0; l < na && ok; l++) {
-                const double *gl = g + nd * act[l];
-                double dot = 0;
-                for (q = 0; q < nd; q++)
-                    dot += gl[q] * c[q];
-                ok = dot >= cc * (1 - 1e-9);
-            }
-            if (!ok)
-                continue;
-            best = cc;
-            d[0] = c[0];
-            d[1] = c[1];
-            found = 1;
-        }
-    return found;
-}
-
 void cvm__dopt_maxmin_active(cvm__dopt_local *L, double f0, double *u, double *fout)
 {
     double f[MAXF], g[2 * MAXF], f1[MAXF], g1[2 * MAXF], p[2], w, lmin, lmin1, fm, fu = f0;
-    int nd = L->ndof == 3 ? 2 : 1, n, it, q, act[MAXF];
+    int nd = L->ndof == 3 ? 2 : 1, n, it, q;
+    size_t act[MAXF];
     double x[CVM__DOPT_MAXDOF] = {0};
     for (q = 0; q < CVM__DOPT_MAXDOF; q++)
         u[q] = 0;
@@ -141,14 +92,15 @@ void cvm__dopt_maxmin_active(cvm__dopt_local *L, double f0, double *u, double *f
         return;
     for (it = 0; it < ITERS; it++) {
         double d[2] = {0, 0}, dd = 0, alpha = HUGE_VAL, amax, y[CVM__DOPT_MAXDOF], fy = HUGE_VAL, m1 = 2;
-        int na = 0, h, ok = 0, k;
+        int h, ok = 0, k;
+        size_t na = 0;
         fm = 2;
         for (k = 0; k < n; k++)
             fm = f[k] < fm ? f[k] : fm;
         for (k = 0; k < n; k++)
             if (f[k] <= fm + ACTIVE_TOL)
-                act[na++] = k;
-        if (!direction(g, nd, act, na, d))
+                act[na++] = (size_t)k;
+        if (!cvm__minnorm_hull(g, nd, act, na, d))
             break;
         for (q = 0; q < nd; q++)
             dd += d[q] * d[q];

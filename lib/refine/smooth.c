@@ -47,69 +47,6 @@ static size_t sm_star(const cvm__tri2 *T, int32_t v, int32_t **star, size_t *cap
     return t == t0 ? n : 0;
 }
 
-/* Regularity of the star of v with v at p: *bad (lower is better) = number of
- * obtuse angles - number of angles in [55, 65] degrees + 1e-3 x sum of (1 -
- * mean ratio); *q = smallest sin^2; *big = triangles above the size bound.
- * Returns 0 when a triangle is not strictly counter-clockwise (exact orient2d),
- * or as soon as *bad is sure to end >= cut (pass HUGE_VAL for the full count). */
-static int sm_star_eval(const cvm__refiner *R, int32_t v, const double *p, const int32_t *star,
-                        size_t n, double cut, double *bad, double *q, int *big)
-{
-    const cvm__tri2 *T = R->T;
-    /* cos^2 of 65 and 55 degrees */
-    const double lo2 = 0.42261826174069944 * 0.42261826174069944;
-    const double hi2 = 0.57357643635104616 * 0.57357643635104616;
-    size_t k;
-    /* local sums (stored at the end): *bad may alias the coordinates, so
-     * updating it in the loop would reload them every time */
-    double smr = 0, sq = 1.0;
-    int sbig = 0, nobt = 0, nreg = 0;
-    for (k = 0; k < n; k++) {
-        const int32_t *tv = T->tv + 3 * (size_t)star[k];
-        int i = tv[0] == v ? 0 : tv[1] == v ? 1 : 2;
-        int32_t ia = tv[(i + 1) % 3], ib = tv[(i + 2) % 3];
-        const double *a = cvm__tri2_pt(T, ia), *b = cvm__tri2_pt(T, ib);
-        double lpa, lpb, lab, ar, num[3], den[3], s, ls, lmin;
-        int j;
-        if (cvm__orient2d_inline(p, a, b) <= 0)
-            return 0;
-        lpa = (a[0] - p[0]) * (a[0] - p[0]) + (a[1] - p[1]) * (a[1] - p[1]);
-        lpb = (b[0] - p[0]) * (b[0] - p[0]) + (b[1] - p[1]) * (b[1] - p[1]);
-        lab = (b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]);
-        ar = (a[0] - p[0]) * (b[1] - p[1]) - (a[1] - p[1]) * (b[0] - p[0]); /* 2 x area */
-        /* cos of each angle = num / sqrt(den), compared without square roots */
-        num[0] = lpa + lpb - lab;
-        den[0] = 4 * lpa * lpb;
-        num[1] = lpa + lab - lpb;
-        den[1] = 4 * lpa * lab;
-        num[2] = lpb + lab - lpa;
-        den[2] = 4 * lpb * lab;
-        for (j = 0; j < 3; j++) {
-            double n2 = num[j] * num[j];
-            nobt += num[j] < 0;
-            nreg += (num[j] >= 0) & (n2 >= lo2 * den[j]) & (n2 <= hi2 * den[j]);
-        }
-        smr += 1e-3 * (1 - 2 * 1.7320508075688772 * ar / (lpa + lpb + lab));
-        lmin = lpa < lpb ? (lpa < lab ? lpa : lab) : (lpb < lab ? lpb : lab);
-        s = lmin * ar * ar / (lpa * lpb * lab);
-        if (s < sq)
-            sq = s;
-        /* each remaining triangle adds at least -3: stop once *bad cannot
-         * get below cut (the caller rejects such a candidate anyway) */
-        if (SM_OBTUSE_WEIGHT * nobt - nreg - 3 * (int)(n - k - 1) + smr >= cut)
-            return 0;
-        /* too big as in Delaunay refinement: circumradius above the mean size, or the area bound */
-        ls = (R->vls[v] + R->vls[ia] + R->vls[ib]) / 3;
-        if ((isfinite(ls) && lpa * lpb * lab > 4 * ls * ls * ar * ar) ||
-            (cvm__rf_max_area(R, star[k]) > 0 && ar > 2 * cvm__rf_max_area(R, star[k])))
-            sbig++;
-    }
-    *bad = SM_OBTUSE_WEIGHT * nobt - nreg + smr;
-    *q = sq;
-    *big = sbig;
-    return 1;
-}
-
 /* The star of a visited vertex, gathered once per visit: ring vertex k is the
  * second corner of star triangle k, whose third corner is ring vertex k + 1
  * (mod n, sm_star walks counter-clockwise); per triangle the squared length
@@ -162,7 +99,12 @@ static int sm_ring_build(const cvm__refiner *R, int32_t v, const int32_t *star, 
     return 1;
 }
 
-/* sm_star_eval on a gathered ring: the same values, each spoke measured once.
+/* Regularity of the star of v (gathered in r) with v at p: *bad (lower is
+ * better) = 4 x obtuse angles - angles in [55, 65] degrees + 1e-3 x the sum
+ * of (1 - mean ratio); *q = smallest sin^2; *big = triangles above the size
+ * bound (circumradius above the mean size, or the area bound). Returns 0 when
+ * a triangle is not strictly counter-clockwise (exact orient2d), or as soon
+ * as *bad is sure to end >= cut (HUGE_VAL: the full count).
  * A candidate (qmin >= 0) is also rejected (0) as soon as a triangle has an
  * angle whose sin^2 is below qmin or more than bigmax triangles exceed the
  * size bound; *q is then not computed. */
@@ -218,7 +160,7 @@ static int sm_ring_eval(const sm_ring *r, const double *p, double cut, double qm
 }
 
 /* 1 when every angle of domain triangle t is in [55, 65] degrees, by the
- * same test as sm_star_eval. */
+ * same test as sm_ring_eval. */
 static int sm_perfect(const cvm__tri2 *T, int32_t t)
 {
     const double lo2 = 0.42261826174069944 * 0.42261826174069944;
@@ -479,7 +421,7 @@ cvm_status cvm__rf_smooth(cvm__refiner *R, size_t first, int relax, int sweeps, 
 /* Sine of every angle of the star of v with v at p: f[3k..3k+2] for star
  * triangle k (angles at v, a, b) and their gradients with respect to p in
  * g (2 per function, when g is not NULL); *fmin = the smallest, *big = star
- * triangles above the size bound (as sm_star_eval). Returns 0 when a
+ * triangles above the size bound (as sm_ring_eval). Returns 0 when a
  * triangle is not strictly counter-clockwise (exact orient2d). */
 static int mm_eval(const cvm__refiner *R, int32_t v, const double *p, const int32_t *star,
                    size_t n, double *f, double *g, double *fmin, int *big)
@@ -537,45 +479,6 @@ static int mm_eval(const cvm__refiner *R, int32_t v, const double *p, const int3
     return 1;
 }
 
-/* Smallest-norm point d of the convex hull of the active gradients (indices
- * act[0..na-1] into g): the best vertex or edge projection that satisfies
- * the optimality condition d . g_i >= |d|^2 for every active i. Returns 0
- * when none does (the origin is in the hull: v is at a max-min point). */
-static int mm_direction(const double *g, const size_t *act, size_t na, double *d)
-{
-    size_t i, j, l;
-    double best = INFINITY;
-    int found = 0;
-    for (i = 0; i < na; i++)
-        for (j = i; j < na; j++) {
-            const double *gi = g + 2 * act[i], *gj = g + 2 * act[j];
-            double e0 = gj[0] - gi[0], e1 = gj[1] - gi[1], ee = e0 * e0 + e1 * e1, t = 0, c[2],
-                   cc;
-            int ok = 1;
-            if (j > i && ee > 0) {
-                t = -(gi[0] * e0 + gi[1] * e1) / ee;
-                if (!(t > 0 && t < 1))
-                    continue; /* the vertices are candidates of their own */
-            }
-            c[0] = gi[0] + t * e0;
-            c[1] = gi[1] + t * e1;
-            cc = c[0] * c[0] + c[1] * c[1];
-            if (!(cc < best) || !(cc > 0))
-                continue;
-            for (l = 0; l < na && ok; l++) {
-                const double *gl = g + 2 * act[l];
-                ok = gl[0] * c[0] + gl[1] * c[1] >= cc * (1 - 1e-9);
-            }
-            if (!ok)
-                continue;
-            best = cc;
-            d[0] = c[0];
-            d[1] = c[1];
-            found = 1;
-        }
-    return found;
-}
-
 cvm_status cvm__rf_smooth_maxmin(cvm__refiner *R, size_t first, int sweeps, int guard,
                                  size_t *moves_out)
 {
@@ -583,6 +486,7 @@ cvm_status cvm__rf_smooth_maxmin(cvm__refiner *R, size_t first, int sweeps, int 
     const double fmax = guard ? 0.64278760968653925 : 2.0;
     cvm__tri2 *T = R->T;
     int32_t *star = NULL;
+    sm_ring ring = {0, 0, NULL, NULL, NULL, NULL};
     double *f = NULL, *g = NULL, *f1 = NULL;
     size_t *act = NULL;
     uint8_t *cur = NULL, *next = NULL;
@@ -653,7 +557,7 @@ cvm_status cvm__rf_smooth_maxmin(cvm__refiner *R, size_t first, int sweeps, int 
                 for (k = 0; k < nf; k++)
                     if (f[k] <= fm + MM_ACTIVE_TOL)
                         act[na++] = k;
-                if (!mm_direction(g, act, na, d))
+                if (!cvm__minnorm_hull(g, 2, act, na, d))
                     break;
                 dd = d[0] * d[0] + d[1] * d[1];
                 /* first step at which an inactive function meets the active
@@ -695,12 +599,16 @@ cvm_status cvm__rf_smooth_maxmin(cvm__refiner *R, size_t first, int sweeps, int 
                 continue;
             if (guard) {
                 /* keep the regularity: no more obtuse angles - angles in [55, 65]
-                 * (the integer part of sm_star_eval's score; the mean-ratio
+                 * (the integer part of sm_ring_eval's score; the mean-ratio
                  * term of a star is below 0.05) */
                 double b0, b1, q0, q1;
                 int g0, g1;
-                if (!sm_star_eval(R, (int32_t)v, x, star, n, HUGE_VAL, &b0, &q0, &g0) ||
-                    !sm_star_eval(R, (int32_t)v, p, star, n, HUGE_VAL, &b1, &q1, &g1) ||
+                if (!sm_ring_build(R, (int32_t)v, star, n, &ring)) {
+                    err = 1;
+                    break;
+                }
+                if (!sm_ring_eval(&ring, x, HUGE_VAL, -1.0, INT_MAX, &b0, &q0, &g0) ||
+                    !sm_ring_eval(&ring, p, HUGE_VAL, -1.0, INT_MAX, &b1, &q1, &g1) ||
                     floor(b1 + 0.5) > floor(b0 + 0.5))
                     continue;
             }
@@ -720,6 +628,7 @@ cvm_status cvm__rf_smooth_maxmin(cvm__refiner *R, size_t first, int sweeps, int 
     if (err)
         s = cvm__nomem(T->ctx);
 done:
+    sm_ring_free(T->ctx, &ring);
     cvm__free(T->ctx, star);
     cvm__free(T->ctx, f);
     cvm__free(T->ctx, f1);

@@ -373,6 +373,39 @@ static void angle_and_dual_ratio(const dtest_mesh *d, double *min_angle, double 
     *min_ratio = rmin;
 }
 
+/* Refine the unit square with algo at size h, set option key to val, optimise
+ * and check by independent code: cvm_mesh_check, the vertex count drops by
+ * exactly the reported removals, the regular triangulation (power test),
+ * every triangle compliant or merged, and the reported minimum angle; the
+ * smallest angle, dual/primal ratio and max-min removals into *amin, *ratio,
+ * *removed. */
+static void maxmin_run(cvm_algorithm algo, double h, cvm_option key, double val, double *amin,
+                       double *ratio, double *removed)
+{
+    cvm_mesh *m = refined(algo, h);
+    dtest_mesh d0, d;
+    indep r;
+    size_t t;
+    dtest_get(m, &d0);
+    ck_assert_int_eq(cvm_mesh_set_option(m, key, val), CVM_OK);
+    ck_assert_msg(cvm_mesh_optimise_dual(m, NULL) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    ck_assert_msg(cvm_mesh_check(m) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    dtest_get(m, &d);
+    *removed = measure(m, CVM_MEASURE_DUAL_OPT_REMOVED_MAXMIN);
+    ck_assert_uint_eq(d.nv + (size_t)measure(m, CVM_MEASURE_DUAL_OPT_REMOVED_VANISHED) + (size_t)*removed,
+                      d0.nv);
+    ck_assert_uint_eq(dtest_power_violations(&d, d.w), 0);
+    independent(&d, 0.1, &r);
+    for (t = 0; t < d.nt; t++)
+        ck_assert_msg(!r.noncompliant[t], "triangle %zu: power vertex outside and not merged", t);
+    angle_and_dual_ratio(&d, amin, ratio);
+    ck_assert_double_eq_tol(measure(m, CVM_MEASURE_MIN_ANGLE_DEG), *amin, 1e-9);
+    indep_free(&r);
+    dtest_free(&d0);
+    dtest_free(&d);
+    cvm_mesh_free(m);
+}
+
 /* The max-min-angle phase (CVM_OPT_DUAL_MAXMIN_ROUNDS) on a small frontal
  * mesh: the smallest angle, measured here, reaches 45 degrees (at least a
  * degree above the run without the phase); every triangle stays compliant
@@ -381,33 +414,13 @@ static void angle_and_dual_ratio(const dtest_mesh *d, double *min_angle, double 
  * the vertex count drops by the reported removals only. */
 START_TEST(maxmin_phase_raises_the_smallest_angle_and_keeps_compliance)
 {
-    double amin[2], ratio[2];
+    double amin[2], ratio[2], removed;
     int with;
     for (with = 0; with <= 1; with++) {
-        cvm_mesh *m = refined(CVM_ALGO_FRONTAL, 0.05);
-        dtest_mesh d0, d;
-        indep r;
-        size_t t;
-        dtest_get(m, &d0);
-        ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_DUAL_MAXMIN_ROUNDS, with ? 30 : 0), CVM_OK);
-        ck_assert_msg(cvm_mesh_optimise_dual(m, NULL) == CVM_OK, "%s", cvm_mesh_errmsg(m));
-        ck_assert_msg(cvm_mesh_check(m) == CVM_OK, "%s", cvm_mesh_errmsg(m));
-        dtest_get(m, &d);
-        ck_assert_uint_eq(d.nv + (size_t)measure(m, CVM_MEASURE_DUAL_OPT_REMOVED_VANISHED) +
-                              (size_t)measure(m, CVM_MEASURE_DUAL_OPT_REMOVED_MAXMIN),
-                          d0.nv);
-        ck_assert_uint_eq(dtest_power_violations(&d, d.w), 0);
-        independent(&d, 0.1, &r);
-        for (t = 0; t < d.nt; t++)
-            ck_assert_msg(!r.noncompliant[t], "triangle %zu: power vertex outside and not merged", t);
-        angle_and_dual_ratio(&d, &amin[with], &ratio[with]);
-        ck_assert_double_eq_tol(measure(m, CVM_MEASURE_MIN_ANGLE_DEG), amin[with], 1e-9);
+        maxmin_run(CVM_ALGO_FRONTAL, 0.05, CVM_OPT_DUAL_MAXMIN_ROUNDS, with ? 30 : 0, &amin[with],
+                   &ratio[with], &removed);
         if (!with)
-            ck_assert_double_eq(measure(m, CVM_MEASURE_DUAL_OPT_REMOVED_MAXMIN), 0.0);
-        indep_free(&r);
-        dtest_free(&d0);
-        dtest_free(&d);
-        cvm_mesh_free(m);
+            ck_assert_double_eq(removed, 0.0);
     }
     /* measured: 40.06 without the phase, 45.00 with it (the bound of the
      * square's 90 degree corners, each held by one triangle) */
@@ -418,42 +431,22 @@ START_TEST(maxmin_phase_raises_the_smallest_angle_and_keeps_compliance)
 END_TEST
 
 /* Removal trials (CVM_OPT_DUAL_MAXMIN_TRIALS, off by default) on a Delaunay
- * start mesh, where the rounds alone stall: every triangle stays compliant
- * (independent test), the triangulation regular, the vertex count drops by
- * exactly the reported removals, and the smallest angle is never below the
- * one without trials (a trial is kept only if it does not lower it). */
+ * start mesh, where the rounds alone stall: the checks of maxmin_run, and the
+ * smallest angle is never below the one without trials (a trial is kept only
+ * if it does not lower it). */
 START_TEST(maxmin_removal_trials_keep_compliance_and_never_lower_the_angle)
 {
-    double amin[2], ratio[2];
+    double amin[2], ratio[2], removed;
+    cvm_bounds b;
     int with;
+    ck_assert_int_eq(cvm_option_bounds(&b, CVM_OPT_DUAL_MAXMIN_TRIALS), CVM_OK);
+    ck_assert(b.lo == 0 && b.hi == 64 && b.def == 0 && b.is_integer);
     for (with = 0; with <= 1; with++) {
-        cvm_mesh *m = refined(CVM_ALGO_DELAUNAY, 0.05);
-        dtest_mesh d0, d;
-        indep r;
-        size_t t;
-        cvm_bounds b;
-        dtest_get(m, &d0);
-        ck_assert_int_eq(cvm_option_bounds(&b, CVM_OPT_DUAL_MAXMIN_TRIALS), CVM_OK);
-        ck_assert(b.lo == 0 && b.hi == 64 && b.def == 0 && b.is_integer);
-        ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_DUAL_MAXMIN_TRIALS, with ? 8 : 0), CVM_OK);
-        ck_assert_msg(cvm_mesh_optimise_dual(m, NULL) == CVM_OK, "%s", cvm_mesh_errmsg(m));
-        ck_assert_msg(cvm_mesh_check(m) == CVM_OK, "%s", cvm_mesh_errmsg(m));
-        dtest_get(m, &d);
-        ck_assert_uint_eq(d.nv + (size_t)measure(m, CVM_MEASURE_DUAL_OPT_REMOVED_VANISHED) +
-                              (size_t)measure(m, CVM_MEASURE_DUAL_OPT_REMOVED_MAXMIN),
-                          d0.nv);
+        maxmin_run(CVM_ALGO_DELAUNAY, 0.05, CVM_OPT_DUAL_MAXMIN_TRIALS, with ? 8 : 0, &amin[with],
+                   &ratio[with], &removed);
         if (!with)
-            ck_assert_double_eq(measure(m, CVM_MEASURE_DUAL_OPT_REMOVED_MAXMIN), 0.0);
-        ck_assert_uint_eq(dtest_power_violations(&d, d.w), 0);
-        independent(&d, 0.1, &r);
-        for (t = 0; t < d.nt; t++)
-            ck_assert_msg(!r.noncompliant[t], "triangle %zu: power vertex outside and not merged", t);
-        angle_and_dual_ratio(&d, &amin[with], &ratio[with]);
+            ck_assert_double_eq(removed, 0.0);
         ck_assert_double_ge(ratio[with], 0.15);
-        indep_free(&r);
-        dtest_free(&d0);
-        dtest_free(&d);
-        cvm_mesh_free(m);
     }
     ck_assert_double_ge(amin[1], amin[0] - 1e-9);
 }

@@ -412,47 +412,34 @@ END_TEST
 /* Out of memory at every allocation of an AFLR refinement (transient and
  * persistent): CVM_OK or CVM_E_NOMEM, nothing leaks, and the mesh, when kept,
  * is a valid constrained Delaunay triangulation whose layer copy works. */
+static void oom_setup(cvm_mesh *m, void *arg)
+{
+    (void)arg;
+    rtest_set_unit_square(m);
+}
+
+static cvm_status oom_run(cvm_mesh *m, void *arg)
+{
+    (void)arg;
+    return rtest_refine_uniform(m, 0.1, CVM_ALGO_AFLR);
+}
+
+/* the layer copy works on every mesh the run leaves */
+static void oom_check(cvm_mesh *m, void *arg)
+{
+    size_t nt;
+    double *layer;
+    (void)arg;
+    cvmtest_assert_valid(m);
+    ck_assert_int_eq(cvm_mesh_count(&nt, m, CVM_ENT_TRIANGLE), CVM_OK);
+    layer = malloc((nt + 1) * sizeof *layer);
+    ck_assert_int_eq(cvm_mesh_copy_layer_index(layer, nt, m), CVM_OK);
+    free(layer);
+}
+
 START_TEST(out_of_memory_keeps_a_valid_mesh)
 {
-    static const double sq[] = {0, 0, 1, 0, 1, 1, 0, 1};
-    static const cvm_index seg[] = {0, 1, 1, 2, 2, 3, 3, 0};
-    int persistent;
-    for (persistent = 0; persistent <= 1; persistent++) {
-        long i;
-        for (i = 1; i < 100000; i++) {
-            cvmtest_alloc a;
-            cvm_mesh *m;
-            cvm_status st;
-            long failed;
-            size_t nt;
-            cvmtest_alloc_init(&a, 0, 0);
-            ck_assert_int_eq(cvmtest_mesh_create(&m, &a), CVM_OK);
-            ck_assert_int_eq(cvm_mesh_set_points(m, sq, 4, 2), CVM_OK);
-            ck_assert_int_eq(cvm_mesh_set_segments(m, seg, 4), CVM_OK);
-            ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
-            cvmtest_alloc_arm(&a, a.n_calls + i, persistent);
-            st = rtest_refine_uniform(m, 0.1, CVM_ALGO_AFLR);
-            failed = a.n_failed;
-            cvmtest_alloc_arm(&a, 0, 0);
-            ck_assert_msg(st == CVM_OK || st == CVM_E_NOMEM, "allocation %ld: %s", i,
-                          cvm_status_str(st));
-            if (cvm_mesh_check(m) != CVM_E_STATE) {
-                double *layer;
-                cvmtest_assert_valid(m);
-                ck_assert_int_eq(cvm_mesh_count(&nt, m, CVM_ENT_TRIANGLE), CVM_OK);
-                layer = malloc((nt + 1) * sizeof *layer);
-                ck_assert_int_eq(cvm_mesh_copy_layer_index(layer, nt, m), CVM_OK);
-                free(layer);
-            }
-            cvm_mesh_free(m);
-            ck_assert_int_eq(a.live_blocks, 0);
-            if (failed == 0) {
-                ck_assert_int_eq(st, CVM_OK);
-                break;
-            }
-        }
-        ck_assert_msg(i > 20 && i < 100000, "%ld allocations in the refinement", i);
-    }
+    rtest_oom_sweep(oom_setup, oom_run, oom_check, NULL);
 }
 END_TEST
 

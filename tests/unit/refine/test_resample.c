@@ -575,38 +575,23 @@ END_TEST
 
 /* Out of memory at every allocation of a re-discretising refinement: a
  * status, no leak, and a valid mesh (the rebuilt one or the old one). */
+static void oom_setup(cvm_mesh *m, void *arg)
+{
+    (void)arg;
+    set_annulus(m);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_KEEP_SEGMENT_VERTICES, 0), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+}
+
+static cvm_status oom_run(cvm_mesh *m, void *arg)
+{
+    (void)arg;
+    return refine_with(m, 1.0, CVM_ALGO_DELAUNAY);
+}
+
 START_TEST(out_of_memory_is_a_status)
 {
-    int persistent;
-    for (persistent = 0; persistent <= 1; persistent++) {
-        long i;
-        for (i = 1; i < 100000; i++) {
-            cvmtest_alloc a;
-            cvm_mesh *m;
-            cvm_status st;
-            long failed;
-            cvmtest_alloc_init(&a, 0, 0);
-            ck_assert_int_eq(cvmtest_mesh_create(&m, &a), CVM_OK);
-            set_annulus(m);
-            ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_KEEP_SEGMENT_VERTICES, 0), CVM_OK);
-            ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
-            cvmtest_alloc_arm(&a, i, persistent); /* counts from 0 again */
-            st = refine_with(m, 1.0, CVM_ALGO_DELAUNAY);
-            failed = a.n_failed;
-            cvmtest_alloc_arm(&a, 0, 0);
-            ck_assert_msg(st == CVM_OK || st == CVM_E_NOMEM, "allocation %ld: %s", i,
-                          cvm_status_str(st));
-            if (cvm_mesh_check(m) != CVM_E_STATE)
-                ck_assert_int_eq(cvm_mesh_check(m), CVM_OK);
-            cvm_mesh_free(m);
-            ck_assert_int_eq(a.live_blocks, 0);
-            if (failed == 0) {
-                ck_assert_int_eq(st, CVM_OK);
-                break;
-            }
-        }
-        ck_assert_msg(i > 20 && i < 100000, "%ld allocations", i);
-    }
+    rtest_oom_sweep(oom_setup, oom_run, NULL, NULL);
 }
 END_TEST
 

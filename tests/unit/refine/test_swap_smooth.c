@@ -33,13 +33,7 @@ static double regular_pct(cvm_mesh *m, double *min_angle)
     double *xy;
     cvm_index *tri;
     int k;
-    ck_assert_int_eq(cvm_mesh_count(&nv, m, CVM_ENT_VERTEX), CVM_OK);
-    ck_assert_int_eq(cvm_mesh_count(&nt, m, CVM_ENT_TRIANGLE), CVM_OK);
-    xy = malloc(2 * nv * sizeof *xy + 1);
-    tri = malloc(3 * nt * sizeof *tri + 1);
-    ck_assert(xy && tri);
-    ck_assert_int_eq(cvm_mesh_copy_points(xy, 2 * nv, m), CVM_OK);
-    ck_assert_int_eq(cvm_mesh_copy_cells(tri, 3 * nt, m, CVM_ENT_TRIANGLE), CVM_OK);
+    rtest_fetch(m, &xy, &nv, &tri, &nt);
     *min_angle = 180;
     for (t = 0; t < nt; t++) {
         for (k = 0; k < 3; k++) {
@@ -68,13 +62,7 @@ static double obtuse_pct(cvm_mesh *m)
     double *xy;
     cvm_index *tri;
     int k;
-    ck_assert_int_eq(cvm_mesh_count(&nv, m, CVM_ENT_VERTEX), CVM_OK);
-    ck_assert_int_eq(cvm_mesh_count(&nt, m, CVM_ENT_TRIANGLE), CVM_OK);
-    xy = malloc(2 * nv * sizeof *xy + 1);
-    tri = malloc(3 * nt * sizeof *tri + 1);
-    ck_assert(xy && tri);
-    ck_assert_int_eq(cvm_mesh_copy_points(xy, 2 * nv, m), CVM_OK);
-    ck_assert_int_eq(cvm_mesh_copy_cells(tri, 3 * nt, m, CVM_ENT_TRIANGLE), CVM_OK);
+    rtest_fetch(m, &xy, &nv, &tri, &nt);
     for (t = 0; t < nt; t++) {
         int o = 0;
         for (k = 0; k < 3; k++) {
@@ -300,41 +288,28 @@ START_TEST(area_bound_survives_post_processing)
 }
 END_TEST
 
+static void oom_setup(cvm_mesh *m, void *arg)
+{
+    (void)arg;
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_SMOOTH_SWEEPS, 2), CVM_OK);
+    rtest_set_unit_square(m);
+}
+
+static cvm_status oom_run(cvm_mesh *m, void *arg)
+{
+    (void)arg;
+    return rtest_refine_uniform(m, 0.1, CVM_ALGO_FRONTAL);
+}
+
+static void oom_check(cvm_mesh *m, void *arg)
+{
+    (void)arg;
+    cvmtest_assert_valid(m);
+}
+
 START_TEST(out_of_memory_keeps_a_valid_mesh)
 {
-    static const double sq[] = {0, 0, 1, 0, 1, 1, 0, 1};
-    static const cvm_index seg[] = {0, 1, 1, 2, 2, 3, 3, 0};
-    int persistent;
-    for (persistent = 0; persistent <= 1; persistent++) {
-        long i;
-        for (i = 1; i < 100000; i++) {
-            cvmtest_alloc a;
-            cvm_mesh *m;
-            cvm_status st;
-            long failed;
-            cvmtest_alloc_init(&a, 0, 0);
-            ck_assert_int_eq(cvmtest_mesh_create(&m, &a), CVM_OK);
-            ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_SMOOTH_SWEEPS, 2), CVM_OK);
-            ck_assert_int_eq(cvm_mesh_set_points(m, sq, 4, 2), CVM_OK);
-            ck_assert_int_eq(cvm_mesh_set_segments(m, seg, 4), CVM_OK);
-            ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
-            cvmtest_alloc_arm(&a, a.n_calls + i, persistent);
-            st = rtest_refine_uniform(m, 0.1, CVM_ALGO_FRONTAL);
-            failed = a.n_failed;
-            cvmtest_alloc_arm(&a, 0, 0);
-            ck_assert_msg(st == CVM_OK || st == CVM_E_NOMEM, "allocation %ld: %s", i,
-                          cvm_status_str(st));
-            if (cvm_mesh_check(m) != CVM_E_STATE)
-                cvmtest_assert_valid(m);
-            cvm_mesh_free(m);
-            ck_assert_int_eq(a.live_blocks, 0);
-            if (failed == 0) {
-                ck_assert_int_eq(st, CVM_OK);
-                break;
-            }
-        }
-        ck_assert_msg(i > 20 && i < 100000, "%ld allocations in the refinement", i);
-    }
+    rtest_oom_sweep(oom_setup, oom_run, oom_check, NULL);
 }
 END_TEST
 
