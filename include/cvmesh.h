@@ -629,8 +629,8 @@ typedef enum cvm_option {
      *  than 0.01 degree; removal trials (CVM_OPT_DUAL_MAXMIN_TRIALS) may follow.
      *  Deterministic. Measured (tests/bench/bench_dual.py, one thread; see the
      *  README for the table): from the frontal meshes the smallest angle reaches
-     *  45 degrees on the square and channel and 45-47 on the annulus (40.0-40.4
-     *  with 0); 10 rounds instead of 5 move the frontal results by at most 0.3
+     *  45 degrees on the square, channel and annulus (40.5, 40.0 and 44.8 with
+     *  0); 10 rounds instead of 5 move the frontal results by at most 0.3
      *  degree (NACA 0012 37.8 -> 38.1) and cost the 37k-triangle Delaunay square
      *  0.23 s more (1.74 -> 1.97 s, against issue 6's 2 s for refinement and
      *  optimisation of about 4e4 triangles). */
