@@ -74,7 +74,8 @@ TEST_ENV = CVM_SHARED_DIR=$(SHARED_DIR) CVM_TEST_DATA=$(CURDIR)/tests/data
 FUZZ_TARGETS := poly_read node_read cdt vtu_read
 FUZZ_BINS := $(FUZZ_TARGETS:%=$(BUILD)/fuzz/fuzz_%)
 REPLAY_BINS := $(FUZZ_TARGETS:%=$(BUILD)/fuzz/replay_%)
-FUZZ_SUPPORT_OBJ := $(BUILD)/obj/tests/fuzz/mesh_oracle.o $(BUILD)/obj/tests/unit/support/failing_alloc.o
+FUZZ_SUPPORT_OBJ := $(BUILD)/obj/tests/fuzz/mesh_oracle.o $(BUILD)/obj/tests/fuzz/fuzz_input.o \
+                    $(BUILD)/obj/tests/unit/support/failing_alloc.o
 
 # Build steps of make check run with -j$(JOBS) unless make was given -j.
 PAR = $(if $(findstring -j,$(MAKEFLAGS))$(findstring j,$(firstword $(MAKEFLAGS))),,-j$(JOBS))
@@ -139,7 +140,8 @@ $(BUILD)/fuzz/replay_%: $(BUILD)/obj/tests/fuzz/fuzz_%.o $(BUILD)/obj/tests/fuzz
 	$(CC) $(SANFLAGS) -o $@ $^ $(LDLIBS_LIB)
 
 # Keep the objects of the fuzz programs (make would delete them as intermediates).
-.SECONDARY: $(FUZZ_TARGETS:%=$(BUILD)/obj/tests/fuzz/fuzz_%.o) $(BUILD)/obj/tests/fuzz/regression_driver.o
+.SECONDARY: $(FUZZ_TARGETS:%=$(BUILD)/obj/tests/fuzz/fuzz_%.o) $(BUILD)/obj/tests/fuzz/regression_driver.o \
+            $(BUILD)/obj/tests/fuzz/fuzz_input.o
 
 fuzz-bins: $(FUZZ_BINS)
 replay-bins: $(REPLAY_BINS)

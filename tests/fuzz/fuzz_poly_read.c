@@ -3,7 +3,7 @@
  * file (or .node with FUZZ_IS_POLY 0) through an in-memory cvm__reader, give a
  * status and never a crash, a leak or undefined behaviour.
  *
- * The input size also selects fault injection, so one corpus covers them:
+ * The input size also selects fault injection (tests/fuzz/fuzz_input.h):
  *   size % 3 == 0  the reader returns short reads (1 + size % 13 bytes);
  *   size % 7 == 0  the reader fails with -1 after size / 2 bytes (must not give CVM_OK);
  *   size % 5 == 0  allocation 1 + sum(bytes) % 16 fails (CVM_E_NOMEM or CVM_OK).
@@ -17,9 +17,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "common/common_internal.h"
-#include "io/io_internal.h"
-#include "support/failing_alloc.h"
+#include "fuzz_input.h"
 
 #ifndef FUZZ_IS_POLY
 #define FUZZ_IS_POLY 1
@@ -36,35 +34,6 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
             abort();                                                   \
         }                                                              \
     } while (0)
-
-typedef struct memsrc {
-    const uint8_t *p;
-    size_t n, pos;
-    size_t chunk;   /* at most this many bytes per read; 0 = no limit */
-    size_t fail_at; /* return -1 once pos reaches this; (size_t)-1 = never */
-    int failed;     /* 1 once -1 was returned */
-} memsrc;
-
-static long mem_read(void *self, char *buf, size_t len)
-{
-    memsrc *s = (memsrc *)self;
-    size_t k;
-    if (s->pos >= s->fail_at) {
-        s->failed = 1;
-        return -1;
-    }
-    k = s->n - s->pos;
-    if (k > len)
-        k = len;
-    if (s->chunk && k > s->chunk)
-        k = s->chunk;
-    if (s->fail_at != (size_t)-1 && s->pos + k > s->fail_at)
-        k = s->fail_at - s->pos;
-    if (k)
-        memcpy(buf, s->p + s->pos, k);
-    s->pos += k;
-    return (long)k;
-}
 
 static void check_pslg(const cvm__pslg *p)
 {
@@ -113,28 +82,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     cvm__ctx ctx;
     cvm__pslg p;
     cvm__reader r;
-    memsrc src;
+    fuzz_input src;
     cvmtest_alloc a;
     cvm_status s;
-    size_t i, sum = 0;
-
-    for (i = 0; i < size; i++)
-        sum += data[i];
-    cvmtest_alloc_init(&a, size % 5 == 0 ? (long)(1 + sum % 16) : 0, 0);
-    cvm__ctx_init_default(&ctx);
-    ctx.alloc_fn = cvmtest_malloc;
-    ctx.realloc_fn = cvmtest_realloc;
-    ctx.free_fn = cvmtest_free;
-    ctx.payload = &a;
-
-    src.p = data;
-    src.n = size;
-    src.pos = 0;
-    src.chunk = size % 3 == 0 ? 1 + size % 13 : 0;
-    src.fail_at = size % 7 == 0 ? size / 2 : (size_t)-1;
-    src.failed = 0;
-    r.read = mem_read;
-    r.self = &src;
+    fuzz_input_setup(data, size, &src, &r, &ctx, &a);
 
     memset(&p, 0, sizeof p);
     s = cvm__read_triangle_format(&ctx, &r, FUZZ_IS_POLY ? "fuzz.poly" : "fuzz.node",

@@ -16,9 +16,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "common/common_internal.h"
-#include "io/io_internal.h"
-#include "support/failing_alloc.h"
+#include "fuzz_input.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
@@ -31,33 +29,6 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
             abort();                                                   \
         }                                                              \
     } while (0)
-
-typedef struct memsrc {
-    const uint8_t *p;
-    size_t n, pos, chunk, fail_at;
-    int failed;
-} memsrc;
-
-static long mem_read(void *self, char *buf, size_t len)
-{
-    memsrc *s = (memsrc *)self;
-    size_t k;
-    if (s->pos >= s->fail_at) {
-        s->failed = 1;
-        return -1;
-    }
-    k = s->n - s->pos;
-    if (k > len)
-        k = len;
-    if (s->chunk && k > s->chunk)
-        k = s->chunk;
-    if (s->fail_at != (size_t)-1 && s->pos + k > s->fail_at)
-        k = s->fail_at - s->pos;
-    if (k)
-        memcpy(buf, s->p + s->pos, k);
-    s->pos += k;
-    return (long)k;
-}
 
 static void check_mesh(const cvm__vtu_mesh *vm)
 {
@@ -110,28 +81,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     cvm__ctx ctx;
     cvm__vtu_mesh vm;
     cvm__reader r;
-    memsrc src;
+    fuzz_input src;
     cvmtest_alloc a;
     cvm_status s;
-    size_t i, sum = 0;
-
-    for (i = 0; i < size; i++)
-        sum += data[i];
-    cvmtest_alloc_init(&a, size % 5 == 0 ? (long)(1 + sum % 16) : 0, 0);
-    cvm__ctx_init_default(&ctx);
-    ctx.alloc_fn = cvmtest_malloc;
-    ctx.realloc_fn = cvmtest_realloc;
-    ctx.free_fn = cvmtest_free;
-    ctx.payload = &a;
-
-    src.p = data;
-    src.n = size;
-    src.pos = 0;
-    src.chunk = size % 3 == 0 ? 1 + size % 13 : 0;
-    src.fail_at = size % 7 == 0 ? size / 2 : (size_t)-1;
-    src.failed = 0;
-    r.read = mem_read;
-    r.self = &src;
+    fuzz_input_setup(data, size, &src, &r, &ctx, &a);
 
     s = cvm__read_vtu(&ctx, &r, "fuzz.vtu", &vm);
     if (s == CVM_OK) {
