@@ -55,6 +55,14 @@ int cli_finish(cvm_mesh *m, cvm_sizing *sz, const char *in, cvm_status s, const 
  * argv[*i] is an option flag of cmd (recorded in set), or else the one input
  * file (*in). Returns CLI_EXIT_OK, or CLI_EXIT_USAGE after printing why
  * ("cvmesh: NAME: ..."). */
+/* --algo NAME of command name: delaunay, frontal, and aflr when with_aflr,
+ * into *out. CLI_EXIT_OK, or CLI_EXIT_USAGE after printing why. */
+int cli_parse_algo(const char *name, const char *s, int with_aflr, cvm_algorithm *out);
+
+/* The value v of flag as a positive finite number into *out. CLI_EXIT_OK, or
+ * CLI_EXIT_USAGE after printing why ("cvmesh: FLAG V: must be a positive number"). */
+int cli_parse_positive(const char *flag, const char *v, double *out);
+
 int cli_parse_tail(const char *name, unsigned cmd, int argc, char **argv, int *i,
                    cli_setting *set, int *nset, const char **in);
 /* After the loop: CLI_EXIT_OK when an input file was named, else a usage error. */

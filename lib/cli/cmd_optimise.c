@@ -48,7 +48,6 @@ void cli_optimise_help(FILE *f)
 static int parse_value(oargs *a, int argc, char **argv, int *i)
 {
     const char *s = argv[*i];
-    char *end;
     if (*i + 1 >= argc) {
         fprintf(stderr, "cvmesh: %s needs a value\n", s);
         return CLI_EXIT_USAGE;
@@ -56,24 +55,11 @@ static int parse_value(oargs *a, int argc, char **argv, int *i)
     ++*i;
     if (strcmp(s, "--algo") == 0) {
         a->refine = 1;
-        if (strcmp(argv[*i], "delaunay") == 0)
-            a->algo = CVM_ALGO_DELAUNAY;
-        else if (strcmp(argv[*i], "frontal") == 0)
-            a->algo = CVM_ALGO_FRONTAL;
-        else {
-            fprintf(stderr, "cvmesh: optimise: unknown --algo '%s' (delaunay or frontal)\n", argv[*i]);
-            return CLI_EXIT_USAGE;
-        }
-        return CLI_EXIT_OK;
+        return cli_parse_algo("optimise", argv[*i], 0, &a->algo);
     }
     if (strcmp(s, "--size") == 0) {
         a->refine = 1;
-        a->size = strtod(argv[*i], &end);
-        if (*end || !(a->size > 0) || !isfinite(a->size)) {
-            fprintf(stderr, "cvmesh: --size %s: must be a positive number\n", argv[*i]);
-            return CLI_EXIT_USAGE;
-        }
-        return CLI_EXIT_OK;
+        return cli_parse_positive(s, argv[*i], &a->size);
     }
     if (strcmp(s, "--dual") == 0)
         a->dual = argv[*i];

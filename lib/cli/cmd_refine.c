@@ -56,21 +56,6 @@ void cli_refine_help(FILE *f)
                "the exit status is 0 and a note says what was left unmet.\n");
 }
 
-static int parse_algo(rargs *a, const char *s)
-{
-    if (strcmp(s, "delaunay") == 0)
-        a->algo = CVM_ALGO_DELAUNAY;
-    else if (strcmp(s, "frontal") == 0)
-        a->algo = CVM_ALGO_FRONTAL;
-    else if (strcmp(s, "aflr") == 0)
-        a->algo = CVM_ALGO_AFLR;
-    else {
-        fprintf(stderr, "cvmesh: refine: unknown --algo '%s' (delaunay, frontal or aflr)\n", s);
-        return CLI_EXIT_USAGE;
-    }
-    return CLI_EXIT_OK;
-}
-
 /* --fronts 1,2,...: integer markers separated by commas. */
 static int parse_fronts(rargs *a, const char *s)
 {
@@ -95,20 +80,17 @@ static int parse_fronts(rargs *a, const char *s)
 static int parse_value(rargs *a, int argc, char **argv, int *i)
 {
     const char *s = argv[*i];
-    char *end;
     if (*i + 1 >= argc) {
         fprintf(stderr, "cvmesh: %s needs a value\n", s);
         return CLI_EXIT_USAGE;
     }
     ++*i;
     if (strcmp(s, "--algo") == 0)
-        return parse_algo(a, argv[*i]);
+        return cli_parse_algo("refine", argv[*i], 1, &a->algo);
     if (strcmp(s, "--size") == 0 || strcmp(s, "--auto") == 0 || strcmp(s, "--grading") == 0) {
-        double v = strtod(argv[*i], &end);
-        if (*end || !(v > 0) || !isfinite(v)) {
-            fprintf(stderr, "cvmesh: %s %s: must be a positive number\n", s, argv[*i]);
+        double v;
+        if (cli_parse_positive(s, argv[*i], &v))
             return CLI_EXIT_USAGE;
-        }
         if (s[2] == 's')
             a->size = v;
         else if (s[2] == 'a')

@@ -3,6 +3,7 @@
  * keys (STYLE section 5: no switch strings), with their parsing and help.
  * A new option gets a row here; a new subcommand gets a CLI_CMD_* bit.
  */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -145,6 +146,34 @@ void cli_print_option_flags(FILE *f, unsigned cmd)
             fprintf(f, " [default %.17g, range %.17g..%.17g]", b.def, b.lo, b.hi);
         fputc('\n', f);
     }
+}
+
+int cli_parse_algo(const char *name, const char *s, int with_aflr, cvm_algorithm *out)
+{
+    if (strcmp(s, "delaunay") == 0)
+        *out = CVM_ALGO_DELAUNAY;
+    else if (strcmp(s, "frontal") == 0)
+        *out = CVM_ALGO_FRONTAL;
+    else if (with_aflr && strcmp(s, "aflr") == 0)
+        *out = CVM_ALGO_AFLR;
+    else {
+        fprintf(stderr, "cvmesh: %s: unknown --algo '%s' (%s)\n", name, s,
+                with_aflr ? "delaunay, frontal or aflr" : "delaunay or frontal");
+        return CLI_EXIT_USAGE;
+    }
+    return CLI_EXIT_OK;
+}
+
+int cli_parse_positive(const char *flag, const char *v, double *out)
+{
+    char *end;
+    double x = strtod(v, &end);
+    if (*end || !(x > 0) || !isfinite(x)) {
+        fprintf(stderr, "cvmesh: %s %s: must be a positive number\n", flag, v);
+        return CLI_EXIT_USAGE;
+    }
+    *out = x;
+    return CLI_EXIT_OK;
 }
 
 int cli_parse_tail(const char *name, unsigned cmd, int argc, char **argv, int *i,
