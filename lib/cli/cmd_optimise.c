@@ -3,7 +3,6 @@
  * [--size H] [-o OUT] [--dual DUAL.vtu] [--quality] [option flags]`: read, triangulate
  * (a .vtu is already a mesh), optionally refine, optimise the power dual, write, report.
  */
-#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 

@@ -4,7 +4,6 @@
  * [--quality] [option flags]`: read, triangulate (unless the input is a mesh), refine,
  * write, report.
  */
-#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
