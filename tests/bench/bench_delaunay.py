@@ -10,6 +10,8 @@ first) of a fresh subprocess, which also counts its output arrays).
 import json, os, resource, subprocess, sys, tempfile, time
 import numpy as np
 
+from benchlib import read_poly
+
 BUILD, SHARED = sys.argv[1], sys.argv[2]
 SIZE = int(os.environ.get("CVM_BENCH_N", "1000000"))
 REPS = int(os.environ.get("CVM_BENCH_REPS", "5"))
@@ -65,24 +67,6 @@ def run_cvm(kind, path):
     if r.returncode != 0:
         raise SystemExit("cvmesh bench failed on %s: %s %s" % (path, r.stdout, r.stderr))
     return json.loads(r.stdout)
-
-
-def read_poly(path):
-    rows = []
-    for line in open(path):
-        line = line.split("#", 1)[0].split()
-        if line:
-            rows.append(line)
-    n, i = int(rows[0][0]), 1
-    pts = np.array([[float(r[1]), float(r[2])] for r in rows[i:i + n]])
-    base = int(rows[1][0])
-    i += n
-    ns = int(rows[i][0]); i += 1
-    segs = np.array([[int(r[1]) - base, int(r[2]) - base] for r in rows[i:i + ns]])
-    i += ns
-    nh = int(rows[i][0]) if i < len(rows) else 0; i += 1
-    holes = np.array([[float(r[1]), float(r[2])] for r in rows[i:i + nh]]).reshape(-1, 2)
-    return pts, segs, holes
 
 
 def main():

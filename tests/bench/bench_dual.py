@@ -20,39 +20,14 @@ usage: bench_dual.py BUILD SHARED   (make bench calls it through run.sh)
 import os, subprocess, sys, tempfile, time
 import numpy as np
 
+from benchlib import build_driver, read_poly
+
 BUILD, SHARED = sys.argv[1], sys.argv[2]
 CASES = [("square", 0.02), ("channel", 0.02), ("annulus", 0.1), ("cylinder", 0.2),
          ("naca0012", 0.2)]
 LARGE = [("square", 0.006)]   # about 1e5 triangles
 DRIVER = os.path.join(BUILD, "bench", "bench_dual")
 LLOYD_ITERS = 20
-
-
-def build_driver():
-    os.makedirs(os.path.dirname(DRIVER), exist_ok=True)
-    cc = os.environ.get("CC", "cc")
-    subprocess.check_call([cc, "-std=c99", "-O2", "-Iinclude", "-o", DRIVER,
-                           "tests/bench/bench_dual.c", os.path.join(BUILD, "lib", "libcvmesh.a"),
-                           "-lm", "-fopenmp"])
-
-
-def read_poly(path):
-    """Own .poly reader: points, segments, holes (0-based)."""
-    toks = []
-    for line in open(path):
-        line = line.split("#", 1)[0].split()
-        if line:
-            toks.append([float(x) for x in line])
-    it = iter(toks)
-    np_ = int(next(it)[0])
-    pts = [next(it) for _ in range(np_)]
-    base = int(pts[0][0]) if pts else 0
-    xy = np.array([[p[1], p[2]] for p in pts])
-    ns = int(next(it)[0])
-    segs = np.array([[int(s[1]) - base, int(s[2]) - base] for s in (next(it) for _ in range(ns))])
-    nh = int(next(it)[0])
-    holes = np.array([[h[1], h[2]] for h in (next(it) for _ in range(nh))]).reshape(-1, 2)
-    return xy, segs, holes
 
 
 def write_poly(path, xy, segs, holes):
@@ -196,7 +171,7 @@ def cvm_rows(name, poly, h, algo, label, s_tri):
 
 
 def main():
-    build_driver()
+    build_driver(BUILD, "bench_dual")
     print("# bench_dual: cvm_mesh_optimise_dual (defaults: min angle 30, target angle 40, margin "
           "0.15, merge tol 0.1), one core")
     print("# out%0/out% dual vertex outside before/after; nc% / ncb% non-compliant after (all / "

@@ -29,6 +29,8 @@ usage: bench_refine.py BUILD SHARED   (make bench calls it through run.sh)
 import os, subprocess, sys, tempfile, time
 import numpy as np
 
+from benchlib import build_driver, read_poly
+
 BUILD, SHARED = sys.argv[1], sys.argv[2]
 REPS = int(os.environ.get("CVM_BENCH_REPS", "5"))
 METHODS = [int(x) for x in os.environ.get("CVM_BENCH_SMOOTH_METHODS", "").split(",") if x]
@@ -42,33 +44,6 @@ def size_at(h, xy):
         return np.full(len(xy), h)
     return 0.4 + (np.hypot(xy[:, 0], xy[:, 1]) - 1) / 2.5
 DRIVER = os.path.join(BUILD, "bench", "bench_refine")
-
-
-def build_driver():
-    os.makedirs(os.path.dirname(DRIVER), exist_ok=True)
-    cc = os.environ.get("CC", "cc")
-    subprocess.check_call([cc, "-std=c99", "-O2", "-Iinclude", "-o", DRIVER,
-                           "tests/bench/bench_refine.c", os.path.join(BUILD, "lib", "libcvmesh.a"),
-                           "-lm", "-fopenmp"])
-
-
-def read_poly(path):
-    """Own .poly reader: points, segments, holes (0-based)."""
-    toks = []
-    for line in open(path):
-        line = line.split("#", 1)[0].split()
-        if line:
-            toks.append([float(x) for x in line])
-    it = iter(toks)
-    np_, dim, nattr, nmark = (int(x) for x in next(it)[:4])
-    pts = [next(it) for _ in range(np_)]
-    base = int(pts[0][0]) if pts else 0
-    xy = np.array([[p[1], p[2]] for p in pts])
-    ns = int(next(it)[0])
-    segs = np.array([[int(s[1]) - base, int(s[2]) - base] for s in (next(it) for _ in range(ns))])
-    nh = int(next(it)[0])
-    holes = np.array([[h[1], h[2]] for h in (next(it) for _ in range(nh))]).reshape(-1, 2)
-    return xy, segs, holes
 
 
 def quality(xy, tri, h):
@@ -250,7 +225,7 @@ def run_1e6(shared, tmp):
 
 
 def main():
-    build_driver()
+    build_driver(BUILD, "bench_refine")
     print("# bench_refine: uniform size h; time = median of %d runs (triangulate + refine), one core; "
           "Triangle and the cvmesh refiners interleaved run by run" % REPS)
     print("%-9s %-5s %-9s %7s %7s %9s %8s %7s %6s %6s %6s %6s" %
