@@ -5,6 +5,7 @@
 
 #include "dual/dual_tests.h"
 #include "dual/dual_internal.h"
+#include "support/oom_sweep.h"
 #include "support/failing_alloc.h"
 
 static double measure(cvm_mesh *m, cvm_measure which)
@@ -584,32 +585,21 @@ END_TEST
 
 /* Allocation k of the optimisation fails (transient and persistent): CVM_E_NOMEM or
  * CVM_OK, the mesh valid, nothing leaked. */
+static void oom_setup(cvm_mesh *m, void *arg)
+{
+    (void)arg;
+    ck_assert_int_eq(build(m, CVM_ALGO_DELAUNAY, 0.2), CVM_OK);
+}
+
+static cvm_status oom_run(cvm_mesh *m, void *arg)
+{
+    (void)arg;
+    return cvm_mesh_optimise_dual(m, NULL);
+}
+
 START_TEST(out_of_memory_at_every_allocation_leaves_a_valid_mesh)
 {
-    long k, base, total = -1;
-    int persistent;
-    for (persistent = 0; persistent <= 1; persistent++) {
-        for (k = 1; total < 0 || k <= total + 1; k++) {
-            cvmtest_alloc a;
-            cvm_mesh *m = NULL;
-            cvm_status s;
-            cvmtest_alloc_init(&a, 0, 0);
-            ck_assert_int_eq(cvmtest_mesh_create(&m, &a), CVM_OK);
-            ck_assert_int_eq(build(m, CVM_ALGO_DELAUNAY, 0.2), CVM_OK);
-            base = a.n_calls;
-            cvmtest_alloc_arm(&a, base + k, persistent);
-            s = cvm_mesh_optimise_dual(m, NULL);
-            ck_assert_msg(s == CVM_OK || s == CVM_E_NOMEM, "k=%ld: status %d", k, (int)s);
-            if (s == CVM_OK && total < 0)
-                total = a.n_calls - base;
-            cvmtest_alloc_arm(&a, 0, 0);
-            ck_assert_msg(cvm_mesh_check(m) == CVM_OK, "k=%ld: %s", k, cvm_mesh_errmsg(m));
-            cvm_mesh_free(m);
-            ck_assert_int_eq(a.live_blocks, 0);
-            if (s == CVM_OK && k > total)
-                break;
-        }
-    }
+    cvmtest_oom_sweep(oom_setup, oom_run, NULL, NULL);
 }
 END_TEST
 

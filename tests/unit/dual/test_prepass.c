@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "dual/dual_tests.h"
+#include "support/oom_sweep.h"
 #include "support/failing_alloc.h"
 
 /* The unit square with a slanted interior segment, Delaunay-refined at size h
@@ -212,45 +213,39 @@ END_TEST
 
 /* Allocation k fails (transient and persistent): CVM_OK or CVM_E_NOMEM, the
  * mesh valid, nothing leaked. */
+/* the sizings of the refinement (0.25) and of the optimisation (0.12) */
+typedef struct oom_sizes {
+    cvm_sizing *refine, *optimise;
+} oom_sizes;
+
+static void oom_setup(cvm_mesh *m, void *arg)
+{
+    static const double pts[] = {0, 0, 1, 0, 1, 1, 0, 1};
+    static const cvm_index seg[] = {0, 1, 1, 2, 2, 3, 3, 0};
+    const oom_sizes *z = (const oom_sizes *)arg;
+    ck_assert_int_eq(cvm_mesh_set_points(m, pts, 4, 2), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_segments(m, seg, 4), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_refine(m, z->refine, CVM_ALGO_DELAUNAY), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_DUAL_PREPASS, 1), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_DUAL_MAX_SWEEPS, 2), CVM_OK);
+}
+
+static cvm_status oom_run(cvm_mesh *m, void *arg)
+{
+    return cvm_mesh_optimise_dual(m, ((const oom_sizes *)arg)->optimise);
+}
+
 START_TEST(prepass_out_of_memory_leaves_a_valid_mesh)
 {
-    long k, base, total = -1;
-    int persistent;
-    for (persistent = 0; persistent <= 1; persistent++) {
-        total = -1;
-        for (k = 1; total < 0 || k <= total + 1; k++) {
-            static const double pts[] = {0, 0, 1, 0, 1, 1, 0, 1};
-            static const cvm_index seg[] = {0, 1, 1, 2, 2, 3, 3, 0};
-            cvmtest_alloc a;
-            cvm_mesh *m = NULL;
-            cvm_sizing *s = NULL;
-            cvm_status st;
-            cvmtest_alloc_init(&a, 0, 0);
-            ck_assert_int_eq(cvmtest_mesh_create(&m, &a), CVM_OK);
-            ck_assert_int_eq(cvm_mesh_set_points(m, pts, 4, 2), CVM_OK);
-            ck_assert_int_eq(cvm_mesh_set_segments(m, seg, 4), CVM_OK);
-            ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
-            ck_assert_int_eq(cvm_sizing_create(&s), CVM_OK);
-            ck_assert_int_eq(cvm_sizing_set_uniform(s, 0.25), CVM_OK);
-            ck_assert_int_eq(cvm_mesh_refine(m, s, CVM_ALGO_DELAUNAY), CVM_OK);
-            ck_assert_int_eq(cvm_sizing_set_uniform(s, 0.12), CVM_OK);
-            ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_DUAL_PREPASS, 1), CVM_OK);
-            ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_DUAL_MAX_SWEEPS, 2), CVM_OK);
-            base = a.n_calls;
-            cvmtest_alloc_arm(&a, base + k, persistent);
-            st = cvm_mesh_optimise_dual(m, s);
-            ck_assert_msg(st == CVM_OK || st == CVM_E_NOMEM, "k=%ld: status %d", k, (int)st);
-            if (st == CVM_OK && total < 0)
-                total = a.n_calls - base;
-            cvmtest_alloc_arm(&a, 0, 0);
-            ck_assert_msg(cvm_mesh_check(m) == CVM_OK, "k=%ld: %s", k, cvm_mesh_errmsg(m));
-            cvm_sizing_free(s);
-            cvm_mesh_free(m);
-            ck_assert_int_eq(a.live_blocks, 0);
-            if (st == CVM_OK && k > total)
-                break;
-        }
-    }
+    oom_sizes z;
+    ck_assert_int_eq(cvm_sizing_create(&z.refine), CVM_OK);
+    ck_assert_int_eq(cvm_sizing_set_uniform(z.refine, 0.25), CVM_OK);
+    ck_assert_int_eq(cvm_sizing_create(&z.optimise), CVM_OK);
+    ck_assert_int_eq(cvm_sizing_set_uniform(z.optimise, 0.12), CVM_OK);
+    cvmtest_oom_sweep(oom_setup, oom_run, NULL, &z);
+    cvm_sizing_free(z.refine);
+    cvm_sizing_free(z.optimise);
 }
 END_TEST
 

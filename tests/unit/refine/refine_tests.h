@@ -53,18 +53,6 @@ cvm_status rtest_refine_uniform(cvm_mesh *m, double h, cvm_algorithm algo);
  * report consistent, and a second run bit-identical. */
 void rtest_shared_geometry(const char *name, double h, long euler, cvm_algorithm algo);
 
-/* Out of memory at every allocation of a run, transient and then persistent:
- * for each failure point i = 1, 2, ... a fresh mesh on a failing allocator is
- * built by setup(m, arg), the allocator is armed to fail at the i-th
- * allocation after that, and run(m, arg) must return CVM_OK or CVM_E_NOMEM,
- * leak nothing and leave a mesh that passes cvm_mesh_check() (or says
- * CVM_E_STATE); check(m, arg) (may be NULL) adds checks on such a mesh (the
- * mesh oracle, for instance). The
- * sweep ends at the first run that meets no failure, which must be CVM_OK,
- * and asserts that the run made more than 20 allocations. */
-void rtest_oom_sweep(void (*setup)(cvm_mesh *m, void *arg), cvm_status (*run)(cvm_mesh *m, void *arg),
-                     void (*check)(cvm_mesh *m, void *arg), void *arg);
-
 /* The unit square (4 points, 4 segments) as the PSLG of m, triangulated. */
 void rtest_set_unit_square(cvm_mesh *m);
 

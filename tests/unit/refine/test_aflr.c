@@ -5,6 +5,7 @@
 
 #include "refine/refine_tests.h"
 #include "support/failing_alloc.h"
+#include "support/oom_sweep.h"
 #include "support/mesh_oracle.h"
 
 #define PI 3.14159265358979323846
@@ -439,7 +440,7 @@ static void oom_check(cvm_mesh *m, void *arg)
 
 START_TEST(out_of_memory_keeps_a_valid_mesh)
 {
-    rtest_oom_sweep(oom_setup, oom_run, oom_check, NULL);
+    cvmtest_oom_sweep(oom_setup, oom_run, oom_check, NULL);
 }
 END_TEST
 

@@ -5,6 +5,7 @@
 
 #include "refine/refine_tests.h"
 #include "support/failing_alloc.h"
+#include "support/oom_sweep.h"
 #include "support/mesh_oracle.h"
 
 #define PI 3.14159265358979323846
@@ -591,7 +592,7 @@ static cvm_status oom_run(cvm_mesh *m, void *arg)
 
 START_TEST(out_of_memory_is_a_status)
 {
-    rtest_oom_sweep(oom_setup, oom_run, NULL, NULL);
+    cvmtest_oom_sweep(oom_setup, oom_run, NULL, NULL);
 }
 END_TEST
 

@@ -6,6 +6,7 @@
 #include "refine/refine_internal.h"
 #include "api/api_internal.h"
 #include "support/failing_alloc.h"
+#include "support/oom_sweep.h"
 #include "support/mesh_oracle.h"
 
 /* Read, triangulate and refine name at uniform size h with CVM_ALGO_FRONTAL and
@@ -309,7 +310,7 @@ static void oom_check(cvm_mesh *m, void *arg)
 
 START_TEST(out_of_memory_keeps_a_valid_mesh)
 {
-    rtest_oom_sweep(oom_setup, oom_run, oom_check, NULL);
+    cvmtest_oom_sweep(oom_setup, oom_run, oom_check, NULL);
 }
 END_TEST
 

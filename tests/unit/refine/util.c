@@ -6,7 +6,6 @@
 
 #include "refine/refine_tests.h"
 #include "support/mesh_oracle.h"
-#include "support/failing_alloc.h"
 
 void rtest_fetch(cvm_mesh *m, double **xy, size_t *nv, cvm_index **tri, size_t *nt)
 {
@@ -306,41 +305,6 @@ void rtest_set_star(cvm_mesh *m, size_t spikes, unsigned long seed)
     ck_assert_int_eq(cvm_mesh_set_segments(m, seg, spikes), CVM_OK);
     free(xy);
     free(seg);
-}
-
-void rtest_oom_sweep(void (*setup)(cvm_mesh *m, void *arg), cvm_status (*run)(cvm_mesh *m, void *arg),
-                     void (*check)(cvm_mesh *m, void *arg), void *arg)
-{
-    int persistent;
-    for (persistent = 0; persistent <= 1; persistent++) {
-        long i;
-        for (i = 1; i < 100000; i++) {
-            cvmtest_alloc a;
-            cvm_mesh *m;
-            cvm_status st;
-            long failed;
-            cvmtest_alloc_init(&a, 0, 0);
-            ck_assert_int_eq(cvmtest_mesh_create(&m, &a), CVM_OK);
-            setup(m, arg);
-            cvmtest_alloc_arm(&a, i, persistent); /* counts from 0 again */
-            st = run(m, arg);
-            failed = a.n_failed;
-            cvmtest_alloc_arm(&a, 0, 0);
-            ck_assert_msg(st == CVM_OK || st == CVM_E_NOMEM, "allocation %ld: %s", i, cvm_status_str(st));
-            if (cvm_mesh_check(m) != CVM_E_STATE) {
-                ck_assert_msg(cvm_mesh_check(m) == CVM_OK, "allocation %ld: %s", i, cvm_mesh_errmsg(m));
-                if (check)
-                    check(m, arg);
-            }
-            cvm_mesh_free(m);
-            ck_assert_int_eq(a.live_blocks, 0);
-            if (failed == 0) {
-                ck_assert_int_eq(st, CVM_OK);
-                break;
-            }
-        }
-        ck_assert_msg(i > 20 && i < 100000, "%ld allocations", i);
-    }
 }
 
 void rtest_set_unit_square(cvm_mesh *m)
