@@ -992,6 +992,29 @@ static void snap_free(cvm__ctx *ctx, snap *S)
     cvm__free(ctx, S);
 }
 
+/* Copy the arrays of the triangulation (and the vertex map) into the
+ * snapshot, or back from it (back = 1), for the snapshot's counts. */
+static void snap_copy(dopt *D, int back)
+{
+    cvm__tri2 *T = D->T;
+    snap *S = D->snap;
+    size_t nt = S->nt, nv = S->nv;
+#define SNAP_COPY(t, s, bytes) ((back) ? memcpy((t), (s), (bytes)) : memcpy((s), (t), (bytes)))
+    SNAP_COPY(T->xy, S->xy, 2 * nv * sizeof *S->xy);
+    SNAP_COPY(T->w, S->w, nv * sizeof *S->w);
+    SNAP_COPY(T->vtri, S->vtri, nv * sizeof *S->vtri);
+    SNAP_COPY(T->tv, S->tv, 3 * nt * sizeof *S->tv);
+    SNAP_COPY(T->tn, S->tn, 3 * nt * sizeof *S->tn);
+    SNAP_COPY(T->tf, S->tf, nt);
+    if (T->te)
+        SNAP_COPY(T->te, S->te, 3 * nt * sizeof *S->te);
+    if (T->ta)
+        SNAP_COPY(T->ta, S->ta, nt * sizeof *S->ta);
+    if (D->topo)
+        SNAP_COPY(D->p->vmap, S->vmap, D->nv0 * sizeof *S->vmap);
+#undef SNAP_COPY
+}
+
 static cvm_status snap_take(dopt *D)
 {
     cvm__tri2 *T = D->T;
@@ -1028,18 +1051,7 @@ static cvm_status snap_take(dopt *D)
     S->free_head = T->free_head;
     S->last = T->last;
     S->rep = *D->rep;
-    memcpy(S->xy, T->xy, 2 * nv * sizeof *S->xy);
-    memcpy(S->w, T->w, nv * sizeof *S->w);
-    memcpy(S->vtri, T->vtri, nv * sizeof *S->vtri);
-    memcpy(S->tv, T->tv, 3 * nt * sizeof *S->tv);
-    memcpy(S->tn, T->tn, 3 * nt * sizeof *S->tn);
-    memcpy(S->tf, T->tf, nt);
-    if (T->te)
-        memcpy(S->te, T->te, 3 * nt * sizeof *S->te);
-    if (T->ta)
-        memcpy(S->ta, T->ta, nt * sizeof *S->ta);
-    if (D->topo)
-        memcpy(S->vmap, D->p->vmap, D->nv0 * sizeof *S->vmap);
+    snap_copy(D, 0);
     return CVM_OK;
 }
 
@@ -1047,27 +1059,15 @@ static void snap_back(dopt *D)
 {
     cvm__tri2 *T = D->T;
     const snap *S = D->snap;
-    size_t nt = S->nt, nv = S->nv;
     double seconds = D->rep->seconds;
-    T->nv = nv;
-    T->nt = nt;
+    T->nv = S->nv;
+    T->nt = S->nt;
     T->n_dead = S->n_dead;
     T->free_head = S->free_head;
     T->last = S->last;
     *D->rep = S->rep;
     D->rep->seconds = seconds;
-    memcpy(T->xy, S->xy, 2 * nv * sizeof *S->xy);
-    memcpy(T->w, S->w, nv * sizeof *S->w);
-    memcpy(T->vtri, S->vtri, nv * sizeof *S->vtri);
-    memcpy(T->tv, S->tv, 3 * nt * sizeof *S->tv);
-    memcpy(T->tn, S->tn, 3 * nt * sizeof *S->tn);
-    memcpy(T->tf, S->tf, nt);
-    if (T->te)
-        memcpy(T->te, S->te, 3 * nt * sizeof *S->te);
-    if (T->ta)
-        memcpy(T->ta, S->ta, nt * sizeof *S->ta);
-    if (D->topo)
-        memcpy(D->p->vmap, S->vmap, D->nv0 * sizeof *S->vmap);
+    snap_copy(D, 1);
 }
 
 static cvm_status mm_rounds(dopt *D, uint64_t k0, int rounds, size_t *best_nc, double *best_min,
