@@ -195,42 +195,15 @@ static ptrdiff_t find_edge(const cvm__edges *e, int32_t a, int32_t b)
  * cvm__domain_edges) into len (e->n entries). */
 static cvm_status dual_lengths(cvm__ctx *ctx, const cvm__tri2 *T, const cvm__edges *e, double *len)
 {
-    double *first = cvm__malloc(ctx, (2 * e->n + 1) * sizeof *first);
-    uint8_t *have = cvm__calloc(ctx, e->n + 1, 1);
-    size_t t;
-    int j;
-    if (!first || !have) {
-        cvm__free(ctx, first);
-        cvm__free(ctx, have);
+    double *ends = cvm__malloc(ctx, (4 * e->n + 1) * sizeof *ends);
+    size_t k;
+    if (!ends || cvm__dual_edge_ends(ctx, T, e, ends)) {
+        cvm__free(ctx, ends);
         return CVM_E_NOMEM;
     }
-    for (t = 0; t < T->nt; t++) {
-        const int32_t *v = T->tv + 3 * t;
-        double V[2];
-        if (!cvm__tri2_in_domain(T, (int32_t)t))
-            continue;
-        tri_vertex(T, t, V);
-        for (j = 0; j < 3; j++) {
-            int32_t a = v[(j + 1) % 3], b = v[(j + 2) % 3];
-            ptrdiff_t k = find_edge(e, a, b);
-            if (k < 0)
-                continue; /* cannot happen: e holds every domain edge */
-            if (e->bnd[k]) {
-                double M[2];
-                cvm__power_foot2d(T->xy + 2 * (size_t)a, T->xy + 2 * (size_t)b, weight(T, a),
-                                  weight(T, b), M);
-                len[k] = hypot(V[0] - M[0], V[1] - M[1]);
-            } else if (have[k]) {
-                len[k] = hypot(V[0] - first[2 * k], V[1] - first[2 * k + 1]);
-            } else {
-                first[2 * k] = V[0];
-                first[2 * k + 1] = V[1];
-                have[k] = 1;
-            }
-        }
-    }
-    cvm__free(ctx, first);
-    cvm__free(ctx, have);
+    for (k = 0; k < e->n; k++)
+        len[k] = hypot(ends[4 * k] - ends[4 * k + 2], ends[4 * k + 1] - ends[4 * k + 3]);
+    cvm__free(ctx, ends);
     return CVM_OK;
 }
 
