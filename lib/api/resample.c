@@ -556,18 +556,9 @@ static cvm_status rs_chain(rs_state *S, int closed)
 /* 1 when a-b is an edge of T. */
 static int rs_has_edge(const cvm__tri2 *T, int32_t a, int32_t b)
 {
-    int32_t t0 = T->vtri[a], t = t0;
-    size_t steps = 0;
-    if (t0 < 0)
-        return 0;
-    do {
-        const int32_t *tv = T->tv + 3 * (size_t)t;
-        int i = tv[0] == a ? 0 : tv[1] == a ? 1 : 2;
-        if (tv[(i + 1) % 3] == b || tv[(i + 2) % 3] == b)
-            return 1;
-        t = T->tn[3 * (size_t)t + (i + 1) % 3] / 3;
-    } while (t != t0 && ++steps <= T->nt);
-    return 0;
+    int32_t t;
+    int j;
+    return cvm__tri2_find_edge(T, a, b, &t, &j) || cvm__tri2_find_edge(T, b, a, &t, &j);
 }
 
 static int cmp_pair(const void *pa, const void *pb)

@@ -78,6 +78,11 @@ static inline int cvm__tri2_is_live(const cvm__tri2 *T, int32_t t)
  * than cap: then only the first cap were written), 0 for an unused vertex. */
 size_t cvm__tri2_star(const cvm__tri2 *T, int32_t v, int32_t *out, size_t cap);
 
+/* Half-edge a->b: the live triangle *t_out (ghosts included) that has b after
+ * a counter-clockwise, and *j_out the index of that edge (the corner opposite
+ * it). Returns 0 when a-b is not an edge. */
+int cvm__tri2_find_edge(const cvm__tri2 *T, int32_t a, int32_t b, int32_t *t_out, int *j_out);
+
 /* A real (non-ghost) live triangle inside the domain. */
 static inline int cvm__tri2_in_domain(const cvm__tri2 *T, int32_t t)
 {

@@ -223,3 +223,22 @@ size_t cvm__tri2_star(const cvm__tri2 *T, int32_t v, int32_t *out, size_t cap)
     } while (t != t0 && n <= T->nt);
     return n;
 }
+
+int cvm__tri2_find_edge(const cvm__tri2 *T, int32_t a, int32_t b, int32_t *t_out, int *j_out)
+{
+    int32_t t0 = T->vtri[a], t = t0;
+    size_t steps = 0;
+    if (t0 < 0)
+        return 0;
+    do {
+        const int32_t *tv = T->tv + 3 * (size_t)t;
+        int i = tv[0] == a ? 0 : tv[1] == a ? 1 : 2;
+        if (tv[(i + 1) % 3] == b) {
+            *t_out = t;
+            *j_out = (i + 2) % 3;
+            return 1;
+        }
+        t = T->tn[3 * (size_t)t + (size_t)(i + 1) % 3] / 3;
+    } while (t != t0 && ++steps <= T->nt);
+    return 0;
+}

@@ -274,9 +274,6 @@ cvm_status cvm__rf_new_vertex(cvm__refiner *R, int32_t v, int32_t seg);
 cvm_status cvm__rf_may_insert(cvm__refiner *R);
 /* Triangles around vertex v into R->star; returns their number, or 0 on NOMEM. */
 size_t cvm__rf_star(cvm__refiner *R, int32_t v);
-/* Half-edge a->b: triangle *t_out with edge *j_out from a to b counter-clockwise.
- * Returns 0 when a-b is not an edge. */
-int cvm__rf_find_edge(cvm__refiner *R, int32_t a, int32_t b, int32_t *t_out, int *j_out);
 
 /* ---- encroachment (encroach.c) ---- */
 

@@ -16,26 +16,6 @@ size_t cvm__rf_star(cvm__refiner *R, int32_t v)
     return n;
 }
 
-int cvm__rf_find_edge(cvm__refiner *R, int32_t a, int32_t b, int32_t *t_out, int *j_out)
-{
-    const cvm__tri2 *T = R->T;
-    int32_t t0 = T->vtri[a], t = t0;
-    size_t steps = 0;
-    if (t0 < 0)
-        return 0;
-    do {
-        const int32_t *tv = T->tv + 3 * (size_t)t;
-        int i = tv[0] == a ? 0 : tv[1] == a ? 1 : 2;
-        if (tv[(i + 1) % 3] == b) {
-            *t_out = t;
-            *j_out = (i + 2) % 3;
-            return 1;
-        }
-        t = T->tn[3 * (size_t)t + (i + 1) % 3] / 3;
-    } while (t != t0 && ++steps <= T->nt);
-    return 0;
-}
-
 /* Make room in the per-vertex arrays for n vertices. */
 static cvm_status rf_reserve_vertices(cvm__refiner *R, size_t n)
 {

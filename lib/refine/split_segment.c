@@ -44,9 +44,9 @@ cvm_status cvm__rf_split_queued(cvm__refiner *R)
 static int ss_domain_side(cvm__refiner *R, int32_t a, int32_t b, int32_t *t, int *j)
 {
     const cvm__tri2 *T = R->T;
-    if (cvm__rf_find_edge(R, a, b, t, j) && cvm__tri2_in_domain(T, *t))
+    if (cvm__tri2_find_edge(R->T, a, b, t, j) && cvm__tri2_in_domain(T, *t))
         return 1;
-    if (cvm__rf_find_edge(R, b, a, t, j) && cvm__tri2_in_domain(T, *t))
+    if (cvm__tri2_find_edge(R->T, b, a, t, j) && cvm__tri2_in_domain(T, *t))
         return 1;
     return 0;
 }
