@@ -27,15 +27,8 @@
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
-#define FUZZ_REQUIRE(cond, ...)                                        \
-    do {                                                               \
-        if (!(cond)) {                                                 \
-            fprintf(stderr, "fuzz_cdt: %s: ", #cond);                  \
-            fprintf(stderr, __VA_ARGS__);                              \
-            fprintf(stderr, "\n");                                     \
-            abort();                                                   \
-        }                                                              \
-    } while (0)
+#define FUZZ_NAME "fuzz_cdt"
+#include "fuzz_require.h"
 
 typedef struct input {
     int flags;

@@ -25,15 +25,8 @@
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
-#define FUZZ_REQUIRE(cond, ...)                                        \
-    do {                                                               \
-        if (!(cond)) {                                                 \
-            fprintf(stderr, "fuzz_poly_read: %s: ", #cond);            \
-            fprintf(stderr, __VA_ARGS__);                              \
-            fprintf(stderr, "\n");                                     \
-            abort();                                                   \
-        }                                                              \
-    } while (0)
+#define FUZZ_NAME "fuzz_poly_read"
+#include "fuzz_require.h"
 
 static void check_pslg(const cvm__pslg *p)
 {
