@@ -430,7 +430,8 @@ typedef enum cvm_option {
      *  vertices twice, or the rebuilt triangulation does not take every piece as one
      *  edge, nothing changes. Needs the mesh as
      *  cvm_mesh_triangulate() left it (CVM_E_STATE after a refinement, inserted
-     *  points or weights: triangulate again). Without a sizing, 0 changes nothing.
+     *  points or weights: triangulate again). Without a sizing (NULL or empty) 0
+     *  gives CVM_E_UNSUPPORTED and changes nothing.
      *  Integer, bounds [0, 1]. */
     CVM_OPT_KEEP_SEGMENT_VERTICES = 203,
     /** 1 (default): before refining, each input segment is split by marching along it
@@ -1045,6 +1046,8 @@ typedef enum cvm_algorithm {
  *                                 (message names the callback and the position)
  *         CVM_E_INPUT_NONFINITE   the sizing callback returned NaN or infinity (message
  *                                 names the callback and the position)
+ *         CVM_E_UNSUPPORTED       CVM_OPT_KEEP_SEGMENT_VERTICES = 0 without a sizing (NULL
+ *                                 or empty; the error item is that option; mesh unchanged)
  *         CVM_E_NOMEM             (the mesh keeps the points inserted before it and is valid)
  *         CVM_INCOMPLETE_STEINER_LIMIT, CVM_INCOMPLETE_TIME_LIMIT, CVM_INCOMPLETE_CANCELLED
  * @since 0.1

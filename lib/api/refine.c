@@ -197,11 +197,18 @@ static cvm_status refine_run(cvm_mesh *m, const cvm_sizing *sizing, cvm_algorith
     }
     /* CVM_OPT_KEEP_SEGMENT_VERTICES = 0: smooth chains re-discretised, the
        triangulation rebuilt (unchanged when no chain qualifies) */
-    if (cvm__opt(m, CVM_OPT_KEEP_SEGMENT_VERTICES) == 0 && p.sizing &&
-        !cvm__sizing_is_empty(p.sizing) &&
-        (s = cvm__mesh_resample_boundary(m, p.sizing, &n_chains)) != CVM_OK) {
-        cvm__auto_field_free(&field, &m->ctx);
-        return s;
+    if (cvm__opt(m, CVM_OPT_KEEP_SEGMENT_VERTICES) == 0) {
+        if (!p.sizing || cvm__sizing_is_empty(p.sizing))
+            s = cvm__error(&m->ctx, CVM_E_UNSUPPORTED, CVM_ENT_OPTION,
+                           (int64_t)CVM_OPT_KEEP_SEGMENT_VERTICES,
+                           "CVM_OPT_KEEP_SEGMENT_VERTICES = 0 re-discretises the segments with "
+                           "the sizing: give cvm_mesh_refine() a non-empty sizing");
+        else
+            s = cvm__mesh_resample_boundary(m, p.sizing, &n_chains);
+        if (s != CVM_OK) {
+            cvm__auto_field_free(&field, &m->ctx);
+            return s;
+        }
     }
     nv0 = m->tri.nv;
     if (m->in.nseg) {

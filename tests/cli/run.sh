@@ -335,9 +335,12 @@ expect_exit 0 "refine --resample-boundary" "$CLI" refine "$SHARED/data/annulus.p
 expect_grep "--resample-boundary meets the angle" "$TMP/out" "triangles below the angle: 0"
 # 192 input segments (spacing 0.1 and 0.2) become 21 + 84 pieces of about 0.3
 expect_grep "--resample-boundary re-discretises the circles" "$TMP/out" "segments                     105"
-expect_exit 0 "--resample-boundary without a size changes nothing" "$CLI" refine \
+rm -f "$OUT/plain.vtu"
+expect_exit 1 "--resample-boundary without a size is refused" "$CLI" refine \
     "$SHARED/data/annulus.poly" --resample-boundary --quality -o "$OUT/plain.vtu"
-expect_grep "--resample-boundary without a size" "$TMP/out" "segments                     192"
+expect_grep "--resample-boundary without a size names the option" "$TMP/err" "KEEP_SEGMENT_VERTICES"
+expect_one_line "--resample-boundary without a size"
+if [ -e "$OUT/plain.vtu" ]; then fail "--resample-boundary without a size wrote a file"; else pass; fi
 
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -440,15 +440,31 @@ START_TEST(option_and_state_errors)
     ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_KEEP_SEGMENT_VERTICES, -1), CVM_E_OPTION_RANGE);
     ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_KEEP_SEGMENT_VERTICES, 0.5), CVM_E_OPTION_RANGE);
     ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_KEEP_SEGMENT_VERTICES, 0), CVM_OK);
-    /* no sizing: nothing to re-discretise with, the same mesh as with 1 */
+    /* no sizing (NULL or empty): nothing to re-discretise with, refused with
+     * the option as the error item, the mesh as triangulated */
     ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
-    ck_assert_int_eq(cvm_mesh_refine(m, NULL, CVM_ALGO_DELAUNAY), CVM_OK);
     ck_assert_int_eq(cvm_mesh_create(&m2), CVM_OK);
     set_annulus(m2);
     ck_assert_int_eq(cvm_mesh_triangulate(m2), CVM_OK);
-    ck_assert_int_eq(cvm_mesh_refine(m2, NULL, CVM_ALGO_DELAUNAY), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_refine(m, NULL, CVM_ALGO_DELAUNAY), CVM_E_UNSUPPORTED);
+    ck_assert_ptr_nonnull(strstr(cvm_mesh_errmsg(m), "KEEP_SEGMENT_VERTICES"));
+    {
+        cvm_entity kind = CVM_ENT_NONE;
+        int64_t item = -1;
+        cvm_sizing *empty;
+        ck_assert_int_eq(cvm_mesh_error_item(&kind, &item, m), CVM_OK);
+        ck_assert_int_eq(kind, CVM_ENT_OPTION);
+        ck_assert_int_eq(item, (int64_t)CVM_OPT_KEEP_SEGMENT_VERTICES);
+        ck_assert_int_eq(cvm_sizing_create(&empty), CVM_OK);
+        ck_assert_int_eq(cvm_mesh_refine(m, empty, CVM_ALGO_FRONTAL), CVM_E_UNSUPPORTED);
+        cvm_sizing_free(empty);
+    }
     rtest_assert_identical(m, m2);
     cvm_mesh_free(m2);
+    /* with the input vertices kept, refinement without a sizing works */
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_KEEP_SEGMENT_VERTICES, 1), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_refine(m, NULL, CVM_ALGO_DELAUNAY), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_KEEP_SEGMENT_VERTICES, 0), CVM_OK);
     /* refined already: refused, mesh unchanged and valid */
     ck_assert_int_eq(refine_with(m, 0.3, CVM_ALGO_FRONTAL), CVM_E_STATE);
     ck_assert_ptr_nonnull(strstr(cvm_mesh_errmsg(m), "KEEP_SEGMENT_VERTICES"));
