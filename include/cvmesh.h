@@ -612,7 +612,8 @@ typedef enum cvm_option {
      *  vertex. Input points and segments are untouched; flips restore the regular
      *  triangulation. Vertices are renumbered as with CVM_OPT_DUAL_TOPOLOGY (markers
      *  and attributes follow); added vertices have marker 0 and attributes 0. Needs
-     *  CVM_OPT_DUAL_TOPOLOGY >= 1 (ignored with 0). Deterministic. */
+     *  CVM_OPT_DUAL_TOPOLOGY >= 1 (with 0, cvm_mesh_optimise_dual() returns
+     *  CVM_E_UNSUPPORTED). Deterministic. */
     CVM_OPT_DUAL_PREPASS = 510,
     /** Rounds of the max-min-angle phase of cvm_mesh_optimise_dual(), integer,
      *  default 5, bounds [0, 10000]; 0: no such phase (nor with
@@ -638,7 +639,8 @@ typedef enum cvm_option {
     CVM_OPT_DUAL_MAXMIN_ROUNDS = 511,
     /** Removal-trial calls after the max-min rounds of cvm_mesh_optimise_dual(),
      *  integer, default 0 (none), bounds [0, 64]; needs CVM_OPT_DUAL_TOPOLOGY >= 1
-     *  and CVM_OPT_DUAL_MAXMIN_ROUNDS >= 1. Each call tries removal for the
+     *  (with 0, cvm_mesh_optimise_dual() returns CVM_E_UNSUPPORTED) and
+     *  CVM_OPT_DUAL_MAXMIN_ROUNDS >= 1. Each call tries removal for the
      *  triangles within 0.5 degree of the smallest angle: up to 8 removable
      *  Steiner vertices (first the least-degree neighbour of each hub, an interior
      *  vertex of 8 or more triangles holding such a smallest angle, which caps it
@@ -1473,6 +1475,8 @@ CVM_API cvm_status cvm_mesh_copy_dual_merge_groups(cvm_index *dst, size_t dst_le
  * @return CVM_OK
  *         CVM_E_NULL_ARG           m is NULL
  *         CVM_E_STATE              nothing triangulated
+ *         CVM_E_UNSUPPORTED        CVM_OPT_DUAL_PREPASS or CVM_OPT_DUAL_MAXMIN_TRIALS set with
+ *                                  CVM_OPT_DUAL_TOPOLOGY 0 (error item: that option; mesh unchanged)
  *         CVM_E_ARGUMENT           the sizing callback returned a value <= 0 (message
  *                                  gives the position)
  *         CVM_E_INPUT_NONFINITE    the sizing callback returned NaN or infinity

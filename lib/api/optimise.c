@@ -107,6 +107,12 @@ cvm_status cvm_mesh_optimise_dual(cvm_mesh *m, const cvm_sizing *sizing)
     p.prepass = (int)cvm__opt(m, CVM_OPT_DUAL_PREPASS);
     p.maxmin_rounds = (int)cvm__opt(m, CVM_OPT_DUAL_MAXMIN_ROUNDS);
     p.maxmin_trials = (int)cvm__opt(m, CVM_OPT_DUAL_MAXMIN_TRIALS);
+    /* both remove or insert vertices: without topology changes they could do nothing */
+    if (!p.topology && (p.prepass || p.maxmin_trials))
+        return cvm__error(&m->ctx, CVM_E_UNSUPPORTED, CVM_ENT_OPTION,
+                          (int64_t)(p.prepass ? CVM_OPT_DUAL_PREPASS : CVM_OPT_DUAL_MAXMIN_TRIALS),
+                          "%s needs CVM_OPT_DUAL_TOPOLOGY >= 1 (it changes the vertices)",
+                          p.prepass ? "CVM_OPT_DUAL_PREPASS" : "CVM_OPT_DUAL_MAXMIN_TRIALS");
     nv0 = m->tri.nv;
     if (p.topology) {
         vmap = cvm__malloc(&m->ctx, (nv0 + 1) * sizeof *vmap);

@@ -456,6 +456,36 @@ START_TEST(maxmin_removal_trials_keep_compliance_and_never_lower_the_angle)
 }
 END_TEST
 
+/* The pre-pass and the removal trials change vertices: with
+ * CVM_OPT_DUAL_TOPOLOGY 0 each is refused (CVM_E_UNSUPPORTED, the option as
+ * the error item), not ignored, and the mesh is left as it was. */
+START_TEST(topology_0_refuses_prepass_and_removal_trials)
+{
+    static const cvm_option keys[2] = {CVM_OPT_DUAL_PREPASS, CVM_OPT_DUAL_MAXMIN_TRIALS};
+    int k;
+    for (k = 0; k < 2; k++) {
+        cvm_mesh *m = refined(CVM_ALGO_FRONTAL, 0.1);
+        dtest_mesh d0, d;
+        cvm_entity kind = CVM_ENT_NONE;
+        int64_t item = -1;
+        dtest_get(m, &d0);
+        ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_DUAL_TOPOLOGY, 0), CVM_OK);
+        ck_assert_int_eq(cvm_mesh_set_option(m, keys[k], 1), CVM_OK);
+        ck_assert_int_eq(cvm_mesh_optimise_dual(m, NULL), CVM_E_UNSUPPORTED);
+        ck_assert_ptr_nonnull(strstr(cvm_mesh_errmsg(m), "CVM_OPT_DUAL_TOPOLOGY"));
+        ck_assert_int_eq(cvm_mesh_error_item(&kind, &item, m), CVM_OK);
+        ck_assert_int_eq(kind, CVM_ENT_OPTION);
+        ck_assert_int_eq(item, (int64_t)keys[k]);
+        dtest_get(m, &d);
+        ck_assert_uint_eq(d.nv, d0.nv);
+        ck_assert_int_eq(memcmp(d.xy, d0.xy, 2 * d.nv * sizeof *d.xy), 0);
+        dtest_free(&d0);
+        dtest_free(&d);
+        cvm_mesh_free(m);
+    }
+}
+END_TEST
+
 /* A Steiner vertex given a weight so low that its power cell vanishes is
  * removed by the optimiser (reported), not kept by raising its weight: the
  * vertex count drops by the reported number, input points and segments stay,
@@ -619,6 +649,7 @@ TCase *dual_optimise_tcase(void)
     tcase_add_test(tc, layer_priority_changes_the_order_deterministically);
     tcase_add_test(tc, maxmin_phase_raises_the_smallest_angle_and_keeps_compliance);
     tcase_add_test(tc, maxmin_removal_trials_keep_compliance_and_never_lower_the_angle);
+    tcase_add_test(tc, topology_0_refuses_prepass_and_removal_trials);
     tcase_add_test(tc, vanished_steiner_vertex_is_removed_and_reported);
     tcase_add_test(tc, topology_0_keeps_every_vertex);
     tcase_add_test(tc, optimise_rejects_null_untriangulated_and_bad_sizing);
