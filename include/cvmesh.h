@@ -652,12 +652,12 @@ typedef enum cvm_option {
      *  copy comes back and that position is not tried again. A call that keeps a
      *  trial is followed by the next, up to this count; removals are counted in
      *  CVM_MEASURE_DUAL_OPT_REMOVED_MAXMIN. The trials follow the rounds whether
-     *  or not those stalled. Deterministic. Measured (bench_dual, one thread, 8
-     *  calls against 0, 10 rounds): frontal cylinder 37.7 -> 39.8 degrees at
-     *  0.24 -> 0.66 s, frontal annulus 45.0 -> 47.1 at 0.17 -> 0.40 s; Delaunay
-     *  NACA 0012 36.1 -> 37.7 at 1.5 -> 2.2 s, the 37k-triangle Delaunay square
-     *  unchanged at 2.0 -> 2.3 s: over the 2 s budget of issue 6, hence off by
-     *  default. */
+     *  or not those stalled. Deterministic. Measured (bench_dual driver, one
+     *  thread, 8 calls against 0, default rounds): frontal cylinder 37.7 -> 39.8
+     *  degrees at 0.25 -> 0.64 s, frontal annulus 45.0 -> 47.1 at 0.18 -> 0.43 s;
+     *  Delaunay NACA 0012 36.1 -> 37.5 at 1.4 -> 1.9 s, the 37k-triangle Delaunay
+     *  square 39.0 -> 39.9 at 1.9 -> 2.5 s: over the 2 s budget of issue 6, hence
+     *  off by default. */
     CVM_OPT_DUAL_MAXMIN_TRIALS = 512,
     /** Merge tolerance, a fraction of the local ideal dual edge l / sqrt(3), default
      *  0.1, bounds [0, 1]; 0 merges nothing. l at an edge is the mean of the local
