@@ -949,6 +949,33 @@ CVM_API cvm_status cvm_sizing_set_callback(cvm_sizing *s, cvm_sizing_fn fn, void
 CVM_API cvm_status cvm_sizing_set_automatic(cvm_sizing *s, double R, double G);
 
 /**
+ * Grade the size away from the domain's own boundary spacing:
+ *   h(p) <= min over boundary and constrained edges e of ( l(e) + g * dist(p, e) ),
+ * with l(e) the length of e in the mesh being refined or optimised (input segments,
+ * their pieces, hull edges). Short input segments (a finely spaced wall) then grow
+ * into the interior at slope g instead of meeting the rest of the sizing within a
+ * layer or two, which gives better-shaped triangles there (and, after
+ * cvm_mesh_optimise_dual(), a larger smallest angle) for a few more vertices; Gmsh's
+ * Mesh.MeshSizeExtendFromBoundary is the same idea. The field is sampled at the
+ * edges' vertices (l = the shortest incident edge) and at about one point per l
+ * inside longer edges (l = the edge's length), and is built by each
+ * cvm_mesh_refine() and cvm_mesh_optimise_dual() from its mesh; cvm_sizing_eval()
+ * has no domain and ignores it. Combined with the other sources by the minimum;
+ * alone it bounds the size near the boundary only.
+ *
+ * @param g  slope (length per unit distance), finite and > 0, e.g. 0.3-0.5 (smaller
+ *           grades more gently); 0 turns it off again.
+ * Thread-safety: one call at a time on @p s.
+ * Atomicity: on error the handle is unchanged.
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG         s is NULL
+ *         CVM_E_INPUT_NONFINITE  g is not finite
+ *         CVM_E_ARGUMENT         g < 0
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_sizing_set_boundary_grading(cvm_sizing *s, double g);
+
+/**
  * Sizes given at the nodes of a background triangulation: inside its triangles the
  * size is interpolated linearly (the least value where triangles overlap); outside
  * them this source sets no bound. Replaces an earlier background of the handle.
@@ -1454,8 +1481,9 @@ CVM_API cvm_status cvm_mesh_copy_dual_merge_groups(cvm_index *dst, size_t dst_le
  *
  * @param m       mesh handle, triangulated; not NULL. Existing weights are the start.
  * @param sizing  local size for the solver's step lengths; may be NULL: then the
- *                size at a vertex is the mean length of its edges. Read only during
- *                the call; not kept.
+ *                size at a vertex is the mean length of its edges. Its automatic and
+ *                boundary-grading parts are built from the mesh at the start of the
+ *                call (as cvm_mesh_refine() does). Read only during the call; not kept.
  * Options:  CVM_OPT_DUAL_*, CVM_OPT_SEED, CVM_OPT_TIME_LIMIT_S; the progress
  *           callback (stage CVM_STAGE_OPTIMISE_DUAL) gets the fraction of the
  *           initially non-compliant triangles made compliant so far, and can cancel.

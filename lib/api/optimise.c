@@ -5,6 +5,7 @@
 #include "output_internal.h"
 #include "dual/dual_internal.h"
 #include "refine/refine_internal.h"
+#include "sizing_fields.h"
 
 enum { REP_SWEEPS, REP_BEFORE, REP_AFTER, REP_MOVES, REP_FLIPS, REP_FIXES, REP_SECONDS,
        REP_REMOVED_VANISHED, REP_REMOVED_DEGREE, REP_REMOVED_MAXMIN };
@@ -79,6 +80,8 @@ cvm_status cvm_mesh_optimise_dual(cvm_mesh *m, const cvm_sizing *sizing)
     cvm__dual_opt_params p;
     cvm__dual_opt_report rep;
     size_payload sp;
+    cvm__sizing_fields fields;
+    const cvm_sizing *use;
     cvm_status s;
     int32_t *vmap = NULL;
     size_t nv0;
@@ -120,8 +123,13 @@ cvm_status cvm_mesh_optimise_dual(cvm_mesh *m, const cvm_sizing *sizing)
             return cvm__nomem(&m->ctx);
         p.vmap = vmap;
     }
-    if (!cvm__sizing_is_empty(sizing)) {
-        sp.sizing = sizing;
+    /* the automatic length scale and the boundary spacing of the mesh as it is */
+    if ((s = cvm__sizing_fields_begin(m, sizing, &fields, &use)) != CVM_OK) {
+        cvm__free(&m->ctx, vmap);
+        return s;
+    }
+    if (!cvm__sizing_is_empty(use)) {
+        sp.sizing = use;
         sp.err = &m->ctx;
         p.size_fn = size_at;
         p.size_payload = &sp;
@@ -129,6 +137,7 @@ cvm_status cvm_mesh_optimise_dual(cvm_mesh *m, const cvm_sizing *sizing)
     memset(m->dual_opt_report, 0, sizeof m->dual_opt_report);
     cvm__run_begin(&m->ctx, cvm__opt(m, CVM_OPT_TIME_LIMIT_S));
     s = cvm__dual_optimise(&m->tri, &p, &rep);
+    cvm__sizing_fields_end(m, &fields);
     if (vmap && (m->tri.nv < nv0 || rep.prepass_removed || rep.prepass_added))
         drop_vertex_data(m, vmap, nv0);
     if (vmap && rep.prepass_added && new_vertex_data(m, vmap, nv0) && s == CVM_OK)

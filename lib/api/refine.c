@@ -3,6 +3,7 @@
 
 #include "output_internal.h"
 #include "refine/refine_internal.h"
+#include "sizing_fields.h"
 
 enum { REP_STEINER, REP_UNMET_ANGLE, REP_UNMET_SIZE, REP_SMALL_ANGLE, REP_REQUESTED, REP_MET };
 
@@ -68,24 +69,6 @@ static cvm_status refine_vertex_data(cvm_mesh *m, size_t nv0)
         }
     }
     return CVM_OK;
-}
-
-/* The automatic field of the domain of m; features are its boundary and
- * constrained edges and the input points on none of them. */
-static cvm_status refine_auto_field(cvm_mesh *m, const cvm_sizing *sizing, cvm__auto_field *F)
-{
-    uint8_t *is_input = cvm__malloc(&m->ctx, m->tri.nv + 1);
-    size_t k;
-    cvm_status s;
-    if (!is_input)
-        return cvm__nomem(&m->ctx);
-    memset(is_input, 0, m->tri.nv + 1);
-    for (k = 0; k < m->in.np; k++)
-        if (m->input_map[k] >= 0)
-            is_input[m->input_map[k]] = 1;
-    s = cvm__auto_field_build(F, &m->tri, is_input, sizing->auto_R, sizing->auto_G, &m->ctx);
-    cvm__free(&m->ctx, is_input);
-    return s;
 }
 
 /* Regional maximum areas: when a region sets one, each triangle's attribute is
@@ -156,8 +139,7 @@ static void refine_regions_end(cvm_mesh *m, double *area)
 static cvm_status refine_run(cvm_mesh *m, const cvm_sizing *sizing, cvm_algorithm algo)
 {
     double *region_area = NULL;
-    cvm__auto_field field;
-    cvm_sizing local;
+    cvm__sizing_fields fields;
     cvm__refine_params p;
     cvm__refine_report rep;
     int32_t *ends = NULL;
@@ -185,16 +167,9 @@ static cvm_status refine_run(cvm_mesh *m, const cvm_sizing *sizing, cvm_algorith
     p.sizing = sizing;
     p.nseg = m->in.nseg;
     cvm__run_begin(&m->ctx, cvm__opt(m, CVM_OPT_TIME_LIMIT_S));
-    memset(&field, 0, sizeof field);
-    if (sizing && sizing->has_auto) {
-        /* the automatic length scale needs the domain: built here, evaluated
-           through a private copy of the handle (the caller's stays untouched) */
-        if ((s = refine_auto_field(m, sizing, &field)) != CVM_OK)
-            return s;
-        local = *sizing;
-        local.autof = &field;
-        p.sizing = &local;
-    }
+    /* the automatic length scale and the boundary spacing need the domain */
+    if ((s = cvm__sizing_fields_begin(m, sizing, &fields, &p.sizing)) != CVM_OK)
+        return s;
     /* CVM_OPT_KEEP_SEGMENT_VERTICES = 0: smooth chains re-discretised, the
        triangulation rebuilt (unchanged when no chain qualifies) */
     if (cvm__opt(m, CVM_OPT_KEEP_SEGMENT_VERTICES) == 0) {
@@ -206,7 +181,7 @@ static cvm_status refine_run(cvm_mesh *m, const cvm_sizing *sizing, cvm_algorith
         else
             s = cvm__mesh_resample_boundary(m, p.sizing, &n_chains);
         if (s != CVM_OK) {
-            cvm__auto_field_free(&field, &m->ctx);
+            cvm__sizing_fields_end(m, &fields);
             return s;
         }
     }
@@ -214,20 +189,20 @@ static cvm_status refine_run(cvm_mesh *m, const cvm_sizing *sizing, cvm_algorith
     if (m->in.nseg) {
         ends = cvm__malloc(&m->ctx, 2 * m->in.nseg * sizeof *ends);
         if (!ends) {
-            cvm__auto_field_free(&field, &m->ctx);
+            cvm__sizing_fields_end(m, &fields);
             return cvm__nomem(&m->ctx);
         }
         for (k = 0; k < 2 * m->in.nseg; k++)
             ends[k] = m->input_map[m->in.seg[k]];
     }
     if (algo == CVM_ALGO_AFLR && refine_front_flags(m, &front)) {
-        cvm__auto_field_free(&field, &m->ctx);
+        cvm__sizing_fields_end(m, &fields);
         cvm__free(&m->ctx, ends);
         return cvm__nomem(&m->ctx);
     }
     (void)n_chains; /* how many chains were re-discretised: not reported yet */
     if ((s = refine_regions_begin(m, &region_area)) != CVM_OK) {
-        cvm__auto_field_free(&field, &m->ctx);
+        cvm__sizing_fields_end(m, &fields);
         cvm__free(&m->ctx, ends);
         cvm__free(&m->ctx, front);
         return s;
@@ -238,7 +213,7 @@ static cvm_status refine_run(cvm_mesh *m, const cvm_sizing *sizing, cvm_algorith
     p.nregion = m->in.nregions;
     s = cvm__refine(&m->tri, &p, &rep);
     refine_regions_end(m, region_area);
-    cvm__auto_field_free(&field, &m->ctx);
+    cvm__sizing_fields_end(m, &fields);
     cvm__free(&m->ctx, ends);
     cvm__free(&m->ctx, front);
     m->tlayer = rep.cell_layer;

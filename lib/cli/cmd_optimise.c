@@ -1,6 +1,6 @@
 /*
  * cmd_optimise.c - `cvmesh optimise IN.poly|IN.node|IN.vtu [--algo delaunay|frontal]
- * [--size H] [-o OUT] [--dual DUAL.vtu] [--quality] [option flags]`: read, triangulate
+ * [--size H] [--boundary-grading G] [-o OUT] [--dual DUAL.vtu] [--quality] [option flags]`: read, triangulate
  * (a .vtu is already a mesh), optionally refine, optimise the power dual, write, report.
  */
 #include <stdlib.h>
@@ -13,6 +13,7 @@ typedef struct oargs {
     int quality, refine;
     cvm_algorithm algo;
     double size; /* 0: none */
+    double bgrad; /* --boundary-grading G (0: off) */
     cli_setting set[CLI_MAX_SETTINGS];
     int nset;
 } oargs;
@@ -21,7 +22,8 @@ void cli_optimise_help(FILE *f)
 {
     fprintf(f,
             "usage: cvmesh optimise IN.poly|IN.node|IN.vtu [--algo delaunay|frontal] [--size H]\n"
-            "                       [-o OUT] [--dual DUAL.vtu] [--quality] [option flags]\n"
+            "                       [--boundary-grading G] [-o OUT] [--dual DUAL.vtu]\n"
+            "                       [--quality] [option flags]\n"
             "\n"
             "Triangulate IN (a .vtu written by cvmesh is read back as its mesh, weights\n"
             "included; refined first when --algo or --size is given), then move the\n"
@@ -32,6 +34,10 @@ void cli_optimise_help(FILE *f)
             "  --algo NAME                refine first: frontal (default when --size is given)\n"
             "                             or delaunay\n"
             "  --size H                   target edge length of that refinement (uniform)\n"
+            "  --boundary-grading G       with --size: also cap the size by l(e) + G x distance\n"
+            "                             from each boundary edge e of length l(e), so a finely\n"
+            "                             spaced wall grows at slope G (e.g. 0.3: larger\n"
+            "                             smallest angles after the optimisation)\n"
             "  -o, --output OUT           write the mesh (.vtu, .msh, .svg, .node; .node files\n"
             "                             carry each vertex's weight as its first attribute)\n"
             "  --dual DUAL.vtu            write the power (Voronoi) cells as VTK polygons with\n"
@@ -60,6 +66,8 @@ static int parse_value(oargs *a, int argc, char **argv, int *i)
         a->refine = 1;
         return cli_parse_positive(s, argv[*i], &a->size);
     }
+    if (strcmp(s, "--boundary-grading") == 0)
+        return cli_parse_positive(s, argv[*i], &a->bgrad);
     if (strcmp(s, "--dual") == 0)
         a->dual = argv[*i];
     else
@@ -79,7 +87,8 @@ static int parse(oargs *a, int argc, char **argv)
             return -1;
         }
         if (strcmp(s, "--algo") == 0 || strcmp(s, "--size") == 0 || strcmp(s, "-o") == 0 ||
-            strcmp(s, "--output") == 0 || strcmp(s, "--dual") == 0) {
+            strcmp(s, "--output") == 0 || strcmp(s, "--dual") == 0 ||
+            strcmp(s, "--boundary-grading") == 0) {
             if ((r = parse_value(a, argc, argv, &i)))
                 return r;
             continue;
@@ -91,6 +100,11 @@ static int parse(oargs *a, int argc, char **argv)
         if ((r = cli_parse_tail("optimise", CLI_CMD_OPTIMISE, argc, argv, &i, a->set, &a->nset,
                                 &a->in)))
             return r;
+    }
+    if (a->bgrad > 0 && !(a->size > 0)) {
+        fprintf(stderr, "cvmesh: optimise: --boundary-grading needs --size (it grades the "
+                        "refinement's size)\n");
+        return CLI_EXIT_USAGE;
     }
     return cli_need_input("optimise", a->in);
 }
@@ -135,6 +149,12 @@ static int run(const oargs *a)
     int rc;
     if ((rc = cli_start(&m, &sz, a->set, a->nset, a->size)))
         return rc;
+    if (cvm_sizing_set_boundary_grading(sz, a->bgrad) != CVM_OK) {
+        fprintf(stderr, "cvmesh: --boundary-grading: %s\n", cvm_sizing_errmsg(sz));
+        cvm_sizing_free(sz);
+        cvm_mesh_free(m);
+        return CLI_EXIT_USAGE;
+    }
     if (cvm_mesh_read(m, a->in) != CVM_OK)
         return cli_fail(m, sz, NULL);
     if (!cli_is_triangulated(m) && cvm_mesh_triangulate(m) != CVM_OK) /* a .vtu is a mesh */

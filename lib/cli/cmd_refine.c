@@ -1,6 +1,6 @@
 /*
  * cmd_refine.c - `cvmesh refine IN.poly|IN.vtu [--algo delaunay|frontal|aflr] [--size H]
- * [--auto R] [--grading G] [--fronts M,...] [-o OUT] [--svg PIC.svg] [--dual DUAL.vtu]
+ * [--auto R] [--grading G] [--boundary-grading G] [--fronts M,...] [-o OUT] [--svg PIC.svg] [--dual DUAL.vtu]
  * [--quality] [option flags]`: read, triangulate (unless the input is a mesh), refine,
  * write, report.
  */
@@ -15,6 +15,7 @@ typedef struct rargs {
     cvm_algorithm algo;
     double size; /* 0: none */
     double auto_r, grading; /* --auto R (0: off), --grading G */
+    double bgrad; /* --boundary-grading G (0: off) */
     int32_t fronts[64]; /* --fronts: segment markers that start fronts (aflr) */
     size_t nfronts;
     cli_setting set[CLI_MAX_SETTINGS];
@@ -25,7 +26,8 @@ void cli_refine_help(FILE *f)
 {
     fprintf(f,
             "usage: cvmesh refine IN.poly|IN.vtu [--algo delaunay|frontal|aflr] [--size H]\n"
-            "                     [--auto R [--grading G]] [--fronts M1,M2,...] [-o OUT]\n"
+            "                     [--auto R [--grading G]] [--boundary-grading G]\n"
+            "                     [--fronts M1,M2,...] [-o OUT]\n"
             "                     [--svg PIC.svg] [--dual DUAL.vtu] [--quality] [option flags]\n"
             "\n"
             "Constrained Delaunay triangulation of IN, then refinement until every triangle\n"
@@ -42,6 +44,9 @@ void cli_refine_help(FILE *f)
             "                             size / R (R edges per feature), graded by --grading\n"
             "  --grading G                with --auto: the size grows by at most 1/G per unit\n"
             "                             of distance (default 4)\n"
+            "  --boundary-grading G       also cap the size by l(e) + G x distance from each\n"
+            "                             boundary edge e of length l(e): fine input spacing\n"
+            "                             grows into the interior at slope G (e.g. 0.3)\n"
             "  -o, --output OUT           write the mesh (.vtu, .msh, .svg, .node)\n"
             "  --svg PIC.svg              also draw the mesh, coloured by smallest angle\n"
             "                             (by layer index for aflr)\n"
@@ -86,7 +91,8 @@ static int parse_value(rargs *a, int argc, char **argv, int *i)
     ++*i;
     if (strcmp(s, "--algo") == 0)
         return cli_parse_algo("refine", argv[*i], 1, &a->algo);
-    if (strcmp(s, "--size") == 0 || strcmp(s, "--auto") == 0 || strcmp(s, "--grading") == 0) {
+    if (strcmp(s, "--size") == 0 || strcmp(s, "--auto") == 0 || strcmp(s, "--grading") == 0 ||
+        strcmp(s, "--boundary-grading") == 0) {
         double v;
         if (cli_parse_positive(s, argv[*i], &v))
             return CLI_EXIT_USAGE;
@@ -94,6 +100,8 @@ static int parse_value(rargs *a, int argc, char **argv, int *i)
             a->size = v;
         else if (s[2] == 'a')
             a->auto_r = v;
+        else if (s[2] == 'b')
+            a->bgrad = v;
         else
             a->grading = v;
         return CLI_EXIT_OK;
@@ -122,7 +130,8 @@ static int parse(rargs *a, int argc, char **argv)
             return -1;
         }
         if (strcmp(s, "--algo") == 0 || strcmp(s, "--size") == 0 || strcmp(s, "--auto") == 0 ||
-            strcmp(s, "--grading") == 0 || strcmp(s, "-o") == 0 || strcmp(s, "--output") == 0 ||
+            strcmp(s, "--grading") == 0 || strcmp(s, "--boundary-grading") == 0 ||
+            strcmp(s, "-o") == 0 || strcmp(s, "--output") == 0 ||
             strcmp(s, "--svg") == 0 || strcmp(s, "--dual") == 0 || strcmp(s, "--fronts") == 0) {
             if ((r = parse_value(a, argc, argv, &i)))
                 return r;
@@ -185,8 +194,9 @@ static int run(const rargs *a)
     int rc;
     if ((rc = cli_start(&m, &sz, a->set, a->nset, a->size)))
         return rc;
-    if (a->auto_r > 0 && cvm_sizing_set_automatic(sz, a->auto_r, a->grading) != CVM_OK) {
-        fprintf(stderr, "cvmesh: --auto: %s\n", cvm_sizing_errmsg(sz));
+    if ((a->auto_r > 0 && cvm_sizing_set_automatic(sz, a->auto_r, a->grading) != CVM_OK) ||
+        cvm_sizing_set_boundary_grading(sz, a->bgrad) != CVM_OK) {
+        fprintf(stderr, "cvmesh: sizing: %s\n", cvm_sizing_errmsg(sz));
         cvm_sizing_free(sz);
         cvm_mesh_free(m);
         return CLI_EXIT_USAGE;

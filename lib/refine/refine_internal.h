@@ -82,8 +82,10 @@ struct cvm_sizing {
     int has_auto;         /* cvm_sizing_set_automatic() */
     double auto_R, auto_G;
     cvm__background *bg;  /* NULL, or cvm_sizing_set_background() */
-    /* set only on the private copy a refinement evaluates: */
+    double bgrad;         /* > 0: cvm_sizing_set_boundary_grading() slope */
+    /* set only on the private copy a refinement or optimisation evaluates: */
     const cvm__auto_field *autof;
+    const cvm__auto_field *spacingf; /* the boundary-spacing field (bgrad) */
 };
 
 /* Build the automatic field of the domain triangles of T (features: domain
@@ -93,8 +95,16 @@ struct cvm_sizing {
 cvm_status cvm__auto_field_build(cvm__auto_field *F, const cvm__tri2 *T, const uint8_t *is_input,
                                  double R, double G, cvm__ctx *ctx);
 void cvm__auto_field_free(cvm__auto_field *F, cvm__ctx *ctx);
+/* The boundary-spacing field of cvm_sizing_set_boundary_grading(): samples
+ * on the domain boundary and constrained edges of T with LS = the local edge
+ * length, slope g (> 0). CVM_OK or CVM_E_NOMEM (recorded on ctx; F empty). */
+cvm_status cvm__spacing_field_build(cvm__auto_field *F, const cvm__tri2 *T, double g,
+                                    cvm__ctx *ctx);
 /* Size at (x, y); +inf without samples. */
 double cvm__auto_field_at(const cvm__auto_field *F, double x, double y);
+/* The same, but only when it is below bound (else bound): the search stops as
+ * soon as no sample can beat it, so a small bound makes it cheap. */
+double cvm__auto_field_below(const cvm__auto_field *F, double x, double y, double bound);
 /* Size of the background mesh at (x, y): the least linear interpolant over
  * the triangles containing it, +inf outside them. */
 double cvm__background_at(const cvm__background *bg, double x, double y);

@@ -176,10 +176,25 @@ cvm_status cvm_sizing_set_automatic(cvm_sizing *s, double R, double G)
     return CVM_OK;
 }
 
+cvm_status cvm_sizing_set_boundary_grading(cvm_sizing *s, double g)
+{
+    if (!s)
+        return CVM_E_NULL_ARG;
+    cvm__clear_error(&s->ctx);
+    if (!isfinite(g))
+        return cvm__error(&s->ctx, CVM_E_INPUT_NONFINITE, CVM_ENT_NONE, -1,
+                          "boundary grading: slope g = %.17g must be finite", g);
+    if (g < 0)
+        return cvm__error(&s->ctx, CVM_E_ARGUMENT, CVM_ENT_NONE, -1,
+                          "boundary grading: slope g = %.17g (must be positive, or 0 for off)", g);
+    s->bgrad = g;
+    return CVM_OK;
+}
+
 int cvm__sizing_is_empty(const cvm_sizing *s)
 {
     return !s || (!s->has_uniform && s->npts == 0 && s->nlines == 0 && !s->fn && !s->has_auto &&
-                  !s->bg);
+                  !s->bg && !(s->bgrad > 0));
 }
 
 /* Distance from p to the segment a-b (a point when a == b). */
@@ -224,11 +239,10 @@ cvm_status cvm__sizing_at(const cvm_sizing *s, double x, double y, double *h, cv
         if (d < best)
             best = d;
     }
-    if (s->autof) {
-        double d = cvm__auto_field_at(s->autof, x, y);
-        if (d < best)
-            best = d;
-    }
+    if (s->autof)
+        best = cvm__auto_field_below(s->autof, x, y, best);
+    if (s->spacingf)
+        best = cvm__auto_field_below(s->spacingf, x, y, best);
     if (s->fn) {
         double d = s->fn(s->fn_payload, x, y);
         if (!isfinite(d))

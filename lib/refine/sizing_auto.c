@@ -39,6 +39,9 @@
 #define AF_CHAIN_TURN (3.14159265358979323846 / 3.0) /* 60 degrees */
 #define AF_SMOOTH_TURN (3.14159265358979323846 / 6.0) /* 30 degrees */
 #define AF_MAX_DEPTH 24
+#define CELLS_PER_SAMPLE 4 /* grid cells per sample (ring searches visit few samples) */
+
+
 #define AF_MAX_CHAIN_STEPS 100000
 
 typedef struct af_build {
@@ -426,7 +429,7 @@ static cvm_status af_field_grid(cvm__auto_field *F, cvm__ctx *ctx)
         ymax = fmax(ymax, F->smp[3 * k + 1]);
         F->ls_min = fmin(F->ls_min, F->smp[3 * k + 2]);
     }
-    cvm__ugrid_fit(&F->g, xmin, ymin, xmax, ymax, F->ns / 4);
+    cvm__ugrid_fit(&F->g, xmin, ymin, xmax, ymax, F->ns * CELLS_PER_SAMPLE);
     ncell = (size_t)F->g.nx * (size_t)F->g.ny;
     F->start = cvm__malloc(ctx, (ncell + 1) * sizeof *F->start);
     F->cmin = cvm__malloc(ctx, (ncell + 1) * sizeof *F->cmin);
@@ -461,10 +464,15 @@ static cvm_status af_field_grid(cvm__auto_field *F, cvm__ctx *ctx)
 
 double cvm__auto_field_at(const cvm__auto_field *F, double x, double y)
 {
-    double best = HUGE_VAL, inv_g = 1.0 / F->G;
+    return cvm__auto_field_below(F, x, y, HUGE_VAL);
+}
+
+double cvm__auto_field_below(const cvm__auto_field *F, double x, double y, double bound)
+{
+    double best = bound, inv_g = 1.0 / F->G;
     int ci, cj, r, rmax;
     if (F->ns == 0)
-        return HUGE_VAL;
+        return bound;
     rmax = F->g.nx > F->g.ny ? F->g.nx : F->g.ny;
     /* outside the grid: count the rings from the nearest cell, the bound below
        still holds because distances only grow */
@@ -535,6 +543,73 @@ cvm_status cvm__auto_field_build(cvm__auto_field *F, const cvm__tri2 *T, const u
             s = CVM_E_NOMEM;
     }
     cvm__free(ctx, vlfs);
+    F->smp = B.smp;
+    F->ns = B.ns;
+    B.smp = NULL;
+    af_build_free(&B);
+    if (!s && F->ns > 0 && af_field_grid(F, ctx))
+        s = CVM_E_NOMEM;
+    if (s) {
+        cvm__auto_field_free(F, ctx);
+        return cvm__nomem(ctx);
+    }
+    return CVM_OK;
+}
+
+/* ---- the boundary-spacing field of cvm_sizing_set_boundary_grading() ----
+ *
+ * Samples: every vertex of a feature edge with LS = its shortest feature
+ * edge, and points at equal steps inside each edge longer than the LS of its
+ * ends (at most BG_MAX_INNER of them, about one per LS) with LS = the edge's
+ * length. The field min over samples of LS + g |x - q| is then, to within
+ * g x half a step, h(x) = min over feature edges e of l(e) + g dist(x, e). */
+#define BG_MAX_INNER 64
+
+cvm_status cvm__spacing_field_build(cvm__auto_field *F, const cvm__tri2 *T, double g,
+                                    cvm__ctx *ctx)
+{
+    af_build B;
+    uint8_t *no_points = NULL;
+    double *vmin = NULL;
+    size_t k, v;
+    cvm_status s = CVM_OK;
+    memset(F, 0, sizeof *F);
+    memset(&B, 0, sizeof B);
+    F->G = 1.0 / g;
+    F->ls_min = HUGE_VAL;
+    B.ctx = ctx;
+    B.xy = T->xy;
+    no_points = cvm__calloc(ctx, T->nv + 1, 1); /* edges only: no point features */
+    vmin = cvm__malloc(ctx, (T->nv + 1) * sizeof *vmin);
+    if (!no_points || !vmin || af_collect(&B, T, no_points))
+        s = CVM_E_NOMEM;
+    for (v = 0; !s && v < T->nv; v++)
+        vmin[v] = HUGE_VAL;
+    for (k = 0; !s && k < B.nfe; k++) {
+        const double *a = af_pt(&B, B.fe[2 * k]), *b = af_pt(&B, B.fe[2 * k + 1]);
+        double len = hypot(b[0] - a[0], b[1] - a[1]);
+        vmin[B.fe[2 * k]] = fmin(vmin[B.fe[2 * k]], len);
+        vmin[B.fe[2 * k + 1]] = fmin(vmin[B.fe[2 * k + 1]], len);
+    }
+    for (v = 0; !s && v < T->nv; v++)
+        if (isfinite(vmin[v]) && vmin[v] > 0 && af_add_sample(&B, T->xy[2 * v], T->xy[2 * v + 1], vmin[v]))
+            s = CVM_E_NOMEM;
+    for (k = 0; !s && k < B.nfe; k++) {
+        int32_t ia = B.fe[2 * k], ib = B.fe[2 * k + 1];
+        const double *a = af_pt(&B, ia), *b = af_pt(&B, ib);
+        double len = hypot(b[0] - a[0], b[1] - a[1]), lend = fmin(vmin[ia], vmin[ib]);
+        size_t m, i;
+        if (!(len > 0) || !(len > lend))
+            continue;
+        m = len / lend < (double)BG_MAX_INNER ? (size_t)ceil(len / lend) : BG_MAX_INNER;
+        for (i = 1; i < m && !s; i++) {
+            double t = (double)i / (double)m;
+            if (af_add_sample(&B, a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), len))
+                s = CVM_E_NOMEM;
+        }
+    }
+    cvm__free(ctx, no_points);
+    cvm__free(ctx, vmin);
     F->smp = B.smp;
     F->ns = B.ns;
     B.smp = NULL;

@@ -104,9 +104,10 @@ int main(int argc, char **argv)
     cvm_mesh *m;
     cvm_sizing *s = NULL;
     cvm_status st;
+    double grade = 0; /* grade=G: boundary grading of the refinement's sizing */
     if (argc < 5) {
         fprintf(stderr, "usage: bench_dual IN.poly|IN.node H ALGO(0 none|1|2) SOLVER(1|2) "
-                        "[OPTION=VALUE ...] [-o OUT.node]\n");
+                        "[grade=G] [OPTION=VALUE ...] [-o OUT.node]\n");
         return 2;
     }
     h = atof(argv[2]);
@@ -126,6 +127,8 @@ int main(int argc, char **argv)
                 i++;
                 continue;
             }
+            if (sscanf(argv[i], "grade=%lf", &grade) == 1)
+                continue;
             if (sscanf(argv[i], "%d=%lf", &key, &val) == 2 &&
                 cvm_mesh_set_option(m, (cvm_option)key, val)) {
                 fprintf(stderr, "%s\n", cvm_mesh_errmsg(m));
@@ -139,7 +142,8 @@ int main(int argc, char **argv)
         return 1;
     }
     if (algo) {
-        if (cvm_sizing_create(&s) || cvm_sizing_set_uniform(s, h))
+        if (cvm_sizing_create(&s) || cvm_sizing_set_uniform(s, h) ||
+            (grade > 0 && cvm_sizing_set_boundary_grading(s, grade)))
             return 1;
         if ((st = cvm_mesh_refine(m, s, (cvm_algorithm)algo)) != CVM_OK) {
             fprintf(stderr, "refine: %s\n", cvm_mesh_errmsg(m));

@@ -11,9 +11,12 @@ Per row: triangles, % of triangles whose dual (power) vertex lies outside them, 
 after; after optimisation % non-compliant (outside and not merged; all / boundary
 triangles) and % merged; smallest angle; smallest dual edge over its primal edge (interior
 edges); the explicit time-step proxy min(primal, dual edge) and its ratio to Triangle's
-raw mesh; time of refinement and of optimisation. cvmesh rows are measured by the C driver
-(bench_dual.c, public API; every mesh passes cvm_mesh_check); Triangle and Lloyd rows by
-the numpy code below (zero weights: the dual vertex is the circumcentre).
+raw mesh; time of refinement and of optimisation. The "cvm-front-bg" rows refine with the
+uniform size capped by the boundary's own spacing graded at slope 0.3
+(cvm_sizing_set_boundary_grading), which carries finely spaced walls into the interior.
+cvmesh rows are measured by the C driver (bench_dual.c, public API; every mesh passes
+cvm_mesh_check); Triangle and Lloyd rows by the numpy code below (zero weights: the dual
+vertex is the circumcentre).
 
 usage: bench_dual.py BUILD SHARED   (make bench calls it through run.sh)
 """
@@ -28,6 +31,7 @@ CASES = [("square", 0.02), ("channel", 0.02), ("annulus", 0.1), ("cylinder", 0.2
 LARGE = [("square", 0.006)]   # about 1e5 triangles
 DRIVER = os.path.join(BUILD, "bench", "bench_dual")
 LLOYD_ITERS = 20
+BOUNDARY_GRADING = 0.3  # cvm_sizing_set_boundary_grading slope of the "cvm-front-bg" rows
 
 
 def write_poly(path, xy, segs, holes):
@@ -137,8 +141,9 @@ def lloyd(t, holes, iters):
     return xy, tri
 
 
-def driver(poly, h, algo, solver):
-    out = subprocess.run([DRIVER, poly, str(h), str(algo), str(solver)], capture_output=True,
+def driver(poly, h, algo, solver, grade=None):
+    extra = ["grade=%g" % grade] if grade else []
+    out = subprocess.run([DRIVER, poly, str(h), str(algo), str(solver)] + extra, capture_output=True,
                          text=True)
     if out.returncode:
         raise RuntimeError("bench_dual %s %s %s %s: %s" % (poly, h, algo, solver, out.stderr))
@@ -160,9 +165,9 @@ def row(name, label, nt, out0, out, nc, ncb, mrg, ang0, ang, r0, r, s0, s, s_tri
            f(t_ref, "%.3f"), f(t_opt, "%.3f")))
 
 
-def cvm_rows(name, poly, h, algo, label, s_tri):
+def cvm_rows(name, poly, h, algo, label, s_tri, grade=None):
     for solver, sl in ((1, "pattern"), (2, "cuckoo")):
-        d = driver(poly, h, algo, solver)
+        d = driver(poly, h, algo, solver, grade)
         g = lambda k: float(d[k])
         row(name, "%s+%s" % (label, sl), int(d["after_nt"]), g("before_out"), g("after_out"),
             g("after_nc"), g("after_ncb"), g("after_merged"), g("before_minang"),
@@ -216,6 +221,8 @@ def main():
                         t_tri, g("t_opt"))
             for algo, label in ((1, "cvm-del"), (2, "cvm-front")):
                 cvm_rows(name, poly, h, algo, label, s_tri)
+            # the frontal mesh with the sizing graded from the boundary's own spacing
+            cvm_rows(name, poly, h, 2, "cvm-front-bg", s_tri, BOUNDARY_GRADING)
         sys.stdout.flush()
 
 

@@ -292,6 +292,28 @@ expect_exit 2 "--grading without --auto" "$CLI" refine "$SHARED/data/square.poly
 expect_grep "--grading without --auto" "$TMP/err" "--grading needs --auto"
 expect_exit 2 "--grading not a number" "$CLI" refine "$SHARED/data/square.poly" --auto 2 --grading x -o "$OUT/x.vtu"
 
+# ---- boundary grading: a fine wall carried inwards --------------------------
+OUT=$TMP/bgrad
+mkdir -p "$OUT"
+expect_exit 0 "refine --boundary-grading" "$CLI" refine "$SHARED/data/cylinder.poly" --algo frontal --size 0.2 \
+    --boundary-grading 0.3 -o "$OUT/cyl.node" --quality
+expect_grep "refine --boundary-grading meets the angle" "$TMP/out" "triangles below the angle: 0"
+# more vertices than at the uniform size alone (12174 then; 12357 graded)
+nv_graded=$(head -n 1 "$OUT/cyl.node" | awk '{print $1}')
+expect_exit 0 "refine uniform" "$CLI" refine "$SHARED/data/cylinder.poly" --algo frontal --size 0.2 -o "$OUT/u.node"
+nv_uniform=$(head -n 1 "$OUT/u.node" | awk '{print $1}')
+if [ "$nv_graded" -gt "$nv_uniform" ]; then pass; else
+    fail "boundary grading adds vertices ($nv_graded graded, $nv_uniform uniform)"; fi
+expect_exit 0 "optimise --boundary-grading" "$CLI" optimise "$SHARED/data/cylinder.poly" --size 0.2 \
+    --boundary-grading 0.3 -o "$OUT/opt.vtu" --quality
+expect_grep "optimise --boundary-grading is compliant" "$TMP/out" "non-compliant (not merged)   0.0000 %"
+expect_exit 2 "--boundary-grading not positive" "$CLI" refine "$SHARED/data/square.poly" --size 0.1 \
+    --boundary-grading -1 -o "$OUT/x.vtu"
+expect_exit 2 "optimise --boundary-grading without --size" "$CLI" optimise "$SHARED/data/square.poly" \
+    --boundary-grading 0.3 -o "$OUT/x.vtu"
+expect_grep "optimise --boundary-grading without --size" "$TMP/err" "--boundary-grading needs --size"
+if [ -e "$OUT/x.vtu" ]; then fail "failed boundary-grading runs wrote $OUT/x.vtu"; else pass; fi
+
 # ---- optimise a .vtu mesh read back, with its dual ---------------------------
 OUT=$TMP/optvtu
 mkdir -p "$OUT"

@@ -815,6 +815,15 @@ class Sizing:
         with self._handle() as s:
             capi.cvm_sizing_set_automatic(s, float(R), float(G))
 
+    def set_boundary_grading(self, g):
+        """Also cap the size by l(e) + g * distance from every boundary or
+        constrained edge e of length l(e) of the mesh being refined or
+        optimised, so a finely spaced wall grows into the interior at slope g
+        (e.g. 0.3). Built by each Mesh.refine() / optimise_dual() from its
+        domain; __call__ does not see it. g = 0 turns it off."""
+        with self._handle() as s:
+            capi.cvm_sizing_set_boundary_grading(s, float(g))
+
     def set_background(self, points, triangles, sizes):
         """Sizes at the nodes of a background triangulation, interpolated
         linearly inside its triangles (no bound outside them): points (n, 2),

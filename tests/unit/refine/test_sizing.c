@@ -346,6 +346,191 @@ START_TEST(automatic_out_of_memory_is_a_status)
 }
 END_TEST
 
+/* ---- boundary grading (cvm_sizing_set_boundary_grading) ---- */
+
+START_TEST(boundary_grading_parameters_are_checked)
+{
+    cvm_sizing *s;
+    double h;
+    ck_assert_int_eq(cvm_sizing_set_boundary_grading(NULL, 0.3), CVM_E_NULL_ARG);
+    ck_assert_int_eq(cvm_sizing_create(&s), CVM_OK);
+    ck_assert_int_eq(cvm_sizing_set_boundary_grading(s, NAN), CVM_E_INPUT_NONFINITE);
+    ck_assert_int_eq(cvm_sizing_set_boundary_grading(s, INFINITY), CVM_E_INPUT_NONFINITE);
+    ck_assert_int_eq(cvm_sizing_set_boundary_grading(s, -0.5), CVM_E_ARGUMENT);
+    ck_assert_ptr_nonnull(strstr(cvm_sizing_errmsg(s), "boundary grading"));
+    ck_assert_int_eq(cvm_sizing_set_boundary_grading(s, 0.3), CVM_OK);
+    /* no domain here: the field is built by refine and optimise only */
+    ck_assert_int_eq(cvm_sizing_eval(&h, s, 0.5, 0.5), CVM_OK);
+    ck_assert(isinf(h));
+    ck_assert_int_eq(cvm_sizing_set_boundary_grading(s, 0), CVM_OK); /* off again */
+    cvm_sizing_free(s);
+}
+END_TEST
+
+/* The unit square with its bottom side given as 100 segments of 0.01: the size
+ * the test expects (its own computation, no library code) is
+ *   h(p) = min(0.25, min over the bottom points v of 0.01 + 0.3 |p - v|)
+ * (the other sides are 1 long and never beat 0.25). */
+#define BG_N 100
+#define BG_H 0.25
+#define BG_G 0.3
+
+static void bg_square(cvm_mesh *m)
+{
+    double xy[2 * (BG_N + 3)];
+    cvm_index seg[2 * (BG_N + 3)];
+    size_t i, n = BG_N + 3;
+    for (i = 0; i <= BG_N; i++) {
+        xy[2 * i] = (double)i / BG_N;
+        xy[2 * i + 1] = 0;
+    }
+    xy[2 * (BG_N + 1)] = 1;
+    xy[2 * (BG_N + 1) + 1] = 1;
+    xy[2 * (BG_N + 2)] = 0;
+    xy[2 * (BG_N + 2) + 1] = 1;
+    for (i = 0; i < n; i++) {
+        seg[2 * i] = (cvm_index)i;
+        seg[2 * i + 1] = (cvm_index)((i + 1) % n);
+    }
+    ck_assert_int_eq(cvm_mesh_set_points(m, xy, n, 2), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_segments(m, seg, n), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+}
+
+static double bg_expected(const double *p)
+{
+    double best = BG_H;
+    int i;
+    for (i = 0; i <= BG_N; i++) {
+        double d = 1.0 / BG_N + BG_G * hypot(p[0] - (double)i / BG_N, p[1]);
+        best = d < best ? d : best;
+    }
+    return best;
+}
+
+/* Triangles that break their algorithm's size rule against the expected sizes
+ * of their corners (frontal and AFLR: mean edge <= 1.5 x the largest of them;
+ * Delaunay: circumradius <= the largest), or that lie along the fine side
+ * (centroid below 0.1) with a mean edge of 0.08 or more. */
+static size_t bg_violations(cvm_mesh *m, cvm_algorithm algo)
+{
+    size_t nv, nt, t, bad = 0;
+    double *xy;
+    cvm_index *tri;
+    ck_assert_int_eq(cvm_mesh_check(m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_count(&nv, m, CVM_ENT_VERTEX), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_count(&nt, m, CVM_ENT_TRIANGLE), CVM_OK);
+    xy = malloc(2 * nv * sizeof *xy);
+    tri = malloc(3 * nt * sizeof *tri);
+    ck_assert_int_eq(cvm_mesh_copy_points(xy, 2 * nv, m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_copy_cells(tri, 3 * nt, m, CVM_ENT_TRIANGLE), CVM_OK);
+    for (t = 0; t < nt; t++) {
+        const double *a = xy + 2 * tri[3 * t], *b = xy + 2 * tri[3 * t + 1], *c = xy + 2 * tri[3 * t + 2];
+        double la = hypot(b[0] - c[0], b[1] - c[1]), lb = hypot(a[0] - c[0], a[1] - c[1]);
+        double lc = hypot(a[0] - b[0], a[1] - b[1]);
+        double area = 0.5 * fabs((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
+        double hmax = fmax(bg_expected(a), fmax(bg_expected(b), bg_expected(c)));
+        if (algo == CVM_ALGO_DELAUNAY ? la * lb * lc / (4 * area) > hmax * (1 + 1e-9)
+                                      : (la + lb + lc) / 3 > 1.5 * hmax * (1 + 1e-9))
+            bad++;
+        else if ((a[1] + b[1] + c[1]) / 3 < 0.1 && (la + lb + lc) / 3 >= 0.08)
+            bad++;
+    }
+    free(xy);
+    free(tri);
+    return bad;
+}
+
+START_TEST(boundary_grading_follows_the_wall_spacing)
+{
+    static const cvm_algorithm algos[] = {CVM_ALGO_DELAUNAY, CVM_ALGO_FRONTAL, CVM_ALGO_AFLR};
+    size_t k;
+    for (k = 0; k < 3; k++) {
+        cvm_mesh *m, *u, *m2;
+        cvm_sizing *s;
+        ck_assert_int_eq(cvm_sizing_create(&s), CVM_OK);
+        ck_assert_int_eq(cvm_sizing_set_uniform(s, BG_H), CVM_OK);
+        ck_assert_int_eq(cvm_mesh_create(&u), CVM_OK);
+        bg_square(u);
+        ck_assert_int_eq(cvm_mesh_refine(u, s, algos[k]), CVM_OK);
+        /* without the grading the size jumps to 0.25 a few layers off the wall */
+        ck_assert_uint_gt(bg_violations(u, algos[k]), 0);
+        ck_assert_int_eq(cvm_sizing_set_boundary_grading(s, BG_G), CVM_OK);
+        ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+        bg_square(m);
+        ck_assert_int_eq(cvm_mesh_refine(m, s, algos[k]), CVM_OK);
+        ck_assert_uint_eq(bg_violations(m, algos[k]), 0);
+        ck_assert_int_eq(cvm_mesh_create(&m2), CVM_OK);
+        bg_square(m2);
+        ck_assert_int_eq(cvm_mesh_refine(m2, s, algos[k]), CVM_OK);
+        rtest_assert_identical(m, m2);
+        cvm_sizing_free(s);
+        cvm_mesh_free(m);
+        cvm_mesh_free(m2);
+        cvm_mesh_free(u);
+    }
+}
+END_TEST
+
+/* cvm_mesh_optimise_dual() builds the field from its own mesh: with the
+ * graded sizing it ends compliant and valid. */
+START_TEST(boundary_grading_drives_the_dual_optimiser)
+{
+    cvm_mesh *m;
+    cvm_sizing *s;
+    double nc = -1;
+    ck_assert_int_eq(cvm_sizing_create(&s), CVM_OK);
+    ck_assert_int_eq(cvm_sizing_set_uniform(s, BG_H), CVM_OK);
+    ck_assert_int_eq(cvm_sizing_set_boundary_grading(s, BG_G), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    bg_square(m);
+    ck_assert_int_eq(cvm_mesh_refine(m, s, CVM_ALGO_FRONTAL), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_optimise_dual(m, s), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_check(m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_get_measure(&nc, m, CVM_MEASURE_DUAL_NONCOMPLIANT_PCT), CVM_OK);
+    ck_assert(nc == 0);
+    cvm_sizing_free(s);
+    cvm_mesh_free(m);
+}
+END_TEST
+
+/* Out of memory while the field is built (refine and optimise): a status, the
+ * mesh valid, no leak. */
+START_TEST(boundary_grading_out_of_memory_is_a_status)
+{
+    cvm_sizing *s;
+    long k;
+    int hit = 0, pass;
+    ck_assert_int_eq(cvm_sizing_create(&s), CVM_OK);
+    ck_assert_int_eq(cvm_sizing_set_uniform(s, BG_H), CVM_OK);
+    ck_assert_int_eq(cvm_sizing_set_boundary_grading(s, BG_G), CVM_OK);
+    for (pass = 0; pass < 2; pass++)
+        for (k = 1; k < 60; k++) {
+            cvmtest_alloc al;
+            cvm_mesh *m;
+            cvm_status st;
+            cvmtest_alloc_init(&al, 0, 0);
+            ck_assert_int_eq(cvmtest_mesh_create(&m, &al), CVM_OK);
+            bg_square(m);
+            if (pass == 1)
+                ck_assert_int_eq(cvm_mesh_refine(m, s, CVM_ALGO_FRONTAL), CVM_OK);
+            cvmtest_alloc_arm(&al, k, 0); /* transient: only allocation k fails */
+            st = pass ? cvm_mesh_optimise_dual(m, s) : cvm_mesh_refine(m, s, CVM_ALGO_FRONTAL);
+            ck_assert(st == CVM_OK || st == CVM_E_NOMEM);
+            if (st == CVM_E_NOMEM) {
+                hit++;
+                cvmtest_alloc_arm(&al, 0, 0);
+                st = cvm_mesh_check(m);
+                ck_assert(st == CVM_OK || st == CVM_E_STATE);
+            }
+            cvm_mesh_free(m);
+            ck_assert_int_eq(al.live_blocks, 0);
+        }
+    ck_assert_int_gt(hit, 20);
+    cvm_sizing_free(s);
+}
+END_TEST
+
 /* ---- background mesh (sizing_background.c) ---- */
 
 static const double bg_xyh[] = {0, 0, 1, 2, 0, 3, 2, 2, 7, 0, 2, 5};
@@ -449,6 +634,10 @@ TCase *refine_sizing_tcase(void)
     tcase_add_test(tc, automatic_annulus_follows_curvature_and_gap);
     tcase_add_test(tc, automatic_resolves_a_narrow_slot);
     tcase_add_test(tc, automatic_out_of_memory_is_a_status);
+    tcase_add_test(tc, boundary_grading_parameters_are_checked);
+    tcase_add_test(tc, boundary_grading_follows_the_wall_spacing);
+    tcase_add_test(tc, boundary_grading_drives_the_dual_optimiser);
+    tcase_add_test(tc, boundary_grading_out_of_memory_is_a_status);
     tcase_add_test(tc, background_interpolates_linearly);
     tcase_add_test(tc, background_bad_input_is_named);
     tcase_add_test(tc, background_drives_refinement);
