@@ -56,6 +56,10 @@ void cvm__dopt_point(const cvm__dopt_local *L, const double *u, double *p, doubl
  * domain triangle, or the power cell of v empty inside its star), else the
  * penalty sum over the domain triangles of the star. Counts an evaluation. */
 double cvm__dopt_eval(cvm__dopt_local *L, const double *u);
+/* The same, but it may stop early and return a value >= bound (not the
+ * objective) as soon as the partial sum reaches bound: every term is >= 0, so
+ * a caller that only asks "below bound?" gets the same answer, sooner. */
+double cvm__dopt_eval_below(cvm__dopt_local *L, const double *u, double bound);
 
 /* The max-min-angle objective at u: HUGE_VAL when a star triangle would not
  * be strictly counter-clockwise (exact orient2d), an unconstrained edge of the

@@ -95,6 +95,11 @@ double cvm__dopt_star_min_sin2(const cvm__dopt_local *L)
 
 double cvm__dopt_eval(cvm__dopt_local *L, const double *u)
 {
+    return cvm__dopt_eval_below(L, u, HUGE_VAL);
+}
+
+double cvm__dopt_eval_below(cvm__dopt_local *L, const double *u, double bound)
+{
     const cvm__tri2 *T = L->T;
     double p[2], wv, f = 0.0, cell = 0.0;
     size_t i;
@@ -140,6 +145,8 @@ double cvm__dopt_eval(cvm__dopt_local *L, const double *u)
         C[0] = (q[0][0] + q[1][0] + q[2][0]) / 3.0;
         C[1] = (q[0][1] + q[1][1] + q[2][1]) / 3.0;
         f += prio * (CONTAIN_W * pen + CENTROID_W * (sq(C[0] - V[0]) + sq(C[1] - V[1]))) / l2;
+        if (f >= bound)
+            return f; /* every term is >= 0: the total cannot get below bound */
         {
             /* v's share of its power cell in this triangle: the kites on its two edges */
             const double *a = q[(iv + 1) % 3], *b = q[(iv + 2) % 3];

@@ -24,7 +24,7 @@ void cvm__dopt_pattern(cvm__dopt_local *L, int budget, double f0, double *u, dou
                 double y[CVM__DOPT_MAXDOF], fy;
                 memcpy(y, x, sizeof y);
                 y[d] += sgn * step * scale[d];
-                fy = cvm__dopt_eval(L, y);
+                fy = cvm__dopt_eval_below(L, y, fx); /* only "below fx?" matters */
                 if (fy < fx) {
                     memcpy(x, y, sizeof x);
                     fx = fy;
