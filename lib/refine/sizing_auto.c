@@ -523,6 +523,23 @@ static void af_build_free(af_build *B)
     cvm__free(B->ctx, B->seen);
 }
 
+/* Hand the samples of B to F, free B, grid the samples; on any failure (s
+ * set, or the grid) F is emptied and CVM_E_NOMEM recorded on ctx. */
+static cvm_status af_finish(cvm__auto_field *F, af_build *B, cvm_status s, cvm__ctx *ctx)
+{
+    F->smp = B->smp;
+    F->ns = B->ns;
+    B->smp = NULL;
+    af_build_free(B);
+    if (!s && F->ns > 0 && af_field_grid(F, ctx))
+        s = CVM_E_NOMEM;
+    if (s) {
+        cvm__auto_field_free(F, ctx);
+        return cvm__nomem(ctx);
+    }
+    return CVM_OK;
+}
+
 cvm_status cvm__auto_field_build(cvm__auto_field *F, const cvm__tri2 *T, const uint8_t *is_input,
                                  double R, double G, cvm__ctx *ctx)
 {
@@ -543,17 +560,7 @@ cvm_status cvm__auto_field_build(cvm__auto_field *F, const cvm__tri2 *T, const u
             s = CVM_E_NOMEM;
     }
     cvm__free(ctx, vlfs);
-    F->smp = B.smp;
-    F->ns = B.ns;
-    B.smp = NULL;
-    af_build_free(&B);
-    if (!s && F->ns > 0 && af_field_grid(F, ctx))
-        s = CVM_E_NOMEM;
-    if (s) {
-        cvm__auto_field_free(F, ctx);
-        return cvm__nomem(ctx);
-    }
-    return CVM_OK;
+    return af_finish(F, &B, s, ctx);
 }
 
 /* ---- the boundary-spacing field of cvm_sizing_set_boundary_grading() ----
@@ -610,17 +617,7 @@ cvm_status cvm__spacing_field_build(cvm__auto_field *F, const cvm__tri2 *T, doub
     }
     cvm__free(ctx, no_points);
     cvm__free(ctx, vmin);
-    F->smp = B.smp;
-    F->ns = B.ns;
-    B.smp = NULL;
-    af_build_free(&B);
-    if (!s && F->ns > 0 && af_field_grid(F, ctx))
-        s = CVM_E_NOMEM;
-    if (s) {
-        cvm__auto_field_free(F, ctx);
-        return cvm__nomem(ctx);
-    }
-    return CVM_OK;
+    return af_finish(F, &B, s, ctx);
 }
 
 void cvm__auto_field_free(cvm__auto_field *F, cvm__ctx *ctx)

@@ -28,7 +28,10 @@ from benchlib import build_driver, read_poly
 BUILD, SHARED = sys.argv[1], sys.argv[2]
 CASES = [("square", 0.02), ("channel", 0.02), ("annulus", 0.1), ("cylinder", 0.2),
          ("naca0012", 0.2)]
-LARGE = [("square", 0.006)]   # about 1e5 triangles
+LARGE = [("square", 0.006)]   # about 1e5 triangles (Triangle's mesh)
+# about 1e5 triangles from each cvmesh refiner: Delaunay refinement (circumradius <= h)
+# needs a smaller h than the frontal refiner (edges about h) for the same count
+LARGE_CVM = [("square", 1, 0.0037, "cvm-del"), ("square", 2, 0.0048, "cvm-front")]
 DRIVER = os.path.join(BUILD, "bench", "bench_dual")
 LLOYD_ITERS = 20
 BOUNDARY_GRADING = 0.3  # cvm_sizing_set_boundary_grading slope of the "cvm-front-bg" rows
@@ -223,6 +226,10 @@ def main():
                 cvm_rows(name, poly, h, algo, label, s_tri)
             # the frontal mesh with the sizing graded from the boundary's own spacing
             cvm_rows(name, poly, h, 2, "cvm-front-bg", s_tri, BOUNDARY_GRADING)
+            sys.stdout.flush()
+        # about 1e5 triangles from cvmesh's own refiners (sizes differ: see LARGE_CVM)
+        for name, algo, h, label in LARGE_CVM:
+            cvm_rows(name + "-1e5", os.path.join(SHARED, "data", name + ".poly"), h, algo, label, None)
         sys.stdout.flush()
 
 

@@ -6,6 +6,7 @@
 
 #include "refine/refine_tests.h"
 #include "support/failing_alloc.h"
+#include "support/oom_sweep.h"
 
 START_TEST(empty_sizing_has_no_bound)
 {
@@ -494,40 +495,36 @@ START_TEST(boundary_grading_drives_the_dual_optimiser)
 }
 END_TEST
 
-/* Out of memory while the field is built (refine and optimise): a status, the
- * mesh valid, no leak. */
+/* Out of memory at every allocation while the field is built and used
+ * (refine, then optimise on a refined mesh): a status, the mesh valid, no leak. */
+typedef struct bg_oom {
+    cvm_sizing *s;
+    int optimise;
+} bg_oom;
+
+static void bg_oom_setup(cvm_mesh *m, void *arg)
+{
+    const bg_oom *o = arg;
+    bg_square(m);
+    if (o->optimise)
+        ck_assert_int_eq(cvm_mesh_refine(m, o->s, CVM_ALGO_FRONTAL), CVM_OK);
+}
+
+static cvm_status bg_oom_run(cvm_mesh *m, void *arg)
+{
+    const bg_oom *o = arg;
+    return o->optimise ? cvm_mesh_optimise_dual(m, o->s) : cvm_mesh_refine(m, o->s, CVM_ALGO_FRONTAL);
+}
+
 START_TEST(boundary_grading_out_of_memory_is_a_status)
 {
-    cvm_sizing *s;
-    long k;
-    int hit = 0, pass;
-    ck_assert_int_eq(cvm_sizing_create(&s), CVM_OK);
-    ck_assert_int_eq(cvm_sizing_set_uniform(s, BG_H), CVM_OK);
-    ck_assert_int_eq(cvm_sizing_set_boundary_grading(s, BG_G), CVM_OK);
-    for (pass = 0; pass < 2; pass++)
-        for (k = 1; k < 60; k++) {
-            cvmtest_alloc al;
-            cvm_mesh *m;
-            cvm_status st;
-            cvmtest_alloc_init(&al, 0, 0);
-            ck_assert_int_eq(cvmtest_mesh_create(&m, &al), CVM_OK);
-            bg_square(m);
-            if (pass == 1)
-                ck_assert_int_eq(cvm_mesh_refine(m, s, CVM_ALGO_FRONTAL), CVM_OK);
-            cvmtest_alloc_arm(&al, k, 0); /* transient: only allocation k fails */
-            st = pass ? cvm_mesh_optimise_dual(m, s) : cvm_mesh_refine(m, s, CVM_ALGO_FRONTAL);
-            ck_assert(st == CVM_OK || st == CVM_E_NOMEM);
-            if (st == CVM_E_NOMEM) {
-                hit++;
-                cvmtest_alloc_arm(&al, 0, 0);
-                st = cvm_mesh_check(m);
-                ck_assert(st == CVM_OK || st == CVM_E_STATE);
-            }
-            cvm_mesh_free(m);
-            ck_assert_int_eq(al.live_blocks, 0);
-        }
-    ck_assert_int_gt(hit, 20);
-    cvm_sizing_free(s);
+    bg_oom o;
+    ck_assert_int_eq(cvm_sizing_create(&o.s), CVM_OK);
+    ck_assert_int_eq(cvm_sizing_set_uniform(o.s, BG_H), CVM_OK);
+    ck_assert_int_eq(cvm_sizing_set_boundary_grading(o.s, BG_G), CVM_OK);
+    for (o.optimise = 0; o.optimise < 2; o.optimise++)
+        cvmtest_oom_sweep(bg_oom_setup, bg_oom_run, NULL, &o);
+    cvm_sizing_free(o.s);
 }
 END_TEST
 
