@@ -21,6 +21,10 @@ size at each centroid until none is exceeded (all passes timed); edge/h is then
 the mean of edge length / h(midpoint). Its "-rs" rows run cvmesh with
 CVM_OPT_KEEP_SEGMENT_VERTICES = 0: the input circles (spacing 0.1 and 0.2) are
 re-discretised with the size before refining.
+A "same bound" line per uniform case compares vertex counts at one size bound, the
+one Delaunay refinement reads its size as (every circumradius <= h): the frontal and
+AFLR refiners read h as an edge length, so they are run at the largest h_f whose mesh
+still meets that bound (bisection).
 A last row times Delaunay refinement of the square to about 1e6 triangles
 against Triangle at a matched triangle count (the speed target of issue 4).
 
@@ -224,6 +228,39 @@ def run_1e6(shared, tmp):
           % (REPS, ntc, c, 1e6 * c / ntc, len(t["triangles"]), r, 1e6 * r / len(t["triangles"]), c / r))
 
 
+def max_circumradius(xy, tri):
+    p = xy[tri]
+    a = np.linalg.norm(p[:, 1] - p[:, 2], axis=1)
+    b = np.linalg.norm(p[:, 0] - p[:, 2], axis=1)
+    c = np.linalg.norm(p[:, 0] - p[:, 1], axis=1)
+    u, w = p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]
+    area = 0.5 * np.abs(u[:, 0] * w[:, 1] - u[:, 1] * w[:, 0])
+    return float((a * b * c / (4 * area)).max())
+
+
+def same_bound(name, poly, h, nv_del, tmp):
+    """Vertices each refiner needs to meet one size bound, the one Delaunay
+    refinement reads its size as (every circumradius <= h): cvm-del at h, and
+    frontal / AFLR at the largest size h_f in [h, 1.6 h] (bisection, 7 steps)
+    whose mesh still has every circumradius <= h (at the same h they make edges
+    of about h, circumradius about 0.58 h, so they over-resolve that bound)."""
+    out = "# same bound %-9s h %-5g circumradius <= h: cvm-del %d vertices" % (name, h, nv_del)
+    for algo, label in ((2, "cvm-front"), (3, "cvm-aflr")):
+        lo, hi, best = h, 1.6 * h, None
+        for _ in range(7):
+            mid = 0.5 * (lo + hi)
+            _, xy, tri = run_cvmesh(poly, mid, algo, tmp, reps=1)
+            if max_circumradius(xy, tri) <= h:
+                lo, best = mid, len(xy)
+            else:
+                hi = mid
+        if best is None:
+            _, xy, _ = run_cvmesh(poly, h, algo, tmp, reps=1)
+            best = len(xy)
+        out += "; %s %d (h_f %.3g h, %.2fx)" % (label, best, lo / h, best / nv_del)
+    print(out)
+
+
 def main():
     build_driver(BUILD, "bench_refine")
     print("# bench_refine: uniform size h; time = median of %d runs (triangulate + refine), one core; "
@@ -285,6 +322,9 @@ def main():
                 print("%-9s %-5s %-12s %7d %7d %9.4f %8.3f %7.2f %6.1f %6.1f %6.1f %6.3f" %
                       (name, "%g" % h if h > 0 else "graded", label, q["nv"], q["nt"], t, 1e6 * t / q["nt"], q["minang"], q["reg"],
                        q["obt"], q["deg6"], q["edge"]))
+            if h > 0:
+                same_bound(name, poly, h, len(runs["cvm-del"][-1][1]), tmp)
+            sys.stdout.flush()
         try:
             if not METHODS:
                 run_1e6(SHARED, tmp)
