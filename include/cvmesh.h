@@ -509,6 +509,25 @@ typedef enum cvm_option {
      *  more than 1.5 times its shortest (a graded star, where the ODT point is not
      *  the target) is left to the smart sweeps. Integer. */
     CVM_OPT_RELAX_SWEEPS = 209,
+    /** CVM_ALGO_AFLR only: smoothing interleaved with the layers. 0 (default): off,
+     *  the mesh is smoothed only after refinement (CVM_OPT_SMOOTH_SWEEPS). N > 0: during
+     *  the advancing-front pass, each time N more layers are completed, the free
+     *  Steiner points of those layers are smoothed with CVM_OPT_SMOOTH_METHOD (2
+     *  relaxation and 2 smart sweeps for methods 0, 2 and 3; 2 max-min sweeps for
+     *  1, 2 and 3; the same rules: no triangle inverts (exact orient2d), no angle
+     *  drops below min(its old smallest angle, CVM_OPT_MIN_ANGLE_DEG), no more
+     *  triangles exceed the size bound; points on segments and input points never
+     *  move), then the Delaunay-restoring flips run and the subsegments a moved
+     *  point encroaches are split before the front goes on. Layer k holds the points
+     *  placed for front edges of layer k - 1 (the front-starting segments are layer
+     *  0); it is completed when no triangle is queued for a front edge of a layer
+     *  below k any more, so no more points of layers <= k will be placed. Applied
+     *  regardless of CVM_OPT_SMOOTH_SWEEPS (which still smooths the whole mesh
+     *  afterwards). Measured: see the README. Integer, default 0, bounds [0, 1000].
+     *  With CVM_ALGO_DELAUNAY or CVM_ALGO_FRONTAL a non-zero value makes
+     *  cvm_mesh_refine() return CVM_E_UNSUPPORTED. Ignored for a weighted (regular)
+     *  triangulation, which is never smoothed. */
+    CVM_OPT_AFLR_SMOOTH_LAYERS = 210,
 
     /** Run control (400..499). */
     /** Time limit, seconds on a monotonic clock, 0 = none (default), bounds [0, 1e9].
@@ -1034,7 +1053,8 @@ typedef enum cvm_algorithm {
  *           progress callback (stage CVM_STAGE_REFINE) can cancel. CVM_ALGO_FRONTAL
  *           and CVM_ALGO_AFLR then post-process (when refinement completed): CVM_OPT_SWAP, then
  *           CVM_OPT_SMOOTH_SWEEPS (smoothing moves Steiner points), then
- *           CVM_OPT_RESTORE_DELAUNAY.
+ *           CVM_OPT_RESTORE_DELAUNAY. CVM_ALGO_AFLR: CVM_OPT_AFLR_SMOOTH_LAYERS
+ *           also smooths during the pass.
  * Stops:    on the Steiner limit, the time limit or cancellation the mesh is valid
  *           (conforming, constrained Delaunay) with the points inserted so far.
  * Determinism: same input, options and sizing give bit-identical output (except
@@ -1050,6 +1070,9 @@ typedef enum cvm_algorithm {
  *                                 names the callback and the position)
  *         CVM_E_UNSUPPORTED       CVM_OPT_KEEP_SEGMENT_VERTICES = 0 without a sizing (NULL
  *                                 or empty; the error item is that option; mesh unchanged)
+ *                                 or CVM_OPT_AFLR_SMOOTH_LAYERS != 0 with an algo other
+ *                                 than CVM_ALGO_AFLR (the error item is that option; mesh
+ *                                 unchanged)
  *         CVM_E_NOMEM             (the mesh keeps the points inserted before it and is valid)
  *         CVM_INCOMPLETE_STEINER_LIMIT, CVM_INCOMPLETE_TIME_LIMIT, CVM_INCOMPLETE_CANCELLED
  * @since 0.1

@@ -281,7 +281,8 @@ static void sm_targets(const cvm__tri2 *T, int32_t v, const double *x, const int
     }
 }
 
-cvm_status cvm__rf_smooth(cvm__refiner *R, size_t first, int relax, int sweeps, size_t *moves_out)
+cvm_status cvm__rf_smooth(cvm__refiner *R, size_t first, const uint8_t *only, int relax, int sweeps,
+                         size_t *moves_out)
 {
     cvm__tri2 *T = R->T;
     int32_t *star = NULL;
@@ -321,7 +322,7 @@ cvm_status cvm__rf_smooth(cvm__refiner *R, size_t first, int relax, int sweeps, 
             double c[2], o[2], l2, lmax2, b0, b1, q0, q1, qlo;
             double *x = T->xy + 2 * v;
             int big0, big1;
-            if (!cur[v])
+            if (!cur[v] || (only && !only[v]))
                 continue;
             n = sm_star(T, (int32_t)v, &star, &cap, &err);
             if (err || (n >= 3 && !sm_ring_build(R, (int32_t)v, star, n, &ring))) {
@@ -479,8 +480,8 @@ static int mm_eval(const cvm__refiner *R, int32_t v, const double *p, const int3
     return 1;
 }
 
-cvm_status cvm__rf_smooth_maxmin(cvm__refiner *R, size_t first, int sweeps, int guard,
-                                 size_t *moves_out)
+cvm_status cvm__rf_smooth_maxmin(cvm__refiner *R, size_t first, const uint8_t *only, int sweeps,
+                                 int guard, size_t *moves_out)
 {
     /* guard: only stars with an angle below 40 degrees (sin 40) */
     const double fmax = guard ? 0.64278760968653925 : 2.0;
@@ -521,7 +522,7 @@ cvm_status cvm__rf_smooth_maxmin(cvm__refiner *R, size_t first, int sweeps, int 
             double *x = T->xy + 2 * v;
             double p[2], f0, fm, fmin1, lmin = INFINITY;
             int big0, bigm, big1, moved = 0;
-            if (!cur[v])
+            if (!cur[v] || (only && !only[v]))
                 continue;
             n = sm_star(T, (int32_t)v, &star, &cap, &err);
             if (err)
