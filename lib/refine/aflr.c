@@ -66,6 +66,7 @@
 #include <string.h>
 
 #include "refine_internal.h"
+#include "delaunay/tri2_store.h"
 #include "geom/geom_internal.h"
 
 /* Good needs every edge shorter than this times the mean size at its ends. */
@@ -504,8 +505,7 @@ static cvm_status af_smooth_group(cvm__refiner *R, int32_t lo, int32_t hi)
     af_state *A = R->aflr;
     cvm__tri2 *T = R->T;
     const cvm__refine_params *p = R->p;
-    size_t nv = T->nv, v, n = 0, first = nv, k, t;
-    int moved = 0;
+    size_t nv = T->nv, v, n = 0, first = nv, k, t, moved = 0;
     cvm_status s = CVM_OK, s2 = CVM_OK;
     if (nv > A->cap_mask &&
         cvm__grow(R->ctx, (void **)&A->mask, &A->cap_mask, nv, sizeof *A->mask))
@@ -543,21 +543,25 @@ static cvm_status af_smooth_group(cvm__refiner *R, int32_t lo, int32_t hi)
         s = cvm__rf_smooth(R, first, A->mask, AF_SM_RELAX, AF_SM_SWEEPS, NULL);
     if (!s && p->smooth_method != 0)
         s = cvm__rf_smooth_maxmin(R, first, A->mask, AF_SM_SWEEPS, p->smooth_method == 3, NULL);
-    /* the mask now marks the vertices that moved */
+    /* the mask now marks the vertices that moved; the list keeps only them */
     for (k = 0; k < n; k++) {
-        const double *x = af_pt(R, A->list[k]), *o = A->old + 2 * k;
+        int32_t w = A->list[k];
+        const double *x = af_pt(R, w), *o = A->old + 2 * k;
         int m = x[0] != o[0] || x[1] != o[1];
-        A->mask[A->list[k]] = (uint8_t)m;
-        if (m && (size_t)A->list[k] < A->ngrid)
-            cvm__pgrid_move(&A->grid, A->list[k], o, x);
-        moved |= m;
+        A->mask[w] = (uint8_t)m;
+        if (m && (size_t)w < A->ngrid)
+            cvm__pgrid_move(&A->grid, w, o, x);
+        if (m)
+            A->list[moved++] = w;
     }
     if (!moved)
         return s;
-    /* restored even after an error above: it finishes without memory if it must */
-    s2 = cvm__rf_restore_delaunay(T, NULL);
-    if (s || s2)
+    /* only edges at the moved points can have lost the Delaunay property; on
+     * NOMEM (and after an error above) the allocation-free global restore */
+    if (s || (s2 = cvm__tri2_legalize_stars(T, A->list, moved)) != CVM_OK) {
+        (void)cvm__rf_restore_delaunay(T, NULL);
         return s ? s : cvm__nomem(R->ctx);
+    }
     /* the triangles at a moved vertex keep their layers but not their quality;
      * a flipped one takes its outer edges' layers from the triangles across */
     for (t = 0; t < T->nt; t++) {
@@ -578,8 +582,11 @@ static cvm_status af_smooth_group(cvm__refiner *R, int32_t lo, int32_t hi)
         if (af_store(A, R, (int32_t)t, l, af_quality_any(R, (int32_t)t)))
             return cvm__nomem(R->ctx);
     }
-    if ((s = cvm__rf_queue_encroached_all(R)))
-        return s;
+    /* a subsegment newly encroached is encroached by a moved point, the apex
+     * of a triangle beside it (constrained Delaunay) */
+    for (k = 0; k < moved; k++)
+        if ((s = cvm__rf_queue_encroached_star(R, A->list[k])))
+            return s;
     return cvm__rf_split_queued(R);
 }
 
