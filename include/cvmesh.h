@@ -510,23 +510,29 @@ typedef enum cvm_option {
      *  the target) is left to the smart sweeps. Integer. */
     CVM_OPT_RELAX_SWEEPS = 209,
     /** CVM_ALGO_AFLR only: smoothing interleaved with the layers. 0 (default): off,
-     *  the mesh is smoothed only after refinement (CVM_OPT_SMOOTH_SWEEPS). N > 0: during
-     *  the advancing-front pass, each time N more layers are completed, the free
-     *  Steiner points of those layers are smoothed with CVM_OPT_SMOOTH_METHOD (2
-     *  relaxation and 2 smart sweeps for methods 0, 2 and 3; 2 max-min sweeps for
-     *  1, 2 and 3; the same rules: no triangle inverts (exact orient2d), no angle
-     *  drops below min(its old smallest angle, CVM_OPT_MIN_ANGLE_DEG), no more
-     *  triangles exceed the size bound; points on segments and input points never
-     *  move), then the Delaunay-restoring flips run and the subsegments a moved
-     *  point encroaches are split before the front goes on. Layer k holds the points
-     *  placed for front edges of layer k - 1 (the front-starting segments are layer
-     *  0); it is completed when no triangle is queued for a front edge of a layer
-     *  below k any more, so no more points of layers <= k will be placed. Applied
-     *  regardless of CVM_OPT_SMOOTH_SWEEPS (which still smooths the whole mesh
-     *  afterwards). Measured: see the README. Integer, default 0, bounds [0, 1000].
-     *  With CVM_ALGO_DELAUNAY or CVM_ALGO_FRONTAL a non-zero value makes
-     *  cvm_mesh_refine() return CVM_E_UNSUPPORTED. Ignored for a weighted (regular)
-     *  triangulation, which is never smoothed. */
+     *  the mesh is smoothed only after refinement (CVM_OPT_SMOOTH_SWEEPS). N > 0: the
+     *  advancing-front pass works in bands of N layers and smooths each band as soon
+     *  as it is completed. Layer k holds the points placed for front edges of layer
+     *  k - 1 (the front-starting segments are layer 0); the pass takes only front
+     *  edges of layers below done + N (in its usual order inside the band), so when
+     *  none is left, layers done + 1 .. done + N are completed: no more points of
+     *  those layers will be placed (an edge of a lower layer made later, by a
+     *  segment split, is taken but not waited for). Then the free Steiner points of
+     *  those layers and of the band before whose triangles are all good (not on the
+     *  front: the centroid of a front point lies in the unrefined part) are smoothed
+     *  with CVM_OPT_SMOOTH_METHOD (2 relaxation and 2 smart sweeps for methods 0, 2
+     *  and 3; 2 max-min sweeps for 1, 2 and 3), under the same rules as
+     *  CVM_OPT_SMOOTH_SWEEPS: no triangle inverts (exact orient2d), no angle drops
+     *  below min(its old smallest angle, CVM_OPT_MIN_ANGLE_DEG), no more triangles
+     *  exceed the size bound; points on segments and input points never move. The
+     *  Delaunay property is restored by flips around the moved points, subsegments
+     *  they encroach are split, and the next band starts. The post-processing
+     *  (CVM_OPT_SWAP, CVM_OPT_SMOOTH_SWEEPS) still follows. Measured (README): the
+     *  band order costs regularity on curved fronts (annulus, NACA 0012) and the
+     *  smoothing adds time, hence off by default. Integer, default 0, bounds
+     *  [0, 1000]. With CVM_ALGO_DELAUNAY or CVM_ALGO_FRONTAL a non-zero value makes
+     *  cvm_mesh_refine() return CVM_E_UNSUPPORTED (no layers there). Ignored for a
+     *  weighted (regular) triangulation, which is never smoothed. */
     CVM_OPT_AFLR_SMOOTH_LAYERS = 210,
 
     /** Run control (400..499). */
