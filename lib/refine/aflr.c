@@ -124,7 +124,8 @@ typedef struct af_state {
     uint8_t *mask;             /* scratch: per vertex */
     int32_t *list;             /* scratch: the vertices of a group */
     double *old;               /* scratch: their coordinates before smoothing */
-    size_t cap_mask, cap_list, cap_old;
+    int32_t *chg;              /* triangles whose records the smoothing renewed */
+    size_t cap_mask, cap_list, cap_old, nchg, cap_chg;
 } af_state;
 
 static const double *af_pt(const cvm__refiner *R, int32_t v)
@@ -479,18 +480,38 @@ static int af_point(cvm__refiner *R, int32_t t, int j, double *x)
 
 /* ---- interleaved smoothing (CVM_OPT_AFLR_SMOOTH_LAYERS) ---- */
 
-/* Rebuild both queues from every triangle (for the new group). */
-static cvm_status af_requeue_all(cvm__refiner *R)
+/* The next band (done was just raised): the waiting triangles go to the
+ * queue whose band now holds them, and the triangles renewed by the smoothing
+ * (A->chg) and those across their edges are queued again (the smoothing
+ * changed their quality, so their front edges). */
+static cvm_status af_requeue_next(cvm__refiner *R)
 {
     af_state *A = R->aflr;
-    size_t t;
+    cvm__bad_entry e;
+    size_t n = 0, k;
     cvm_status s;
     int q;
-    cvm__bq_clear(&R->q);
-    cvm__bq_clear(&A->later);
-    for (t = 0; t < R->T->nt; t++)
-        if (!(R->T->tf[t] & CVM__TF_DEAD) && (s = af_queue_triangle(R, (int32_t)t, &q)))
+    while (cvm__bq_pop(&A->later, &e)) {
+        if (!cvm__bq_valid(R->T, &e))
+            continue;
+        if (n >= A->cap_list &&
+            cvm__grow(R->ctx, (void **)&A->list, &A->cap_list, n + 1, sizeof *A->list))
+            return cvm__nomem(R->ctx);
+        A->list[n++] = e.t;
+    }
+    for (k = 0; k < n; k++)
+        if ((s = af_queue_triangle(R, A->list[k], &q)))
             return s;
+    for (k = 0; k < A->nchg; k++) {
+        int32_t t = A->chg[k];
+        int j;
+        if ((s = af_queue_triangle(R, t, &q)))
+            return s;
+        for (j = 0; j < 3; j++)
+            if ((s = af_queue_triangle(R, R->T->tn[3 * (size_t)t + (size_t)j] / 3, &q)))
+                return s;
+    }
+    A->nchg = 0;
     return CVM_OK;
 }
 
@@ -506,6 +527,7 @@ static cvm_status af_smooth_group(cvm__refiner *R, int32_t lo, int32_t hi)
     cvm__tri2 *T = R->T;
     const cvm__refine_params *p = R->p;
     size_t nv = T->nv, v, n = 0, first = nv, k, t, moved = 0;
+    A->nchg = 0;
     cvm_status s = CVM_OK, s2 = CVM_OK;
     if (nv > A->cap_mask &&
         cvm__grow(R->ctx, (void **)&A->mask, &A->cap_mask, nv, sizeof *A->mask))
@@ -579,8 +601,11 @@ static cvm_status af_smooth_group(cvm__refiner *R, int32_t lo, int32_t hi)
         }
         for (j = 0; j < 3; j++)
             l[j] = af_edge_layer(R, (int32_t)t, j);
-        if (af_store(A, R, (int32_t)t, l, af_quality_any(R, (int32_t)t)))
+        if (af_store(A, R, (int32_t)t, l, af_quality_any(R, (int32_t)t)) ||
+            (A->nchg >= A->cap_chg &&
+             cvm__grow(R->ctx, (void **)&A->chg, &A->cap_chg, A->nchg + 1, sizeof *A->chg)))
             return cvm__nomem(R->ctx);
+        A->chg[A->nchg++] = (int32_t)t;
     }
     /* a subsegment newly encroached is encroached by a moved point, the apex
      * of a triangle beside it (constrained Delaunay) */
@@ -607,7 +632,7 @@ static cvm_status af_next_group(cvm__refiner *R, int *more)
         return s;
     A->done += A->nsm;
     *more = 1;
-    return af_requeue_all(R);
+    return af_requeue_next(R);
 }
 
 /* ---- set-up and the pass ---- */
@@ -684,6 +709,7 @@ void cvm__rf_aflr_free(cvm__refiner *R)
     cvm__free(R->ctx, A->mask);
     cvm__free(R->ctx, A->list);
     cvm__free(R->ctx, A->old);
+    cvm__free(R->ctx, A->chg);
     cvm__free(R->ctx, A);
     R->aflr = NULL;
 }
