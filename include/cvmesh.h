@@ -509,6 +509,31 @@ typedef enum cvm_option {
      *  more than 1.5 times its shortest (a graded star, where the ODT point is not
      *  the target) is left to the smart sweeps. Integer. */
     CVM_OPT_RELAX_SWEEPS = 209,
+    /** CVM_ALGO_AFLR only: smoothing interleaved with the layers. 0 (default): off,
+     *  the mesh is smoothed only after refinement (CVM_OPT_SMOOTH_SWEEPS). N > 0: the
+     *  advancing-front pass works in bands of N layers and smooths each band as soon
+     *  as it is completed. Layer k holds the points placed for front edges of layer
+     *  k - 1 (the front-starting segments are layer 0); the pass takes only front
+     *  edges of layers below done + N (in its usual order inside the band), so when
+     *  none is left, layers done + 1 .. done + N are completed: no more points of
+     *  those layers will be placed (an edge of a lower layer made later, by a
+     *  segment split, is taken but not waited for). Then the free Steiner points of
+     *  those layers and of the band before whose triangles are all good (not on the
+     *  front: the centroid of a front point lies in the unrefined part) are smoothed
+     *  with CVM_OPT_SMOOTH_METHOD (2 relaxation and 2 smart sweeps for methods 0, 2
+     *  and 3; 2 max-min sweeps for 1, 2 and 3), under the same rules as
+     *  CVM_OPT_SMOOTH_SWEEPS: no triangle inverts (exact orient2d), no angle drops
+     *  below min(its old smallest angle, CVM_OPT_MIN_ANGLE_DEG), no more triangles
+     *  exceed the size bound; points on segments and input points never move. The
+     *  Delaunay property is restored by flips around the moved points, subsegments
+     *  they encroach are split, and the next band starts. The post-processing
+     *  (CVM_OPT_SWAP, CVM_OPT_SMOOTH_SWEEPS) still follows. Measured (README): the
+     *  band order costs regularity on curved fronts (annulus, NACA 0012) and the
+     *  smoothing adds time, hence off by default. Integer, default 0, bounds
+     *  [0, 1000]. With CVM_ALGO_DELAUNAY or CVM_ALGO_FRONTAL a non-zero value makes
+     *  cvm_mesh_refine() return CVM_E_UNSUPPORTED (no layers there). Ignored for a
+     *  weighted (regular) triangulation, which is never smoothed. */
+    CVM_OPT_AFLR_SMOOTH_LAYERS = 210,
 
     /** Run control (400..499). */
     /** Time limit, seconds on a monotonic clock, 0 = none (default), bounds [0, 1e9].
@@ -1061,7 +1086,8 @@ typedef enum cvm_algorithm {
  *           progress callback (stage CVM_STAGE_REFINE) can cancel. CVM_ALGO_FRONTAL
  *           and CVM_ALGO_AFLR then post-process (when refinement completed): CVM_OPT_SWAP, then
  *           CVM_OPT_SMOOTH_SWEEPS (smoothing moves Steiner points), then
- *           CVM_OPT_RESTORE_DELAUNAY.
+ *           CVM_OPT_RESTORE_DELAUNAY. CVM_ALGO_AFLR: CVM_OPT_AFLR_SMOOTH_LAYERS
+ *           also smooths during the pass.
  * Stops:    on the Steiner limit, the time limit or cancellation the mesh is valid
  *           (conforming, constrained Delaunay) with the points inserted so far.
  * Determinism: same input, options and sizing give bit-identical output (except
@@ -1077,6 +1103,9 @@ typedef enum cvm_algorithm {
  *                                 names the callback and the position)
  *         CVM_E_UNSUPPORTED       CVM_OPT_KEEP_SEGMENT_VERTICES = 0 without a sizing (NULL
  *                                 or empty; the error item is that option; mesh unchanged)
+ *                                 or CVM_OPT_AFLR_SMOOTH_LAYERS != 0 with an algo other
+ *                                 than CVM_ALGO_AFLR (the error item is that option; mesh
+ *                                 unchanged)
  *         CVM_E_NOMEM             (the mesh keeps the points inserted before it and is valid)
  *         CVM_INCOMPLETE_STEINER_LIMIT, CVM_INCOMPLETE_TIME_LIMIT, CVM_INCOMPLETE_CANCELLED
  * @since 0.1

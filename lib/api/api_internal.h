@@ -10,7 +10,7 @@
 #include "io/io_internal.h"
 
 /* Options live in one table; index with cvm__option_slot(). */
-#define CVM__NOPTIONS 32
+#define CVM__NOPTIONS 48
 
 struct cvm_mesh {
     cvm__ctx ctx;

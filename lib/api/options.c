@@ -44,6 +44,7 @@ static const option_def k_options[] = {
     {CVM_OPT_DUAL_MAXMIN_ROUNDS, "DUAL_MAXMIN_ROUNDS", {0, 10000, 5, 1}},
     {CVM_OPT_DUAL_MAXMIN_TRIALS, "DUAL_MAXMIN_TRIALS", {0, 64, 0, 1}},
     {CVM_OPT_DUAL_MERGE_TOL, "DUAL_MERGE_TOL", {0, 1, 0.1, 0}},
+    {CVM_OPT_AFLR_SMOOTH_LAYERS, "AFLR_SMOOTH_LAYERS", {0, 1000, 0, 1}},
 };
 
 #define NOPT (sizeof k_options / sizeof k_options[0])

@@ -163,6 +163,8 @@ static cvm_status refine_run(cvm_mesh *m, const cvm_sizing *sizing, cvm_algorith
         p.smooth_method = (int)cvm__opt(m, CVM_OPT_SMOOTH_METHOD);
         p.relax_sweeps = (int)cvm__opt(m, CVM_OPT_RELAX_SWEEPS);
     }
+    if (algo == CVM_ALGO_AFLR)
+        p.aflr_smooth_layers = (int)cvm__opt(m, CVM_OPT_AFLR_SMOOTH_LAYERS);
     p.restore_delaunay = cvm__opt(m, CVM_OPT_RESTORE_DELAUNAY) != 0;
     p.sizing = sizing;
     p.nseg = m->in.nseg;
@@ -248,6 +250,13 @@ cvm_status cvm_mesh_refine(cvm_mesh *m, const cvm_sizing *sizing, cvm_algorithm 
     if (algo != CVM_ALGO_DELAUNAY && algo != CVM_ALGO_FRONTAL && algo != CVM_ALGO_AFLR)
         return cvm__error(&m->ctx, CVM_E_ARGUMENT, CVM_ENT_NONE, -1, "unknown algorithm %d",
                           (int)algo);
+    if (algo != CVM_ALGO_AFLR && cvm__opt(m, CVM_OPT_AFLR_SMOOTH_LAYERS) != 0)
+        return cvm__error(&m->ctx, CVM_E_UNSUPPORTED, CVM_ENT_OPTION,
+                          (int64_t)CVM_OPT_AFLR_SMOOTH_LAYERS,
+                          "CVM_OPT_AFLR_SMOOTH_LAYERS = %.17g smooths between AFLR layers: "
+                          "only CVM_ALGO_AFLR has layers (set it to 0 for %s)",
+                          cvm__opt(m, CVM_OPT_AFLR_SMOOTH_LAYERS),
+                          algo == CVM_ALGO_FRONTAL ? "CVM_ALGO_FRONTAL" : "CVM_ALGO_DELAUNAY");
     memset(m->refine_report, 0, sizeof m->refine_report);
     cvm__free(&m->ctx, m->refine_unmet);
     m->refine_unmet = NULL;

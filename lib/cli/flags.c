@@ -39,6 +39,8 @@ static const cli_option_flag k_flags[] = {
      "frontal: sweeps of smoothing after refining (0: none)"},
     {"--relax", "SWEEPS", CVM_OPT_RELAX_SWEEPS, 0, REF,
      "frontal/aflr: ODT relaxation sweeps before smoothing (default 5, 0: none)"},
+    {"--smooth-layers", "N", CVM_OPT_AFLR_SMOOTH_LAYERS, 0, REF,
+     "aflr: smooth the points of every N completed layers during the pass (default 0: off)"},
     {"--smooth-method", "N", CVM_OPT_SMOOTH_METHOD, 0, REF,
      "frontal/aflr smoothing: 0 smart Laplacian (default), 1 max-min angle (Freitag), 2 both, 3 both, max-min guarded"},
     {"--solver", "N", CVM_OPT_DUAL_SOLVER, 0, OPT,

@@ -38,6 +38,20 @@
  * The Delaunay-refinement clean-up (cvm__rf_delaunay), then the frontal
  * post-processing (swap, smooth, Delaunay restore), follow in refiner.c.
  *
+ * Interleaved smoothing (CVM_OPT_AFLR_SMOOTH_LAYERS = N > 0): vertex layer k
+ * holds the points placed for front edges of layer k - 1. The queue above
+ * never finishes a layer before the end of the pass (with the bench cases,
+ * layer 1 was complete only 3-10 points before the end), so with N > 0 the
+ * queue takes only front edges of layers below done + N (the key order holds
+ * inside that band) and the others wait in a second queue; when the first
+ * runs empty, layers done+1 .. done+N are complete: their free points whose
+ * star is all good (and those of the group before, now off the front) are
+ * smoothed, the Delaunay property restored (Bowyer-Watson cavities need it),
+ * encroached subsegments split, the cached qualities and layers of the
+ * changed triangles renewed, and both queues rebuilt for the next band.
+ * Measured: the band order, not the smoothing, costs regularity on curved
+ * fronts (see the README), hence off by default.
+ *
  * Determinism: the edge-layer table is only looked up, never iterated; the
  * queue orders by (key, vertex ids).
  *
@@ -52,6 +66,7 @@
 #include <string.h>
 
 #include "refine_internal.h"
+#include "delaunay/tri2_store.h"
 #include "geom/geom_internal.h"
 
 /* Good needs every edge shorter than this times the mean size at its ends. */
@@ -75,6 +90,13 @@ enum { AF_OK = 0, AF_BIG = 1, AF_SKINNY = 2 };
 /* Sweeps that pass layers on to edges made after the fronts stopped. */
 #define AF_SWEEPS 64
 #define AF_PI 3.14159265358979323846
+/* Interleaved smoothing (CVM_OPT_AFLR_SMOOTH_LAYERS): relaxation and smart
+ * (or max-min) sweeps per completed group of layers. */
+#define AF_SM_RELAX 2
+#define AF_SM_SWEEPS 2
+#ifndef AF_SM_BACK
+#define AF_SM_BACK 1
+#endif
 /* The next and the previous corner of a triangle (faster than % 3 in the hot loops). */
 static const int af_n1[3] = {1, 2, 0}, af_n2[3] = {2, 0, 1};
 
@@ -92,11 +114,37 @@ typedef struct af_state {
     cvm__pgrid grid;
     size_t ngrid;              /* vertices 0..ngrid-1 are in the grid */
     double lmin0;              /* shortest domain edge when the pass started */
+    /* interleaved smoothing, only with nsm > 0 (see af_layers_done) */
+    int32_t nsm;               /* CVM_OPT_AFLR_SMOOTH_LAYERS */
+    cvm__bad_queue later;      /* triangles queued for a front edge of layer >= done + nsm */
+    int32_t *vlay;             /* per vertex: its layer (base edge's + 1), AF_INF: none */
+    size_t cap_vlay;
+    int32_t done;              /* vertex layers 1..done are complete (and were smoothed) */
+    int32_t maxlay;            /* highest vertex layer made so far */
+    uint8_t *mask;             /* scratch: per vertex */
+    int32_t *list;             /* scratch: the vertices of a group */
+    double *old;               /* scratch: their coordinates before smoothing */
+    int32_t *chg;              /* triangles whose records the smoothing renewed */
+    size_t cap_mask, cap_list, cap_old, nchg, cap_chg;
 } af_state;
 
 static const double *af_pt(const cvm__refiner *R, int32_t v)
 {
     return R->T->xy + 2 * (size_t)v;
+}
+
+/* Grow *p (int32_t) to at least need elements, the new ones set to fill;
+ * 0, or 1 on NOMEM. */
+static int af_grow_fill(cvm__ctx *ctx, int32_t **p, size_t *cap, size_t need, int32_t fill)
+{
+    size_t k = *cap;
+    if (need <= *cap)
+        return 0;
+    if (cvm__grow(ctx, (void **)p, cap, need, sizeof **p))
+        return 1;
+    for (; k < *cap; k++)
+        (*p)[k] = fill;
+    return 0;
 }
 
 /* ---- edge layers, per triangle slot ---- */
@@ -269,6 +317,7 @@ static int af_front_edge(cvm__refiner *R, int32_t t, int q, int *j_out, int32_t 
  * into *q_out (AF_BIG outside the domain). */
 static cvm_status af_queue_triangle(cvm__refiner *R, int32_t t, int *q_out)
 {
+    af_state *A = R->aflr;
     int j, q;
     int32_t layer;
     double key;
@@ -278,7 +327,9 @@ static cvm_status af_queue_triangle(cvm__refiner *R, int32_t t, int *q_out)
     *q_out = q = af_quality_cached(R, t);
     if (q == AF_OK || !af_front_edge(R, t, q, &j, &layer, &key))
         return CVM_OK;
-    if (cvm__bq_push(&R->q, R->T, t, 0, key))
+    /* with interleaved smoothing, the layers beyond the current group wait */
+    if (cvm__bq_push(A->nsm && layer != AF_INF && layer >= A->done + A->nsm ? &A->later : &R->q,
+                     R->T, t, 0, key))
         return cvm__nomem(R->ctx);
     return CVM_OK;
 }
@@ -299,6 +350,13 @@ static cvm_status af_new_vertex(cvm__refiner *R, int32_t v, int32_t base_layer)
     for (; A->ngrid <= (size_t)v; A->ngrid++)
         if (cvm__pgrid_add(&A->grid, (int32_t)A->ngrid, af_pt(R, (int32_t)A->ngrid)))
             return cvm__nomem(R->ctx);
+    if (A->nsm) {
+        if (af_grow_fill(R->ctx, &A->vlay, &A->cap_vlay, (size_t)v + 1, AF_INF))
+            return cvm__nomem(R->ctx);
+        A->vlay[v] = base_layer == AF_INF ? AF_INF : base_layer + 1;
+        if (base_layer != AF_INF && base_layer + 1 > A->maxlay)
+            A->maxlay = base_layer + 1;
+    }
     /* the outer (cavity boundary) edge of each star triangle keeps its layer,
      * read from the unchanged triangle across it */
     for (k = 0; k < n; k++) {
@@ -420,6 +478,163 @@ static int af_point(cvm__refiner *R, int32_t t, int j, double *x)
     return 0;
 }
 
+/* ---- interleaved smoothing (CVM_OPT_AFLR_SMOOTH_LAYERS) ---- */
+
+/* The next band (done was just raised): the waiting triangles go to the
+ * queue whose band now holds them, and the triangles renewed by the smoothing
+ * (A->chg) and those across their edges are queued again (the smoothing
+ * changed their quality, so their front edges). */
+static cvm_status af_requeue_next(cvm__refiner *R)
+{
+    af_state *A = R->aflr;
+    cvm__bad_entry e;
+    size_t n = 0, k;
+    cvm_status s;
+    int q;
+    while (cvm__bq_pop(&A->later, &e)) {
+        if (!cvm__bq_valid(R->T, &e))
+            continue;
+        if (n >= A->cap_list &&
+            cvm__grow(R->ctx, (void **)&A->list, &A->cap_list, n + 1, sizeof *A->list))
+            return cvm__nomem(R->ctx);
+        A->list[n++] = e.t;
+    }
+    for (k = 0; k < n; k++)
+        if ((s = af_queue_triangle(R, A->list[k], &q)))
+            return s;
+    for (k = 0; k < A->nchg; k++) {
+        int32_t t = A->chg[k];
+        int j;
+        if ((s = af_queue_triangle(R, t, &q)))
+            return s;
+        for (j = 0; j < 3; j++)
+            if ((s = af_queue_triangle(R, R->T->tn[3 * (size_t)t + (size_t)j] / 3, &q)))
+                return s;
+    }
+    A->nchg = 0;
+    return CVM_OK;
+}
+
+/* Smooth the free vertices of layers lo+1..hi with the configured method
+ * (AF_SM_RELAX + AF_SM_SWEEPS sweeps), restore the Delaunay property (the
+ * cavities of the next insertions need it), split the subsegments a moved
+ * vertex encroaches, and bring the pass's records up to date: the moved
+ * vertices in the proximity grid, the quality (and layers, for the flipped
+ * triangles) of every triangle that changed. */
+static cvm_status af_smooth_group(cvm__refiner *R, int32_t lo, int32_t hi)
+{
+    af_state *A = R->aflr;
+    cvm__tri2 *T = R->T;
+    const cvm__refine_params *p = R->p;
+    size_t nv = T->nv, v, n = 0, first = nv, k, t, moved = 0;
+    A->nchg = 0;
+    cvm_status s = CVM_OK, s2 = CVM_OK;
+    if (nv > A->cap_mask &&
+        cvm__grow(R->ctx, (void **)&A->mask, &A->cap_mask, nv, sizeof *A->mask))
+        return cvm__nomem(R->ctx);
+    for (v = 0; v < nv; v++) {
+        int32_t l = v < A->cap_vlay ? A->vlay[v] : AF_INF;
+        size_t ns;
+        A->mask[v] = 0;
+        if (l == AF_INF || l <= lo - AF_SM_BACK * A->nsm || l > hi || R->vseg[v] != -1)
+            continue;
+        /* a point on the front (a star triangle still bad) waits: the centroid of
+         * its neighbours lies in the unrefined part */
+        if ((ns = cvm__rf_star(R, (int32_t)v)) == 0)
+            return cvm__nomem(R->ctx);
+        for (k = 0; k < ns && af_quality_cached(R, R->star[k]) == AF_OK; k++)
+            ;
+        if (k < ns)
+            continue;
+        A->mask[v] = 1;
+        if ((n >= A->cap_list &&
+             cvm__grow(R->ctx, (void **)&A->list, &A->cap_list, n + 1, sizeof *A->list)) ||
+            (2 * n + 2 > A->cap_old &&
+             cvm__grow(R->ctx, (void **)&A->old, &A->cap_old, 2 * n + 2, sizeof *A->old)))
+            return cvm__nomem(R->ctx);
+        A->list[n] = (int32_t)v;
+        A->old[2 * n] = T->xy[2 * v];
+        A->old[2 * n + 1] = T->xy[2 * v + 1];
+        n++;
+        if (v < first)
+            first = v;
+    }
+    if (n == 0)
+        return CVM_OK;
+    if (p->smooth_method != 1)
+        s = cvm__rf_smooth(R, first, A->mask, AF_SM_RELAX, AF_SM_SWEEPS, NULL);
+    if (!s && p->smooth_method != 0)
+        s = cvm__rf_smooth_maxmin(R, first, A->mask, AF_SM_SWEEPS, p->smooth_method == 3, NULL);
+    /* the mask now marks the vertices that moved; the list keeps only them */
+    for (k = 0; k < n; k++) {
+        int32_t w = A->list[k];
+        const double *x = af_pt(R, w), *o = A->old + 2 * k;
+        int m = x[0] != o[0] || x[1] != o[1];
+        A->mask[w] = (uint8_t)m;
+        if (m && (size_t)w < A->ngrid)
+            cvm__pgrid_move(&A->grid, w, o, x);
+        if (m)
+            A->list[moved++] = w;
+    }
+    if (!moved)
+        return s;
+    /* only edges at the moved points can have lost the Delaunay property; on
+     * NOMEM (and after an error above) the allocation-free global restore */
+    if (s || (s2 = cvm__tri2_legalize_stars(T, A->list, moved)) != CVM_OK) {
+        (void)cvm__rf_restore_delaunay(T, NULL);
+        return s ? s : cvm__nomem(R->ctx);
+    }
+    /* the triangles at a moved vertex keep their layers but not their quality;
+     * a flipped one takes its outer edges' layers from the triangles across */
+    for (t = 0; t < T->nt; t++) {
+        const int32_t *tv = T->tv + 3 * t;
+        int32_t l[3];
+        int j;
+        if (T->tf[t] & CVM__TF_DEAD)
+            continue;
+        if (af_slot_valid(A, T, (int32_t)t)) {
+            int touched = 0;
+            for (j = 0; j < 3; j++)
+                touched |= tv[j] >= 0 && A->mask[tv[j]];
+            if (!touched)
+                continue;
+        }
+        for (j = 0; j < 3; j++)
+            l[j] = af_edge_layer(R, (int32_t)t, j);
+        if (af_store(A, R, (int32_t)t, l, af_quality_any(R, (int32_t)t)) ||
+            (A->nchg >= A->cap_chg &&
+             cvm__grow(R->ctx, (void **)&A->chg, &A->cap_chg, A->nchg + 1, sizeof *A->chg)))
+            return cvm__nomem(R->ctx);
+        A->chg[A->nchg++] = (int32_t)t;
+    }
+    /* a subsegment newly encroached is encroached by a moved point, the apex
+     * of a triangle beside it (constrained Delaunay) */
+    for (k = 0; k < moved; k++)
+        if ((s = cvm__rf_queue_encroached_star(R, A->list[k])))
+            return s;
+    return cvm__rf_split_queued(R);
+}
+
+/* The queue of the current group ran empty: with interleaved smoothing,
+ * smooth the group's layers done+1 .. done+nsm and move on to the next group
+ * (*more = 1) unless nothing is left (*more = 0). Vertex layer k holds the
+ * points placed for front edges of layer k - 1; the queue takes only front
+ * edges of layers below done + nsm (the others wait in A->later), so when it
+ * is empty no more points of layers <= done + nsm will be placed. */
+static cvm_status af_next_group(cvm__refiner *R, int *more)
+{
+    af_state *A = R->aflr;
+    cvm_status s;
+    *more = 0;
+    if (!A->nsm || (A->later.n == 0 && A->maxlay <= A->done))
+        return CVM_OK;
+    if ((s = af_smooth_group(R, A->done, A->done + A->nsm)))
+        return s;
+    A->done += A->nsm;
+    *more = 1;
+    return af_requeue_next(R);
+}
+
 /* ---- set-up and the pass ---- */
 
 static cvm_status af_setup(cvm__refiner *R)
@@ -431,6 +646,8 @@ static cvm_status af_setup(cvm__refiner *R)
     if (!A)
         return cvm__nomem(R->ctx);
     R->aflr = A;
+    cvm__bq_init(&A->later, R->ctx);
+    A->nsm = R->p->aflr_smooth_layers > 0 && !T->w ? R->p->aflr_smooth_layers : 0;
     A->nfront = R->nseg;
     A->front = cvm__malloc(R->ctx, R->nseg + 1);
     if (!A->front)
@@ -487,6 +704,12 @@ void cvm__rf_aflr_free(cvm__refiner *R)
     cvm__free(R->ctx, A->sq);
     cvm__free(R->ctx, A->lo);
     cvm__free(R->ctx, A->front);
+    cvm__bq_destroy(&A->later);
+    cvm__free(R->ctx, A->vlay);
+    cvm__free(R->ctx, A->mask);
+    cvm__free(R->ctx, A->list);
+    cvm__free(R->ctx, A->old);
+    cvm__free(R->ctx, A->chg);
     cvm__free(R->ctx, A);
     R->aflr = NULL;
 }
@@ -504,10 +727,19 @@ cvm_status cvm__rf_aflr(cvm__refiner *R)
     for (t = 0; t < R->T->nt; t++)
         if ((s = af_queue_triangle(R, (int32_t)t, &q)))
             return s;
-    while (cvm__bq_pop(&R->q, &e)) {
+    for (;;) {
         double key, x[2];
         int32_t v, layer;
         int j, r;
+        if (!cvm__bq_pop(&R->q, &e)) {
+            /* the current group of layers is complete */
+            int more;
+            if ((s = af_next_group(R, &more)))
+                return s;
+            if (!more)
+                break;
+            continue;
+        }
         if (!cvm__bq_valid(R->T, &e) || (q = af_quality_cached(R, e.t)) == AF_OK ||
             !af_front_edge(R, e.t, q, &j, &layer, &key))
             continue;

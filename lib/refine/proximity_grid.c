@@ -68,6 +68,24 @@ cvm_status cvm__pgrid_add(cvm__pgrid *g, int32_t v, const double *p)
     return CVM_OK;
 }
 
+void cvm__pgrid_move(cvm__pgrid *g, int32_t v, const double *old, const double *p)
+{
+    size_t c0 = (size_t)pg_cell(old[1], g->y0, g->inv, g->ny) * (size_t)g->nx +
+                (size_t)pg_cell(old[0], g->x0, g->inv, g->nx);
+    size_t c1 = (size_t)pg_cell(p[1], g->y0, g->inv, g->ny) * (size_t)g->nx +
+                (size_t)pg_cell(p[0], g->x0, g->inv, g->nx);
+    int32_t *link = &g->head[c0];
+    if (c0 == c1)
+        return;
+    while (*link >= 0 && *link != v)
+        link = &g->next[*link];
+    if (*link != v)
+        return; /* not in old's cell: left where it is */
+    *link = g->next[v];
+    g->next[v] = g->head[c1];
+    g->head[c1] = v;
+}
+
 int cvm__pgrid_any_within(const cvm__pgrid *g, const double *xy, const double *x, double r)
 {
     int32_t i0 = pg_cell(x[0] - r, g->x0, g->inv, g->nx), i1 = pg_cell(x[0] + r, g->x0, g->inv, g->nx);

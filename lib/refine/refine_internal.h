@@ -207,6 +207,8 @@ typedef struct cvm__refine_params {
     size_t nregion;
     const unsigned char *seg_front; /* AFLR: nseg flags, 1 when the segment starts a front;
                                        NULL: every segment (hull segments too) */
+    int aflr_smooth_layers;    /* AFLR: > 0 smooths the vertices of every N completed layers
+                                  during the pass (CVM_OPT_AFLR_SMOOTH_LAYERS); 0 off */
 } cvm__refine_params;
 
 /* What a run did (see CVM_MEASURE_REFINE_* in cvmesh.h). */
@@ -375,6 +377,8 @@ cvm_status cvm__pgrid_init(cvm__pgrid *g, cvm__ctx *ctx, double x0, double y0, d
 void cvm__pgrid_destroy(cvm__pgrid *g);
 /* Add vertex v at p (points outside the box go to the nearest cell). CVM_OK or CVM_E_NOMEM. */
 cvm_status cvm__pgrid_add(cvm__pgrid *g, int32_t v, const double *p);
+/* Vertex v of the grid, added at old, now lies at p: moved to p's cell. */
+void cvm__pgrid_move(cvm__pgrid *g, int32_t v, const double *old, const double *p);
 /* 1 when some vertex of the grid lies strictly closer than r to x (xy: all coordinates). */
 int cvm__pgrid_any_within(const cvm__pgrid *g, const double *xy, const double *x, double r);
 
@@ -397,7 +401,8 @@ cvm_status cvm__rf_swap_degree(const cvm__refiner *R, size_t *flips_out);
  * so the result is (constrained) Delaunay on every return. */
 cvm_status cvm__rf_restore_delaunay(cvm__tri2 *T, size_t *flips_out);
 /* Smart Laplacian smoothing: sweeps over vertices first..nv-1 in index order
- * (Steiner points only: input points never move); a vertex whose star is in
+ * (Steiner points only: input points never move), only those v with only[v]
+ * != 0 when only is not NULL (nv bytes); a vertex whose star is in
  * the domain with no constrained spoke (so never a vertex on a segment) moves
  * to the best of three points on the way to the centroid of its neighbours
  * (0.5, 1 and 1.5 times the step) when every star triangle stays strictly
@@ -407,9 +412,10 @@ cvm_status cvm__rf_restore_delaunay(cvm__tri2 *T, size_t *flips_out);
  * below min(the star's smallest angle, the requested angle). Floating point
  * decides only which valid mesh results. Breaks the Delaunay property.
  * CVM_OK or CVM_E_NOMEM (the triangulation stays valid). */
-cvm_status cvm__rf_smooth(cvm__refiner *R, size_t first, int relax, int sweeps, size_t *moves_out);
+cvm_status cvm__rf_smooth(cvm__refiner *R, size_t first, const uint8_t *only, int relax, int sweeps,
+                         size_t *moves_out);
 /* Max-min smoothing (Freitag and Ollivier's active-set method): the same
- * vertices, order and sweep rule as cvm__rf_smooth; each visited vertex
+ * vertices (first, only), order and sweep rule as cvm__rf_smooth; each visited vertex
  * maximises the smallest sine of the angles of its star (= the sine of the
  * star's smallest angle): the active functions are those within 1e-6 of the
  * minimum, the search direction is the smallest-norm point of the convex
@@ -425,7 +431,7 @@ cvm_status cvm__rf_smooth(cvm__refiner *R, size_t first, int relax, int sweeps, 
  * [55, 65] degrees (as cvm__rf_smooth counts them) or lowers it.
  * Breaks the Delaunay property. CVM_OK or CVM_E_NOMEM (the triangulation
  * stays valid). */
-cvm_status cvm__rf_smooth_maxmin(cvm__refiner *R, size_t first, int sweeps, int guard,
-                                 size_t *moves_out);
+cvm_status cvm__rf_smooth_maxmin(cvm__refiner *R, size_t first, const uint8_t *only, int sweeps,
+                                 int guard, size_t *moves_out);
 
 #endif

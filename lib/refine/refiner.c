@@ -246,9 +246,9 @@ static cvm_status rf_post(cvm__refiner *R, size_t first, size_t *flips)
     if (p->swap)
         s = cvm__rf_swap_degree(R, NULL);
     if (!s && p->smooth_sweeps > 0 && p->smooth_method != 1)
-        s = cvm__rf_smooth(R, first, p->relax_sweeps, p->smooth_sweeps, NULL);
+        s = cvm__rf_smooth(R, first, NULL, p->relax_sweeps, p->smooth_sweeps, NULL);
     if (!s && p->smooth_sweeps > 0 && p->smooth_method != 0)
-        s = cvm__rf_smooth_maxmin(R, first, p->smooth_sweeps, p->smooth_method == 3, NULL);
+        s = cvm__rf_smooth_maxmin(R, first, NULL, p->smooth_sweeps, p->smooth_method == 3, NULL);
     /* restored even after an error above: it finishes without memory if it must */
     if (p->restore_delaunay && (p->swap || p->smooth_sweeps > 0) &&
         (s2 = cvm__rf_restore_delaunay(R->T, flips)) != CVM_OK && !s)

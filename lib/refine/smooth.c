@@ -224,6 +224,65 @@ static void sm_mark_imperfect(const cvm__tri2 *T, uint8_t *cur)
     }
 }
 
+/* 1 when a domain triangle at v has an angle outside [55, 65] degrees;
+ * memo (NULL or per vertex: 0 unknown, 1 no, 2 yes) keeps the answers. */
+static int sm_star_imperfect(const cvm__tri2 *T, int32_t v, uint8_t *memo)
+{
+    int32_t t0 = T->vtri[v], t = t0;
+    size_t n = 0;
+    int r = 0;
+    if (memo && memo[v])
+        return memo[v] == 2;
+    if (t0 < 0)
+        return 0;
+    do {
+        const int32_t *tv = T->tv + 3 * (size_t)t;
+        int i = tv[0] == v ? 0 : tv[1] == v ? 1 : 2;
+        if (cvm__tri2_in_domain(T, t) && !sm_perfect(T, t)) {
+            r = 1;
+            break;
+        }
+        t = T->tn[3 * (size_t)t + (i + 1) % 3] / 3;
+    } while (t != t0 && ++n <= T->nt);
+    if (memo)
+        memo[v] = (uint8_t)(r + 1);
+    return r;
+}
+
+/* The first marks when only the vertices v >= first with only[v] may move:
+ * sm_mark_imperfect (then sm_dilate when dilate is set) restricted to them,
+ * from their stars instead of a scan of every triangle; tmp is scratch of
+ * T->nv bytes. */
+static void sm_mark_only(const cvm__tri2 *T, size_t first, const uint8_t *only, int dilate,
+                         uint8_t *cur, uint8_t *tmp)
+{
+    size_t v;
+    memset(cur, 0, T->nv);
+    memset(tmp, 0, T->nv);
+    for (v = first; v < T->nv; v++) {
+        int32_t t0, t;
+        size_t n = 0;
+        if (!only[v] || (t0 = T->vtri[v]) < 0)
+            continue;
+        cur[v] = (uint8_t)sm_star_imperfect(T, (int32_t)v, tmp);
+        if (cur[v] || !dilate)
+            continue;
+        /* dilated: a vertex of a domain triangle at v is marked */
+        t = t0;
+        do {
+            const int32_t *tv = T->tv + 3 * (size_t)t;
+            int i = tv[0] == (int32_t)v ? 0 : tv[1] == (int32_t)v ? 1 : 2;
+            if (cvm__tri2_in_domain(T, t) &&
+                (sm_star_imperfect(T, tv[(i + 1) % 3], tmp) ||
+                 sm_star_imperfect(T, tv[(i + 2) % 3], tmp))) {
+                cur[v] = 1;
+                break;
+            }
+            t = T->tn[3 * (size_t)t + (i + 1) % 3] / 3;
+        } while (t != t0 && ++n <= T->nt);
+    }
+}
+
 /* Add to cur every vertex sharing a domain triangle with a marked one; tmp
  * is scratch of T->nv bytes. */
 static void sm_dilate(const cvm__tri2 *T, uint8_t *cur, uint8_t *tmp)
@@ -281,7 +340,8 @@ static void sm_targets(const cvm__tri2 *T, int32_t v, const double *x, const int
     }
 }
 
-cvm_status cvm__rf_smooth(cvm__refiner *R, size_t first, int relax, int sweeps, size_t *moves_out)
+cvm_status cvm__rf_smooth(cvm__refiner *R, size_t first, const uint8_t *only, int relax, int sweeps,
+                         size_t *moves_out)
 {
     cvm__tri2 *T = R->T;
     int32_t *star = NULL;
@@ -307,21 +367,29 @@ cvm_status cvm__rf_smooth(cvm__refiner *R, size_t first, int relax, int sweeps, 
         cvm__free(T->ctx, next);
         return cvm__nomem(T->ctx);
     }
-    sm_mark_imperfect(T, cur);
-    if (relax > 0)
-        sm_dilate(T, cur, next);
+    if (only)
+        sm_mark_only(T, first, only, relax > 0, cur, next);
+    else {
+        sm_mark_imperfect(T, cur);
+        if (relax > 0)
+            sm_dilate(T, cur, next);
+    }
     for (sweep = 0; sweep < relax + sweeps; sweep++) {
         size_t moved_before = moves;
         int relaxing = sweep < relax;
-        if (sweep == relax && relax > 0)
-            sm_mark_imperfect(T, cur); /* the smart sweeps start afresh */
+        if (sweep == relax && relax > 0) { /* the smart sweeps start afresh */
+            if (only)
+                sm_mark_only(T, first, only, 0, cur, next);
+            else
+                sm_mark_imperfect(T, cur);
+        }
         memset(next, 0, T->nv);
         for (v = first; v < T->nv; v++) {
             size_t n;
             double c[2], o[2], l2, lmax2, b0, b1, q0, q1, qlo;
             double *x = T->xy + 2 * v;
             int big0, big1;
-            if (!cur[v])
+            if (!cur[v] || (only && !only[v]))
                 continue;
             n = sm_star(T, (int32_t)v, &star, &cap, &err);
             if (err || (n >= 3 && !sm_ring_build(R, (int32_t)v, star, n, &ring))) {
@@ -479,8 +547,8 @@ static int mm_eval(const cvm__refiner *R, int32_t v, const double *p, const int3
     return 1;
 }
 
-cvm_status cvm__rf_smooth_maxmin(cvm__refiner *R, size_t first, int sweeps, int guard,
-                                 size_t *moves_out)
+cvm_status cvm__rf_smooth_maxmin(cvm__refiner *R, size_t first, const uint8_t *only, int sweeps,
+                                 int guard, size_t *moves_out)
 {
     /* guard: only stars with an angle below 40 degrees (sin 40) */
     const double fmax = guard ? 0.64278760968653925 : 2.0;
@@ -505,7 +573,9 @@ cvm_status cvm__rf_smooth_maxmin(cvm__refiner *R, size_t first, int sweeps, int 
     }
     /* first sweep: the vertices of triangles with an angle outside [55, 65] degrees */
     memset(cur, 0, T->nv);
-    {
+    if (only)
+        sm_mark_only(T, first, only, 0, cur, next);
+    else {
         size_t t;
         for (t = 0; t < T->nt; t++) {
             const int32_t *tv = T->tv + 3 * t;
@@ -521,7 +591,7 @@ cvm_status cvm__rf_smooth_maxmin(cvm__refiner *R, size_t first, int sweeps, int 
             double *x = T->xy + 2 * v;
             double p[2], f0, fm, fmin1, lmin = INFINITY;
             int big0, bigm, big1, moved = 0;
-            if (!cur[v])
+            if (!cur[v] || (only && !only[v]))
                 continue;
             n = sm_star(T, (int32_t)v, &star, &cap, &err);
             if (err)

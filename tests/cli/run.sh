@@ -364,5 +364,36 @@ expect_grep "--resample-boundary without a size names the option" "$TMP/err" "KE
 expect_one_line "--resample-boundary without a size"
 if [ -e "$OUT/plain.vtu" ]; then fail "--resample-boundary without a size wrote a file"; else pass; fi
 
+# ---- refine --smooth-layers (CVM_OPT_AFLR_SMOOTH_LAYERS) ------------------------
+OUT=$TMP/smoothlayers
+mkdir "$OUT"
+expect_exit 0 "refine --help lists --smooth-layers" "$CLI" refine --help
+expect_grep "refine --help lists --smooth-layers" "$TMP/out" "--smooth-layers N"
+expect_exit 0 "refine --algo aflr --smooth-layers 2" "$CLI" refine "$SHARED/data/naca0012.poly" \
+    --algo aflr --size 0.5 --smooth-layers 2 --quality -o "$OUT/naca.node"
+expect_grep "--smooth-layers meets the angle" "$TMP/out" "triangles below the angle: 0"
+expect_exit 0 "refine --algo aflr without --smooth-layers" "$CLI" refine "$SHARED/data/naca0012.poly" \
+    --algo aflr --size 0.5 -o "$OUT/plain.node"
+if cmp -s "$OUT/naca.node" "$OUT/plain.node"; then
+    fail "--smooth-layers 2 gave the same points as without it"
+else
+    pass
+fi
+if [ "$HAVE_NUMPY" -eq 1 ]; then
+    if python3 "$SHARED/tools/verify_mesh.py" "$SHARED/data/naca0012.poly" "$OUT/naca" > "$OUT/verify.json" 2>&1; then
+        pass
+    else
+        fail "--smooth-layers: verify_mesh.py: $(tail -c 400 "$OUT/verify.json")"
+    fi
+fi
+rm -f "$OUT/frontal.vtu"
+expect_exit 1 "--smooth-layers with frontal is refused" "$CLI" refine "$SHARED/data/square.poly" \
+    --algo frontal --size 0.2 --smooth-layers 1 -o "$OUT/frontal.vtu"
+expect_grep "--smooth-layers with frontal names the option" "$TMP/err" "AFLR_SMOOTH_LAYERS"
+expect_one_line "--smooth-layers with frontal"
+if [ -e "$OUT/frontal.vtu" ]; then fail "--smooth-layers with frontal wrote a file"; else pass; fi
+expect_exit 2 "--smooth-layers out of range" "$CLI" refine "$SHARED/data/square.poly" --algo aflr \
+    --smooth-layers -1 -o "$OUT/x.vtu"
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

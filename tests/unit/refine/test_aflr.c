@@ -444,6 +444,172 @@ START_TEST(out_of_memory_keeps_a_valid_mesh)
 }
 END_TEST
 
+/* ---- smoothing interleaved with the layers (CVM_OPT_AFLR_SMOOTH_LAYERS) ---- */
+
+/* 1 when a and b have different points or triangles. */
+static int af_differ(cvm_mesh *a, cvm_mesh *b)
+{
+    double *xa, *xb;
+    cvm_index *ta, *tb;
+    size_t nva, nta, nvb, ntb;
+    int d;
+    af_fetch(a, &xa, &nva, &ta, &nta);
+    af_fetch(b, &xb, &nvb, &tb, &ntb);
+    d = nva != nvb || nta != ntb || memcmp(xa, xb, 2 * nva * sizeof *xa) != 0 ||
+        memcmp(ta, tb, 3 * nta * sizeof *ta) != 0;
+    free(xa);
+    free(xb);
+    free(ta);
+    free(tb);
+    return d;
+}
+
+/* A shared geometry read, triangulated and refined by AFLR at size h with
+ * CVM_OPT_AFLR_SMOOTH_LAYERS = nsm. */
+static cvm_mesh *af_shared_layers(const char *path, double h, int nsm)
+{
+    cvm_mesh *m;
+    cvm_status s;
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_msg(cvm_mesh_read(m, path) == CVM_OK, "%s: %s", path, cvm_mesh_errmsg(m));
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_AFLR_SMOOTH_LAYERS, nsm), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+    s = rtest_refine_uniform(m, h, CVM_ALGO_AFLR);
+    ck_assert_msg(s == CVM_OK, "%s: %s", path, cvm_mesh_errmsg(m));
+    return m;
+}
+
+/* With the option on (N = 1 and 2): valid, every segment kept, every angle >=
+ * 30 degrees and every circumradius <= h by the test's own measure, a second
+ * run bit-identical, and a mesh that differs from the one without it. */
+static void af_layers_geometry(const char *name, double h, long euler)
+{
+    char path[1024];
+    size_t nseg;
+    cvm_index *segs;
+    cvm_mesh *off;
+    int nsm;
+    rtest_shared_path(path, sizeof path, name);
+    segs = rtest_poly_segments(path, &nseg);
+    off = af_shared_layers(path, h, 0);
+    for (nsm = 1; nsm <= 2; nsm++) {
+        cvm_mesh *m = af_shared_layers(path, h, nsm), *m2 = af_shared_layers(path, h, nsm);
+        cvmtest_expect e;
+        rtest_quality q;
+        cvmtest_expect_init(&e);
+        e.segs = segs;
+        e.nseg = nseg;
+        e.check_euler = 1;
+        e.euler = euler;
+        cvmtest_assert_valid_ex(m, &e);
+        rtest_measure(m, &q);
+        ck_assert_msg(q.min_angle >= 30.0 - 1e-9, "%s, N %d: min angle %.17g", name, nsm,
+                      q.min_angle);
+        ck_assert_msg(q.max_circumradius <= h * (1 + 1e-9), "%s, N %d: circumradius %.17g", name,
+                      nsm, q.max_circumradius);
+        rtest_assert_identical(m, m2);
+        ck_assert_msg(af_differ(m, off), "%s, N %d: same mesh as without the option", name, nsm);
+        cvm_mesh_free(m);
+        cvm_mesh_free(m2);
+    }
+    cvm_mesh_free(off);
+    free(segs);
+}
+
+START_TEST(smooth_layers_square)
+{
+    af_layers_geometry("square.poly", 0.03, 1);
+}
+END_TEST
+
+START_TEST(smooth_layers_naca0012)
+{
+    af_layers_geometry("naca0012.poly", 0.5, 0);
+}
+END_TEST
+
+START_TEST(smooth_layers_random_polygon_with_holes)
+{
+    unsigned long seed;
+    for (seed = 1; seed <= 3; seed++) {
+        cvm_mesh *m[3];
+        cvm_index segs[2 * 76];
+        size_t nseg = 0;
+        int r;
+        for (r = 0; r < 3; r++) {
+            ck_assert_int_eq(cvm_mesh_create(&m[r]), CVM_OK);
+            nseg = af_holed_polygon(m[r], seed, segs);
+            ck_assert_int_eq(cvm_mesh_set_option(m[r], CVM_OPT_AFLR_SMOOTH_LAYERS, r < 2 ? 1 : 0),
+                             CVM_OK);
+            ck_assert_int_eq(cvm_mesh_triangulate(m[r]), CVM_OK);
+            ck_assert_int_eq(rtest_refine_uniform(m[r], 0.04, CVM_ALGO_AFLR), CVM_OK);
+        }
+        {
+            cvmtest_expect e;
+            rtest_quality q;
+            cvmtest_expect_init(&e);
+            e.segs = segs;
+            e.nseg = nseg;
+            e.check_euler = 1;
+            e.euler = 1 - 2;
+            cvmtest_assert_valid_ex(m[0], &e);
+            rtest_measure(m[0], &q);
+            ck_assert_msg(q.min_angle >= 30.0 - 1e-9, "seed %lu: min angle %.17g", seed, q.min_angle);
+            ck_assert_msg(q.max_circumradius <= 0.04 * (1 + 1e-9), "seed %lu: circumradius %.17g",
+                          seed, q.max_circumradius);
+        }
+        rtest_assert_identical(m[0], m[1]);
+        ck_assert_msg(af_differ(m[0], m[2]), "seed %lu: same mesh as without the option", seed);
+        for (r = 0; r < 3; r++)
+            cvm_mesh_free(m[r]);
+    }
+}
+END_TEST
+
+/* Frontal and Delaunay refinement have no layers: a non-zero value is refused
+ * with CVM_E_UNSUPPORTED naming the option, and the mesh is left as it was. */
+START_TEST(smooth_layers_refused_without_aflr)
+{
+    static const cvm_algorithm algos[2] = {CVM_ALGO_FRONTAL, CVM_ALGO_DELAUNAY};
+    int a;
+    for (a = 0; a < 2; a++) {
+        cvm_mesh *m;
+        size_t nv0, nv1;
+        cvm_entity kind = CVM_ENT_NONE;
+        int64_t index = -1;
+        ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+        rtest_set_unit_square(m);
+        ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_AFLR_SMOOTH_LAYERS, 2), CVM_OK);
+        ck_assert_int_eq(cvm_mesh_count(&nv0, m, CVM_ENT_VERTEX), CVM_OK);
+        ck_assert_int_eq(rtest_refine_uniform(m, 0.1, algos[a]), CVM_E_UNSUPPORTED);
+        ck_assert_ptr_nonnull(strstr(cvm_mesh_errmsg(m), "CVM_OPT_AFLR_SMOOTH_LAYERS"));
+        ck_assert_int_eq(cvm_mesh_error_item(&kind, &index, m), CVM_OK);
+        ck_assert_int_eq(kind, CVM_ENT_OPTION);
+        ck_assert_int_eq(index, CVM_OPT_AFLR_SMOOTH_LAYERS);
+        ck_assert_int_eq(cvm_mesh_count(&nv1, m, CVM_ENT_VERTEX), CVM_OK);
+        ck_assert_uint_eq(nv0, nv1);
+        /* 0 is accepted */
+        ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_AFLR_SMOOTH_LAYERS, 0), CVM_OK);
+        ck_assert_int_eq(rtest_refine_uniform(m, 0.1, algos[a]), CVM_OK);
+        cvm_mesh_free(m);
+    }
+}
+END_TEST
+
+static cvm_status oom_run_layers(cvm_mesh *m, void *arg)
+{
+    (void)arg;
+    if (cvm_mesh_set_option(m, CVM_OPT_AFLR_SMOOTH_LAYERS, 1) != CVM_OK)
+        return CVM_E_INTERNAL;
+    return rtest_refine_uniform(m, 0.1, CVM_ALGO_AFLR);
+}
+
+START_TEST(smooth_layers_out_of_memory_keeps_a_valid_mesh)
+{
+    cvmtest_oom_sweep(oom_setup, oom_run_layers, oom_check, NULL);
+}
+END_TEST
+
 TCase *refine_aflr_tcase(void)
 {
     TCase *tc = tcase_create("aflr");
@@ -461,5 +627,10 @@ TCase *refine_aflr_tcase(void)
     tcase_add_test(tc, aflr_is_regular_on_the_square);
     tcase_add_test(tc, poisson_error_lower_on_aflr_than_delaunay);
     tcase_add_test(tc, out_of_memory_keeps_a_valid_mesh);
+    tcase_add_test(tc, smooth_layers_square);
+    tcase_add_test(tc, smooth_layers_naca0012);
+    tcase_add_test(tc, smooth_layers_random_polygon_with_holes);
+    tcase_add_test(tc, smooth_layers_refused_without_aflr);
+    tcase_add_test(tc, smooth_layers_out_of_memory_keeps_a_valid_mesh);
     return tc;
 }

@@ -379,7 +379,7 @@ static void maxmin_direct(const char *name, double h)
                 if (a < amin0)
                     amin0 = a;
             }
-        ck_assert_int_eq(cvm__rf_smooth_maxmin(&R, 0, 3, 0, &moves[r]), CVM_OK);
+        ck_assert_int_eq(cvm__rf_smooth_maxmin(&R, 0, NULL, 3, 0, &moves[r]), CVM_OK);
         ck_assert_int_eq(T->nv, nv);
         ck_assert_int_eq(T->nt, nt);
         if (r == 0) {
