@@ -53,6 +53,7 @@ module cvmesh
         procedure :: triangulate => cvmf_triangulate
         procedure :: insert_points => cvmf_insert_points
         procedure :: refine => cvmf_refine
+        procedure :: optimise_dual => cvmf_optimise_dual
         procedure :: check => cvmf_check
         procedure :: count => cvmf_count
         procedure :: get_points => cvmf_get_points
@@ -80,6 +81,7 @@ module cvmesh
         procedure :: set_uniform => cvmfs_set_uniform
         procedure :: add_point_source => cvmfs_add_point_source
         procedure :: add_line_source => cvmfs_add_line_source
+        procedure :: set_boundary_grading => cvmfs_set_boundary_grading
         final :: cvmfs_final
     end type cvm_sizing_t
 
@@ -91,9 +93,10 @@ module cvmesh
     private :: cvmf_get_triangles, cvmf_get_edges, cvmf_get_segments, cvmf_get_neighbors
     private :: cvmf_get_point_markers, cvmf_get_measure, cvmf_write, cvmf_refine
     private :: cvmf_set_weights, cvmf_get_dual_areas, cvmf_get_dual_edge_lengths
-    private :: cvmf_get_dual_vertices, cvmf_doubles
+    private :: cvmf_get_dual_vertices, cvmf_doubles, cvmf_optimise_dual
     private :: cvmfs_create, cvmfs_destroy, cvmfs_final, cvmfs_errmsg, cvmfs_set_uniform
     private :: cvmfs_add_point_source, cvmfs_add_line_source, cvmfs_report
+    private :: cvmfs_set_boundary_grading
 
 contains
 
@@ -380,6 +383,21 @@ contains
         call own%destroy()
         call cvmf_report(self, s, status, 'refine')
     end subroutine cvmf_refine
+
+    !> Move vertices and set power weights until every triangle contains its power
+    !> vertex or is merged (cvm_mesh_optimise_dual). sizing (optional) sets the
+    !> local sizes, else the mean edge length at each vertex; options such as
+    !> CVM_OPT_DUAL_MAX_SWEEPS or CVM_OPT_TIME_LIMIT_S go through set_option.
+    !> The status may be CVM_INCOMPLETE_* (a valid regular triangulation).
+    subroutine cvmf_optimise_dual(self, status, sizing)
+        class(cvm_mesh_t), intent(inout) :: self
+        integer, intent(out), optional :: status
+        type(cvm_sizing_t), intent(in), optional :: sizing
+        type(c_ptr) :: sz
+        sz = c_null_ptr
+        if (present(sizing)) sz = sizing%ptr
+        call cvmf_report(self, cvm_mesh_optimise_dual(self%ptr, sz), status, 'optimise_dual')
+    end subroutine cvmf_optimise_dual
 
     !> Re-verify the mesh with exact predicates.
     subroutine cvmf_check(self, status)
@@ -678,5 +696,15 @@ contains
         call cvmfs_report(self, cvm_sizing_add_line_source(self%ptr, x0, y0, x1, y1, h, growth), &
                           status, 'add_line_source')
     end subroutine cvmfs_add_line_source
+
+    !> Cap the size by l(e) + g dist(p, e) over the boundary and constrained edges e
+    !> of the mesh being refined or optimised (g > 0; 0 turns it off).
+    subroutine cvmfs_set_boundary_grading(self, g, status)
+        class(cvm_sizing_t), intent(inout) :: self
+        real(c_double), intent(in) :: g
+        integer, intent(out), optional :: status
+        call cvmfs_report(self, cvm_sizing_set_boundary_grading(self%ptr, g), status, &
+                          'set_boundary_grading')
+    end subroutine cvmfs_set_boundary_grading
 
 end module cvmesh

@@ -215,6 +215,16 @@ contains
         call sizing%add_point_source(0d0, 0d0, 0.01d0, 0.2d0)
         call mesh%refine(status, sizing=sizing)
         call expect(status == CVM_OK, 'refine with a sizing handle')
+        call sizing%set_boundary_grading(-1d0, status)
+        call expect(status == CVM_E_ARGUMENT, 'bad boundary grading')
+        call sizing%set_boundary_grading(0.3d0, status)
+        call expect(status == CVM_OK, 'boundary grading')
+        call mesh%optimise_dual(status, sizing=sizing)
+        call expect(status == CVM_OK, 'optimise the dual')
+        call mesh%get_measure(CVM_MEASURE_DUAL_NONCOMPLIANT_PCT, amin)
+        call expect(amin <= 0d0, 'every triangle compliant after optimise_dual')
+        call mesh%check(status)
+        call expect(status == CVM_OK, 'optimised mesh checks')
         call sizing%destroy()
     end subroutine test_refine_and_dual
 
