@@ -487,7 +487,7 @@ START_TEST(method_options)
     cvm_bounds b;
     cvm_mesh *m;
     ck_assert_int_eq(cvm_option_bounds(&b, CVM_OPT_SMOOTH_METHOD), CVM_OK);
-    ck_assert(b.lo == 0 && b.hi == 3 && b.def == 0 && b.is_integer);
+    ck_assert(b.lo == 0 && b.hi == 3 && b.def == 3 && b.is_integer);
     ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
     ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_SMOOTH_METHOD, 4), CVM_E_OPTION_RANGE);
     cvm_mesh_free(m);
