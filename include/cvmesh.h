@@ -457,11 +457,15 @@ typedef enum cvm_option {
      *  (never an input point or a vertex on a segment), in vertex index order. Each
      *  visited vertex tries 0.5, 1 and 1.5 times the step towards the centroid of its
      *  neighbours and towards its ODT point (the area-weighted mean of its triangles'
-     *  circumcentres, Chen and Xu's optimal Delaunay triangulation update) and takes
-     *  the candidate that makes its star most regular by the count 4 x (obtuse angles)
-     *  - (angles in [55, 65] degrees), provided no triangle inverts (exact orient2d),
-     *  no angle drops below min(its old smallest angle, CVM_OPT_MIN_ANGLE_DEG) and no
-     *  more triangles exceed the size bound. The first sweep visits the vertices of
+     *  circumcentres, Chen and Xu's optimal Delaunay triangulation update), from the
+     *  second sweep on also the apexes of the equilateral triangles on its star's outer
+     *  edges, points between them and a small pattern search around the best point,
+     *  and takes the candidate that makes its star most regular by the count
+     *  16 x (obtuse angles) - (angles in [55, 65] degrees), provided no triangle
+     *  inverts (exact orient2d), no spoke of those extra candidates gets shorter than
+     *  0.6 x min(size, root mean square spoke), no angle drops below min(its old
+     *  smallest angle, CVM_OPT_MIN_ANGLE_DEG) and no more triangles exceed the size
+     *  bound. The first sweep visits the vertices of
      *  triangles with an angle outside [55, 65] degrees, each later one only the
      *  neighbourhoods of the vertices moved by the sweep before (the result is that of
      *  full sweeps); smoothing stops early when a sweep moves nothing. Measured

@@ -404,9 +404,13 @@ cvm_status cvm__rf_restore_delaunay(cvm__tri2 *T, size_t *flips_out);
  * (Steiner points only: input points never move), only those v with only[v]
  * != 0 when only is not NULL (nv bytes); a vertex whose star is in
  * the domain with no constrained spoke (so never a vertex on a segment) moves
- * to the best of three points on the way to the centroid of its neighbours
- * (0.5, 1 and 1.5 times the step) when every star triangle stays strictly
- * counter-clockwise (exact orient2d), the star's regularity improves (fewer
+ * to the best of its candidates: 0.5, 1 and 1.5 times the step towards the
+ * centroid of its neighbours and towards the ODT point, and, from the second
+ * smart sweep on, the equilateral apexes of the star's outer edges, points
+ * between them and a pattern search around the best (smooth.c,
+ * SM_PATTERN_ITERS), when every star triangle stays strictly
+ * counter-clockwise (candidates screened in floating point, the chosen one
+ * checked with exact orient2d), the star's regularity improves (fewer
  * obtuse angles, more angles in [55, 65] degrees, then mean ratio), no more
  * star triangles exceed the size bound (R->vls, max_area) and no angle drops
  * below min(the star's smallest angle, the requested angle). Floating point

@@ -196,6 +196,64 @@ START_TEST(relaxation_annulus)
 }
 END_TEST
 
+/* The default post-processing on the NACA 0012 at size 0.2 (its graded rows
+ * at the wall and the far-field row meeting the interior lattice): with the
+ * apex candidates and the pattern search of the smart sweeps (smooth.c)
+ * frontal and aflr keep >= 95.8% and >= 96.0% of the angles in [55, 65]
+ * degrees (measured here: 95.99 and 96.22; 95.10 and 95.42 with the six
+ * steps towards the centroid and the ODT point alone), at most 0.15% obtuse
+ * triangles, every angle >= 30 and every segment, byte for byte again. */
+static void naca_regular(int algo, double reg_min)
+{
+    char path[1024];
+    cvm_mesh *m, *m2;
+    cvmtest_expect e;
+    size_t nseg;
+    double reg, amin, obt;
+    cvm_index *segs;
+    cvm_status s;
+    rtest_shared_path(path, sizeof path, "naca0012.poly");
+    segs = rtest_poly_segments(path, &nseg);
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_read(m, path), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+    s = rtest_refine_uniform(m, 0.2, algo);
+    ck_assert_msg(s == CVM_OK, "refine: %s: %s", cvm_status_str(s), cvm_mesh_errmsg(m));
+    cvmtest_expect_init(&e);
+    e.delaunay = 1;
+    e.segs = segs;
+    e.nseg = nseg;
+    e.check_euler = 1;
+    e.euler = 0;
+    cvmtest_assert_valid_ex(m, &e);
+    reg = regular_pct(m, &amin);
+    obt = obtuse_pct(m);
+    ck_assert_msg(reg >= reg_min, "algo %d: %.3f%% of angles in [55, 65] < %.1f%%", algo, reg,
+                  reg_min);
+    ck_assert_msg(amin >= 30.0 - 1e-9, "algo %d: min angle %.17g", algo, amin);
+    ck_assert_msg(obt <= 0.15, "algo %d: %.3f%% obtuse", algo, obt);
+    ck_assert_int_eq(cvm_mesh_create(&m2), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_read(m2, path), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_triangulate(m2), CVM_OK);
+    ck_assert_int_eq(rtest_refine_uniform(m2, 0.2, algo), CVM_OK);
+    rtest_assert_identical(m, m2);
+    cvm_mesh_free(m2);
+    cvm_mesh_free(m);
+    free(segs);
+}
+
+START_TEST(naca0012_regular_frontal)
+{
+    naca_regular(CVM_ALGO_FRONTAL, 95.8);
+}
+END_TEST
+
+START_TEST(naca0012_regular_aflr)
+{
+    naca_regular(CVM_ALGO_AFLR, 96.0);
+}
+END_TEST
+
 /* Swapping alone never loses a segment or the bounds; smoothing never moves an
  * input point; the options have the documented bounds. */
 START_TEST(swap_only_and_input_points_fixed)
@@ -513,5 +571,7 @@ TCase *refine_swap_smooth_tcase(void)
     tcase_add_test(tc, maxmin_naca0012);
     tcase_add_test(tc, method_options);
     tcase_add_test(tc, relaxation_annulus);
+    tcase_add_test(tc, naca0012_regular_frontal);
+    tcase_add_test(tc, naca0012_regular_aflr);
     return tc;
 }
