@@ -481,7 +481,7 @@ typedef enum cvm_option {
      *  Delaunay, but keeps the regularity gained by smoothing. 0 (a non-Delaunay
      *  result) is reserved. Integer, bounds [1, 1]. */
     CVM_OPT_RESTORE_DELAUNAY = 207,
-    /** Smoothing method of CVM_OPT_SMOOTH_SWEEPS: 0 the smart
+    /** Smoothing method of CVM_OPT_SMOOTH_SWEEPS: 0 (default) the smart
      *  Laplacian described there; 1 max-min optimisation (Freitag and Ollivier's
      *  active-set method): each visited Steiner point moves to increase the smallest
      *  angle of its star (the minimum sine of its angles), along the smallest-norm point
@@ -489,16 +489,15 @@ typedef enum cvm_option {
      *  only when that smallest angle strictly grows, no triangle inverts (exact test)
      *  and no more triangles exceed the size bound, so the smallest angle of the mesh
      *  never drops; same vertices, order and sweep rule as the Laplacian; 2: the
-     *  Laplacian sweeps, then the max-min sweeps; 3 (default): the Laplacian sweeps,
-     *  then guarded max-min sweeps (only stars with an angle below 40 degrees, and only
-     *  moves that do not make the star less regular by the Laplacian's count of obtuse
-     *  angles and angles in [55, 65] degrees). Measured (tests/bench/bench_refine.py,
-     *  frontal and AFLR on the five shared geometries): 1 and 2 raise the smallest
-     *  angle (square 31.3 -> 45.0 degrees, NACA 0012 30.0 -> 33.8) but lose 1.5-6
-     *  points of angles in [55, 65] and cost 1.2-1.9x the time; 3 keeps the regularity
-     *  of 0 to within 0.01 point, raises the smallest angle where a star allows it
-     *  (square frontal 39.0 -> 39.2, cylinder 30.1 -> 30.4) and costs no measurable
-     *  time, hence the default. Integer, [0, 3].
+     *  Laplacian sweeps, then the max-min sweeps; 3: the Laplacian sweeps, then guarded
+     *  max-min sweeps (only stars with an angle below 40 degrees, and only moves that
+     *  do not make the star less regular by the Laplacian's count of obtuse angles and
+     *  angles in [55, 65] degrees). Measured (tests/bench/bench_refine.py, frontal and
+     *  AFLR on the five shared geometries): 1 and 2 raise the smallest angle (square
+     *  31.3 -> 45.0 degrees, NACA 0012 30.0 -> 33.8) but lose 1.5-6 points of angles in
+     *  [55, 65] and cost 1.2-1.9x the time; after the current smart sweeps 3 leaves
+     *  every shared mesh's smallest angle and regularity as they are (to 0.01 point)
+     *  for 5% more instructions, hence 0 is the default. Integer, [0, 3].
      *  Not applied to CVM_ALGO_DELAUNAY. */
     CVM_OPT_SMOOTH_METHOD = 208,
     /** Relaxation sweeps before the smart sweeps of CVM_OPT_SMOOTH_SWEEPS (smoothing

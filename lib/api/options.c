@@ -24,7 +24,7 @@ static const option_def k_options[] = {
     {CVM_OPT_SWAP, "SWAP", {0, 1, 1, 1}},
     {CVM_OPT_SMOOTH_SWEEPS, "SMOOTH_SWEEPS", {0, 100, 3, 1}},
     {CVM_OPT_RESTORE_DELAUNAY, "RESTORE_DELAUNAY", {1, 1, 1, 1}},
-    {CVM_OPT_SMOOTH_METHOD, "SMOOTH_METHOD", {0, 3, 3, 1}},
+    {CVM_OPT_SMOOTH_METHOD, "SMOOTH_METHOD", {0, 3, 0, 1}},
     {CVM_OPT_RELAX_SWEEPS, "RELAX_SWEEPS", {0, 100, 5, 1}},
     {CVM_OPT_TIME_LIMIT_S, "TIME_LIMIT_S", {0, 1e9, 0, 0}},
     {CVM_OPT_SEED, "SEED", {0, 9007199254740992.0, 1, 1}},

@@ -42,7 +42,7 @@ static const cli_option_flag k_flags[] = {
     {"--smooth-layers", "N", CVM_OPT_AFLR_SMOOTH_LAYERS, 0, REF,
      "aflr: smooth the points of every N completed layers during the pass (default 0: off)"},
     {"--smooth-method", "N", CVM_OPT_SMOOTH_METHOD, 0, REF,
-     "frontal/aflr smoothing: 0 smart Laplacian, 1 max-min angle (Freitag), 2 both, 3 both, max-min guarded (default)"},
+     "frontal/aflr smoothing: 0 smart Laplacian (default), 1 max-min angle (Freitag), 2 both, 3 both, max-min guarded"},
     {"--solver", "N", CVM_OPT_DUAL_SOLVER, 0, OPT,
      "local solver of the dual optimiser: 1 pattern search (default), 2 cuckoo search"},
     {"--max-sweeps", "N", CVM_OPT_DUAL_MAX_SWEEPS, 0, OPT, "sweeps of the dual optimiser (default 50)"},

@@ -49,8 +49,13 @@
 /* The extra candidates are tried from this smart sweep on (0 = the first):
  * measured on the NACA, from the second sweep they give the same regularity
  * as in every sweep (95.99 / 96.22 against 95.97 / 96.25) for 5% fewer
- * instructions of the whole CLI run; in the first sweep alone 95.55 / 95.83. */
-#define SM_EXTRA_FROM 1
+ * instructions of the whole CLI run; in the first sweep alone 95.55 / 95.83.
+ * From the third (the last of the default 3) they give 95.75 / 96.06 for 10%
+ * fewer instructions again (AFLR on the annulus: 146 M against 163 M), which
+ * keeps frontal and AFLR near issue 4's 3x Triangle per triangle on the
+ * annulus (bench_refine 2.85x / 3.05x, against 3.11x / 3.36x from the
+ * second sweep): the default. */
+#define SM_EXTRA_FROM 2
 /* The extra candidates never make a spoke shorter than this fraction of the
  * smaller of the size and the root mean square spoke of the star (no
  * crowded points: without it the annulus at size 0.1 got an edge of 0.498 x
