@@ -56,6 +56,13 @@
  * annulus (bench_refine 2.85x / 3.05x, against 3.11x / 3.36x from the
  * second sweep): the default. */
 #define SM_EXTRA_FROM 2
+/* Graded stars (longest spoke > 1.5x the shortest, as SM_RELAX_GRADED2) get
+ * the extra candidates from this smart sweep on: they are the NACA's wall
+ * rows, which need them most, and are few elsewhere. Measured: NACA 95.75 /
+ * 96.06 -> 95.82 / 96.13 for 0.6% more instructions on the annulus (from the
+ * first sweep: 95.87 / 96.13 for 2.9%; a fourth sweep over graded stars
+ * alone: 95.89 / 96.20 for 2.3%). */
+#define SM_EXTRA_FROM_GRADED 1
 /* The extra candidates never make a spoke shorter than this fraction of the
  * smaller of the size and the root mean square spoke of the star (no
  * crowded points: without it the annulus at size 0.1 got an edge of 0.498 x
@@ -628,7 +635,8 @@ cvm_status cvm__rf_smooth(cvm__refiner *R, size_t first, const uint8_t *only, in
                     best[1] = pc[1];
                     found = 1;
                 }
-                if (sweep - relax >= SM_EXTRA_FROM)
+                if (sweep - relax >= SM_EXTRA_FROM ||
+                    (sweep - relax >= SM_EXTRA_FROM_GRADED && lmax2 > SM_RELAX_GRADED2 * l2))
                     sm_more_candidates(&ring, x, l2, qlo, big0, &bb, best, &found);
                 if (!found || !sm_ring_exact(&ring, best))
                     continue;
