@@ -200,7 +200,7 @@ END_TEST
  * at the wall and the far-field row meeting the interior lattice): with the
  * apex candidates and the pattern search of the smart sweeps (smooth.c)
  * frontal and aflr keep >= 95.6% and >= 95.9% of the angles in [55, 65]
- * degrees (measured here: 95.82 and 96.13; 95.10 and 95.42 with the six
+ * degrees (measured here: 95.77 and 96.08; 95.10 and 95.42 with the six
  * steps towards the centroid and the ODT point alone), at most 0.15% obtuse
  * triangles, every angle >= 30 and every segment, byte for byte again. */
 static void naca_regular(int algo, double reg_min)
