@@ -62,6 +62,8 @@ int cli_parse_algo(const char *name, const char *s, int with_aflr, cvm_algorithm
 /* The value v of flag as a positive finite number into *out. CLI_EXIT_OK, or
  * CLI_EXIT_USAGE after printing why ("cvmesh: FLAG V: must be a positive number"). */
 int cli_parse_positive(const char *flag, const char *v, double *out);
+/* The same for a finite number >= 0. */
+int cli_parse_nonnegative(const char *flag, const char *v, double *out);
 
 int cli_parse_tail(const char *name, unsigned cmd, int argc, char **argv, int *i,
                    cli_setting *set, int *nset, const char **in);

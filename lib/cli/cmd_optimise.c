@@ -8,12 +8,17 @@
 
 #include "cli.h"
 
+/* The boundary grading of the refinement before the optimisation: the cylinder's
+ * 0.033 wall spacing against h = 0.2 leaves the optimiser at 37.3 degrees on the
+ * uniform size and 41.6 with it (bench_dual), for 1.5% more triangles. */
+#define OPT_BGRAD_DEFAULT 0.3
+
 typedef struct oargs {
     const char *in, *out, *dual;
     int quality, refine;
     cvm_algorithm algo;
     double size; /* 0: none */
-    double bgrad; /* --boundary-grading G (0: off) */
+    double bgrad; /* --boundary-grading G (0: off; < 0: not given, OPT_BGRAD_DEFAULT) */
     cli_setting set[CLI_MAX_SETTINGS];
     int nset;
 } oargs;
@@ -36,8 +41,8 @@ void cli_optimise_help(FILE *f)
             "  --size H                   target edge length of that refinement (uniform)\n"
             "  --boundary-grading G       with --size: also cap the size by l(e) + G x distance\n"
             "                             from each boundary edge e of length l(e), so a finely\n"
-            "                             spaced wall grows at slope G (e.g. 0.3: larger\n"
-            "                             smallest angles after the optimisation)\n"
+            "                             spaced wall grows at slope G (default 0.3: larger\n"
+            "                             smallest angles after the optimisation; 0: off)\n"
             "  -o, --output OUT           write the mesh (.vtu, .msh, .svg, .node; .node files\n"
             "                             carry each vertex's weight as its first attribute)\n"
             "  --dual DUAL.vtu            write the power (Voronoi) cells as VTK polygons with\n"
@@ -67,7 +72,7 @@ static int parse_value(oargs *a, int argc, char **argv, int *i)
         return cli_parse_positive(s, argv[*i], &a->size);
     }
     if (strcmp(s, "--boundary-grading") == 0)
-        return cli_parse_positive(s, argv[*i], &a->bgrad);
+        return cli_parse_nonnegative(s, argv[*i], &a->bgrad);
     if (strcmp(s, "--dual") == 0)
         a->dual = argv[*i];
     else
@@ -80,6 +85,7 @@ static int parse(oargs *a, int argc, char **argv)
     int i, r;
     memset(a, 0, sizeof *a);
     a->algo = CVM_ALGO_FRONTAL;
+    a->bgrad = -1;
     for (i = 1; i < argc; i++) {
         const char *s = argv[i];
         if (strcmp(s, "-h") == 0 || strcmp(s, "--help") == 0) {
@@ -101,11 +107,13 @@ static int parse(oargs *a, int argc, char **argv)
                                 &a->in)))
             return r;
     }
-    if (a->bgrad > 0 && !(a->size > 0)) {
+    if (a->bgrad >= 0 && !(a->size > 0)) {
         fprintf(stderr, "cvmesh: optimise: --boundary-grading needs --size (it grades the "
                         "refinement's size)\n");
         return CLI_EXIT_USAGE;
     }
+    if (a->bgrad < 0)
+        a->bgrad = a->size > 0 ? OPT_BGRAD_DEFAULT : 0;
     return cli_need_input("optimise", a->in);
 }
 

@@ -166,6 +166,18 @@ int cli_parse_algo(const char *name, const char *s, int with_aflr, cvm_algorithm
     return CLI_EXIT_OK;
 }
 
+int cli_parse_nonnegative(const char *flag, const char *v, double *out)
+{
+    char *end;
+    double x = strtod(v, &end);
+    if (*end || !(x >= 0) || !isfinite(x)) {
+        fprintf(stderr, "cvmesh: %s %s: must be a number >= 0\n", flag, v);
+        return CLI_EXIT_USAGE;
+    }
+    *out = x;
+    return CLI_EXIT_OK;
+}
+
 int cli_parse_positive(const char *flag, const char *v, double *out)
 {
     char *end;

@@ -307,12 +307,27 @@ if [ "$nv_graded" -gt "$nv_uniform" ]; then pass; else
 expect_exit 0 "optimise --boundary-grading" "$CLI" optimise "$SHARED/data/cylinder.poly" --size 0.2 \
     --boundary-grading 0.3 -o "$OUT/opt.vtu" --quality
 expect_grep "optimise --boundary-grading is compliant" "$TMP/out" "non-compliant (not merged)   0.0000 %"
+grep -v -i "time" "$TMP/out" > "$OUT/graded.txt"
+# the default of optimise --size is that grading (the same mesh), 0 turns it off
+expect_exit 0 "optimise --size grades by default" "$CLI" optimise "$SHARED/data/cylinder.poly" --size 0.2 \
+    --quality
+if grep -v -i "time" "$TMP/out" | cmp -s - "$OUT/graded.txt"; then pass; else
+    fail "optimise --size: not the graded default"; fi
+minang=$(awk '/^min angle/ {print $3}' "$TMP/out")
+if awk -v a="$minang" 'BEGIN {exit !(a >= 40)}'; then pass; else
+    fail "optimise cylinder --size 0.2: min angle $minang < 40"; fi
+expect_exit 0 "optimise --boundary-grading 0" "$CLI" optimise "$SHARED/data/cylinder.poly" --size 0.2 \
+    --boundary-grading 0 --quality
+if grep -v -i "time" "$TMP/out" | cmp -s - "$OUT/graded.txt"; then
+    fail "optimise --boundary-grading 0 changed nothing"; else pass; fi
 expect_exit 2 "--boundary-grading not positive" "$CLI" refine "$SHARED/data/square.poly" --size 0.1 \
     --boundary-grading -1 -o "$OUT/x.vtu"
 expect_exit 2 "optimise --boundary-grading without --size" "$CLI" optimise "$SHARED/data/square.poly" \
     --boundary-grading 0.3 -o "$OUT/x.vtu"
 expect_grep "optimise --boundary-grading without --size" "$TMP/err" "--boundary-grading needs --size"
 if [ -e "$OUT/x.vtu" ]; then fail "failed boundary-grading runs wrote $OUT/x.vtu"; else pass; fi
+expect_exit 2 "optimise --boundary-grading negative" "$CLI" optimise "$SHARED/data/square.poly" --size 0.1 \
+    --boundary-grading -0.5 -o "$OUT/x.vtu"
 
 # ---- optimise a .vtu mesh read back, with its dual ---------------------------
 OUT=$TMP/optvtu
