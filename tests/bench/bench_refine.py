@@ -9,7 +9,9 @@ inner loops) gets Mesh.MeshSizeMin = Max = h, no size from points, curvature or
 boundary, one thread, Mesh.Algorithm 5 (gmsh-del, Delaunay) and 6 (gmsh-front,
 Frontal-Delaunay); only gmsh.model.mesh.generate(2) is timed. Every mesh is
 measured here by the same numpy code: vertices, triangles, time (median of REPS
-runs of triangulate + refine; Triangle: triangulate(); Gmsh: generate(2)), min
+runs of triangulate + refine, each cvmesh process after one untimed warm-up run, as
+Triangle and Gmsh run warm in this Python process; Triangle: triangulate(); Gmsh:
+generate(2)), min
 angle, % of angles in [55, 65] degrees, % obtuse triangles (an angle > 90), % of
 interior vertices (on no boundary edge) of degree 6, and mean edge / h.
 After each case a "tri-mv" row runs Triangle again with its area bound scaled so
