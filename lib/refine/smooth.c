@@ -233,17 +233,13 @@ static int sm_ring_exact(const sm_ring *r, const double *p)
     return 1;
 }
 
-/* 1 when every angle of domain triangle t is in [55, 65] degrees, by the
- * same test as sm_ring_eval. */
-static int sm_perfect(const cvm__tri2 *T, int32_t t)
+/* 1 when every angle of the triangle with squared sides lpa = |pa|^2, lpb =
+ * |pb|^2, lab = |ab|^2 is in [55, 65] degrees (the test of sm_ring_eval:
+ * cos^2 of each angle between cos^2 65 and cos^2 55, and no obtuse one). */
+static int sm_sides_regular(double lpa, double lpb, double lab)
 {
     const double lo2 = 0.42261826174069944 * 0.42261826174069944;
     const double hi2 = 0.57357643635104616 * 0.57357643635104616;
-    const int32_t *tv = T->tv + 3 * (size_t)t;
-    const double *p = cvm__tri2_pt(T, tv[0]), *a = cvm__tri2_pt(T, tv[1]), *b = cvm__tri2_pt(T, tv[2]);
-    double lpa = (a[0] - p[0]) * (a[0] - p[0]) + (a[1] - p[1]) * (a[1] - p[1]);
-    double lpb = (b[0] - p[0]) * (b[0] - p[0]) + (b[1] - p[1]) * (b[1] - p[1]);
-    double lab = (b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]);
     double num[3], den[3];
     int j;
     num[0] = lpa + lpb - lab;
@@ -256,6 +252,19 @@ static int sm_perfect(const cvm__tri2 *T, int32_t t)
         if (!(num[j] >= 0 && num[j] * num[j] >= lo2 * den[j] && num[j] * num[j] <= hi2 * den[j]))
             return 0;
     return 1;
+}
+
+static double sm_d2(const double *a, const double *b)
+{
+    return (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]);
+}
+
+/* 1 when every angle of domain triangle t is in [55, 65] degrees. */
+static int sm_perfect(const cvm__tri2 *T, int32_t t)
+{
+    const int32_t *tv = T->tv + 3 * (size_t)t;
+    const double *p = cvm__tri2_pt(T, tv[0]), *a = cvm__tri2_pt(T, tv[1]), *b = cvm__tri2_pt(T, tv[2]);
+    return sm_sides_regular(sm_d2(a, p), sm_d2(b, p), sm_d2(b, a));
 }
 
 /* Mark v and its neighbours (the vertices of its star) in mark[]. */
@@ -423,27 +432,12 @@ static void sm_apex(const sm_ring *r, size_t k, double *pc)
     pc[1] = (a[1] + b[1]) / 2 + 0.8660254037844386 * (b[0] - a[0]);
 }
 
-/* 1 when star triangle k of ring r, with the vertex at x, has an angle
+/* 1 when star triangle k of ring r, with the vertex at p, has an angle
  * outside [55, 65] degrees (the test of sm_ring_eval). */
 static int sm_tri_irregular(const sm_ring *r, const double *p, size_t k)
 {
-    const double lo2 = 0.42261826174069944 * 0.42261826174069944;
-    const double hi2 = 0.57357643635104616 * 0.57357643635104616;
     const double *a = r->a + 2 * k, *b = r->a + 2 * (k + 1 < r->n ? k + 1 : 0);
-    double lpa = (a[0] - p[0]) * (a[0] - p[0]) + (a[1] - p[1]) * (a[1] - p[1]);
-    double lpb = (b[0] - p[0]) * (b[0] - p[0]) + (b[1] - p[1]) * (b[1] - p[1]);
-    double lab = r->lab[k], num[3], den[3];
-    int j;
-    num[0] = lpa + lpb - lab;
-    den[0] = 4 * lpa * lpb;
-    num[1] = lpa + lab - lpb;
-    den[1] = 4 * lpa * lab;
-    num[2] = lpb + lab - lpa;
-    den[2] = 4 * lpb * lab;
-    for (j = 0; j < 3; j++)
-        if (!(num[j] >= 0 && num[j] * num[j] >= lo2 * den[j] && num[j] * num[j] <= hi2 * den[j]))
-            return 1;
-    return 0;
+    return !sm_sides_regular(sm_d2(a, p), sm_d2(b, p), r->lab[k]);
 }
 
 /* Try candidate pc for the vertex at x: when it meets the bounds (qlo, bigmax),
