@@ -53,6 +53,13 @@ cvm_status rtest_refine_uniform(cvm_mesh *m, double h, cvm_algorithm algo);
  * report consistent, and a second run bit-identical. */
 void rtest_shared_geometry(const char *name, double h, long euler, cvm_algorithm algo);
 
+/* Assert, by the test's own measurements, that refined mesh m (what names it in
+ * messages) is valid and keeps the nseg input segments segs (mesh oracle; also
+ * constrained Delaunay when delaunay is set; Euler characteristic euler), has
+ * every angle >= 30 degrees and every circumradius <= h; its measures in *q. */
+void rtest_assert_refined(cvm_mesh *m, const char *what, const cvm_index *segs, size_t nseg,
+                          int delaunay, long euler, double h, rtest_quality *q);
+
 /* The unit square (4 points, 4 segments) as the PSLG of m, triangulated. */
 void rtest_set_unit_square(cvm_mesh *m);
 

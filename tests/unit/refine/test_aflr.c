@@ -1,5 +1,6 @@
 /* test_aflr.c - advancing-front local reconnection (lib/refine/aflr.c) through cvm_mesh_refine. */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -96,34 +97,32 @@ static size_t af_holed_polygon(cvm_mesh *m, unsigned long seed, cvm_index *segs)
     return k;
 }
 
+/* A random polygon with two holes (seed), refined by AFLR at 0.04 with
+ * CVM_OPT_AFLR_SMOOTH_LAYERS nsm; its segments into segs, their number returned. */
+static size_t af_holed_refined(cvm_mesh **m, unsigned long seed, int nsm, cvm_index *segs)
+{
+    size_t nseg;
+    ck_assert_int_eq(cvm_mesh_create(m), CVM_OK);
+    nseg = af_holed_polygon(*m, seed, segs);
+    ck_assert_int_eq(cvm_mesh_set_option(*m, CVM_OPT_AFLR_SMOOTH_LAYERS, nsm), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_triangulate(*m), CVM_OK);
+    ck_assert_int_eq(rtest_refine_uniform(*m, 0.04, CVM_ALGO_AFLR), CVM_OK);
+    return nseg;
+}
+
 START_TEST(random_polygon_with_holes_meets_bounds)
 {
     unsigned long seed;
     for (seed = 1; seed <= 3; seed++) {
         cvm_mesh *m[2];
         cvm_index segs[2 * 76];
-        size_t nseg = 0;
-        int r;
-        for (r = 0; r < 2; r++) {
-            ck_assert_int_eq(cvm_mesh_create(&m[r]), CVM_OK);
-            nseg = af_holed_polygon(m[r], seed, segs);
-            ck_assert_int_eq(cvm_mesh_triangulate(m[r]), CVM_OK);
-            ck_assert_int_eq(rtest_refine_uniform(m[r], 0.04, CVM_ALGO_AFLR), CVM_OK);
-        }
-        {
-            cvmtest_expect e;
-            rtest_quality q;
-            cvmtest_expect_init(&e);
-            e.segs = segs;
-            e.nseg = nseg;
-            e.check_euler = 1;
-            e.euler = 1 - 2;
-            cvmtest_assert_valid_ex(m[0], &e); /* conforming, every segment kept, Delaunay */
-            rtest_measure(m[0], &q);
-            ck_assert_msg(q.min_angle >= 30.0 - 1e-9, "seed %lu: min angle %.17g", seed, q.min_angle);
-            ck_assert_msg(q.max_circumradius <= 0.04 * (1 + 1e-9), "seed %lu: circumradius %.17g",
-                          seed, q.max_circumradius);
-        }
+        size_t nseg = af_holed_refined(&m[0], seed, 0, segs);
+        rtest_quality q;
+        char what[64];
+        af_holed_refined(&m[1], seed, 0, segs);
+        snprintf(what, sizeof what, "seed %lu", seed);
+        /* conforming, every segment kept, two holes, angle and size bounds */
+        rtest_assert_refined(m[0], what, segs, nseg, 0, 1 - 2, 0.04, &q);
         rtest_assert_identical(m[0], m[1]);
         cvm_mesh_free(m[0]);
         cvm_mesh_free(m[1]);
@@ -494,19 +493,10 @@ static void af_layers_geometry(const char *name, double h, long euler)
     off = af_shared_layers(path, h, 0);
     for (nsm = 1; nsm <= 2; nsm++) {
         cvm_mesh *m = af_shared_layers(path, h, nsm), *m2 = af_shared_layers(path, h, nsm);
-        cvmtest_expect e;
         rtest_quality q;
-        cvmtest_expect_init(&e);
-        e.segs = segs;
-        e.nseg = nseg;
-        e.check_euler = 1;
-        e.euler = euler;
-        cvmtest_assert_valid_ex(m, &e);
-        rtest_measure(m, &q);
-        ck_assert_msg(q.min_angle >= 30.0 - 1e-9, "%s, N %d: min angle %.17g", name, nsm,
-                      q.min_angle);
-        ck_assert_msg(q.max_circumradius <= h * (1 + 1e-9), "%s, N %d: circumradius %.17g", name,
-                      nsm, q.max_circumradius);
+        char what[160];
+        snprintf(what, sizeof what, "%s, N %d", name, nsm);
+        rtest_assert_refined(m, what, segs, nseg, 0, euler, h, &q);
         rtest_assert_identical(m, m2);
         ck_assert_msg(af_differ(m, off), "%s, N %d: same mesh as without the option", name, nsm);
         cvm_mesh_free(m);
@@ -534,30 +524,14 @@ START_TEST(smooth_layers_random_polygon_with_holes)
     for (seed = 1; seed <= 3; seed++) {
         cvm_mesh *m[3];
         cvm_index segs[2 * 76];
-        size_t nseg = 0;
+        size_t nseg = af_holed_refined(&m[0], seed, 1, segs);
+        rtest_quality q;
+        char what[64];
         int r;
-        for (r = 0; r < 3; r++) {
-            ck_assert_int_eq(cvm_mesh_create(&m[r]), CVM_OK);
-            nseg = af_holed_polygon(m[r], seed, segs);
-            ck_assert_int_eq(cvm_mesh_set_option(m[r], CVM_OPT_AFLR_SMOOTH_LAYERS, r < 2 ? 1 : 0),
-                             CVM_OK);
-            ck_assert_int_eq(cvm_mesh_triangulate(m[r]), CVM_OK);
-            ck_assert_int_eq(rtest_refine_uniform(m[r], 0.04, CVM_ALGO_AFLR), CVM_OK);
-        }
-        {
-            cvmtest_expect e;
-            rtest_quality q;
-            cvmtest_expect_init(&e);
-            e.segs = segs;
-            e.nseg = nseg;
-            e.check_euler = 1;
-            e.euler = 1 - 2;
-            cvmtest_assert_valid_ex(m[0], &e);
-            rtest_measure(m[0], &q);
-            ck_assert_msg(q.min_angle >= 30.0 - 1e-9, "seed %lu: min angle %.17g", seed, q.min_angle);
-            ck_assert_msg(q.max_circumradius <= 0.04 * (1 + 1e-9), "seed %lu: circumradius %.17g",
-                          seed, q.max_circumradius);
-        }
+        af_holed_refined(&m[1], seed, 1, segs);
+        af_holed_refined(&m[2], seed, 0, segs);
+        snprintf(what, sizeof what, "seed %lu, N 1", seed);
+        rtest_assert_refined(m[0], what, segs, nseg, 0, 1 - 2, 0.04, &q);
         rtest_assert_identical(m[0], m[1]);
         ck_assert_msg(af_differ(m[0], m[2]), "seed %lu: same mesh as without the option", seed);
         for (r = 0; r < 3; r++)

@@ -158,7 +158,6 @@ START_TEST(relaxation_annulus)
 {
     char path[1024];
     cvm_mesh *m, *m0;
-    cvmtest_expect e;
     rtest_quality q;
     size_t nseg;
     double reg, reg0, amin, amin0;
@@ -169,16 +168,7 @@ START_TEST(relaxation_annulus)
     rtest_shared_path(path, sizeof path, "annulus.poly");
     segs = rtest_poly_segments(path, &nseg);
     m = post_refined(path, 0.1, 1, 3);
-    cvmtest_expect_init(&e);
-    e.delaunay = 1;
-    e.segs = segs;
-    e.nseg = nseg;
-    e.check_euler = 1;
-    e.euler = 0;
-    cvmtest_assert_valid_ex(m, &e);
-    rtest_measure(m, &q);
-    ck_assert(q.min_angle >= 30.0 - 1e-9);
-    ck_assert(q.max_circumradius <= 0.1 * (1 + 1e-9));
+    rtest_assert_refined(m, "annulus", segs, nseg, 1, 0, 0.1, &q);
     reg = regular_pct(m, &amin);
     ck_assert_msg(obtuse_pct(m) == 0, "annulus: %.3f%% obtuse", obtuse_pct(m));
     ck_assert_int_eq(cvm_mesh_create(&m0), CVM_OK);
@@ -186,7 +176,7 @@ START_TEST(relaxation_annulus)
     ck_assert_int_eq(cvm_mesh_read(m0, path), CVM_OK);
     ck_assert_int_eq(cvm_mesh_triangulate(m0), CVM_OK);
     ck_assert_int_eq(rtest_refine_uniform(m0, 0.1, CVM_ALGO_FRONTAL), CVM_OK);
-    cvmtest_assert_valid_ex(m0, &e);
+    rtest_assert_refined(m0, "annulus, no relaxation", segs, nseg, 1, 0, 0.1, &q);
     reg0 = regular_pct(m0, &amin0);
     ck_assert_msg(reg > reg0, "annulus: %.3f%% in [55, 65] relaxed, %.3f%% not", reg, reg0);
     ck_assert_int_eq(cvm_mesh_set_option(m0, CVM_OPT_RELAX_SWEEPS, 101), CVM_E_OPTION_RANGE);
@@ -207,7 +197,7 @@ static void naca_regular(int algo, double reg_min)
 {
     char path[1024];
     cvm_mesh *m, *m2;
-    cvmtest_expect e;
+    rtest_quality q;
     size_t nseg;
     double reg, amin, obt;
     cvm_index *segs;
@@ -219,13 +209,7 @@ static void naca_regular(int algo, double reg_min)
     ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
     s = rtest_refine_uniform(m, 0.2, algo);
     ck_assert_msg(s == CVM_OK, "refine: %s: %s", cvm_status_str(s), cvm_mesh_errmsg(m));
-    cvmtest_expect_init(&e);
-    e.delaunay = 1;
-    e.segs = segs;
-    e.nseg = nseg;
-    e.check_euler = 1;
-    e.euler = 0;
-    cvmtest_assert_valid_ex(m, &e);
+    rtest_assert_refined(m, "naca0012", segs, nseg, 1, 0, 0.2, &q);
     reg = regular_pct(m, &amin);
     obt = obtuse_pct(m);
     ck_assert_msg(reg >= reg_min, "algo %d: %.3f%% of angles in [55, 65] < %.1f%%", algo, reg,

@@ -226,11 +226,27 @@ static cvm_mesh *shared_refined(const char *path, double h, cvm_algorithm algo, 
     return m;
 }
 
+void rtest_assert_refined(cvm_mesh *m, const char *what, const cvm_index *segs, size_t nseg,
+                          int delaunay, long euler, double h, rtest_quality *q)
+{
+    cvmtest_expect e;
+    cvmtest_expect_init(&e);
+    e.delaunay = delaunay;
+    e.segs = segs;
+    e.nseg = nseg;
+    e.check_euler = 1;
+    e.euler = euler;
+    cvmtest_assert_valid_ex(m, &e);
+    rtest_measure(m, q);
+    ck_assert_msg(q->min_angle >= 30.0 - 1e-9, "%s: min angle %.17g < 30", what, q->min_angle);
+    ck_assert_msg(q->max_circumradius <= h * (1 + 1e-9), "%s: circumradius %.17g > size %g", what,
+                  q->max_circumradius, h);
+}
+
 void rtest_shared_geometry(const char *name, double h, long euler, cvm_algorithm algo)
 {
     char path[1024];
     cvm_mesh *m, *m2;
-    cvmtest_expect e;
     rtest_quality q;
     size_t nseg, nv0, nv0b;
     double d;
@@ -238,16 +254,7 @@ void rtest_shared_geometry(const char *name, double h, long euler, cvm_algorithm
     rtest_shared_path(path, sizeof path, name);
     segs = rtest_poly_segments(path, &nseg);
     m = shared_refined(path, h, algo, &nv0);
-    cvmtest_expect_init(&e);
-    e.segs = segs;
-    e.nseg = nseg;
-    e.check_euler = 1;
-    e.euler = euler;
-    cvmtest_assert_valid_ex(m, &e);
-    rtest_measure(m, &q);
-    ck_assert_msg(q.min_angle >= 30.0 - 1e-9, "%s: min angle %.17g < 30", name, q.min_angle);
-    ck_assert_msg(q.max_circumradius <= h * (1 + 1e-9), "%s: circumradius %.17g > size %g", name,
-                  q.max_circumradius, h);
+    rtest_assert_refined(m, name, segs, nseg, 0, euler, h, &q);
     ck_assert_msg(q.max_edge <= 2 * h * (1 + 1e-9), "%s: edge %.17g > 2 x size", name, q.max_edge);
     ck_assert_msg(q.nt >= 1000 && q.nt <= 20000, "%s: %lu triangles", name, (unsigned long)q.nt);
     ck_assert_int_eq(cvm_mesh_get_measure(&d, m, CVM_MEASURE_REFINE_STEINER), CVM_OK);
