@@ -59,13 +59,6 @@ static cvm_status inc_build(cvm__ctx *ctx, const cvm__tri2 *T, incidence *in)
     return CVM_OK;
 }
 
-/* Position of v in slot t. */
-static int pos(const cvm__tri2 *T, int32_t t, int32_t v)
-{
-    const int32_t *tv = T->tv + 3 * (size_t)t;
-    return tv[0] == v ? 0 : tv[1] == v ? 1 : 2;
-}
-
 /* Domain triangle across edge j of t, or -1. */
 static int32_t across(const cvm__tri2 *T, int32_t t, int j)
 {
@@ -94,7 +87,7 @@ static void cell(const cvm__tri2 *T, incidence *in, int32_t v, double *xy, size_
         for (i = in->first[v]; i < in->first[v + 1]; i++) {
             int32_t t = in->list[i], u;
             double P[2];
-            int p = pos(T, t, v);
+            int p = cvm__tri2_corner(T, t, v);
             if (in->seen[t] || (f == 0 && across(T, t, (p + 2) % 3) >= 0))
                 continue;
             if (f == 0) { /* open fan starting at boundary edge (v, tv[p+1]) */
@@ -103,7 +96,7 @@ static void cell(const cvm__tri2 *T, incidence *in, int32_t v, double *xy, size_
                 cvm__power_foot2d(pv, T->xy + 2 * (size_t)a, vweight(T, v), vweight(T, a), P);
                 put(xy, k, P);
             }
-            for (u = t; u >= 0 && !in->seen[u]; u = across(T, u, (pos(T, u, v) + 1) % 3)) {
+            for (u = t; u >= 0 && !in->seen[u]; u = across(T, u, (cvm__tri2_corner(T, u, v) + 1) % 3)) {
                 const int32_t *tv = T->tv + 3 * (size_t)u;
                 in->seen[u] = 1;
                 if (xy)
@@ -114,7 +107,7 @@ static void cell(const cvm__tri2 *T, incidence *in, int32_t v, double *xy, size_
                 t = u;
             }
             if (f == 0) { /* close at boundary edge (tv[p+2], v) of the last triangle */
-                int32_t b = T->tv[3 * (size_t)t + (size_t)(pos(T, t, v) + 2) % 3];
+                int32_t b = T->tv[3 * (size_t)t + (size_t)(cvm__tri2_corner(T, t, v) + 2) % 3];
                 cvm__power_foot2d(pv, T->xy + 2 * (size_t)b, vweight(T, v), vweight(T, b), P);
                 put(xy, k, P);
             }

@@ -94,6 +94,20 @@ static inline int cvm__tri2_edge_seg(const cvm__tri2 *T, int32_t t, int j)
     return T->te ? T->te[3 * (size_t)t + j] : -1;
 }
 
+/* Corner (0, 1 or 2) of vertex v in triangle t; v must be a corner of t. */
+static inline int cvm__tri2_corner(const cvm__tri2 *T, int32_t t, int32_t v)
+{
+    const int32_t *tv = T->tv + 3 * (size_t)t;
+    return tv[0] == v ? 0 : tv[1] == v ? 1 : 2;
+}
+
+/* One step of the walk around corner v of t (from T->vtri[v] back to it):
+ * the triangle across t's edge opposite the corner after v. */
+static inline int32_t cvm__tri2_around(const cvm__tri2 *T, int32_t t, int32_t v)
+{
+    return T->tn[3 * (size_t)t + (size_t)(cvm__tri2_corner(T, t, v) + 1) % 3] / 3;
+}
+
 void cvm__tri2_init(cvm__tri2 *T, cvm__ctx *ctx);
 void cvm__tri2_destroy(cvm__tri2 *T);
 /* Drop every vertex and triangle, keep the capacity. */

@@ -214,12 +214,10 @@ size_t cvm__tri2_star(const cvm__tri2 *T, int32_t v, int32_t *out, size_t cap)
     if (t0 < 0)
         return 0;
     do {
-        const int32_t *tv = T->tv + 3 * (size_t)t;
-        int i = tv[0] == v ? 0 : tv[1] == v ? 1 : 2;
         if (n < cap)
             out[n] = t;
         n++;
-        t = T->tn[3 * (size_t)t + (size_t)(i + 1) % 3] / 3;
+        t = cvm__tri2_around(T, t, v);
     } while (t != t0 && n <= T->nt);
     return n;
 }

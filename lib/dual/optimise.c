@@ -552,11 +552,9 @@ static int star_weak(const dopt *D, int32_t v)
     if (t0 < 0)
         return 0;
     do {
-        const int32_t *tv = T->tv + 3 * (size_t)t;
-        int i = tv[0] == v ? 0 : tv[1] == v ? 1 : 2;
         if (cvm__tri2_in_domain(T, t) && D->weak[t])
             return 1;
-        t = T->tn[3 * (size_t)t + (size_t)(i + 1) % 3] / 3;
+        t = cvm__tri2_around(T, t, v);
     } while (t != t0 && ++k < T->nt);
     return 0;
 }
@@ -602,9 +600,8 @@ static size_t repair_degrees(dopt *D)
             int32_t s0 = T->vtri[best], s = s0;
             k = 0;
             do {
-                const int32_t *tv = T->tv + 3 * (size_t)s;
-                int i = tv[0] == best ? 0 : tv[1] == best ? 1 : 2;
-                D->stamp[tv[(i + 1) % 3]] = D->cur_stamp;
+                int i = cvm__tri2_corner(T, s, best);
+                D->stamp[T->tv[3 * (size_t)s + (size_t)(i + 1) % 3]] = D->cur_stamp;
                 s = T->tn[3 * (size_t)s + (size_t)(i + 1) % 3] / 3;
             } while (s != s0 && ++k < T->nt);
             D->stamp[v] = D->cur_stamp;

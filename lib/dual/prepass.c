@@ -38,12 +38,6 @@
 #define PRE_ROUNDS 2
 #define PRE_BAD_DEG 35.0 /* re-seed below min(this, the target angle) */
 
-static int corner_of(const cvm__tri2 *T, int32_t t, int32_t v)
-{
-    const int32_t *tv = T->tv + 3 * (size_t)t;
-    return tv[0] == v ? 0 : tv[1] == v ? 1 : 2;
-}
-
 static double dist2(const double *a, const double *b)
 {
     return (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]);
@@ -123,7 +117,7 @@ static int wants_removal(pre *P, int32_t v)
     size_t n = 0;
     int shortie = 0, bad = 0;
     do {
-        int i = corner_of(T, t, v);
+        int i = cvm__tri2_corner(T, t, v);
         int32_t a = T->tv[3 * (size_t)t + (size_t)(i + 1) % 3];
         int32_t b = T->tv[3 * (size_t)t + (size_t)(i + 2) % 3];
         const double *pa = T->xy + 2 * (size_t)a, *pb = T->xy + 2 * (size_t)b;

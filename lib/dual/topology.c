@@ -27,12 +27,6 @@
 #include "geom/geom_internal.h"
 
 /* Index of v in triangle t. */
-static int corner(const cvm__tri2 *T, int32_t t, int32_t v)
-{
-    const int32_t *tv = T->tv + 3 * (size_t)t;
-    return tv[0] == v ? 0 : tv[1] == v ? 1 : 2;
-}
-
 int cvm__dual_removable(const cvm__tri2 *T, int32_t v, size_t *deg)
 {
     int32_t t0 = T->vtri[v], t = t0;
@@ -43,7 +37,7 @@ int cvm__dual_removable(const cvm__tri2 *T, int32_t v, size_t *deg)
         int i;
         if (!cvm__tri2_in_domain(T, t) || (T->ta && T->ta[t] != T->ta[t0]))
             return 0;
-        i = corner(T, t, v);
+        i = cvm__tri2_corner(T, t, v);
         if (cvm__tri2_edge_seg(T, t, (i + 1) % 3) >= 0 || cvm__tri2_edge_seg(T, t, (i + 2) % 3) >= 0)
             return 0;
         t = T->tn[3 * (size_t)t + (size_t)(i + 1) % 3] / 3;
@@ -74,7 +68,7 @@ static void merge3(cvm__tri2 *T, int32_t v)
     int k;
     s[0] = T->vtri[v];
     for (k = 0; k < 3; k++) {
-        int i = corner(T, s[k], v);
+        int i = cvm__tri2_corner(T, s[k], v);
         size_t h = 3 * (size_t)s[k] + (size_t)i;
         o[k] = T->tn[h];  /* outer half-edge across the edge opposite v */
         e[k] = T->te ? T->te[h] : -1;
@@ -117,7 +111,7 @@ int cvm__dual_remove_vertex(cvm__tri2 *T, int32_t v, int32_t avoid)
         double best_q = -1.0;
         size_t n = 0;
         do {
-            int i = corner(T, t, v), j = (i + 1) % 3;
+            int i = cvm__tri2_corner(T, t, v), j = (i + 1) % 3;
             int32_t a = T->tv[3 * (size_t)t + (size_t)j], x = T->tv[3 * (size_t)t + (size_t)(i + 2) % 3];
             int32_t h = T->tn[3 * (size_t)t + (size_t)j], u = h / 3;
             int32_t b = T->tv[3 * (size_t)u + (size_t)(h % 3)];

@@ -319,13 +319,11 @@ static int sm_star_imperfect(const cvm__tri2 *T, int32_t v, uint8_t *memo)
     if (t0 < 0)
         return 0;
     do {
-        const int32_t *tv = T->tv + 3 * (size_t)t;
-        int i = tv[0] == v ? 0 : tv[1] == v ? 1 : 2;
         if (cvm__tri2_in_domain(T, t) && !sm_perfect(T, t)) {
             r = 1;
             break;
         }
-        t = T->tn[3 * (size_t)t + (i + 1) % 3] / 3;
+        t = cvm__tri2_around(T, t, v);
     } while (t != t0 && ++n <= T->nt);
     if (memo)
         memo[v] = (uint8_t)(r + 1);
@@ -354,7 +352,7 @@ static void sm_mark_only(const cvm__tri2 *T, size_t first, const uint8_t *only, 
         t = t0;
         do {
             const int32_t *tv = T->tv + 3 * (size_t)t;
-            int i = tv[0] == (int32_t)v ? 0 : tv[1] == (int32_t)v ? 1 : 2;
+            int i = cvm__tri2_corner(T, t, (int32_t)v);
             if (cvm__tri2_in_domain(T, t) &&
                 (sm_star_imperfect(T, tv[(i + 1) % 3], tmp) ||
                  sm_star_imperfect(T, tv[(i + 2) % 3], tmp))) {
