@@ -325,9 +325,14 @@ expect_exit 2 "--boundary-grading not positive" "$CLI" refine "$SHARED/data/squa
 expect_exit 2 "optimise --boundary-grading without --size" "$CLI" optimise "$SHARED/data/square.poly" \
     --boundary-grading 0.3 -o "$OUT/x.vtu"
 expect_grep "optimise --boundary-grading without --size" "$TMP/err" "--boundary-grading needs --size"
-if [ -e "$OUT/x.vtu" ]; then fail "failed boundary-grading runs wrote $OUT/x.vtu"; else pass; fi
 expect_exit 2 "optimise --boundary-grading negative" "$CLI" optimise "$SHARED/data/square.poly" --size 0.1 \
     --boundary-grading -0.5 -o "$OUT/x.vtu"
+expect_exit 2 "--boundary-grading not a number" "$CLI" refine "$SHARED/data/square.poly" --size 0.1 \
+    --boundary-grading x -o "$OUT/x.vtu"
+expect_exit 2 "optimise --boundary-grading nan" "$CLI" optimise "$SHARED/data/square.poly" --size 0.1 \
+    --boundary-grading nan -o "$OUT/x.vtu"
+expect_exit 2 "--boundary-grading without a value" "$CLI" refine "$SHARED/data/square.poly" --boundary-grading
+if [ -e "$OUT/x.vtu" ]; then fail "failed boundary-grading runs wrote $OUT/x.vtu"; else pass; fi
 
 # ---- optimise a .vtu mesh read back, with its dual ---------------------------
 OUT=$TMP/optvtu
