@@ -32,6 +32,9 @@ typedef struct dtest_mesh {
 } dtest_mesh;
 void dtest_get(cvm_mesh *m, dtest_mesh *d);
 void dtest_free(dtest_mesh *d);
+/* Assert that two fetched meshes have the same counts and bit-identical
+ * points, weights and triangles. */
+void dtest_assert_identical(const dtest_mesh *a, const dtest_mesh *b);
 
 /* 1 when (a, b) is an output segment of d. */
 int dtest_is_segment(const dtest_mesh *d, cvm_index a, cvm_index b);

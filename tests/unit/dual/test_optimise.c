@@ -268,11 +268,7 @@ static void same_bytes(int solver)
     run_with_threads(solver, 1, &a);
     for (i = 0; i < 2; i++) {
         run_with_threads(solver, threads[i], &b);
-        ck_assert_uint_eq(a.nv, b.nv);
-        ck_assert_uint_eq(a.nt, b.nt);
-        ck_assert_int_eq(memcmp(a.xy, b.xy, 2 * a.nv * sizeof *a.xy), 0);
-        ck_assert_int_eq(memcmp(a.w, b.w, a.nv * sizeof *a.w), 0);
-        ck_assert_int_eq(memcmp(a.tri, b.tri, 3 * a.nt * sizeof *a.tri), 0);
+        dtest_assert_identical(&a, &b);
         dtest_free(&b);
     }
     dtest_free(&a);
@@ -316,11 +312,7 @@ START_TEST(layer_priority_changes_the_order_deterministically)
     one_sweep_with_layer_priority(0, &a);
     one_sweep_with_layer_priority(100, &b);
     one_sweep_with_layer_priority(100, &c);
-    ck_assert_uint_eq(b.nv, c.nv);
-    ck_assert_uint_eq(b.nt, c.nt);
-    ck_assert_int_eq(memcmp(b.xy, c.xy, 2 * b.nv * sizeof *b.xy), 0);
-    ck_assert_int_eq(memcmp(b.w, c.w, b.nv * sizeof *b.w), 0);
-    ck_assert_int_eq(memcmp(b.tri, c.tri, 3 * b.nt * sizeof *b.tri), 0);
+    dtest_assert_identical(&b, &c);
     ck_assert_uint_eq(a.nv, b.nv);
     ck_assert(memcmp(a.xy, b.xy, 2 * a.nv * sizeof *a.xy) != 0 || memcmp(a.w, b.w, a.nv * sizeof *a.w) != 0);
     dtest_free(&a);

@@ -200,11 +200,7 @@ START_TEST(prepass_same_bytes_for_1_2_4_threads)
     ck_assert_uint_eq(dtest_power_violations(&a, a.w), 0);
     for (i = 0; i < 2; i++) {
         run_threads(threads[i], &b);
-        ck_assert_uint_eq(a.nv, b.nv);
-        ck_assert_uint_eq(a.nt, b.nt);
-        ck_assert_int_eq(memcmp(a.xy, b.xy, 2 * a.nv * sizeof *a.xy), 0);
-        ck_assert_int_eq(memcmp(a.w, b.w, a.nv * sizeof *a.w), 0);
-        ck_assert_int_eq(memcmp(a.tri, b.tri, 3 * a.nt * sizeof *a.tri), 0);
+        dtest_assert_identical(&a, &b);
         dtest_free(&b);
     }
     dtest_free(&a);

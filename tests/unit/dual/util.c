@@ -1,5 +1,6 @@
 /* util.c - helpers of the dual suite: a refined square, a mesh's arrays, an independent power test. */
 #include <stdlib.h>
+#include <string.h>
 
 #include "dual/dual_tests.h"
 #include "geom/geom_internal.h"
@@ -50,6 +51,15 @@ void dtest_free(dtest_mesh *d)
     free(d->edge);
     free(d->seg);
     free(d->w);
+}
+
+void dtest_assert_identical(const dtest_mesh *a, const dtest_mesh *b)
+{
+    ck_assert_uint_eq(a->nv, b->nv);
+    ck_assert_uint_eq(a->nt, b->nt);
+    ck_assert_int_eq(memcmp(a->xy, b->xy, 2 * a->nv * sizeof *a->xy), 0);
+    ck_assert_int_eq(memcmp(a->w, b->w, a->nv * sizeof *a->w), 0);
+    ck_assert_int_eq(memcmp(a->tri, b->tri, 3 * a->nt * sizeof *a->tri), 0);
 }
 
 int dtest_is_segment(const dtest_mesh *d, cvm_index a, cvm_index b)
