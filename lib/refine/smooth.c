@@ -267,6 +267,16 @@ static int sm_perfect(const cvm__tri2 *T, int32_t t)
     return sm_sides_regular(sm_d2(a, p), sm_d2(b, p), sm_d2(b, a));
 }
 
+/* 1 when every triangle of star[0..n-1] is perfect (sm_perfect). */
+static int sm_all_perfect(const cvm__tri2 *T, const int32_t *star, size_t n)
+{
+    size_t k;
+    for (k = 0; k < n; k++)
+        if (!sm_perfect(T, star[k]))
+            return 0;
+    return 1;
+}
+
 /* Mark v and its neighbours (the vertices of its star) in mark[]. */
 static void sm_mark_star(const cvm__tri2 *T, int32_t v, const int32_t *star, size_t n,
                          uint8_t *mark)
@@ -579,6 +589,10 @@ cvm_status cvm__rf_smooth(cvm__refiner *R, size_t first, const uint8_t *only, in
             if (!cur[v] || (only && !only[v]))
                 continue;
             n = sm_star(T, (int32_t)v, &star, &cap, &err);
+            /* a smart sweep leaves a star whose angles are all in [55, 65]
+             * degrees alone (below): tested before gathering its ring */
+            if (!err && !relaxing && n >= 3 && sm_all_perfect(T, star, n))
+                continue;
             if (err || (n >= 3 && !sm_ring_build(R, (int32_t)v, star, n, &ring))) {
                 sm_ring_free(T->ctx, &ring);
                 cvm__free(T->ctx, star);
