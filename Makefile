@@ -34,7 +34,7 @@ FUZZ_LONG_TIME ?= 600
 CLANG ?= clang
 
 WARN := -Wall -Wextra -Wpedantic -Werror
-OPT ?= -O2
+OPT ?= -O3
 CFLAGS_BASE := -std=c99 $(OPT) -g $(WARN) -fvisibility=hidden -fPIC -Iinclude -Ilib \
                -D_POSIX_C_SOURCE=200809L
 ifeq ($(OPENMP),1)
