@@ -593,6 +593,13 @@ cvm_status cvm__rf_smooth(cvm__refiner *R, size_t first, const uint8_t *only, in
              * degrees alone (below): tested before gathering its ring */
             if (!err && !relaxing && n >= 3 && sm_all_perfect(T, star, n))
                 continue;
+            if (!err && n >= 3) {
+                sm_targets(T, (int32_t)v, x, star, n, c, o, &l2, &lmax2);
+                /* graded stars are left to the smart sweeps: the ODT point is
+                 * the target of a uniform size only */
+                if (relaxing && lmax2 > SM_RELAX_GRADED2 * l2)
+                    continue;
+            }
             if (err || (n >= 3 && !sm_ring_build(R, (int32_t)v, star, n, &ring))) {
                 sm_ring_free(T->ctx, &ring);
                 cvm__free(T->ctx, star);
@@ -601,11 +608,6 @@ cvm_status cvm__rf_smooth(cvm__refiner *R, size_t first, const uint8_t *only, in
                 return cvm__nomem(T->ctx);
             }
             if (n < 3)
-                continue;
-            sm_targets(T, (int32_t)v, x, star, n, c, o, &l2, &lmax2);
-            /* graded stars are left to the smart sweeps: the ODT point is the
-             * target of a uniform size only */
-            if (relaxing && lmax2 > SM_RELAX_GRADED2 * l2)
                 continue;
             if (!isfinite(c[0]) || !isfinite(c[1]) || !isfinite(o[0]) || !isfinite(o[1]))
                 continue;
