@@ -101,7 +101,7 @@ static int fr_quality_measure(const cvm__refiner *R, int32_t t, double *ratio)
  * and well shaped), and its ratio of fr_measure into *ratio; read from t's
  * record when valid, else measured (and recorded). Kept small so that it
  * inlines: most calls find a valid record. */
-static int fr_quality(const cvm__refiner *R, int32_t t, double *ratio)
+static inline int fr_quality(const cvm__refiner *R, int32_t t, double *ratio)
 {
     const int32_t *tv = R->T->tv + 3 * (size_t)t;
     if ((size_t)t < R->cap_fr_rec) {
