@@ -1,4 +1,13 @@
 /* frontal.c - frontal-Delaunay refinement after Rebay (1993): triangles grow layer by layer from the boundary and from accepted triangles, each new point placed on the bisector of a front edge so that it forms a triangle of the local size. */
+/*
+ * Each triangle's measure (fr_measure) is kept in a per-slot record for the
+ * length of the pass (struct cvm__fr_rec): a triangle is looked at on push,
+ * on pop and by each neighbour testing the front, but its vertices never move
+ * while the pass runs. Measured (callgrind, bench_refine IN H 2 1, frontal,
+ * whole run, -O2; -O3 in brackets): annulus 0.1 257.2M -> 242.6M instructions,
+ * -5.7% [-5.3%]; naca0012 0.2 929.3M -> 870.2M, -6.4% [-6.0%]. The output is
+ * bit-identical to measuring every time.
+ */
 #include <math.h>
 
 #include "refine_internal.h"
@@ -232,7 +241,8 @@ static cvm_status fr_queue_star(cvm__refiner *R, int32_t v)
     for (k = 0; k < n; k++) {
         int32_t t = R->star[k];
         if (cvm__tri2_in_domain(T, t)) {
-            acc[k] = fr_quality(R, t, &ratio[k]);
+            /* new triangles (they hold v): no record to look up */
+            acc[k] = fr_quality_measure(R, t, &ratio[k]);
         } else {
             ratio[k] = 0;
             acc[k] = -1;
