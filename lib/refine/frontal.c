@@ -69,7 +69,7 @@ static void fr_measure(const cvm__refiner *R, int32_t t, double *ratio, double *
  * vertices, however often the Delaunay kernel rewrote it in between. */
 struct cvm__fr_rec {
     double ratio; /* fr_measure's *ratio */
-    int32_t v[3]; /* the slot's vertices when written; v[0] = -1: none */
+    int32_t v[3]; /* the slot's vertices when written; -1: none */
     int32_t acc;  /* accepted: small enough and well shaped */
 };
 
@@ -82,7 +82,7 @@ static cvm_status fr_rec_reserve(cvm__refiner *R)
     if (cvm__grow(R->ctx, (void **)&R->fr_rec, &R->cap_fr_rec, R->T->nt, sizeof *R->fr_rec))
         return cvm__nomem(R->ctx);
     for (; k < R->cap_fr_rec; k++)
-        R->fr_rec[k].v[0] = -1;
+        R->fr_rec[k].v[0] = R->fr_rec[k].v[1] = R->fr_rec[k].v[2] = -1;
     return CVM_OK;
 }
 
