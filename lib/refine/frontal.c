@@ -5,7 +5,7 @@
  * on pop and by each neighbour testing the front, but its vertices never move
  * while the pass runs. Measured (callgrind, bench_refine IN H 2 1, frontal,
  * whole run, -O2; -O3 in brackets): annulus 0.1 257.2M -> 242.6M instructions,
- * -5.7% [-5.3%]; naca0012 0.2 929.3M -> 870.2M, -6.4% [-6.0%]. The output is
+ * -5.7% [-5.3%]; naca0012 0.2 929.3M -> 870.3M, -6.4% [-6.0%]. The output is
  * bit-identical to measuring every time.
  */
 #include <math.h>
