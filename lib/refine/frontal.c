@@ -1,4 +1,13 @@
 /* frontal.c - frontal-Delaunay refinement after Rebay (1993): triangles grow layer by layer from the boundary and from accepted triangles, each new point placed on the bisector of a front edge so that it forms a triangle of the local size. */
+/*
+ * Each triangle's measure (fr_measure) is kept in a per-slot record for the
+ * length of the pass (struct cvm__fr_rec): a triangle is looked at on push,
+ * on pop and by each neighbour testing the front, but its vertices never move
+ * while the pass runs. Measured (callgrind, bench_refine IN H 2 1, frontal,
+ * whole run, -O2; -O3 in brackets): annulus 0.1 257.2M -> 242.6M instructions,
+ * -5.7% [-5.3%]; naca0012 0.2 929.3M -> 870.3M, -6.4% [-6.0%]. The output is
+ * bit-identical to measuring every time.
+ */
 #include <math.h>
 
 #include "refine_internal.h"
@@ -8,6 +17,9 @@
  * the local size. A right isosceles triangle with legs of the local size sits
  * at the limit (0.707); the equilateral triangle of that size has 0.577. */
 #define FR_ACCEPT2 0.5
+
+/* Edge j of a triangle joins its vertices fr_next[j] and fr_prev[j]. */
+static const int fr_next[3] = {1, 2, 0}, fr_prev[3] = {2, 0, 1};
 
 static const double *fr_pt(const cvm__refiner *R, int32_t v)
 {
@@ -50,12 +62,86 @@ static void fr_measure(const cvm__refiner *R, int32_t t, double *ratio, double *
     *ratio = isfinite(ls) ? l0 * l1 * l2 / (4 * cross * cross * ls * ls) : 0;
 }
 
+/* The quality record of a triangle slot: what fr_quality last measured there.
+ * fr_measure depends only on the slot's three vertices in their order (their
+ * coordinates and sizes never change during the pass, R->p->max_area and
+ * R->sin2_min are fixed), so a record holds while the slot keeps those
+ * vertices, however often the Delaunay kernel rewrote it in between. */
+struct cvm__fr_rec {
+    double ratio; /* fr_measure's *ratio */
+    int32_t v[3]; /* the slot's vertices when written; -1: none */
+    int32_t acc;  /* accepted: small enough and well shaped */
+};
+
+/* Records for every slot below T->nt (new ones empty). CVM_OK or CVM_E_NOMEM. */
+static cvm_status fr_rec_reserve(cvm__refiner *R)
+{
+    size_t k = R->cap_fr_rec;
+    if (R->T->nt <= k)
+        return CVM_OK;
+    if (cvm__grow(R->ctx, (void **)&R->fr_rec, &R->cap_fr_rec, R->T->nt, sizeof *R->fr_rec))
+        return cvm__nomem(R->ctx);
+    for (; k < R->cap_fr_rec; k++)
+        R->fr_rec[k].v[0] = R->fr_rec[k].v[1] = R->fr_rec[k].v[2] = -1;
+    return CVM_OK;
+}
+
+/* fr_quality when t's record is not valid: measure t, record it if it has a
+ * slot in the records (slots created since the last fr_rec_reserve have none). */
+static int fr_quality_measure(const cvm__refiner *R, int32_t t, double *ratio)
+{
+    const int32_t *tv = R->T->tv + 3 * (size_t)t;
+    struct cvm__fr_rec *r = (size_t)t < R->cap_fr_rec ? R->fr_rec + t : NULL;
+    double sin2;
+    int acc;
+    fr_measure(R, t, ratio, &sin2);
+    acc = *ratio <= FR_ACCEPT2 && sin2 >= R->sin2_min;
+    if (r) {
+        r->ratio = *ratio;
+        r->v[0] = tv[0];
+        r->v[1] = tv[1];
+        r->v[2] = tv[2];
+        r->acc = acc;
+    }
+    return acc;
+}
+
+/* Quality of domain triangle t: returns 1 when it is accepted (small enough
+ * and well shaped), and its ratio of fr_measure into *ratio; read from t's
+ * record when valid, else measured (and recorded). Kept small so that it
+ * inlines: most calls find a valid record. */
+static inline int fr_quality(const cvm__refiner *R, int32_t t, double *ratio)
+{
+    const int32_t *tv = R->T->tv + 3 * (size_t)t;
+    if ((size_t)t < R->cap_fr_rec) {
+        const struct cvm__fr_rec *r = R->fr_rec + t;
+        if (r->v[0] == tv[0] && r->v[1] == tv[1] && r->v[2] == tv[2]) {
+            *ratio = r->ratio;
+            return r->acc;
+        }
+    }
+    return fr_quality_measure(R, t, ratio);
+}
+
 /* Domain triangle t is accepted: small enough and well shaped. */
 static int fr_accepted(const cvm__refiner *R, int32_t t)
 {
-    double ratio, sin2;
-    fr_measure(R, t, &ratio, &sin2);
-    return ratio <= FR_ACCEPT2 && sin2 >= R->sin2_min;
+    double ratio;
+    return fr_quality(R, t, &ratio);
+}
+
+/* How far the length of edge j of the triangle with vertices tv is from the
+ * local size: max(len/h, h/len)^2, which grows with |log(len / h)|; +infinity
+ * when that cannot be told (no size, zero length). */
+static double fr_edge_dev(const cvm__refiner *R, const int32_t *tv, int j)
+{
+    int32_t ia = tv[fr_next[j]], ib = tv[fr_prev[j]];
+    const double *a = fr_pt(R, ia), *b = fr_pt(R, ib);
+    double len2, h;
+    len2 = (b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]);
+    h = (fr_size(R, ia) + fr_size(R, ib)) / 2;
+    h *= h;
+    return len2 >= h ? len2 / h : len2 > 0 ? h / len2 : HUGE_VAL;
 }
 
 /* The front edge of a triangle t that is too big (squared ratio > FR_ACCEPT2):
@@ -68,17 +154,10 @@ static int fr_front_edge(const cvm__refiner *R, int32_t t, const int *acc)
     double best = HUGE_VAL;
     int j, jf = -1;
     for (j = 0; j < 3; j++) {
-        const double *a, *b;
-        double len2, h, dev;
+        double dev;
         if (!acc[j])
             continue;
-        a = fr_pt(R, tv[(j + 1) % 3]);
-        b = fr_pt(R, tv[(j + 2) % 3]);
-        len2 = (b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]);
-        h = (fr_size(R, tv[(j + 1) % 3]) + fr_size(R, tv[(j + 2) % 3])) / 2;
-        h *= h;
-        /* max(len/h, h/len)^2: grows with |log(len / h)| */
-        dev = len2 >= h ? len2 / h : len2 > 0 ? h / len2 : HUGE_VAL;
+        dev = fr_edge_dev(R, tv, j);
         if (dev < best) {
             best = dev;
             jf = j;
@@ -105,9 +184,9 @@ static int fr_edge_on_front(const cvm__refiner *R, int32_t t, int j)
  * active. */
 static int fr_active(cvm__refiner *R, int32_t t, int *jf, double *key)
 {
-    double ratio, sin2;
+    double ratio;
     int acc[3], j;
-    fr_measure(R, t, &ratio, &sin2);
+    fr_quality(R, t, &ratio);
     if (ratio <= FR_ACCEPT2)
         return 0;
     for (j = 0; j < 3; j++)
@@ -138,11 +217,13 @@ static cvm_status fr_queue_star(cvm__refiner *R, int32_t v)
 {
     const cvm__tri2 *T = R->T;
     size_t n = cvm__rf_star(R, v), k;
-    double ratio[FR_STAR_MAX], sin2;
+    double ratio[FR_STAR_MAX];
     int acc[FR_STAR_MAX];
     cvm_status s;
     if (n == 0)
         return cvm__nomem(R->ctx);
+    if ((s = fr_rec_reserve(R)))
+        return s;
     if (n > FR_STAR_MAX) {
         for (k = 0; k < n; k++) {
             int32_t t = R->star[k];
@@ -160,8 +241,8 @@ static cvm_status fr_queue_star(cvm__refiner *R, int32_t v)
     for (k = 0; k < n; k++) {
         int32_t t = R->star[k];
         if (cvm__tri2_in_domain(T, t)) {
-            fr_measure(R, t, &ratio[k], &sin2);
-            acc[k] = ratio[k] <= FR_ACCEPT2 && sin2 >= R->sin2_min;
+            /* new triangles (they hold v): no record to look up */
+            acc[k] = fr_quality_measure(R, t, &ratio[k]);
         } else {
             ratio[k] = 0;
             acc[k] = -1;
@@ -170,7 +251,7 @@ static cvm_status fr_queue_star(cvm__refiner *R, int32_t v)
     for (k = 0; k < n; k++) {
         int32_t t = R->star[k];
         const int32_t *tv = T->tv + 3 * (size_t)t;
-        int i = tv[0] == v ? 0 : tv[1] == v ? 1 : 2, e[3], jf;
+        int i = tv[0] == v ? 0 : tv[1] == v ? 1 : 2, i1 = fr_next[i], i2 = fr_prev[i];
         if (acc[k] < 0)
             continue;
         if (acc[k]) {
@@ -180,13 +261,18 @@ static cvm_status fr_queue_star(cvm__refiner *R, int32_t v)
         }
         if (ratio[k] <= FR_ACCEPT2)
             continue; /* small enough, badly shaped: for the clean-up pass */
-        /* the star turns through edge i+1 to the next triangle, i+2 to the previous */
-        e[i] = fr_edge_on_front(R, t, i);
-        e[(i + 1) % 3] = T->te[3 * (size_t)t + (size_t)(i + 1) % 3] >= 0 || acc[(k + 1) % n] == 1;
-        e[(i + 2) % 3] = T->te[3 * (size_t)t + (size_t)(i + 2) % 3] >= 0 || acc[(k + n - 1) % n] == 1;
-        jf = fr_front_edge(R, t, e);
-        if (jf >= 0 && cvm__bq_push(&R->q, R->T, t, 0, -ratio[k]))
-            return cvm__nomem(R->ctx);
+        /* Active when fr_front_edge would find a front edge, i.e. when some
+         * edge on the front has a finite fr_edge_dev. The star turns through
+         * edge i1 to the next triangle, i2 to the previous; edge i, whose
+         * test looks beyond the star, is tried last. */
+        if (((T->te[3 * (size_t)t + (size_t)i1] >= 0 || acc[k + 1 < n ? k + 1 : 0] == 1) &&
+             fr_edge_dev(R, tv, i1) < HUGE_VAL) ||
+            ((T->te[3 * (size_t)t + (size_t)i2] >= 0 || acc[k > 0 ? k - 1 : n - 1] == 1) &&
+             fr_edge_dev(R, tv, i2) < HUGE_VAL) ||
+            (fr_edge_on_front(R, t, i) && fr_edge_dev(R, tv, i) < HUGE_VAL)) {
+            if (cvm__bq_push(&R->q, R->T, t, 0, -ratio[k]))
+                return cvm__nomem(R->ctx);
+        }
     }
     return CVM_OK;
 }
@@ -282,12 +368,11 @@ static cvm_status fr_queue_all(cvm__refiner *R)
     return CVM_OK;
 }
 
-cvm_status cvm__rf_frontal(cvm__refiner *R)
+static cvm_status fr_run(cvm__refiner *R)
 {
     cvm__bad_entry e;
     cvm_status s;
-    R->queue_star = fr_queue_star;
-    if ((s = fr_queue_all(R)))
+    if ((s = fr_rec_reserve(R)) || (s = fr_queue_all(R)))
         return s;
     while (cvm__bq_pop(&R->q, &e)) {
         double key, x[2];
@@ -312,6 +397,17 @@ cvm_status cvm__rf_frontal(cvm__refiner *R)
         if (s)
             return s;
     }
-    R->queue_star = cvm__rf_queue_star;
     return CVM_OK;
+}
+
+cvm_status cvm__rf_frontal(cvm__refiner *R)
+{
+    cvm_status s;
+    R->queue_star = fr_queue_star;
+    s = fr_run(R);
+    R->queue_star = cvm__rf_queue_star;
+    cvm__free(R->ctx, R->fr_rec);
+    R->fr_rec = NULL;
+    R->cap_fr_rec = 0;
+    return s;
 }

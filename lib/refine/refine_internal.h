@@ -272,6 +272,9 @@ typedef struct cvm__refiner {
     size_t nenc, cap_enc;
     size_t steiner;
     void *aflr;                /* AFLR state (aflr.c) while an AFLR run lasts, else NULL */
+    struct cvm__fr_rec *fr_rec; /* frontal.c: quality record per triangle slot while a
+                                  frontal pass lasts, else NULL */
+    size_t cap_fr_rec;
 } cvm__refiner;
 
 /* Refine T in place (see cvm_mesh_refine). Returns CVM_OK, CVM_E_NOMEM,
