@@ -162,6 +162,13 @@ static cvm_status refine_run(cvm_mesh *m, const cvm_sizing *sizing, cvm_algorith
         p.smooth_sweeps = (int)cvm__opt(m, CVM_OPT_SMOOTH_SWEEPS);
         p.smooth_method = (int)cvm__opt(m, CVM_OPT_SMOOTH_METHOD);
         p.relax_sweeps = (int)cvm__opt(m, CVM_OPT_RELAX_SWEEPS);
+        /* -1 (the default): the algorithm's own (refine_internal.h) */
+        if (p.smooth_sweeps < 0)
+            p.smooth_sweeps = algo == CVM_ALGO_FRONTAL ? CVM__FRONTAL_SMOOTH_SWEEPS
+                                                       : CVM__AFLR_SMOOTH_SWEEPS;
+        if (p.relax_sweeps < 0)
+            p.relax_sweeps = algo == CVM_ALGO_FRONTAL ? CVM__FRONTAL_RELAX_SWEEPS
+                                                      : CVM__AFLR_RELAX_SWEEPS;
     }
     if (algo == CVM_ALGO_AFLR)
         p.aflr_smooth_layers = (int)cvm__opt(m, CVM_OPT_AFLR_SMOOTH_LAYERS);

@@ -321,6 +321,17 @@ cvm_status cvm__rf_march_segments(cvm__refiner *R);
  * split_segment.c); consecutive pieces then differ by about exp(g). Chosen by
  * measurement (bench_refine, the NACA trailing edge); a build may override it
  * to compare. */
+/* Default smoothing of each refiner (CVM_OPT_SMOOTH_SWEEPS and
+ * CVM_OPT_RELAX_SWEEPS at -1). Frontal leaves rougher seams where fronts meet
+ * (NACA 0012 far-field ring before smoothing: 4.1% of all angles out of
+ * [55, 65] against AFLR's 2.9%), so it gets more smart sweeps; fewer
+ * relaxation sweeps pay for part of them. Measured in cvm_mesh_refine's
+ * documentation and the README. */
+#define CVM__FRONTAL_SMOOTH_SWEEPS 5
+#define CVM__FRONTAL_RELAX_SWEEPS 3
+#define CVM__AFLR_SMOOTH_SWEEPS 3
+#define CVM__AFLR_RELAX_SWEEPS 5
+
 #ifndef CVM__MARCH_GRADE
 #define CVM__MARCH_GRADE 0.3
 #endif
