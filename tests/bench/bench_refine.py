@@ -321,7 +321,7 @@ def main():
                     rows.append((label,) + run_gmsh(poly, h, algo))
             for label, t, xy, tri in rows:
                 q = quality(np.asarray(xy), np.asarray(tri), h)
-                print("%-9s %-5s %-12s %7d %7d %9.4f %8.3f %7.2f %6.1f %6.1f %6.1f %6.3f" %
+                print("%-9s %-5s %-12s %7d %7d %9.4f %8.3f %7.2f %6.2f %6.1f %6.1f %6.3f" %
                       (name, "%g" % h if h > 0 else "graded", label, q["nv"], q["nt"], t, 1e6 * t / q["nt"], q["minang"], q["reg"],
                        q["obt"], q["deg6"], q["edge"]))
             if h > 0:
