@@ -287,6 +287,19 @@ expect_grep "refine --auto meets the angle" "$TMP/out" "triangles below the angl
 expect_exit 0 "refine --no-swap --smooth 3" "$CLI" refine "$SHARED/data/square.poly" --algo frontal --size 0.1 \
     --no-swap --smooth 3 -o "$OUT/sq.vtu"
 expect_exit 2 "--smooth out of range" "$CLI" refine "$SHARED/data/square.poly" --smooth 1000 -o "$OUT/x.vtu"
+# -1 (the default) is each refiner's own sweep count: frontal 3 relaxation + 5 smart
+# sweeps, AFLR 5 + 3; -2 is out of range and writes nothing
+for a in "frontal 3 5" "aflr 5 3"; do
+    set -- $a
+    expect_exit 0 "refine --algo $1 (default sweeps)" "$CLI" refine "$SHARED/data/annulus.poly" --algo $1 \
+        --size 0.3 -o "$OUT/def_$1.node"
+    expect_exit 0 "refine --algo $1 --relax $2 --smooth $3" "$CLI" refine "$SHARED/data/annulus.poly" \
+        --algo $1 --size 0.3 --relax $2 --smooth $3 -o "$OUT/exp_$1.node"
+    if cmp -s "$OUT/def_$1.node" "$OUT/exp_$1.node" && cmp -s "$OUT/def_$1.ele" "$OUT/exp_$1.ele"; then pass
+    else fail "$1: the default sweeps are not --relax $2 --smooth $3"; fi
+done
+expect_exit 2 "--smooth -2" "$CLI" refine "$SHARED/data/square.poly" --smooth -2 -o "$OUT/neg.vtu"
+if [ ! -e "$OUT/neg.vtu" ]; then pass; else fail "--smooth -2 wrote a file"; fi
 expect_exit 2 "--auto not positive" "$CLI" refine "$SHARED/data/square.poly" --auto 0 -o "$OUT/x.vtu"
 expect_exit 2 "--grading without --auto" "$CLI" refine "$SHARED/data/square.poly" --grading 3 -o "$OUT/x.vtu"
 expect_grep "--grading without --auto" "$TMP/err" "--grading needs --auto"
