@@ -101,6 +101,15 @@ static inline int cvm__tri2_corner(const cvm__tri2 *T, int32_t t, int32_t v)
     return tv[0] == v ? 0 : tv[1] == v ? 1 : 2;
 }
 
+/* 1 when slot t holds the vertices v[0], v[1], v[2] in that order: a record a
+ * refiner kept for the slot, written with those vertices, still describes the
+ * triangle in it (slots are reused as the kernel flips and inserts). */
+static inline int cvm__tri2_slot_holds(const cvm__tri2 *T, int32_t t, const int32_t *v)
+{
+    const int32_t *tv = T->tv + 3 * (size_t)t;
+    return tv[0] == v[0] && tv[1] == v[1] && tv[2] == v[2];
+}
+
 /* One step of the walk around corner v of t (from T->vtri[v] back to it):
  * the triangle across t's edge opposite the corner after v. */
 static inline int32_t cvm__tri2_around(const cvm__tri2 *T, int32_t t, int32_t v)

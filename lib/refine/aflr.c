@@ -152,8 +152,7 @@ static int af_grow_fill(cvm__ctx *ctx, int32_t **p, size_t *cap, size_t need, in
 /* 1 when the layers stored for slot t belong to the triangle now in it. */
 static inline int af_slot_valid(const af_state *A, const cvm__tri2 *T, int32_t t)
 {
-    const int32_t *tv = T->tv + 3 * (size_t)t, *sv = A->sv + 3 * (size_t)t;
-    return 3 * (size_t)t + 2 < A->cap_sv && sv[0] == tv[0] && sv[1] == tv[1] && sv[2] == tv[2];
+    return 3 * (size_t)t + 2 < A->cap_sv && cvm__tri2_slot_holds(T, t, A->sv + 3 * (size_t)t);
 }
 
 /* Layer of edge j of triangle t: from its segment when constrained, else

@@ -112,10 +112,9 @@ static int fr_quality_measure(const cvm__refiner *R, int32_t t, double *ratio)
  * inlines: most calls find a valid record. */
 static inline int fr_quality(const cvm__refiner *R, int32_t t, double *ratio)
 {
-    const int32_t *tv = R->T->tv + 3 * (size_t)t;
     if ((size_t)t < R->cap_fr_rec) {
         const struct cvm__fr_rec *r = R->fr_rec + t;
-        if (r->v[0] == tv[0] && r->v[1] == tv[1] && r->v[2] == tv[2]) {
+        if (cvm__tri2_slot_holds(R->T, t, r->v)) {
             *ratio = r->ratio;
             return r->acc;
         }
