@@ -1058,7 +1058,8 @@ CVM_API cvm_status cvm_sizing_eval(double *out, cvm_sizing *s, double x, double 
 
 /** Refinement algorithms of cvm_mesh_refine(). Values never change. */
 typedef enum cvm_algorithm {
-    CVM_ALGO_DELAUNAY = 1, /**< Delaunay refinement (Ruppert, Shewchuk): circumcentres */
+    CVM_ALGO_DELAUNAY = 1, /**< Delaunay refinement (Ruppert, Shewchuk): circumcentres or
+                                Ungor off-centres, the shortest shortest edge first */
     CVM_ALGO_FRONTAL = 2,  /**< frontal-Delaunay (Rebay): near-equilateral points grown from the boundary */
     CVM_ALGO_AFLR = 3      /**< advancing-front local reconnection (Marcum): layers grown from
                                 front segments, see cvm_mesh_set_front_markers() */
@@ -1067,7 +1068,12 @@ typedef enum cvm_algorithm {
 /**
  * Refine the triangulation of @p m by inserting Steiner points until every
  * triangle meets CVM_OPT_MIN_ANGLE_DEG, CVM_OPT_MAX_AREA and the @p sizing
- * (circumradius at most the mean size at its vertices). CVM_ALGO_FRONTAL first grows
+ * (circumradius at most the mean size at its vertices). CVM_ALGO_DELAUNAY splits
+ * too-large triangles first (largest circumradius/size first), then bad shapes
+ * with the shortest shortest edge first, each at its circumcentre or, when nearer
+ * to the shortest edge, at Ungor's off-centre (the new triangle on that edge a
+ * little above the bound); this terminates on the shared geometries up to 34.5
+ * degrees (README). CVM_ALGO_FRONTAL first grows
  * triangles from the segments and from accepted triangles (circumradius at most
  * 0.707 x the mean size, smallest angle at least CVM_OPT_MIN_ANGLE_DEG), largest
  * circumradius first, each new point on the bisector of a front edge where it makes

@@ -217,6 +217,60 @@ START_TEST(lens_and_no_marching_still_meet_bounds)
 }
 END_TEST
 
+/* Bounds above Ruppert's guarantee must still terminate in practice (issue 4:
+ * up to 33-34 degrees). Before off-centres and the shortest-edge-first queue,
+ * circumcentres at 34 degrees ran away on the cylinder and the NACA 0012.
+ * The Steiner limit only guards the test: a run that reaches it fails. */
+static void high_bound_terminates(const char *name, long euler, double h, double angle)
+{
+    char path[1024];
+    cvm_mesh *m;
+    cvm_sizing *sz = NULL;
+    cvm_status s;
+    rtest_quality q;
+    size_t nseg;
+    double d;
+    cvm_index *segs;
+    rtest_shared_path(path, sizeof path, name);
+    segs = rtest_poly_segments(path, &nseg);
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_read(m, path), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_MIN_ANGLE_DEG, angle), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_MAX_STEINER, 200000), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+    if (h > 0) {
+        ck_assert_int_eq(cvm_sizing_create(&sz), CVM_OK);
+        ck_assert_int_eq(cvm_sizing_set_uniform(sz, h), CVM_OK);
+    }
+    s = cvm_mesh_refine(m, sz, CVM_ALGO_DELAUNAY);
+    ck_assert_msg(s == CVM_OK, "%s at %g: %s: %s", name, angle, cvm_status_str(s), cvm_mesh_errmsg(m));
+    ck_assert_int_eq(cvm_mesh_get_measure(&d, m, CVM_MEASURE_REFINE_UNMET_ANGLE), CVM_OK);
+    ck_assert_msg(d == 0, "%s at %g: %g triangles below the bound", name, angle, d);
+    ck_assert_int_eq(cvm_mesh_get_measure(&d, m, CVM_MEASURE_REFINE_STEINER), CVM_OK);
+    ck_assert_msg(d < 100000, "%s at %g: %g Steiner points", name, angle, d);
+    /* one hole in the annulus, cylinder and NACA 0012 */
+    rtest_assert_refined(m, name, segs, nseg, 0, euler, h > 0 ? h : INFINITY, &q);
+    ck_assert_msg(q.min_angle >= angle - 1e-9, "%s: min angle %.17g < %g", name, q.min_angle, angle);
+    cvm_sizing_free(sz);
+    cvm_mesh_free(m);
+    free(segs);
+}
+
+START_TEST(high_angle_bounds_terminate)
+{
+    static const char *const names[] = {"square.poly", "channel.poly", "annulus.poly",
+                                        "cylinder.poly", "naca0012.poly"};
+    static const double sizes[] = {0.02, 0.02, 0.1, 0.2, 0.2}; /* as bench_refine */
+    static const long euler[] = {1, 1, 0, 0, 0};
+    size_t i;
+    for (i = 0; i < 5; i++) {
+        high_bound_terminates(names[i], euler[i], sizes[i], 34);
+        high_bound_terminates(names[i], euler[i], 0, 34);
+        high_bound_terminates(names[i], euler[i], 0, 34.5);
+    }
+}
+END_TEST
+
 START_TEST(wrong_calls_are_reported)
 {
     static const double sq[] = {0, 0, 1, 0, 1, 1, 0, 1};
@@ -254,6 +308,7 @@ TCase *refine_delaunay_tcase(void)
     tcase_add_test(tc, cancellation_leaves_valid_mesh);
     tcase_add_test(tc, point_set_refines_inside_hull);
     tcase_add_test(tc, lens_and_no_marching_still_meet_bounds);
+    tcase_add_test(tc, high_angle_bounds_terminate);
     tcase_add_test(tc, wrong_calls_are_reported);
     return tc;
 }
