@@ -453,13 +453,13 @@ typedef enum cvm_option {
     /** Sweeps of smart smoothing after CVM_ALGO_FRONTAL and CVM_ALGO_AFLR (after
      *  CVM_OPT_SWAP and the CVM_OPT_RELAX_SWEEPS relaxation, before the
      *  Delaunay-restoring flips), bounds [-1, 100]; 0 = off (no relaxation either);
-     *  -1 (the default) = the refiner's own: 5 for CVM_ALGO_FRONTAL, 3 for
+     *  -1 (the default) = the refiner's own: 4 for CVM_ALGO_FRONTAL, 3 for
      *  CVM_ALGO_AFLR. Frontal's seams, where fronts meet, are rougher before smoothing
      *  (NACA 0012 far-field ring: 4.1% of all angles out of [55, 65] against AFLR's
      *  2.9%) and keep gaining from more sweeps (NACA 0012 frontal, relaxation 3:
-     *  95.77% with 3 sweeps, 96.07% with 5), each sweep costing about 8% of the
-     *  refinement's instructions; AFLR stays at 3, where it already meets the same
-     *  regularity. Only Steiner points whose triangles are all inside the domain move
+     *  96.23% with 3 sweeps, 96.42% with 4, 96.50% with 5), each sweep costing 7-8% of
+     *  the refinement's instructions, so 4 keeps frontal clear of issue 4's time
+     *  budget; AFLR stays at 3, where it already meets the same regularity. Only Steiner points whose triangles are all inside the domain move
      *  (never an input point or a vertex on a segment), in vertex index order. Each
      *  visited vertex tries 0.5, 1 and 1.5 times the step towards the centroid of its
      *  neighbours and towards its ODT point (the area-weighted mean of its triangles'

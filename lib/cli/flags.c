@@ -36,7 +36,7 @@ static const cli_option_flag k_flags[] = {
      "frontal: swap edges towards vertex degree 6 after refining (the default)"},
     {"--no-swap", NULL, CVM_OPT_SWAP, 0, REF, "frontal: no degree swapping"},
     {"--smooth", "SWEEPS", CVM_OPT_SMOOTH_SWEEPS, 0, REF,
-     "frontal/aflr: sweeps of smoothing after refining (-1: frontal 5, aflr 3; 0: none)"},
+     "frontal/aflr: sweeps of smoothing after refining (-1: frontal 4, aflr 3; 0: none)"},
     {"--relax", "SWEEPS", CVM_OPT_RELAX_SWEEPS, 0, REF,
      "frontal/aflr: ODT relaxation sweeps before smoothing (-1: frontal 3, aflr 5; 0: none)"},
     {"--smooth-layers", "N", CVM_OPT_AFLR_SMOOTH_LAYERS, 0, REF,

@@ -287,9 +287,9 @@ expect_grep "refine --auto meets the angle" "$TMP/out" "triangles below the angl
 expect_exit 0 "refine --no-swap --smooth 3" "$CLI" refine "$SHARED/data/square.poly" --algo frontal --size 0.1 \
     --no-swap --smooth 3 -o "$OUT/sq.vtu"
 expect_exit 2 "--smooth out of range" "$CLI" refine "$SHARED/data/square.poly" --smooth 1000 -o "$OUT/x.vtu"
-# -1 (the default) is each refiner's own sweep count: frontal 3 relaxation + 5 smart
+# -1 (the default) is each refiner's own sweep count: frontal 3 relaxation + 4 smart
 # sweeps, AFLR 5 + 3; -2 is out of range and writes nothing
-for a in "frontal 3 5" "aflr 5 3"; do
+for a in "frontal 3 4" "aflr 5 3"; do
     set -- $a
     expect_exit 0 "refine --algo $1 (default sweeps)" "$CLI" refine "$SHARED/data/annulus.poly" --algo $1 \
         --size 0.3 -o "$OUT/def_$1.node"
