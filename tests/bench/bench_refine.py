@@ -9,7 +9,8 @@ inner loops) gets Mesh.MeshSizeMin = Max = h, no size from points, curvature or
 boundary, one thread, Mesh.Algorithm 5 (gmsh-del, Delaunay) and 6 (gmsh-front,
 Frontal-Delaunay); only gmsh.model.mesh.generate(2) is timed. Every mesh is
 measured here by the same numpy code: vertices, triangles, time (median of REPS
-runs of triangulate + refine, each cvmesh process after one untimed warm-up run, as
+runs, 11 unless CVM_BENCH_REPS says otherwise: a run of the annulus takes about
+10 ms, and medians of 5 moved by up to 8% between bench runs, of triangulate + refine, each cvmesh process after one untimed warm-up run, as
 Triangle and Gmsh run warm in this Python process; Triangle: triangulate(); Gmsh:
 generate(2)), min
 angle, % of angles in [55, 65] degrees, % obtuse triangles (an angle > 90), % of
@@ -38,7 +39,7 @@ import numpy as np
 from benchlib import build_driver, read_poly
 
 BUILD, SHARED = sys.argv[1], sys.argv[2]
-REPS = int(os.environ.get("CVM_BENCH_REPS", "5"))
+REPS = int(os.environ.get("CVM_BENCH_REPS", "11"))
 METHODS = [int(x) for x in os.environ.get("CVM_BENCH_SMOOTH_METHODS", "").split(",") if x]
 CASES = [("square", 0.02), ("channel", 0.02), ("annulus", 0.1), ("cylinder", 0.2),
          ("naca0012", 0.2), ("annulus-g", -1.0)]
