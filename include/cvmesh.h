@@ -1084,7 +1084,10 @@ typedef enum cvm_algorithm {
  * the equilateral point at the local size, the circumcentre and two off-centres; a
  * point closer than 0.7 x the edge to a vertex is skipped), and records a layer index
  * per triangle (cvm_mesh_copy_layer_index()). Both finish with a Delaunay-refinement
- * pass, so all three algorithms meet the same bounds. Segments are split
+ * pass, so all three algorithms meet the same bounds; after the frontal and the AFLR
+ * passes the clean-ups, swaps and smoothing also keep frontal's acceptance bound, so
+ * their triangles end with a circumradius of at most 0.707 x the mean size (unless a
+ * Steiner or time limit stopped the run). Segments are split
  * where encroached (concentric shells near small input angles, as Triangle does), so
  * every input segment stays a union of mesh edges; with no segments, or with
  * CVM_OPT_KEEP_CONVEX_HULL, the convex hull edges become segments (with marker 0).

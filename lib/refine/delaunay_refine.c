@@ -117,7 +117,7 @@ static int dr_classify(cvm__refiner *R, int32_t t, double *key_out, double *lmin
     r2 = l[0] * l[1] * l[2] / (4 * cross * cross);
     ls = (R->vls[tv[0]] + R->vls[tv[1]] + R->vls[tv[2]]) / 3 * DR_SIZE_FACTOR;
     {
-        double ratio = isfinite(ls) ? r2 / (ls * ls) : 0;
+        double ratio = isfinite(ls) ? r2 / (ls * ls * R->size2) : 0;
         double ma = cvm__rf_max_area(R, t);
         if (ma > 0 && cross / 2 / ma > ratio)
             ratio = cross / 2 / ma;

@@ -14,9 +14,8 @@
 #include "geom/geom_internal.h"
 
 /* Accepted (Rebay's "small enough"): circumradius at most sqrt(this) times
- * the local size. A right isosceles triangle with legs of the local size sits
- * at the limit (0.707); the equilateral triangle of that size has 0.577. */
-#define FR_ACCEPT2 0.5
+ * the local size (CVM__FRONTAL_ACCEPT2, refine_internal.h). */
+#define FR_ACCEPT2 CVM__FRONTAL_ACCEPT2
 
 /* Edge j of a triangle joins its vertices fr_next[j] and fr_prev[j]. */
 static const int fr_next[3] = {1, 2, 0}, fr_prev[3] = {2, 0, 1};

@@ -254,6 +254,8 @@ typedef struct cvm__refiner {
     int32_t *seg_ends;         /* 2 per segment id, hull segments appended */
     size_t nseg;               /* ids 0..nseg-1 (input, then hull) */
     double sin2_min;           /* sin^2 of the requested angle */
+    double size2;              /* size test: circumradius^2 <= size2 x (mean size)^2 (1, or
+                                  CVM__FRONTAL_ACCEPT2 in frontal's post-processing) */
     double lens_cos2;          /* cos^2(2 x angle) for the lens test */
     double *vls;               /* size at each vertex (+inf: none) */
     int32_t *vseg;             /* per vertex: segment it was split onto, -2 input vertex on a
@@ -330,6 +332,14 @@ cvm_status cvm__rf_march_segments(cvm__refiner *R);
  * closest to issue 4's time budget (3x Triangle per triangle). Measured in
  * CVM_OPT_SMOOTH_SWEEPS's documentation and the README. */
 #define CVM__FRONTAL_SMOOTH_SWEEPS 4
+/* Frontal accepts a triangle whose circumradius is at most sqrt(this) times
+ * the local size (Rebay's "small enough"): a right isosceles triangle with legs
+ * of the local size sits at the limit (0.707), the equilateral triangle of
+ * that size has 0.577. After the frontal and the AFLR passes the clean-ups,
+ * swaps and smoothing keep that bound too (refiner.c: R->size2): without it
+ * the Delaunay-restoring flips after smoothing left a few triangles up to
+ * 0.78 x the size (frontal) and AFLR's edge rule (< 1.5 x size) up to 0.81 x. */
+#define CVM__FRONTAL_ACCEPT2 0.5
 #define CVM__FRONTAL_RELAX_SWEEPS 3
 #define CVM__AFLR_SMOOTH_SWEEPS 3
 #define CVM__AFLR_RELAX_SWEEPS 5

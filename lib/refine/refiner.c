@@ -98,6 +98,7 @@ static cvm_status rf_setup(cvm__refiner *R, cvm__tri2 *T, const cvm__refine_para
     R->queue_star = cvm__rf_queue_star;
     cvm__bq_init(&R->q, R->ctx);
     R->sin2_min = sin(th) * sin(th);
+    R->size2 = 1.0;
     R->lens_cos2 = cos(2 * th) * cos(2 * th);
     if ((s = cvm__tri2_enable_constraints(T)))
         return cvm__nomem(R->ctx);
@@ -271,6 +272,10 @@ cvm_status cvm__refine(cvm__tri2 *T, const cvm__refine_params *p, cvm__refine_re
         s = cvm__rf_frontal(&R);
     if (!s && p->algo == CVM_ALGO_AFLR)
         s = cvm__rf_aflr(&R);
+    /* frontal and AFLR: the clean-ups, swaps and smoothing keep frontal's
+     * acceptance bound, so the mesh meets circumradius <= 0.707 x size */
+    if (p->algo == CVM_ALGO_FRONTAL || p->algo == CVM_ALGO_AFLR)
+        R.size2 = CVM__FRONTAL_ACCEPT2;
     if (!s)
         s = cvm__rf_delaunay(&R);
     if (!s)
@@ -279,6 +284,7 @@ cvm_status cvm__refine(cvm__tri2 *T, const cvm__refine_params *p, cvm__refine_re
      * may make a triangle too big or too thin again: refine those */
     if (!s && flips > 0)
         s = cvm__rf_delaunay(&R);
+    R.size2 = 1.0; /* the report states the documented bound */
     if (!cvm_status_is_error(s)) {
         cvm_status s2 = rf_report(&R, rep);
         if (s2)

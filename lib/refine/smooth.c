@@ -114,8 +114,9 @@ typedef struct sm_ring {
     size_t n, cap;
     double *a;   /* 2 per ring vertex */
     double *lab; /* per triangle */
-    double *ls4;
+    double *ls4;  /* 4 x size2 x size^2 */
     double *amax2;
+    double size2; /* the refiner's size2 */
 } sm_ring;
 
 static void sm_ring_free(cvm__ctx *ctx, sm_ring *r)
@@ -142,6 +143,7 @@ static int sm_ring_build(const cvm__refiner *R, int32_t v, const int32_t *star, 
         r->cap = n;
     }
     r->n = n;
+    r->size2 = R->size2;
     for (k = 0; k < n; k++) {
         const int32_t *tv = T->tv + 3 * (size_t)star[k];
         int i = tv[0] == v ? 0 : tv[1] == v ? 1 : 2;
@@ -151,7 +153,7 @@ static int sm_ring_build(const cvm__refiner *R, int32_t v, const int32_t *star, 
         r->a[2 * k] = a[0];
         r->a[2 * k + 1] = a[1];
         r->lab[k] = (b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]);
-        r->ls4[k] = isfinite(ls) ? 4 * ls * ls : HUGE_VAL;
+        r->ls4[k] = isfinite(ls) ? 4 * R->size2 * ls * ls : HUGE_VAL;
         r->amax2[k] = am > 0 ? 2 * am : 0;
     }
     return 1;
@@ -489,8 +491,8 @@ static void sm_more_candidates(const sm_ring *r, const double *x, double l2, dou
         minsp2 += ((a[0] - x[0]) * (a[0] - x[0]) + (a[1] - x[1]) * (a[1] - x[1])) / (double)n;
     }
     for (k = 0; k < n; k++)
-        if (r->ls4[k] / 4 < minsp2)
-            minsp2 = r->ls4[k] / 4;
+        if (r->ls4[k] / (4 * r->size2) < minsp2)
+            minsp2 = r->ls4[k] / (4 * r->size2);
     minsp2 *= SM_MIN_SPOKE * SM_MIN_SPOKE;
     irr0 = irr_k = sm_tri_irregular(r, x, 0);
     irr_prev = sm_tri_irregular(r, x, n - 1);
@@ -542,7 +544,7 @@ cvm_status cvm__rf_smooth(cvm__refiner *R, size_t first, const uint8_t *only, in
 {
     cvm__tri2 *T = R->T;
     int32_t *star = NULL;
-    sm_ring ring = {0, 0, NULL, NULL, NULL, NULL};
+    sm_ring ring = {0, 0, NULL, NULL, NULL, NULL, 1.0};
     uint8_t *cur = NULL, *next = NULL;
     size_t cap = 0, v, moves = 0;
     int sweep, err = 0;
@@ -744,7 +746,7 @@ static int mm_eval(const cvm__refiner *R, int32_t v, const double *p, const int3
             gk[5] = s[2] * (ga1 - db1);
         }
         ls = (R->vls[v] + R->vls[ia] + R->vls[ib]) / 3;
-        if ((isfinite(ls) && la2 * lb2 * lab2 > 4 * ls * ls * ar * ar) ||
+        if ((isfinite(ls) && la2 * lb2 * lab2 > 4 * R->size2 * ls * ls * ar * ar) ||
             (cvm__rf_max_area(R, star[k]) > 0 && ar > 2 * cvm__rf_max_area(R, star[k])))
             sbig++;
     }
@@ -760,7 +762,7 @@ cvm_status cvm__rf_smooth_maxmin(cvm__refiner *R, size_t first, const uint8_t *o
     const double fmax = guard ? 0.64278760968653925 : 2.0;
     cvm__tri2 *T = R->T;
     int32_t *star = NULL;
-    sm_ring ring = {0, 0, NULL, NULL, NULL, NULL};
+    sm_ring ring = {0, 0, NULL, NULL, NULL, NULL, 1.0};
     double *f = NULL, *g = NULL, *f1 = NULL;
     size_t *act = NULL;
     uint8_t *cur = NULL, *next = NULL;

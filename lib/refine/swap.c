@@ -178,7 +178,7 @@ static int sw_too_big(const cvm__refiner *R, int32_t t, int32_t a, int32_t b, in
     double ma = cvm__rf_max_area(R, t); /* the flip stays in t's region */
     if (ma > 0 && cross / 2 > ma)
         return 1;
-    return isfinite(ls) && l0 * l1 * l2 > 4 * cross * cross * ls * ls;
+    return isfinite(ls) && l0 * l1 * l2 > 4 * cross * cross * ls * ls * R->size2;
 }
 
 cvm_status cvm__rf_swap_degree(const cvm__refiner *R, size_t *flips_out)

@@ -193,7 +193,7 @@ END_TEST
  * apex candidates and the pattern search of the smart sweeps (smooth.c)
  * frontal and aflr keep >= 96.0% and >= 95.9% of the angles in [55, 65]
  * degrees (measured here: 96.42 with frontal's 3 relaxation and 4 smart
- * sweeps, 96.50 with 3 and 5; aflr 96.52 with 5 and 3; before the
+ * sweeps, 96.50 with 3 and 5; aflr 96.35 with 5 and 3; before the
  * Delaunay-refinement clean-up took off-centres shortest edge first, 96.07
  * and 96.08; 95.10 and 95.42 with the six steps towards the centroid and the
  * ODT point alone), at most 0.15%

@@ -256,6 +256,11 @@ void rtest_shared_geometry(const char *name, double h, long euler, cvm_algorithm
     m = shared_refined(path, h, algo, &nv0);
     rtest_assert_refined(m, name, segs, nseg, 0, euler, h, &q);
     ck_assert_msg(q.max_edge <= 2 * h * (1 + 1e-9), "%s: edge %.17g > 2 x size", name, q.max_edge);
+    /* frontal and AFLR keep frontal's acceptance bound through the clean-ups,
+     * swaps and smoothing: circumradius <= sqrt(0.5) x size (uniform size here) */
+    if (algo == CVM_ALGO_FRONTAL || algo == CVM_ALGO_AFLR)
+        ck_assert_msg(q.max_circumradius <= 0.70710678118654757 * h * (1 + 1e-9),
+                      "%s: circumradius %.17g > 0.707 x size", name, q.max_circumradius);
     ck_assert_msg(q.nt >= 1000 && q.nt <= 20000, "%s: %lu triangles", name, (unsigned long)q.nt);
     ck_assert_int_eq(cvm_mesh_get_measure(&d, m, CVM_MEASURE_REFINE_STEINER), CVM_OK);
     ck_assert_double_eq(d, (double)(q.nv - nv0));
