@@ -157,7 +157,9 @@ typedef enum cvm__ins {
     CVM__INS_DUPLICATE = 1, /* coincides with vertex *other_out; not inserted */
     CVM__INS_OUTSIDE = 2,   /* outside the hull or the domain (with CVM__INSF_DOMAIN_ONLY) */
     CVM__INS_TOO_CLOSE = 3, /* closer than min_dist to vertex *other_out */
-    CVM__INS_REDUNDANT = 4  /* weights set: its power cell would be empty; not inserted */
+    CVM__INS_REDUNDANT = 4, /* weights set: its power cell would be empty; not inserted */
+    CVM__INS_OFF_EDGE = 5   /* computed on an edge but rounded so far off it that it cannot
+                               split it (cvm__tri2_split_edge); not inserted */
 } cvm__ins;
 
 enum {
@@ -187,8 +189,10 @@ cvm_status cvm__tri2_insert_in_cavity(cvm__tri2 *T, int32_t v, const int32_t *ca
 /* Insert vertex v, which the caller computed to lie on constrained edge j of
  * triangle t (possibly inexactly, e.g. a segment intersection): the edge is
  * split at v whatever the rounding, its halves keep the segment index.
- * Returns CVM_OK or CVM_E_NOMEM. */
-cvm_status cvm__tri2_split_edge(cvm__tri2 *T, int32_t v, int32_t t, int j);
+ * *res_out: CVM__INS_DONE, or CVM__INS_OFF_EDGE when the rounding put v where
+ * it cannot see the whole cavity (a tiny edge beside other tiny features;
+ * nothing changed). Returns CVM_OK or CVM_E_NOMEM (nothing changed). */
+cvm_status cvm__tri2_split_edge(cvm__tri2 *T, int32_t v, int32_t t, int j, cvm__ins *res_out);
 
 /* Remove duplicate vertices (dup_of[v] >= 0) from the vertex arrays,
  * renumbering the rest in order; map_out (nv entries) receives old -> new id

@@ -308,9 +308,8 @@ static cvm_status insert_from(cvm__tri2 *T, int32_t v, int32_t t0, int fe_t, int
             unmark(T, ncav);
             if (s)
                 return s;
-            return cvm__error(T->ctx, CVM_E_INTERNAL, CVM_ENT_VERTEX, v,
-                              "vertex %ld, computed to split an edge, rounded too far off it to "
-                              "be inserted", (long)v);
+            *res_out = CVM__INS_OFF_EDGE;
+            return CVM_OK;
         }
     }
     if (nbnd > ncav && cvm__tri2_reserve_triangles(T, T->nt + (nbnd - ncav))) {
@@ -405,9 +404,9 @@ cvm_status cvm__tri2_insert_in_cavity(cvm__tri2 *T, int32_t v, const int32_t *ca
     return CVM_OK;
 }
 
-cvm_status cvm__tri2_split_edge(cvm__tri2 *T, int32_t v, int32_t t, int j)
+cvm_status cvm__tri2_split_edge(cvm__tri2 *T, int32_t v, int32_t t, int j, cvm__ins *res_out)
 {
-    cvm__ins res;
     int32_t other;
-    return insert_from(T, v, t, t, j, 0.0, &res, &other);
+    *res_out = CVM__INS_DONE;
+    return insert_from(T, v, t, t, j, 0.0, res_out, &other);
 }

@@ -259,6 +259,7 @@ static cvm_status recover(cvm__tri2 *T, seg_work *w, int32_t a, int32_t b, int32
             int hj = (int)(h % 3);
             double p[2];
             int32_t nv;
+            cvm__ins res;
             if (!split) {
                 *other_seg_out = s2;
                 return CVM_E_INPUT_INTERSECTING;
@@ -266,9 +267,15 @@ static cvm_status recover(cvm__tri2 *T, seg_work *w, int32_t a, int32_t b, int32
             cvm__segment_intersection2d(pa, pb, cvm__tri2_pt(T, x), cvm__tri2_pt(T, y), p);
             if ((s = cvm__tri2_add_vertex(T, p, &nv)))
                 return s;
-            if ((s = cvm__tri2_split_edge(T, nv, ht, hj))) {
+            if ((s = cvm__tri2_split_edge(T, nv, ht, hj, &res))) {
                 T->nv--;
                 return s;
+            }
+            if (res != CVM__INS_DONE) {
+                T->nv--;
+                return cvm__error(T->ctx, CVM_E_INTERNAL, CVM_ENT_VERTEX, nv,
+                                  "vertex %ld, computed where two segments cross, rounded too far "
+                                  "off them to be inserted", (long)nv);
             }
             if ((s = push(T, &w->pairs, &w->npairs, &w->cap_pairs, nv)) ||
                 (s = push(T, &w->pairs, &w->npairs, &w->cap_pairs, b)) ||

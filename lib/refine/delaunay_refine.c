@@ -52,10 +52,33 @@ static size_t dr_segs_at(cvm__refiner *R, int32_t u, int32_t *out, size_t max)
     return n;
 }
 
+/* Where input segments s1 and s2 cross inside both (not at an end): 1 and the
+ * point in *x. Crossing segments always meet at a vertex of the mesh there
+ * (cvm_mesh_triangulate splits them), which is a join like a shared end; the
+ * point computed here differs from that vertex by rounding only, far below
+ * the DR_SHELL_TOL of the shells around it. */
+static int dr_crossing(const cvm__refiner *R, int32_t s1, int32_t s2, double *x)
+{
+    const double *p = dr_pt(R, R->seg_ends[2 * (size_t)s1]), *p2 = dr_pt(R, R->seg_ends[2 * (size_t)s1 + 1]);
+    const double *q = dr_pt(R, R->seg_ends[2 * (size_t)s2]), *q2 = dr_pt(R, R->seg_ends[2 * (size_t)s2 + 1]);
+    double rx = p2[0] - p[0], ry = p2[1] - p[1], sx = q2[0] - q[0], sy = q2[1] - q[1];
+    double d = rx * sy - ry * sx, t, s;
+    if (!(d != 0))
+        return 0;
+    t = ((q[0] - p[0]) * sy - (q[1] - p[1]) * sx) / d;
+    s = ((q[0] - p[0]) * ry - (q[1] - p[1]) * rx) / d;
+    if (!(t > 0 && t < 1 && s > 0 && s < 1))
+        return 0;
+    x[0] = p[0] + t * rx;
+    x[1] = p[1] + t * ry;
+    return 1;
+}
+
 /* A skinny triangle whose shortest edge u-w joins two different segments that
- * meet at a small angle, with u and w on the same concentric shell around the
- * join, is not split: splitting it cannot help (Miller, Pav, Walkington 2003;
- * Triangle's testtriangle). */
+ * meet at a small angle (at a shared end, or where they cross), with u and w
+ * on the same concentric shell around the join, is not split: splitting it
+ * cannot help (Miller, Pav, Walkington 2003; Triangle's testtriangle, where a
+ * crossing vertex also ends the pieces of both segments). */
 static int dr_exempt(cvm__refiner *R, int32_t u, int32_t w)
 {
     int32_t su[8], sw[8];
@@ -74,10 +97,13 @@ static int dr_exempt(cvm__refiner *R, int32_t u, int32_t w)
             int32_t J = (e1[0] == e2[0] || e1[0] == e2[1]) ? e1[0]
                       : (e1[1] == e2[0] || e1[1] == e2[1]) ? e1[1] : -1;
             const double *pj, *pu, *pw;
-            double ux, uy, wx, wy, d1, d2;
-            if (J < 0)
+            double ux, uy, wx, wy, d1, d2, xc[2];
+            if (J >= 0)
+                pj = dr_pt(R, J);
+            else if (dr_crossing(R, su[a], sw[b], xc))
+                pj = xc;
+            else
                 continue;
-            pj = dr_pt(R, J);
             pu = dr_pt(R, u);
             pw = dr_pt(R, w);
             ux = pu[0] - pj[0];

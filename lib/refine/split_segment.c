@@ -104,6 +104,7 @@ static cvm_status ss_insert_on(cvm__refiner *R, int32_t t, int j, int32_t seg, c
     double x[2];
     int32_t v;
     cvm_status s;
+    cvm__ins res;
     *v_out = -1;
     x[0] = pa[0] + f * (pb[0] - pa[0]);
     x[1] = pa[1] + f * (pb[1] - pa[1]);
@@ -120,7 +121,14 @@ static cvm_status ss_insert_on(cvm__refiner *R, int32_t t, int j, int32_t seg, c
     if ((s = cvm__tri2_add_vertex(T, x, &v)))
         return s == CVM_E_NOMEM ? cvm__nomem(R->ctx)
                                 : cvm__error(R->ctx, s, CVM_ENT_NONE, -1, "too many vertices");
-    if ((s = cvm__tri2_split_edge(T, v, t, j))) {
+    if ((s = cvm__tri2_split_edge(T, v, t, j, &res)) == CVM_OK && res != CVM__INS_DONE) {
+        /* the rounded point cannot split this (tiny) subsegment: like a point
+           that rounds onto an end, the split is refused and the triangles it
+           was for are reported, not an error */
+        T->nv--;
+        return CVM_OK;
+    }
+    if (s) {
         if (T->vtri[v] < 0) {
             T->nv--; /* not inserted: nothing changed */
             return s == CVM_E_NOMEM ? cvm__nomem(R->ctx) : s;

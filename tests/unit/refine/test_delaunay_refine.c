@@ -217,6 +217,72 @@ START_TEST(lens_and_no_marching_still_meet_bounds)
 }
 END_TEST
 
+/* Two segments crossing at a small angle inside the unit square: the crossing
+ * vertex that cvm_mesh_triangulate inserts is a join like a shared end, so the
+ * skinny triangles on its concentric shells are exempt and refinement stops
+ * (it used to split towards the crossing until rounding failed: CVM_E_INTERNAL
+ * on random polygons whose holes cross the outer boundary). */
+static void crossing_terminates(cvm_algorithm algo, double deg, double h, double angle)
+{
+    const double a = deg * 3.14159265358979323846 / 180;
+    const double apex[2] = {0.5, 0.5};
+    double xy[16], small, unmet;
+    static const cvm_index seg[] = {0, 1, 1, 2, 2, 3, 3, 0, 4, 5, 6, 7};
+    cvm_mesh *m;
+    cvm_status s;
+    cvm_sizing *sz = NULL;
+    static const double sq[8] = {0, 0, 1, 0, 1, 1, 0, 1};
+    memcpy(xy, sq, sizeof sq);
+    /* two chords through (0.5, 0.5), at +-deg/2 from the x axis */
+    xy[8] = 0.1;
+    xy[9] = 0.5 - 0.4 * tan(a / 2);
+    xy[10] = 0.9;
+    xy[11] = 0.5 + 0.4 * tan(a / 2);
+    xy[12] = 0.1;
+    xy[13] = 0.5 + 0.4 * tan(a / 2);
+    xy[14] = 0.9;
+    xy[15] = 0.5 - 0.4 * tan(a / 2);
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_points(m, xy, 8, 2), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_segments(m, seg, 6), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_MIN_ANGLE_DEG, angle), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_MAX_STEINER, 100000), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+    if (h > 0) {
+        ck_assert_int_eq(cvm_sizing_create(&sz), CVM_OK);
+        ck_assert_int_eq(cvm_sizing_set_uniform(sz, h), CVM_OK);
+    }
+    s = cvm_mesh_refine(m, sz, algo);
+    ck_assert_msg(s == CVM_OK, "%g degrees, algo %d: %s: %s", deg, (int)algo, cvm_status_str(s),
+                  cvm_mesh_errmsg(m));
+    cvmtest_assert_valid(m);
+    /* the wedges stay thin along the whole chords (0.4 from the crossing), so
+     * the bound holds beyond them, or (as small_angle_terminates) beyond where
+     * a wedge is a few sizes wide; what is left near the crossing is counted */
+    ck_assert_double_ge(rtest_min_angle_away(m, apex, 1, h > 0 && 4 * h / tan(a) < 0.41 ? 4 * h / tan(a) : 0.41),
+                        angle - 1e-9);
+    ck_assert_int_eq(cvm_mesh_get_measure(&small, m, CVM_MEASURE_REFINE_SMALL_INPUT_ANGLE), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_get_measure(&unmet, m, CVM_MEASURE_REFINE_UNMET_ANGLE), CVM_OK);
+    ck_assert_double_le(small, unmet);
+    ck_assert_double_le(unmet, 50);
+    cvm_sizing_free(sz);
+    cvm_mesh_free(m);
+}
+
+START_TEST(crossing_segments_terminate)
+{
+    static const double degs[] = {3, 8, 20};
+    size_t i;
+    for (i = 0; i < 3; i++) {
+        crossing_terminates(CVM_ALGO_DELAUNAY, degs[i], 0, 30);
+        crossing_terminates(CVM_ALGO_DELAUNAY, degs[i], 0, 34);
+        crossing_terminates(CVM_ALGO_DELAUNAY, degs[i], 0.05, 30);
+        crossing_terminates(CVM_ALGO_FRONTAL, degs[i], 0.05, 30);
+        crossing_terminates(CVM_ALGO_AFLR, degs[i], 0.05, 30);
+    }
+}
+END_TEST
+
 /* Bounds above Ruppert's guarantee must still terminate in practice (issue 4:
  * up to 33-34 degrees). Before off-centres and the shortest-edge-first queue,
  * circumcentres at 34 degrees ran away on the cylinder and the NACA 0012.
@@ -309,6 +375,7 @@ TCase *refine_delaunay_tcase(void)
     tcase_add_test(tc, point_set_refines_inside_hull);
     tcase_add_test(tc, lens_and_no_marching_still_meet_bounds);
     tcase_add_test(tc, high_angle_bounds_terminate);
+    tcase_add_test(tc, crossing_segments_terminate);
     tcase_add_test(tc, wrong_calls_are_reported);
     return tc;
 }
