@@ -217,6 +217,25 @@ START_TEST(lens_and_no_marching_still_meet_bounds)
 }
 END_TEST
 
+/* Set m's minimum angle and a guarding Steiner limit, triangulate it and refine
+ * it with algo at uniform size h (h <= 0: no sizing); returns the status. */
+static cvm_status bounded_refine(cvm_mesh *m, double angle, double steiner, double h,
+                                 cvm_algorithm algo)
+{
+    cvm_sizing *sz = NULL;
+    cvm_status s;
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_MIN_ANGLE_DEG, angle), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_MAX_STEINER, steiner), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+    if (h > 0) {
+        ck_assert_int_eq(cvm_sizing_create(&sz), CVM_OK);
+        ck_assert_int_eq(cvm_sizing_set_uniform(sz, h), CVM_OK);
+    }
+    s = cvm_mesh_refine(m, sz, algo);
+    cvm_sizing_free(sz);
+    return s;
+}
+
 /* Two segments crossing at a small angle inside the unit square: the crossing
  * vertex that cvm_mesh_triangulate inserts is a join like a shared end, so the
  * skinny triangles on its concentric shells are exempt and refinement stops
@@ -230,7 +249,6 @@ static void crossing_terminates(cvm_algorithm algo, double deg, double h, double
     static const cvm_index seg[] = {0, 1, 1, 2, 2, 3, 3, 0, 4, 5, 6, 7};
     cvm_mesh *m;
     cvm_status s;
-    cvm_sizing *sz = NULL;
     static const double sq[8] = {0, 0, 1, 0, 1, 1, 0, 1};
     memcpy(xy, sq, sizeof sq);
     /* two chords through (0.5, 0.5), at +-deg/2 from the x axis */
@@ -245,14 +263,7 @@ static void crossing_terminates(cvm_algorithm algo, double deg, double h, double
     ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
     ck_assert_int_eq(cvm_mesh_set_points(m, xy, 8, 2), CVM_OK);
     ck_assert_int_eq(cvm_mesh_set_segments(m, seg, 6), CVM_OK);
-    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_MIN_ANGLE_DEG, angle), CVM_OK);
-    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_MAX_STEINER, 100000), CVM_OK);
-    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
-    if (h > 0) {
-        ck_assert_int_eq(cvm_sizing_create(&sz), CVM_OK);
-        ck_assert_int_eq(cvm_sizing_set_uniform(sz, h), CVM_OK);
-    }
-    s = cvm_mesh_refine(m, sz, algo);
+    s = bounded_refine(m, angle, 100000, h, algo);
     ck_assert_msg(s == CVM_OK, "%g degrees, algo %d: %s: %s", deg, (int)algo, cvm_status_str(s),
                   cvm_mesh_errmsg(m));
     cvmtest_assert_valid(m);
@@ -265,7 +276,6 @@ static void crossing_terminates(cvm_algorithm algo, double deg, double h, double
     ck_assert_int_eq(cvm_mesh_get_measure(&unmet, m, CVM_MEASURE_REFINE_UNMET_ANGLE), CVM_OK);
     ck_assert_double_le(small, unmet);
     ck_assert_double_le(unmet, 50);
-    cvm_sizing_free(sz);
     cvm_mesh_free(m);
 }
 
@@ -291,7 +301,6 @@ static void high_bound_terminates(const char *name, long euler, double h, double
 {
     char path[1024];
     cvm_mesh *m;
-    cvm_sizing *sz = NULL;
     cvm_status s;
     rtest_quality q;
     size_t nseg;
@@ -301,14 +310,7 @@ static void high_bound_terminates(const char *name, long euler, double h, double
     segs = rtest_poly_segments(path, &nseg);
     ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
     ck_assert_int_eq(cvm_mesh_read(m, path), CVM_OK);
-    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_MIN_ANGLE_DEG, angle), CVM_OK);
-    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_MAX_STEINER, 200000), CVM_OK);
-    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
-    if (h > 0) {
-        ck_assert_int_eq(cvm_sizing_create(&sz), CVM_OK);
-        ck_assert_int_eq(cvm_sizing_set_uniform(sz, h), CVM_OK);
-    }
-    s = cvm_mesh_refine(m, sz, CVM_ALGO_DELAUNAY);
+    s = bounded_refine(m, angle, 200000, h, CVM_ALGO_DELAUNAY);
     ck_assert_msg(s == CVM_OK, "%s at %g: %s: %s", name, angle, cvm_status_str(s), cvm_mesh_errmsg(m));
     ck_assert_int_eq(cvm_mesh_get_measure(&d, m, CVM_MEASURE_REFINE_UNMET_ANGLE), CVM_OK);
     ck_assert_msg(d == 0, "%s at %g: %g triangles below the bound", name, angle, d);
@@ -317,7 +319,6 @@ static void high_bound_terminates(const char *name, long euler, double h, double
     /* one hole in the annulus, cylinder and NACA 0012 */
     rtest_assert_refined(m, name, segs, nseg, 0, euler, h > 0 ? h : INFINITY, &q);
     ck_assert_msg(q.min_angle >= angle - 1e-9, "%s: min angle %.17g < %g", name, q.min_angle, angle);
-    cvm_sizing_free(sz);
     cvm_mesh_free(m);
     free(segs);
 }
