@@ -52,25 +52,19 @@ static size_t dr_segs_at(cvm__refiner *R, int32_t u, int32_t *out, size_t max)
     return n;
 }
 
-/* Where input segments s1 and s2 cross inside both (not at an end): 1 and the
- * point in *x. Crossing segments always meet at a vertex of the mesh there
- * (cvm_mesh_triangulate splits them), which is a join like a shared end; the
- * point computed here differs from that vertex by rounding only, far below
- * the DR_SHELL_TOL of the shells around it. */
+/* Where input segments s1 and s2 cross inside both (not at an end, decided
+ * by exact orient2d): 1 and the point in *x. Crossing segments always meet at
+ * a vertex of the mesh there (cvm_mesh_triangulate splits them with the same
+ * cvm__segment_intersection2d), which is a join like a shared end. */
 static int dr_crossing(const cvm__refiner *R, int32_t s1, int32_t s2, double *x)
 {
     const double *p = dr_pt(R, R->seg_ends[2 * (size_t)s1]), *p2 = dr_pt(R, R->seg_ends[2 * (size_t)s1 + 1]);
     const double *q = dr_pt(R, R->seg_ends[2 * (size_t)s2]), *q2 = dr_pt(R, R->seg_ends[2 * (size_t)s2 + 1]);
-    double rx = p2[0] - p[0], ry = p2[1] - p[1], sx = q2[0] - q[0], sy = q2[1] - q[1];
-    double d = rx * sy - ry * sx, t, s;
-    if (!(d != 0))
+    double a = cvm__orient2d(p, p2, q), b = cvm__orient2d(p, p2, q2);
+    double c = cvm__orient2d(q, q2, p), d = cvm__orient2d(q, q2, p2);
+    if (!((a > 0 && b < 0) || (a < 0 && b > 0)) || !((c > 0 && d < 0) || (c < 0 && d > 0)))
         return 0;
-    t = ((q[0] - p[0]) * sy - (q[1] - p[1]) * sx) / d;
-    s = ((q[0] - p[0]) * ry - (q[1] - p[1]) * rx) / d;
-    if (!(t > 0 && t < 1 && s > 0 && s < 1))
-        return 0;
-    x[0] = p[0] + t * rx;
-    x[1] = p[1] + t * ry;
+    cvm__segment_intersection2d(p, p2, q, q2, x);
     return 1;
 }
 

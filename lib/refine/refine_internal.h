@@ -255,7 +255,7 @@ typedef struct cvm__refiner {
     size_t nseg;               /* ids 0..nseg-1 (input, then hull) */
     double sin2_min;           /* sin^2 of the requested angle */
     double size2;              /* size test: circumradius^2 <= size2 x (mean size)^2 (1, or
-                                  CVM__FRONTAL_ACCEPT2 in frontal's post-processing) */
+                                  CVM__FRONTAL_ACCEPT2 after the frontal and AFLR passes) */
     double lens_cos2;          /* cos^2(2 x angle) for the lens test */
     double *vls;               /* size at each vertex (+inf: none) */
     int32_t *vseg;             /* per vertex: segment it was split onto, -2 input vertex on a
