@@ -1,6 +1,6 @@
 # cvmesh - build, test, benchmark and install.
 #   make              library (static + shared) and the CLI into build/
-#   make demo         install missing packages, build, mesh a bundled geometry (.vtu + .svg)
+#   make demo         install missing packages, build, mesh the NACA 0012 of examples/data (.vtu + .svg + .png)
 #   make check        install missing packages, build, run every test (see CHECK_STEPS below)
 #   make fuzz         run each libFuzzer target for FUZZ_LONG_TIME seconds (clang)
 #   make bench        benchmarks side by side with Triangle / scipy (tests/bench)
@@ -8,8 +8,9 @@
 #   make amalgamation one-file build/amalgamation/cvmesh.c + cvmesh.h
 #   make clean
 # Variables: CC=gcc|clang, OPENMP=1|0, BUILD=build, SAN=1 (ASan+UBSan), TETGEN=0
-# (TetGen is for the future 3D work and is not linked yet), SHARED_DIR=../shared,
-# FUZZ_TIME=20 (seconds per fuzz target in make check), JOBS=<cores>.
+# (TetGen is for the future 3D work and is not linked yet), FUZZ_TIME=20 (seconds
+# per fuzz target in make check), JOBS=<cores>. Everything reads only files of this
+# repository: the example domains are examples/data (examples/data/make_domains.py).
 
 SHELL := /bin/bash
 
@@ -26,8 +27,11 @@ SAN ?= 0
 FUZZ ?= 0
 TETGEN ?= 0
 PREFIX ?= /usr/local
-SHARED_DIR ?= $(abspath ../shared)
+DATA_DIR := $(CURDIR)/examples/data
+# The interpreter that creates the venv; every Python a target runs is $(VENV_PY).
 PYTHON ?= python3
+VENV := $(abspath $(BUILD))/venv
+VENV_PY := $(VENV)/bin/python
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 FUZZ_TIME ?= 20
 FUZZ_LONG_TIME ?= 600
@@ -68,7 +72,7 @@ TEST_OBJ := $(TEST_SRC:%.c=$(BUILD)/obj/%.o)
 TEST_BIN := $(BUILD)/tests/unit_tests
 CHECK_CFLAGS = $(shell pkg-config --cflags check 2>/dev/null)
 CHECK_LIBS = $(shell pkg-config --libs check 2>/dev/null || echo -lcheck -lsubunit -lrt -lpthread)
-TEST_ENV = CVM_SHARED_DIR=$(SHARED_DIR) CVM_TEST_DATA=$(CURDIR)/tests/data
+TEST_ENV = CVM_DATA_DIR=$(DATA_DIR) CVM_TEST_DATA=$(CURDIR)/tests/data
 
 # Fuzz targets: tests/fuzz/fuzz_<name>.c, seeds in tests/fuzz/corpus/<name>/.
 FUZZ_TARGETS := poly_read node_read cdt vtu_read
@@ -84,6 +88,7 @@ STAGE := $(abspath $(BUILD))/stage
 EXAMPLES_C := $(sort $(wildcard examples/c/*.c))
 
 .PHONY: install-c python fortran install-python install-fortran
+.PHONY: venv check-standalone
 .PHONY: all lib cli tests deps demo check check-unit check-asan check-symbols check-cli \
         check-examples check-python check-fortran check-clang check-noomp check-fuzz \
         check-replay check-valgrind check-amalgamation fuzz fuzz-bins replay-bins bench \
@@ -146,9 +151,9 @@ $(BUILD)/fuzz/replay_%: $(BUILD)/obj/tests/fuzz/fuzz_%.o $(BUILD)/obj/tests/fuzz
 fuzz-bins: $(FUZZ_BINS)
 replay-bins: $(REPLAY_BINS)
 
-# Seed corpus of a target: committed seeds, plus shared and test data for the readers.
+# Seed corpus of a target: committed seeds, plus the example domains and test data for the readers.
 fuzz_seeds = $(wildcard tests/fuzz/corpus/$(1)/*) \
-  $(if $(filter poly_read,$(1)),$(wildcard $(SHARED_DIR)/data/*.poly tests/data/*.poly)) \
+  $(if $(filter poly_read,$(1)),$(wildcard examples/data/*.poly tests/data/*.poly)) \
   $(if $(filter node_read,$(1)),$(wildcard tests/data/*.node))
 
 FUZZ_BUILD := $(BUILD)/fuzzer
@@ -189,11 +194,11 @@ fuzz:
 	$(FUZZ_MAKE) fuzz-bins
 	$(foreach t,$(FUZZ_TARGETS),$(call run_fuzz,$(t),$(FUZZ_LONG_TIME),0,-1))
 
-# Replay every seed (and shared data) through the fuzz targets without libFuzzer.
+# Replay every seed (and the example domains) through the fuzz targets without libFuzzer.
 check-replay: replay-bins
 	@set -e; for t in $(FUZZ_TARGETS); do \
 	  case $$t in \
-	    poly_read) extra="$(wildcard $(SHARED_DIR)/data/*.poly tests/data/*.poly)";; \
+	    poly_read) extra="$(wildcard examples/data/*.poly tests/data/*.poly)";; \
 	    node_read) extra="$(wildcard tests/data/*.node)";; \
 	    *) extra="";; \
 	  esac; \
@@ -206,22 +211,29 @@ check-replay: replay-bins
 deps:
 	@sh .ci/deps.sh
 
+# The NACA 0012 of examples/data: its triangulation and the three refiners'
+# meshes, each as .vtu and as an .svg (PNG beside it when rsvg-convert exists)
+# framed on the airfoil.
+DEMO_IN := examples/data/naca0012.poly
+DEMO_WINDOW := --svg-window=-0.45,-0.6,1.55,0.6
 demo: deps
 	$(MAKE) $(PAR) --no-print-directory all
 	@mkdir -p $(BUILD)/demo
-	$(CLI) triangulate $(SHARED_DIR)/data/naca0012.poly -o $(BUILD)/demo/naca0012.vtu --svg $(BUILD)/demo/naca0012.svg --quality
-	$(CLI) refine $(SHARED_DIR)/data/naca0012.poly --algo frontal --size 0.5 \
-	  -o $(BUILD)/demo/naca0012_frontal.vtu --svg $(BUILD)/demo/naca0012_frontal.svg --quality
-	$(CLI) refine $(SHARED_DIR)/data/naca0012.poly --algo delaunay --size 0.5 \
-	  -o $(BUILD)/demo/naca0012_delaunay.vtu --svg $(BUILD)/demo/naca0012_delaunay.svg
-	$(CLI) refine $(SHARED_DIR)/data/naca0012.poly --algo aflr --size 0.5 \
-	  -o $(BUILD)/demo/naca0012_aflr.vtu --svg $(BUILD)/demo/naca0012_aflr.svg
-	@echo "demo: wrote $(BUILD)/demo/naca0012{,_frontal,_delaunay,_aflr}.{vtu,svg}"
+	$(CLI) triangulate $(DEMO_IN) -o $(BUILD)/demo/naca0012.vtu --svg $(BUILD)/demo/naca0012.svg $(DEMO_WINDOW) --quality
+	@set -e; for a in frontal delaunay aflr; do \
+	  echo "$(CLI) refine $(DEMO_IN) --algo $$a --auto 4 --grading 3 -o $(BUILD)/demo/naca0012_$$a.vtu --svg $(BUILD)/demo/naca0012_$$a.svg $(DEMO_WINDOW)"; \
+	  $(CLI) refine $(DEMO_IN) --algo $$a --auto 4 --grading 3 -o $(BUILD)/demo/naca0012_$$a.vtu \
+	    --svg $(BUILD)/demo/naca0012_$$a.svg $(DEMO_WINDOW) $$([ $$a = frontal ] && echo --quality); \
+	done
+	@if command -v rsvg-convert >/dev/null 2>&1; then \
+	  for f in $(BUILD)/demo/*.svg; do rsvg-convert "$$f" -o "$${f%.svg}.png"; done; \
+	  echo "demo: wrote $(BUILD)/demo/naca0012{,_frontal,_delaunay,_aflr}.{vtu,svg,png}"; \
+	else echo "demo: wrote $(BUILD)/demo/naca0012{,_frontal,_delaunay,_aflr}.{vtu,svg} (no rsvg-convert: no PNG copies)"; fi
 
 # ---- make check ------------------------------------------------------------
 # Each step prints "== step ==" and its time; the first failure stops the run.
-CHECK_STEPS := build check-unit check-symbols check-cli check-examples check-asan check-amalgamation \
-               check-clang check-noomp check-fuzz check-python check-fortran
+CHECK_STEPS := build check-unit check-symbols check-cli check-standalone check-examples check-asan \
+               check-amalgamation check-clang check-noomp check-fuzz check-python check-fortran
 
 check: deps
 	@start=$$(date +%s); set -e; \
@@ -258,12 +270,26 @@ check-noomp:
 	  echo "check-noomp: OPENMP=0 library still links an OpenMP runtime"; exit 1; fi
 	$(TEST_ENV) $(BUILD)/noomp/tests/unit_tests
 
+# No file reaches outside the repository; a clone of HEAD alone demos and tests.
+check-standalone:
+	sh .ci/check_standalone.sh
+
 check-symbols: $(SHARED)
 	sh .ci/check_symbols.sh $(SHARED) .ci/exported_symbols.txt
 
-check-cli: $(CLI)
+# The venv of every Python that a target runs (the CLI tests' checker, the
+# binding tests, the benchmarks), from tests/requirements.txt.
+venv: $(VENV)/.requirements
+$(VENV)/.requirements: tests/requirements.txt
+	@test -x $(VENV_PY) || { echo "venv: creating $(VENV)"; $(PYTHON) -m venv $(VENV); }
+	$(VENV_PY) -m pip install -q --disable-pip-version-check -r $<
+	@touch $@
+
+# The independent checker's own tests, then the CLI tests that use it.
+check-cli: $(CLI) venv
 	@if [ ! -f tests/cli/run.sh ]; then echo "check-cli: tests/cli/run.sh is missing"; exit 1; fi
-	sh tests/cli/run.sh $(CLI) $(SHARED_DIR)
+	$(VENV_PY) -m pytest -q -p no:cacheprovider tests/tools
+	sh tests/cli/run.sh $(CLI) $(DATA_DIR) $(VENV_PY)
 
 # Build every example against an installed copy found through pkg-config, then run it.
 check-examples:
@@ -279,18 +305,18 @@ check-examples:
 	done
 
 # Bindings: their engineers own these scripts; skipped until they exist.
-check-python:
+check-python: venv
 	@if [ -f bindings/python/check.sh ]; then \
 	  CVM_BUILD=$(abspath $(BUILD)) CC=$(CC) PYTHON=$(PYTHON) bash bindings/python/check.sh; \
 	else echo "check-python: skipped (bindings/python/check.sh not present yet)"; fi
 
-check-fortran:
+check-fortran: venv
 	@if [ -f bindings/fortran/check.sh ]; then \
-	  CVM_BUILD=$(abspath $(BUILD)) CC=$(CC) bash bindings/fortran/check.sh; \
+	  CVM_BUILD=$(abspath $(BUILD)) CC=$(CC) PYTHON=$(VENV_PY) bash bindings/fortran/check.sh; \
 	else echo "check-fortran: skipped (bindings/fortran/check.sh not present yet)"; fi
 
 bench: all
-	sh tests/bench/run.sh $(BUILD) $(SHARED_DIR)
+	sh tests/bench/run.sh $(BUILD) $(DATA_DIR)
 
 # ---- amalgamation ----------------------------------------------------------
 # One cvmesh.c holding every library source with internal headers inlined

@@ -707,7 +707,19 @@ typedef enum cvm_option {
      *  triangles sharing an unconstrained edge (same region) whose power vertices are
      *  closer than tol * l / sqrt(3) belong to the same merged cell (see
      *  cvm_mesh_copy_dual_merge_groups()). Read by the measures and copies too. */
-    CVM_OPT_DUAL_MERGE_TOL = 520
+    CVM_OPT_DUAL_MERGE_TOL = 520,
+
+    /* ---- output (600-699) ---- */
+    /** Window of an .svg picture written by cvm_mesh_write(), in mesh coordinates:
+     *  the picture shows [XMIN, XMAX] x [YMIN, YMAX] (800 px wide, the height in
+     *  proportion) and leaves out the triangles that lie wholly outside it. Default
+     *  0 for all four, bounds [-1e300, 1e300]; the window is used only when
+     *  XMAX > XMIN and YMAX > YMIN, otherwise the picture shows the whole mesh.
+     *  Other formats ignore these options. */
+    CVM_OPT_SVG_WINDOW_XMIN = 600,
+    CVM_OPT_SVG_WINDOW_YMIN = 601, /**< see CVM_OPT_SVG_WINDOW_XMIN */
+    CVM_OPT_SVG_WINDOW_XMAX = 602, /**< see CVM_OPT_SVG_WINDOW_XMIN */
+    CVM_OPT_SVG_WINDOW_YMAX = 603  /**< see CVM_OPT_SVG_WINDOW_XMIN */
 } cvm_option;
 
 /** Bounds of an option; the one frozen struct of the ABI. */

@@ -7,8 +7,8 @@ ifeq ($(origin FC),default)
   FC := gfortran
 endif
 
-fortran: $(STATIC)
-	CVM_BUILD=$(abspath $(BUILD)) FC=$(FC) PYTHON=$(PYTHON) CVMESH_LIB=$(abspath $(STATIC)) \
+fortran: $(STATIC) venv
+	CVM_BUILD=$(abspath $(BUILD)) FC=$(FC) PYTHON=$(VENV_PY) CVMESH_LIB=$(abspath $(STATIC)) \
 	  LIBS="-lm $(OMPFLAGS)" sh bindings/fortran/check.sh --build-only
 
 install-fortran: fortran

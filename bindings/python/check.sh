@@ -1,6 +1,6 @@
 #!/bin/sh
 # bindings/python/check.sh - build the Python binding and run tests/python.
-#  1. a venv in $BUILD/venv with numpy, pytest, swig (and meshio, matplotlib) from PyPI;
+#  1. the venv $BUILD/venv with tests/requirements.txt, swig (and matplotlib) from PyPI;
 #  2. a wheel built as users build it: `pip wheel` in an isolated build
 #     environment whose SWIG is the swig wheel, compiler warnings as errors;
 #     the wheel must contain the SWIG-generated cvmesh/capi.py; install, pytest;
@@ -25,9 +25,9 @@ if [ ! -x "$venv/bin/python" ]; then
     "$PYTHON" -m venv "$venv"
 fi
 py=$venv/bin/python
-"$py" -m pip install $pipq numpy pytest swig "setuptools>=77"
-# optional: the tests of Mesh.to_meshio() and Mesh.plot() skip without them
-"$py" -m pip install $pipq meshio matplotlib || echo "check-python: meshio/matplotlib not installed; their tests will skip"
+"$py" -m pip install $pipq -r "$root/tests/requirements.txt" swig "setuptools>=77"
+# optional: the tests of Mesh.plot() skip without it
+"$py" -m pip install $pipq matplotlib || echo "check-python: matplotlib not installed; its tests will skip"
 
 # A fresh build tree per SWIG, so no object of an earlier build is reused.
 build_wheel() {  # build_wheel TAG DIST [pip options]: build, check and install a wheel

@@ -129,6 +129,10 @@ cvm_status cvm_mesh_write(cvm_mesh *m, const char *path)
     if ((s = cvm__mesh_out_build(m, &mo, fmt == CVM__FMT_NODE,
                                  fmt == CVM__FMT_SVG || fmt == CVM__FMT_VTU)))
         return s;
+    mo.window[0] = cvm__opt(m, CVM_OPT_SVG_WINDOW_XMIN);
+    mo.window[1] = cvm__opt(m, CVM_OPT_SVG_WINDOW_YMIN);
+    mo.window[2] = cvm__opt(m, CVM_OPT_SVG_WINDOW_XMAX);
+    mo.window[3] = cvm__opt(m, CVM_OPT_SVG_WINDOW_YMAX);
     s = cvm__write_file(&m->ctx, path, &mo);
     cvm__mesh_out_free(m, &mo);
     return s;

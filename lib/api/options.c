@@ -45,6 +45,10 @@ static const option_def k_options[] = {
     {CVM_OPT_DUAL_MAXMIN_TRIALS, "DUAL_MAXMIN_TRIALS", {0, 64, 0, 1}},
     {CVM_OPT_DUAL_MERGE_TOL, "DUAL_MERGE_TOL", {0, 1, 0.1, 0}},
     {CVM_OPT_AFLR_SMOOTH_LAYERS, "AFLR_SMOOTH_LAYERS", {0, 1000, 0, 1}},
+    {CVM_OPT_SVG_WINDOW_XMIN, "SVG_WINDOW_XMIN", {-1e300, 1e300, 0, 0}},
+    {CVM_OPT_SVG_WINDOW_YMIN, "SVG_WINDOW_YMIN", {-1e300, 1e300, 0, 0}},
+    {CVM_OPT_SVG_WINDOW_XMAX, "SVG_WINDOW_XMAX", {-1e300, 1e300, 0, 0}},
+    {CVM_OPT_SVG_WINDOW_YMAX, "SVG_WINDOW_YMAX", {-1e300, 1e300, 0, 0}},
 };
 
 #define NOPT (sizeof k_options / sizeof k_options[0])

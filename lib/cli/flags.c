@@ -66,6 +66,56 @@ static const cli_option_flag k_flags[] = {
 
 #define NFLAGS (sizeof k_flags / sizeof k_flags[0])
 
+/* --svg-window XMIN,YMIN,XMAX,YMAX: one flag, four options. */
+#define WINDOW_FLAG "--svg-window"
+static const cli_option_flag k_window[4] = {
+    {WINDOW_FLAG, "XMIN", CVM_OPT_SVG_WINDOW_XMIN, 0, TRI | REF | OPT, ""},
+    {WINDOW_FLAG, "YMIN", CVM_OPT_SVG_WINDOW_YMIN, 0, TRI | REF | OPT, ""},
+    {WINDOW_FLAG, "XMAX", CVM_OPT_SVG_WINDOW_XMAX, 0, TRI | REF | OPT, ""},
+    {WINDOW_FLAG, "YMAX", CVM_OPT_SVG_WINDOW_YMAX, 0, TRI | REF | OPT, ""},
+};
+
+/* The four numbers of --svg-window into set; 1, or -1 after printing why. */
+static int parse_window(int argc, char **argv, int *i, cli_setting *set, int *nset)
+{
+    const char *arg = argv[*i] + strlen(WINDOW_FLAG), *p;
+    double v[4];
+    int k;
+    if (*arg == '=') {
+        p = arg + 1;
+    } else if (*i + 1 < argc) {
+        p = argv[++*i];
+    } else {
+        fprintf(stderr, "cvmesh: " WINDOW_FLAG " needs a value (XMIN,YMIN,XMAX,YMAX)\n");
+        return -1;
+    }
+    for (k = 0; k < 4; k++) {
+        char *end;
+        v[k] = strtod(p, &end);
+        if (end == p || !isfinite(v[k]) || *end != (k < 3 ? ',' : '\0')) {
+            fprintf(stderr, "cvmesh: " WINDOW_FLAG " '%s': expected four numbers XMIN,YMIN,XMAX,YMAX\n",
+                    argv[*i]);
+            return -1;
+        }
+        p = end + 1;
+    }
+    if (!(v[2] > v[0] && v[3] > v[1])) {
+        fprintf(stderr, "cvmesh: " WINDOW_FLAG " %.17g,%.17g,%.17g,%.17g: needs XMAX > XMIN and YMAX > YMIN\n",
+                v[0], v[1], v[2], v[3]);
+        return -1;
+    }
+    if (*nset + 4 > CLI_MAX_SETTINGS) {
+        fprintf(stderr, "cvmesh: too many option flags\n");
+        return -1;
+    }
+    for (k = 0; k < 4; k++) {
+        set[*nset].flag = &k_window[k];
+        set[*nset].value = v[k];
+        (*nset)++;
+    }
+    return 1;
+}
+
 /* The flag named by arg ("--seed" or "--seed=5"); *value_out points after '='. */
 static const cli_option_flag *find(unsigned cmd, const char *arg, const char **value_out)
 {
@@ -92,6 +142,9 @@ int cli_parse_option_flag(unsigned cmd, int argc, char **argv, int *i, cli_setti
     const cli_option_flag *f = find(cmd, argv[*i], &val);
     char *end;
     double v;
+    size_t nw = strlen(WINDOW_FLAG);
+    if (strncmp(argv[*i], WINDOW_FLAG, nw) == 0 && (argv[*i][nw] == '\0' || argv[*i][nw] == '='))
+        return parse_window(argc, argv, i, set, nset);
     if (!f)
         return 0;
     if (*nset >= CLI_MAX_SETTINGS) {
@@ -148,6 +201,8 @@ void cli_print_option_flags(FILE *f, unsigned cmd)
             fprintf(f, " [default %.17g, range %.17g..%.17g]", b.def, b.lo, b.hi);
         fputc('\n', f);
     }
+    fprintf(f, "  %-26s %s\n", WINDOW_FLAG " X0,Y0,X1,Y1",
+            "the .svg picture shows only [X0, X1] x [Y0, Y1] (default: the whole mesh)");
 }
 
 int cli_parse_algo(const char *name, const char *s, int with_aflr, cvm_algorithm *out)

@@ -97,6 +97,7 @@ typedef struct cvm__mesh_out {
     const double *weight;   /* nv or NULL: vertex weights; when set, vattr's first column
                                holds them too (.node writes it; .vtu writes "weight" apart) */
     const double *tlayer;   /* nt or NULL: AFLR layer index per triangle (SVG colours by it) */
+    double window[4];       /* SVG view xmin, ymin, xmax, ymax; unused unless xmax > xmin, ymax > ymin */
 } cvm__mesh_out;
 
 /* ---- output: the power cells of a mesh (polygons), borrowed arrays ---- */

@@ -12,7 +12,7 @@ import numpy as np
 
 from benchlib import read_poly
 
-BUILD, SHARED = sys.argv[1], sys.argv[2]
+BUILD, DOMAINS = sys.argv[1], sys.argv[2]
 SIZE = int(os.environ.get("CVM_BENCH_N", "1000000"))
 REPS = int(os.environ.get("CVM_BENCH_REPS", "5"))
 BIN = os.path.join(BUILD, "bench", "bench_delaunay")
@@ -90,10 +90,10 @@ def main():
             name, len(pts), c["median_s"], t_tri, t_qh, c["median_s"] / t_tri, c["median_s"] / t_qh,
             c["triangles"], c["peak_bytes"] / max(1, c["triangles"]), mem_tri))
         sys.stdout.flush()
-    for poly in sorted(os.listdir(os.path.join(SHARED, "data"))):
+    for poly in sorted(os.listdir(DOMAINS)):
         if not poly.endswith(".poly"):
             continue
-        path = os.path.join(SHARED, "data", poly)
+        path = os.path.join(DOMAINS, poly)
         c = run_cvm("poly", path)
         P, S, H = read_poly(path)
         a = {"vertices": P, "segments": S}

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Dual (power diagram) optimisation benchmark: cvmesh's cvm_mesh_optimise_dual on the
-shared geometries after Delaunay refinement and after frontal refinement, with both local
+example domains after Delaunay refinement and after frontal refinement, with both local
 solvers (pattern search and Modified Cuckoo Search), side by side in the same run with
 Triangle's raw mesh (PyPI `triangle`, switches pq30a<A>, A = sqrt(3)/4 h^2), that mesh after
 20 iterations of Lloyd smoothing (written here: every vertex on no segment moves to the
@@ -18,14 +18,14 @@ cvmesh rows are measured by the C driver (bench_dual.c, public API; every mesh p
 cvm_mesh_check); Triangle and Lloyd rows by the numpy code below (zero weights: the dual
 vertex is the circumcentre).
 
-usage: bench_dual.py BUILD SHARED   (make bench calls it through run.sh)
+usage: bench_dual.py BUILD DOMAINS   (make bench calls it through run.sh)
 """
 import os, subprocess, sys, tempfile, time
 import numpy as np
 
 from benchlib import build_driver, read_poly
 
-BUILD, SHARED = sys.argv[1], sys.argv[2]
+BUILD, DOMAINS = sys.argv[1], sys.argv[2]
 CASES = [("square", 0.02), ("channel", 0.02), ("annulus", 0.1), ("cylinder", 0.2),
          ("naca0012", 0.2)]
 LARGE = [("square", 0.006)]   # about 1e5 triangles (Triangle's mesh)
@@ -195,7 +195,7 @@ def main():
         have_triangle = False
     with tempfile.TemporaryDirectory() as tmp:
         for (name, h), large in [(c, False) for c in CASES] + [(c, True) for c in LARGE]:
-            poly = os.path.join(SHARED, "data", name + ".poly")
+            poly = os.path.join(DOMAINS, name + ".poly")
             s_tri = None
             if have_triangle:
                 xy, segs, holes = read_poly(poly)
@@ -229,7 +229,7 @@ def main():
             sys.stdout.flush()
         # about 1e5 triangles from cvmesh's own refiners (sizes differ: see LARGE_CVM)
         for name, algo, h, label in LARGE_CVM:
-            cvm_rows(name + "-1e5", os.path.join(SHARED, "data", name + ".poly"), h, algo, label, None)
+            cvm_rows(name + "-1e5", os.path.join(DOMAINS, name + ".poly"), h, algo, label, None)
         sys.stdout.flush()
 
 

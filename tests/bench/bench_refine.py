@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Refinement benchmark: cvmesh (Delaunay refinement, frontal-Delaunay and AFLR) side by
-side with Triangle (PyPI `triangle`, switches pq30a<A>) on the shared geometries
+side with Triangle (PyPI `triangle`, switches pq30a<A>) on the example domains (examples/data)
 at a uniform size h, in the same run, on one core.
 
 Triangle gets the area bound A = sqrt(3)/4 h^2 (an equilateral triangle of edge
@@ -31,14 +31,14 @@ still meets that bound (bisection).
 A last row times Delaunay refinement of the square to about 1e6 triangles
 against Triangle at a matched triangle count (the speed target of issue 4).
 
-usage: bench_refine.py BUILD SHARED   (make bench calls it through run.sh)
+usage: bench_refine.py BUILD DOMAINS   (make bench calls it through run.sh)
 """
 import os, subprocess, sys, tempfile, time
 import numpy as np
 
 from benchlib import build_driver, read_poly
 
-BUILD, SHARED = sys.argv[1], sys.argv[2]
+BUILD, DOMAINS = sys.argv[1], sys.argv[2]
 REPS = int(os.environ.get("CVM_BENCH_REPS", "11"))
 METHODS = [int(x) for x in os.environ.get("CVM_BENCH_SMOOTH_METHODS", "").split(",") if x]
 CASES = [("square", 0.02), ("channel", 0.02), ("annulus", 0.1), ("cylinder", 0.2),
@@ -201,14 +201,14 @@ def run_gmsh(poly, h, algo):
     return ts[len(ts) // 2], np.asarray(coord).reshape(-1, 3)[:, :2], tri
 
 
-def run_1e6(shared, tmp):
+def run_1e6(domains, tmp):
     """The speed target of issue 4: Delaunay refinement of the unit square to
     about 1e6 triangles against Triangle at a matched triangle count (cvmesh
     h = 0.00115: circumradius <= h; Triangle pq30a with h = 0.0019), runs
     interleaved (cvmesh, Triangle, cvmesh, ...) so load on a shared machine
     hits both alike; medians of REPS."""
     import triangle
-    poly = os.path.join(shared, "data", "square.poly")
+    poly = os.path.join(domains, "square.poly")
     xy, segs, _ = read_poly(poly)
     a = dict(vertices=xy, segments=segs)
     sw = "pq30a%.12f" % (np.sqrt(3) / 4 * 0.0019 ** 2)
@@ -282,7 +282,7 @@ def main():
         print("# Gmsh skipped (its system libraries are missing; see run.sh)")
     with tempfile.TemporaryDirectory() as tmp:
         for name, h in CASES:
-            poly = os.path.join(SHARED, "data", name.split("-")[0] + ".poly")
+            poly = os.path.join(DOMAINS, name.split("-")[0] + ".poly")
             rows = []
             # Triangle and the three cvmesh refiners run interleaved, one run each
             # per round, so that drift of the machine's speed hits all alike;
@@ -330,7 +330,7 @@ def main():
             sys.stdout.flush()
         try:
             if not METHODS:
-                run_1e6(SHARED, tmp)
+                run_1e6(DOMAINS, tmp)
         except ImportError:
             print("# Triangle (pip triangle) not installed: 1e6 square row skipped")
 

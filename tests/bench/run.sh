@@ -1,9 +1,10 @@
 #!/bin/sh
-# run.sh BUILD SHARED - build the benchmark drivers and run every benchmark
-# beside its peer (Triangle, scipy and Gmsh from PyPI, in a venv under BUILD).
+# run.sh BUILD DOMAINS - build the benchmark drivers and run every benchmark on
+# the example domains (DOMAINS/*.poly) beside its peer (Triangle, scipy and Gmsh
+# from PyPI, in the venv under BUILD).
 set -eu
 BUILD=$1
-SHARED=$2
+DOMAINS=$2
 CC=${CC:-cc}
 mkdir -p "$BUILD/bench"
 $CC -std=c99 -O2 -Iinclude -o "$BUILD/bench/bench_delaunay" tests/bench/bench_delaunay.c \
@@ -37,9 +38,9 @@ if command -v dpkg-query >/dev/null 2>&1; then
         fi
     fi
 fi
-OMP_NUM_THREADS=1 "$VENV/bin/python" tests/bench/bench_delaunay.py "$BUILD" "$SHARED"
+OMP_NUM_THREADS=1 "$VENV/bin/python" tests/bench/bench_delaunay.py "$BUILD" "$DOMAINS"
 for extra in tests/bench/bench_refine.py tests/bench/bench_dual.py; do
     if [ -f "$extra" ]; then
-        OMP_NUM_THREADS=1 "$VENV/bin/python" "$extra" "$BUILD" "$SHARED"
+        OMP_NUM_THREADS=1 "$VENV/bin/python" "$extra" "$BUILD" "$DOMAINS"
     fi
 done

@@ -1,20 +1,27 @@
 #!/bin/sh
-# run.sh CLI SHARED_DIR - end-to-end tests of the cvmesh program: every shared
-# .poly to every output format, help and version, bad command lines (exit 2),
-# bad inputs and failed writes (exit 1, one line naming file:line, no output
-# file left). When python3 has numpy (and meshio), the outputs are also checked
-# by ../shared/tools/verify_mesh.py (and read back by meshio).
+# run.sh CLI DOMAINS PYTHON - end-to-end tests of the cvmesh program: every
+# example domain (DOMAINS/*.poly) to every output format, help and version, bad
+# command lines (exit 2), bad inputs and failed writes (exit 1, one line naming
+# file:line, no output file left). The outputs are checked by the project's own
+# tests/tools/verify_mesh.py and read back by meshio, both run by PYTHON (the
+# venv of make check, with numpy and meshio).
 # Prints "N passed, M failed" last; exits 1 if anything failed.
 set -e
 
-if [ $# -ne 2 ]; then
-    echo "usage: sh tests/cli/run.sh path/to/cvmesh SHARED_DIR" >&2
+if [ $# -ne 3 ]; then
+    echo "usage: sh tests/cli/run.sh path/to/cvmesh DOMAINS_DIR PYTHON" >&2
     exit 2
 fi
 CLI=$1
-SHARED=$2
+DOMAINS=$2
+PY=$3
 case $CLI in /*) ;; *) CLI=$(pwd)/$CLI ;; esac
 HERE=$(cd "$(dirname "$0")" && pwd)
+VERIFY=$HERE/../tools/verify_mesh.py
+if ! "$PY" -c 'import numpy, meshio' > /dev/null 2>&1; then
+    echo "run.sh: $PY lacks numpy or meshio (make check-cli builds the venv from tests/requirements.txt)" >&2
+    exit 2
+fi
 DATA=$HERE/../data
 TMP=$(mktemp -d "${TMPDIR:-/tmp}/cvmesh_cli.XXXXXX")
 trap 'rm -rf "$TMP"' EXIT INT TERM
@@ -50,12 +57,8 @@ expect_empty_dir() {
     if [ -z "$(ls -A "$2")" ]; then pass; else fail "$1: files left: $(ls -A "$2" | tr '\n' ' ')"; fi
 }
 
-HAVE_NUMPY=0
-HAVE_MESHIO=0
-if command -v python3 > /dev/null 2>&1; then
-    if python3 -c 'import numpy' > /dev/null 2>&1; then HAVE_NUMPY=1; fi
-    if python3 -c 'import meshio' > /dev/null 2>&1; then HAVE_MESHIO=1; fi
-fi
+HAVE_NUMPY=1
+HAVE_MESHIO=1
 
 # ---- help and version -------------------------------------------------------
 expect_exit 0 "--help" "$CLI" --help
@@ -77,20 +80,25 @@ expect_exit 2 "no arguments" "$CLI"
 expect_exit 2 "unknown command" "$CLI" frobnicate
 expect_one_line "unknown command"
 expect_exit 2 "no input" "$CLI" triangulate -o "$OUT/x.vtu"
-expect_exit 2 "unknown flag" "$CLI" triangulate "$SHARED/data/square.poly" --frobnicate
+expect_exit 2 "unknown flag" "$CLI" triangulate "$DOMAINS/square.poly" --frobnicate
 expect_one_line "unknown flag"
-expect_exit 2 "unknown output format" "$CLI" triangulate "$SHARED/data/square.poly" -o "$OUT/x.stl"
-expect_exit 2 "--svg without .svg" "$CLI" triangulate "$SHARED/data/square.poly" --svg "$OUT/x.png"
-expect_exit 2 "-o without a name" "$CLI" triangulate "$SHARED/data/square.poly" -o
-expect_exit 2 "--seed not a number" "$CLI" triangulate "$SHARED/data/square.poly" --seed abc -o "$OUT/x.vtu"
-expect_exit 2 "--seed out of range" "$CLI" triangulate "$SHARED/data/square.poly" --seed -1 -o "$OUT/x.vtu"
+expect_exit 2 "unknown output format" "$CLI" triangulate "$DOMAINS/square.poly" -o "$OUT/x.stl"
+expect_exit 2 "--svg without .svg" "$CLI" triangulate "$DOMAINS/square.poly" --svg "$OUT/x.png"
+expect_exit 2 "--svg-window with three numbers" "$CLI" triangulate "$DOMAINS/square.poly" --svg "$OUT/x.svg" \
+    --svg-window 0,0,1
+expect_grep "--svg-window with three numbers" "$TMP/err" "expected four numbers"
+expect_exit 2 "--svg-window empty" "$CLI" refine "$DOMAINS/square.poly" --svg "$OUT/x.svg" --svg-window=0,1,1,0
+expect_grep "--svg-window empty" "$TMP/err" "YMAX > YMIN"
+expect_exit 2 "-o without a name" "$CLI" triangulate "$DOMAINS/square.poly" -o
+expect_exit 2 "--seed not a number" "$CLI" triangulate "$DOMAINS/square.poly" --seed abc -o "$OUT/x.vtu"
+expect_exit 2 "--seed out of range" "$CLI" triangulate "$DOMAINS/square.poly" --seed -1 -o "$OUT/x.vtu"
 expect_grep "--seed out of range quotes the bounds" "$TMP/err" "--seed"
 expect_one_line "--seed out of range"
-expect_exit 2 "--threads too many" "$CLI" triangulate "$SHARED/data/square.poly" --threads=5000 -o "$OUT/x.vtu"
+expect_exit 2 "--threads too many" "$CLI" triangulate "$DOMAINS/square.poly" --threads=5000 -o "$OUT/x.vtu"
 expect_empty_dir "bad command lines" "$OUT"
 
-# ---- every shared geometry to every format ---------------------------------
-for poly in "$SHARED"/data/*.poly; do
+# ---- every example domain to every format ---------------------------------
+for poly in "$DOMAINS"/*.poly; do
     name=$(basename "$poly" .poly)
     OUT=$TMP/$name
     mkdir "$OUT"
@@ -106,14 +114,14 @@ for poly in "$SHARED"/data/*.poly; do
     done
     if ls "$OUT" | grep -q '\.tmp\.'; then fail "$name: temporary files left"; else pass; fi
     if [ "$HAVE_NUMPY" -eq 1 ]; then
-        if python3 "$SHARED/tools/verify_mesh.py" "$poly" "$OUT/$name" > "$OUT/verify.json" 2>&1; then
+        if "$PY" "$VERIFY" "$poly" "$OUT/$name" > "$OUT/verify.json" 2>&1; then
             pass
         else
             fail "$name: verify_mesh.py: $(tail -c 400 "$OUT/verify.json")"
         fi
     fi
     if [ "$HAVE_MESHIO" -eq 1 ]; then
-        if python3 -c 'import sys, meshio
+        if "$PY" -c 'import sys, meshio
 for f in sys.argv[1:]:
     m = meshio.read(f)
     assert len(m.points) > 0 and any(c.type == "triangle" for c in m.cells), f' \
@@ -128,7 +136,16 @@ done
 # ---- report, timings, extra picture, determinism ---------------------------
 OUT=$TMP/report
 mkdir "$OUT"
-expect_exit 0 "--quality --timings --svg" "$CLI" triangulate "$SHARED/data/annulus.poly" \
+
+# A picture framed on the airfoil: the window's aspect, fewer triangles than the whole mesh.
+expect_exit 0 "--svg-window" "$CLI" refine "$DOMAINS/naca0012.poly" --size 1 --svg "$OUT/whole.svg"
+expect_exit 0 "--svg-window" "$CLI" refine "$DOMAINS/naca0012.poly" --size 1 --svg "$OUT/win.svg" \
+    --svg-window=-0.45,-0.6,1.55,0.6
+expect_grep "--svg-window" "$OUT/win.svg" 'viewBox="0 0 800.00 522.00"'
+expect_grep "--svg-window" "$OUT/win.svg" '<clipPath id="window">'
+if [ "$(grep -c '<polygon' "$OUT/win.svg")" -lt "$(grep -c '<polygon' "$OUT/whole.svg")" ]; then pass
+else fail "--svg-window: the framed picture draws as many triangles as the whole one"; fi
+expect_exit 0 "--quality --timings --svg" "$CLI" triangulate "$DOMAINS/annulus.poly" \
     -o "$OUT/a.vtu" --svg "$OUT/a.svg" --quality --timings --seed 3 --threads 1
 for want in "vertices" "triangles" "min angle" "max angle" "angles in [55, 65] deg" \
             "obtuse (not well-centred)" "interior degree 6" "min dual edge ratio" \
@@ -139,9 +156,9 @@ for phase in read triangulate "recover segments" write; do
     if grep -E -q "^$phase: [0-9]+\.[0-9]+$" "$TMP/out"; then pass; else fail "--timings: no '$phase: seconds' line"; fi
 done
 if [ -s "$OUT/a.vtu" ] && [ -s "$OUT/a.svg" ]; then pass; else fail "-o with --svg: a file is missing"; fi
-expect_exit 0 "same run again" "$CLI" triangulate "$SHARED/data/annulus.poly" -o "$OUT/b.vtu" --seed 3
+expect_exit 0 "same run again" "$CLI" triangulate "$DOMAINS/annulus.poly" -o "$OUT/b.vtu" --seed 3
 if cmp -s "$OUT/a.vtu" "$OUT/b.vtu"; then pass; else fail "the same input and seed gave different bytes"; fi
-expect_exit 0 "write with no -o" "$CLI" triangulate "$SHARED/data/square.poly" --quality
+expect_exit 0 "write with no -o" "$CLI" triangulate "$DOMAINS/square.poly" --quality
 
 # ---- other inputs -----------------------------------------------------------
 OUT=$TMP/inputs
@@ -157,14 +174,14 @@ expect_grep "regions give cell data" "$OUT/r.vtu" 'Name="attribute"'
 OUT=$TMP/optimise
 mkdir "$OUT"
 for algo in frontal delaunay; do
-    expect_exit 0 "optimise $algo" "$CLI" optimise "$SHARED/data/annulus.poly" --algo $algo --size 0.2 \
+    expect_exit 0 "optimise $algo" "$CLI" optimise "$DOMAINS/annulus.poly" --algo $algo --size 0.2 \
         -o "$OUT/o_$algo.node" --quality --seed 5
     expect_grep "optimise $algo: compliant" "$TMP/out" "non-compliant (not merged)   0.0000 %"
     for want in "power vertex outside" "merged" "time-step proxy" "sweeps" "min angle"; do
         expect_grep "optimise --quality" "$TMP/out" "$want"
     done
-    if [ "$HAVE_NUMPY" -eq 1 ] || python3 -c 'import fractions' > /dev/null 2>&1; then
-        if python3 "$SHARED/tools/verify_mesh.py" "$SHARED/data/annulus.poly" "$OUT/o_$algo" --weights \
+    if [ "$HAVE_NUMPY" -eq 1 ]; then
+        if "$PY" "$VERIFY" "$DOMAINS/annulus.poly" "$OUT/o_$algo" --weights \
                --no-delaunay > "$OUT/verify.json" 2>&1 &&
            grep -q '"pct_power_outside": 0.0,' "$OUT/verify.json"; then
             pass
@@ -173,15 +190,15 @@ for algo in frontal delaunay; do
         fi
     fi
 done
-expect_exit 0 "optimise again, same seed" "$CLI" optimise "$SHARED/data/annulus.poly" --algo frontal \
+expect_exit 0 "optimise again, same seed" "$CLI" optimise "$DOMAINS/annulus.poly" --algo frontal \
     --size 0.2 -o "$OUT/again.node" --seed 5
 if cmp -s "$OUT/o_frontal.node" "$OUT/again.node"; then pass; else fail "optimise: same input and seed gave different bytes"; fi
 expect_exit 0 "optimise a .node point set" "$CLI" optimise "$DATA/cocircular_octagon_and_centre.node" -o "$OUT/p.vtu"
-expect_exit 0 "optimise with the cuckoo solver" "$CLI" optimise "$SHARED/data/square.poly" --size 0.2 \
+expect_exit 0 "optimise with the cuckoo solver" "$CLI" optimise "$DOMAINS/square.poly" --size 0.2 \
     --solver 2 --quality
 expect_grep "optimise --solver 2" "$TMP/out" "non-compliant (not merged)   0.0000 %"
-expect_exit 2 "optimise: bad solver" "$CLI" optimise "$SHARED/data/square.poly" --solver 3
-expect_exit 2 "optimise: bad --algo" "$CLI" optimise "$SHARED/data/square.poly" --algo aflr
+expect_exit 2 "optimise: bad solver" "$CLI" optimise "$DOMAINS/square.poly" --solver 3
+expect_exit 2 "optimise: bad --algo" "$CLI" optimise "$DOMAINS/square.poly" --algo aflr
 expect_exit 2 "optimise: no input" "$CLI" optimise
 expect_exit 0 "optimise --help" "$CLI" optimise --help
 expect_grep "optimise --help" "$TMP/out" "--merge-tol"
@@ -238,7 +255,7 @@ expect_empty_dir "bad inputs" "$OUT"
 # ---- the power dual and .vtu input -------------------------------------------
 OUT=$TMP/dual
 mkdir "$OUT"
-expect_exit 0 "refine --dual --quality" "$CLI" refine "$SHARED/data/annulus.poly" --algo frontal \
+expect_exit 0 "refine --dual --quality" "$CLI" refine "$DOMAINS/annulus.poly" --algo frontal \
     --size 0.2 -o "$OUT/m.vtu" --dual "$OUT/d.vtu" --quality
 for want in "power vertex outside" "time-step proxy" "q1 mean min angle" "q2 max" "q3 max" \
             "q4 max" "q5 min" "q5 min at the boundary" "q5 histogram"; do
@@ -251,7 +268,7 @@ expect_exit 0 "triangulate a .vtu mesh" "$CLI" triangulate "$OUT/m.vtu" -o "$OUT
 if cmp -s "$OUT/m.vtu" "$OUT/m2.vtu"; then pass; else fail ".vtu read and written again differs"; fi
 if cmp -s "$OUT/d.vtu" "$OUT/d2.vtu"; then pass; else fail "the dual of the re-read .vtu differs"; fi
 expect_exit 0 "refine a .vtu mesh further" "$CLI" refine "$OUT/m.vtu" --size 0.1 -o "$OUT/m3.msh"
-expect_exit 2 "--dual needs .vtu" "$CLI" triangulate "$SHARED/data/square.poly" --dual "$OUT/d.svg"
+expect_exit 2 "--dual needs .vtu" "$CLI" triangulate "$DOMAINS/square.poly" --dual "$OUT/d.svg"
 printf '<VTKFile type="UnstructuredGrid"><Piece NumberOfPoints="3" NumberOfCells="1">\n<Points>\n<DataArray NumberOfComponents="3" format="ascii">0 0 0 1 0 0 0 nan 0</DataArray></Points></Piece></VTKFile>\n' > "$OUT/nan.vtu"
 expect_exit 1 "NaN in a .vtu" "$CLI" triangulate "$OUT/nan.vtu" -o "$OUT/x.vtu"
 expect_grep "NaN in a .vtu" "$TMP/err" "nan.vtu:3: Points: value 7 is not finite"
@@ -261,96 +278,96 @@ if [ ! -e "$OUT/x.vtu" ]; then pass; else fail "NaN in a .vtu: output written"; 
 # ---- failed writes: exit 1, nothing left ------------------------------------
 OUT=$TMP/write
 mkdir "$OUT"
-expect_exit 1 "output directory missing" "$CLI" triangulate "$SHARED/data/square.poly" -o "$OUT/no/such/x.vtu"
+expect_exit 1 "output directory missing" "$CLI" triangulate "$DOMAINS/square.poly" -o "$OUT/no/such/x.vtu"
 expect_grep "output directory missing" "$TMP/err" "cannot create"
 expect_one_line "output directory missing"
 if [ -e /dev/full ]; then
     ln -s /dev/full "$OUT/full.msh"
-    expect_exit 1 "disk full" "$CLI" triangulate "$SHARED/data/naca0012.poly" -o "$OUT/full.msh"
+    expect_exit 1 "disk full" "$CLI" triangulate "$DOMAINS/naca0012.poly" -o "$OUT/full.msh"
     expect_grep "disk full" "$TMP/err" "cannot write"
     expect_one_line "disk full"
     rm -f "$OUT/full.msh"
     ln -s /dev/full "$OUT/full.ele"
-    expect_exit 1 "disk full on .ele" "$CLI" triangulate "$SHARED/data/naca0012.poly" -o "$OUT/full.node"
+    expect_exit 1 "disk full on .ele" "$CLI" triangulate "$DOMAINS/naca0012.poly" -o "$OUT/full.node"
     rm -f "$OUT/full.ele"
 fi
-expect_exit 1 "picture fails after the mesh" "$CLI" triangulate "$SHARED/data/square.poly" -o "$OUT/ok.node" --svg "$OUT/no/such/x.svg"
+expect_exit 1 "picture fails after the mesh" "$CLI" triangulate "$DOMAINS/square.poly" -o "$OUT/ok.node" --svg "$OUT/no/such/x.svg"
 expect_one_line "picture fails after the mesh"
 expect_empty_dir "failed writes" "$OUT"
 
 # ---- refine with the automatic size ---------------------------------------
 OUT=$TMP/auto
 mkdir -p "$OUT"
-expect_exit 0 "refine --auto" "$CLI" refine "$SHARED/data/cylinder.poly" --algo frontal --auto 3 --grading 4 \
+expect_exit 0 "refine --auto" "$CLI" refine "$DOMAINS/cylinder.poly" --algo frontal --auto 3 --grading 4 \
     -o "$OUT/cyl.vtu" --quality
 expect_grep "refine --auto meets the angle" "$TMP/out" "triangles below the angle: 0"
-expect_exit 0 "refine --no-swap --smooth 3" "$CLI" refine "$SHARED/data/square.poly" --algo frontal --size 0.1 \
+expect_exit 0 "refine --no-swap --smooth 3" "$CLI" refine "$DOMAINS/square.poly" --algo frontal --size 0.1 \
     --no-swap --smooth 3 -o "$OUT/sq.vtu"
-expect_exit 2 "--smooth out of range" "$CLI" refine "$SHARED/data/square.poly" --smooth 1000 -o "$OUT/x.vtu"
+expect_exit 2 "--smooth out of range" "$CLI" refine "$DOMAINS/square.poly" --smooth 1000 -o "$OUT/x.vtu"
 # -1 (the default) is each refiner's own sweep count: frontal 3 relaxation + 4 smart
 # sweeps, AFLR 5 + 3; -2 is out of range and writes nothing
 for a in "frontal 3 4" "aflr 5 3"; do
     set -- $a
-    expect_exit 0 "refine --algo $1 (default sweeps)" "$CLI" refine "$SHARED/data/annulus.poly" --algo $1 \
+    expect_exit 0 "refine --algo $1 (default sweeps)" "$CLI" refine "$DOMAINS/annulus.poly" --algo $1 \
         --size 0.3 -o "$OUT/def_$1.node"
-    expect_exit 0 "refine --algo $1 --relax $2 --smooth $3" "$CLI" refine "$SHARED/data/annulus.poly" \
+    expect_exit 0 "refine --algo $1 --relax $2 --smooth $3" "$CLI" refine "$DOMAINS/annulus.poly" \
         --algo $1 --size 0.3 --relax $2 --smooth $3 -o "$OUT/exp_$1.node"
     if cmp -s "$OUT/def_$1.node" "$OUT/exp_$1.node" && cmp -s "$OUT/def_$1.ele" "$OUT/exp_$1.ele"; then pass
     else fail "$1: the default sweeps are not --relax $2 --smooth $3"; fi
 done
-expect_exit 2 "--smooth -2" "$CLI" refine "$SHARED/data/square.poly" --smooth -2 -o "$OUT/neg.vtu"
+expect_exit 2 "--smooth -2" "$CLI" refine "$DOMAINS/square.poly" --smooth -2 -o "$OUT/neg.vtu"
 if [ ! -e "$OUT/neg.vtu" ]; then pass; else fail "--smooth -2 wrote a file"; fi
-expect_exit 2 "--auto not positive" "$CLI" refine "$SHARED/data/square.poly" --auto 0 -o "$OUT/x.vtu"
-expect_exit 2 "--grading without --auto" "$CLI" refine "$SHARED/data/square.poly" --grading 3 -o "$OUT/x.vtu"
+expect_exit 2 "--auto not positive" "$CLI" refine "$DOMAINS/square.poly" --auto 0 -o "$OUT/x.vtu"
+expect_exit 2 "--grading without --auto" "$CLI" refine "$DOMAINS/square.poly" --grading 3 -o "$OUT/x.vtu"
 expect_grep "--grading without --auto" "$TMP/err" "--grading needs --auto"
-expect_exit 2 "--grading not a number" "$CLI" refine "$SHARED/data/square.poly" --auto 2 --grading x -o "$OUT/x.vtu"
+expect_exit 2 "--grading not a number" "$CLI" refine "$DOMAINS/square.poly" --auto 2 --grading x -o "$OUT/x.vtu"
 
 # ---- boundary grading: a fine wall carried inwards --------------------------
 OUT=$TMP/bgrad
 mkdir -p "$OUT"
-expect_exit 0 "refine --boundary-grading" "$CLI" refine "$SHARED/data/cylinder.poly" --algo frontal --size 0.2 \
+expect_exit 0 "refine --boundary-grading" "$CLI" refine "$DOMAINS/cylinder.poly" --algo frontal --size 0.2 \
     --boundary-grading 0.3 -o "$OUT/cyl.node" --quality
 expect_grep "refine --boundary-grading meets the angle" "$TMP/out" "triangles below the angle: 0"
 # more vertices than at the uniform size alone (12174 then; 12357 graded)
 nv_graded=$(head -n 1 "$OUT/cyl.node" | awk '{print $1}')
-expect_exit 0 "refine uniform" "$CLI" refine "$SHARED/data/cylinder.poly" --algo frontal --size 0.2 -o "$OUT/u.node"
+expect_exit 0 "refine uniform" "$CLI" refine "$DOMAINS/cylinder.poly" --algo frontal --size 0.2 -o "$OUT/u.node"
 nv_uniform=$(head -n 1 "$OUT/u.node" | awk '{print $1}')
 if [ "$nv_graded" -gt "$nv_uniform" ]; then pass; else
     fail "boundary grading adds vertices ($nv_graded graded, $nv_uniform uniform)"; fi
-expect_exit 0 "optimise --boundary-grading" "$CLI" optimise "$SHARED/data/cylinder.poly" --size 0.2 \
+expect_exit 0 "optimise --boundary-grading" "$CLI" optimise "$DOMAINS/cylinder.poly" --size 0.2 \
     --boundary-grading 0.3 -o "$OUT/opt.vtu" --quality
 expect_grep "optimise --boundary-grading is compliant" "$TMP/out" "non-compliant (not merged)   0.0000 %"
 grep -v -i "time" "$TMP/out" > "$OUT/graded.txt"
 # the default of optimise --size is that grading (the same mesh), 0 turns it off
-expect_exit 0 "optimise --size grades by default" "$CLI" optimise "$SHARED/data/cylinder.poly" --size 0.2 \
+expect_exit 0 "optimise --size grades by default" "$CLI" optimise "$DOMAINS/cylinder.poly" --size 0.2 \
     --quality
 if grep -v -i "time" "$TMP/out" | cmp -s - "$OUT/graded.txt"; then pass; else
     fail "optimise --size: not the graded default"; fi
 minang=$(awk '/^min angle/ {print $3}' "$TMP/out")
 if awk -v a="$minang" 'BEGIN {exit !(a >= 40)}'; then pass; else
     fail "optimise cylinder --size 0.2: min angle $minang < 40"; fi
-expect_exit 0 "optimise --boundary-grading 0" "$CLI" optimise "$SHARED/data/cylinder.poly" --size 0.2 \
+expect_exit 0 "optimise --boundary-grading 0" "$CLI" optimise "$DOMAINS/cylinder.poly" --size 0.2 \
     --boundary-grading 0 --quality
 if grep -v -i "time" "$TMP/out" | cmp -s - "$OUT/graded.txt"; then
     fail "optimise --boundary-grading 0 changed nothing"; else pass; fi
-expect_exit 2 "--boundary-grading not positive" "$CLI" refine "$SHARED/data/square.poly" --size 0.1 \
+expect_exit 2 "--boundary-grading not positive" "$CLI" refine "$DOMAINS/square.poly" --size 0.1 \
     --boundary-grading -1 -o "$OUT/x.vtu"
-expect_exit 2 "optimise --boundary-grading without --size" "$CLI" optimise "$SHARED/data/square.poly" \
+expect_exit 2 "optimise --boundary-grading without --size" "$CLI" optimise "$DOMAINS/square.poly" \
     --boundary-grading 0.3 -o "$OUT/x.vtu"
 expect_grep "optimise --boundary-grading without --size" "$TMP/err" "--boundary-grading needs --size"
-expect_exit 2 "optimise --boundary-grading negative" "$CLI" optimise "$SHARED/data/square.poly" --size 0.1 \
+expect_exit 2 "optimise --boundary-grading negative" "$CLI" optimise "$DOMAINS/square.poly" --size 0.1 \
     --boundary-grading -0.5 -o "$OUT/x.vtu"
-expect_exit 2 "--boundary-grading not a number" "$CLI" refine "$SHARED/data/square.poly" --size 0.1 \
+expect_exit 2 "--boundary-grading not a number" "$CLI" refine "$DOMAINS/square.poly" --size 0.1 \
     --boundary-grading x -o "$OUT/x.vtu"
-expect_exit 2 "optimise --boundary-grading nan" "$CLI" optimise "$SHARED/data/square.poly" --size 0.1 \
+expect_exit 2 "optimise --boundary-grading nan" "$CLI" optimise "$DOMAINS/square.poly" --size 0.1 \
     --boundary-grading nan -o "$OUT/x.vtu"
-expect_exit 2 "--boundary-grading without a value" "$CLI" refine "$SHARED/data/square.poly" --boundary-grading
+expect_exit 2 "--boundary-grading without a value" "$CLI" refine "$DOMAINS/square.poly" --boundary-grading
 if [ -e "$OUT/x.vtu" ]; then fail "failed boundary-grading runs wrote $OUT/x.vtu"; else pass; fi
 
 # ---- optimise a .vtu mesh read back, with its dual ---------------------------
 OUT=$TMP/optvtu
 mkdir -p "$OUT"
-expect_exit 0 "refine to .vtu" "$CLI" refine "$SHARED/data/square.poly" --algo frontal --size 0.1 -o "$OUT/sq.vtu"
+expect_exit 0 "refine to .vtu" "$CLI" refine "$DOMAINS/square.poly" --algo frontal --size 0.1 -o "$OUT/sq.vtu"
 expect_exit 0 "optimise a .vtu" "$CLI" optimise "$OUT/sq.vtu" --time-limit 60 -o "$OUT/opt.vtu" \
     --dual "$OUT/dual.vtu" --quality
 expect_grep "optimise .vtu: compliant" "$TMP/out" "non-compliant (not merged)   0.0000 %"
@@ -362,37 +379,37 @@ OUT=$TMP/aflr
 mkdir "$OUT"
 expect_exit 0 "refine --help" "$CLI" refine --help
 expect_grep "refine --help" "$TMP/out" "--fronts M1,M2,..."
-expect_exit 0 "refine --algo aflr" "$CLI" refine "$SHARED/data/naca0012.poly" --algo aflr --size 0.5 \
+expect_exit 0 "refine --algo aflr" "$CLI" refine "$DOMAINS/naca0012.poly" --algo aflr --size 0.5 \
     --fronts 1,2 -o "$OUT/naca.vtu" --svg "$OUT/naca.svg" --quality
 expect_grep "aflr report" "$TMP/out" "triangles below the angle: 0"
 expect_grep "aflr .vtu layers" "$OUT/naca.vtu" 'Name="layer_index"'
 expect_grep "aflr .svg layers" "$OUT/naca.svg" "advancing-front layer"
-expect_exit 0 "refine --algo aflr to .node" "$CLI" refine "$SHARED/data/channel.poly" --algo aflr \
+expect_exit 0 "refine --algo aflr to .node" "$CLI" refine "$DOMAINS/channel.poly" --algo aflr \
     --size 0.1 -o "$OUT/channel.node"
 if [ "$HAVE_NUMPY" -eq 1 ]; then
-    if python3 "$SHARED/tools/verify_mesh.py" "$SHARED/data/channel.poly" "$OUT/channel" > "$OUT/verify.json" 2>&1; then
+    if "$PY" "$VERIFY" "$DOMAINS/channel.poly" "$OUT/channel" > "$OUT/verify.json" 2>&1; then
         pass
     else
         fail "aflr channel: verify_mesh.py: $(tail -c 400 "$OUT/verify.json")"
     fi
 fi
-expect_exit 2 "--fronts not a list" "$CLI" refine "$SHARED/data/square.poly" --algo aflr --fronts 1,x
+expect_exit 2 "--fronts not a list" "$CLI" refine "$DOMAINS/square.poly" --algo aflr --fronts 1,x
 expect_grep "--fronts not a list" "$TMP/err" "--fronts 1,x"
-expect_exit 2 "--fronts without a value" "$CLI" refine "$SHARED/data/square.poly" --algo aflr --fronts
+expect_exit 2 "--fronts without a value" "$CLI" refine "$DOMAINS/square.poly" --algo aflr --fronts
 
 # ---- refine --resample-boundary (CVM_OPT_KEEP_SEGMENT_VERTICES = 0) ------------
 OUT=$TMP/resample
 mkdir "$OUT"
 expect_exit 0 "refine --help lists --resample-boundary" "$CLI" refine --help
 expect_grep "refine --help lists --resample-boundary" "$TMP/out" "--resample-boundary"
-expect_exit 0 "refine --resample-boundary" "$CLI" refine "$SHARED/data/annulus.poly" --algo frontal \
+expect_exit 0 "refine --resample-boundary" "$CLI" refine "$DOMAINS/annulus.poly" --algo frontal \
     --size 0.3 --resample-boundary --quality -o "$OUT/annulus.vtu"
 expect_grep "--resample-boundary meets the angle" "$TMP/out" "triangles below the angle: 0"
 # 192 input segments (spacing 0.1 and 0.2) become 21 + 84 pieces of about 0.3
 expect_grep "--resample-boundary re-discretises the circles" "$TMP/out" "segments                     105"
 rm -f "$OUT/plain.vtu"
 expect_exit 1 "--resample-boundary without a size is refused" "$CLI" refine \
-    "$SHARED/data/annulus.poly" --resample-boundary --quality -o "$OUT/plain.vtu"
+    "$DOMAINS/annulus.poly" --resample-boundary --quality -o "$OUT/plain.vtu"
 expect_grep "--resample-boundary without a size names the option" "$TMP/err" "KEEP_SEGMENT_VERTICES"
 expect_one_line "--resample-boundary without a size"
 if [ -e "$OUT/plain.vtu" ]; then fail "--resample-boundary without a size wrote a file"; else pass; fi
@@ -402,10 +419,10 @@ OUT=$TMP/smoothlayers
 mkdir "$OUT"
 expect_exit 0 "refine --help lists --smooth-layers" "$CLI" refine --help
 expect_grep "refine --help lists --smooth-layers" "$TMP/out" "--smooth-layers N"
-expect_exit 0 "refine --algo aflr --smooth-layers 2" "$CLI" refine "$SHARED/data/naca0012.poly" \
+expect_exit 0 "refine --algo aflr --smooth-layers 2" "$CLI" refine "$DOMAINS/naca0012.poly" \
     --algo aflr --size 0.5 --smooth-layers 2 --quality -o "$OUT/naca.node"
 expect_grep "--smooth-layers meets the angle" "$TMP/out" "triangles below the angle: 0"
-expect_exit 0 "refine --algo aflr without --smooth-layers" "$CLI" refine "$SHARED/data/naca0012.poly" \
+expect_exit 0 "refine --algo aflr without --smooth-layers" "$CLI" refine "$DOMAINS/naca0012.poly" \
     --algo aflr --size 0.5 -o "$OUT/plain.node"
 if cmp -s "$OUT/naca.node" "$OUT/plain.node"; then
     fail "--smooth-layers 2 gave the same points as without it"
@@ -413,19 +430,19 @@ else
     pass
 fi
 if [ "$HAVE_NUMPY" -eq 1 ]; then
-    if python3 "$SHARED/tools/verify_mesh.py" "$SHARED/data/naca0012.poly" "$OUT/naca" > "$OUT/verify.json" 2>&1; then
+    if "$PY" "$VERIFY" "$DOMAINS/naca0012.poly" "$OUT/naca" > "$OUT/verify.json" 2>&1; then
         pass
     else
         fail "--smooth-layers: verify_mesh.py: $(tail -c 400 "$OUT/verify.json")"
     fi
 fi
 rm -f "$OUT/frontal.vtu"
-expect_exit 1 "--smooth-layers with frontal is refused" "$CLI" refine "$SHARED/data/square.poly" \
+expect_exit 1 "--smooth-layers with frontal is refused" "$CLI" refine "$DOMAINS/square.poly" \
     --algo frontal --size 0.2 --smooth-layers 1 -o "$OUT/frontal.vtu"
 expect_grep "--smooth-layers with frontal names the option" "$TMP/err" "AFLR_SMOOTH_LAYERS"
 expect_one_line "--smooth-layers with frontal"
 if [ -e "$OUT/frontal.vtu" ]; then fail "--smooth-layers with frontal wrote a file"; else pass; fi
-expect_exit 2 "--smooth-layers out of range" "$CLI" refine "$SHARED/data/square.poly" --algo aflr \
+expect_exit 2 "--smooth-layers out of range" "$CLI" refine "$DOMAINS/square.poly" --algo aflr \
     --smooth-layers -1 -o "$OUT/x.vtu"
 
 echo "$passed passed, $failed failed"

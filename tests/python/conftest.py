@@ -9,13 +9,9 @@ import pytest
 ROOT = Path(__file__).resolve().parents[2]
 
 
-def shared_data_dir():
-    """shared/data of the project (beside the repository), or CVM_SHARED_DIR/data."""
-    env = os.environ.get("CVM_SHARED_DIR")
-    for d in ([Path(env)] if env else []) + [ROOT.parent / "shared", ROOT / "shared"]:
-        if (d / "data").is_dir():
-            return d / "data"
-    return None
+def domain_dir():
+    """The example domains: examples/data of the repository, or CVM_DATA_DIR."""
+    return Path(os.environ.get("CVM_DATA_DIR") or ROOT / "examples" / "data")
 
 
 @pytest.fixture
@@ -34,8 +30,7 @@ def random_points():
 
 @pytest.fixture
 def poly_file():
-    """Path of a .poly file from shared/data, or skip."""
-    d = shared_data_dir()
-    if d is None or not (d / "square.poly").is_file():
-        pytest.skip("shared/data/square.poly not found (set CVM_SHARED_DIR)")
-    return d / "square.poly"
+    """Path of the unit square domain, examples/data/square.poly."""
+    path = domain_dir() / "square.poly"
+    assert path.is_file(), "%s is missing" % path
+    return path

@@ -21,10 +21,10 @@ TCase *io_read_vtu_tcase(void);      /* test_read_vtu.c: read_vtu.c */
 TCase *io_write_msh_tcase(void);     /* test_write_msh.c */
 TCase *io_write_svg_tcase(void);     /* test_write_svg.c */
 
-/* Directory of the shared data (CVM_SHARED_DIR, default ../shared) and of
+/* Directory of the example domains (CVM_DATA_DIR, default examples/data) and of
  * tests/data (CVM_TEST_DATA, default tests/data); path joins dir and name
  * into a static buffer of the calling test. */
-const char *iotest_shared_dir(void);
+const char *iotest_domain_dir(void);
 const char *iotest_data_dir(void);
 void iotest_path(char *buf, size_t len, const char *dir, const char *name);
 

@@ -37,7 +37,7 @@ static cvm_status parse_file(const char *dir, const char *name, int is_poly, cvm
     return s;
 }
 
-START_TEST(read_shared_polys_with_their_counts)
+START_TEST(read_domains_with_their_counts)
 {
     static const struct {
         const char *name;
@@ -52,7 +52,7 @@ START_TEST(read_shared_polys_with_their_counts)
     };
     char dir[4096];
     size_t i, k;
-    iotest_path(dir, sizeof dir, iotest_shared_dir(), "data");
+    snprintf(dir, sizeof dir, "%s", iotest_domain_dir());
     for (i = 0; i < sizeof files / sizeof files[0]; i++) {
         cvm__pslg p;
         cvm_status s = parse_file(dir, files[i].name, 1, &p);
@@ -77,15 +77,15 @@ START_TEST(read_shared_polys_with_their_counts)
 }
 END_TEST
 
-START_TEST(read_every_shared_poly)
+START_TEST(read_every_domain)
 {
     char dir[4096];
     DIR *dp;
     struct dirent *e;
     int n = 0;
-    iotest_path(dir, sizeof dir, iotest_shared_dir(), "data");
+    snprintf(dir, sizeof dir, "%s", iotest_domain_dir());
     dp = opendir(dir);
-    ck_assert_msg(dp != NULL, "cannot list %s (set CVM_SHARED_DIR)", dir);
+    ck_assert_msg(dp != NULL, "cannot list %s (set CVM_DATA_DIR)", dir);
     while ((e = readdir(dp)) != NULL) {
         size_t len = strlen(e->d_name);
         cvm__pslg p;
@@ -347,8 +347,8 @@ TCase *io_read_triangle_tcase(void)
 {
     TCase *tc = tcase_create("read_triangle");
     tcase_add_checked_fixture(tc, setup, NULL);
-    tcase_add_test(tc, read_shared_polys_with_their_counts);
-    tcase_add_test(tc, read_every_shared_poly);
+    tcase_add_test(tc, read_domains_with_their_counts);
+    tcase_add_test(tc, read_every_domain);
     tcase_add_test(tc, read_zero_based_file_with_comments);
     tcase_add_test(tc, read_one_based_attributes_and_regions);
     tcase_add_test(tc, read_node_file_with_attribute);

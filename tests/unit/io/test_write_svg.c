@@ -53,10 +53,39 @@ START_TEST(svg_without_quality_is_uniform)
 }
 END_TEST
 
+/* A window shows its region at 800 px wide, clips at its edge and leaves out
+ * the triangles wholly outside it (the fan's top triangle and, in x, nothing). */
+START_TEST(svg_window_frames_and_culls)
+{
+    cvm__mesh_out mo;
+    char *t;
+    iotest_mesh_out(&mo);
+    mo.window[0] = 0;
+    mo.window[1] = 0;
+    mo.window[2] = 1;
+    mo.window[3] = 0.25;
+    t = write_svg(&mo);
+    /* 780 px per unit: 0.25 high is 195 px, plus margins and the legend */
+    ck_assert_ptr_nonnull(strstr(t, "viewBox=\"0 0 800.00 249.00\""));
+    ck_assert_ptr_nonnull(strstr(t, "<clipPath id=\"window\"><rect x=\"10.00\" y=\"10.00\" width=\"780.00\" height=\"195.00\"/>"));
+    ck_assert_uint_eq(iotest_count(t, "<polygon "), 3);
+    /* vertex (0, 0) sits at the bottom left of the window */
+    ck_assert_ptr_nonnull(strstr(t, "10.00,205.00"));
+    /* an empty window (xmax <= xmin) is no window */
+    mo.window[2] = -1;
+    free(t);
+    t = write_svg(&mo);
+    ck_assert_ptr_null(strstr(t, "clipPath"));
+    ck_assert_uint_eq(iotest_count(t, "<polygon "), 4);
+    free(t);
+}
+END_TEST
+
 TCase *io_write_svg_tcase(void)
 {
     TCase *tc = tcase_create("write_svg");
     tcase_add_test(tc, svg_draws_triangles_segments_and_legend);
     tcase_add_test(tc, svg_without_quality_is_uniform);
+    tcase_add_test(tc, svg_window_frames_and_culls);
     return tc;
 }

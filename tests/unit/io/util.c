@@ -8,10 +8,10 @@
 #include "io/io_tests.h"
 #include "support/failing_reader.h"
 
-const char *iotest_shared_dir(void)
+const char *iotest_domain_dir(void)
 {
-    const char *d = getenv("CVM_SHARED_DIR");
-    return d && *d ? d : "../shared";
+    const char *d = getenv("CVM_DATA_DIR");
+    return d && *d ? d : "examples/data";
 }
 
 const char *iotest_data_dir(void)

@@ -17,8 +17,8 @@ TCase *refine_regions_tcase(void);
 TCase *refine_march_tcase(void);
 TCase *refine_resample_tcase(void);
 
-/* Directory of the shared geometries: $CVM_SHARED_DIR/data, default ../shared/data. */
-void rtest_shared_path(char *buf, size_t len, const char *name);
+/* Path of an example domain: $CVM_DATA_DIR/name, default examples/data/name. */
+void rtest_data_path(char *buf, size_t len, const char *name);
 
 /* The segments of a .poly file as 0-based input point ids (own parser, so the
  * test does not trust the library's reader for what it checks); caller frees. */

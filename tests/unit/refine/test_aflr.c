@@ -488,7 +488,7 @@ static void af_layers_geometry(const char *name, double h, long euler)
     cvm_index *segs;
     cvm_mesh *off;
     int nsm;
-    rtest_shared_path(path, sizeof path, name);
+    rtest_data_path(path, sizeof path, name);
     segs = rtest_poly_segments(path, &nseg);
     off = af_shared_layers(path, h, 0);
     for (nsm = 1; nsm <= 2; nsm++) {

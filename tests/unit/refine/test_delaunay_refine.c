@@ -201,7 +201,7 @@ START_TEST(lens_and_no_marching_still_meet_bounds)
     char path[1024];
     cvm_mesh *m;
     rtest_quality q;
-    rtest_shared_path(path, sizeof path, "channel.poly");
+    rtest_data_path(path, sizeof path, "channel.poly");
     ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
     ck_assert_int_eq(cvm_mesh_read(m, path), CVM_OK);
     ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_ENCROACH_LENS, 1), CVM_OK);
@@ -306,7 +306,7 @@ static void high_bound_terminates(const char *name, long euler, double h, double
     size_t nseg;
     double d;
     cvm_index *segs;
-    rtest_shared_path(path, sizeof path, name);
+    rtest_data_path(path, sizeof path, name);
     segs = rtest_poly_segments(path, &nseg);
     ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
     ck_assert_int_eq(cvm_mesh_read(m, path), CVM_OK);

@@ -163,7 +163,7 @@ static void frontal_regularity(const char *name, double h, double min_reg, doubl
     char path[1024];
     cvm_mesh *m;
     fr_regularity r;
-    rtest_shared_path(path, sizeof path, name);
+    rtest_data_path(path, sizeof path, name);
     ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
     ck_assert_msg(cvm_mesh_read(m, path) == CVM_OK, "%s: %s", path, cvm_mesh_errmsg(m));
     ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);

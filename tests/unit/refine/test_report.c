@@ -96,7 +96,7 @@ START_TEST(steiner_limit_leaves_located_triangles)
     char path[512];
     cvm_mesh *m;
     size_t n;
-    rtest_shared_path(path, sizeof path, "square.poly");
+    rtest_data_path(path, sizeof path, "square.poly");
     ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
     ck_assert_int_eq(cvm_mesh_read(m, path), CVM_OK);
     ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);

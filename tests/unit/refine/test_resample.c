@@ -292,7 +292,7 @@ static void shared_input(const char *name, double **xy, size_t *np, cvm_index **
 {
     char path[1024];
     cvm_mesh *m;
-    rtest_shared_path(path, sizeof path, name);
+    rtest_data_path(path, sizeof path, name);
     *seg = rtest_poly_segments(path, ns);
     ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
     ck_assert_int_eq(cvm_mesh_read(m, path), CVM_OK);
@@ -350,7 +350,7 @@ static void check_shared(const char *name, double h, long euler, const size_t *c
         double d = hypot(in_xy[2 * k] - in_xy[0], in_xy[2 * k + 1] - in_xy[1]);
         diam = d > diam ? d : diam;
     }
-    rtest_shared_path(path, sizeof path, name);
+    rtest_data_path(path, sizeof path, name);
     for (a = 0; a < 3; a++) {
         cvm_mesh *m, *keep;
         rs_meas r, rk;

@@ -216,7 +216,7 @@ START_TEST(automatic_square_matches_uniform_side_over_r)
     cvm_mesh *a, *u;
     cvm_sizing *s;
     rtest_quality qa, qu;
-    rtest_shared_path(path, sizeof path, "square.poly");
+    rtest_data_path(path, sizeof path, "square.poly");
     ck_assert_int_eq(cvm_mesh_create(&a), CVM_OK);
     ck_assert_int_eq(cvm_mesh_create(&u), CVM_OK);
     ck_assert_int_eq(cvm_mesh_read(a, path), CVM_OK);
@@ -252,7 +252,7 @@ START_TEST(automatic_annulus_follows_curvature_and_gap)
     cvm_sizing *s;
     rtest_quality q;
     double inner, outer;
-    rtest_shared_path(path, sizeof path, "annulus.poly");
+    rtest_data_path(path, sizeof path, "annulus.poly");
     ck_assert_int_eq(cvm_sizing_create(&s), CVM_OK);
     ck_assert_int_eq(cvm_sizing_set_automatic(s, 3, 4), CVM_OK);
     ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
@@ -318,7 +318,7 @@ START_TEST(automatic_out_of_memory_is_a_status)
     cvm_sizing *s;
     long k;
     int hit = 0;
-    rtest_shared_path(path, sizeof path, "annulus.poly");
+    rtest_data_path(path, sizeof path, "annulus.poly");
     ck_assert_int_eq(cvm_sizing_create(&s), CVM_OK);
     ck_assert_int_eq(cvm_sizing_set_automatic(s, 1, 4), CVM_OK);
     for (k = 1; k < 200; k += 2) {
@@ -608,7 +608,7 @@ START_TEST(background_drives_refinement)
     cvm_mesh *m;
     cvm_sizing *s;
     rtest_quality q;
-    rtest_shared_path(path, sizeof path, "square.poly");
+    rtest_data_path(path, sizeof path, "square.poly");
     ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
     ck_assert_int_eq(cvm_mesh_read(m, path), CVM_OK);
     ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);

@@ -91,7 +91,7 @@ static void post_geometry(const char *name, double h, long euler)
     size_t nseg;
     double reg, reg0, amin, amin0;
     cvm_index *segs;
-    rtest_shared_path(path, sizeof path, name);
+    rtest_data_path(path, sizeof path, name);
     segs = rtest_poly_segments(path, &nseg);
     m = post_refined(path, h, 1, 2);
     cvmtest_expect_init(&e);
@@ -166,7 +166,7 @@ START_TEST(relaxation_annulus)
     cvm_bounds b;
     ck_assert_int_eq(cvm_option_bounds(&b, CVM_OPT_RELAX_SWEEPS), CVM_OK);
     ck_assert(b.lo == -1 && b.hi == 100 && b.def == -1 && b.is_integer);
-    rtest_shared_path(path, sizeof path, "annulus.poly");
+    rtest_data_path(path, sizeof path, "annulus.poly");
     segs = rtest_poly_segments(path, &nseg);
     m = post_refined(path, 0.1, 1, 3);
     rtest_assert_refined(m, "annulus", segs, nseg, 1, 0, 0.1, &q);
@@ -209,7 +209,7 @@ static void naca_regular(int algo, double reg_min, double relax, double sweeps)
     double reg, amin, obt;
     cvm_index *segs;
     cvm_status s;
-    rtest_shared_path(path, sizeof path, "naca0012.poly");
+    rtest_data_path(path, sizeof path, "naca0012.poly");
     segs = rtest_poly_segments(path, &nseg);
     ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
     ck_assert_int_eq(cvm_mesh_read(m, path), CVM_OK);
@@ -400,7 +400,7 @@ static void maxmin_direct(const char *name, double h)
     double *xy0, amin0 = 180, amin1 = 180, star0 = 180, star1 = 180;
     unsigned char *moved, *onseg;
     int r, k;
-    rtest_shared_path(path, sizeof path, name);
+    rtest_data_path(path, sizeof path, name);
     for (r = 0; r < 2; r++) {
         cvm__refine_params prm;
         cvm__refiner R;
@@ -511,7 +511,7 @@ static void method_geometry(const char *name, double h, double method)
     size_t nseg;
     cvm_index *segs;
     int r;
-    rtest_shared_path(path, sizeof path, name);
+    rtest_data_path(path, sizeof path, name);
     segs = rtest_poly_segments(path, &nseg);
     for (r = 0; r < 2; r++) {
         ck_assert_int_eq(cvm_mesh_create(&m[r]), CVM_OK);

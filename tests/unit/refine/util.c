@@ -18,10 +18,10 @@ void rtest_fetch(cvm_mesh *m, double **xy, size_t *nv, cvm_index **tri, size_t *
     ck_assert_int_eq(cvm_mesh_copy_cells(*tri, 3 * *nt, m, CVM_ENT_TRIANGLE), CVM_OK);
 }
 
-void rtest_shared_path(char *buf, size_t len, const char *name)
+void rtest_data_path(char *buf, size_t len, const char *name)
 {
-    const char *d = getenv("CVM_SHARED_DIR");
-    snprintf(buf, len, "%s/data/%s", d && *d ? d : "../shared", name);
+    const char *d = getenv("CVM_DATA_DIR");
+    snprintf(buf, len, "%s/%s", d && *d ? d : "examples/data", name);
 }
 
 /* Next number of f, skipping '#' comments; 0 at the end. */
@@ -251,7 +251,7 @@ void rtest_shared_geometry(const char *name, double h, long euler, cvm_algorithm
     size_t nseg, nv0, nv0b;
     double d;
     cvm_index *segs;
-    rtest_shared_path(path, sizeof path, name);
+    rtest_data_path(path, sizeof path, name);
     segs = rtest_poly_segments(path, &nseg);
     m = shared_refined(path, h, algo, &nv0);
     rtest_assert_refined(m, name, segs, nseg, 0, euler, h, &q);
