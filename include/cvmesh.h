@@ -455,11 +455,8 @@ typedef enum cvm_option {
      *  Delaunay-restoring flips), bounds [-1, 100]; 0 = off (no relaxation either);
      *  -1 (the default) = the refiner's own: 4 for CVM_ALGO_FRONTAL, 3 for
      *  CVM_ALGO_AFLR. Frontal's seams, where fronts meet, are rougher before smoothing
-     *  (NACA 0012 far-field ring: 4.1% of all angles out of [55, 65] against AFLR's
-     *  2.9%) and keep gaining from more sweeps (NACA 0012 frontal, relaxation 3:
-     *  96.23% with 3 sweeps, 96.42% with 4, 96.50% with 5), each sweep costing 7-8% of
-     *  the refinement's instructions, so 4 keeps frontal clear of issue 4's time
-     *  budget; AFLR stays at 3, where it already meets the same regularity. Only Steiner points whose triangles are all inside the domain move
+     *  and keep gaining from more sweeps, each sweep costing time; AFLR already meets
+     *  the same regularity with 3. Only Steiner points whose triangles are all inside the domain move
      *  (never an input point or a vertex on a segment), in vertex index order. Each
      *  visited vertex tries 0.5, 1 and 1.5 times the step towards the centroid of its
      *  neighbours and towards its ODT point (the area-weighted mean of its triangles'
@@ -476,17 +473,13 @@ typedef enum cvm_option {
      *  bound. The first sweep visits the vertices of
      *  triangles with an angle outside [55, 65] degrees, each later one only the
      *  neighbourhoods of the vertices moved by the sweep before (the result is that of
-     *  full sweeps); smoothing stops early when a sweep moves nothing. Measured
-     *  (tests/bench/bench_refine.py, frontal / AFLR, % of angles in [55, 65] on square,
-     *  channel, annulus, cylinder, NACA 0012): the centroid alone with 3 sweeps gave
-     *  96.6/96.3, 98.8/98.8, 94.7/94.7, 95.7/95.7, 95.4/94.3 and 0.05% obtuse
-     *  triangles on the annulus; see the README for the current figures. Not applied
+     *  full sweeps); smoothing stops early when a sweep moves nothing. Not applied
      *  to CVM_ALGO_DELAUNAY. Integer. */
     CVM_OPT_SMOOTH_SWEEPS = 206,
     /** 1 (default): after swapping and smoothing, flip every non-locally-Delaunay
      *  unconstrained edge (exact in-circle), so the result stays a constrained Delaunay
-     *  triangulation. Measured: this undoes the degree swaps that smoothing did not make
-     *  Delaunay, but keeps the regularity gained by smoothing. 0 (a non-Delaunay
+     *  triangulation. This undoes the degree swaps that smoothing did not make
+     *  Delaunay, but keeps most of the regularity gained by smoothing. 0 (a non-Delaunay
      *  result) is reserved. Integer, bounds [1, 1]. */
     CVM_OPT_RESTORE_DELAUNAY = 207,
     /** Smoothing method of CVM_OPT_SMOOTH_SWEEPS: 0 (default) the smart
@@ -500,12 +493,9 @@ typedef enum cvm_option {
      *  Laplacian sweeps, then the max-min sweeps; 3: the Laplacian sweeps, then guarded
      *  max-min sweeps (only stars with an angle below 40 degrees, and only moves that
      *  do not make the star less regular by the Laplacian's count of obtuse angles and
-     *  angles in [55, 65] degrees). Measured (tests/bench/bench_refine.py, frontal and
-     *  AFLR on the five shared geometries): 1 and 2 raise the smallest angle (square
-     *  31.3 -> 45.0 degrees, NACA 0012 30.0 -> 33.8) but lose 1.5-6 points of angles in
-     *  [55, 65] and cost 1.2-1.9x the time; after the current smart sweeps 3 leaves
-     *  every shared mesh's smallest angle and regularity as they are (to 0.01 point)
-     *  for 5% more instructions, hence 0 is the default. Integer, [0, 3].
+     *  angles in [55, 65] degrees). 1 and 2 raise the smallest angle but make fewer
+     *  angles near 60 degrees and take longer; 0 is the default for regularity.
+     *  Integer, [0, 3].
      *  Not applied to CVM_ALGO_DELAUNAY. */
     CVM_OPT_SMOOTH_METHOD = 208,
     /** Relaxation sweeps before the smart sweeps of CVM_OPT_SMOOTH_SWEEPS (smoothing
@@ -543,9 +533,9 @@ typedef enum cvm_option {
      *  exceed the size bound; points on segments and input points never move. The
      *  Delaunay property is restored by flips around the moved points, subsegments
      *  they encroach are split, and the next band starts. The post-processing
-     *  (CVM_OPT_SWAP, CVM_OPT_SMOOTH_SWEEPS) still follows. Measured (README): the
-     *  band order costs regularity on curved fronts (annulus, NACA 0012) and the
-     *  smoothing adds time, hence off by default. Integer, default 0, bounds
+     *  (CVM_OPT_SWAP, CVM_OPT_SMOOTH_SWEEPS) still follows. The band order costs
+     *  regularity on curved fronts and the smoothing adds time, hence off by
+     *  default. Integer, default 0, bounds
      *  [0, 1000]. With CVM_ALGO_DELAUNAY or CVM_ALGO_FRONTAL a non-zero value makes
      *  cvm_mesh_refine() return CVM_E_UNSUPPORTED (no layers there). Ignored for a
      *  weighted (regular) triangulation, which is never smoothed. */
@@ -568,10 +558,8 @@ typedef enum cvm_option {
     /** Local solver: 1 (default) deterministic compass (pattern) search on a smooth
      *  penalty; 2 Modified Cuckoo Search (Walton et al. 2011; population 10 x the
      *  degrees of freedom, streams keyed by (CVM_OPT_SEED, sweep, vertex)). Integer,
-     *  [1, 2]. Default chosen by measurement (tests/bench/bench_dual.py): both reach
-     *  0% non-compliant on every shared geometry with similar angles and dual edges,
-     *  and cuckoo takes 3-9x longer (Delaunay-refined NACA 0012, 25k triangles: 0.8 s
-     *  against 7.3 s). */
+     *  [1, 2]. Both reach the same compliance with similar angles and dual edges;
+     *  the pattern search is faster. */
     CVM_OPT_DUAL_SOLVER = 500,
     /** Largest number of sweeps, integer, default 50, bounds [0, 100000]; 0 only
      *  restores the regular triangulation and scores it. */
@@ -579,10 +567,7 @@ typedef enum cvm_option {
     /** Smallest angle a local move may create, degrees, default 30, bounds [0, 50]. A
      *  move is rejected when an angle of the vertex's star would drop below
      *  min(this, the star's smallest angle before the move): angles already below it
-     *  never get worse. Measured on the shared geometries (tests/bench/bench_dual.py):
-     *  with 30 every run still ends at 0% non-compliant and no mesh refined at 30
-     *  degrees drops below 30 (with 10: down to 27.5 on the NACA 0012); other
-     *  minimum angles move by less than 1 degree either way. */
+     *  never get worse, so a mesh refined at 30 degrees stays at 30 or above. */
     CVM_OPT_DUAL_MIN_ANGLE_DEG = 502,
     /** Objective evaluations per vertex and sweep of the cuckoo solver, integer,
      *  default 300, bounds [30, 1000000]. */
@@ -593,20 +578,15 @@ typedef enum cvm_option {
     /** Margin of the local objective: each power vertex is pushed at least this
      *  fraction of each edge length inside its triangle (so a dual edge is at least
      *  twice this fraction of its primal edge where it is met), default 0.15, bounds
-     *  [0, 0.25]. 0 only asks for containment. Measured on the shared geometries
-     *  (tests/bench/bench_dual.py): 0.15 keeps every dual edge above 0.15 of its primal
-     *  edge; 0.1 leaves 0.12 on some and gives up to 2 degrees larger minimum angles. */
+     *  [0, 0.25]. 0 only asks for containment; a smaller margin allows shorter dual
+     *  edges and slightly larger minimum angles. */
     CVM_OPT_DUAL_MARGIN = 505,
     /** Target angle, degrees, default 40, bounds [0, 60]: compliant triangles with an
      *  angle below it (or merged, or whose power vertex lies within half the margin of
      *  an edge) are visited too, after the non-compliant ones, and the local objective
      *  adds (1 - sin^2(angle) / sin^2(target))^2 for each triangle below it.
      *  When the run stalls it raises the target by 5 degrees once (see
-     *  cvm_mesh_optimise_dual()). Measured (tests/bench/bench_dual.py, frontal
-     *  meshes): with 40 and the raise the smallest angle ends at 39.8-43.2 degrees
-     *  on square, channel, annulus and cylinder and 32.7 on the NACA 0012 (the
-     *  earlier rule, which stopped as soon as one sweep cut the weak triangles by
-     *  less than 1%: 34.9-39.9 and 32.6).
+     *  cvm_mesh_optimise_dual()).
      *  0: only non-compliant triangles are visited. */
     CVM_OPT_DUAL_TARGET_ANGLE_DEG = 506,
     /** 1: input points keep their position (only their weights change); 0 (default):
@@ -636,13 +616,11 @@ typedef enum cvm_option {
      *  degrees (degree 8 or more inside) and that touches a triangle below
      *  CVM_OPT_DUAL_TARGET_ANGLE_DEG, its removable Steiner neighbour of least degree
      *  is removed, and interior Steiner vertices of degree 4 or less are removed
-     *  (CVM_MEASURE_DUAL_OPT_REMOVED_DEGREE). Experimental: measured on the shared
-     *  geometries (frontal meshes, tests/bench/bench_dual.c) it lowers the minimum
-     *  angle (to 10.8-31.9 degrees, against 32.7-43.2 with 1), so it is not the
-     *  default. 0: no vertex is ever removed. */
+     *  (CVM_MEASURE_DUAL_OPT_REMOVED_DEGREE). Experimental: it tends to lower the
+     *  minimum angle, so it is not the default. 0: no vertex is ever removed. */
     CVM_OPT_DUAL_TOPOLOGY = 509,
-    /** Topology pre-pass of cvm_mesh_optimise_dual(), integer, [0, 1], default 0 (off;
-     *  measured in the README). 1: before the sweeps, up to two rounds of: removal of
+    /** Topology pre-pass of cvm_mesh_optimise_dual(), integer, [0, 1], default 0
+     *  (off). 1: before the sweeps, up to two rounds of: removal of
      *  every removable Steiner vertex (no segment, hull or region-border vertex; no
      *  two neighbours in one round) with an edge shorter than 0.5 x the local size,
      *  or ending the shortest edge of a triangle below min(35 degrees,
@@ -670,13 +648,7 @@ typedef enum cvm_option {
      *  makes a triangle non-compliant (exact test) is undone. The rounds end at
      *  this count, when a round moves nothing, or after 3 rounds gaining less
      *  than 0.01 degree; removal trials (CVM_OPT_DUAL_MAXMIN_TRIALS) may follow.
-     *  Deterministic. Measured (tests/bench/bench_dual.py, one thread; see the
-     *  README for the table): from the frontal meshes the smallest angle reaches
-     *  45 degrees on the square, channel and annulus (40.5, 40.0 and 44.8 with
-     *  0); 10 rounds instead of 5 move the frontal results by at most 0.3
-     *  degree (NACA 0012 37.8 -> 38.1) and cost the 37k-triangle Delaunay square
-     *  0.23 s more (1.74 -> 1.97 s, against issue 6's 2 s for refinement and
-     *  optimisation of about 4e4 triangles). */
+     *  Deterministic. */
     CVM_OPT_DUAL_MAXMIN_ROUNDS = 511,
     /** Removal-trial calls after the max-min rounds of cvm_mesh_optimise_dual(),
      *  integer, default 0 (none), bounds [0, 64]; needs CVM_OPT_DUAL_TOPOLOGY >= 1
@@ -693,12 +665,8 @@ typedef enum cvm_option {
      *  copy comes back and that position is not tried again. A call that keeps a
      *  trial is followed by the next, up to this count; removals are counted in
      *  CVM_MEASURE_DUAL_OPT_REMOVED_MAXMIN. The trials follow the rounds whether
-     *  or not those stalled. Deterministic. Measured (bench_dual driver, one
-     *  thread, 8 calls against 0, default rounds): frontal cylinder 37.7 -> 39.8
-     *  degrees at 0.25 -> 0.64 s, frontal annulus 45.0 -> 47.1 at 0.18 -> 0.43 s;
-     *  Delaunay NACA 0012 36.1 -> 37.5 at 1.4 -> 1.9 s, the 37k-triangle Delaunay
-     *  square 39.0 -> 39.9 at 1.9 -> 2.5 s: over the 2 s budget of issue 6, hence
-     *  off by default. */
+     *  or not those stalled. Deterministic. Off by default: the trials raise the
+     *  smallest angle by a degree or two but can more than double the time. */
     CVM_OPT_DUAL_MAXMIN_TRIALS = 512,
     /** Merge tolerance, a fraction of the local ideal dual edge l / sqrt(3), default
      *  0.1, bounds [0, 1]; 0 merges nothing. l at an edge is the mean of the local
@@ -1084,8 +1052,8 @@ typedef enum cvm_algorithm {
  * too-large triangles first (largest circumradius/size first), then bad shapes
  * with the shortest shortest edge first, each at its circumcentre or, when nearer
  * to the shortest edge, at Ungor's off-centre (the new triangle on that edge a
- * little above the bound); this terminates on the shared geometries up to 34.5
- * degrees (README). CVM_ALGO_FRONTAL first grows
+ * little above the bound); in practice this terminates up to about 34.5
+ * degrees. CVM_ALGO_FRONTAL first grows
  * triangles from the segments and from accepted triangles (circumradius at most
  * 0.707 x the mean size, smallest angle at least CVM_OPT_MIN_ANGLE_DEG), largest
  * circumradius first, each new point on the bisector of a front edge where it makes
@@ -1672,7 +1640,7 @@ typedef enum cvm_measure {
  * Histograms of cvm_mesh_copy_histogram(); also the per-element values of
  * cvm_mesh_copy_dual_quality() for CVM_HIST_Q1 .. CVM_HIST_Q5.
  *
- * The dual quality measures (issue 6) of the power dual. All are plain
+ * The dual quality measures of the power dual. All are plain
  * doubles (measures, not decisions). For an edge pq, l = |pq| is the local
  * size (cvmesh does not keep the sizing of a refinement, so the primal edge
  * stands for it) and M is the power-bisector foot of pq (the point of line pq

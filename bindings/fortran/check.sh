@@ -3,8 +3,8 @@
 #  1. cvmesh_c_interfaces.inc is what gen_interfaces.py makes of include/cvmesh.h
 #     (a header change without regenerating fails here);
 #  2. the module compiles warning-free (-Werror) and its tests pass;
-#  3. examples/fortran/channel_poisson.f90 and the Fortran block of
-#     bindings/README.md compile, link against the static library and run.
+#  3. examples/fortran/channel_poisson.f90 and the Fortran blocks of
+#     bindings/README.md and README.md compile, link against the static library and run.
 # Usage: sh bindings/fortran/check.sh [--build-only]
 # Environment: CVM_BUILD or BUILD (build directory, default build, relative to the top), FC (gfortran),
 #   FFLAGS, CVMESH_LIB (static library; default: built with make), LIBS.
@@ -41,14 +41,18 @@ build_prog() {  # build_prog NAME SOURCE
 # The ```fortran block of the README, as written.
 awk '/^```fortran$/ { on = 1; next } /^```/ { on = 0 } on' "$root/bindings/README.md" \
     > "$out/readme_snippet.f90"
+awk '/^```fortran$/ { on = 1; next } /^```/ { on = 0 } on' "$root/README.md" \
+    > "$out/readme_top_snippet.f90"
 
 build_prog test_cvmesh "$here/test_cvmesh.f90"
 build_prog channel_poisson "$root/examples/fortran/channel_poisson.f90"
 build_prog readme_snippet "$out/readme_snippet.f90"
+build_prog readme_top_snippet "$out/readme_top_snippet.f90"
 [ "${1:-}" = --build-only ] && exit 0
 
-echo "check-fortran: README snippet"
+echo "check-fortran: README snippets"
 "$out/readme_snippet"
+"$out/readme_top_snippet"
 echo "check-fortran: examples/fortran/channel_poisson"
 "$out/channel_poisson"
 echo "check-fortran: module tests"

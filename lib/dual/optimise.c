@@ -39,7 +39,7 @@
  * per-triangle state is kept up to date by the moves), then removal trials on
  * a snapshot of the whole triangulation when CVM_OPT_DUAL_MAXMIN_TRIALS asks
  * (see CVM_OPT_DUAL_MAXMIN_ROUNDS and _TRIALS in
- * cvmesh.h for the rules and the measured effect).
+ * cvmesh.h for the rules, docs/design/dual_optimisation.md for the effect).
  *
  * Parallel and deterministic: the order above is cut into batches of vertices
  * no two of which are equal or share a triangle's vertex (so their local
@@ -65,13 +65,8 @@
 #define DEG_SWEEPS 10     /* degree repair after the first DEG_SWEEPS sweeps only */
 #define PATIENCE 4        /* sweeps without progress before the run stops */
 #define PUSHES 1          /* target raises before the run ends */
-#define PUSH_PATIENCE 2   /* PATIENCE after a raise: measured against 4, the same
-                             results on every Delaunay-refined and boundary-graded
-                             bench_dual mesh; the uniform frontal cylinder ends at
-                             37.38 degrees instead of 37.32 (dual/primal 0.179
-                             instead of 0.224), the 64k frontal square at 44.89
-                             instead of 44.93; the 1e5-triangle Delaunay square
-                             takes 4.6 s instead of 5.4 s */
+#define PUSH_PATIENCE 2   /* PATIENCE after a raise: 4 gave nearly the same results
+                             for more time (docs/design/dual_optimisation.md) */
 #define PROGRESS_DEG 0.05 /* smallest-angle gain over PATIENCE sweeps that keeps the run going */
 #define PUSH_DEG 5.0      /* each raise of the target angle, degrees */
 #define BEST_EPS_DEG 1e-3 /* smallest angle gain that makes a state the new best, degrees */

@@ -20,18 +20,15 @@
  * Bowyer-Watson with the refiner's encroachment rules (cvm__rf_insert_free),
  * so the "local reconnection" is the Delaunay cavity.
  *
- * Changes to the published rules, each measured with `cvmesh refine --algo
- * aflr --quality` at the bench sizes (% of angles in [55, 65] degrees on
- * square 0.02 / channel 0.02 / annulus 0.1 / cylinder 0.2 / NACA 0.2):
+ * Changes to the published rules (figures in docs/design/refiners.md):
  * - a new edge takes its layer from the base edge and the cavity boundary
  *   edges beside it, not the minimum over the whole cavity boundary: the
  *   first cavities reach across the domain to other boundaries, so the
  *   minimum labelled deep points layer 1 (islands of low layers);
  * - the queue orders by the Delaunay-refinement key (largest circumradius /
  *   size first, then worst shape), layer and relative edge length only
- *   breaking ties: strict layer order gave 94.9 / 98.4 / 62.5 / 90.3 / 66.9
- *   (curved fronts pile up their errors layer after layer, as the ~65-70% of
- *   the thesis), this gives 95.6 / 98.4 / 94.0 / 95.1 / 94.7 (0.0-0.4% obtuse);
+ *   breaking ties: in strict layer order curved fronts pile up their errors
+ *   layer after layer;
  * - the equilateral point is taken at the local size clamped to
  *   [AF_SHRINK, AF_GROW] x the edge so one layer never jumps in size, and a
  *   rejected candidate falls back to the next one instead of dropping the edge.
@@ -40,8 +37,7 @@
  *
  * Interleaved smoothing (CVM_OPT_AFLR_SMOOTH_LAYERS = N > 0): vertex layer k
  * holds the points placed for front edges of layer k - 1. The queue above
- * never finishes a layer before the end of the pass (with the bench cases,
- * layer 1 was complete only 3-10 points before the end), so with N > 0 the
+ * never finishes a layer before the end of the pass, so with N > 0 the
  * queue takes only front edges of layers below done + N (the key order holds
  * inside that band) and the others wait in a second queue; when the first
  * runs empty, layers done+1 .. done+N are complete: their free points whose
@@ -49,18 +45,15 @@
  * smoothed, the Delaunay property restored (Bowyer-Watson cavities need it),
  * encroached subsegments split, the cached qualities and layers of the
  * changed triangles renewed, and both queues rebuilt for the next band.
- * Measured: the band order, not the smoothing, costs regularity on curved
- * fronts (see the README), hence off by default.
+ * The band order, not the smoothing, costs regularity on curved fronts,
+ * hence off by default.
  *
  * Determinism: the edge-layer table is only looked up, never iterated; the
  * queue orders by (key, vertex ids).
  *
  * Cost: each triangle is measured once, when made (its quality is kept with
  * its edge layers per slot: the vertices do not move during the pass), and
- * the points carry frontal.c's 1e-9 jitter off the lattice. Measured with
- * callgrind on the bench cases (instructions per triangle, triangulate +
- * refine): square 12372 -> 10026, channel 11395 -> 9348, annulus 12620 ->
- * 10300, cylinder 12094 -> 9848, NACA 12388 -> 9990.
+ * the points carry frontal.c's 1e-9 jitter off the lattice.
  */
 #include <math.h>
 #include <string.h>
@@ -465,8 +458,7 @@ static int af_point(cvm__refiner *R, int32_t t, int j, double *x)
     /* A relative change below 1e-9, deterministic in the vertex count (as in
      * frontal.c), keeps the points off an exact lattice: lattice points are
      * cocircular in many fours, which sends the in-circle tests of the
-     * insertion to their slow exact stages (measured: 7% of the instructions
-     * of a naca0012 run). */
+     * insertion to their slow exact stages. */
     jit = 1 + 1e-9 * ((double)(((uint32_t)R->T->nv * 2654435761u) % 2048u) / 1024.0 - 1.0);
     for (k = 0; k < n; k++) {
         x[0] = m[0] + d[k] * jit * nrm[0];

@@ -4,7 +4,7 @@
 #include "refine_internal.h"
 #include "geom/geom_internal.h"
 
-/* Size test of Delaunay refinement (issue 4): a triangle is too big when its
+/* Size test of Delaunay refinement: a triangle is too big when its
  * circumradius exceeds the mean size at its three vertices times this. */
 #define DR_SIZE_FACTOR 1.0
 /* Miller-Pav-Walkington exemption (as Triangle): the two ends of the shortest
@@ -164,12 +164,11 @@ int cvm__rf_classify(cvm__refiner *R, int32_t t, double *key_out)
  *
  * Why shortest edge first and not worst angle first: with the worst first,
  * circumcentres at 34 degrees cascade into ever smaller clusters on the
- * cylinder and the NACA 0012 (at h = 0.2 and with no size at all), and at 33
- * degrees with no size the cylinder took 2,365 vertices where Triangle takes
- * 659. Fixing the finest triangles first lets the coarser ones around them
- * be split once, by a point that already fits the finer neighbourhood. With
- * this order and off-centres every shared geometry terminates at 34 and 34.5
- * degrees (Triangle keys its queue by the shortest edge too). */
+ * cylinder and the NACA 0012 (at h = 0.2 and with no size at all). Fixing
+ * the finest triangles first lets the coarser ones around them be split once,
+ * by a point that already fits the finer neighbourhood. With this order and
+ * off-centres refinement terminates at 34 and 34.5 degrees on the example
+ * domains (Triangle keys its queue by the shortest edge too). */
 static cvm_status dr_queue_triangle(cvm__refiner *R, int32_t t)
 {
     double key, lmin;

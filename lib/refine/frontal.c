@@ -3,10 +3,7 @@
  * Each triangle's measure (fr_measure) is kept in a per-slot record for the
  * length of the pass (struct cvm__fr_rec): a triangle is looked at on push,
  * on pop and by each neighbour testing the front, but its vertices never move
- * while the pass runs. Measured (callgrind, bench_refine IN H 2 1, frontal,
- * whole run, -O2; -O3 in brackets): annulus 0.1 257.2M -> 242.6M instructions,
- * -5.7% [-5.3%]; naca0012 0.2 929.3M -> 870.3M, -6.4% [-6.0%]. The output is
- * bit-identical to measuring every time.
+ * while the pass runs. The output is bit-identical to measuring every time.
  */
 #include <math.h>
 
@@ -319,7 +316,7 @@ static int fr_point(const cvm__refiner *R, int32_t t, int jf, double *x)
     /* A relative change below 1e-9, deterministic in the vertex count, keeps
      * the frontal points off an exact lattice: lattice points are cocircular
      * in many fours, which sends the in-circle tests of the insertion to their
-     * slow exact stages (measured: 10% of the instructions of a naca0012 run). */
+     * slow exact stages. */
     d *= 1 + 1e-9 * ((double)(((uint32_t)R->T->nv * 2654435761u) % 2048u) / 1024.0 - 1.0);
     x[0] = m[0] + d * nx;
     x[1] = m[1] + d * ny;

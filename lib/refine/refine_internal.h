@@ -320,17 +320,11 @@ cvm_status cvm__rf_split_segment(cvm__refiner *R, int32_t a, int32_t b, int32_t 
 /* March every subsegment with the sizing (CVM_OPT_MARCH_SEGMENTS). */
 cvm_status cvm__rf_march_segments(cvm__refiner *R);
 /* The grading rate g of the march (h_b = min(h, l(e) + g d(x, e)), see
- * split_segment.c); consecutive pieces then differ by about exp(g). Chosen by
- * measurement (bench_refine, the NACA trailing edge); a build may override it
- * to compare. */
+ * split_segment.c); consecutive pieces then differ by about exp(g). */
 /* Default smoothing of each refiner (CVM_OPT_SMOOTH_SWEEPS and
- * CVM_OPT_RELAX_SWEEPS at -1). Frontal leaves rougher seams where fronts meet
- * (NACA 0012 far-field ring before smoothing: 4.1% of all angles out of
- * [55, 65] against AFLR's 2.9%), so it gets more smart sweeps; fewer
- * relaxation sweeps pay for part of them. A fifth smart sweep gained 0.02-0.08
- * points for 7% of frontal's instructions on the annulus, where frontal is
- * closest to issue 4's time budget (3x Triangle per triangle). Measured in
- * CVM_OPT_SMOOTH_SWEEPS's documentation and the README. */
+ * CVM_OPT_RELAX_SWEEPS at -1). Frontal leaves rougher seams where fronts meet,
+ * so it gets more smart sweeps; fewer relaxation sweeps pay for part of them.
+ * Figures in docs/design/refiners.md. */
 #define CVM__FRONTAL_SMOOTH_SWEEPS 4
 /* Frontal accepts a triangle whose circumradius is at most sqrt(this) times
  * the local size (Rebay's "small enough"): a right isosceles triangle with legs

@@ -22,7 +22,7 @@
  * Samples: every feature vertex, and points inside each edge by bisection until
  * a piece is shorter than min(1/2, G/R) x the smaller lfs at its ends (lfs is
  * 1-Lipschitz, so it cannot dip much between samples). The minimum over
- * samples of a cone of slope 1/G is the discrete form of the issue's
+ * samples of a cone of slope 1/G is the discrete form of the specified
  * "min over neighbours q of LS(q) + |q - p|/G": it is graded with slope 1/G
  * everywhere, and equals lfs_c/R at a sample unless a smaller size nearby
  * grades it down. Interior points get their size from the boundary through the

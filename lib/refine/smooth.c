@@ -8,13 +8,8 @@
 #include "geom/geom_internal.h"
 
 /* Weight of an obtuse angle against an angle in [55, 65] degrees in the
- * regularity count: with 1 the ODT candidates trade obtuse triangles for
- * regular angles (annulus: 0.05% -> 0.12% obtuse); 4 kept every shared
- * geometry at or below the obtuse share of the smart Laplacian alone with the
- * six steps; with the apex candidates and the pattern search (below) 4 let
- * aflr reach 0.05% obtuse on the annulus (0.00% before) and 0.08% on the
- * cylinder (0.05%); 16 keeps every shared geometry at or below the obtuse
- * share it had before them. */
+ * regularity count: high enough that the extra candidates never trade obtuse
+ * triangles for regular angles (docs/design/refiners.md). */
 #define SM_OBTUSE_WEIGHT 16
 /* Relaxation accepts a move that worsens the star's count by at most this. */
 #define SM_RELAX_SLACK 1.0
@@ -22,8 +17,7 @@
  * vertex's shortest edge (the square of the fraction). */
 #define SM_RELAX_WAKE2 1e-3
 /* Relaxation skips a vertex whose longest spoke is more than 1.5 times its
- * shortest (squared): measured, this keeps the regularity of the shared
- * geometries and saves 3-4% of the refinement's instructions. */
+ * shortest (squared): in a graded star the ODT point is not the target. */
 #define SM_RELAX_GRADED2 2.25
 
 /* Smart sweeps, after the six steps towards the centroid and the ODT point,
@@ -36,48 +30,25 @@
  * after a round without gain. The six steps alone cannot reach the positions
  * that make single star triangles exactly regular, which graded stars (the
  * NACA wall rows) and the row where a curved boundary meets the interior
- * lattice need. Measured with `cvmesh refine --quality` (% of angles in
- * [55, 65] degrees, frontal / aflr) on the NACA 0012 at size 0.2: 95.10 /
- * 95.42 with the six steps; apexes alone 95.63 / 95.93; apexes, half-way
- * points and midpoints 95.96 / 96.18; with the pattern search 96.13 / 96.33
- * (6 rounds of 8 directions: 96.23 / 96.40 for 3x the smoothing cost); the
- * final rules (SM_EXTRA_FROM, SM_MIN_SPOKE, SM_OBTUSE_WEIGHT 16) 95.99 /
- * 96.22, and 96.12 / 96.37 with 4 smart sweeps (--smooth 4). */
+ * lattice need. */
 #define SM_PATTERN_ITERS 3
 #define SM_PATTERN_DIRS 4
 #define SM_PATTERN_STEP 0.1
 /* The extra candidates are tried from this smart sweep on (0 = the first):
- * measured on the NACA, from the second sweep they give the same regularity
- * as in every sweep (95.99 / 96.22 against 95.97 / 96.25) for 5% fewer
- * instructions of the whole CLI run; in the first sweep alone 95.55 / 95.83.
- * From the third (the last of the default 3) they give 95.75 / 96.06 for 10%
- * fewer instructions again (AFLR on the annulus: 146 M against 163 M), which
- * keeps frontal and AFLR near issue 4's 3x Triangle per triangle on the
- * annulus (bench_refine 2.85x / 3.05x, against 3.11x / 3.36x from the
- * second sweep): the default. */
+ * in earlier sweeps they cost time and gain little, as the points still move. */
 #define SM_EXTRA_FROM 2
 /* Graded stars (longest spoke > 1.5x the shortest, as SM_RELAX_GRADED2) get
- * the extra candidates from this smart sweep on: they are the NACA's wall
- * rows, which need them most, and are few elsewhere. Measured: NACA 95.75 /
- * 96.06 -> 95.82 / 96.13 for 0.6% more instructions on the annulus (from the
- * first sweep: 95.87 / 96.13 for 2.9%; a fourth sweep over graded stars
- * alone: 95.89 / 96.20 for 2.3%). */
+ * the extra candidates from this smart sweep on: they are the wall rows of a
+ * graded boundary, which need them most, and are few elsewhere. */
 #define SM_EXTRA_FROM_GRADED 1
 /* Other stars get them only when at least this many of their angles are out
  * of [55, 65] degrees (their regularity count exceeds the perfect -3n by this
  * much; an obtuse angle counts 17): the nearly regular stars of a lattice
- * rarely gain from them. Measured against every imperfect star (0.5): the same
- * figures at 4.5; at 6.5 NACA 95.83 / 96.13 -> 95.77 / 96.08, annulus 96.18 /
- * 95.74 -> 96.06 / 95.64 for 6% fewer instructions (AFLR annulus 147 M ->
- * 138.5 M) and bench_refine's annulus at 2.63-2.68x / 2.85-2.86x Triangle's
- * time per triangle (2.84-3.00x / 3.09-3.19x before); 8.5 costs the NACA
- * another 0.1 point for no further speed. */
+ * rarely gain from them. */
 #define SM_EXTRA_MIN_BAD 6.5
 /* The extra candidates never make a spoke shorter than this fraction of the
- * smaller of the size and the root mean square spoke of the star (no
- * crowded points: without it the annulus at size 0.1 got an edge of 0.498 x
- * the size; a floor at the shortest spoke instead cost 0.17 points on the
- * NACA, whose graded stars must shorten spokes). */
+ * smaller of the size and the root mean square spoke of the star, so points
+ * do not crowd; not the shortest spoke, as graded stars must shorten spokes. */
 #define SM_MIN_SPOKE 0.6
 
 /* Star of v into *star (triangles, counter-clockwise); returns the count, or 0
