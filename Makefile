@@ -88,7 +88,7 @@ STAGE := $(abspath $(BUILD))/stage
 EXAMPLES_C := $(sort $(wildcard examples/c/*.c))
 
 .PHONY: install-c python fortran install-python install-fortran
-.PHONY: venv check-standalone
+.PHONY: venv check-standalone check-golden
 .PHONY: all lib cli tests deps demo check check-unit check-asan check-symbols check-cli \
         check-examples check-python check-fortran check-clang check-noomp check-fuzz \
         check-replay check-valgrind check-amalgamation fuzz fuzz-bins replay-bins bench \
@@ -232,7 +232,7 @@ demo: deps
 
 # ---- make check ------------------------------------------------------------
 # Each step prints "== step ==" and its time; the first failure stops the run.
-CHECK_STEPS := build check-unit check-symbols check-cli check-standalone check-examples check-asan \
+CHECK_STEPS := build check-unit check-symbols check-cli check-golden check-standalone check-examples check-asan \
                check-amalgamation check-clang check-noomp check-fuzz check-python check-fortran
 
 check: deps
@@ -269,6 +269,11 @@ check-noomp:
 	@if readelf -d $(BUILD)/noomp/lib/libcvmesh.so.$(VERSION) | grep -q -E 'gomp|omp\.so'; then \
 	  echo "check-noomp: OPENMP=0 library still links an OpenMP runtime"; exit 1; fi
 	$(TEST_ENV) $(BUILD)/noomp/tests/unit_tests
+
+# Golden checksums of the CLI's meshes on the example domains (tests/golden/sums.md5):
+# a change that alters a mesh updates them on purpose (sh tests/golden/run.sh CLI --update).
+check-golden: $(CLI)
+	sh tests/golden/run.sh $(CLI)
 
 # No file reaches outside the repository; a clone of HEAD alone demos and tests.
 check-standalone:
