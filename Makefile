@@ -14,9 +14,11 @@
 
 SHELL := /bin/bash
 
-VERSION_MAJOR := 0
-VERSION_MINOR := 1
-VERSION_PATCH := 0
+# The version is the header's (CVM_VERSION_*), read here so the two cannot disagree.
+header_version = $(shell sed -n 's/^\#define CVM_VERSION_$(1) \([0-9][0-9]*\)$$/\1/p' include/cvmesh.h)
+VERSION_MAJOR := $(call header_version,MAJOR)
+VERSION_MINOR := $(call header_version,MINOR)
+VERSION_PATCH := $(call header_version,PATCH)
 VERSION := $(VERSION_MAJOR).$(VERSION_MINOR).$(VERSION_PATCH)
 
 # GNU make's built-in default CC is "cc"; keep it unless the user chose one.
@@ -43,7 +45,6 @@ CFLAGS_BASE := -std=c99 $(OPT) -g $(WARN) -fvisibility=hidden -fPIC -Iinclude -I
                -D_POSIX_C_SOURCE=200809L
 ifeq ($(OPENMP),1)
   OMPFLAGS := -fopenmp
-  CFLAGS_BASE += -DCVM_OPENMP=1
 endif
 ifeq ($(SAN),1)
   SANFLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer

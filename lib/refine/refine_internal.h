@@ -100,10 +100,8 @@ void cvm__auto_field_free(cvm__auto_field *F, cvm__ctx *ctx);
  * length, slope g (> 0). CVM_OK or CVM_E_NOMEM (recorded on ctx; F empty). */
 cvm_status cvm__spacing_field_build(cvm__auto_field *F, const cvm__tri2 *T, double g,
                                     cvm__ctx *ctx);
-/* Size at (x, y); +inf without samples. */
-double cvm__auto_field_at(const cvm__auto_field *F, double x, double y);
-/* The same, but only when it is below bound (else bound): the search stops as
- * soon as no sample can beat it, so a small bound makes it cheap. */
+/* Size at (x, y) when it is below bound (else bound; bound without samples):
+ * the search stops as soon as no sample can beat it, so a small bound makes it cheap. */
 double cvm__auto_field_below(const cvm__auto_field *F, double x, double y, double bound);
 /* Size of the background mesh at (x, y): the least linear interpolant over
  * the triangles containing it, +inf outside them. */

@@ -462,11 +462,6 @@ static cvm_status af_field_grid(cvm__auto_field *F, cvm__ctx *ctx)
     return CVM_OK;
 }
 
-double cvm__auto_field_at(const cvm__auto_field *F, double x, double y)
-{
-    return cvm__auto_field_below(F, x, y, HUGE_VAL);
-}
-
 double cvm__auto_field_below(const cvm__auto_field *F, double x, double y, double bound)
 {
     double best = bound, inv_g = 1.0 / F->G;
