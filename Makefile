@@ -76,10 +76,11 @@ CHECK_LIBS = $(shell pkg-config --libs check 2>/dev/null || echo -lcheck -lsubun
 TEST_ENV = CVM_DATA_DIR=$(DATA_DIR) CVM_TEST_DATA=$(CURDIR)/tests/data
 
 # Fuzz targets: tests/fuzz/fuzz_<name>.c, seeds in tests/fuzz/corpus/<name>/.
-FUZZ_TARGETS := poly_read node_read cdt vtu_read
+FUZZ_TARGETS := poly_read node_read cdt vtu_read refine optimise
 FUZZ_BINS := $(FUZZ_TARGETS:%=$(BUILD)/fuzz/fuzz_%)
 REPLAY_BINS := $(FUZZ_TARGETS:%=$(BUILD)/fuzz/replay_%)
 FUZZ_SUPPORT_OBJ := $(BUILD)/obj/tests/fuzz/mesh_oracle.o $(BUILD)/obj/tests/fuzz/fuzz_input.o \
+                    $(BUILD)/obj/tests/fuzz/fuzz_pslg.o \
                     $(BUILD)/obj/tests/unit/support/failing_alloc.o
 
 # Build steps of make check run with -j$(JOBS) unless make was given -j.
@@ -147,7 +148,7 @@ $(BUILD)/fuzz/replay_%: $(BUILD)/obj/tests/fuzz/fuzz_%.o $(BUILD)/obj/tests/fuzz
 
 # Keep the objects of the fuzz programs (make would delete them as intermediates).
 .SECONDARY: $(FUZZ_TARGETS:%=$(BUILD)/obj/tests/fuzz/fuzz_%.o) $(BUILD)/obj/tests/fuzz/regression_driver.o \
-            $(BUILD)/obj/tests/fuzz/fuzz_input.o
+            $(BUILD)/obj/tests/fuzz/fuzz_input.o $(BUILD)/obj/tests/fuzz/fuzz_pslg.o
 
 fuzz-bins: $(FUZZ_BINS)
 replay-bins: $(REPLAY_BINS)
@@ -165,6 +166,8 @@ FUZZ_RUNS_poly_read ?= 500000
 FUZZ_RUNS_node_read ?= 500000
 FUZZ_RUNS_cdt ?= 15000
 FUZZ_RUNS_vtu_read ?= 100000
+FUZZ_RUNS_refine ?= 2000
+FUZZ_RUNS_optimise ?= 1000
 FUZZ_MAKE = $(MAKE) $(PAR) --no-print-directory BUILD=$(FUZZ_BUILD) CC=$(CLANG) SAN=1 FUZZ=1 OPENMP=0
 
 # run_fuzz(target, seconds, seed, runs): fresh work corpus seeded from the committed one;

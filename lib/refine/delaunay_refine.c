@@ -88,12 +88,14 @@ static int dr_exempt(cvm__refiner *R, int32_t u, int32_t w)
     for (a = 0; a < nu; a++)
         for (b = 0; b < nw; b++) {
             const int32_t *e1 = R->seg_ends + 2 * (size_t)su[a], *e2 = R->seg_ends + 2 * (size_t)sw[b];
-            int32_t J = (e1[0] == e2[0] || e1[0] == e2[1]) ? e1[0]
-                      : (e1[1] == e2[0] || e1[1] == e2[1]) ? e1[1] : -1;
+            int32_t J = (e1[0] >= 0 && (e1[0] == e2[0] || e1[0] == e2[1])) ? e1[0]
+                      : (e1[1] >= 0 && (e1[1] == e2[0] || e1[1] == e2[1])) ? e1[1] : -1;
             const double *pj, *pu, *pw;
             double ux, uy, wx, wy, d1, d2, xc[2];
             if (J >= 0)
                 pj = dr_pt(R, J);
+            else if (e1[0] < 0 || e1[1] < 0 || e2[0] < 0 || e2[1] < 0)
+                continue; /* a re-discretised chain: the input segment is gone */
             else if (dr_crossing(R, su[a], sw[b], xc))
                 pj = xc;
             else

@@ -192,7 +192,9 @@ typedef struct cvm__refine_params {
                                   subsegment ends at this rate (CVM__MARCH_GRADE);
                                   0: each subsegment is marched on its own */
     const cvm_sizing *sizing;  /* may be NULL */
-    const int32_t *seg_ends;   /* 2 per segment id: the vertices ending the input segment */
+    const int32_t *seg_ends;   /* 2 per segment id: the vertices ending the input segment;
+                                  -1 for an end that CVM_OPT_KEEP_SEGMENT_VERTICES = 0
+                                  removed (an inner vertex of a re-discretised chain) */
     size_t nseg;               /* segment ids 0..nseg-1 */
     int swap;                  /* 1: swap edges towards degree 6 after refining */
     int smooth_sweeps;         /* sweeps of smoothing after refining */
@@ -249,7 +251,7 @@ typedef struct cvm__refiner {
     cvm__tri2 *T;
     cvm__ctx *ctx;
     const cvm__refine_params *p;
-    int32_t *seg_ends;         /* 2 per segment id, hull segments appended */
+    int32_t *seg_ends;         /* 2 per segment id (-1 as in cvm__refine_params), hull segments appended */
     size_t nseg;               /* ids 0..nseg-1 (input, then hull) */
     double sin2_min;           /* sin^2 of the requested angle */
     double size2;              /* size test: circumradius^2 <= size2 x (mean size)^2 (1, or

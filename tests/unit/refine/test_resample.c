@@ -590,6 +590,39 @@ START_TEST(collapsing_chains_fall_back)
 }
 END_TEST
 
+/* A 16-gon of radius 2 on a 1/8 grid is one smooth chain: re-discretised, its
+ * inner input vertices are gone, so their input segments have no ends left.
+ * The small-input-angle test of a skinny triangle between two pieces must
+ * skip such segments (it read the coordinates of vertex -1 before) and find
+ * no small input angle in a convex polygon. */
+START_TEST(removed_chain_ends_are_no_small_input_angle)
+{
+    double xy[2 * 16], v;
+    cvm_index seg[2 * 16];
+    cvm_mesh *m;
+    int k;
+    for (k = 0; k < 16; k++) {
+        xy[2 * k] = floor((8 + 2 * cos(2 * PI * k / 16)) * 8 + 0.5) / 8;
+        xy[2 * k + 1] = floor((8 + 2 * sin(2 * PI * k / 16)) * 8 + 0.5) / 8;
+        seg[2 * k] = k;
+        seg[2 * k + 1] = (k + 1) % 16;
+    }
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_points(m, xy, 16, 2), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_segments(m, seg, 16), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_KEEP_SEGMENT_VERTICES, 0), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_MIN_ANGLE_DEG, 20 + 13 * 157 / 255.0), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+    ck_assert_int_eq(refine_with(m, 1.0, CVM_ALGO_FRONTAL), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_check(m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_get_measure(&v, m, CVM_MEASURE_REFINE_SMALL_INPUT_ANGLE), CVM_OK);
+    ck_assert_double_eq(v, 0);
+    ck_assert_int_eq(cvm_mesh_get_measure(&v, m, CVM_MEASURE_REFINE_UNMET_ANGLE), CVM_OK);
+    ck_assert_double_eq(v, 0);
+    cvm_mesh_free(m);
+}
+END_TEST
+
 /* Out of memory at every allocation of a re-discretising refinement: a
  * status, no leak, and a valid mesh (the rebuilt one or the old one). */
 static void oom_setup(cvm_mesh *m, void *arg)
@@ -622,6 +655,7 @@ TCase *refine_resample_tcase(void)
     tcase_add_test(tc, channel_and_cylinder_corners_are_kept);
     tcase_add_test(tc, option_and_state_errors);
     tcase_add_test(tc, collapsing_chains_fall_back);
+    tcase_add_test(tc, removed_chain_ends_are_no_small_input_angle);
     tcase_add_test(tc, markers_and_attributes_follow_the_chain);
     tcase_add_test(tc, sizing_error_during_resampling);
     tcase_add_test(tc, out_of_memory_is_a_status);
