@@ -361,7 +361,8 @@ static int in_file_triangle(const cvm__vtu_mesh *vm, size_t k, const double *p)
     const double *a = vm->p.xy + 2 * (size_t)t[0], *b = vm->p.xy + 2 * (size_t)t[1],
                  *c = vm->p.xy + 2 * (size_t)t[2];
     double o1 = cvm__orient2d(a, b, p), o2 = cvm__orient2d(b, c, p), o3 = cvm__orient2d(c, a, p);
-    return (o1 >= 0 && o2 >= 0 && o3 >= 0) || (o1 <= 0 && o2 <= 0 && o3 <= 0); /* either orientation */
+    /* either orientation of the file's triangle */
+    return (o1 >= 0 && o2 >= 0 && o3 >= 0) || (o1 <= 0 && o2 <= 0 && o3 <= 0);
 }
 
 /* 1 when p lies in (or on) a triangle of the file. */

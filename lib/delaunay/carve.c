@@ -3,7 +3,7 @@
 #include "tri2_store.h"
 
 /* Append t to the flood list T->stack[0..*n) and mark it CVM__TF_MARK2. */
-static cvm_status push(cvm__tri2 *T, size_t *n, int32_t t)
+static cvm_status flood_push(cvm__tri2 *T, size_t *n, int32_t t)
 {
     if (*n >= T->cap_stack &&
         cvm__grow(T->ctx, (void **)&T->stack, &T->cap_stack, *n + 1, sizeof(int32_t)))
@@ -31,7 +31,7 @@ static cvm_status flood_marked(cvm__tri2 *T, const int32_t *seeds, size_t nseeds
             continue;
         if (op == 1 && (T->tf[t] & CVM__TF_OUT))
             continue;
-        s = push(T, &n, t);
+        s = flood_push(T, &n, t);
     }
     for (head = 0; head < n && !s; head++) {
         int32_t t = T->stack[head];
@@ -51,7 +51,7 @@ static cvm_status flood_marked(cvm__tri2 *T, const int32_t *seeds, size_t nseeds
                 continue;
             if (op == 1 && ((T->tf[u] & CVM__TF_OUT) || cvm__tri2_is_ghost(T, u)))
                 continue;
-            s = push(T, &n, u);
+            s = flood_push(T, &n, u);
         }
     }
     *n_out = n;
@@ -60,7 +60,7 @@ static cvm_status flood_marked(cvm__tri2 *T, const int32_t *seeds, size_t nseeds
     return s;
 }
 
-static void unmark(cvm__tri2 *T, size_t n)
+static void flood_unmark(cvm__tri2 *T, size_t n)
 {
     size_t i;
     for (i = 0; i < n; i++)
@@ -71,7 +71,7 @@ static cvm_status flood(cvm__tri2 *T, const int32_t *seeds, size_t nseeds, int o
 {
     size_t n = 0;
     cvm_status s = flood_marked(T, seeds, nseeds, op, value, &n, NULL);
-    unmark(T, n);
+    flood_unmark(T, n);
     return s;
 }
 
