@@ -543,7 +543,10 @@ typedef enum cvm_option {
 
     /** Run control (400..499). */
     /** Time limit, seconds on a monotonic clock, 0 = none (default), bounds [0, 1e9].
-     *  The one documented source of non-determinism. */
+     *  It bounds each call that reads it (cvm_mesh_triangulate(), cvm_mesh_refine(),
+     *  cvm_mesh_optimise_dual(), cvm_mesh_insert_points()), from the call's start; to
+     *  bound several calls together, set it to what is left before each (as the
+     *  cvmesh program does). The one documented source of non-determinism. */
     CVM_OPT_TIME_LIMIT_S = 400,
     /** Seed of the handle's random stream, integer, default 1, bounds [0, 2^53]. */
     CVM_OPT_SEED = 401,
@@ -745,9 +748,11 @@ typedef int (*cvm_progress_fn)(void *payload, cvm_stage stage, double fraction);
 
 /**
  * Install a progress callback, called about every @p every_n elementary
- * operations (point insertions, segment recoveries) of long calls. The time
- * limit CVM_OPT_TIME_LIMIT_S is checked at the same points (every 1024
- * operations when no callback is set). fn NULL or every_n < 1 removes it.
+ * operations (point insertions, segment recoveries, holes and regions carved
+ * (CVM_STAGE_CARVE, a hole counting the triangles it removes), segment splits
+ * planned before refinement) of long calls. The time limit
+ * CVM_OPT_TIME_LIMIT_S is checked at the same points (every 1024 operations
+ * when no callback is set). fn NULL or every_n < 1 removes it.
  * What a stop leaves is documented by each long call.
  * @return CVM_OK, CVM_E_NULL_ARG (m NULL)
  * @since 0.1

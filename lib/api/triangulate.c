@@ -119,33 +119,71 @@ int32_t cvm__mesh_seed_triangle(cvm_mesh *m, const double *p)
     return t;
 }
 
+/* A stop (time limit or cancellation) while carving: the caller drops the mesh. */
+static cvm_status carve_stopped(cvm_mesh *m, cvm_status s, const char *what, size_t k, size_t n)
+{
+    return cvm__error(&m->ctx, s, CVM_ENT_NONE, -1,
+                      "%s while carving (%s %lu of %lu); the mesh is empty",
+                      s == CVM_INCOMPLETE_CANCELLED ? "cancelled" : "time limit reached", what,
+                      (unsigned long)k + 1, (unsigned long)n);
+}
+
+/* Holes are carved one after another, as if each flooded the whole
+ * triangulation afresh, but a triangle is visited by one hole at most (see
+ * cvm__tri2_flood_out_more) and the domain is counted down rather than
+ * recounted, so the work is linear in the triangles plus the walks that
+ * locate the hole points (each starts where the previous one ended). */
+static cvm_status carve_holes(cvm_mesh *m, size_t ndomain)
+{
+    cvm__tri2 *T = &m->tri;
+    size_t k, visited = 0, removed = 0;
+    cvm_status s = CVM_OK;
+    for (k = 0; k < m->in.nholes && !s; k++) {
+        const double *h = m->in.holes + 2 * k;
+        int32_t t = cvm__mesh_seed_triangle(m, h);
+        if (t < 0) {
+            s = cvm__error(&m->ctx, CVM_E_INPUT_OUTSIDE, CVM_ENT_HOLE, (int64_t)k,
+                           "hole %lu at (%.17g, %.17g) lies outside the convex hull of the points",
+                           (unsigned long)k, h[0], h[1]);
+            break;
+        }
+        if (cvm__tri2_flood_out_more(T, t, &visited, &removed)) {
+            s = cvm__nomem(&m->ctx);
+            break;
+        }
+        ndomain -= removed;
+        if (ndomain == 0) {
+            s = cvm__error(&m->ctx, CVM_E_INPUT_NOT_CLOSED, CVM_ENT_HOLE, (int64_t)k,
+                           "hole %lu at (%.17g, %.17g) removed every triangle: the boundary "
+                           "around it is not closed",
+                           (unsigned long)k, h[0], h[1]);
+            break;
+        }
+        if ((s = cvm__tick(&m->ctx, 1 + (int64_t)visited, CVM_STAGE_CARVE,
+                           (double)k / (double)m->in.nholes)))
+            s = carve_stopped(m, s, "hole", k, m->in.nholes);
+    }
+    cvm__tri2_clear_mark2(T);
+    return s;
+}
+
 cvm_status cvm__mesh_carve(cvm_mesh *m)
 {
     cvm__tri2 *T = &m->tri;
-    size_t k;
+    size_t k, ndomain;
     int keep = cvm__opt(m, CVM_OPT_KEEP_CONVEX_HULL) != 0 || m->in.nseg == 0;
     cvm_status s = cvm__tri2_flood_out(T, NULL, 0, !keep);
     if (s)
         return cvm__nomem(&m->ctx);
-    if (count_domain(T) == 0)
+    ndomain = count_domain(T);
+    if (ndomain == 0)
         return cvm__error(&m->ctx, CVM_E_INPUT_NOT_CLOSED, CVM_ENT_NONE, -1,
                           "removing the exterior removed every triangle: the segments do not "
                           "enclose a region (open boundary)");
-    for (k = 0; k < m->in.nholes; k++) {
-        const double *h = m->in.holes + 2 * k;
-        int32_t t = cvm__mesh_seed_triangle(m, h);
-        if (t < 0)
-            return cvm__error(&m->ctx, CVM_E_INPUT_OUTSIDE, CVM_ENT_HOLE, (int64_t)k,
-                              "hole %lu at (%.17g, %.17g) lies outside the convex hull of the points",
-                              (unsigned long)k, h[0], h[1]);
-        if ((s = cvm__tri2_flood_out(T, &t, 1, 0)))
-            return cvm__nomem(&m->ctx);
-        if (count_domain(T) == 0)
-            return cvm__error(&m->ctx, CVM_E_INPUT_NOT_CLOSED, CVM_ENT_HOLE, (int64_t)k,
-                              "hole %lu at (%.17g, %.17g) removed every triangle: the boundary "
-                              "around it is not closed",
-                              (unsigned long)k, h[0], h[1]);
-    }
+    if ((s = cvm__tick(&m->ctx, 1 + (int64_t)T->nt, CVM_STAGE_CARVE, 0.0)))
+        return carve_stopped(m, s, "exterior", 0, 1);
+    if (m->in.nholes && (s = carve_holes(m, ndomain)))
+        return s;
     for (k = 0; k < m->in.nregions; k++) {
         const double *r = m->in.regions + 4 * k;
         int32_t t = cvm__mesh_seed_triangle(m, r);
@@ -155,6 +193,8 @@ cvm_status cvm__mesh_carve(cvm_mesh *m)
                               (unsigned long)k, r[0], r[1]);
         if ((s = cvm__tri2_flood_attribute(T, t, r[2])))
             return cvm__nomem(&m->ctx);
+        if ((s = cvm__tick(&m->ctx, 1, CVM_STAGE_CARVE, (double)k / (double)m->in.nregions)))
+            return carve_stopped(m, s, "region", k, m->in.nregions);
     }
     return CVM_OK;
 }

@@ -102,6 +102,20 @@ int cli_write_dual(cvm_mesh *m, const char *path);
 /* Monotonic seconds. */
 double cli_now(void);
 
+/* --time-limit bounds the whole command, not each library call: the time the
+ * command started and the limit its settings gave (0: none). */
+typedef struct cli_budget {
+    double start, limit;
+} cli_budget;
+
+/* Start the budget now, with m's CVM_OPT_TIME_LIMIT_S (settings applied). */
+void cli_budget_begin(cli_budget *b, const cvm_mesh *m);
+/* Before a call that honours CVM_OPT_TIME_LIMIT_S: set it on m to what is
+ * left of b, or to a microsecond when nothing is left (the call then stops
+ * at its first check: a refinement keeps a valid mesh and says so, a
+ * triangulation is left empty). No limit: nothing changes. */
+void cli_budget_apply(const cli_budget *b, cvm_mesh *m);
+
 /* Subcommands: argv[0] is the subcommand's name. */
 int cli_triangulate(int argc, char **argv);
 void cli_triangulate_help(FILE *f);

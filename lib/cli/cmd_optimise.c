@@ -52,7 +52,9 @@ void cli_optimise_help(FILE *f)
             "  -h, --help                 print this help\n");
     cli_print_option_flags(f, CLI_CMD_OPTIMISE);
     fprintf(f, "\nStopped by --time-limit the mesh is still a valid regular triangulation and\n"
-               "is written; the exit status is 0 and a note says so.\n");
+               "is written; the exit status is 0 and a note says so. --time-limit bounds the\n"
+               "whole command (reading and writing are not cut short); stopped during the\n"
+               "triangulation before refinement, nothing is written and the exit status is 1.\n");
 }
 
 static int parse_value(oargs *a, int argc, char **argv, int *i)
@@ -153,10 +155,12 @@ static int run(const oargs *a)
 {
     cvm_mesh *m;
     cvm_sizing *sz = NULL;
+    cli_budget budget;
     cvm_status s;
     int rc;
     if ((rc = cli_start(&m, &sz, a->set, a->nset, a->size)))
         return rc;
+    cli_budget_begin(&budget, m);
     if (cvm_sizing_set_boundary_grading(sz, a->bgrad) != CVM_OK) {
         fprintf(stderr, "cvmesh: --boundary-grading: %s\n", cvm_sizing_errmsg(sz));
         cvm_sizing_free(sz);
@@ -165,15 +169,18 @@ static int run(const oargs *a)
     }
     if (cvm_mesh_read(m, a->in) != CVM_OK)
         return cli_fail(m, sz, NULL);
+    cli_budget_apply(&budget, m);
     if (!cli_is_triangulated(m) && cvm_mesh_triangulate(m) != CVM_OK) /* a .vtu is a mesh */
         return cli_fail(m, sz, a->in);
     if (a->refine) {
+        cli_budget_apply(&budget, m);
         s = cvm_mesh_refine(m, sz, a->algo);
         if (cvm_status_is_error(s))
             return cli_fail(m, sz, a->in);
         if (s != CVM_OK)
             fprintf(stderr, "cvmesh: note: %s: %s\n", a->in, cvm_mesh_errmsg(m));
     }
+    cli_budget_apply(&budget, m);
     s = cvm_mesh_optimise_dual(m, NULL);
     return cli_finish(m, sz, a->in, s, a->out, NULL, a->dual, a->quality, print_dual_report);
 }

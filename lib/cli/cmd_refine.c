@@ -57,7 +57,9 @@ void cli_refine_help(FILE *f)
             "  -h, --help                 print this help\n");
     cli_print_option_flags(f, CLI_CMD_REFINE);
     fprintf(f, "\nStopped by --max-steiner or --time-limit the mesh is still valid and written;\n"
-               "the exit status is 0 and a note says what was left unmet.\n");
+               "the exit status is 0 and a note says what was left unmet. --time-limit bounds\n"
+               "the whole command (reading and writing are not cut short); stopped during the\n"
+               "triangulation before refinement, nothing is written and the exit status is 1.\n");
 }
 
 /* --fronts 1,2,...: integer markers separated by commas. */
@@ -190,10 +192,12 @@ static int run(const rargs *a)
 {
     cvm_mesh *m;
     cvm_sizing *sz = NULL;
+    cli_budget budget;
     cvm_status s;
     int rc;
     if ((rc = cli_start(&m, &sz, a->set, a->nset, a->size)))
         return rc;
+    cli_budget_begin(&budget, m);
     if ((a->auto_r > 0 && cvm_sizing_set_automatic(sz, a->auto_r, a->grading) != CVM_OK) ||
         cvm_sizing_set_boundary_grading(sz, a->bgrad) != CVM_OK) {
         fprintf(stderr, "cvmesh: sizing: %s\n", cvm_sizing_errmsg(sz));
@@ -203,10 +207,12 @@ static int run(const rargs *a)
     }
     if (cvm_mesh_read(m, a->in) != CVM_OK)
         return cli_fail(m, sz, NULL);
+    cli_budget_apply(&budget, m);
     if (!cli_is_triangulated(m) && cvm_mesh_triangulate(m) != CVM_OK) /* a .vtu is a mesh */
         return cli_fail(m, sz, a->in);
     if (a->nfronts && cvm_mesh_set_front_markers(m, a->fronts, a->nfronts) != CVM_OK)
         return cli_fail(m, sz, NULL);
+    cli_budget_apply(&budget, m);
     s = cvm_mesh_refine(m, sz, a->algo);
     return cli_finish(m, sz, a->in, s, a->out, a->svg, a->dual, a->quality, print_report);
 }

@@ -45,7 +45,10 @@ void cli_triangulate_help(FILE *f)
             "  -h, --help                 print this help\n");
     cli_print_option_flags(f, CLI_CMD_TRIANGULATE);
     fprintf(f, "\nOn bad input the exit status is 1, one line names the file, line or item,\n"
-               "and no output file is written. Command-line errors exit with 2.\n");
+               "and no output file is written. Command-line errors exit with 2.\n"
+               "--time-limit bounds the whole command (reading and writing are not cut\n"
+               "short). A triangulation cannot stop half-way: stopped by the limit, nothing\n"
+               "is written, one line says where it stopped, and the exit status is 1.\n");
 }
 
 static int has_ext(const char *path, const char *ext)
@@ -141,6 +144,7 @@ static void remove_output(const char *out)
 static int run(const args *a)
 {
     cvm_mesh *m;
+    cli_budget budget;
     phases ph = {0};
     double t0, t_read, t_tri, t_write;
     cvm_status s;
@@ -155,11 +159,13 @@ static int run(const args *a)
         return rc;
     }
     t0 = cli_now();
+    cli_budget_begin(&budget, m);
     if (cvm_mesh_read(m, a->in) != CVM_OK)
         return cli_fail(m, NULL, NULL);
     t_read = cli_now();
     if (a->timings)
         cvm_mesh_set_progress(m, on_progress, 1, &ph);
+    cli_budget_apply(&budget, m);
     s = cli_is_triangulated(m) ? CVM_OK : cvm_mesh_triangulate(m); /* a .vtu is a mesh */
     if (s != CVM_OK)
         return cli_fail(m, NULL, a->in);

@@ -22,7 +22,7 @@ static const cli_option_flag k_flags[] = {
      "fail on duplicate points instead of merging them"},
     {"--seed", "S", CVM_OPT_SEED, 0, TRI | REF | OPT, "seed of the random insertion order"},
     {"--threads", "N", CVM_OPT_THREADS, 0, TRI | REF | OPT, "threads for parallel stages (0: OpenMP default; only optimise is parallel in 0.1)"},
-    {"--time-limit", "SECONDS", CVM_OPT_TIME_LIMIT_S, 0, TRI | REF | OPT, "give up after this time (0: none)"},
+    {"--time-limit", "SECONDS", CVM_OPT_TIME_LIMIT_S, 0, TRI | REF | OPT, "stop the whole command after this time (0: none)"},
     {"--min-angle", "DEG", CVM_OPT_MIN_ANGLE_DEG, 0, REF | OPT, "smallest angle wanted (default 30)"},
     {"--max-area", "A", CVM_OPT_MAX_AREA, 0, REF | OPT, "largest triangle area (0: none)"},
     {"--max-steiner", "N", CVM_OPT_MAX_STEINER, 0, REF | OPT, "stop after adding N points (0: no limit)"},

@@ -221,6 +221,21 @@ cvm_status cvm__tri2_insert_segment(cvm__tri2 *T, int32_t a, int32_t b, int32_t 
  * triangles when exterior = 1 (carving from the hull). */
 cvm_status cvm__tri2_flood_out(cvm__tri2 *T, const int32_t *seeds, size_t nseeds, int exterior);
 
+/* Carve one of many holes in time proportional to what it removes: mark
+ * CVM__TF_OUT every triangle reachable from seed without crossing a
+ * constrained edge, like cvm__tri2_flood_out(T, &seed, 1, 0), but leave
+ * CVM__TF_MARK2 on the visited triangles and stop at triangles that carry it:
+ * those were flooded by an earlier call, and reachability is symmetric, so
+ * their whole region is OUT already. *visited_out receives the number of
+ * triangles visited, *removed_out how many of them were in the domain before.
+ * After the last call (and after an error) call cvm__tri2_clear_mark2().
+ * Returns CVM_OK or CVM_E_NOMEM. */
+cvm_status cvm__tri2_flood_out_more(cvm__tri2 *T, int32_t seed, size_t *visited_out,
+                                    size_t *removed_out);
+
+/* Clear the scratch flag CVM__TF_MARK2 on every triangle. */
+void cvm__tri2_clear_mark2(cvm__tri2 *T);
+
 /* Allocate te if needed (all -1). */
 cvm_status cvm__tri2_enable_constraints(cvm__tri2 *T);
 

@@ -338,6 +338,21 @@ static double ss_limit(const ss_subs *S, size_t i, int e)
     return l;
 }
 
+/* Planning runs before any insertion and, with a costly sizing and many
+ * segments, for long: it checks the time limit and the progress callback as
+ * insertions do. A stop leaves the mesh as it was (valid). */
+static cvm_status ss_tick(cvm__refiner *R, double frac)
+{
+    cvm_status s = cvm__tick(R->ctx, 1, CVM_STAGE_REFINE, frac);
+    if (s)
+        return cvm__error(R->ctx, s, CVM_ENT_NONE, -1,
+                          "refinement %s while planning the segment splits, after %lu Steiner "
+                          "points; the mesh is valid but some triangles may not meet the bounds",
+                          s == CVM_INCOMPLETE_CANCELLED ? "was cancelled" : "reached the time limit",
+                          (unsigned long)R->steiner);
+    return CVM_OK;
+}
+
 /* Grade the plans across subsegment ends: every subsegment's limits are the
  * shortest pieces of its neighbours at its ends (l(e) in h_b = min(h, l(e) +
  * g d(x, e))); a subsegment is planned again (FIFO, in collection order, so
@@ -372,7 +387,8 @@ static cvm_status ss_grade(cvm__refiner *R, ss_subs *S, double **tab, size_t *ca
         long n;
         S->lim[2 * i] = S->lim[2 * i + 1] = HUGE_VAL;
         ss_line_init(&L, R, S->ab[2 * i], S->ab[2 * i + 1], HUGE_VAL, HUGE_VAL);
-        if ((s = ss_plan(R, &L, tab, cap, &ns, &n, &S->piece[2 * i], &S->piece[2 * i + 1])))
+        if ((s = ss_plan(R, &L, tab, cap, &ns, &n, &S->piece[2 * i], &S->piece[2 * i + 1])) ||
+            (s = ss_tick(R, 0.0)))
             return s;
         S->queue[i] = (int32_t)i;
         S->queued[i] = 1;
@@ -391,7 +407,7 @@ static cvm_status ss_grade(cvm__refiner *R, ss_subs *S, double **tab, size_t *ca
         S->lim[2 * i] = ss_limit(S, i, 0);
         S->lim[2 * i + 1] = ss_limit(S, i, 1);
         ss_line_init(&L, R, S->ab[2 * i], S->ab[2 * i + 1], S->lim[2 * i], S->lim[2 * i + 1]);
-        if ((s = ss_plan(R, &L, tab, cap, &ns, &n, &p[0], &p[1])))
+        if ((s = ss_plan(R, &L, tab, cap, &ns, &n, &p[0], &p[1])) || (s = ss_tick(R, 0.0)))
             return s;
         for (e = 0; e < 2; e++) {
             int32_t v = S->ab[2 * i + (size_t)e];

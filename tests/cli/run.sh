@@ -364,6 +364,30 @@ expect_exit 2 "optimise --boundary-grading nan" "$CLI" optimise "$DOMAINS/square
 expect_exit 2 "--boundary-grading without a value" "$CLI" refine "$DOMAINS/square.poly" --boundary-grading
 if [ -e "$OUT/x.vtu" ]; then fail "failed boundary-grading runs wrote $OUT/x.vtu"; else pass; fi
 
+# ---- --time-limit bounds the whole command ------------------------------------
+OUT=$TMP/tlimit
+mkdir -p "$OUT"
+expect_exit 0 "triangulate --help: time limit" "$CLI" triangulate --help
+expect_grep "triangulate --help: time limit" "$TMP/out" "--time-limit bounds the whole command"
+if command -v python3 > /dev/null 2>&1; then
+    python3 "$HERE/../bench/hole_grid.py" 30 "$OUT/grid.poly"
+    # a stopped triangulation writes nothing and says where it stopped
+    expect_exit 1 "triangulate stopped by --time-limit" "$CLI" triangulate "$OUT/grid.poly" \
+        --time-limit 0.000001 -o "$OUT/t.vtu"
+    expect_one_line "triangulate stopped by --time-limit"
+    expect_grep "triangulate stopped by --time-limit" "$TMP/err" "time limit reached"
+    if [ ! -e "$OUT/t.vtu" ]; then pass; else fail "a stopped triangulation wrote t.vtu"; fi
+    expect_exit 0 "the hole grid in time" "$CLI" triangulate "$OUT/grid.poly" --time-limit 600 \
+        -o "$OUT/g.vtu"
+    expect_exit 0 "the hole grid's mesh reads back" "$CLI" triangulate "$OUT/g.vtu" -o "$OUT/g2.vtu"
+    if cmp -s "$OUT/g.vtu" "$OUT/g2.vtu"; then pass; else fail "the hole grid's .vtu rewrites differently"; fi
+fi
+# a stopped refinement writes its valid mesh and says so
+expect_exit 0 "refine stopped by --time-limit" "$CLI" refine "$SHARED/data/square.poly" --size 0.01 \
+    --time-limit 0.000001 -o "$OUT/r.vtu"
+expect_grep "refine stopped by --time-limit" "$TMP/err" "reached the time limit"
+expect_exit 0 "a stopped refinement reads back" "$CLI" triangulate "$OUT/r.vtu" -o "$OUT/r2.vtu"
+
 # ---- optimise a .vtu mesh read back, with its dual ---------------------------
 OUT=$TMP/optvtu
 mkdir -p "$OUT"

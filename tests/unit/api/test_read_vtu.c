@@ -140,6 +140,46 @@ START_TEST(vtu_round_trip_is_byte_identical)
 }
 END_TEST
 
+/* A mesh with many holes reads back as the same mesh and rewrites to the same
+ * bytes: every hole of the file is found again (the file's 6H + 2 triangles,
+ * Euler characteristic 1 - H). */
+START_TEST(vtu_round_trip_of_a_hole_grid)
+{
+    char a[4096], b[4096];
+    char *ta, *tb;
+    size_t la, lb, nt, nv, ne;
+    cvmtest_pslg *g = cvmtest_hole_grid(12);
+    cvm_mesh *m, *r;
+    ck_assert_ptr_nonnull(g);
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvmtest_pslg_set(m, g), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+    in_dir(a, sizeof a, "grid.vtu");
+    in_dir(b, sizeof b, "grid2.vtu");
+    ck_assert_int_eq(cvm_mesh_write(m, a), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_create(&r), CVM_OK);
+    ck_assert_msg(cvm_mesh_read(r, a) == CVM_OK, "%s", cvm_mesh_errmsg(r));
+    ck_assert_msg(cvm_mesh_check(r) == CVM_OK, "%s", cvm_mesh_errmsg(r));
+    assert_same_mesh(m, r);
+    ck_assert_int_eq(cvm_mesh_count(&nt, r, CVM_ENT_TRIANGLE), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_count(&nv, r, CVM_ENT_VERTEX), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_count(&ne, r, CVM_ENT_EDGE), CVM_OK);
+    ck_assert_uint_eq(nt, 6 * 144 + 2);
+    ck_assert_int_eq((long)nv - (long)ne + (long)nt, g->euler);
+    ck_assert_int_eq(cvm_mesh_write(r, b), CVM_OK);
+    ta = iotest_slurp(a, &la);
+    tb = iotest_slurp(b, &lb);
+    ck_assert(ta && tb);
+    ck_assert_uint_eq(la, lb);
+    ck_assert_msg(memcmp(ta, tb, la) == 0, "the rewritten .vtu differs");
+    free(ta);
+    free(tb);
+    cvm_mesh_free(m);
+    cvm_mesh_free(r);
+    cvmtest_pslg_free(g);
+}
+END_TEST
+
 START_TEST(vtu_round_trip_keeps_weights)
 {
     round_trip(1);
@@ -284,6 +324,7 @@ TCase *api_read_vtu_tcase(void)
     tcase_add_checked_fixture(tc, setup, teardown);
     tcase_add_test(tc, vtu_round_trip_is_byte_identical);
     tcase_add_test(tc, vtu_round_trip_keeps_weights);
+    tcase_add_test(tc, vtu_round_trip_of_a_hole_grid);
     tcase_add_test(tc, vtu_round_trip_with_vanished_vertices);
     tcase_add_test(tc, vtu_not_reproduced_is_an_error_and_keeps_the_mesh);
     tcase_add_test(tc, vtu_unused_point_and_bad_cells_are_named);

@@ -1,9 +1,14 @@
 /* test_cdt.c - constrained Delaunay triangulation of PSLGs (lib/delaunay/segment.c, cavity.c, carve.c). */
+#ifndef _POSIX_C_SOURCE
+#define _POSIX_C_SOURCE 199309L
+#endif
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #include "delaunay/delaunay_tests.h"
+#include "support/fixtures.h"
 #include "support/mesh_oracle.h"
 #include "api/api_internal.h"
 
@@ -224,6 +229,149 @@ START_TEST(jagged_star_polygon)
 }
 END_TEST
 
+/* A grid of 16 x 16 square holes in a square: every hole carved, nothing else.
+ * With no interior points every triangle has its corners on the boundary:
+ * 4 + 4H vertices, hence 6H + 2 triangles. */
+START_TEST(hole_grid_carves_every_hole)
+{
+    cvmtest_pslg *g = cvmtest_hole_grid(16);
+    cvmtest_expect e;
+    cvm_mesh *m;
+    size_t nt;
+    ck_assert_ptr_nonnull(g);
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvmtest_pslg_set(m, g), CVM_OK);
+    ck_assert_msg(cvm_mesh_triangulate(m) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    ck_assert_int_eq(cvm_mesh_count(&nt, m, CVM_ENT_TRIANGLE), CVM_OK);
+    ck_assert_uint_eq(nt, 6 * 256 + 2);
+    expect_pslg(&e, g->seg, g->nseg, 1 - 256, 0.75 * 256);
+    ck_assert_int_eq(g->euler, 1 - 256);
+    cvmtest_assert_valid_ex(m, &e);
+    cvm_mesh_free(m);
+    cvmtest_pslg_free(g);
+}
+END_TEST
+
+/* Holes are carved in their order: two points in one hole are one hole; a
+ * hole point between the holes removes the domain, and the hole point that
+ * removes its last triangle (here the one of the last uncarved hole) is named;
+ * a hole point outside the hull is named when it comes first. */
+START_TEST(hole_grid_names_the_first_bad_hole)
+{
+    cvmtest_pslg *g = cvmtest_hole_grid(8);
+    double *h = malloc((2 * 64 + 4) * sizeof *h);
+    cvm_mesh *m;
+    size_t nt;
+    ck_assert(g && h);
+    memcpy(h, g->holes, 2 * 64 * sizeof *h);
+    h[128] = 3.6; /* a second point in hole (3, 3) */
+    h[129] = 3.7;
+    h[130] = 7.4; /* and one in hole (7, 0) */
+    h[131] = 0.3;
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvmtest_pslg_set(m, g), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_holes(m, h, 66), CVM_OK);
+    ck_assert_msg(cvm_mesh_triangulate(m) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    ck_assert_int_eq(cvm_mesh_count(&nt, m, CVM_ENT_TRIANGLE), CVM_OK);
+    ck_assert_uint_eq(nt, 6 * 64 + 2);
+    cvmtest_assert_valid(m);
+    h[10] = 0.1; /* hole 5 in the domain between the holes, hole 64 in hole (5, 0) */
+    h[11] = 0.1;
+    h[128] = 5.5;
+    h[129] = 0.5;
+    ck_assert_int_eq(cvm_mesh_set_holes(m, h, 66), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_E_INPUT_NOT_CLOSED);
+    ck_assert_ptr_nonnull(strstr(cvm_mesh_errmsg(m), "hole 64 at (5.5"));
+    h[6] = -1; /* hole 3 outside the hull comes first */
+    ck_assert_int_eq(cvm_mesh_set_holes(m, h, 66), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_E_INPUT_OUTSIDE);
+    ck_assert_ptr_nonnull(strstr(cvm_mesh_errmsg(m), "hole 3 at (-1"));
+    ck_assert_int_eq(cvm_mesh_count(&nt, m, CVM_ENT_TRIANGLE), CVM_OK);
+    ck_assert_uint_eq(nt, 0);
+    cvm_mesh_free(m);
+    cvmtest_pslg_free(g);
+    free(h);
+}
+END_TEST
+
+typedef struct stop_at {
+    cvm_stage stage;   /* the stage to act in */
+    double until;      /* > 0: spin there until this monotonic time, then go on */
+    int calls;         /* calls in that stage */
+} stop_at;
+
+static double mono_now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static int stop_in_stage(void *payload, cvm_stage stage, double fraction)
+{
+    stop_at *p = payload;
+    (void)fraction;
+    if (stage != p->stage)
+        return 0;
+    p->calls++;
+    if (p->until <= 0)
+        return 1;
+    while (mono_now() < p->until)
+        ;
+    return 0;
+}
+
+/* Carving is a stage the progress callback sees and can cancel: the
+ * triangulation then rolls back to empty and says where it stopped. */
+START_TEST(carving_can_be_cancelled)
+{
+    cvmtest_pslg *g = cvmtest_hole_grid(10);
+    stop_at st = {CVM_STAGE_CARVE, 0, 0};
+    cvm_mesh *m;
+    size_t nt = 1;
+    ck_assert_ptr_nonnull(g);
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvmtest_pslg_set(m, g), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_progress(m, stop_in_stage, 1, &st), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_INCOMPLETE_CANCELLED);
+    ck_assert_int_eq(st.calls, 1);
+    ck_assert_ptr_nonnull(strstr(cvm_mesh_errmsg(m), "cancelled while carving"));
+    ck_assert_int_eq(cvm_mesh_count(&nt, m, CVM_ENT_TRIANGLE), CVM_OK);
+    ck_assert_uint_eq(nt, 0);
+    ck_assert_int_eq(cvm_mesh_set_progress(m, NULL, 0, NULL), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_count(&nt, m, CVM_ENT_TRIANGLE), CVM_OK);
+    ck_assert_uint_eq(nt, 6 * 100 + 2);
+    cvm_mesh_free(m);
+    cvmtest_pslg_free(g);
+}
+END_TEST
+
+/* The time limit is checked while carving too. The callback holds the run in
+ * the carving stage past the limit (the insertion of 404 points before it
+ * takes far less than the 0.5 s limit), so the stop must come from carving. */
+START_TEST(time_limit_stops_carving)
+{
+    cvmtest_pslg *g = cvmtest_hole_grid(10);
+    stop_at st = {CVM_STAGE_CARVE, 0, 0};
+    cvm_mesh *m;
+    size_t nt = 1;
+    ck_assert_ptr_nonnull(g);
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvmtest_pslg_set(m, g), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_TIME_LIMIT_S, 0.5), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_progress(m, stop_in_stage, 1, &st), CVM_OK);
+    st.until = mono_now() + 0.6;
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_INCOMPLETE_TIME_LIMIT);
+    ck_assert_int_eq(st.calls, 1);
+    ck_assert_ptr_nonnull(strstr(cvm_mesh_errmsg(m), "time limit reached while carving"));
+    ck_assert_int_eq(cvm_mesh_count(&nt, m, CVM_ENT_TRIANGLE), CVM_OK);
+    ck_assert_uint_eq(nt, 0);
+    cvm_mesh_free(m);
+    cvmtest_pslg_free(g);
+}
+END_TEST
+
 /* cvm_mesh_check must notice a segment whose edges lost their constraint. */
 START_TEST(check_detects_a_lost_segment)
 {
@@ -258,5 +406,9 @@ TCase *delaunay_cdt_tcase(void)
     tcase_add_test(tc, regions_get_attributes);
     tcase_add_test(tc, jagged_star_polygon);
     tcase_add_test(tc, check_detects_a_lost_segment);
+    tcase_add_test(tc, hole_grid_carves_every_hole);
+    tcase_add_test(tc, hole_grid_names_the_first_bad_hole);
+    tcase_add_test(tc, carving_can_be_cancelled);
+    tcase_add_test(tc, time_limit_stops_carving);
     return tc;
 }

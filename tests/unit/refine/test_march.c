@@ -1,6 +1,7 @@
 /* test_march.c - marching segments with the sizing: pieces graded across segment ends. */
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "refine/refine_tests.h"
 #include "support/mesh_oracle.h"
@@ -128,11 +129,44 @@ START_TEST(ten_to_one_jump_is_graded)
 }
 END_TEST
 
+static int cancel_at_once(void *payload, cvm_stage stage, double fraction)
+{
+    (void)fraction;
+    ++*(int *)payload;
+    return stage == CVM_STAGE_REFINE;
+}
+
+/* Planning the march (before any insertion) checks the progress callback and
+ * the time limit: a stop there leaves the triangulation as it was, valid. */
+START_TEST(march_planning_can_be_cancelled)
+{
+    cvm_mesh *m;
+    size_t n0, n1;
+    double steiner = -1;
+    int calls = 0;
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    set_jump_rectangle(m, 10.0);
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_count(&n0, m, CVM_ENT_TRIANGLE), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_progress(m, cancel_at_once, 1, &calls), CVM_OK);
+    ck_assert_int_eq(rtest_refine_uniform(m, 1.0, CVM_ALGO_DELAUNAY), CVM_INCOMPLETE_CANCELLED);
+    ck_assert_int_eq(calls, 1);
+    ck_assert_ptr_nonnull(strstr(cvm_mesh_errmsg(m), "cancelled while planning the segment splits"));
+    ck_assert_int_eq(cvm_mesh_get_measure(&steiner, m, CVM_MEASURE_REFINE_STEINER), CVM_OK);
+    ck_assert(steiner == 0);
+    ck_assert_int_eq(cvm_mesh_count(&n1, m, CVM_ENT_TRIANGLE), CVM_OK);
+    ck_assert_uint_eq(n1, n0);
+    cvmtest_assert_valid(m);
+    cvm_mesh_free(m);
+}
+END_TEST
+
 TCase *refine_march_tcase(void)
 {
     TCase *tc = tcase_create("march");
     tcase_set_timeout(tc, 60);
     tcase_add_test(tc, three_to_one_jump_is_graded);
     tcase_add_test(tc, ten_to_one_jump_is_graded);
+    tcase_add_test(tc, march_planning_can_be_cancelled);
     return tc;
 }

@@ -27,6 +27,14 @@ extern const cvmtest_pslg cvmtest_square_with_hole;
 /* [0,1]^2 with its 4 sides as segments; area 1, Euler 1. */
 extern const cvmtest_pslg cvmtest_unit_square;
 
+/* The square [0,n]^2 with an n x n grid of square holes, hole (i, j) being
+ * [i+1/4, i+3/4] x [j+1/4, j+3/4] with its hole point at the centre (as
+ * tests/bench/hole_grid.py writes it): 4 + 4n^2 points, as many segments
+ * (the outer square first), n^2 holes; area 3n^2/4, Euler 1 - n^2. Every
+ * coordinate is exact. NULL when out of memory; free with cvmtest_pslg_free(). */
+cvmtest_pslg *cvmtest_hole_grid(size_t n);
+void cvmtest_pslg_free(cvmtest_pslg *p);
+
 /* Set points, segments and holes of p on m; returns the first non-OK status. */
 cvm_status cvmtest_pslg_set(cvm_mesh *m, const cvmtest_pslg *p);
 
