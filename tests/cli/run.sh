@@ -383,7 +383,7 @@ if command -v python3 > /dev/null 2>&1; then
     if cmp -s "$OUT/g.vtu" "$OUT/g2.vtu"; then pass; else fail "the hole grid's .vtu rewrites differently"; fi
 fi
 # a stopped refinement writes its valid mesh and says so
-expect_exit 0 "refine stopped by --time-limit" "$CLI" refine "$SHARED/data/square.poly" --size 0.01 \
+expect_exit 0 "refine stopped by --time-limit" "$CLI" refine "$DOMAINS/square.poly" --size 0.01 \
     --time-limit 0.000001 -o "$OUT/r.vtu"
 expect_grep "refine stopped by --time-limit" "$TMP/err" "reached the time limit"
 expect_exit 0 "a stopped refinement reads back" "$CLI" triangulate "$OUT/r.vtu" -o "$OUT/r2.vtu"
