@@ -1296,9 +1296,17 @@ CVM_API cvm_status cvm_mesh_view_points(const double **ptr_out, size_t *count_ou
  * marker as physical groups), .node (writes PREFIX.node, PREFIX.ele and
  * PREFIX.edge beside each other, 0-based), .svg (a picture).
  * Every file is written to a temporary name and renamed, so a failure never
- * leaves a partial file.
+ * leaves a partial file; the three files of .node replace their old versions
+ * together (cvm_mesh_commit_writes()). A replaced file keeps its permissions
+ * (and its owner where the process may set it); a new file gets the umask's.
+ * A target that exists and is not a regular file (/dev/null, a FIFO) is
+ * written in place.
+ * Stops: the progress callback (stage CVM_STAGE_WRITE, fraction about the
+ * share written) is asked every few thousand values and can cancel; the time
+ * limit does not apply. A cancelled write leaves every file as it was.
  * @return CVM_OK, CVM_E_NULL_ARG, CVM_E_STATE (nothing triangulated),
  *         CVM_E_UNSUPPORTED (extension), CVM_E_IO_OPEN, CVM_E_IO_WRITE, CVM_E_NOMEM
+ *         CVM_INCOMPLETE_CANCELLED  the progress callback stopped it: nothing written
  * @since 0.1
  */
 CVM_API cvm_status cvm_mesh_write(cvm_mesh *m, const char *path);
@@ -1477,6 +1485,79 @@ CVM_API cvm_status cvm_mesh_copy_dual_cells(double *dst, size_t dst_len, const c
  * @since 0.1
  */
 CVM_API cvm_status cvm_mesh_write_dual(cvm_mesh *m, const char *path);
+
+/* ------------------------------------------------------------------------ */
+/* Several output files as one                                               */
+/* ------------------------------------------------------------------------ */
+/* A program that writes several files (a mesh, its picture, its dual) can
+ * make them appear together or not at all: stage each write, then commit.
+ *
+ *   if (cvm_mesh_stage_write(m, "out.vtu") == CVM_OK &&
+ *       cvm_mesh_stage_write(m, "out.svg") == CVM_OK &&
+ *       cvm_mesh_stage_write_dual(m, "dual.vtu") == CVM_OK)
+ *       s = cvm_mesh_commit_writes(m);  // all three replace their targets
+ *
+ * A staged file is complete on disk under a temporary name beside its target
+ * (TARGET.tmp.XXXXXX); no target changes before the commit. A failed or
+ * cancelled stage discards every staged file, so after any failure every
+ * target is as it was. */
+
+/**
+ * Write the mesh as cvm_mesh_write() does, to temporary files that replace
+ * their targets only at cvm_mesh_commit_writes().
+ *
+ * @param m     mesh handle; not NULL.
+ * @param path  as for cvm_mesh_write(); a .node path stages .node, .ele and .edge.
+ * Ownership:    @p path is copied. The staged files belong to @p m until the
+ *               commit; cvm_mesh_discard_writes() and cvm_mesh_free() remove them.
+ * Thread-safety: must not run concurrently with any other call on @p m.
+ * Atomicity:    on any error or cancellation every file staged on @p m so far is
+ *               removed too, and no target is touched. A target that is not a
+ *               regular file (/dev/null, a FIFO) is written at once, in place.
+ *               Later calls that change @p m do not change what was staged.
+ * Stops: as cvm_mesh_write(): the progress callback (CVM_STAGE_WRITE) can cancel.
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG, CVM_E_STATE (nothing triangulated), CVM_E_UNSUPPORTED (extension)
+ *         CVM_E_IO_OPEN, CVM_E_IO_WRITE, CVM_E_NOMEM
+ *         CVM_INCOMPLETE_CANCELLED  the progress callback stopped it
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_mesh_stage_write(cvm_mesh *m, const char *path);
+
+/**
+ * Write the dual cells as cvm_mesh_write_dual() does, to a temporary file that
+ * replaces its target only at cvm_mesh_commit_writes(). Ownership, atomicity
+ * and stops as cvm_mesh_stage_write().
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG, CVM_E_STATE, CVM_E_UNSUPPORTED (path does not end in .vtu)
+ *         CVM_E_TOO_LARGE, CVM_E_IO_OPEN, CVM_E_IO_WRITE, CVM_E_NOMEM
+ *         CVM_INCOMPLETE_CANCELLED
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_mesh_stage_write_dual(cvm_mesh *m, const char *path);
+
+/**
+ * Rename every staged file of @p m over its target, in the order staged, and
+ * forget them. Nothing staged: CVM_OK. The renames come last and together; if
+ * one fails (the target was made immutable or replaced by a directory since),
+ * the targets already replaced are put back as they were (from a hard link
+ * taken before the first rename; on a file system without hard links such a
+ * target stays replaced) and the remaining staged files are removed.
+ * Thread-safety: must not run concurrently with any other call on @p m.
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG
+ *         CVM_E_IO_WRITE  a rename failed (message names the file)
+ *         CVM_E_NOMEM     nothing renamed, staged files removed
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_mesh_commit_writes(cvm_mesh *m);
+
+/**
+ * Remove every staged file of @p m; no target changes. Nothing staged: a no-op.
+ * @return CVM_OK, CVM_E_NULL_ARG
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_mesh_discard_writes(cvm_mesh *m);
 
 /**
  * Merged dual cells: copy, per triangle in CVM_ENT_TRIANGLE order, the index

@@ -108,14 +108,12 @@ cvm_status cvm__mesh_out_build(cvm_mesh *m, cvm__mesh_out *mo, int want_edges, i
     return CVM_OK;
 }
 
-cvm_status cvm_mesh_write(cvm_mesh *m, const char *path)
+/* The checks and output arrays of cvm_mesh_write(), the files into ws. */
+static cvm_status write_to_set(cvm_mesh *m, const char *path, cvm__write_set *ws)
 {
     cvm__mesh_out mo;
     cvm__format fmt;
     cvm_status s;
-    if (!m)
-        return CVM_E_NULL_ARG;
-    CVM__BEGIN(m);
     if (!path)
         return cvm__error(&m->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "path is NULL");
     if (!m->triangulated)
@@ -129,7 +127,54 @@ cvm_status cvm_mesh_write(cvm_mesh *m, const char *path)
     if ((s = cvm__mesh_out_build(m, &mo, fmt == CVM__FMT_NODE,
                                  fmt == CVM__FMT_SVG || fmt == CVM__FMT_VTU)))
         return s;
-    s = cvm__write_file(&m->ctx, path, &mo);
+    s = cvm__write_file_to_set(ws, path, &mo);
     cvm__mesh_out_free(m, &mo);
     return s;
+}
+
+cvm_status cvm_mesh_write(cvm_mesh *m, const char *path)
+{
+    cvm__write_set ws;
+    cvm_status s;
+    if (!m)
+        return CVM_E_NULL_ARG;
+    CVM__BEGIN(m);
+    cvm__write_set_init(&ws, &m->ctx);
+    if ((s = write_to_set(m, path, &ws))) {
+        cvm__write_set_discard(&ws);
+        return s;
+    }
+    return cvm__write_set_commit(&ws);
+}
+
+cvm_status cvm__mesh_stage_settle(cvm_mesh *m, cvm_status s)
+{
+    if (s)
+        cvm__write_set_discard(&m->staged);
+    return s;
+}
+
+cvm_status cvm_mesh_stage_write(cvm_mesh *m, const char *path)
+{
+    if (!m)
+        return CVM_E_NULL_ARG;
+    CVM__BEGIN(m);
+    return cvm__mesh_stage_settle(m, write_to_set(m, path, &m->staged));
+}
+
+cvm_status cvm_mesh_commit_writes(cvm_mesh *m)
+{
+    if (!m)
+        return CVM_E_NULL_ARG;
+    CVM__BEGIN(m);
+    return cvm__write_set_commit(&m->staged);
+}
+
+cvm_status cvm_mesh_discard_writes(cvm_mesh *m)
+{
+    if (!m)
+        return CVM_E_NULL_ARG;
+    CVM__BEGIN(m);
+    cvm__write_set_discard(&m->staged);
+    return CVM_OK;
 }

@@ -163,17 +163,22 @@ static int run(const oargs *a)
         cvm_mesh_free(m);
         return CLI_EXIT_USAGE;
     }
+    cli_phase("reading", a->in);
     if (cvm_mesh_read(m, a->in) != CVM_OK)
         return cli_fail(m, sz, NULL);
-    if (!cli_is_triangulated(m) && cvm_mesh_triangulate(m) != CVM_OK) /* a .vtu is a mesh */
+    cli_phase("triangulating", a->in);
+    if ((!cli_is_triangulated(m) && cvm_mesh_triangulate(m) != CVM_OK) || /* a .vtu is a mesh */
+        cli_interrupted())
         return cli_fail(m, sz, a->in);
     if (a->refine) {
+        cli_phase("refining", a->in);
         s = cvm_mesh_refine(m, sz, a->algo);
-        if (cvm_status_is_error(s))
+        if (cvm_status_is_error(s) || cli_interrupted())
             return cli_fail(m, sz, a->in);
         if (s != CVM_OK)
             fprintf(stderr, "cvmesh: note: %s: %s\n", a->in, cvm_mesh_errmsg(m));
     }
+    cli_phase("optimising the dual of", a->in);
     s = cvm_mesh_optimise_dual(m, NULL);
     return cli_finish(m, sz, a->in, s, a->out, NULL, a->dual, a->quality, print_dual_report);
 }

@@ -201,12 +201,16 @@ static int run(const rargs *a)
         cvm_mesh_free(m);
         return CLI_EXIT_USAGE;
     }
+    cli_phase("reading", a->in);
     if (cvm_mesh_read(m, a->in) != CVM_OK)
         return cli_fail(m, sz, NULL);
-    if (!cli_is_triangulated(m) && cvm_mesh_triangulate(m) != CVM_OK) /* a .vtu is a mesh */
+    cli_phase("triangulating", a->in);
+    if ((!cli_is_triangulated(m) && cvm_mesh_triangulate(m) != CVM_OK) || /* a .vtu is a mesh */
+        cli_interrupted())
         return cli_fail(m, sz, a->in);
     if (a->nfronts && cvm_mesh_set_front_markers(m, a->fronts, a->nfronts) != CVM_OK)
         return cli_fail(m, sz, NULL);
+    cli_phase("refining", a->in);
     s = cvm_mesh_refine(m, sz, a->algo);
     return cli_finish(m, sz, a->in, s, a->out, a->svg, a->dual, a->quality, print_report);
 }

@@ -112,30 +112,9 @@ static int parse(args *a, int argc, char **argv)
 static int on_progress(void *payload, cvm_stage stage, double fraction)
 {
     phases *ph = (phases *)payload;
-    (void)fraction;
     if (stage == CVM_STAGE_RECOVER_SEGMENTS && ph->recover_start == 0)
         ph->recover_start = cli_now();
-    return 0;
-}
-
-/* Remove the files written for out (PREFIX.node also wrote .ele and .edge). */
-static void remove_output(const char *out)
-{
-    static const char *const side[] = {".node", ".ele", ".edge"};
-    char buf[4096];
-    size_t n, k;
-    if (!out)
-        return;
-    n = strlen(out);
-    if (!has_ext(out, ".node") || n - 5 + 6 > sizeof buf) {
-        remove(out);
-        return;
-    }
-    for (k = 0; k < 3; k++) {
-        memcpy(buf, out, n - 5);
-        strcpy(buf + n - 5, side[k]);
-        remove(buf);
-    }
+    return cli_progress(NULL, stage, fraction);
 }
 
 static int run(const args *a)
@@ -154,36 +133,34 @@ static int run(const args *a)
         cvm_mesh_free(m);
         return rc;
     }
+    /* every 1 for --timings: the first recovery report splits the phases */
+    cvm_mesh_set_progress(m, on_progress, a->timings ? 1 : 256, &ph);
     t0 = cli_now();
+    cli_phase("reading", a->in);
     if (cvm_mesh_read(m, a->in) != CVM_OK)
         return cli_fail(m, NULL, NULL);
     t_read = cli_now();
-    if (a->timings)
-        cvm_mesh_set_progress(m, on_progress, 1, &ph);
+    cli_phase("triangulating", a->in);
     s = cli_is_triangulated(m) ? CVM_OK : cvm_mesh_triangulate(m); /* a .vtu is a mesh */
-    if (s != CVM_OK)
+    if (s != CVM_OK || cli_interrupted())
         return cli_fail(m, NULL, a->in);
     t_tri = cli_now();
     if (cvm_mesh_count(&ndup, m, CVM_ENT_DUPLICATE) == CVM_OK && ndup)
         fprintf(stderr, "cvmesh: note: %s: %lu duplicate points merged\n", a->in, (unsigned long)ndup);
-    if (a->out && cvm_mesh_write(m, a->out) != CVM_OK)
-        return cli_fail(m, NULL, NULL);
-    if (a->svg && cvm_mesh_write(m, a->svg) != CVM_OK) {
-        remove_output(a->out); /* all outputs or none */
-        return cli_fail(m, NULL, NULL);
-    }
-    if (a->dual && (rc = cli_write_dual(m, a->dual))) {
-        remove_output(a->out);
-        if (a->svg)
-            remove(a->svg);
+    if ((rc = cli_write_outputs(m, a->out, a->svg, a->dual)) < 0)
+        return cli_stop(m, NULL);
+    if (rc) {
         cvm_mesh_free(m);
         return rc;
     }
     t_write = cli_now();
+    cli_phase("computing the quality report", NULL);
     if (a->quality && (rc = cli_print_quality(stdout, m))) {
         cvm_mesh_free(m);
         return rc;
     }
+    if (cli_interrupted())
+        return cli_stop(m, NULL);
     if (a->timings) {
         double split = ph.recover_start > 0 ? ph.recover_start : t_tri;
         printf("read: %.6f\n", t_read - t0);
