@@ -141,8 +141,9 @@ void cvm__writer_puts(cvm__writer *w, const char *s);
 void cvm__writer_printf(cvm__writer *w, const char *fmt, ...) CVM__PRINTF(2, 3);
 /* A double in the shortest form that reads back exactly, '.' as decimal point. */
 void cvm__writer_double(cvm__writer *w, double x);
-/* About how many puts the file takes (for the progress fraction only). */
-void cvm__writer_expect(cvm__writer *w, uint64_t nput);
+/* For the progress fraction only: about how many puts the whole write takes
+ * (total), of which before went to earlier files of the same write. */
+void cvm__writer_expect(cvm__writer *w, uint64_t before, uint64_t total);
 /* Flush, sync and close the temporary file; CVM_OK, CVM_E_IO_WRITE or
  * CVM_INCOMPLETE_CANCELLED (the writer stays, to be committed or discarded).
  * Idempotent. */

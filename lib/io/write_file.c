@@ -50,7 +50,7 @@ static cvm_status write_one(cvm__write_set *ws, const char *path, const cvm__mes
     cvm_status s = cvm__writer_open(&w, ws->ctx, path);
     if (s)
         return s;
-    cvm__writer_expect(w, expected_puts(fmt, mo));
+    cvm__writer_expect(w, 0, expected_puts(fmt, mo));
     switch (fmt) {
     case CVM__FMT_VTU: s = cvm__write_vtu(w, ws->ctx, mo); break;
     case CVM__FMT_MSH: s = cvm__write_msh(w, ws->ctx, mo); break;
@@ -81,19 +81,20 @@ static cvm_status write_triangle(cvm__write_set *ws, const char *path, const cvm
         s = cvm__writer_open(&w[i], ctx, name);
     }
     cvm__free(ctx, name);
-    if (!s) {
-        uint64_t na = mo->vattr ? mo->nattr : 0;
-        cvm__writer_expect(w[0], (uint64_t)mo->nv * (5 + 2 * na));
-        cvm__writer_expect(w[1], (uint64_t)mo->nt * (mo->tattr ? 4 : 2));
+    if (!s) { /* each file only when the ones before it succeeded */
+        uint64_t na = mo->vattr ? mo->nattr : 0, nnode = (uint64_t)mo->nv * (5 + 2 * na),
+                 nele = (uint64_t)mo->nt * (mo->tattr ? 4 : 2), total = nnode + nele + mo->ne;
+        cvm__writer_expect(w[0], 0, total);
+        cvm__writer_expect(w[1], nnode, total);
         cvm__write_node(w[0], mo);
-        cvm__write_ele(w[1], mo);
-        if (w[2]) {
-            cvm__writer_expect(w[2], (uint64_t)mo->ne);
+        if (!(s = cvm__writer_finish(w[0])))
+            cvm__write_ele(w[1], mo);
+        if (!s && !(s = cvm__writer_finish(w[1])) && w[2]) {
+            cvm__writer_expect(w[2], nnode + nele, total);
             cvm__write_edge(w[2], mo);
+            s = cvm__writer_finish(w[2]);
         }
     }
-    for (i = 0; i < nfiles && !s; i++)
-        s = cvm__writer_finish(w[i]);
     for (i = 0; i < nfiles; i++) {
         if (!s && w[i]) {
             s = cvm__write_set_add(ws, w[i]);
@@ -143,7 +144,7 @@ cvm_status cvm__write_dual_file_to_set(cvm__write_set *ws, const char *path, con
     cvm_status s = cvm__writer_open(&w, ws->ctx, path);
     if (s)
         return s;
-    cvm__writer_expect(w, (uint64_t)d->ncorner * 5 + (uint64_t)d->ncell * 4);
+    cvm__writer_expect(w, 0, (uint64_t)d->ncorner * 5 + (uint64_t)d->ncell * 4);
     cvm__write_dual_vtu(w, d);
     return cvm__write_set_add(ws, w);
 }

@@ -32,7 +32,8 @@ struct cvm__writer {
     int finished;   /* 1 once the file is closed */
     cvm_status status; /* result of cvm__writer_finish() */
     uint64_t nput;  /* values and strings put so far */
-    uint64_t expect;/* about how many will be put (0: unknown), for the fraction */
+    uint64_t before;/* for the fraction: puts of earlier files of the same write */
+    uint64_t expect;/* for the fraction: about how many puts in all (0: unknown) */
     uint64_t poll;  /* ask the progress callback every poll puts */
     char *bak;      /* during a set's commit: a hard link to the replaced file, or NULL */
     int existed;    /* during a set's commit: the target existed before */
@@ -229,9 +230,10 @@ static void note_error(cvm__writer *w)
         w->err = errno ? errno : EIO;
 }
 
-void cvm__writer_expect(cvm__writer *w, uint64_t nput)
+void cvm__writer_expect(cvm__writer *w, uint64_t before, uint64_t total)
 {
-    w->expect = nput;
+    w->before = before;
+    w->expect = total;
 }
 
 /* 1 when nothing more is to be written: an error, or a cancellation, which
@@ -242,7 +244,7 @@ static int stopped(cvm__writer *w)
     if (w->err || w->cancelled || !w->f)
         return 1;
     if (++w->nput % w->poll == 0) {
-        double f = w->expect ? (double)w->nput / (double)w->expect : 0.0;
+        double f = w->expect ? (double)(w->before + w->nput) / (double)w->expect : 0.0;
         if (cvm__poll_cancel(w->ctx, CVM_STAGE_WRITE, f > 0.99 ? 0.99 : f))
             w->cancelled = 1;
     }
