@@ -341,8 +341,10 @@ CVM_API cvm_status cvm_mesh_set_regions(cvm_mesh *m, const double *r, size_t cou
  * rebuild ignores CVM_OPT_TIME_LIMIT_S and uses the handle's other options.
  *
  * @param path  file name; the format follows the extension (.poly, .node or .vtu).
- * Atomicity:   on error the previous input (and, for .vtu, the previous mesh)
- *              is kept unchanged.
+ * Atomicity:   on error or cancellation the previous input (and, for .vtu, the
+ *              previous mesh) is kept unchanged.
+ * Stops:       the progress callback (stage CVM_STAGE_READ, fraction 0) is asked
+ *              after every 64 KiB read and can cancel; the time limit does not apply.
  * @return CVM_OK
  *         CVM_E_NULL_ARG, CVM_E_IO_OPEN, CVM_E_IO_READ
  *         CVM_E_IO_FORMAT        malformed content (message gives file:line); in a .vtu
@@ -362,6 +364,7 @@ CVM_API cvm_status cvm_mesh_set_regions(cvm_mesh *m, const double *r, size_t cou
  *         other CVM_E_INPUT_* of cvm_mesh_triangulate() for a .vtu (message prefixed
  *                                with the file name)
  *         CVM_E_NOMEM
+ *         CVM_INCOMPLETE_CANCELLED  the progress callback stopped the reading
  * @since 0.1
  */
 CVM_API cvm_status cvm_mesh_read(cvm_mesh *m, const char *path);

@@ -52,7 +52,11 @@ void cli_optimise_help(FILE *f)
             "  -h, --help                 print this help\n");
     cli_print_option_flags(f, CLI_CMD_OPTIMISE);
     fprintf(f, "\nStopped by --time-limit the mesh is still a valid regular triangulation and\n"
-               "is written; the exit status is 0 and a note says so.\n");
+               "is written; the exit status is 0 and a note says so.\n"
+               "\nThe output files (-o, --dual) replace their old versions together or not at\n"
+               "all, and a replaced file keeps its permissions. SIGINT (Ctrl-C) or SIGTERM\n"
+               "stops the command: exit status 130 or 143, one line says what was interrupted,\n"
+               "and no file is written or changed unless the outputs were already complete.\n");
 }
 
 static int parse_value(oargs *a, int argc, char **argv, int *i)

@@ -57,7 +57,11 @@ void cli_refine_help(FILE *f)
             "  -h, --help                 print this help\n");
     cli_print_option_flags(f, CLI_CMD_REFINE);
     fprintf(f, "\nStopped by --max-steiner or --time-limit the mesh is still valid and written;\n"
-               "the exit status is 0 and a note says what was left unmet.\n");
+               "the exit status is 0 and a note says what was left unmet.\n"
+               "\nThe output files (-o, --svg, --dual) replace their old versions together or not\n"
+               "at all, and a replaced file keeps its permissions. SIGINT (Ctrl-C) or SIGTERM\n"
+               "stops the command: exit status 130 or 143, one line says what was interrupted,\n"
+               "and no file is written or changed unless the outputs were already complete.\n");
 }
 
 /* --fronts 1,2,...: integer markers separated by commas. */

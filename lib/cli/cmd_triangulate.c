@@ -45,7 +45,11 @@ void cli_triangulate_help(FILE *f)
             "  -h, --help                 print this help\n");
     cli_print_option_flags(f, CLI_CMD_TRIANGULATE);
     fprintf(f, "\nOn bad input the exit status is 1, one line names the file, line or item,\n"
-               "and no output file is written. Command-line errors exit with 2.\n");
+               "and no output file is written. Command-line errors exit with 2.\n"
+               "\nThe output files (-o, --svg, --dual) replace their old versions together or not\n"
+               "at all, and a replaced file keeps its permissions. SIGINT (Ctrl-C) or SIGTERM\n"
+               "stops the command: exit status 130 or 143, one line says what was interrupted,\n"
+               "and no file is written or changed unless the outputs were already complete.\n");
 }
 
 static int has_ext(const char *path, const char *ext)

@@ -49,7 +49,9 @@ void cvm__strerror(int err, char *buf, size_t len);
 /* Parse Triangle .poly (is_poly = 1) or .node (is_poly = 0) text from r.
  * name is used in messages ("square.poly:12: ..."). On error p is left zeroed
  * and the message gives name:line. Returns CVM_OK, CVM_E_IO_READ,
- * CVM_E_IO_FORMAT, CVM_E_INPUT_NONFINITE, CVM_E_NOMEM, CVM_E_TOO_LARGE. */
+ * CVM_E_IO_FORMAT, CVM_E_INPUT_NONFINITE, CVM_E_NOMEM, CVM_E_TOO_LARGE, or
+ * CVM_INCOMPLETE_CANCELLED when ctx's progress callback (stage
+ * CVM_STAGE_READ, asked every 64 KiB; not the time limit) says stop. */
 cvm_status cvm__read_triangle_format(cvm__ctx *ctx, cvm__reader *r, const char *name,
                                      int is_poly, cvm__pslg *p);
 
@@ -71,7 +73,8 @@ typedef struct cvm__vtu_mesh {
 /* Parse .vtu text from r (name for messages "name:line: ..."). Returns CVM_OK,
  * CVM_E_IO_READ, CVM_E_IO_FORMAT (malformed; an index out of range), CVM_E_UNSUPPORTED
  * (binary/appended/compressed data, other cell types), CVM_E_INPUT_NONFINITE,
- * CVM_E_TOO_LARGE, CVM_E_NOMEM; out is zeroed on error. */
+ * CVM_E_TOO_LARGE, CVM_E_NOMEM, CVM_INCOMPLETE_CANCELLED (as
+ * cvm__read_triangle_format(), while the file is read); out is zeroed on error. */
 cvm_status cvm__read_vtu(cvm__ctx *ctx, cvm__reader *r, const char *name, cvm__vtu_mesh *out);
 /* The same from the file at path (CVM_E_IO_OPEN too). */
 cvm_status cvm__read_vtu_file(cvm__ctx *ctx, const char *path, cvm__vtu_mesh *out);
