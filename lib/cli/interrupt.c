@@ -112,6 +112,7 @@ int cli_write_outputs(cvm_mesh *m, const char *out, const char *svg, const char 
         fprintf(stderr, "cvmesh: %s\n", cvm_mesh_errmsg(m));
         return CLI_EXIT_FAIL;
     }
-    cli_outputs_committed();
+    if (out || svg || dual)
+        cli_outputs_committed();
     return CLI_EXIT_OK;
 }
