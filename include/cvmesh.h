@@ -768,9 +768,10 @@ typedef int (*cvm_progress_fn)(void *payload, cvm_stage stage, double fraction);
 
 /**
  * Install a progress callback, called about every @p every_n elementary
- * operations (point insertions, segment recoveries) of long calls. The time
- * limit CVM_OPT_TIME_LIMIT_S is checked at the same points (every 1024
- * operations when no callback is set). fn NULL or every_n < 1 removes it.
+ * operations (point insertions, segment recoveries, values written) of long
+ * calls; cvm_mesh_read() calls it every 64 KiB read. The time limit
+ * CVM_OPT_TIME_LIMIT_S is checked at the same points (every 1024 operations
+ * when no callback is set), except in reads and writes. fn NULL or every_n < 1 removes it.
  * What a stop leaves is documented by each long call.
  * @return CVM_OK, CVM_E_NULL_ARG (m NULL)
  * @since 0.1
@@ -1305,8 +1306,9 @@ CVM_API cvm_status cvm_mesh_view_points(const double **ptr_out, size_t *count_ou
  * A target that exists and is not a regular file (/dev/null, a FIFO) is
  * written in place.
  * Stops: the progress callback (stage CVM_STAGE_WRITE, fraction about the
- * share written) is asked every few thousand values and can cancel; the time
- * limit does not apply. A cancelled write leaves every file as it was.
+ * share written) is asked about every every_n values written (at least 64)
+ * and can cancel; the time limit does not apply. A cancelled write leaves
+ * every file as it was.
  * @return CVM_OK, CVM_E_NULL_ARG, CVM_E_STATE (nothing triangulated),
  *         CVM_E_UNSUPPORTED (extension), CVM_E_IO_OPEN, CVM_E_IO_WRITE, CVM_E_NOMEM
  *         CVM_INCOMPLETE_CANCELLED  the progress callback stopped it: nothing written
