@@ -341,8 +341,10 @@ CVM_API cvm_status cvm_mesh_set_regions(cvm_mesh *m, const double *r, size_t cou
  * rebuild ignores CVM_OPT_TIME_LIMIT_S and uses the handle's other options.
  *
  * @param path  file name; the format follows the extension (.poly, .node or .vtu).
- * Atomicity:   on error the previous input (and, for .vtu, the previous mesh)
- *              is kept unchanged.
+ * Atomicity:   on error or cancellation the previous input (and, for .vtu, the
+ *              previous mesh) is kept unchanged.
+ * Stops:       the progress callback (stage CVM_STAGE_READ, fraction 0) is asked
+ *              after every 64 KiB read and can cancel; the time limit does not apply.
  * @return CVM_OK
  *         CVM_E_NULL_ARG, CVM_E_IO_OPEN, CVM_E_IO_READ
  *         CVM_E_IO_FORMAT        malformed content (message gives file:line); in a .vtu
@@ -362,6 +364,7 @@ CVM_API cvm_status cvm_mesh_set_regions(cvm_mesh *m, const double *r, size_t cou
  *         other CVM_E_INPUT_* of cvm_mesh_triangulate() for a .vtu (message prefixed
  *                                with the file name)
  *         CVM_E_NOMEM
+ *         CVM_INCOMPLETE_CANCELLED  the progress callback stopped the reading
  * @since 0.1
  */
 CVM_API cvm_status cvm_mesh_read(cvm_mesh *m, const char *path);
@@ -750,9 +753,10 @@ typedef int (*cvm_progress_fn)(void *payload, cvm_stage stage, double fraction);
  * Install a progress callback, called about every @p every_n elementary
  * operations (point insertions, segment recoveries, holes and regions carved
  * (CVM_STAGE_CARVE, a hole counting the triangles it removes), segment splits
- * planned before refinement) of long calls. The time limit
- * CVM_OPT_TIME_LIMIT_S is checked at the same points (every 1024 operations
- * when no callback is set). fn NULL or every_n < 1 removes it.
+ * planned before refinement, values written) of long calls; cvm_mesh_read()
+ * calls it every 64 KiB read. The time limit CVM_OPT_TIME_LIMIT_S is checked at
+ * the same points (every 1024 operations when no callback is set), except in
+ * reads and writes. fn NULL or every_n < 1 removes it.
  * What a stop leaves is documented by each long call.
  * @return CVM_OK, CVM_E_NULL_ARG (m NULL)
  * @since 0.1
@@ -1281,9 +1285,18 @@ CVM_API cvm_status cvm_mesh_view_points(const double **ptr_out, size_t *count_ou
  * marker as physical groups), .node (writes PREFIX.node, PREFIX.ele and
  * PREFIX.edge beside each other, 0-based), .svg (a picture).
  * Every file is written to a temporary name and renamed, so a failure never
- * leaves a partial file.
+ * leaves a partial file; the three files of .node replace their old versions
+ * together (cvm_mesh_commit_writes()). A replaced file keeps its permissions
+ * (and its owner where the process may set it); a new file gets the umask's.
+ * A target that exists and is not a regular file (/dev/null, a FIFO) is
+ * written in place.
+ * Stops: the progress callback (stage CVM_STAGE_WRITE, fraction about the
+ * share written) is asked about every every_n values written (at least 64)
+ * and can cancel; the time limit does not apply. A cancelled write leaves
+ * every file as it was.
  * @return CVM_OK, CVM_E_NULL_ARG, CVM_E_STATE (nothing triangulated),
  *         CVM_E_UNSUPPORTED (extension), CVM_E_IO_OPEN, CVM_E_IO_WRITE, CVM_E_NOMEM
+ *         CVM_INCOMPLETE_CANCELLED  the progress callback stopped it: nothing written
  * @since 0.1
  */
 CVM_API cvm_status cvm_mesh_write(cvm_mesh *m, const char *path);
@@ -1462,6 +1475,79 @@ CVM_API cvm_status cvm_mesh_copy_dual_cells(double *dst, size_t dst_len, const c
  * @since 0.1
  */
 CVM_API cvm_status cvm_mesh_write_dual(cvm_mesh *m, const char *path);
+
+/* ------------------------------------------------------------------------ */
+/* Several output files as one                                               */
+/* ------------------------------------------------------------------------ */
+/* A program that writes several files (a mesh, its picture, its dual) can
+ * make them appear together or not at all: stage each write, then commit.
+ *
+ *   if (cvm_mesh_stage_write(m, "out.vtu") == CVM_OK &&
+ *       cvm_mesh_stage_write(m, "out.svg") == CVM_OK &&
+ *       cvm_mesh_stage_write_dual(m, "dual.vtu") == CVM_OK)
+ *       s = cvm_mesh_commit_writes(m);  // all three replace their targets
+ *
+ * A staged file is complete on disk under a temporary name beside its target
+ * (TARGET.tmp.XXXXXX); no target changes before the commit. A failed or
+ * cancelled stage discards every staged file, so after any failure every
+ * target is as it was. */
+
+/**
+ * Write the mesh as cvm_mesh_write() does, to temporary files that replace
+ * their targets only at cvm_mesh_commit_writes().
+ *
+ * @param m     mesh handle; not NULL.
+ * @param path  as for cvm_mesh_write(); a .node path stages .node, .ele and .edge.
+ * Ownership:    @p path is copied. The staged files belong to @p m until the
+ *               commit; cvm_mesh_discard_writes() and cvm_mesh_free() remove them.
+ * Thread-safety: must not run concurrently with any other call on @p m.
+ * Atomicity:    on any error or cancellation every file staged on @p m so far is
+ *               removed too, and no target is touched. A target that is not a
+ *               regular file (/dev/null, a FIFO) is written at once, in place.
+ *               Later calls that change @p m do not change what was staged.
+ * Stops: as cvm_mesh_write(): the progress callback (CVM_STAGE_WRITE) can cancel.
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG, CVM_E_STATE (nothing triangulated), CVM_E_UNSUPPORTED (extension)
+ *         CVM_E_IO_OPEN, CVM_E_IO_WRITE, CVM_E_NOMEM
+ *         CVM_INCOMPLETE_CANCELLED  the progress callback stopped it
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_mesh_stage_write(cvm_mesh *m, const char *path);
+
+/**
+ * Write the dual cells as cvm_mesh_write_dual() does, to a temporary file that
+ * replaces its target only at cvm_mesh_commit_writes(). Ownership, atomicity
+ * and stops as cvm_mesh_stage_write().
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG, CVM_E_STATE, CVM_E_UNSUPPORTED (path does not end in .vtu)
+ *         CVM_E_TOO_LARGE, CVM_E_IO_OPEN, CVM_E_IO_WRITE, CVM_E_NOMEM
+ *         CVM_INCOMPLETE_CANCELLED
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_mesh_stage_write_dual(cvm_mesh *m, const char *path);
+
+/**
+ * Rename every staged file of @p m over its target, in the order staged, and
+ * forget them. Nothing staged: CVM_OK. The renames come last and together; if
+ * one fails (the target was made immutable or replaced by a directory since),
+ * the targets already replaced are put back as they were (from a hard link
+ * taken before the first rename; on a file system without hard links such a
+ * target stays replaced) and the remaining staged files are removed.
+ * Thread-safety: must not run concurrently with any other call on @p m.
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG
+ *         CVM_E_IO_WRITE  a rename failed (message names the file)
+ *         CVM_E_NOMEM     nothing renamed, staged files removed
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_mesh_commit_writes(cvm_mesh *m);
+
+/**
+ * Remove every staged file of @p m; no target changes. Nothing staged: a no-op.
+ * @return CVM_OK, CVM_E_NULL_ARG
+ * @since 0.1
+ */
+CVM_API cvm_status cvm_mesh_discard_writes(cvm_mesh *m);
 
 /**
  * Merged dual cells: copy, per triangle in CVM_ENT_TRIANGLE order, the index

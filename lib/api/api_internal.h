@@ -42,6 +42,9 @@ struct cvm_mesh {
     double dual_opt_report[10]; /* the last cvm_mesh_optimise_dual(): CVM_MEASURE_DUAL_OPT_* */
     double *tlayer;          /* AFLR layer index per triangle slot of tri, or NULL */
     size_t n_tlayer;         /* tri.nt when tlayer was made (stale when it differs) */
+
+    /* cvm_mesh_stage_write(): files written, waiting for cvm_mesh_commit_writes() */
+    cvm__write_set staged;
 };
 
 /* Slot of key in opt[], or -1 if the key is unknown. */

@@ -253,13 +253,11 @@ static void dual_out_free(cvm_mesh *m, cvm__dual_out *d)
     memset(d, 0, sizeof *d);
 }
 
-cvm_status cvm_mesh_write_dual(cvm_mesh *m, const char *path)
+/* The checks and cells of cvm_mesh_write_dual(), the file into ws. */
+static cvm_status write_dual_to_set(cvm_mesh *m, const char *path, cvm__write_set *ws)
 {
     cvm__dual_out d;
     cvm_status s;
-    if (!m)
-        return CVM_E_NULL_ARG;
-    CVM__BEGIN(m);
     if (!path)
         return cvm__error(&m->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "path is NULL");
     if (!m->triangulated)
@@ -274,7 +272,30 @@ cvm_status cvm_mesh_write_dual(cvm_mesh *m, const char *path)
     else if (s == CVM_E_TOO_LARGE)
         s = cvm__error(&m->ctx, s, CVM_ENT_NONE, -1, "the dual has more than INT32_MAX corners");
     if (!s)
-        s = cvm__write_dual_file(&m->ctx, path, &d);
+        s = cvm__write_dual_file_to_set(ws, path, &d);
     dual_out_free(m, &d);
     return s;
+}
+
+cvm_status cvm_mesh_write_dual(cvm_mesh *m, const char *path)
+{
+    cvm__write_set ws;
+    cvm_status s;
+    if (!m)
+        return CVM_E_NULL_ARG;
+    CVM__BEGIN(m);
+    cvm__write_set_init(&ws, &m->ctx);
+    if ((s = write_dual_to_set(m, path, &ws))) {
+        cvm__write_set_discard(&ws);
+        return s;
+    }
+    return cvm__write_set_commit(&ws);
+}
+
+cvm_status cvm_mesh_stage_write_dual(cvm_mesh *m, const char *path)
+{
+    if (!m)
+        return CVM_E_NULL_ARG;
+    CVM__BEGIN(m);
+    return cvm__mesh_stage_settle(m, write_dual_to_set(m, path, &m->staged));
 }

@@ -13,6 +13,7 @@ static cvm_status create(cvm_mesh **out, cvm__ctx *proto)
     m->ctx = *proto;
     cvm__options_default(m->opt);
     cvm__tri2_init(&m->tri, &m->ctx);
+    cvm__write_set_init(&m->staged, &m->ctx);
     *out = m;
     return CVM_OK;
 }
@@ -76,6 +77,7 @@ void cvm_mesh_free(cvm_mesh *m)
     void *payload;
     if (!m)
         return;
+    cvm__write_set_discard(&m->staged);
     cvm__pslg_free(&m->ctx, &m->in);
     cvm__tri2_destroy(&m->tri);
     cvm__free(&m->ctx, m->input_map);

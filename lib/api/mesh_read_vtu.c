@@ -669,13 +669,15 @@ static cvm_status attempt(cvm_mesh *t, const cvm__vtu_mesh *vm, const int32_t *s
     return CVM_OK;
 }
 
-/* Move the mesh of t into m (m's front markers stay) and free t with m's old mesh. */
+/* Move the mesh of t into m (m's front markers and staged writes stay) and
+ * free t with m's old mesh. */
 static void adopt(cvm_mesh *m, cvm_mesh *t)
 {
     cvm_mesh tmp = *m;
     cvm__ctx c;
     int32_t *fm = m->front_marks;
     size_t nfm = m->n_front_marks;
+    cvm__write_set staged = m->staged;
     *m = *t;
     *t = tmp;
     c = m->ctx;
@@ -687,6 +689,8 @@ static void adopt(cvm_mesh *m, cvm_mesh *t)
     t->n_front_marks = m->n_front_marks;
     m->front_marks = fm;
     m->n_front_marks = nfm;
+    t->staged = m->staged;
+    m->staged = staged;
     memcpy(m->opt, t->opt, sizeof m->opt);
     cvm_mesh_free(t);
 }

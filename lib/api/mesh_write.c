@@ -108,14 +108,12 @@ cvm_status cvm__mesh_out_build(cvm_mesh *m, cvm__mesh_out *mo, int want_edges, i
     return CVM_OK;
 }
 
-cvm_status cvm_mesh_write(cvm_mesh *m, const char *path)
+/* The checks and output arrays of cvm_mesh_write(), the files into ws. */
+static cvm_status write_to_set(cvm_mesh *m, const char *path, cvm__write_set *ws)
 {
     cvm__mesh_out mo;
     cvm__format fmt;
     cvm_status s;
-    if (!m)
-        return CVM_E_NULL_ARG;
-    CVM__BEGIN(m);
     if (!path)
         return cvm__error(&m->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "path is NULL");
     if (!m->triangulated)
@@ -133,7 +131,54 @@ cvm_status cvm_mesh_write(cvm_mesh *m, const char *path)
     mo.window[1] = cvm__opt(m, CVM_OPT_SVG_WINDOW_YMIN);
     mo.window[2] = cvm__opt(m, CVM_OPT_SVG_WINDOW_XMAX);
     mo.window[3] = cvm__opt(m, CVM_OPT_SVG_WINDOW_YMAX);
-    s = cvm__write_file(&m->ctx, path, &mo);
+    s = cvm__write_file_to_set(ws, path, &mo);
     cvm__mesh_out_free(m, &mo);
     return s;
+}
+
+cvm_status cvm_mesh_write(cvm_mesh *m, const char *path)
+{
+    cvm__write_set ws;
+    cvm_status s;
+    if (!m)
+        return CVM_E_NULL_ARG;
+    CVM__BEGIN(m);
+    cvm__write_set_init(&ws, &m->ctx);
+    if ((s = write_to_set(m, path, &ws))) {
+        cvm__write_set_discard(&ws);
+        return s;
+    }
+    return cvm__write_set_commit(&ws);
+}
+
+cvm_status cvm__mesh_stage_settle(cvm_mesh *m, cvm_status s)
+{
+    if (s)
+        cvm__write_set_discard(&m->staged);
+    return s;
+}
+
+cvm_status cvm_mesh_stage_write(cvm_mesh *m, const char *path)
+{
+    if (!m)
+        return CVM_E_NULL_ARG;
+    CVM__BEGIN(m);
+    return cvm__mesh_stage_settle(m, write_to_set(m, path, &m->staged));
+}
+
+cvm_status cvm_mesh_commit_writes(cvm_mesh *m)
+{
+    if (!m)
+        return CVM_E_NULL_ARG;
+    CVM__BEGIN(m);
+    return cvm__write_set_commit(&m->staged);
+}
+
+cvm_status cvm_mesh_discard_writes(cvm_mesh *m)
+{
+    if (!m)
+        return CVM_E_NULL_ARG;
+    CVM__BEGIN(m);
+    cvm__write_set_discard(&m->staged);
+    return CVM_OK;
 }

@@ -47,6 +47,10 @@ cvm_status cvm__dual_edge_ends(cvm__ctx *ctx, const cvm__tri2 *T, const cvm__edg
  * (no message). */
 cvm_status cvm__dual_cells(cvm__ctx *ctx, const cvm__tri2 *T, int32_t *off, double *xy);
 
+/* The end of a cvm_mesh_stage_write*() call that returns s: on an error or
+ * cancellation every staged write of m is discarded. Returns s. */
+cvm_status cvm__mesh_stage_settle(cvm_mesh *m, cvm_status s);
+
 /* Marker of input segment seg of m: its marker, or 1 when the input has no
  * segment markers (Triangle's default boundary marker); 0 for seg < 0. */
 int32_t cvm__segment_marker(const cvm_mesh *m, int32_t seg);

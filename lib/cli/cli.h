@@ -1,7 +1,8 @@
 /*
  * cli.h - pieces of the cvmesh program shared by its files. The program sees
  * only the public API (include/cvmesh.h). Exit status: 0 success, 1 the
- * input or an output could not be processed, 2 the command line is wrong.
+ * input or an output could not be processed, 2 the command line is wrong,
+ * 130 / 143 interrupted by SIGINT / SIGTERM (no output file changed).
  */
 #ifndef CVM_CLI_H
 #define CVM_CLI_H
@@ -39,15 +40,17 @@ typedef struct cli_setting {
 #define CLI_MAX_SETTINGS 32
 
 /* The shared start of refine and optimise: a new mesh with the option
- * settings applied and a sizing, uniform size when size > 0. Returns
+ * settings applied, cli_progress installed, and a sizing, uniform size when
+ * size > 0. Returns
  * CLI_EXIT_OK, or an exit status after printing why (nothing left allocated). */
 int cli_start(cvm_mesh **m, cvm_sizing **sz, const cli_setting *set, int nset, double size);
 
 /* The shared end of refine and optimise: s is the status of their main call on
  * m (input file in). An error fails (message printed); an incomplete status
  * prints a note and goes on. Then write out, svg and dual (each when not
- * NULL), print the quality report and report(stdout, m) when quality, and free
- * m and sz. Returns CLI_EXIT_OK or the exit status of the first failure. */
+ * NULL) as one set, print the quality report and report(stdout, m) when
+ * quality, and free m and sz. Returns CLI_EXIT_OK or the exit status of the
+ * first failure or of an interruption. */
 int cli_finish(cvm_mesh *m, cvm_sizing *sz, const char *in, cvm_status s, const char *out,
                const char *svg, const char *dual, int quality, void (*report)(FILE *, cvm_mesh *));
 
@@ -70,7 +73,8 @@ int cli_parse_tail(const char *name, unsigned cmd, int argc, char **argv, int *i
 /* After the loop: CLI_EXIT_OK when an input file was named, else a usage error. */
 int cli_need_input(const char *name, const char *in);
 /* Print the last error of m (after "prefix: " when prefix is not NULL), free
- * m and sz (either may be NULL) and return CLI_EXIT_FAIL. */
+ * m and sz (either may be NULL) and return CLI_EXIT_FAIL; once a signal
+ * arrived, cli_stop(m, sz) instead (the failure is the interruption). */
 int cli_fail(cvm_mesh *m, cvm_sizing *sz, const char *prefix);
 
 /* If argv[*i] is an option flag of cmd, record its setting (taking its value
@@ -95,10 +99,6 @@ int cli_print_dual_quality(FILE *f, cvm_mesh *m);
  * the command then skips cvm_mesh_triangulate(). */
 int cli_is_triangulated(const cvm_mesh *m);
 
-/* Write the dual cells of m to path (--dual); on error print it and return
- * CLI_EXIT_FAIL. */
-int cli_write_dual(cvm_mesh *m, const char *path);
-
 /* Monotonic seconds. */
 double cli_now(void);
 
@@ -115,6 +115,30 @@ void cli_budget_begin(cli_budget *b, const cvm_mesh *m);
  * at its first check: a refinement keeps a valid mesh and says so, a
  * triangulation is left empty). No limit: nothing changes. */
 void cli_budget_apply(const cli_budget *b, cvm_mesh *m);
+
+/* ---- interrupt.c: SIGINT / SIGTERM and the outputs as one set ---- */
+
+/* Install the SIGINT and SIGTERM handlers (not over a signal ignored at start). */
+void cli_signals_install(void);
+/* Record what runs now (what: "triangulating"; name: a file or NULL), for the
+ * interruption message. what and name must outlive the command. */
+void cli_phase(const char *what, const char *name);
+/* The signal number that arrived, or 0. */
+int cli_interrupted(void);
+/* Progress callback of every command: asks the running call to stop once a
+ * signal arrived. */
+int cli_progress(void *payload, cvm_stage stage, double fraction);
+/* Free m and sz (either may be NULL; freeing m removes its staged outputs),
+ * print "cvmesh: interrupted by SIGINT while PHASE; ..." and return
+ * 128 + the signal number. */
+int cli_stop(cvm_mesh *m, cvm_sizing *sz);
+/* Stage out, svg (as mesh writes) and dual (each when not NULL), then commit
+ * them together. Returns CLI_EXIT_OK; CLI_EXIT_FAIL after printing why (no
+ * file changed; m's staged writes are gone); or -1 when a signal arrived (call
+ * cli_stop()). */
+int cli_write_outputs(cvm_mesh *m, const char *out, const char *svg, const char *dual);
+/* Called once the outputs are committed (the message then says so). */
+void cli_outputs_committed(void);
 
 /* Subcommands: argv[0] is the subcommand's name. */
 int cli_triangulate(int argc, char **argv);

@@ -54,7 +54,11 @@ void cli_optimise_help(FILE *f)
     fprintf(f, "\nStopped by --time-limit the mesh is still a valid regular triangulation and\n"
                "is written; the exit status is 0 and a note says so. --time-limit bounds the\n"
                "whole command (reading and writing are not cut short); stopped during the\n"
-               "triangulation before refinement, nothing is written and the exit status is 1.\n");
+               "triangulation before refinement, nothing is written and the exit status is 1.\n"
+               "\nThe output files (-o, --dual) replace their old versions together or not at\n"
+               "all, and a replaced file keeps its permissions. SIGINT (Ctrl-C) or SIGTERM\n"
+               "stops the command: exit status 130 or 143, one line says what was interrupted,\n"
+               "and no file is written or changed unless the outputs were already complete.\n");
 }
 
 static int parse_value(oargs *a, int argc, char **argv, int *i)
@@ -167,20 +171,25 @@ static int run(const oargs *a)
         cvm_mesh_free(m);
         return CLI_EXIT_USAGE;
     }
+    cli_phase("reading", a->in);
     if (cvm_mesh_read(m, a->in) != CVM_OK)
         return cli_fail(m, sz, NULL);
     cli_budget_apply(&budget, m);
-    if (!cli_is_triangulated(m) && cvm_mesh_triangulate(m) != CVM_OK) /* a .vtu is a mesh */
+    cli_phase("triangulating", a->in);
+    if ((!cli_is_triangulated(m) && cvm_mesh_triangulate(m) != CVM_OK) || /* a .vtu is a mesh */
+        cli_interrupted())
         return cli_fail(m, sz, a->in);
     if (a->refine) {
         cli_budget_apply(&budget, m);
+        cli_phase("refining", a->in);
         s = cvm_mesh_refine(m, sz, a->algo);
-        if (cvm_status_is_error(s))
+        if (cvm_status_is_error(s) || cli_interrupted())
             return cli_fail(m, sz, a->in);
         if (s != CVM_OK)
             fprintf(stderr, "cvmesh: note: %s: %s\n", a->in, cvm_mesh_errmsg(m));
     }
     cli_budget_apply(&budget, m);
+    cli_phase("optimising the dual of", a->in);
     s = cvm_mesh_optimise_dual(m, NULL);
     return cli_finish(m, sz, a->in, s, a->out, NULL, a->dual, a->quality, print_dual_report);
 }

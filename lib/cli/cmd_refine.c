@@ -59,7 +59,11 @@ void cli_refine_help(FILE *f)
     fprintf(f, "\nStopped by --max-steiner or --time-limit the mesh is still valid and written;\n"
                "the exit status is 0 and a note says what was left unmet. --time-limit bounds\n"
                "the whole command (reading and writing are not cut short); stopped during the\n"
-               "triangulation before refinement, nothing is written and the exit status is 1.\n");
+               "triangulation before refinement, nothing is written and the exit status is 1.\n"
+               "\nThe output files (-o, --svg, --dual) replace their old versions together or not\n"
+               "at all, and a replaced file keeps its permissions. SIGINT (Ctrl-C) or SIGTERM\n"
+               "stops the command: exit status 130 or 143, one line says what was interrupted,\n"
+               "and no file is written or changed unless the outputs were already complete.\n");
 }
 
 /* --fronts 1,2,...: integer markers separated by commas. */
@@ -205,14 +209,18 @@ static int run(const rargs *a)
         cvm_mesh_free(m);
         return CLI_EXIT_USAGE;
     }
+    cli_phase("reading", a->in);
     if (cvm_mesh_read(m, a->in) != CVM_OK)
         return cli_fail(m, sz, NULL);
     cli_budget_apply(&budget, m);
-    if (!cli_is_triangulated(m) && cvm_mesh_triangulate(m) != CVM_OK) /* a .vtu is a mesh */
+    cli_phase("triangulating", a->in);
+    if ((!cli_is_triangulated(m) && cvm_mesh_triangulate(m) != CVM_OK) || /* a .vtu is a mesh */
+        cli_interrupted())
         return cli_fail(m, sz, a->in);
     if (a->nfronts && cvm_mesh_set_front_markers(m, a->fronts, a->nfronts) != CVM_OK)
         return cli_fail(m, sz, NULL);
     cli_budget_apply(&budget, m);
+    cli_phase("refining", a->in);
     s = cvm_mesh_refine(m, sz, a->algo);
     return cli_finish(m, sz, a->in, s, a->out, a->svg, a->dual, a->quality, print_report);
 }

@@ -48,7 +48,11 @@ void cli_triangulate_help(FILE *f)
                "and no output file is written. Command-line errors exit with 2.\n"
                "--time-limit bounds the whole command (reading and writing are not cut\n"
                "short). A triangulation cannot stop half-way: stopped by the limit, nothing\n"
-               "is written, one line says where it stopped, and the exit status is 1.\n");
+               "is written, one line says where it stopped, and the exit status is 1.\n"
+               "\nThe output files (-o, --svg, --dual) replace their old versions together or not\n"
+               "at all, and a replaced file keeps its permissions. SIGINT (Ctrl-C) or SIGTERM\n"
+               "stops the command: exit status 130 or 143, one line says what was interrupted,\n"
+               "and no file is written or changed unless the outputs were already complete.\n");
 }
 
 static int has_ext(const char *path, const char *ext)
@@ -115,30 +119,9 @@ static int parse(args *a, int argc, char **argv)
 static int on_progress(void *payload, cvm_stage stage, double fraction)
 {
     phases *ph = (phases *)payload;
-    (void)fraction;
     if (stage == CVM_STAGE_RECOVER_SEGMENTS && ph->recover_start == 0)
         ph->recover_start = cli_now();
-    return 0;
-}
-
-/* Remove the files written for out (PREFIX.node also wrote .ele and .edge). */
-static void remove_output(const char *out)
-{
-    static const char *const side[] = {".node", ".ele", ".edge"};
-    char buf[4096];
-    size_t n, k;
-    if (!out)
-        return;
-    n = strlen(out);
-    if (!has_ext(out, ".node") || n - 5 + 6 > sizeof buf) {
-        remove(out);
-        return;
-    }
-    for (k = 0; k < 3; k++) {
-        memcpy(buf, out, n - 5);
-        strcpy(buf + n - 5, side[k]);
-        remove(buf);
-    }
+    return cli_progress(NULL, stage, fraction);
 }
 
 static int run(const args *a)
@@ -158,38 +141,36 @@ static int run(const args *a)
         cvm_mesh_free(m);
         return rc;
     }
+    /* every 1 for --timings: the first recovery report splits the phases */
+    cvm_mesh_set_progress(m, on_progress, a->timings ? 1 : 256, &ph);
     t0 = cli_now();
     cli_budget_begin(&budget, m);
+    cli_phase("reading", a->in);
     if (cvm_mesh_read(m, a->in) != CVM_OK)
         return cli_fail(m, NULL, NULL);
     t_read = cli_now();
-    if (a->timings)
-        cvm_mesh_set_progress(m, on_progress, 1, &ph);
     cli_budget_apply(&budget, m);
+    cli_phase("triangulating", a->in);
     s = cli_is_triangulated(m) ? CVM_OK : cvm_mesh_triangulate(m); /* a .vtu is a mesh */
-    if (s != CVM_OK)
+    if (s != CVM_OK || cli_interrupted())
         return cli_fail(m, NULL, a->in);
     t_tri = cli_now();
     if (cvm_mesh_count(&ndup, m, CVM_ENT_DUPLICATE) == CVM_OK && ndup)
         fprintf(stderr, "cvmesh: note: %s: %lu duplicate points merged\n", a->in, (unsigned long)ndup);
-    if (a->out && cvm_mesh_write(m, a->out) != CVM_OK)
-        return cli_fail(m, NULL, NULL);
-    if (a->svg && cvm_mesh_write(m, a->svg) != CVM_OK) {
-        remove_output(a->out); /* all outputs or none */
-        return cli_fail(m, NULL, NULL);
-    }
-    if (a->dual && (rc = cli_write_dual(m, a->dual))) {
-        remove_output(a->out);
-        if (a->svg)
-            remove(a->svg);
+    if ((rc = cli_write_outputs(m, a->out, a->svg, a->dual)) < 0)
+        return cli_stop(m, NULL);
+    if (rc) {
         cvm_mesh_free(m);
         return rc;
     }
     t_write = cli_now();
+    cli_phase("computing the quality report", NULL);
     if (a->quality && (rc = cli_print_quality(stdout, m))) {
         cvm_mesh_free(m);
         return rc;
     }
+    if (cli_interrupted())
+        return cli_stop(m, NULL);
     if (a->timings) {
         double split = ph.recover_start > 0 ? ph.recover_start : t_tri;
         printf("read: %.6f\n", t_read - t0);

@@ -276,6 +276,8 @@ int cli_need_input(const char *name, const char *in)
 
 int cli_fail(cvm_mesh *m, cvm_sizing *sz, const char *prefix)
 {
+    if (cli_interrupted())
+        return cli_stop(m, sz);
     fprintf(stderr, "cvmesh: %s%s%s\n", prefix ? prefix : "", prefix ? ": " : "", cvm_mesh_errmsg(m));
     cvm_sizing_free(sz);
     cvm_mesh_free(m);

@@ -58,8 +58,10 @@ int main(int argc, char **argv)
         return CLI_EXIT_OK;
     }
     for (i = 0; i < NCOMMANDS; i++)
-        if (strcmp(argv[1], k_commands[i].name) == 0)
+        if (strcmp(argv[1], k_commands[i].name) == 0) {
+            cli_signals_install();
             return k_commands[i].run(argc - 1, argv + 1);
+        }
     fprintf(stderr, "cvmesh: unknown command '%s' (see cvmesh --help)\n", argv[1]);
     return CLI_EXIT_USAGE;
 }

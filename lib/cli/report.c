@@ -176,29 +176,23 @@ int cli_is_triangulated(const cvm_mesh *m)
     return cvm_mesh_count(&n, m, CVM_ENT_TRIANGLE) == CVM_OK && n > 0;
 }
 
-int cli_write_dual(cvm_mesh *m, const char *path)
-{
-    if (cvm_mesh_write_dual(m, path) != CVM_OK) {
-        fprintf(stderr, "cvmesh: --dual: %s\n", cvm_mesh_errmsg(m));
-        return CLI_EXIT_FAIL;
-    }
-    return CLI_EXIT_OK;
-}
-
 int cli_finish(cvm_mesh *m, cvm_sizing *sz, const char *in, cvm_status s, const char *out,
                const char *svg, const char *dual, int quality, void (*report)(FILE *, cvm_mesh *))
 {
-    int rc = CLI_EXIT_OK;
-    if (cvm_status_is_error(s))
+    int rc;
+    if (cli_interrupted() || cvm_status_is_error(s))
         return cli_fail(m, sz, in);
     if (s != CVM_OK)
         fprintf(stderr, "cvmesh: note: %s: %s\n", in, cvm_mesh_errmsg(m));
-    if ((out && cvm_mesh_write(m, out) != CVM_OK) || (svg && cvm_mesh_write(m, svg) != CVM_OK))
-        return cli_fail(m, sz, NULL);
-    if (dual)
-        rc = cli_write_dual(m, dual);
-    if (!rc && quality && !(rc = cli_print_quality(stdout, m)) && report)
-        report(stdout, m);
+    if ((rc = cli_write_outputs(m, out, svg, dual)) < 0)
+        return cli_stop(m, sz);
+    if (!rc && quality) {
+        cli_phase("computing the quality report", NULL);
+        if (!(rc = cli_print_quality(stdout, m)) && report)
+            report(stdout, m);
+    }
+    if (cli_interrupted())
+        return cli_stop(m, sz);
     cvm_sizing_free(sz);
     cvm_mesh_free(m);
     return rc;
@@ -214,6 +208,7 @@ int cli_start(cvm_mesh **m, cvm_sizing **sz, const cli_setting *set, int nset, d
         cvm_mesh_free(*m);
         return CLI_EXIT_FAIL;
     }
+    cvm_mesh_set_progress(*m, cli_progress, 256, NULL);
     if ((rc = cli_apply_settings(*m, set, nset)) == CLI_EXIT_OK && size > 0 &&
         cvm_sizing_set_uniform(*sz, size) != CVM_OK) {
         fprintf(stderr, "cvmesh: --size: %s\n", cvm_sizing_errmsg(*sz));

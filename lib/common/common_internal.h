@@ -73,6 +73,10 @@ void cvm__run_begin(cvm__ctx *ctx, double time_limit_s);
  * CVM_INCOMPLETE_CANCELLED / CVM_INCOMPLETE_TIME_LIMIT (without a message;
  * the caller says what the stop left). */
 cvm_status cvm__tick(cvm__ctx *ctx, int64_t n, cvm_stage stage, double fraction);
+/* Ask the progress callback, if any, whether to go on: CVM_OK, or
+ * CVM_INCOMPLETE_CANCELLED (no message). The time limit is not checked: for
+ * work that cannot stop half-way and has no valid partial result (a write). */
+cvm_status cvm__poll_cancel(cvm__ctx *ctx, cvm_stage stage, double fraction);
 
 /* Smallest-norm point d (nd = 1 or 2 components) of the convex hull of the
  * gradients g + nd * act[k], k < na: the shortest of the hull's vertices and of

@@ -19,6 +19,19 @@ void cvm__run_begin(cvm__ctx *ctx, double time_limit_s)
     ctx->deadline = time_limit_s > 0 ? cvm__now() + time_limit_s : 0.0;
 }
 
+static double clamp01(double f)
+{
+    return f < 0 ? 0 : f > 1 ? 1 : f;
+}
+
+cvm_status cvm__poll_cancel(cvm__ctx *ctx, cvm_stage stage, double fraction)
+{
+    if (ctx->progress_fn && ctx->progress_every > 0 &&
+        ctx->progress_fn(ctx->progress_payload, stage, clamp01(fraction)))
+        return CVM_INCOMPLETE_CANCELLED;
+    return CVM_OK;
+}
+
 cvm_status cvm__tick(cvm__ctx *ctx, int64_t n, cvm_stage stage, double fraction)
 {
     int64_t every = ctx->progress_fn && ctx->progress_every > 0 ? ctx->progress_every : 1024;
@@ -27,11 +40,7 @@ cvm_status cvm__tick(cvm__ctx *ctx, int64_t n, cvm_stage stage, double fraction)
         return CVM_OK;
     ctx->ops = 0;
     if (ctx->progress_fn && ctx->progress_every > 0) {
-        if (fraction < 0)
-            fraction = 0;
-        if (fraction > 1)
-            fraction = 1;
-        if (ctx->progress_fn(ctx->progress_payload, stage, fraction))
+        if (ctx->progress_fn(ctx->progress_payload, stage, clamp01(fraction)))
             return CVM_INCOMPLETE_CANCELLED;
     }
     if (ctx->deadline > 0 && cvm__now() > ctx->deadline)

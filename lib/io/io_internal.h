@@ -49,7 +49,9 @@ void cvm__strerror(int err, char *buf, size_t len);
 /* Parse Triangle .poly (is_poly = 1) or .node (is_poly = 0) text from r.
  * name is used in messages ("square.poly:12: ..."). On error p is left zeroed
  * and the message gives name:line. Returns CVM_OK, CVM_E_IO_READ,
- * CVM_E_IO_FORMAT, CVM_E_INPUT_NONFINITE, CVM_E_NOMEM, CVM_E_TOO_LARGE. */
+ * CVM_E_IO_FORMAT, CVM_E_INPUT_NONFINITE, CVM_E_NOMEM, CVM_E_TOO_LARGE, or
+ * CVM_INCOMPLETE_CANCELLED when ctx's progress callback (stage
+ * CVM_STAGE_READ, asked every 64 KiB; not the time limit) says stop. */
 cvm_status cvm__read_triangle_format(cvm__ctx *ctx, cvm__reader *r, const char *name,
                                      int is_poly, cvm__pslg *p);
 
@@ -71,7 +73,8 @@ typedef struct cvm__vtu_mesh {
 /* Parse .vtu text from r (name for messages "name:line: ..."). Returns CVM_OK,
  * CVM_E_IO_READ, CVM_E_IO_FORMAT (malformed; an index out of range), CVM_E_UNSUPPORTED
  * (binary/appended/compressed data, other cell types), CVM_E_INPUT_NONFINITE,
- * CVM_E_TOO_LARGE, CVM_E_NOMEM; out is zeroed on error. */
+ * CVM_E_TOO_LARGE, CVM_E_NOMEM, CVM_INCOMPLETE_CANCELLED (as
+ * cvm__read_triangle_format(), while the file is read); out is zeroed on error. */
 cvm_status cvm__read_vtu(cvm__ctx *ctx, cvm__reader *r, const char *name, cvm__vtu_mesh *out);
 /* The same from the file at path (CVM_E_IO_OPEN too). */
 cvm_status cvm__read_vtu_file(cvm__ctx *ctx, const char *path, cvm__vtu_mesh *out);
@@ -124,10 +127,14 @@ cvm__format cvm__format_of(const char *path);
 
 /* A byte sink with atomic commit: the text goes to a new temporary file
  * PATH.tmp.XXXXXX beside PATH, which cvm__writer_commit() renames over PATH.
- * When PATH (after symbolic links) exists and is not a regular file (a
- * device such as /dev/null, a FIFO), it is written in place instead.
- * Output errors are sticky: the put functions never fail by themselves, the
- * first error is reported by cvm__writer_finish() or cvm__writer_commit(). */
+ * A replaced file's permissions (and owner, where allowed) carry over; a new
+ * file gets the umask's. When PATH (after symbolic links) exists and is not a
+ * regular file (a device such as /dev/null, a FIFO), it is written in place
+ * instead. Output errors are sticky: the put functions never fail by
+ * themselves, the first error is reported by cvm__writer_finish() or
+ * cvm__writer_commit(). Every few puts the ctx's progress callback is asked
+ * (stage CVM_STAGE_WRITE; not the time limit): when it says stop, nothing more
+ * is written and finish/commit return CVM_INCOMPLETE_CANCELLED. */
 typedef struct cvm__writer cvm__writer;
 
 /* Create the temporary file. Returns CVM_OK, CVM_E_IO_OPEN ("cannot create
@@ -138,8 +145,12 @@ void cvm__writer_puts(cvm__writer *w, const char *s);
 void cvm__writer_printf(cvm__writer *w, const char *fmt, ...) CVM__PRINTF(2, 3);
 /* A double in the shortest form that reads back exactly, '.' as decimal point. */
 void cvm__writer_double(cvm__writer *w, double x);
-/* Flush, sync and close the temporary file; CVM_OK or CVM_E_IO_WRITE (the
- * writer stays, to be committed or discarded). Idempotent. */
+/* For the progress fraction only: about how many puts the whole write takes
+ * (total), of which before went to earlier files of the same write. */
+void cvm__writer_expect(cvm__writer *w, uint64_t before, uint64_t total);
+/* Flush, sync and close the temporary file; CVM_OK, CVM_E_IO_WRITE or
+ * CVM_INCOMPLETE_CANCELLED (the writer stays, to be committed or discarded).
+ * Idempotent. */
 cvm_status cvm__writer_finish(cvm__writer *w);
 /* Finish if needed, then rename the temporary file over PATH and free w.
  * On error the temporary file is removed: CVM_E_IO_WRITE. */
@@ -147,14 +158,44 @@ cvm_status cvm__writer_commit(cvm__writer *w);
 /* Close and remove the temporary file and free w; NULL is a no-op. */
 void cvm__writer_discard(cvm__writer *w);
 
+/* Finished writers whose temporary files replace their targets together.
+ * The set allocates through ctx; it owns the writers added to it. */
+typedef struct cvm__write_set {
+    cvm__ctx *ctx;
+    cvm__writer **w;
+    size_t n, cap;
+} cvm__write_set;
+
+void cvm__write_set_init(cvm__write_set *ws, cvm__ctx *ctx);
+/* Finish w and add it to ws. On error (those of cvm__writer_finish(),
+ * CVM_E_NOMEM) w is discarded and ws is unchanged. */
+cvm_status cvm__write_set_add(cvm__write_set *ws, cvm__writer *w);
+/* Rename every temporary file of ws over its target, in the order added, and
+ * empty ws. If a rename fails, the targets already replaced are put back as
+ * they were (from hard links made before the first rename; a target that
+ * cannot be linked stays replaced), the other temporary files are removed,
+ * and CVM_E_IO_WRITE names the file ("cannot replace PATH: reason").
+ * CVM_E_NOMEM before any rename changes nothing. */
+cvm_status cvm__write_set_commit(cvm__write_set *ws);
+/* Remove every temporary file of ws and empty it. */
+void cvm__write_set_discard(cvm__write_set *ws);
+
 /* Write the mesh to path in the format its extension names (.vtu, .msh,
  * .node -> PREFIX.node/.ele/.edge, .svg). Returns CVM_OK, CVM_E_UNSUPPORTED,
- * CVM_E_IO_OPEN, CVM_E_IO_WRITE, CVM_E_NOMEM; on error no file is left. */
+ * CVM_E_IO_OPEN, CVM_E_IO_WRITE, CVM_E_NOMEM, CVM_INCOMPLETE_CANCELLED (the
+ * progress callback stopped it); on error or cancellation no file is left
+ * and every target is as it was. */
 cvm_status cvm__write_file(cvm__ctx *ctx, const char *path, const cvm__mesh_out *mo);
+/* The same, but the finished files join ws instead of replacing their targets
+ * (CVM_INCOMPLETE_CANCELLED too). On error the files of this call are removed
+ * and ws is unchanged. */
+cvm_status cvm__write_file_to_set(cvm__write_set *ws, const char *path, const cvm__mesh_out *mo);
 
 /* Write the cells as VTK polygons to path (.vtu; the caller checks the
  * extension). CVM_OK, CVM_E_IO_OPEN, CVM_E_IO_WRITE, CVM_E_NOMEM; on error no
  * file is left. */
 cvm_status cvm__write_dual_file(cvm__ctx *ctx, const char *path, const cvm__dual_out *d);
+/* The same into ws, as cvm__write_file_to_set(). */
+cvm_status cvm__write_dual_file_to_set(cvm__write_set *ws, const char *path, const cvm__dual_out *d);
 
 #endif

@@ -70,6 +70,9 @@ static cvm_status slurp(vparser *ps, cvm__reader *r)
         if (ps->n + 65536 + 1 > cap &&
             cvm__grow(ps->ctx, (void **)&ps->buf, &cap, ps->n + 65536 + 1, 1))
             return cvm__nomem(ps->ctx);
+        if (ps->n && cvm__poll_cancel(ps->ctx, CVM_STAGE_READ, 0.0))
+            return cvm__error(ps->ctx, CVM_INCOMPLETE_CANCELLED, CVM_ENT_NONE, -1,
+                              "reading %s was cancelled", ps->name);
         got = r->read(r->self, ps->buf + ps->n, 65536);
         if (got < 0 || got > 65536)
             return cvm__error(ps->ctx, CVM_E_IO_READ, CVM_ENT_FILE_LINE, -1, "%s: read error",

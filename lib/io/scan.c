@@ -46,6 +46,9 @@ static cvm_status refill(cvm__scan *s, int *more)
         s->chunk = cvm__malloc(s->ctx, CHUNK);
         if (!s->chunk)
             return cvm__nomem(s->ctx);
+    } else if (cvm__poll_cancel(s->ctx, CVM_STAGE_READ, 0.0)) { /* every CHUNK bytes */
+        return cvm__error(s->ctx, CVM_INCOMPLETE_CANCELLED, CVM_ENT_NONE, -1,
+                          "reading %s was cancelled", s->name);
     }
     got = s->r->read(s->r->self, s->chunk, CHUNK);
     if (got < 0 || got > CHUNK)

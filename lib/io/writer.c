@@ -1,7 +1,10 @@
 /*
  * writer.c - an output file that appears whole or not at all: text goes to a
- * fresh temporary file beside the target, which is flushed, synced, closed
- * and then renamed over the target; any failure removes the temporary file.
+ * fresh temporary file beside the target (with the target's permissions when
+ * it replaces one), which is flushed, synced, closed and then renamed over
+ * the target; any failure or cancellation removes the temporary file. A
+ * write set renames several such files together and puts back the files it
+ * replaced when one rename fails.
  */
 #ifndef _POSIX_C_SOURCE
 #define _POSIX_C_SOURCE 200809L
@@ -25,8 +28,15 @@ struct cvm__writer {
     char *target;   /* the file replaced: path, or where its symbolic link leads */
     char *tmp;      /* temporary file, NULL when writing in place */
     int err;        /* errno of the first output error, 0 if none */
+    int cancelled;  /* 1 once the progress callback asked to stop */
     int finished;   /* 1 once the file is closed */
     cvm_status status; /* result of cvm__writer_finish() */
+    uint64_t nput;  /* values and strings put so far */
+    uint64_t before;/* for the fraction: puts of earlier files of the same write */
+    uint64_t expect;/* for the fraction: about how many puts in all (0: unknown) */
+    uint64_t poll;  /* ask the progress callback every poll puts */
+    char *bak;      /* during a set's commit: a hard link to the replaced file, or NULL */
+    int existed;    /* during a set's commit: the target existed before */
 };
 
 static char *dup_str(cvm__ctx *ctx, const char *s)
@@ -119,6 +129,24 @@ static cvm_status resolve(cvm__writer *w, int *in_place)
     return CVM_OK;
 }
 
+/* The replaced file's owner and permissions go to the temporary file, so the
+ * rename keeps them; a new file gets the umask's. Best effort: a failure
+ * (another owner, a file system without modes) leaves the umask's. */
+static void keep_attributes(int fd, const char *target)
+{
+    struct stat st;
+    if (lstat(target, &st) != 0 || !S_ISREG(st.st_mode))
+        return;
+    if (st.st_uid != geteuid() || st.st_gid != getegid()) {
+        if (fchown(fd, st.st_uid, st.st_gid) != 0) {
+            /* not allowed: the new file keeps our owner */
+        }
+    }
+    if (fchmod(fd, st.st_mode & 07777) != 0) {
+        /* keep the umask's permissions */
+    }
+}
+
 static cvm_status open_tmp(cvm__writer *w)
 {
     size_t len = strlen(w->target) + 16;
@@ -139,6 +167,7 @@ static cvm_status open_tmp(cvm__writer *w)
         w->tmp = NULL;
         return os_error(w, CVM_E_IO_OPEN, "create", err);
     }
+    keep_attributes(fd, w->target);
     w->f = fdopen(fd, "w");
     if (!w->f) {
         int err = errno;
@@ -157,6 +186,7 @@ static void free_writer(cvm__writer *w)
     cvm__free(ctx, w->path);
     cvm__free(ctx, w->target);
     cvm__free(ctx, w->tmp);
+    cvm__free(ctx, w->bak);
     cvm__free(ctx, w);
 }
 
@@ -170,6 +200,7 @@ cvm_status cvm__writer_open(cvm__writer **out, cvm__ctx *ctx, const char *path)
     if (!w)
         return cvm__nomem(ctx);
     w->ctx = ctx;
+    w->poll = ctx->progress_every > 64 ? (uint64_t)ctx->progress_every : 64;
     w->path = dup_str(ctx, path);
     if (!w->path) {
         free_writer(w);
@@ -199,9 +230,30 @@ static void note_error(cvm__writer *w)
         w->err = errno ? errno : EIO;
 }
 
+void cvm__writer_expect(cvm__writer *w, uint64_t before, uint64_t total)
+{
+    w->before = before;
+    w->expect = total;
+}
+
+/* 1 when nothing more is to be written: an error, or a cancellation, which
+ * the progress callback (stage CVM_STAGE_WRITE) is asked about every w->poll
+ * puts. */
+static int stopped(cvm__writer *w)
+{
+    if (w->err || w->cancelled || !w->f)
+        return 1;
+    if (++w->nput % w->poll == 0) {
+        double f = w->expect ? (double)(w->before + w->nput) / (double)w->expect : 0.0;
+        if (cvm__poll_cancel(w->ctx, CVM_STAGE_WRITE, f > 0.99 ? 0.99 : f))
+            w->cancelled = 1;
+    }
+    return w->cancelled;
+}
+
 void cvm__writer_puts(cvm__writer *w, const char *s)
 {
-    if (w->err || !w->f)
+    if (stopped(w))
         return;
     errno = 0;
     if (fputs(s, w->f) == EOF)
@@ -212,7 +264,7 @@ void cvm__writer_printf(cvm__writer *w, const char *fmt, ...)
 {
     va_list ap;
     int r;
-    if (w->err || !w->f)
+    if (stopped(w))
         return;
     errno = 0;
     va_start(ap, fmt);
@@ -226,7 +278,7 @@ void cvm__writer_double(cvm__writer *w, double x)
 {
     char buf[CVM__DOUBLE_BUF];
     size_t n;
-    if (w->err || !w->f)
+    if (stopped(w))
         return;
     if (isnan(x))
         n = (size_t)snprintf(buf, sizeof buf, "nan");
@@ -250,13 +302,17 @@ cvm_status cvm__writer_finish(cvm__writer *w)
     if (ferror(w->f))
         note_error(w);
     errno = 0;
-    if (!w->err && w->tmp && fsync(fileno(w->f)) != 0)
+    if (!w->err && !w->cancelled && w->tmp && fsync(fileno(w->f)) != 0)
         note_error(w);
     errno = 0;
     if (fclose(w->f) != 0)
         note_error(w);
     w->f = NULL;
-    w->status = w->err ? os_error(w, CVM_E_IO_WRITE, "write", w->err) : CVM_OK;
+    if (w->cancelled)
+        w->status = cvm__error(w->ctx, CVM_INCOMPLETE_CANCELLED, CVM_ENT_NONE, -1,
+                               "writing %s was cancelled", w->path);
+    else
+        w->status = w->err ? os_error(w, CVM_E_IO_WRITE, "write", w->err) : CVM_OK;
     return w->status;
 }
 
@@ -282,4 +338,112 @@ cvm_status cvm__writer_commit(cvm__writer *w)
     }
     free_writer(w);
     return CVM_OK;
+}
+
+void cvm__write_set_init(cvm__write_set *ws, cvm__ctx *ctx)
+{
+    ws->ctx = ctx;
+    ws->w = NULL;
+    ws->n = ws->cap = 0;
+}
+
+cvm_status cvm__write_set_add(cvm__write_set *ws, cvm__writer *w)
+{
+    cvm_status s = cvm__writer_finish(w);
+    if (!s && cvm__grow(ws->ctx, (void **)&ws->w, &ws->cap, ws->n + 1, sizeof *ws->w))
+        s = cvm__nomem(ws->ctx);
+    if (s) {
+        cvm__writer_discard(w);
+        return s;
+    }
+    ws->w[ws->n++] = w;
+    return CVM_OK;
+}
+
+void cvm__write_set_discard(cvm__write_set *ws)
+{
+    size_t i;
+    for (i = 0; i < ws->n; i++)
+        cvm__writer_discard(ws->w[i]);
+    cvm__free(ws->ctx, ws->w);
+    cvm__write_set_init(ws, ws->ctx);
+}
+
+/* Before any rename: note whether w's target exists and, when it is a
+ * regular file, keep it under a second name (a hard link) so that a failed
+ * commit can put it back. No link (a file system without them) leaves only
+ * the note: then that file cannot be put back. CVM_OK or CVM_E_NOMEM. */
+static cvm_status keep_old(cvm__writer *w)
+{
+    size_t len = strlen(w->target) + 16;
+    unsigned attempt;
+    struct stat st;
+    w->existed = lstat(w->target, &st) == 0;
+    if (!w->existed || !S_ISREG(st.st_mode))
+        return CVM_OK;
+    if (!(w->bak = cvm__malloc(w->ctx, len)))
+        return cvm__nomem(w->ctx);
+    for (attempt = 0; attempt < 100; attempt++) {
+        tmp_name(w->bak, len, w->target, w->bak, attempt);
+        if (link(w->target, w->bak) == 0)
+            return CVM_OK;
+        if (errno != EEXIST)
+            break;
+    }
+    cvm__free(w->ctx, w->bak);
+    w->bak = NULL;
+    return CVM_OK;
+}
+
+/* Undo the renames of writers 0 .. n-1 (last first): put each replaced file
+ * back, or remove the new file where there was none. */
+static void put_back(cvm__writer **w, size_t n)
+{
+    while (n-- > 0) {
+        if (!w[n]->tmp)
+            continue;
+        if (w[n]->bak) {
+            if (rename(w[n]->bak, w[n]->target) == 0) {
+                cvm__free(w[n]->ctx, w[n]->bak);
+                w[n]->bak = NULL;
+            }
+        } else if (!w[n]->existed) {
+            unlink(w[n]->target);
+        }
+    }
+}
+
+cvm_status cvm__write_set_commit(cvm__write_set *ws)
+{
+    cvm_status s = CVM_OK;
+    size_t i, done = 0;
+    int err = 0;
+    for (i = 0; i < ws->n && !s; i++)
+        if (ws->w[i]->tmp)
+            s = keep_old(ws->w[i]);
+    for (i = 0; i < ws->n && !s; i++, done++) {
+        cvm__writer *w = ws->w[i];
+        if (w->tmp && rename(w->tmp, w->target) != 0) {
+            err = errno;
+            s = CVM_E_IO_WRITE;
+            break;
+        }
+    }
+    if (s == CVM_E_IO_WRITE) {
+        put_back(ws->w, done);
+        s = os_error(ws->w[done], CVM_E_IO_WRITE, "replace", err);
+    }
+    for (i = 0; i < ws->n; i++) {
+        cvm__writer *w = ws->w[i];
+        if (w->bak)
+            unlink(w->bak);
+        if (i < done) { /* renamed: its temporary name is the target's now */
+            cvm__free(w->ctx, w->tmp);
+            w->tmp = NULL;
+        }
+        cvm__writer_discard(w);
+    }
+    cvm__free(ws->ctx, ws->w);
+    cvm__write_set_init(ws, ws->ctx);
+    return s;
 }

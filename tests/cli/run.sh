@@ -469,5 +469,125 @@ if [ -e "$OUT/frontal.vtu" ]; then fail "--smooth-layers with frontal wrote a fi
 expect_exit 2 "--smooth-layers out of range" "$CLI" refine "$DOMAINS/square.poly" --algo aflr \
     --smooth-layers -1 -o "$OUT/x.vtu"
 
+# ---- the outputs of a command are one set: a failure changes no file --------
+OUT=$TMP/atomic
+mkdir "$OUT"
+# expect_same DESC FILE TEXT : FILE holds exactly the line TEXT.
+expect_same() {
+    if [ -f "$2" ] && [ "$(cat "$2")" = "$3" ]; then pass; else fail "$1: $(basename "$2") was changed or removed"; fi
+}
+expect_no_tmp() {
+    if ls -A "$2" | grep -q '\.tmp\.'; then fail "$1: temporary files left: $(ls -A "$2" | tr '\n' ' ')"; else pass; fi
+}
+expect_exit 1 "refine: the picture fails after the mesh" "$CLI" refine "$DOMAINS/square.poly" --size 0.3 \
+    -o "$OUT/keep.vtu" --svg "$OUT/no/such/p.svg"
+expect_one_line "refine: the picture fails after the mesh"
+if [ -e "$OUT/keep.vtu" ]; then fail "refine: a failed --svg left the new mesh"; else pass; fi
+printf 'old mesh\n' > "$OUT/tkeep.vtu"
+expect_exit 1 "triangulate: the picture fails after the mesh" "$CLI" triangulate "$DOMAINS/square.poly" \
+    -o "$OUT/tkeep.vtu" --svg "$OUT/no/such/t.svg"
+expect_same "triangulate: a failed --svg keeps the old mesh" "$OUT/tkeep.vtu" "old mesh"
+if [ -e /dev/full ]; then
+    ln -s /dev/full "$OUT/full.svg"
+    expect_exit 1 "refine: the picture fills the disk" "$CLI" refine "$DOMAINS/square.poly" --size 0.3 \
+        -o "$OUT/tkeep.vtu" --svg "$OUT/full.svg"
+    expect_same "refine: a full disk for --svg keeps the old mesh" "$OUT/tkeep.vtu" "old mesh"
+    rm -f "$OUT/full.svg"
+fi
+printf 'old picture\n' > "$OUT/d.svg"
+printf 'plain file\n' > "$OUT/plain"
+expect_exit 1 "optimise: the dual fails after the mesh" "$CLI" optimise "$DOMAINS/square.poly" \
+    -o "$OUT/tkeep.vtu" --dual "$OUT/plain/d.vtu"
+expect_same "optimise: a failed --dual keeps the old mesh" "$OUT/tkeep.vtu" "old mesh"
+expect_exit 1 "triangulate: the dual fails after mesh and picture" "$CLI" triangulate \
+    "$DOMAINS/square.poly" -o "$OUT/tkeep.vtu" --svg "$OUT/d.svg" --dual "$OUT/plain/d.vtu"
+expect_grep "the dual fails: says --dual" "$TMP/err" "--dual"
+expect_same "a failed --dual keeps the old mesh" "$OUT/tkeep.vtu" "old mesh"
+expect_same "a failed --dual keeps the old picture" "$OUT/d.svg" "old picture"
+# .node writes three files: one that cannot be replaced (a directory in its
+# place, which fails for root too) leaves the other two as they were
+printf 'old node\n' > "$OUT/imm.node"
+printf 'old edge\n' > "$OUT/imm.edge"
+mkdir "$OUT/imm.ele"
+expect_exit 1 ".node: .ele cannot be written" "$CLI" triangulate "$DOMAINS/square.poly" -o "$OUT/imm.node"
+expect_one_line ".node: .ele cannot be written"
+expect_same ".node: a failed .ele keeps the old .node" "$OUT/imm.node" "old node"
+expect_same ".node: a failed .ele keeps the old .edge" "$OUT/imm.edge" "old edge"
+expect_no_tmp "failed sets" "$OUT"
+# a successful set replaces every file
+expect_exit 0 "triangulate: mesh, picture and dual" "$CLI" triangulate "$DOMAINS/square.poly" \
+    -o "$OUT/tkeep.vtu" --svg "$OUT/d.svg" --dual "$OUT/dual.vtu"
+expect_grep "the set replaced the mesh" "$OUT/tkeep.vtu" "<VTKFile"
+expect_grep "the set replaced the picture" "$OUT/d.svg" "<svg "
+expect_grep "the set wrote the dual" "$OUT/dual.vtu" "<VTKFile"
+expect_no_tmp "successful set" "$OUT"
+
+# ---- overwriting keeps a file's permissions; new files follow the umask -----
+OUT=$TMP/perm
+mkdir "$OUT"
+printf 'old\n' > "$OUT/p.vtu"
+chmod 600 "$OUT/p.vtu"
+printf 'old\n' > "$OUT/q.node"
+chmod 640 "$OUT/q.node"
+expect_exit 0 "overwrite a 0600 file" "$CLI" triangulate "$DOMAINS/square.poly" -o "$OUT/p.vtu"
+expect_exit 0 "overwrite a 0640 .node" "$CLI" triangulate "$DOMAINS/square.poly" -o "$OUT/q.node"
+mode_of() { ls -l "$1" | cut -c1-10; }
+if [ "$(mode_of "$OUT/p.vtu")" = "-rw-------" ]; then pass; else fail "0600 file became $(mode_of "$OUT/p.vtu")"; fi
+if [ "$(mode_of "$OUT/q.node")" = "-rw-r-----" ]; then pass; else fail "0640 .node became $(mode_of "$OUT/q.node")"; fi
+(umask 027 && "$CLI" triangulate "$DOMAINS/square.poly" -o "$OUT/new.vtu") > /dev/null 2>&1
+if [ "$(mode_of "$OUT/new.vtu")" = "-rw-r-----" ]; then pass; else fail "new file under umask 027 is $(mode_of "$OUT/new.vtu")"; fi
+(umask 022 && "$CLI" triangulate "$DOMAINS/square.poly" -o "$OUT/new2.vtu") > /dev/null 2>&1
+if [ "$(mode_of "$OUT/new2.vtu")" = "-rw-r--r--" ]; then pass; else fail "new file under umask 022 is $(mode_of "$OUT/new2.vtu")"; fi
+
+# ---- SIGINT / SIGTERM: exit 128 + N, one line, every file as it was ---------
+# 300k random points: the write of .node/.ele/.edge (tens of MB) takes long
+# enough to be caught in the act. A shell without job control starts background
+# commands with SIGINT ignored (and cvmesh keeps it so); env --default-signal
+# (coreutils 8.31) undoes that for the SIGINT runs.
+OUT=$TMP/signal
+mkdir "$OUT"
+awk 'BEGIN { n = 300000; srand(7); print n, 2, 0, 0
+             for (i = 0; i < n; i++) printf "%d %.9f %.9f\n", i, rand(), rand() }' > "$TMP/big.node"
+# signal_run DESC SIG CODE WHEN CMD... : run CMD in the background; send SIG as
+# soon as a temporary file exists (WHEN = tmp: during the write) or after WHEN
+# seconds (any phase); expect exit CODE, one "interrupted" line, and $OUT as it was.
+signal_run() {
+    desc=$1; sig=$2; code=$3; when=$4; shift 4
+    rm -rf "$OUT" && mkdir "$OUT"
+    printf 'old node\n' > "$OUT/s.node"
+    set +e
+    "$@" > "$TMP/out" 2> "$TMP/err" &
+    pid=$!
+    if [ "$when" = tmp ]; then
+        i=0
+        while [ $i -lt 6000 ] && kill -0 $pid 2> /dev/null && ! ls -A "$OUT" | grep -q '\.tmp\.'; do
+            sleep 0.01; i=$((i + 1))
+        done
+    else
+        sleep "$when"
+    fi
+    kill -s "$sig" $pid
+    wait $pid
+    got=$?
+    set -e
+    if [ "$got" -eq "$code" ]; then pass; else fail "$desc: exit $got, expected $code: $(head -c 300 "$TMP/err")"; fi
+    expect_one_line "$desc"
+    expect_grep "$desc" "$TMP/err" "interrupted by SIG$sig while"
+    expect_same "$desc: the old file" "$OUT/s.node" "old node"
+    if [ "$(ls -A "$OUT")" = "s.node" ]; then pass; else fail "$desc: files left: $(ls -A "$OUT" | tr '\n' ' ')"; fi
+}
+signal_run "SIGTERM writing .node" TERM 143 tmp "$CLI" triangulate "$TMP/big.node" -o "$OUT/s.node"
+expect_grep "SIGTERM during the write names it" "$TMP/err" "while writing $OUT/s.node"
+signal_run "SIGTERM triangulating" TERM 143 0.2 "$CLI" triangulate "$TMP/big.node" -o "$OUT/s.node" --svg "$OUT/s.svg"
+signal_run "SIGTERM refining" TERM 143 0.5 "$CLI" refine "$DOMAINS/square.poly" --size 0.001 -o "$OUT/s.node"
+if env --default-signal=INT true > /dev/null 2>&1; then
+    signal_run "SIGINT writing .node" INT 130 tmp env --default-signal=INT "$CLI" triangulate "$TMP/big.node" -o "$OUT/s.node"
+    expect_grep "SIGINT during the write names it" "$TMP/err" "while writing $OUT/s.node"
+    signal_run "SIGINT triangulating" INT 130 0.2 env --default-signal=INT "$CLI" triangulate "$TMP/big.node" -o "$OUT/s.node"
+else
+    echo "note: env --default-signal is missing: the SIGINT runs are skipped"
+fi
+rm -f "$TMP/big.node"
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

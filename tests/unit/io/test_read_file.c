@@ -161,11 +161,68 @@ START_TEST(read_file_runs_out_of_memory_cleanly)
 }
 END_TEST
 
+static int g_read_polls;
+
+static int stop_reading(void *payload, cvm_stage stage, double fraction)
+{
+    (void)payload;
+    ck_assert_int_eq((int)stage, (int)CVM_STAGE_READ);
+    ck_assert(fraction >= 0 && fraction <= 1);
+    g_read_polls++;
+    return g_read_polls >= 2;
+}
+
+/* A file of several 64 KiB chunks: the progress callback is asked between
+ * chunks and can stop the reading, which then leaves nothing allocated. */
+START_TEST(a_long_read_can_be_cancelled)
+{
+    char *dir = iotest_tmpdir(), path[4096];
+    cvm__pslg p;
+    cvm__vtu_mesh vm;
+    FILE *f;
+    int i;
+    snprintf(path, sizeof path, "%s/big.node", dir);
+    f = fopen(path, "w");
+    ck_assert_ptr_nonnull(f);
+    fprintf(f, "20000 2 0 0\n");
+    for (i = 0; i < 20000; i++)
+        fprintf(f, "%d %d.25 %d.5\n", i, i % 141, i / 141);
+    ck_assert_int_eq(fclose(f), 0);
+    ck_assert_int_eq(cvm__read_file(&g_ctx, path, &p), CVM_OK); /* no callback: read whole */
+    ck_assert_uint_eq(p.np, 20000);
+    cvm__pslg_free(&g_ctx, &p);
+    g_ctx.progress_fn = stop_reading;
+    g_ctx.progress_every = 1;
+    g_read_polls = 0;
+    ck_assert_int_eq(cvm__read_file(&g_ctx, path, &p), CVM_INCOMPLETE_CANCELLED);
+    ck_assert_int_eq(g_read_polls, 2);
+    ck_assert_ptr_nonnull(strstr(g_ctx.errmsg, "cancelled"));
+    ck_assert_ptr_null(p.xy);
+    ck_assert_int_eq((int)g_a.live_blocks, 0);
+    /* the .vtu reader too (the cancellation comes before any parsing) */
+    snprintf(path, sizeof path, "%s/big.vtu", dir);
+    f = fopen(path, "w");
+    ck_assert_ptr_nonnull(f);
+    for (i = 0; i < 20000; i++)
+        fprintf(f, "<!-- padding line %d of a file longer than two chunks -->\n", i);
+    ck_assert_int_eq(fclose(f), 0);
+    g_read_polls = 0;
+    ck_assert_int_eq(cvm__read_vtu_file(&g_ctx, path, &vm), CVM_INCOMPLETE_CANCELLED);
+    ck_assert_int_eq(g_read_polls, 2);
+    ck_assert_int_eq((int)g_a.live_blocks, 0);
+    g_ctx.progress_fn = NULL;
+    g_ctx.progress_every = 0;
+    iotest_rmdir(dir);
+    free(dir);
+}
+END_TEST
+
 TCase *io_read_file_tcase(void)
 {
     TCase *tc = tcase_create("read_file");
     tcase_add_checked_fixture(tc, setup, NULL);
     tcase_add_test(tc, poly_without_points_reads_its_node_file);
+    tcase_add_test(tc, a_long_read_can_be_cancelled);
     tcase_add_test(tc, node_extension_reads_a_point_set);
     tcase_add_test(tc, unknown_extension_is_unsupported);
     tcase_add_test(tc, extension_ignores_case_and_missing_file_is_io_open);

@@ -153,11 +153,41 @@ START_TEST(writer_open_runs_out_of_memory_cleanly)
 }
 END_TEST
 
+static int mode_of(const char *path)
+{
+    struct stat st;
+    ck_assert_int_eq(stat(path, &st), 0);
+    return (int)(st.st_mode & 07777);
+}
+
+START_TEST(a_replaced_file_keeps_its_permissions)
+{
+    char path[4096];
+    mode_t old = umask(022);
+    in_dir(path, sizeof path, "private.txt");
+    ck_assert_int_eq(write_text(path, "old ", 1), CVM_OK);
+    ck_assert_int_eq(mode_of(path), 0644); /* a new file: 0666 under the umask */
+    ck_assert_int_eq(chmod(path, 0600), 0);
+    ck_assert_int_eq(write_text(path, "new ", 1), CVM_OK);
+    ck_assert_int_eq(mode_of(path), 0600);
+    ck_assert_int_eq(chmod(path, 0751), 0);
+    ck_assert_int_eq(write_text(path, "new ", 1), CVM_OK);
+    ck_assert_int_eq(mode_of(path), 0751);
+    umask(077);
+    in_dir(path, sizeof path, "fresh.txt");
+    ck_assert_int_eq(write_text(path, "x", 1), CVM_OK);
+    ck_assert_int_eq(mode_of(path), 0600);
+    umask(old);
+    ck_assert_int_eq((int)g_a.live_blocks, 0);
+}
+END_TEST
+
 TCase *io_writer_tcase(void)
 {
     TCase *tc = tcase_create("writer");
     tcase_add_checked_fixture(tc, setup, teardown);
     tcase_add_test(tc, commit_leaves_exactly_the_file);
+    tcase_add_test(tc, a_replaced_file_keeps_its_permissions);
     tcase_add_test(tc, discard_leaves_nothing_and_keeps_old_file);
     tcase_add_test(tc, missing_directory_is_io_open_and_creates_nothing);
     tcase_add_test(tc, full_device_is_io_write_and_leaves_no_temporary);
