@@ -221,7 +221,11 @@ int cli_need_input(const char *name, const char *in)
 
 int cli_fail(cvm_mesh *m, cvm_sizing *sz, const char *prefix)
 {
-    fprintf(stderr, "cvmesh: %s%s%s\n", prefix ? prefix : "", prefix ? ": " : "", cvm_mesh_errmsg(m));
+    const char *msg = cvm_mesh_errmsg(m);
+    /* a message about an item read from the file starts with "FILE:LINE: " already */
+    if (prefix && strncmp(msg, prefix, strlen(prefix)) == 0 && msg[strlen(prefix)] == ':')
+        prefix = NULL;
+    fprintf(stderr, "cvmesh: %s%s%s\n", prefix ? prefix : "", prefix ? ": " : "", msg);
     cvm_sizing_free(sz);
     cvm_mesh_free(m);
     return CLI_EXIT_FAIL;
