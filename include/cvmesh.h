@@ -307,8 +307,9 @@ CVM_API cvm_status cvm_mesh_set_holes(cvm_mesh *m, const double *xy, size_t coun
 /**
  * Set regional attributes: region k is seeded at (r[4k], r[4k+1]); every
  * triangle reachable from it without crossing a segment gets attribute r[4k+2];
- * r[4k+3] is a maximum triangle area for the refiners (<= 0 means none; with
- * CVM_OPT_MAX_AREA also set, the smaller bound holds).
+ * r[4k+3] is a maximum triangle area for the refiners (<= 0 means none, as a
+ * negative area in Triangle's .poly and CVM_OPT_MAX_AREA; with CVM_OPT_MAX_AREA
+ * also set, the smaller bound holds).
  * Triangles in no region get attribute 0. Later regions win over earlier ones.
  * Ownership: copied.
  * @return CVM_OK, CVM_E_NULL_ARG, CVM_E_INPUT_NONFINITE (names the region), CVM_E_NOMEM
@@ -396,7 +397,10 @@ typedef enum cvm_option {
      *  bound the run with CVM_OPT_MAX_STEINER. Triangles at small input angles
      *  (below about 60 degrees between segments) may stay below it. 0 = sizes only. */
     CVM_OPT_MIN_ANGLE_DEG = 200,
-    /** Maximum triangle area, squared length units, 0 = none (default), bounds [0, 1e300].
+    /** Maximum triangle area, squared length units, 0 = none (default), bounds [-1e300, 1e300].
+     *  A value <= 0 means no bound, the rule of a region's maximum area
+     *  (cvm_mesh_set_regions()) and of Triangle's .poly files, where -1 is the usual
+     *  "no constraint".
      *  Combined with the sizing of cvm_mesh_refine(): a triangle must meet both. */
     CVM_OPT_MAX_AREA = 201,
     /** Encroachment test of segments: 0 (default) diametral circle (a point p encroaches

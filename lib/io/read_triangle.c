@@ -88,8 +88,9 @@ static cvm_status real_field(parser *ps, const char *what, long long number, dou
     const char *f = cvm__scan_field(&ps->sc);
     int r = cvm__parse_double(f, out);
     if (r == 1)
-        return cvm__scan_error(&ps->sc, CVM_E_IO_FORMAT, "%s %lld: expected a number, found '%.40s'",
-                               what, number, f);
+        return cvm__scan_error(&ps->sc, CVM_E_IO_FORMAT,
+                               "%s %lld: expected a decimal number, found '%.40s'%s", what, number,
+                               f, strpbrk(f, "xX") ? " (hexadecimal floats are not read)" : "");
     if (r == 2)
         return cvm__scan_error(&ps->sc, CVM_E_INPUT_NONFINITE,
                                "%s %lld has a non-finite value '%.40s'", what, number, f);

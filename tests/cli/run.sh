@@ -86,6 +86,13 @@ expect_exit 2 "--seed not a number" "$CLI" triangulate "$SHARED/data/square.poly
 expect_exit 2 "--seed out of range" "$CLI" triangulate "$SHARED/data/square.poly" --seed -1 -o "$OUT/x.vtu"
 expect_grep "--seed out of range quotes the bounds" "$TMP/err" "--seed"
 expect_one_line "--seed out of range"
+# 2^53 + 1 is not a double: refused, never rounded to 2^53
+expect_exit 2 "--seed 2^53+1 refused" "$CLI" triangulate "$SHARED/data/square.poly" --seed 9007199254740993 -o "$OUT/x.vtu"
+expect_grep "--seed 2^53+1 refused" "$TMP/err" "--seed 9007199254740993: integers beyond 2^53 = 9007199254740992 cannot be taken exactly"
+expect_one_line "--seed 2^53+1 refused"
+expect_exit 2 "--seed 1e16 refused" "$CLI" triangulate "$SHARED/data/square.poly" --seed 1e16 -o "$OUT/x.vtu"
+expect_exit 0 "--seed 2^53 taken" "$CLI" triangulate "$SHARED/data/square.poly" --seed 9007199254740992 -o "$OUT/x.vtu"
+rm -f "$OUT/x.vtu"
 expect_exit 2 "--threads too many" "$CLI" triangulate "$SHARED/data/square.poly" --threads=5000 -o "$OUT/x.vtu"
 expect_empty_dir "bad command lines" "$OUT"
 
@@ -261,7 +268,20 @@ printf '3 2 0 0\n0 0 0\n1 1 \033]0;owned\007\n2 0 1\n' > "$OUT/esc.node"
 expect_exit 1 "control bytes in a field" "$CLI" triangulate "$OUT/esc.node"
 expect_grep "control bytes in a field are escaped" "$TMP/err" "found '\\x1b]0;owned\\x07'"
 if LC_ALL=C grep -q "$(printf '\033')" "$TMP/err"; then fail "control bytes in a field: ESC printed raw"; else pass; fi
-rm -f "$OUT/dup1.node" "$OUT/zl.poly" "$OUT/cross1.poly" "$OUT/hole.poly" "$OUT/esc.node"
+printf '3 2 0 0\n1 0 0\n2 0x1p0 0\n3 0 1\n' > "$OUT/hex.node"
+expect_exit 1 "hexadecimal float refused" "$CLI" triangulate "$OUT/hex.node"
+expect_grep "hexadecimal float refused" "$TMP/err" \
+    "hex.node:3: point 2: expected a decimal number, found '0x1p0' (hexadecimal floats are not read)"
+# a maximum area <= 0 means no bound, in a .poly region (Triangle's -1) as with --max-area
+printf '4 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n0\n1\n1 0.5 0.5 7 -1\n' > "$OUT/reg.poly"
+expect_exit 0 "region area -1" "$CLI" refine "$OUT/reg.poly" -o "$OUT/reg_m1.vtu"
+sed 's/ -1$//' "$OUT/reg.poly" > "$OUT/reg0.poly"
+expect_exit 0 "region without area" "$CLI" refine "$OUT/reg0.poly" -o "$OUT/reg_none.vtu"
+if cmp -s "$OUT/reg_m1.vtu" "$OUT/reg_none.vtu"; then pass; else fail "region area -1 is not 'no bound'"; fi
+expect_exit 0 "--max-area -1" "$CLI" refine "$OUT/reg0.poly" --max-area -1 -o "$OUT/ma_m1.vtu"
+if cmp -s "$OUT/ma_m1.vtu" "$OUT/reg_none.vtu"; then pass; else fail "--max-area -1 is not 'no bound'"; fi
+rm -f "$OUT/dup1.node" "$OUT/zl.poly" "$OUT/cross1.poly" "$OUT/hole.poly" "$OUT/esc.node" "$OUT/hex.node" \
+    "$OUT/reg.poly" "$OUT/reg0.poly" "$OUT/reg_m1.vtu" "$OUT/reg_none.vtu" "$OUT/ma_m1.vtu"
 expect_empty_dir "bad inputs" "$OUT"
 
 # ---- the power dual and .vtu input -------------------------------------------
