@@ -207,6 +207,9 @@ CVM_API void cvm_mesh_free(cvm_mesh *m);
 /**
  * Message describing the last failing (or incomplete) call on @p m, naming the
  * offending input, e.g. "segment 17 (points 4-9) crosses segment 22 (points 5-11)".
+ * Input read by cvm_mesh_read() is named in the file's terms (see there). The
+ * text is valid UTF-8 without control characters: such bytes echoed from a file
+ * or a file name appear as \xHH.
  * Ownership: owned by @p m; valid until the next call on @p m.
  * @return "" when the last call succeeded; "no mesh handle" when m is NULL.
  * @since 0.1
@@ -307,8 +310,9 @@ CVM_API cvm_status cvm_mesh_set_holes(cvm_mesh *m, const double *xy, size_t coun
 /**
  * Set regional attributes: region k is seeded at (r[4k], r[4k+1]); every
  * triangle reachable from it without crossing a segment gets attribute r[4k+2];
- * r[4k+3] is a maximum triangle area for the refiners (<= 0 means none; with
- * CVM_OPT_MAX_AREA also set, the smaller bound holds).
+ * r[4k+3] is a maximum triangle area for the refiners (<= 0 means none, as a
+ * negative area in Triangle's .poly and CVM_OPT_MAX_AREA; with CVM_OPT_MAX_AREA
+ * also set, the smaller bound holds).
  * Triangles in no region get attribute 0. Later regions win over earlier ones.
  * Ownership: copied.
  * @return CVM_OK, CVM_E_NULL_ARG, CVM_E_INPUT_NONFINITE (names the region), CVM_E_NOMEM
@@ -321,7 +325,16 @@ CVM_API cvm_status cvm_mesh_set_regions(cvm_mesh *m, const double *r, size_t cou
  * replacing points, markers, attributes, segments, holes and regions.
  * Comments (#), 0- or 1-based numbering, markers, attributes, holes and
  * regional attributes are understood. A .poly whose point count is 0 takes its
- * points from the .node file of the same stem, as Triangle does.
+ * points from the .node file of the same stem, as Triangle does. Numbers are
+ * decimal: a hexadecimal float (0x1p-3) is CVM_E_IO_FORMAT. A region's maximum
+ * area of 0 or below (Triangle's files use -1) means no bound.
+ * Later errors about the points, segments, holes and regions read from a
+ * .poly/.node (cvm_mesh_triangulate(): duplicates, zero-length or crossing
+ * segments, holes and regions) name them as the file does, by its numbers,
+ * and start with "FILE:LINE: ", e.g. "a.node:6: point 4 at (0, 0) duplicates
+ * point 1 (line 2)" in a file numbered from 1; cvm_mesh_error_item() still
+ * gives the 0-based index. Setting points, segments, holes or regions through
+ * the API makes later messages name those by their indices again.
  *
  *
  * A .vtu file (VTK XML unstructured grid with ASCII data arrays, as
@@ -346,7 +359,8 @@ CVM_API cvm_status cvm_mesh_set_regions(cvm_mesh *m, const double *r, size_t cou
  * Stops:       the progress callback (stage CVM_STAGE_READ, fraction 0) is asked
  *              after every 64 KiB read and can cancel; the time limit does not apply.
  * @return CVM_OK
- *         CVM_E_NULL_ARG, CVM_E_IO_OPEN, CVM_E_IO_READ
+ *         CVM_E_NULL_ARG, CVM_E_IO_READ
+ *         CVM_E_IO_OPEN          the file cannot be opened, or is a directory
  *         CVM_E_IO_FORMAT        malformed content (message gives file:line); in a .vtu
  *                                also a cell naming a point that does not exist, wrong
  *                                value counts or offsets (message names the cell)
@@ -356,7 +370,8 @@ CVM_API cvm_status cvm_mesh_set_regions(cvm_mesh *m, const double *r, size_t cou
  *                                data, more than one Piece, or a cell type other than 1, 3, 5
  *         CVM_E_INPUT_EMPTY      .vtu without triangle cells
  *         CVM_E_INPUT_DEGENERATE .vtu whose mesh cannot be rebuilt: a triangle repeats a
- *                                point, a point is in no triangle, an edge has three
+ *                                point or has two corners at one position, a line cell
+ *                                has zero length, a point is in no triangle, an edge has three
  *                                triangles, or a triangle is not reproduced by the
  *                                constrained regular triangulation of the file's points,
  *                                segments and weights (message names the triangle and its
@@ -399,7 +414,10 @@ typedef enum cvm_option {
      *  bound the run with CVM_OPT_MAX_STEINER. Triangles at small input angles
      *  (below about 60 degrees between segments) may stay below it. 0 = sizes only. */
     CVM_OPT_MIN_ANGLE_DEG = 200,
-    /** Maximum triangle area, squared length units, 0 = none (default), bounds [0, 1e300].
+    /** Maximum triangle area, squared length units, 0 = none (default), bounds [-1e300, 1e300].
+     *  A value <= 0 means no bound, the rule of a region's maximum area
+     *  (cvm_mesh_set_regions()) and of Triangle's .poly files, where -1 is the usual
+     *  "no constraint".
      *  Combined with the sizing of cvm_mesh_refine(): a triangle must meet both. */
     CVM_OPT_MAX_AREA = 201,
     /** Encroachment test of segments: 0 (default) diametral circle (a point p encroaches

@@ -75,6 +75,20 @@ cvm_status cvm__mesh_carve(cvm_mesh *m);
  * errors, CVM_INCOMPLETE_* (m unchanged). Sets the message. */
 cvm_status cvm__mesh_resample_boundary(cvm_mesh *m, const cvm_sizing *sizing, size_t *n_chains);
 
+/* Input items in messages (lib/api/input_names.c). An item read by
+ * cvm_mesh_read() is named in the file's terms: its number there, and
+ * "FILE:LINE: " at the start of the message; an item set through the API by
+ * its 0-based index and no prefix. cvm_mesh_error_item() stays 0-based.
+ * cvm__src_where: the prefix for item k of src into buf ("" when none).
+ * cvm__src_num: the number naming item k (for a point, also as an endpoint).
+ * cvm__src_also: " (line L)" locating a further item k named in the same
+ * message, " (FILE:L)" when it comes from another file than primary's. */
+#define CVM__WHERE_LEN 320
+const char *cvm__src_where(char *buf, size_t cap, const cvm__item_src *src, size_t k);
+long long cvm__src_num(const cvm__item_src *src, size_t k);
+const char *cvm__src_also(char *buf, size_t cap, const cvm__item_src *src, size_t k,
+                          const cvm__item_src *primary);
+
 /* Forget the triangulation (input kept). */
 void cvm__mesh_drop_output(cvm_mesh *m);
 

@@ -175,6 +175,7 @@ cvm_status cvm_mesh_set_points(cvm_mesh *m, const double *coords, size_t count, 
     m->in.pmark = NULL;
     m->in.pattr = NULL;
     m->in.nattr = 0;
+    cvm__item_src_free(&m->ctx, &m->in.src_point);
     cvm__mesh_drop_output(m);
     return CVM_OK;
 }
@@ -257,6 +258,7 @@ cvm_status cvm_mesh_set_segments(cvm_mesh *m, const cvm_index *segs, size_t coun
     m->in.seg = p;
     m->in.nseg = count;
     m->in.smark = NULL;
+    cvm__item_src_free(&m->ctx, &m->in.src_segment);
     cvm__mesh_drop_output(m);
     return CVM_OK;
 }
@@ -302,6 +304,7 @@ cvm_status cvm_mesh_set_holes(cvm_mesh *m, const double *xy, size_t count)
     cvm__free(&m->ctx, m->in.holes);
     m->in.holes = p;
     m->in.nholes = count;
+    cvm__item_src_free(&m->ctx, &m->in.src_hole);
     cvm__mesh_drop_output(m);
     return CVM_OK;
 }
@@ -320,6 +323,7 @@ cvm_status cvm_mesh_set_regions(cvm_mesh *m, const double *r, size_t count)
     cvm__free(&m->ctx, m->in.regions);
     m->in.regions = p;
     m->in.nregions = count;
+    cvm__item_src_free(&m->ctx, &m->in.src_region);
     cvm__mesh_drop_output(m);
     return CVM_OK;
 }

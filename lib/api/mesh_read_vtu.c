@@ -129,9 +129,30 @@ static cvm_status file_checks(cvm_mesh *m, const char *path, const cvm__vtu_mesh
         }
         for (i = 0; i < 3; i++) {
             int32_t a = t[i], c = t[(i + 1) % 3];
+            const double *pa = vm->p.xy + 2 * (size_t)a, *pc = vm->p.xy + 2 * (size_t)c;
+            /* said here in the file's terms: the rebuild would only see a
+               zero-length boundary segment the file does not have */
+            if (pa[0] == pc[0] && pa[1] == pc[1]) {
+                s = cvm__error(&m->ctx, CVM_E_INPUT_DEGENERATE, CVM_ENT_TRIANGLE, (int64_t)k,
+                               "%s: triangle %lu (points %ld %ld %ld) is degenerate: points %ld "
+                               "and %ld are both at (%.17g, %.17g)", path, (unsigned long)k,
+                               (long)t[0], (long)t[1], (long)t[2], (long)a, (long)c, pa[0], pa[1]);
+                goto out;
+            }
             used[a] = 1;
             /* edge key: (lo, hi, -1) with src = triangle */
             make_key(&e[3 * k + i], a < c ? a : c, a < c ? c : a, INT32_MAX, (int32_t)k);
+        }
+    }
+    for (k = 0; k < vm->p.nseg; k++) {
+        const int32_t *l = vm->p.seg + 2 * k;
+        const double *pa = vm->p.xy + 2 * (size_t)l[0], *pb = vm->p.xy + 2 * (size_t)l[1];
+        if (pa[0] == pb[0] && pa[1] == pb[1]) {
+            s = cvm__error(&m->ctx, CVM_E_INPUT_DEGENERATE, CVM_ENT_NONE, -1,
+                           "%s: line cell %lu (points %ld-%ld) has zero length: both ends are at "
+                           "(%.17g, %.17g)", path, (unsigned long)k, (long)l[0], (long)l[1],
+                           pa[0], pa[1]);
+            goto out;
         }
     }
     for (i = 0; i < vm->p.np; i++)

@@ -54,16 +54,25 @@ static size_t count_domain(const cvm__tri2 *T)
     return n;
 }
 
+/* Number naming input point i in messages (the file's, or i; i may be out of range). */
+static long long point_num(const cvm_mesh *m, int32_t i)
+{
+    return i < 0 ? (long long)i : cvm__src_num(&m->in.src_point, (size_t)i);
+}
+
 static cvm_status check_segments(cvm_mesh *m)
 {
     size_t k;
     for (k = 0; k < m->in.nseg; k++) {
         int32_t a = m->in.seg[2 * k], b = m->in.seg[2 * k + 1];
+        char where[CVM__WHERE_LEN];
         if (a < 0 || b < 0 || (size_t)a >= m->in.np || (size_t)b >= m->in.np)
             return cvm__error(&m->ctx, CVM_E_INPUT_INDEX, CVM_ENT_INPUT_SEGMENT, (int64_t)k,
-                              "segment %lu (points %ld-%ld) names a point that does not exist "
+                              "%ssegment %lld (points %lld-%lld) names a point that does not exist "
                               "(there are %lu points)",
-                              (unsigned long)k, (long)a, (long)b, (unsigned long)m->in.np);
+                              cvm__src_where(where, sizeof where, &m->in.src_segment, k),
+                              cvm__src_num(&m->in.src_segment, k), point_num(m, a), point_num(m, b),
+                              (unsigned long)m->in.np);
     }
     return CVM_OK;
 }
@@ -78,18 +87,24 @@ static cvm_status recover_segments(cvm_mesh *m)
         int32_t ia = m->in.seg[2 * k], ib = m->in.seg[2 * k + 1];
         int32_t a = m->input_map[ia], b = m->input_map[ib], other = -1;
         size_t nv0 = T->nv;
+        char where[CVM__WHERE_LEN], also[CVM__WHERE_LEN];
+        const cvm__item_src *src = &m->in.src_segment;
         if (a == b)
             return cvm__error(&m->ctx, CVM_E_INPUT_DEGENERATE, CVM_ENT_INPUT_SEGMENT, (int64_t)k,
-                              "segment %lu (points %ld-%ld) has zero length", (unsigned long)k,
-                              (long)ia, (long)ib);
+                              "%ssegment %lld (points %lld-%lld) has zero length%s",
+                              cvm__src_where(where, sizeof where, src, k), cvm__src_num(src, k),
+                              point_num(m, ia), point_num(m, ib),
+                              ia == ib ? "" : ": its endpoints are at the same position");
         s = cvm__tri2_insert_segment(T, a, b, (int32_t)k, split, &other);
         if (s == CVM_E_INPUT_INTERSECTING) {
             const int32_t *o = m->in.seg + 2 * (size_t)other;
             return cvm__error(&m->ctx, s, CVM_ENT_INPUT_SEGMENT, (int64_t)k,
-                              "segment %lu (points %ld-%ld) crosses segment %ld (points %ld-%ld) in "
-                              "its interior",
-                              (unsigned long)k, (long)ia, (long)ib, (long)other, (long)o[0],
-                              (long)o[1]);
+                              "%ssegment %lld (points %lld-%lld) crosses segment %lld%s (points "
+                              "%lld-%lld) in its interior",
+                              cvm__src_where(where, sizeof where, src, k), cvm__src_num(src, k),
+                              point_num(m, ia), point_num(m, ib), cvm__src_num(src, (size_t)other),
+                              cvm__src_also(also, sizeof also, src, (size_t)other, src),
+                              point_num(m, o[0]), point_num(m, o[1]));
         }
         if (s == CVM_E_NOMEM)
             return cvm__nomem(&m->ctx);
@@ -141,10 +156,12 @@ static cvm_status carve_holes(cvm_mesh *m, size_t ndomain)
     for (k = 0; k < m->in.nholes && !s; k++) {
         const double *h = m->in.holes + 2 * k;
         int32_t t = cvm__mesh_seed_triangle(m, h);
+        char where[CVM__WHERE_LEN];
         if (t < 0) {
             s = cvm__error(&m->ctx, CVM_E_INPUT_OUTSIDE, CVM_ENT_HOLE, (int64_t)k,
-                           "hole %lu at (%.17g, %.17g) lies outside the convex hull of the points",
-                           (unsigned long)k, h[0], h[1]);
+                           "%shole %lld at (%.17g, %.17g) lies outside the convex hull of the points",
+                           cvm__src_where(where, sizeof where, &m->in.src_hole, k),
+                           cvm__src_num(&m->in.src_hole, k), h[0], h[1]);
             break;
         }
         if (cvm__tri2_flood_out_more(T, t, &visited, &removed)) {
@@ -152,11 +169,15 @@ static cvm_status carve_holes(cvm_mesh *m, size_t ndomain)
             break;
         }
         ndomain -= removed;
+        /* the flood stops only at segments: when it reached every triangle left,
+           no closed loop of segments separates the hole from the rest (the hole
+           lies in the outer region itself, or its own loop is open) */
         if (ndomain == 0) {
             s = cvm__error(&m->ctx, CVM_E_INPUT_NOT_CLOSED, CVM_ENT_HOLE, (int64_t)k,
-                           "hole %lu at (%.17g, %.17g) removed every triangle: the boundary "
-                           "around it is not closed",
-                           (unsigned long)k, h[0], h[1]);
+                           "%shole %lld at (%.17g, %.17g) removed every remaining triangle: no "
+                           "closed loop of segments separates it from the rest of the domain",
+                           cvm__src_where(where, sizeof where, &m->in.src_hole, k),
+                           cvm__src_num(&m->in.src_hole, k), h[0], h[1]);
             break;
         }
         if ((s = cvm__tick(&m->ctx, 1 + (int64_t)visited, CVM_STAGE_CARVE,
@@ -187,10 +208,12 @@ cvm_status cvm__mesh_carve(cvm_mesh *m)
     for (k = 0; k < m->in.nregions; k++) {
         const double *r = m->in.regions + 4 * k;
         int32_t t = cvm__mesh_seed_triangle(m, r);
+        char where[CVM__WHERE_LEN];
         if (t < 0 || !cvm__tri2_in_domain(T, t))
             return cvm__error(&m->ctx, CVM_E_INPUT_OUTSIDE, CVM_ENT_REGION, (int64_t)k,
-                              "region %lu at (%.17g, %.17g) lies outside the domain",
-                              (unsigned long)k, r[0], r[1]);
+                              "%sregion %lld at (%.17g, %.17g) lies outside the domain",
+                              cvm__src_where(where, sizeof where, &m->in.src_region, k),
+                              cvm__src_num(&m->in.src_region, k), r[0], r[1]);
         if ((s = cvm__tri2_flood_attribute(T, t, r[2])))
             return cvm__nomem(&m->ctx);
         if ((s = cvm__tick(&m->ctx, 1, CVM_STAGE_CARVE, (double)k / (double)m->in.nregions)))
@@ -239,12 +262,14 @@ static cvm_status check_dynamic_range(cvm_mesh *m)
     lim = ldexp(big, -180);
     for (i = 0; i < n; i++) {
         double a = fabs(xy[i]);
+        char where[CVM__WHERE_LEN];
         if (a != 0 && a < lim)
             return cvm__error(&m->ctx, CVM_E_INPUT_DEGENERATE, CVM_ENT_INPUT_POINT, (int64_t)(i / 2),
-                              "point %lu has %c = %.17g, more than 2^180 times smaller than the "
+                              "%spoint %lld has %c = %.17g, more than 2^180 times smaller than the "
                               "largest coordinate %.17g: exact predicates cannot span that range; "
                               "round it to 0 or translate the input",
-                              (unsigned long)(i / 2), i % 2 ? 'y' : 'x', xy[i], big);
+                              cvm__src_where(where, sizeof where, &m->in.src_point, i / 2),
+                              point_num(m, (int32_t)(i / 2)), i % 2 ? 'y' : 'x', xy[i], big);
     }
     return CVM_OK;
 }
@@ -281,9 +306,13 @@ static cvm_status triangulate(cvm_mesh *m)
         if (dup_of[i] < 0)
             continue;
         if (cvm__opt(m, CVM_OPT_REJECT_DUPLICATES) != 0) {
+            const cvm__item_src *src = &m->in.src_point;
+            char where[CVM__WHERE_LEN], also[CVM__WHERE_LEN];
             s = cvm__error(&m->ctx, CVM_E_INPUT_DUPLICATE, CVM_ENT_INPUT_POINT, (int64_t)i,
-                           "point %lu at (%.17g, %.17g) duplicates point %ld", (unsigned long)i,
-                           m->in.xy[2 * i], m->in.xy[2 * i + 1], (long)dup_of[i]);
+                           "%spoint %lld at (%.17g, %.17g) duplicates point %lld%s",
+                           cvm__src_where(where, sizeof where, src, i), point_num(m, (int32_t)i),
+                           m->in.xy[2 * i], m->in.xy[2 * i + 1], point_num(m, dup_of[i]),
+                           cvm__src_also(also, sizeof also, src, (size_t)dup_of[i], src));
             cvm__free(&m->ctx, dup_of);
             return s;
         }

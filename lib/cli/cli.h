@@ -72,9 +72,10 @@ int cli_parse_tail(const char *name, unsigned cmd, int argc, char **argv, int *i
                    cli_setting *set, int *nset, const char **in);
 /* After the loop: CLI_EXIT_OK when an input file was named, else a usage error. */
 int cli_need_input(const char *name, const char *in);
-/* Print the last error of m (after "prefix: " when prefix is not NULL), free
- * m and sz (either may be NULL) and return CLI_EXIT_FAIL; once a signal
- * arrived, cli_stop(m, sz) instead (the failure is the interruption). */
+/* Print the last error of m (after "prefix: " when prefix is not NULL and the
+ * message does not start with "prefix:" already), free m and sz (either may be
+ * NULL) and return CLI_EXIT_FAIL; once a signal arrived, cli_stop(m, sz)
+ * instead (the failure is the interruption). */
 int cli_fail(cvm_mesh *m, cvm_sizing *sz, const char *prefix);
 
 /* If argv[*i] is an option flag of cmd, record its setting (taking its value

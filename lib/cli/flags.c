@@ -3,6 +3,7 @@
  * keys (STYLE section 5: no switch strings), with their parsing and help.
  * A new option gets a row here; a new subcommand gets a CLI_CMD_* bit.
  */
+#include <errno.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -24,7 +25,7 @@ static const cli_option_flag k_flags[] = {
     {"--threads", "N", CVM_OPT_THREADS, 0, TRI | REF | OPT, "threads for parallel stages (0: OpenMP default; only optimise is parallel in 0.1)"},
     {"--time-limit", "SECONDS", CVM_OPT_TIME_LIMIT_S, 0, TRI | REF | OPT, "stop the whole command after this time (0: none)"},
     {"--min-angle", "DEG", CVM_OPT_MIN_ANGLE_DEG, 0, REF | OPT, "smallest angle wanted (default 30)"},
-    {"--max-area", "A", CVM_OPT_MAX_AREA, 0, REF | OPT, "largest triangle area (0: none)"},
+    {"--max-area", "A", CVM_OPT_MAX_AREA, 0, REF | OPT, "largest triangle area (0 or negative: none, as in a .poly region)"},
     {"--max-steiner", "N", CVM_OPT_MAX_STEINER, 0, REF | OPT, "stop after adding N points (0: no limit)"},
     {"--lens", NULL, CVM_OPT_ENCROACH_LENS, 1, REF | OPT, "diametral lenses instead of circles"},
     {"--no-march", NULL, CVM_OPT_MARCH_SEGMENTS, 0, REF | OPT,
@@ -135,6 +136,32 @@ static const cli_option_flag *find(unsigned cmd, const char *arg, const char **v
     return NULL;
 }
 
+/* An integer option takes its value exactly: strtod() would round a seed of
+ * 2^53 + 1 to 2^53 without a word, so a whole number is read as an integer
+ * and one beyond 2^53 in magnitude (not every such integer is a double) is
+ * refused. 1 when val (v after strtod) is fine, else 0 after printing why. */
+static int exact_integer(const cli_option_flag *f, const char *val, double v)
+{
+    const double lim = 9007199254740992.0; /* 2^53 */
+    const char *p = val + (val[0] == '-' || val[0] == '+');
+    cvm_bounds b;
+    if (cvm_option_bounds(&b, f->key) != CVM_OK || !b.is_integer)
+        return 1;
+    if (*p && strspn(p, "0123456789") == strlen(p)) {
+        char *end;
+        long long n;
+        errno = 0;
+        n = strtoll(val, &end, 10);
+        if (errno != ERANGE && n >= -(long long)lim && n <= (long long)lim)
+            return 1;
+    } else if (fabs(v) < lim) {
+        return 1;
+    }
+    fprintf(stderr, "cvmesh: %s %s: integers beyond 2^53 = 9007199254740992 cannot be taken "
+                    "exactly (range %.17g..%.17g)\n", f->name, val, b.lo, b.hi);
+    return 0;
+}
+
 int cli_parse_option_flag(unsigned cmd, int argc, char **argv, int *i, cli_setting *set,
                           int *nset)
 {
@@ -166,6 +193,8 @@ int cli_parse_option_flag(unsigned cmd, int argc, char **argv, int *i, cli_setti
             fprintf(stderr, "cvmesh: %s expects a number, got '%s'\n", f->name, val);
             return -1;
         }
+        if (!exact_integer(f, val, v))
+            return -1;
     }
     set[*nset].flag = f;
     set[*nset].value = v;
@@ -276,9 +305,14 @@ int cli_need_input(const char *name, const char *in)
 
 int cli_fail(cvm_mesh *m, cvm_sizing *sz, const char *prefix)
 {
+    const char *msg;
     if (cli_interrupted())
         return cli_stop(m, sz);
-    fprintf(stderr, "cvmesh: %s%s%s\n", prefix ? prefix : "", prefix ? ": " : "", cvm_mesh_errmsg(m));
+    msg = cvm_mesh_errmsg(m);
+    /* a message about an item read from the file starts with "FILE:LINE: " already */
+    if (prefix && strncmp(msg, prefix, strlen(prefix)) == 0 && msg[strlen(prefix)] == ':')
+        prefix = NULL;
+    fprintf(stderr, "cvmesh: %s%s%s\n", prefix ? prefix : "", prefix ? ": " : "", msg);
     cvm_sizing_free(sz);
     cvm_mesh_free(m);
     return CLI_EXIT_FAIL;

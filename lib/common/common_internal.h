@@ -58,6 +58,11 @@ cvm_status cvm__grow(cvm__ctx *ctx, void **p, size_t *cap, size_t need, size_t e
  * (kind, index); returns s so that callers can write return cvm__error(...). */
 cvm_status cvm__error(cvm__ctx *ctx, cvm_status s, cvm_entity kind, int64_t index,
                       const char *fmt, ...) CVM__PRINTF(5, 6);
+/* Copy the text src into dst (cap bytes, always NUL-terminated), writing
+ * every byte that is a control character (C0, DEL, the C1 range in UTF-8) or
+ * not part of well-formed UTF-8 as \xHH; text that does not fit is cut at a
+ * character boundary. cvm__error() passes every message through it. */
+void cvm__escape_text(char *dst, size_t cap, const char *src);
 /* Out of memory with a standard message. */
 cvm_status cvm__nomem(cvm__ctx *ctx);
 /* Forget the last error: called at the start of every public call. */

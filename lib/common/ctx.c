@@ -92,16 +92,65 @@ cvm_status cvm__grow(cvm__ctx *ctx, void **p, size_t *cap, size_t need, size_t e
     return CVM_OK;
 }
 
+/* Length of the well-formed UTF-8 sequence at p (at most n bytes) that is not a
+ * C1 control (U+0080..U+009F), or 0. Overlong forms and surrogates are refused. */
+static size_t utf8_len(const unsigned char *p, size_t n)
+{
+    unsigned c = p[0];
+    size_t k, len = c >= 0xF0 && c <= 0xF4 ? 4 : c >= 0xE0 ? 3 : c >= 0xC2 && c < 0xE0 ? 2 : 0;
+    if (len == 0 || len > n)
+        return 0;
+    for (k = 1; k < len; k++)
+        if ((p[k] & 0xC0) != 0x80)
+            return 0;
+    if ((c == 0xC2 && p[1] < 0xA0) || (c == 0xE0 && p[1] < 0xA0) || (c == 0xED && p[1] >= 0xA0) ||
+        (c == 0xF0 && p[1] < 0x90) || (c == 0xF4 && p[1] >= 0x90))
+        return 0;
+    return len;
+}
+
+void cvm__escape_text(char *dst, size_t cap, const char *src)
+{
+    static const char hex[] = "0123456789abcdef";
+    const unsigned char *p = (const unsigned char *)src;
+    size_t n = strlen(src), i = 0, o = 0;
+    if (cap == 0)
+        return;
+    while (i < n) {
+        size_t len = p[i] >= 0x20 && p[i] < 0x7F ? 1 : p[i] >= 0x80 ? utf8_len(p + i, n - i) : 0;
+        if (len) {
+            if (o + len >= cap)
+                break;
+            memcpy(dst + o, p + i, len);
+            o += len;
+            i += len;
+            continue;
+        }
+        if (o + 4 >= cap)
+            break;
+        dst[o++] = '\\';
+        dst[o++] = 'x';
+        dst[o++] = hex[p[i] >> 4];
+        dst[o++] = hex[p[i] & 15];
+        i++;
+    }
+    dst[o] = '\0';
+}
+
 cvm_status cvm__error(cvm__ctx *ctx, cvm_status s, cvm_entity kind, int64_t index,
                       const char *fmt, ...)
 {
+    char raw[CVM__ERRMSG_LEN];
     va_list ap;
     ctx->status = s;
     ctx->err_kind = kind;
     ctx->err_index = index;
     va_start(ap, fmt);
-    vsnprintf(ctx->errmsg, sizeof ctx->errmsg, fmt, ap);
+    vsnprintf(raw, sizeof raw, fmt, ap);
     va_end(ap);
+    /* fields of input files and file names are echoed: never let their
+       control bytes reach a terminal, and keep the message valid UTF-8 */
+    cvm__escape_text(ctx->errmsg, sizeof ctx->errmsg, raw);
     return s;
 }
 

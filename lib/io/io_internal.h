@@ -12,6 +12,32 @@
 #include <stdint.h>
 #include "common/common_internal.h"
 
+/* Where the items of one kind (points, segments, ...) were read, so that
+ * messages about them can use the file's numbers and lines. Item k lies in the
+ * last run that starts at or before it: its number and line are the run's
+ * plus (k - first item of the run). A run starts wherever numbers or lines
+ * stop being consecutive (comment lines, free segment numbers), so a plain
+ * file needs one run per kind. */
+typedef struct cvm__item_src {
+    char *file;          /* owned copy of the file name; NULL: not read from a file */
+    int64_t *run;        /* 3 per run: first item, its number in the file, its line */
+    size_t nrun, cap;
+    size_t n;            /* items recorded (0..n-1) */
+    int64_t last_num, last_line;
+} cvm__item_src;
+
+/* Record item s->n (items are added in order) with the file's number num at
+ * line line of file (copied on the first call). CVM_OK or CVM_E_NOMEM (no
+ * message set). */
+cvm_status cvm__item_src_add(cvm__ctx *ctx, cvm__item_src *s, const char *file, int64_t num,
+                             int64_t line);
+/* The file's number and line of item k: 1 when known. Else 0 with *num = k,
+ * except that an index past the recorded items (a segment naming a point that
+ * does not exist) keeps the file's offset of item 0: *num = k + number of
+ * item 0, *line = 0. */
+int cvm__item_src_get(const cvm__item_src *s, size_t k, int64_t *num, int64_t *line);
+void cvm__item_src_free(cvm__ctx *ctx, cvm__item_src *s);
+
 /* ---- input: a planar straight-line graph, arrays allocated through ctx ---- */
 typedef struct cvm__pslg {
     double *xy;          /* 2*np */
@@ -26,9 +52,11 @@ typedef struct cvm__pslg {
     size_t nholes;
     double *regions;     /* 4*nregions: x, y, attribute, max area */
     size_t nregions;
+    /* origin of each kind of item when read from a file (file NULL otherwise) */
+    cvm__item_src src_point, src_segment, src_hole, src_region;
 } cvm__pslg;
 
-/* Free every array of p through ctx and zero it. */
+/* Free every array of p (and its origins) through ctx and zero it. */
 void cvm__pslg_free(cvm__ctx *ctx, cvm__pslg *p);
 
 /* A byte source. read() returns bytes read (0 at end), or -1 on error. */

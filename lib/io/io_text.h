@@ -51,8 +51,9 @@ const char *cvm__scan_field(cvm__scan *s);
 cvm_status cvm__scan_error(cvm__scan *s, cvm_status st, const char *fmt, ...) CVM__PRINTF(3, 4);
 
 /* Parse a whole field as a decimal number, whatever the C locale. Returns 0
- * on success, 1 if the field is not a number, 2 if it is NaN or infinite (or
- * overflows); *out is set in cases 0 and 2. */
+ * on success, 1 if the field is not a number (hexadecimal floats such as
+ * 0x1p-3 included: Triangle's formats and VTK ASCII arrays are decimal), 2 if
+ * it is NaN or infinite (or overflows); *out is set in cases 0 and 2. */
 int cvm__parse_double(const char *field, double *out);
 
 /* Parse a whole field as a decimal integer in [lo, hi]. Returns 0 on

@@ -30,7 +30,12 @@ static int strtod_whole(const char *field, double *out)
 int cvm__parse_double(const char *field, double *out)
 {
     double v;
-    int ok = strtod_whole(field, &v);
+    int ok;
+    /* C99 strtod() also reads hexadecimal floats (0x1p-3); Triangle's files
+       and VTK's ASCII arrays are decimal, so such a field is not a number */
+    if (strpbrk(field, "xX"))
+        return 1;
+    ok = strtod_whole(field, &v);
     if (!ok && strchr(field, '.')) {
         /* a locale whose decimal point is not '.': translate and retry */
         char dp[8], buf[128];

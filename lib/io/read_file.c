@@ -68,6 +68,7 @@ static cvm_status read_poly_with_node(cvm__ctx *ctx, const char *path, cvm__pslg
     poly.pmark = pts.pmark;
     poly.pattr = pts.pattr;
     poly.nattr = pts.nattr;
+    poly.src_point = pts.src_point;
     *p = poly;
     return CVM_OK;
 }

@@ -75,8 +75,8 @@ static cvm_status count_field(parser *ps, const char *what, long long *out)
     if (r == 1)
         return cvm__scan_error(&ps->sc, CVM_E_IO_FORMAT, "%s: expected an integer, found '%.40s'",
                                what, f);
-    if (r == 0 && *out < 0)
-        return cvm__scan_error(&ps->sc, CVM_E_IO_FORMAT, "negative %s %lld", what, *out);
+    if ((r == 0 && *out < 0) || (r == 2 && f[0] == '-'))
+        return cvm__scan_error(&ps->sc, CVM_E_IO_FORMAT, "negative %s %.40s", what, f);
     if (r == 2 || *out > MAX_COUNT)
         return cvm__scan_error(&ps->sc, CVM_E_TOO_LARGE, "%s %.40s exceeds the limit of %lld",
                                what, f, MAX_COUNT);
@@ -88,8 +88,9 @@ static cvm_status real_field(parser *ps, const char *what, long long number, dou
     const char *f = cvm__scan_field(&ps->sc);
     int r = cvm__parse_double(f, out);
     if (r == 1)
-        return cvm__scan_error(&ps->sc, CVM_E_IO_FORMAT, "%s %lld: expected a number, found '%.40s'",
-                               what, number, f);
+        return cvm__scan_error(&ps->sc, CVM_E_IO_FORMAT,
+                               "%s %lld: expected a decimal number, found '%.40s'%s", what, number,
+                               f, strpbrk(f, "xX") ? " (hexadecimal floats are not read)" : "");
     if (r == 2)
         return cvm__scan_error(&ps->sc, CVM_E_INPUT_NONFINITE,
                                "%s %lld has a non-finite value '%.40s'", what, number, f);
@@ -120,6 +121,14 @@ static cvm_status want_fields(parser *ps, size_t n, size_t n2, const char *what,
                                what, (unsigned long)n, (unsigned long)n2, layout, (unsigned long)got);
     return cvm__scan_error(&ps->sc, CVM_E_IO_FORMAT, "%s: expected %lu field%s (%s), found %lu", what,
                            (unsigned long)n, n == 1 ? "" : "s", layout, (unsigned long)got);
+}
+
+/* Remember that the item just read has number num on the current line. */
+static cvm_status note_src(parser *ps, cvm__item_src *src, long long num)
+{
+    if (cvm__item_src_add(ps->ctx, src, ps->sc.name, (int64_t)num, (int64_t)ps->sc.lineno))
+        return cvm__nomem(ps->ctx);
+    return CVM_OK;
 }
 
 static cvm_status grow(parser *ps, void *pp, size_t *cap, size_t need, size_t elem)
@@ -206,7 +215,7 @@ static cvm_status read_point(parser *ps, size_t i, long long np, long long nattr
             return s;
     }
     p->np = i + 1;
-    return CVM_OK;
+    return note_src(ps, &p->src_point, num);
 }
 
 static cvm_status read_points(parser *ps)
@@ -292,6 +301,8 @@ static cvm_status read_segments(parser *ps)
                 return s;
         }
         p->nseg = k + 1;
+        if ((s = note_src(ps, &p->src_segment, num)))
+            return s;
     }
     return CVM_OK;
 }
@@ -318,6 +329,8 @@ static cvm_status read_holes(parser *ps)
             (s = real_field(ps, "hole", num, &p->holes[2 * k + 1])))
             return s;
         p->nholes = k + 1;
+        if ((s = note_src(ps, &p->src_hole, num)))
+            return s;
     }
     return CVM_OK;
 }
@@ -355,6 +368,8 @@ static cvm_status read_regions(parser *ps)
         if (ps->sc.nfields == 5 && (s = real_field(ps, "region", num, &r[3])))
             return s;
         p->nregions = k + 1;
+        if ((s = note_src(ps, &p->src_region, num)))
+            return s;
     }
     return CVM_OK;
 }

@@ -15,6 +15,7 @@
  * understood; entities and CDATA are not. Every error names file:line.
  */
 #include <limits.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -39,6 +40,9 @@ typedef struct vparser {
     size_t nconn;
     double *w, *pattr, *cattr;
     size_t nattr, ncomp_xyz;
+    /* byte offsets of the contents of Points, connectivity, offsets, types:
+       messages about an entry find its line from there */
+    size_t at_xyz, at_conn, at_off, at_types;
 } vparser;
 
 /* 1-based line of byte offset at. */
@@ -51,12 +55,33 @@ static long line_of(const vparser *ps, size_t at)
     return line;
 }
 
-static cvm_status fail_at(vparser *ps, size_t at, cvm_status st, const char *fmt, const char *a,
-                          long long x, long long y)
+/* Byte offset of entry k (from 0) of the array whose content starts at start. */
+static size_t entry_at(const vparser *ps, size_t start, size_t k)
+{
+    size_t i = start, n = 0;
+    for (;;) {
+        while (i < ps->n && (ps->buf[i] == ' ' || ps->buf[i] == '\t' || ps->buf[i] == '\n' ||
+                             ps->buf[i] == '\r'))
+            i++;
+        if (i >= ps->n || ps->buf[i] == '<' || n == k)
+            return i;
+        while (i < ps->n && ps->buf[i] != ' ' && ps->buf[i] != '\t' && ps->buf[i] != '\n' &&
+               ps->buf[i] != '\r' && ps->buf[i] != '<')
+            i++;
+        n++;
+    }
+}
+
+static cvm_status fail_at(vparser *ps, size_t at, cvm_status st, const char *fmt, ...)
+    CVM__PRINTF(4, 5);
+static cvm_status fail_at(vparser *ps, size_t at, cvm_status st, const char *fmt, ...)
 {
     char what[CVM__ERRMSG_LEN];
     long line = line_of(ps, at);
-    snprintf(what, sizeof what, fmt, a, x, y);
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(what, sizeof what, fmt, ap);
+    va_end(ap);
     return cvm__error(ps->ctx, st, CVM_ENT_FILE_LINE, (int64_t)line, "%s:%ld: %s", ps->name, line,
                       what);
 }
@@ -84,7 +109,7 @@ static cvm_status slurp(vparser *ps, cvm__reader *r)
     ps->buf[ps->n] = '\0';
     if (memchr(ps->buf, '\0', ps->n))
         return fail_at(ps, (size_t)((const char *)memchr(ps->buf, '\0', ps->n) - ps->buf),
-                       CVM_E_IO_FORMAT, "%sNUL byte (not a text file?)", "", 0, 0);
+                       CVM_E_IO_FORMAT, "NUL byte (not a text file?)");
     return CVM_OK;
 }
 
@@ -119,14 +144,16 @@ static cvm_status count_attr(vparser *ps, const char *s, const char *e, const ch
     char v[ATTR_LEN];
     int r;
     if (!attr(s, e, key, v))
-        return fail_at(ps, (size_t)(s - ps->buf), CVM_E_IO_FORMAT, "<Piece> has no %s", key, 0, 0);
-    r = cvm__parse_long(v, 0, LLONG_MAX, out);
-    if (r == 1 || (r == 0 && *out < 0))
+        return fail_at(ps, (size_t)(s - ps->buf), CVM_E_IO_FORMAT, "<Piece> has no %s", key);
+    r = cvm__parse_long(v, LLONG_MIN, LLONG_MAX, out);
+    if (r == 1)
         return fail_at(ps, (size_t)(s - ps->buf), CVM_E_IO_FORMAT,
-                       "%s is not a non-negative integer", key, 0, 0);
+                       "%s=\"%s\" is not a non-negative integer", key, v);
+    if ((r == 0 && *out < 0) || (r == 2 && v[0] == '-'))
+        return fail_at(ps, (size_t)(s - ps->buf), CVM_E_IO_FORMAT, "%s=\"%s\" is negative", key, v);
     if (r == 2 || *out > MAX_COUNT)
-        return fail_at(ps, (size_t)(s - ps->buf), CVM_E_TOO_LARGE, "%s exceeds %lld", key,
-                       MAX_COUNT, 0);
+        return fail_at(ps, (size_t)(s - ps->buf), CVM_E_TOO_LARGE, "%s=\"%s\" exceeds %lld", key, v,
+                       MAX_COUNT);
     return CVM_OK;
 }
 
@@ -156,7 +183,7 @@ static cvm_status numbers(vparser *ps, const char *s, const char *e, const char 
         if (want >= 0 && (long long)n >= want) {
             cvm__free(ps->ctx, integer ? (void *)l : (void *)d);
             return fail_at(ps, (size_t)(t - ps->buf), CVM_E_IO_FORMAT,
-                           "%s: more than the %lld values expected", what, want, 0);
+                           "%s: more than the %lld values expected", what, want);
         }
         if (len >= sizeof tok)
             len = sizeof tok - 1; /* too long for a number: fails below */
@@ -170,7 +197,8 @@ static cvm_status numbers(vparser *ps, const char *s, const char *e, const char 
             if (r) {
                 cvm__free(ps->ctx, l);
                 return fail_at(ps, (size_t)(t - ps->buf), CVM_E_IO_FORMAT,
-                               "%s: value %lld is not an integer in range", what, (long long)n, 0);
+                               "%s: entry %lld (from 0) is '%s', not an integer in [%lld, %lld]",
+                               what, (long long)n, tok, -(long long)INT32_MAX, (long long)INT32_MAX);
             }
         } else {
             r = cvm__parse_double(tok, &d[n]);
@@ -178,16 +206,16 @@ static cvm_status numbers(vparser *ps, const char *s, const char *e, const char 
                 cvm__free(ps->ctx, d);
                 return fail_at(ps, (size_t)(t - ps->buf),
                                r == 2 ? CVM_E_INPUT_NONFINITE : CVM_E_IO_FORMAT,
-                               r == 2 ? "%s: value %lld is not finite" : "%s: value %lld is not a number",
-                               what, (long long)n, 0);
+                               "%s: entry %lld (from 0) is '%s', not a %snumber", what,
+                               (long long)n, tok, r == 2 ? "finite " : "");
             }
         }
         n++;
     }
     if (want >= 0 && (long long)n != want) {
         cvm__free(ps->ctx, integer ? (void *)l : (void *)d);
-        return fail_at(ps, (size_t)(e - ps->buf), CVM_E_IO_FORMAT,
-                       "%s: %lld values, expected %lld", what, (long long)n, want);
+        return fail_at(ps, (size_t)(e - ps->buf), CVM_E_IO_FORMAT, "%s: %lld values, expected %lld",
+                       what, (long long)n, want);
     }
     if (!(integer ? (void *)l : (void *)d)) { /* empty: still a valid array */
         if (integer ? !(l = cvm__malloc(ps->ctx, sizeof *l)) : !(d = cvm__malloc(ps->ctx, sizeof *d)))
@@ -208,7 +236,7 @@ static cvm_status take(vparser *ps, const char *s, const char *e, const char *wh
                        long long want, void **slot, size_t *got)
 {
     if (*slot)
-        return fail_at(ps, (size_t)(s - ps->buf), CVM_E_IO_FORMAT, "a second %s array", what, 0, 0);
+        return fail_at(ps, (size_t)(s - ps->buf), CVM_E_IO_FORMAT, "a second %s array", what);
     return numbers(ps, s, e, what, integer, want, slot, got);
 }
 
@@ -222,28 +250,34 @@ static cvm_status data_array(vparser *ps, const char *ts, const char *te, const 
     attr(ts, te, "Name", name);
     attr(ts, te, "NumberOfComponents", comp);
     if (!attr(ts, te, "format", fmt))
-        return fail_at(ps, at, CVM_E_IO_FORMAT, "DataArray '%s' has no format", name, 0, 0);
+        return fail_at(ps, at, CVM_E_IO_FORMAT, "DataArray '%s' has no format", name);
     if (strcmp(fmt, "ascii") != 0)
-        return fail_at(ps, at, CVM_E_UNSUPPORTED,
-                       "DataArray '%s': only format=\"ascii\" is read", name, 0, 0);
+        return fail_at(ps, at, CVM_E_UNSUPPORTED, "DataArray '%s': only format=\"ascii\" is read",
+                       name);
     if (cvm__parse_long(comp, 1, MAX_COMP, &nc))
-        return fail_at(ps, at, CVM_E_IO_FORMAT, "DataArray '%s': bad NumberOfComponents", name, 0, 0);
+        return fail_at(ps, at, CVM_E_IO_FORMAT, "DataArray '%s': bad NumberOfComponents", name);
     if (!ps->have_piece)
-        return fail_at(ps, at, CVM_E_IO_FORMAT, "DataArray '%s' outside a <Piece>", name, 0, 0);
+        return fail_at(ps, at, CVM_E_IO_FORMAT, "DataArray '%s' outside a <Piece>", name);
     switch (ps->section) {
     case SEC_POINTS:
         if (nc != 3 && nc != 2)
-            return fail_at(ps, at, CVM_E_IO_FORMAT, "Points%s have %lld components (need 3)", "",
-                           nc, 0);
+            return fail_at(ps, at, CVM_E_IO_FORMAT, "Points have %lld components (need 3)", nc);
         ps->ncomp_xyz = (size_t)nc;
+        ps->at_xyz = (size_t)(cs - ps->buf);
         return take(ps, cs, ce, "Points", 0, nc * ps->np, (void **)&ps->xyz, NULL);
     case SEC_CELLS:
-        if (strcmp(name, "connectivity") == 0)
+        if (strcmp(name, "connectivity") == 0) {
+            ps->at_conn = (size_t)(cs - ps->buf);
             return take(ps, cs, ce, "connectivity", 1, -1, (void **)&ps->conn, &ps->nconn);
-        if (strcmp(name, "offsets") == 0)
+        }
+        if (strcmp(name, "offsets") == 0) {
+            ps->at_off = (size_t)(cs - ps->buf);
             return take(ps, cs, ce, "offsets", 1, ps->nc, (void **)&ps->off, NULL);
-        if (strcmp(name, "types") == 0)
+        }
+        if (strcmp(name, "types") == 0) {
+            ps->at_types = (size_t)(cs - ps->buf);
             return take(ps, cs, ce, "types", 1, ps->nc, (void **)&ps->types, NULL);
+        }
         return CVM_OK;
     case SEC_POINTDATA:
         if (strcmp(name, "weight") == 0 && nc == 1)
@@ -290,14 +324,14 @@ static cvm_status scan_tags(vparser *ps)
         if (strncmp(p, "<!--", 4) == 0) {
             const char *c = strstr(p + 4, "-->");
             if (!c)
-                return fail_at(ps, (size_t)(p - b), CVM_E_IO_FORMAT, "%sunterminated comment", "", 0, 0);
+                return fail_at(ps, (size_t)(p - b), CVM_E_IO_FORMAT, "unterminated comment");
             p = c + 3;
             continue;
         }
         te = memchr(p, '>', (size_t)(end - p));
         if (!te)
-            return fail_at(ps, (size_t)(p - b), CVM_E_IO_FORMAT, "%sunterminated tag (truncated file?)",
-                           "", 0, 0);
+            return fail_at(ps, (size_t)(p - b), CVM_E_IO_FORMAT,
+                           "unterminated tag (truncated file?)");
         q += closing;
         if (*q == '?' || *q == '!') {
             p = te + 1;
@@ -307,26 +341,26 @@ static cvm_status scan_tags(vparser *ps)
             char v[ATTR_LEN];
             if (!attr(p, te, "type", v) || strcmp(v, "UnstructuredGrid") != 0)
                 return fail_at(ps, (size_t)(p - b), CVM_E_UNSUPPORTED,
-                               "%snot a VTK UnstructuredGrid file", "", 0, 0);
+                               "not a VTK UnstructuredGrid file");
             if (attr(p, te, "compressor", v))
                 return fail_at(ps, (size_t)(p - b), CVM_E_UNSUPPORTED,
-                               "compressed data (%s) is not read", v, 0, 0);
+                               "compressed data (%s) is not read", v);
             seen_file = 1;
         } else if (!closing && is_tag(q, "Piece")) {
             if (ps->have_piece)
                 return fail_at(ps, (size_t)(p - b), CVM_E_UNSUPPORTED,
-                               "%smore than one <Piece> is not read", "", 0, 0);
+                               "more than one <Piece> is not read");
             if ((s = count_attr(ps, p, te, "NumberOfPoints", &ps->np)) ||
                 (s = count_attr(ps, p, te, "NumberOfCells", &ps->nc)))
                 return s;
             ps->have_piece = 1;
         } else if (!closing && is_tag(q, "AppendedData")) {
             return fail_at(ps, (size_t)(p - b), CVM_E_UNSUPPORTED,
-                           "%s<AppendedData> is not read (write ASCII data arrays)", "", 0, 0);
+                           "<AppendedData> is not read (write ASCII data arrays)");
         } else if (is_tag(q, "DataArray")) {
             const char *ce;
             if (closing)
-                return fail_at(ps, (size_t)(p - b), CVM_E_IO_FORMAT, "%sstray </DataArray>", "", 0, 0);
+                return fail_at(ps, (size_t)(p - b), CVM_E_IO_FORMAT, "stray </DataArray>");
             if (te[-1] == '/') { /* <DataArray ... /> : empty */
                 if ((s = data_array(ps, p, te, te, te)))
                     return s;
@@ -336,7 +370,7 @@ static cvm_status scan_tags(vparser *ps)
             ce = strstr(te + 1, "</DataArray");
             if (!ce)
                 return fail_at(ps, (size_t)(p - b), CVM_E_IO_FORMAT,
-                               "%sDataArray without </DataArray> (truncated file?)", "", 0, 0);
+                               "DataArray without </DataArray> (truncated file?)");
             if ((s = data_array(ps, p, te, te + 1, ce)))
                 return s;
             p = ce + 1;
@@ -349,10 +383,10 @@ static cvm_status scan_tags(vparser *ps)
         p = te + 1;
     }
     if (!seen_file)
-        return fail_at(ps, ps->n, CVM_E_IO_FORMAT, "%sno <VTKFile type=\"UnstructuredGrid\">", "", 0, 0);
+        return fail_at(ps, ps->n, CVM_E_IO_FORMAT, "no <VTKFile type=\"UnstructuredGrid\">");
     if (!ps->have_piece || !ps->xyz || !ps->conn || !ps->off || !ps->types)
         return fail_at(ps, ps->n, CVM_E_IO_FORMAT, "%s", !ps->have_piece ? "no <Piece>" :
-                       !ps->xyz ? "no Points" : "Cells need connectivity, offsets and types", 0, 0);
+                       !ps->xyz ? "no Points" : "Cells need connectivity, offsets and types");
     return CVM_OK;
 }
 
@@ -364,24 +398,26 @@ static cvm_status build_cells(vparser *ps, cvm__vtu_mesh *out)
     for (c = 0; c < (size_t)ps->nc; c++) {
         long long t = ps->types[c], o = ps->off[c], need = t == 5 ? 3 : t == 3 ? 2 : 1;
         if (t != 5 && t != 3 && t != 1)
-            return fail_at(ps, ps->n, CVM_E_UNSUPPORTED,
-                           "%scell %lld has VTK type %lld (only triangles 5, lines 3 and vertices 1 are read)",
-                           "", (long long)c, t);
+            return fail_at(ps, entry_at(ps, ps->at_types, c), CVM_E_UNSUPPORTED,
+                           "cell %lld has VTK type %lld (only triangles 5, lines 3 and vertices 1 "
+                           "are read)", (long long)c, t);
         if (o < 0 || (size_t)o > ps->nconn || (size_t)o < prev || (size_t)o - prev != (size_t)need)
-            return fail_at(ps, ps->n, CVM_E_IO_FORMAT,
-                           "%scell %lld: offset %lld does not fit its type and the connectivity",
-                           "", (long long)c, o);
+            return fail_at(ps, entry_at(ps, ps->at_off, c), CVM_E_IO_FORMAT,
+                           "cell %lld: offset %lld does not fit its type and the connectivity",
+                           (long long)c, o);
         for (k = prev; k < (size_t)o; k++)
             if (ps->conn[k] < 0 || ps->conn[k] >= ps->np)
-                return fail_at(ps, ps->n, CVM_E_IO_FORMAT, "%scell %lld names point %lld, which does not exist",
-                               "", (long long)c, ps->conn[k]);
+                return fail_at(ps, entry_at(ps, ps->at_conn, k), CVM_E_IO_FORMAT,
+                               "cell %lld names point %lld, which does not exist (points are "
+                               "numbered 0..%lld)", (long long)c, ps->conn[k], ps->np - 1);
         prev = (size_t)o;
         nt += t == 5;
         nl += t == 3;
     }
     if (prev != ps->nconn)
-        return fail_at(ps, ps->n, CVM_E_IO_FORMAT, "%sconnectivity has %lld values, offsets end at %lld",
-                       "", (long long)ps->nconn, (long long)prev);
+        return fail_at(ps, entry_at(ps, ps->at_conn, prev), CVM_E_IO_FORMAT,
+                       "connectivity has %lld values, offsets end at %lld", (long long)ps->nconn,
+                       (long long)prev);
     out->tri = cvm__malloc(ctx, (3 * nt + 1) * sizeof *out->tri);
     out->tattr = ps->cattr ? cvm__malloc(ctx, (nt + 1) * sizeof *out->tattr) : NULL;
     out->p.seg = cvm__malloc(ctx, (2 * nl + 1) * sizeof *out->p.seg);
@@ -421,8 +457,8 @@ static cvm_status build_points(vparser *ps, cvm__vtu_mesh *out)
         return cvm__nomem(ctx);
     for (v = 0; v < np; v++) {
         if (nc == 3 && ps->xyz[3 * v + 2] != 0)
-            return fail_at(ps, ps->n, CVM_E_IO_FORMAT, "%spoint %lld has z != 0 (only planar meshes are read)",
-                           "", (long long)v, 0);
+            return fail_at(ps, entry_at(ps, ps->at_xyz, 3 * v + 2), CVM_E_IO_FORMAT,
+                           "point %lld has z != 0 (only planar meshes are read)", (long long)v);
         out->p.xy[2 * v] = ps->xyz[nc * v];
         out->p.xy[2 * v + 1] = ps->xyz[nc * v + 1];
         if (out->p.pmark)

@@ -5,6 +5,7 @@
 #include <errno.h>
 #include <stdio.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "io_internal.h"
 
@@ -28,6 +29,16 @@ cvm_status cvm__file_reader_open(cvm__ctx *ctx, cvm__reader *r, const char *path
         char why[128];
         cvm__strerror(errno, why, sizeof why);
         return cvm__error(ctx, CVM_E_IO_OPEN, CVM_ENT_NONE, -1, "cannot open %s: %s", path, why);
+    }
+    {
+        /* fopen() opens a directory on POSIX systems; only the first read
+           fails, with a bare "read error": say what it is instead */
+        struct stat st;
+        if (fstat(fileno(f), &st) == 0 && S_ISDIR(st.st_mode)) {
+            fclose(f);
+            return cvm__error(ctx, CVM_E_IO_OPEN, CVM_ENT_NONE, -1,
+                              "cannot read %s: it is a directory", path);
+        }
     }
     r->self = f;
     return CVM_OK;

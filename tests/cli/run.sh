@@ -94,6 +94,13 @@ expect_exit 2 "--seed not a number" "$CLI" triangulate "$DOMAINS/square.poly" --
 expect_exit 2 "--seed out of range" "$CLI" triangulate "$DOMAINS/square.poly" --seed -1 -o "$OUT/x.vtu"
 expect_grep "--seed out of range quotes the bounds" "$TMP/err" "--seed"
 expect_one_line "--seed out of range"
+# 2^53 + 1 is not a double: refused, never rounded to 2^53
+expect_exit 2 "--seed 2^53+1 refused" "$CLI" triangulate "$DOMAINS/square.poly" --seed 9007199254740993 -o "$OUT/x.vtu"
+expect_grep "--seed 2^53+1 refused" "$TMP/err" "--seed 9007199254740993: integers beyond 2^53 = 9007199254740992 cannot be taken exactly"
+expect_one_line "--seed 2^53+1 refused"
+expect_exit 2 "--seed 1e16 refused" "$CLI" triangulate "$DOMAINS/square.poly" --seed 1e16 -o "$OUT/x.vtu"
+expect_exit 0 "--seed 2^53 taken" "$CLI" triangulate "$DOMAINS/square.poly" --seed 9007199254740992 -o "$OUT/x.vtu"
+rm -f "$OUT/x.vtu"
 expect_exit 2 "--threads too many" "$CLI" triangulate "$DOMAINS/square.poly" --threads=5000 -o "$OUT/x.vtu"
 expect_empty_dir "bad command lines" "$OUT"
 
@@ -250,6 +257,48 @@ printf '3 2 0 0\n1 0 0\n2 1 0\n3 1 0\n' > "$OUT/dup.node"
 expect_exit 1 "duplicates rejected" "$CLI" triangulate "$OUT/dup.node" -o "$OUT/x.vtu" --reject-duplicates
 expect_one_line "duplicates rejected"
 rm -f "$OUT/crossing.poly" "$OUT/dup.node"
+
+# ---- messages after parsing speak in the file's terms -----------------------
+# (1-based numbering, comment lines: file numbers and lines differ from indices)
+printf '# four points, numbered from 1\n4 2 0 0\n1 0 0\n2 1 0\n\n3 0 1\n4 0 0\n' > "$OUT/dup1.node"
+expect_exit 1 "duplicate in a 1-based .node" "$CLI" triangulate "$OUT/dup1.node" --reject-duplicates
+expect_grep "duplicate in a 1-based .node" "$TMP/err" \
+    "cvmesh: $OUT/dup1.node:7: point 4 at (0, 0) duplicates point 1 (line 3)"
+expect_one_line "duplicate in a 1-based .node"
+printf '3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n3 0\n1 1 2\n2 1 1\n3 2 3\n0\n' > "$OUT/zl.poly"
+expect_exit 1 "zero-length segment in a 1-based .poly" "$CLI" triangulate "$OUT/zl.poly"
+expect_grep "zero-length segment in a 1-based .poly" "$TMP/err" \
+    "cvmesh: $OUT/zl.poly:7: segment 2 (points 1-1) has zero length"
+printf '4 2 0 0\n1 0 0\n2 4 0\n3 4 4\n4 0 4\n6 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n5 1 3\n6 2 4\n0\n' > "$OUT/cross1.poly"
+expect_exit 1 "crossing segments in a 1-based .poly" "$CLI" triangulate "$OUT/cross1.poly" --no-split-intersections
+expect_grep "crossing segments in a 1-based .poly" "$TMP/err" \
+    "cross1.poly:12: segment 6 (points 2-4) crosses segment 5 (line 11) (points 1-3) in its interior"
+printf '3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n3 0\n1 1 2\n2 2 3\n3 3 1\n1\n1 0.25 0.25\n' > "$OUT/hole.poly"
+expect_exit 1 "hole inside the only closed boundary" "$CLI" triangulate "$OUT/hole.poly"
+expect_grep "hole inside the only closed boundary" "$TMP/err" \
+    "hole.poly:10: hole 1 at (0.25, 0.25) removed every remaining triangle: no closed loop of segments separates it from the rest of the domain"
+mkdir "$OUT/dir.poly"
+expect_exit 1 "a directory as input" "$CLI" triangulate "$OUT/dir.poly"
+expect_grep "a directory as input" "$TMP/err" "cannot read $OUT/dir.poly: it is a directory"
+rmdir "$OUT/dir.poly"
+printf '3 2 0 0\n0 0 0\n1 1 \033]0;owned\007\n2 0 1\n' > "$OUT/esc.node"
+expect_exit 1 "control bytes in a field" "$CLI" triangulate "$OUT/esc.node"
+expect_grep "control bytes in a field are escaped" "$TMP/err" "found '\\x1b]0;owned\\x07'"
+if LC_ALL=C grep -q "$(printf '\033')" "$TMP/err"; then fail "control bytes in a field: ESC printed raw"; else pass; fi
+printf '3 2 0 0\n1 0 0\n2 0x1p0 0\n3 0 1\n' > "$OUT/hex.node"
+expect_exit 1 "hexadecimal float refused" "$CLI" triangulate "$OUT/hex.node"
+expect_grep "hexadecimal float refused" "$TMP/err" \
+    "hex.node:3: point 2: expected a decimal number, found '0x1p0' (hexadecimal floats are not read)"
+# a maximum area <= 0 means no bound, in a .poly region (Triangle's -1) as with --max-area
+printf '4 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n0\n1\n1 0.5 0.5 7 -1\n' > "$OUT/reg.poly"
+expect_exit 0 "region area -1" "$CLI" refine "$OUT/reg.poly" -o "$OUT/reg_m1.vtu"
+sed 's/ -1$//' "$OUT/reg.poly" > "$OUT/reg0.poly"
+expect_exit 0 "region without area" "$CLI" refine "$OUT/reg0.poly" -o "$OUT/reg_none.vtu"
+if cmp -s "$OUT/reg_m1.vtu" "$OUT/reg_none.vtu"; then pass; else fail "region area -1 is not 'no bound'"; fi
+expect_exit 0 "--max-area -1" "$CLI" refine "$OUT/reg0.poly" --max-area -1 -o "$OUT/ma_m1.vtu"
+if cmp -s "$OUT/ma_m1.vtu" "$OUT/reg_none.vtu"; then pass; else fail "--max-area -1 is not 'no bound'"; fi
+rm -f "$OUT/dup1.node" "$OUT/zl.poly" "$OUT/cross1.poly" "$OUT/hole.poly" "$OUT/esc.node" "$OUT/hex.node" \
+    "$OUT/reg.poly" "$OUT/reg0.poly" "$OUT/reg_m1.vtu" "$OUT/reg_none.vtu" "$OUT/ma_m1.vtu"
 expect_empty_dir "bad inputs" "$OUT"
 
 # ---- the power dual and .vtu input -------------------------------------------
@@ -271,7 +320,7 @@ expect_exit 0 "refine a .vtu mesh further" "$CLI" refine "$OUT/m.vtu" --size 0.1
 expect_exit 2 "--dual needs .vtu" "$CLI" triangulate "$DOMAINS/square.poly" --dual "$OUT/d.svg"
 printf '<VTKFile type="UnstructuredGrid"><Piece NumberOfPoints="3" NumberOfCells="1">\n<Points>\n<DataArray NumberOfComponents="3" format="ascii">0 0 0 1 0 0 0 nan 0</DataArray></Points></Piece></VTKFile>\n' > "$OUT/nan.vtu"
 expect_exit 1 "NaN in a .vtu" "$CLI" triangulate "$OUT/nan.vtu" -o "$OUT/x.vtu"
-expect_grep "NaN in a .vtu" "$TMP/err" "nan.vtu:3: Points: value 7 is not finite"
+expect_grep "NaN in a .vtu" "$TMP/err" "nan.vtu:3: Points: entry 7 (from 0) is 'nan', not a finite number"
 expect_one_line "NaN in a .vtu"
 if [ ! -e "$OUT/x.vtu" ]; then pass; else fail "NaN in a .vtu: output written"; fi
 

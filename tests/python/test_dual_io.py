@@ -90,5 +90,5 @@ def test_bad_vtu_raises_with_the_line(tmp_path):
     bad.write_text('<VTKFile type="UnstructuredGrid"><Piece NumberOfPoints="3" NumberOfCells="1">\n'
                    '<Points><DataArray NumberOfComponents="3" format="ascii">0 0 0 1 0 0 0 1 zz'
                    '</DataArray></Points></Piece></VTKFile>\n')
-    with pytest.raises(cvmesh.FileError, match=r"bad.vtu:2: Points: value 8 is not a number"):
+    with pytest.raises(cvmesh.FileError, match=r"bad.vtu:2: Points: entry 8 \(from 0\) is 'zz', not a number"):
         Mesh.read(bad)

@@ -119,6 +119,24 @@ def test_file_errors(tmp_path):
     assert "bad.node:3" in str(info.value)           # file and line
 
 
+def test_errors_after_reading_use_the_files_numbers_and_lines(tmp_path):
+    node = tmp_path / "d.node"
+    node.write_text("# numbered from 1\n4 2 0 0\n1 0 0\n2 1 0\n3 0 1\n4 0 0\n")
+    mesh = Mesh.read(node)
+    mesh.set_option("reject_duplicates", 1)
+    with pytest.raises(cvmesh.InputError,
+                       match=r"d\.node:6: point 4 at \(0, 0\) duplicates point 1 \(line 3\)") as info:
+        mesh.triangulate()
+    assert info.value.status == Status.E_INPUT_DUPLICATE
+    # a field with control bytes is echoed escaped, and the message stays valid text
+    esc = tmp_path / "esc.node"
+    esc.write_bytes(b"3 2 0 0\n1 0 0\n2 1 \x1b]0;x\x07\n3 0 1\n")
+    with pytest.raises(cvmesh.FileError) as info:
+        Mesh.read(esc)
+    assert "found '\\x1b]0;x\\x07'" in str(info.value)
+    assert "\x1b" not in str(info.value)
+
+
 def test_write_errors(tmp_path, square_pslg):
     mesh = Mesh.from_pslg(*square_pslg)
     with pytest.raises(cvmesh.StateError):

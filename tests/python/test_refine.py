@@ -88,6 +88,14 @@ def test_sizing_errors():
         s.set_background([[0, 0], [1, 0], [0, 1]], [[0, 1, 2]], [1.0, -2.0, 1.0])
     with pytest.raises(cvmesh.InputError, match="triangle 0"):
         s.set_background([[0, 0], [1, 0], [0, 1]], [[0, 1, 5]], [1.0, 2.0, 1.0])
+    # indices are checked, never cast: 2**32 + 3 is not 3, 1.7 is not 1 (as for segments)
+    pts, h = [[0, 0], [1, 0], [0, 1]], [1.0, 2.0, 1.0]
+    with pytest.raises(OverflowError, match=r"background triangles\[0, 2\] = 4294967299 does not fit"):
+        s.set_background(pts, np.array([[0, 1, 2**32 + 3]], dtype=np.int64), h)
+    with pytest.raises(TypeError, match="background triangles must be an integer array"):
+        s.set_background(pts, np.array([[0, 1, 1.7]]), h)
+    with pytest.raises(TypeError, match="background triangles must be an integer array"):
+        s.set_background(pts, [[0, 1, 1.7]], h)
     with pytest.raises(TypeError):
         s.set_callback(42)
     s.close()

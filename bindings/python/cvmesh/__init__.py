@@ -827,13 +827,18 @@ class Sizing:
     def set_background(self, points, triangles, sizes):
         """Sizes at the nodes of a background triangulation, interpolated
         linearly inside its triangles (no bound outside them): points (n, 2),
-        triangles (m, 3) 0-based node indices, sizes (n,) positive."""
+        triangles (m, 3) 0-based node indices (integers; floats raise
+        TypeError, values beyond 32 bits OverflowError), sizes (n,) positive."""
         pts = np.asarray(points, dtype=np.float64).reshape(-1, 2)
         h = np.asarray(sizes, dtype=np.float64).reshape(-1)
         if h.shape[0] != pts.shape[0]:
             raise ValueError("set_background: %d sizes for %d points" % (h.shape[0], pts.shape[0]))
         xyh = np.ascontiguousarray(np.column_stack([pts, h]))
-        tri = np.ascontiguousarray(np.asarray(triangles, dtype=np.int32).reshape(-1, 3))
+        # no cast here: the binding refuses non-integer indices (TypeError) and
+        # indices beyond 32 bits (OverflowError), as for segments
+        tri = np.asarray(triangles)
+        if tri.ndim == 1 and tri.size % 3 == 0:
+            tri = tri.reshape(-1, 3)
         with self._handle() as s:
             capi.cvm_sizing_set_background(s, xyh, tri)
 

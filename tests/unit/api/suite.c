@@ -14,5 +14,6 @@ Suite *api_suite(void)
     suite_add_tcase(s, api_quality_tcase());
     suite_add_tcase(s, api_write_tcase());
     suite_add_tcase(s, api_read_vtu_tcase());
+    suite_add_tcase(s, api_read_names_tcase());
     return s;
 }

@@ -172,6 +172,33 @@ START_TEST(numbering_base_follows_first_point)
 }
 END_TEST
 
+/* Each item remembers its number and line in the file, for later messages;
+ * a region's maximum area of -1 is Triangle's "no constraint" and is read. */
+START_TEST(items_remember_their_file_numbers_and_lines)
+{
+    cvm__pslg p;
+    int64_t num, line;
+    static const char text[] = "# 1-based, with comments between points\n"
+                               "4 2 0 0\n1 0 0\n2 1 0\n# gap\n\n3 1 1\n4 0 1\n"
+                               "2 0\n7 1 2\n9 3 4\n"
+                               "1\n5 0.5 0.5\n1\n3 0.1 0.1 1 -1\n";
+    ck_assert_int_eq(iotest_parse(&g_ctx, text, 0, 1, &p), CVM_OK);
+    ck_assert(cvm__item_src_get(&p.src_point, 0, &num, &line) && num == 1 && line == 3);
+    ck_assert(cvm__item_src_get(&p.src_point, 1, &num, &line) && num == 2 && line == 4);
+    ck_assert(cvm__item_src_get(&p.src_point, 2, &num, &line) && num == 3 && line == 7);
+    ck_assert(cvm__item_src_get(&p.src_point, 3, &num, &line) && num == 4 && line == 8);
+    ck_assert_uint_eq(p.src_point.nrun, 2);
+    ck_assert(!cvm__item_src_get(&p.src_point, 7, &num, &line) && num == 8 && line == 0);
+    ck_assert(cvm__item_src_get(&p.src_segment, 0, &num, &line) && num == 7 && line == 10);
+    ck_assert(cvm__item_src_get(&p.src_segment, 1, &num, &line) && num == 9 && line == 11);
+    ck_assert(cvm__item_src_get(&p.src_hole, 0, &num, &line) && num == 5 && line == 13);
+    ck_assert(cvm__item_src_get(&p.src_region, 0, &num, &line) && num == 3 && line == 15);
+    ck_assert_str_eq(p.src_region.file, "t.poly");
+    ck_assert(p.regions[3] == -1.0);
+    teardown_check_no_leak(&p);
+}
+END_TEST
+
 START_TEST(header_fields_after_the_count_are_optional)
 {
     cvm__pslg p;
@@ -208,6 +235,8 @@ static const bad_case k_bad[] = {
     {"header too long", "3 2 0 0 7\n", 0, 1, CVM_E_IO_FORMAT, "t.poly:1:", "at most 4 fields"},
     {"negative point count", "-3 2 0 0\n", 0, 1, CVM_E_IO_FORMAT, "t.poly:1:", "negative point count"},
     {"huge point count", "99999999999 2 0 0\n", 0, 1, CVM_E_TOO_LARGE, "t.poly:1:", "exceeds"},
+    {"hugely negative point count", "-99999999999999999999 2 0 0\n", 0, 1, CVM_E_IO_FORMAT,
+     "t.poly:1:", "negative point count -99999999999999999999"},
     {"dimension 3", "3 3 0 0\n", 0, 1, CVM_E_IO_FORMAT, "t.poly:1:", "dimension 3"},
     {"marker flag 2", "3 2 0 2\n", 0, 1, CVM_E_IO_FORMAT, "t.poly:1:", "out of range"},
     {"too many attributes", "3 2 100000 0\n", 0, 1, CVM_E_TOO_LARGE, "t.poly:1:", "attributes"},
@@ -221,7 +250,13 @@ static const bad_case k_bad[] = {
     {"numbers out of sequence", "3 2 0 0\n1 0 0\n3 1 0\n", 0, 1, CVM_E_IO_FORMAT, "t.poly:3:",
      "out of sequence"},
     {"letter in x", "3 2 0 0\n1 0 0\n2 1a 0\n", 0, 1, CVM_E_IO_FORMAT, "t.poly:3:",
-     "expected a number"},
+     "point 2: expected a decimal number, found '1a'"},
+    {"hexadecimal x", "3 2 0 0\n1 0 0\n2 0x1p3 0\n", 0, 1, CVM_E_IO_FORMAT, "t.poly:3:",
+     "point 2: expected a decimal number, found '0x1p3' (hexadecimal floats are not read)"},
+    {"hexadecimal region area", TRI3 SEG3 "0\n1\n1 0.2 0.2 1 0X1P-3\n", 0, 1, CVM_E_IO_FORMAT,
+     "t.poly:11:", "region 1: expected a decimal number, found '0X1P-3'"},
+    {"control bytes echoed escaped", "3 2 0 0\n1 0 0\n2 \033]0;t\007 0\n", 0, 1, CVM_E_IO_FORMAT,
+     "t.poly:3:", "found '\\x1b]0;t\\x07'"},
     {"nan y", "3 2 0 0\n1 0 0\n2 1 nan\n", 0, 1, CVM_E_INPUT_NONFINITE, "t.poly:3:", "non-finite"},
     {"inf x", "3 2 0 0\n1 0 0\n2 -inf 0\n", 0, 1, CVM_E_INPUT_NONFINITE, "t.poly:3:", "point 2"},
     {"overflowing x", "3 2 0 0\n1 1e999 0\n", 0, 1, CVM_E_INPUT_NONFINITE, "t.poly:2:", "1e999"},
@@ -354,6 +389,7 @@ TCase *io_read_triangle_tcase(void)
     tcase_add_test(tc, read_node_file_with_attribute);
     tcase_add_test(tc, numbering_base_follows_first_point);
     tcase_add_test(tc, header_fields_after_the_count_are_optional);
+    tcase_add_test(tc, items_remember_their_file_numbers_and_lines);
     tcase_add_loop_test(tc, malformed_input_names_its_line, 0, (int)(sizeof k_bad / sizeof k_bad[0]));
     tcase_add_test(tc, overlong_line_is_rejected);
     tcase_add_test(tc, zero_point_poly_keeps_file_numbers_without_node);

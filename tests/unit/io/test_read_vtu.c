@@ -102,19 +102,29 @@ static void expect_bad(const char *from, const char *to, cvm_status want, const 
 
 START_TEST(vtu_malformed_files_are_named_by_line)
 {
-    expect_bad("1 1 0  0 1 0", "1 1 0  0 1x 0", CVM_E_IO_FORMAT, "t.vtu:19: Points: value 10 is not a number");
-    expect_bad("1 1 0  0 1 0", "1 1 0  0 nan 0", CVM_E_INPUT_NONFINITE, "t.vtu:19: Points: value 10 is not finite");
+    expect_bad("1 1 0  0 1 0", "1 1 0  0 1x 0", CVM_E_IO_FORMAT, "t.vtu:19: Points: entry 10 (from 0) is '1x', not a number");
+    expect_bad("1 1 0  0 1 0", "1 1 0  0 nan 0", CVM_E_INPUT_NONFINITE, "t.vtu:19: Points: entry 10 (from 0) is 'nan', not a finite number");
     expect_bad("1 1 0  0 1 0", "1 1 0  0 inf 0", CVM_E_INPUT_NONFINITE, ":19:");
     expect_bad("1 1 0  0 1 0", "1 1 0  0 1", CVM_E_IO_FORMAT, "Points: 11 values, expected 12");
     expect_bad("1 1 0  0 1 0", "1 1 0  0 1 0 7", CVM_E_IO_FORMAT, "more than the 12 values");
-    expect_bad("1 1 0  0 1 0", "1 1 0  0 1 2", CVM_E_IO_FORMAT, "point 3 has z != 0");
-    expect_bad("0 1 2 0 2 3 1 2 3", "0 1 2 0 2 9 1 2 3", CVM_E_IO_FORMAT, "cell 1 names point 9");
+    expect_bad("1 1 0  0 1 0", "1 1 0  0 1 2", CVM_E_IO_FORMAT, "t.vtu:19: point 3 has z != 0");
+    expect_bad("0 1 2 0 2 3 1 2 3", "0 1 2 0 2 9 1 2 3", CVM_E_IO_FORMAT,
+               "t.vtu:23: cell 1 names point 9, which does not exist (points are numbered 0..3)");
+    expect_bad("0 1 2 0 2 3 1 2 3", "0 1 2 0 2 3.5 1 2 3", CVM_E_IO_FORMAT,
+               "t.vtu:23: connectivity: entry 5 (from 0) is '3.5', not an integer in "
+               "[-2147483647, 2147483647]");
     expect_bad("0 1 2 0 2 3 1 2 3", "0 1 2 0 2 -1 1 2 3", CVM_E_IO_FORMAT, "cell 1 names point -1");
-    expect_bad("3 6 8 9", "3 6 7 9", CVM_E_IO_FORMAT, "cell 2: offset 7");
-    expect_bad("5 5 3 1", "5 9 3 1", CVM_E_UNSUPPORTED, "cell 1 has VTK type 9");
+    expect_bad("3 6 8 9", "3 6 7 9", CVM_E_IO_FORMAT, "t.vtu:24: cell 2: offset 7");
+    expect_bad("5 5 3 1", "5 9 3 1", CVM_E_UNSUPPORTED, "t.vtu:25: cell 1 has VTK type 9");
     expect_bad("0.5 0 0.25", "0.5 0 0.25 1", CVM_E_IO_FORMAT, "weight: more than the 4 values");
-    expect_bad("NumberOfPoints=\"4\"", "NumberOfPoints=\"x\"", CVM_E_IO_FORMAT, "t.vtu:5: NumberOfPoints");
-    expect_bad("NumberOfPoints=\"4\"", "NumberOfPoints=\"99999999999\"", CVM_E_TOO_LARGE, "NumberOfPoints exceeds");
+    expect_bad("NumberOfPoints=\"4\"", "NumberOfPoints=\"x\"", CVM_E_IO_FORMAT,
+               "t.vtu:5: NumberOfPoints=\"x\" is not a non-negative integer");
+    expect_bad("NumberOfPoints=\"4\"", "NumberOfPoints=\"99999999999\"", CVM_E_TOO_LARGE,
+               "NumberOfPoints=\"99999999999\" exceeds 536870911");
+    expect_bad("NumberOfPoints=\"4\"", "NumberOfPoints=\"-4\"", CVM_E_IO_FORMAT,
+               "t.vtu:5: NumberOfPoints=\"-4\" is negative");
+    expect_bad("NumberOfPoints=\"4\"", "NumberOfPoints=\"-99999999999999999999\"", CVM_E_IO_FORMAT,
+               "t.vtu:5: NumberOfPoints=\"-99999999999999999999\" is negative");
     expect_bad("format=\"ascii\" Name=\"weight\"", "format=\"binary\" Name=\"weight\"", CVM_E_UNSUPPORTED,
                "t.vtu:7: DataArray 'weight': only format=\"ascii\"");
     expect_bad("type=\"UnstructuredGrid\"", "type=\"PolyData\"", CVM_E_UNSUPPORTED, "not a VTK UnstructuredGrid");
@@ -125,6 +135,11 @@ START_TEST(vtu_malformed_files_are_named_by_line)
     expect_bad("</Piece>", "</Piece><Piece NumberOfPoints=\"0\" NumberOfCells=\"0\">", CVM_E_UNSUPPORTED,
                "more than one <Piece>");
     expect_bad("<Points>", "<AppendedData encoding=\"raw\">", CVM_E_UNSUPPORTED, "AppendedData");
+    /* control bytes of an echoed field are escaped, never passed to a terminal */
+    expect_bad("format=\"ascii\" Name=\"weight\"", "format=\"\033]0;x\007\" Name=\"weight\"",
+               CVM_E_UNSUPPORTED, "t.vtu:7: DataArray 'weight': only format=\"ascii\"");
+    expect_bad("0 0 0  1 0 0", "0 0 0  1 \033]0;x\007 0", CVM_E_IO_FORMAT,
+               "t.vtu:18: Points: entry 4 (from 0) is '\\x1b]0;x\\x07', not a number");
 }
 END_TEST
 
