@@ -9,6 +9,11 @@
  * meets it in exact arithmetic (both lie on the power bisector, which is
  * perpendicular to the edge through M); intersecting the two lines in
  * floating point would be ill-conditioned for short dual edges.
+ *
+ * The summaries and histograms of a mesh come from one pass and are kept in
+ * its quality cache (api_internal.h). A mesh whose coordinates reach beyond
+ * 2^300 (or stay below 2^-300) is measured in a copy scaled by a power of
+ * two, since the constructions form cubes of coordinate differences.
  */
 #include <math.h>
 #include <string.h>
