@@ -27,7 +27,6 @@
 #include <string.h>
 
 #include "output_internal.h"
-#include "dual/dual_internal.h"
 
 #define RAD2DEG (180.0 / 3.14159265358979323846)
 #define NBIN_ANGLE CVM__NBIN_ANGLE
