@@ -49,7 +49,7 @@ typedef struct cvm__quality_cache {
     double degree_hist[CVM__NBIN_DEGREE];
     size_t n_interior;
     cvm__dual_summary dual;
-    double outside_pct[2];         /* CVM_MEASURE_DUAL_OUTSIDE_PCT, _OUTSIDE_BOUNDARY_PCT */
+    double pct_outside[2];         /* CVM_MEASURE_DUAL_OUTSIDE_PCT, _OUTSIDE_BOUNDARY_PCT */
 } cvm__quality_cache;
 
 struct cvm_mesh {

@@ -245,12 +245,12 @@ static cvm_status outside_pct(cvm_mesh *m, double *all, double *bnd)
             }
         }
         cvm__free(&m->ctx, on_bnd);
-        qc->outside_pct[0] = n ? 100.0 * (double)nout / (double)n : 0.0;
-        qc->outside_pct[1] = nb ? 100.0 * (double)nbout / (double)nb : 0.0;
+        qc->pct_outside[0] = n ? 100.0 * (double)nout / (double)n : 0.0;
+        qc->pct_outside[1] = nb ? 100.0 * (double)nbout / (double)nb : 0.0;
         qc->have |= CVM__HAVE_OUTSIDE;
     }
-    *all = qc->outside_pct[0];
-    *bnd = qc->outside_pct[1];
+    *all = qc->pct_outside[0];
+    *bnd = qc->pct_outside[1];
     return CVM_OK;
 }
 
