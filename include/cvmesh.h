@@ -1783,7 +1783,19 @@ typedef enum cvm_histogram {
 } cvm_histogram;
 
 /**
- * Compute measure @p which of the current mesh (fresh each call; O(triangles)).
+ * Compute measure @p which of the current mesh.
+ * Cost:         the measures fall into groups (triangle angles, edges and area;
+ *               vertex degrees; the power dual) that are each computed in one
+ *               O(triangles) pass on the first request after a call that may
+ *               change @p m, and kept with @p m; later requests of the same
+ *               group are O(1) and give identical values. cvm_mesh_copy_histogram()
+ *               shares the same passes.
+ * Range:        angles and ratios stay finite and accurate when coordinates come
+ *               near the largest or smallest doubles (vectors are scaled by powers
+ *               of two before they are multiplied); a length or area whose value
+ *               exceeds the largest double is +inf, one below the smallest is 0.
+ * Thread-safety: must not run concurrently with any other call on @p m (it keeps
+ *               the values it computes in @p m).
  * @return CVM_OK, CVM_E_NULL_ARG, CVM_E_ARGUMENT (unknown measure), CVM_E_STATE (no triangles),
  *         CVM_E_NOMEM
  * @since 0.1
@@ -1792,6 +1804,8 @@ CVM_API cvm_status cvm_mesh_get_measure(double *out, cvm_mesh *m, cvm_measure wh
 
 /**
  * Copy histogram @p which as counts (doubles, so one typemap serves all outputs).
+ * Computed and kept as cvm_mesh_get_measure() describes (same cost, same
+ * thread-safety).
  * @param dst_len  capacity; CVM_HIST_ANGLE_DEG needs 18, CVM_HIST_DEGREE 16,
  *                 CVM_HIST_Q1 12, CVM_HIST_Q2 .. CVM_HIST_Q5 20.
  * @return CVM_OK, CVM_E_NULL_ARG, CVM_E_ARGUMENT, CVM_E_STATE, CVM_E_BUFFER_TOO_SMALL, CVM_E_NOMEM

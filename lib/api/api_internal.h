@@ -12,6 +12,46 @@
 /* Options live in one table; index with cvm__option_slot(). */
 #define CVM__NOPTIONS 48
 
+#define CVM__NBIN_ANGLE 18  /* CVM_HIST_ANGLE_DEG */
+#define CVM__NBIN_DEGREE 16 /* CVM_HIST_DEGREE */
+#define CVM__NBIN_Q 20      /* the most bins of CVM_HIST_Q1 .. CVM_HIST_Q5 */
+/* CVM_MEASURE_Q1_MEAN_DEG .. CVM_MEASURE_Q5_MIN_BOUNDARY */
+#define CVM__NQ_MEASURES ((int)CVM_MEASURE_Q5_MIN_BOUNDARY - (int)CVM_MEASURE_Q1_MEAN_DEG + 1)
+
+/* Angles, edges and area of the domain triangles (lib/api/quality.c). */
+typedef struct cvm__tri_quality {
+    size_t nt;
+    double min_angle, max_angle;
+    size_t n_regular, n_obtuse;
+    double min_edge, max_edge;     /* lengths */
+    double area, area_c, min_area; /* Neumaier sum and its compensation */
+    double angle_hist[CVM__NBIN_ANGLE];
+} cvm__tri_quality;
+
+/* Whole-mesh summaries of the power dual (lib/api/dual_quality.c). */
+typedef struct cvm__dual_summary {
+    double q[CVM__NQ_MEASURES];    /* CVM_MEASURE_Q1_MEAN_DEG + k */
+    double hist[5][CVM__NBIN_Q];   /* CVM_HIST_Q1 + k */
+    double minima[3];              /* cvm__dual_edge_minima() */
+} cvm__dual_summary;
+
+/* Whole-mesh quality values, each group computed on its first request and
+ * kept until the next call that may change the mesh (CVM__BEGIN forgets
+ * them): a full report asks for about 30 measures and histograms, which
+ * share a few passes over the mesh. Plain values: nothing to free. */
+#define CVM__HAVE_TRI 1u
+#define CVM__HAVE_DEGREE 2u
+#define CVM__HAVE_DUAL 4u
+#define CVM__HAVE_OUTSIDE 8u
+typedef struct cvm__quality_cache {
+    unsigned have;                 /* CVM__HAVE_* of the groups below that are valid */
+    cvm__tri_quality tri;
+    double degree_hist[CVM__NBIN_DEGREE];
+    size_t n_interior;
+    cvm__dual_summary dual;
+    double pct_outside[2];         /* CVM_MEASURE_DUAL_OUTSIDE_PCT, _OUTSIDE_BOUNDARY_PCT */
+} cvm__quality_cache;
+
 struct cvm_mesh {
     cvm__ctx ctx;
     double opt[CVM__NOPTIONS];
@@ -45,6 +85,9 @@ struct cvm_mesh {
 
     /* cvm_mesh_stage_write(): files written, waiting for cvm_mesh_commit_writes() */
     cvm__write_set staged;
+
+    /* quality measures of the current mesh (lib/api/quality.c) */
+    cvm__quality_cache quality;
 };
 
 /* Slot of key in opt[], or -1 if the key is unknown. */
@@ -54,8 +97,13 @@ void cvm__options_default(double *opt);
 /* Value of an option of m. */
 double cvm__opt(const cvm_mesh *m, cvm_option key);
 
-/* Begin a public call on m: clears the last error. */
-#define CVM__BEGIN(m) cvm__clear_error(&(m)->ctx)
+/* Begin a public call on m: clears the last error and forgets the cached
+ * quality values, since the call may change the mesh. Every public function
+ * that takes a non-const cvm_mesh * begins with it, except the two readers of
+ * the cache (cvm_mesh_get_measure, cvm_mesh_copy_histogram), which begin
+ * with CVM__BEGIN_READ. */
+#define CVM__BEGIN(m) (cvm__clear_error(&(m)->ctx), (void)((m)->quality.have = 0))
+#define CVM__BEGIN_READ(m) cvm__clear_error(&(m)->ctx)
 
 /* The triangle holding point p (a hole or region seed), or -1 outside the triangulation. */
 int32_t cvm__mesh_seed_triangle(cvm_mesh *m, const double *p);
@@ -111,6 +159,11 @@ cvm_status cvm__dual_measure(double *out, cvm_mesh *m, cvm_measure which);
 cvm_status cvm__dual_quality_measure(double *out, cvm_mesh *m, cvm_measure which);
 cvm_status cvm__dual_quality_histogram(double *dst, size_t dst_len, cvm_mesh *m,
                                        cvm_histogram which);
+/* From the same pass as the q measures (lib/api/dual_quality.c), over the
+ * interior edges: out[0] CVM_MEASURE_MIN_DUAL_EDGE, out[1]
+ * CVM_MEASURE_TIME_STEP_PROXY, out[2] CVM_MEASURE_MIN_DUAL_EDGE_RATIO; m has
+ * triangles. CVM_OK or CVM_E_NOMEM (with its message). */
+cvm_status cvm__dual_edge_minima(cvm_mesh *m, double *out);
 
 /* cvm_mesh_read() of a .vtu file (lib/api/mesh_read_vtu.c): m ends up
  * triangulated, with weights, equal to the file's mesh; on error m is unchanged

@@ -175,22 +175,6 @@ cvm_status cvm_mesh_copy_dual_areas(double *dst, size_t dst_len, const cvm_mesh 
     return CVM_OK;
 }
 
-/* Index of edge (a, b) in the sorted edge list e, or -1. */
-static ptrdiff_t find_edge(const cvm__edges *e, int32_t a, int32_t b)
-{
-    int32_t lo = a < b ? a : b, hi = a < b ? b : a;
-    size_t l = 0, r = e->n;
-    while (l < r) {
-        size_t mid = l + (r - l) / 2;
-        const int32_t *x = e->ev + 2 * mid;
-        if (x[0] < lo || (x[0] == lo && x[1] < hi))
-            l = mid + 1;
-        else
-            r = mid;
-    }
-    return l < e->n && e->ev[2 * l] == lo && e->ev[2 * l + 1] == hi ? (ptrdiff_t)l : -1;
-}
-
 /* Dual edge length of every edge of e (filled by the caller with
  * cvm__domain_edges) into len (e->n entries). */
 static cvm_status dual_lengths(cvm__ctx *ctx, const cvm__tri2 *T, const cvm__edges *e, double *len)
@@ -225,14 +209,17 @@ cvm_status cvm_mesh_copy_dual_edge_lengths(double *dst, size_t dst_len, const cv
     return s;
 }
 
-/* Containment counts: all triangles, and those with a vertex on the domain boundary. */
-static cvm_status outside_pct(cvm_mesh *m, int boundary_only, double *out)
+/* Containment counts in one pass: the % of all triangles (*all) and of
+ * those with a vertex on the domain boundary (*bnd) whose power vertex lies
+ * outside them; computed once per state of m (cvm__quality_cache). */
+static cvm_status outside_pct(cvm_mesh *m, double *all, double *bnd)
 {
     const cvm__tri2 *T = &m->tri;
-    uint8_t *on_bnd = NULL;
-    size_t t, n = 0, nout = 0, k;
-    if (boundary_only) {
-        cvm__edges e;
+    cvm__quality_cache *qc = &m->quality;
+    cvm__edges e;
+    uint8_t *on_bnd;
+    size_t t, n = 0, nout = 0, nb = 0, nbout = 0, k;
+    if (!(qc->have & CVM__HAVE_OUTSIDE)) {
         if (cvm__domain_edges(&m->ctx, T, 0, &e))
             return cvm__nomem(&m->ctx);
         on_bnd = cvm__calloc(&m->ctx, T->nv + 1, 1);
@@ -244,65 +231,45 @@ static cvm_status outside_pct(cvm_mesh *m, int boundary_only, double *out)
             if (e.bnd[k])
                 on_bnd[e.ev[2 * k]] = on_bnd[e.ev[2 * k + 1]] = 1;
         cvm__edges_free(&m->ctx, &e);
+        for (t = 0; t < T->nt; t++) {
+            const int32_t *v = T->tv + 3 * t;
+            int out;
+            if (!cvm__tri2_in_domain(T, (int32_t)t))
+                continue;
+            out = !tri_contains(T, t);
+            n++;
+            nout += (size_t)out;
+            if (on_bnd[v[0]] || on_bnd[v[1]] || on_bnd[v[2]]) {
+                nb++;
+                nbout += (size_t)out;
+            }
+        }
+        cvm__free(&m->ctx, on_bnd);
+        qc->pct_outside[0] = n ? 100.0 * (double)nout / (double)n : 0.0;
+        qc->pct_outside[1] = nb ? 100.0 * (double)nbout / (double)nb : 0.0;
+        qc->have |= CVM__HAVE_OUTSIDE;
     }
-    for (t = 0; t < T->nt; t++) {
-        const int32_t *v = T->tv + 3 * t;
-        if (!cvm__tri2_in_domain(T, (int32_t)t))
-            continue;
-        if (on_bnd && !on_bnd[v[0]] && !on_bnd[v[1]] && !on_bnd[v[2]])
-            continue;
-        n++;
-        nout += !tri_contains(T, t);
-    }
-    cvm__free(&m->ctx, on_bnd);
-    *out = n ? 100.0 * (double)nout / (double)n : 0.0;
-    return CVM_OK;
-}
-
-/* Smallest dual edge, and smallest min(primal, dual), over interior edges. */
-static cvm_status interior_minima(cvm_mesh *m, double *min_dual, double *min_step)
-{
-    const cvm__tri2 *T = &m->tri;
-    cvm__edges e;
-    double *len, md = HUGE_VAL, ms = HUGE_VAL;
-    size_t k;
-    if (cvm__domain_edges(&m->ctx, T, 0, &e))
-        return cvm__nomem(&m->ctx);
-    len = cvm__malloc(&m->ctx, (e.n + 1) * sizeof *len);
-    if (!len || dual_lengths(&m->ctx, T, &e, len)) {
-        cvm__free(&m->ctx, len);
-        cvm__edges_free(&m->ctx, &e);
-        return cvm__nomem(&m->ctx);
-    }
-    for (k = 0; k < e.n; k++) {
-        const double *p = T->xy + 2 * (size_t)e.ev[2 * k], *q = T->xy + 2 * (size_t)e.ev[2 * k + 1];
-        double prim;
-        if (e.bnd[k])
-            continue;
-        prim = hypot(p[0] - q[0], p[1] - q[1]);
-        md = len[k] < md ? len[k] : md;
-        ms = prim < ms ? prim : ms;
-        ms = len[k] < ms ? len[k] : ms;
-    }
-    cvm__free(&m->ctx, len);
-    cvm__edges_free(&m->ctx, &e);
-    *min_dual = md == HUGE_VAL ? 0.0 : md;
-    *min_step = ms == HUGE_VAL ? 0.0 : ms;
+    *all = qc->pct_outside[0];
+    *bnd = qc->pct_outside[1];
     return CVM_OK;
 }
 
 cvm_status cvm__dual_measure(double *out, cvm_mesh *m, cvm_measure which)
 {
-    double md = 0.0, ms = 0.0;
+    double md = 0.0, ms = 0.0, minima[3];
     cvm_status s;
     switch (which) {
-    case CVM_MEASURE_DUAL_OUTSIDE_PCT: return outside_pct(m, 0, out);
-    case CVM_MEASURE_DUAL_OUTSIDE_BOUNDARY_PCT: return outside_pct(m, 1, out);
+    case CVM_MEASURE_DUAL_OUTSIDE_PCT:
+    case CVM_MEASURE_DUAL_OUTSIDE_BOUNDARY_PCT:
+        if ((s = outside_pct(m, &md, &ms)))
+            return s;
+        *out = which == CVM_MEASURE_DUAL_OUTSIDE_PCT ? md : ms;
+        return CVM_OK;
     case CVM_MEASURE_MIN_DUAL_EDGE:
     case CVM_MEASURE_TIME_STEP_PROXY:
-        if ((s = interior_minima(m, &md, &ms)))
+        if ((s = cvm__dual_edge_minima(m, minima)))
             return s;
-        *out = which == CVM_MEASURE_MIN_DUAL_EDGE ? md : ms;
+        *out = which == CVM_MEASURE_MIN_DUAL_EDGE ? minima[0] : minima[1];
         return CVM_OK;
     case CVM_MEASURE_VANISHED_VERTICES: {
         uint8_t *mark = cvm__malloc(&m->ctx, m->tri.nv + 1);
@@ -340,11 +307,22 @@ cvm_status cvm__mesh_weight_attributes(cvm_mesh *m, double **out)
 
 cvm_status cvm__dual_edge_ends(cvm__ctx *ctx, const cvm__tri2 *T, const cvm__edges *e, double *ends)
 {
+    /* e is sorted by lower vertex: first[v] .. first[v + 1] are the edges whose
+     * lower vertex is v, a handful each, so a lookup scans a few entries
+     * instead of bisecting the whole list */
     uint8_t *have = cvm__calloc(ctx, e->n + 1, 1);
-    size_t t;
+    size_t *first = cvm__calloc(ctx, T->nv + 2, sizeof *first);
+    size_t t, k;
     int j;
-    if (!have)
+    if (!have || !first) {
+        cvm__free(ctx, have);
+        cvm__free(ctx, first);
         return CVM_E_NOMEM;
+    }
+    for (k = 0; k < e->n; k++)
+        first[(size_t)e->ev[2 * k] + 1]++;
+    for (k = 0; k < T->nv; k++)
+        first[k + 1] += first[k];
     for (t = 0; t < T->nt; t++) {
         const int32_t *v = T->tv + 3 * t;
         double V[2];
@@ -353,9 +331,11 @@ cvm_status cvm__dual_edge_ends(cvm__ctx *ctx, const cvm__tri2 *T, const cvm__edg
         tri_vertex(T, t, V);
         for (j = 0; j < 3; j++) {
             int32_t a = v[(j + 1) % 3], b = v[(j + 2) % 3];
-            ptrdiff_t k = find_edge(e, a, b);
+            int32_t lo = a < b ? a : b, hi = a < b ? b : a;
             double *x;
-            if (k < 0)
+            for (k = first[lo]; k < first[lo + 1] && e->ev[2 * k + 1] != hi; k++)
+                ;
+            if (k == first[lo + 1])
                 continue; /* cannot happen: e holds every domain edge */
             x = ends + 4 * k;
             if (e->bnd[k]) {
@@ -374,5 +354,6 @@ cvm_status cvm__dual_edge_ends(cvm__ctx *ctx, const cvm__tri2 *T, const cvm__edg
         }
     }
     cvm__free(ctx, have);
+    cvm__free(ctx, first);
     return CVM_OK;
 }

@@ -9,6 +9,11 @@
  * meets it in exact arithmetic (both lie on the power bisector, which is
  * perpendicular to the edge through M); intersecting the two lines in
  * floating point would be ill-conditioned for short dual edges.
+ *
+ * The summaries and histograms of a mesh come from one pass and are kept in
+ * its quality cache (api_internal.h). A mesh whose coordinates reach beyond
+ * 2^300 (or stay below 2^-300) is measured in a copy scaled by a power of
+ * two, since the constructions form cubes of coordinate differences.
  */
 #include <math.h>
 #include <string.h>
@@ -91,8 +96,74 @@ static void edge_values(const cvm__tri2 *T, const cvm__edges *e, const double *e
     }
 }
 
-/* Compute every value of d for the domain of T. CVM_OK or CVM_E_NOMEM (no message). */
-static cvm_status dq_compute(cvm__ctx *ctx, const cvm__tri2 *T, dq *d)
+/* Over the interior edges of e: the smallest dual edge (minima[0]), the
+ * smallest min(primal, dual) (minima[1]) and the smallest dual / primal
+ * ratio (minima[2]); 0 when there is no interior edge. */
+static void interior_minima(const cvm__tri2 *T, const cvm__edges *e, const double *ends,
+                            double *minima)
+{
+    double md = HUGE_VAL, ms = HUGE_VAL, mr = HUGE_VAL;
+    size_t k;
+    for (k = 0; k < e->n; k++) {
+        const double *p = T->xy + 2 * (size_t)e->ev[2 * k], *q = T->xy + 2 * (size_t)e->ev[2 * k + 1];
+        double prim, r, len = hypot(ends[4 * k] - ends[4 * k + 2], ends[4 * k + 1] - ends[4 * k + 3]);
+        if (e->bnd[k])
+            continue;
+        prim = hypot(p[0] - q[0], p[1] - q[1]);
+        r = len / prim;
+        md = len < md ? len : md;
+        ms = prim < ms ? prim : ms;
+        ms = len < ms ? len : ms;
+        mr = r < mr ? r : mr;
+    }
+    minima[0] = md == HUGE_VAL ? 0.0 : md;
+    minima[1] = ms == HUGE_VAL ? 0.0 : ms;
+    minima[2] = mr == HUGE_VAL ? 0.0 : mr;
+}
+
+#define SCALE_LIMIT 300 /* cubes of differences of coordinates below 2^300 stay finite */
+
+cvm_status cvm__scaled_view(cvm__ctx *ctx, const cvm__tri2 *T, cvm__tri2 *view, int *k)
+{
+    double mx = 0, *xy, *w = NULL;
+    size_t v;
+    int e;
+    *view = *T;
+    *k = 0;
+    for (v = 0; v < 2 * T->nv; v++)
+        mx = fmax(mx, fabs(T->xy[v]));
+    if (!(mx > 0) || ((e = ilogb(mx)) >= -SCALE_LIMIT && e <= SCALE_LIMIT))
+        return CVM_OK;
+    xy = cvm__malloc(ctx, (2 * T->nv + 1) * sizeof *xy);
+    if (T->w)
+        w = cvm__malloc(ctx, (T->nv + 1) * sizeof *w);
+    if (!xy || (T->w && !w)) {
+        cvm__free(ctx, xy);
+        cvm__free(ctx, w);
+        return CVM_E_NOMEM;
+    }
+    for (v = 0; v < 2 * T->nv; v++)
+        xy[v] = ldexp(T->xy[v], -e);
+    for (v = 0; w && v < T->nv; v++)
+        w[v] = ldexp(T->w[v], -2 * e);
+    view->xy = xy;
+    view->w = w;
+    *k = e;
+    return CVM_OK;
+}
+
+void cvm__scaled_view_free(cvm__ctx *ctx, const cvm__tri2 *T, cvm__tri2 *view)
+{
+    if (view->xy != T->xy)
+        cvm__free(ctx, view->xy);
+    if (view->w != T->w)
+        cvm__free(ctx, view->w);
+    *view = *T;
+}
+
+/* Compute every value of d for the domain of T, and when minima is not NULL
+ * the interior minima into minima[0..2]. CVM_OK or CVM_E_NOMEM (no message). */
+static cvm_status dq_compute_in(cvm__ctx *ctx, const cvm__tri2 *T, dq *d, double *minima)
 {
     cvm__edges e;
     double *ends = NULL;
@@ -124,10 +195,32 @@ static cvm_status dq_compute(cvm__ctx *ctx, const cvm__tri2 *T, dq *d)
             on_bnd[e.ev[2 * k]] = on_bnd[e.ev[2 * k + 1]] = 1;
     triangle_values(T, on_bnd, d);
     edge_values(T, &e, ends, on_bnd, d);
+    if (minima)
+        interior_minima(T, &e, ends, minima);
     cvm__free(ctx, ends);
     cvm__free(ctx, on_bnd);
     cvm__edges_free(ctx, &e);
     return CVM_OK;
+}
+
+/* dq_compute_in() in the frame of cvm__scaled_view(): the q values and
+ * minima[2] are ratios, unchanged by the scale; minima[0..1] are lengths,
+ * scaled back. */
+static cvm_status dq_compute(cvm__ctx *ctx, const cvm__tri2 *T, dq *d, double *minima)
+{
+    cvm__tri2 view;
+    cvm_status s;
+    int k;
+    memset(d, 0, sizeof *d);
+    if (cvm__scaled_view(ctx, T, &view, &k))
+        return CVM_E_NOMEM;
+    s = dq_compute_in(ctx, &view, d, minima);
+    cvm__scaled_view_free(ctx, T, &view);
+    if (!s && minima) {
+        minima[0] = ldexp(minima[0], k);
+        minima[1] = ldexp(minima[1], k);
+    }
+    return s;
 }
 
 cvm_status cvm_mesh_copy_dual_quality(double *dst, size_t dst_len, const cvm_mesh *m,
@@ -153,7 +246,7 @@ cvm_status cvm_mesh_copy_dual_quality(double *dst, size_t dst_len, const cvm_mes
     if (!need)
         return CVM_OK;
     ctx = (cvm__ctx *)&m->ctx; /* allocation does not change the handle */
-    if (dq_compute(ctx, &m->tri, &d))
+    if (dq_compute(ctx, &m->tri, &d, NULL))
         return CVM_E_NOMEM;
     memcpy(dst, d.q[w], need * sizeof *dst);
     dq_free(ctx, &d);
@@ -169,31 +262,21 @@ static void bins(int w, size_t *n, double *width)
     *width = k_w[w];
 }
 
-cvm_status cvm__dual_quality_histogram(double *dst, size_t dst_len, cvm_mesh *m,
-                                       cvm_histogram which)
+/* Histogram w (1..5) of d into dst (its bins() count of entries). */
+static void histogram(const dq *d, int w, double *dst)
 {
-    int w = (int)which - (int)CVM_HIST_Q1 + 1;
     size_t nb, n, k;
     double width;
-    dq d;
     bins(w, &nb, &width);
-    if (dst_len < nb)
-        return cvm__error(&m->ctx, CVM_E_BUFFER_TOO_SMALL, CVM_ENT_NONE, -1,
-                          "histogram needs %lu entries, dst_len is %lu", (unsigned long)nb,
-                          (unsigned long)dst_len);
-    if (dq_compute(&m->ctx, &m->tri, &d))
-        return cvm__nomem(&m->ctx);
     memset(dst, 0, nb * sizeof *dst);
-    n = w < 3 ? d.nt : d.ne;
+    n = w < 3 ? d->nt : d->ne;
     for (k = 0; k < n; k++) {
-        double x = d.q[w][k], b;
-        if (w >= 3 && !d.eint[k])
+        double x = d->q[w][k], b;
+        if (w >= 3 && !d->eint[k])
             continue; /* q3..q5 histograms count interior edges */
         b = floor(x / width);
         dst[!(b >= 0) ? 0 : b >= (double)nb ? nb - 1 : (size_t)b] += 1.0;
     }
-    dq_free(&m->ctx, &d);
-    return CVM_OK;
 }
 
 /* Smallest, largest and mean of q[w] over the elements selected by sel. */
@@ -223,27 +306,78 @@ static summary summarise(const dq *d, int w, int boundary_only)
     return s;
 }
 
+/* The summaries of m's dual, computed in one pass on the first request after
+ * a change of m (api_internal.h, cvm__quality_cache). CVM_OK or CVM_E_NOMEM
+ * (with its message). */
+static cvm_status dual_summary(cvm_mesh *m, const cvm__dual_summary **out)
+{
+    cvm__dual_summary *r = &m->quality.dual;
+    dq d;
+    int w;
+    if (m->quality.have & CVM__HAVE_DUAL) {
+        *out = r;
+        return CVM_OK;
+    }
+    if (dq_compute(&m->ctx, &m->tri, &d, r->minima))
+        return cvm__nomem(&m->ctx);
+#define Q(which) r->q[(int)(which) - (int)CVM_MEASURE_Q1_MEAN_DEG]
+    Q(CVM_MEASURE_Q1_MEAN_DEG) = summarise(&d, 1, 0).mean;
+    Q(CVM_MEASURE_Q2_MAX) = summarise(&d, 2, 0).max;
+    Q(CVM_MEASURE_Q2_MEAN) = summarise(&d, 2, 0).mean;
+    Q(CVM_MEASURE_Q3_MAX) = summarise(&d, 3, 0).max;
+    Q(CVM_MEASURE_Q4_MAX) = summarise(&d, 4, 0).max;
+    Q(CVM_MEASURE_Q5_MIN) = summarise(&d, 5, 0).min;
+    Q(CVM_MEASURE_Q5_MEAN) = summarise(&d, 5, 0).mean;
+    Q(CVM_MEASURE_Q1_MIN_BOUNDARY_DEG) = summarise(&d, 1, 1).min;
+    Q(CVM_MEASURE_Q2_MAX_BOUNDARY) = summarise(&d, 2, 1).max;
+    Q(CVM_MEASURE_Q5_MIN_BOUNDARY) = summarise(&d, 5, 1).min;
+#undef Q
+    for (w = 1; w <= 5; w++)
+        histogram(&d, w, r->hist[w - 1]);
+    dq_free(&m->ctx, &d);
+    m->quality.have |= CVM__HAVE_DUAL;
+    *out = r;
+    return CVM_OK;
+}
+
+cvm_status cvm__dual_quality_histogram(double *dst, size_t dst_len, cvm_mesh *m,
+                                       cvm_histogram which)
+{
+    int w = (int)which - (int)CVM_HIST_Q1 + 1;
+    const cvm__dual_summary *r;
+    size_t nb;
+    double width;
+    cvm_status s;
+    bins(w, &nb, &width);
+    if (dst_len < nb)
+        return cvm__error(&m->ctx, CVM_E_BUFFER_TOO_SMALL, CVM_ENT_NONE, -1,
+                          "histogram needs %lu entries, dst_len is %lu", (unsigned long)nb,
+                          (unsigned long)dst_len);
+    if ((s = dual_summary(m, &r)))
+        return s;
+    memcpy(dst, r->hist[w - 1], nb * sizeof *dst);
+    return CVM_OK;
+}
+
 cvm_status cvm__dual_quality_measure(double *out, cvm_mesh *m, cvm_measure which)
 {
-    dq d;
-    if (dq_compute(&m->ctx, &m->tri, &d))
-        return cvm__nomem(&m->ctx);
-    switch (which) {
-    case CVM_MEASURE_Q1_MEAN_DEG: *out = summarise(&d, 1, 0).mean; break;
-    case CVM_MEASURE_Q2_MAX: *out = summarise(&d, 2, 0).max; break;
-    case CVM_MEASURE_Q2_MEAN: *out = summarise(&d, 2, 0).mean; break;
-    case CVM_MEASURE_Q3_MAX: *out = summarise(&d, 3, 0).max; break;
-    case CVM_MEASURE_Q4_MAX: *out = summarise(&d, 4, 0).max; break;
-    case CVM_MEASURE_Q5_MIN: *out = summarise(&d, 5, 0).min; break;
-    case CVM_MEASURE_Q5_MEAN: *out = summarise(&d, 5, 0).mean; break;
-    case CVM_MEASURE_Q1_MIN_BOUNDARY_DEG: *out = summarise(&d, 1, 1).min; break;
-    case CVM_MEASURE_Q2_MAX_BOUNDARY: *out = summarise(&d, 2, 1).max; break;
-    case CVM_MEASURE_Q5_MIN_BOUNDARY: *out = summarise(&d, 5, 1).min; break;
-    default:
-        dq_free(&m->ctx, &d);
+    const cvm__dual_summary *r;
+    cvm_status s;
+    if ((int)which < (int)CVM_MEASURE_Q1_MEAN_DEG || (int)which > (int)CVM_MEASURE_Q5_MIN_BOUNDARY)
         return cvm__error(&m->ctx, CVM_E_ARGUMENT, CVM_ENT_NONE, -1, "unknown measure %d",
                           (int)which);
-    }
-    dq_free(&m->ctx, &d);
+    if ((s = dual_summary(m, &r)))
+        return s;
+    *out = r->q[(int)which - (int)CVM_MEASURE_Q1_MEAN_DEG];
+    return CVM_OK;
+}
+
+cvm_status cvm__dual_edge_minima(cvm_mesh *m, double *out)
+{
+    const cvm__dual_summary *r;
+    cvm_status s;
+    if ((s = dual_summary(m, &r)))
+        return s;
+    memcpy(out, r->minima, sizeof r->minima);
     return CVM_OK;
 }

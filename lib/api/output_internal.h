@@ -55,6 +55,17 @@ cvm_status cvm__mesh_stage_settle(cvm_mesh *m, cvm_status s);
  * segment markers (Triangle's default boundary marker); 0 for seg < 0. */
 int32_t cvm__segment_marker(const cvm_mesh *m, int32_t seg);
 
+/* A view of T for dimensionless dual measures (lib/api/dual_quality.c): when
+ * the coordinates of T reach beyond 2^300 or all lie below 2^-300 (the
+ * constructions of the dual form cubes of coordinate differences, which
+ * would overflow or underflow), *view is a shallow copy of T whose
+ * coordinates are scaled by 2^-*k and weights by 2^-2*k, in fresh arrays;
+ * otherwise *view = *T and *k = 0. A power-of-two scale is exact (up to
+ * subnormal parts) and leaves every ratio unchanged. Read-only; release with
+ * cvm__scaled_view_free(). CVM_OK or CVM_E_NOMEM (no message). */
+cvm_status cvm__scaled_view(cvm__ctx *ctx, const cvm__tri2 *T, cvm__tri2 *view, int *k);
+void cvm__scaled_view_free(cvm__ctx *ctx, const cvm__tri2 *T, cvm__tri2 *view);
+
 /* Smallest angle of triangle a, b, c in degrees (inexact: a measure). */
 double cvm__min_angle_deg(const double *a, const double *b, const double *c);
 

@@ -4,40 +4,100 @@
  *
  * These are measures, not topology: plain doubles, no exact arithmetic.
  * Angles come from atan2(|cross|, dot), which is accurate for small and
- * large angles alike. A triangle is "obtuse" (not well-centred: its
- * circumcentre lies outside it) when the dot product of the two edges at one
- * of its corners is negative; a right triangle, whose circumcentre lies on
- * its edge, is not counted. Interior vertices are vertices of domain
- * triangles that lie on no boundary edge of the domain; interior edges have a
- * domain triangle on both sides (constrained or not). The dual edge of an
- * interior edge joins the power vertices of its two triangles (the
- * circumcentres when no weights are set): the power dual.
+ * large angles alike. Near the limits of the double range (an edge vector
+ * beyond 2^500 or below 2^-500, or one whose difference overflows) each edge
+ * vector is scaled by a power of two before the products, so angles stay
+ * right where plain products would give inf - inf, and areas are scaled back
+ * (inf only when the true area exceeds the largest double). Inside that
+ * range nothing is scaled, so the values there are as before. A triangle is
+ * "obtuse" (not well-centred: its circumcentre lies outside it) when the dot
+ * product of the two edges at one of its corners is negative; a right
+ * triangle, whose circumcentre lies on its edge, is not counted. Interior
+ * vertices are vertices of domain triangles that lie on no boundary edge of
+ * the domain; interior edges have a domain triangle on both sides
+ * (constrained or not). The dual edge of an interior edge joins the power
+ * vertices of its two triangles (the circumcentres when no weights are set):
+ * the power dual.
+ *
+ * Each group of values (triangles, degrees, the dual) is computed once per
+ * state of the mesh and kept in its cvm__quality_cache (api_internal.h).
  */
+#include <float.h>
 #include <math.h>
 #include <string.h>
 
 #include "output_internal.h"
-#include "dual/dual_internal.h"
 
 #define RAD2DEG (180.0 / 3.14159265358979323846)
-#define NBIN_ANGLE 18
-#define NBIN_DEGREE 16
+#define NBIN_ANGLE CVM__NBIN_ANGLE
+#define NBIN_DEGREE CVM__NBIN_DEGREE
+/* An edge vector whose larger component lies in [SAFE_LO, SAFE_HI] gives
+ * products that neither overflow (2^1001 < DBL_MAX) nor lose precision to
+ * subnormals (2^-1000 > DBL_MIN). */
+#define SAFE_LO 0x1p-500
+#define SAFE_HI 0x1p+500
 
-typedef struct qstats {
-    size_t nt;
-    double min_angle, max_angle;
-    size_t n_regular, n_obtuse;
-    double min_edge, max_edge;     /* lengths */
-    double area, area_c, min_area; /* Neumaier sum and its compensation */
-    double angle_hist[NBIN_ANGLE];
-} qstats;
+typedef cvm__tri_quality qstats;
 
-/* Angle at a of triangle a, b, c, degrees; *dot receives the dot product. */
+static int in_safe_range(double x, double y)
+{
+    double mx = fmax(fabs(x), fabs(y));
+    return mx >= SAFE_LO && mx <= SAFE_HI;
+}
+
+/* q - p as u * 2^(return value), the larger component of u in [1, 2) (u = 0
+ * for p = q). Exact unless the difference overflows; then it comes from the
+ * halved coordinates (which round only subnormal parts). */
+static int scaled_diff(const double *p, const double *q, double *u)
+{
+    double x = q[0] - p[0], y = q[1] - p[1], mx;
+    int e = 0;
+    if (!(fabs(x) <= DBL_MAX && fabs(y) <= DBL_MAX)) {
+        x = 0.5 * q[0] - 0.5 * p[0];
+        y = 0.5 * q[1] - 0.5 * p[1];
+        e = 1;
+    }
+    mx = fmax(fabs(x), fabs(y));
+    if (mx > 0) {
+        int k = ilogb(mx);
+        x = ldexp(x, -k);
+        y = ldexp(y, -k);
+        e += k;
+    }
+    u[0] = x;
+    u[1] = y;
+    return e;
+}
+
+/* Angle at a of triangle a, b, c, degrees; *dot receives the dot product of
+ * the two edge vectors (times a positive factor outside the safe range). */
 static double corner(const double *a, const double *b, const double *c, double *dot)
 {
     double ux = b[0] - a[0], uy = b[1] - a[1], vx = c[0] - a[0], vy = c[1] - a[1];
+    if (!in_safe_range(ux, uy) || !in_safe_range(vx, vy)) {
+        double u[2], v[2];
+        scaled_diff(a, b, u);
+        scaled_diff(a, c, v);
+        ux = u[0];
+        uy = u[1];
+        vx = v[0];
+        vy = v[1];
+    }
     *dot = ux * vx + uy * vy;
     return atan2(fabs(ux * vy - uy * vx), *dot) * RAD2DEG;
+}
+
+/* Signed area of triangle a, b, c (positive counter-clockwise); +-inf only
+ * when its magnitude exceeds the largest double. */
+static double signed_area(const double *a, const double *b, const double *c)
+{
+    double ux = b[0] - a[0], uy = b[1] - a[1], vx = c[0] - a[0], vy = c[1] - a[1];
+    double u[2], v[2];
+    int e;
+    if (in_safe_range(ux, uy) && in_safe_range(vx, vy))
+        return 0.5 * (ux * vy - uy * vx);
+    e = scaled_diff(a, b, u) + scaled_diff(a, c, v);
+    return ldexp(0.5 * (u[0] * v[1] - u[1] * v[0]), e);
 }
 
 double cvm__min_angle_deg(const double *a, const double *b, const double *c)
@@ -50,6 +110,10 @@ double cvm__min_angle_deg(const double *a, const double *b, const double *c)
 static void add_area(qstats *q, double x)
 {
     double t = q->area + x;
+    if (!(fabs(t) <= DBL_MAX)) {
+        q->area = t; /* overflow: the compensation would be inf - inf */
+        return;
+    }
     if (fabs(q->area) >= fabs(x))
         q->area_c += (q->area - t) + x;
     else
@@ -73,7 +137,7 @@ static void triangle_stats(const cvm__tri2 *T, qstats *q)
         for (k = 0; k < 3; k++) {
             double dot, a = corner(p[k], p[(k + 1) % 3], p[(k + 2) % 3], &dot);
             double len = hypot(p[(k + 1) % 3][0] - p[k][0], p[(k + 1) % 3][1] - p[k][1]);
-            int bin = (int)(a / 10.0);
+            int bin = a >= 0 && a < 10.0 * NBIN_ANGLE ? (int)(a / 10.0) : a >= 0 ? NBIN_ANGLE - 1 : 0;
             q->min_angle = a < q->min_angle ? a : q->min_angle;
             q->max_angle = a > q->max_angle ? a : q->max_angle;
             q->n_regular += a >= 55.0 && a <= 65.0;
@@ -84,8 +148,7 @@ static void triangle_stats(const cvm__tri2 *T, qstats *q)
                 obtuse = 1;
         }
         q->n_obtuse += obtuse != 0;
-        area = 0.5 * ((p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) -
-                      (p[1][1] - p[0][1]) * (p[2][0] - p[0][0]));
+        area = signed_area(p[0], p[1], p[2]);
         add_area(q, area);
         q->min_area = area < q->min_area ? area : q->min_area;
         q->nt++;
@@ -133,43 +196,44 @@ static cvm_status degree_stats(cvm_mesh *m, double *hist, size_t *n_interior)
     return CVM_OK;
 }
 
-/* Smallest |dual edge| / |primal edge| over interior edges; 0 when there is none.
- * The dual edge joins the power vertices of the two triangles (the
- * circumcentres when the mesh has no weights). */
-static double dual_ratio(const cvm__tri2 *T)
+/* The triangle statistics of m, computed once per state of m. */
+static const qstats *cached_triangle_stats(cvm_mesh *m)
 {
-    double best = HUGE_VAL;
-    size_t t;
-    int j;
-    for (t = 0; t < T->nt; t++) {
-        double ct[2];
-        int have = 0;
-        if (!cvm__tri2_in_domain(T, (int32_t)t))
-            continue;
-        for (j = 0; j < 3; j++) {
-            int32_t a = T->tn[3 * t + (size_t)j], u = a < 0 ? -1 : a / 3;
-            const double *p, *q;
-            double cu[2], r;
-            if (u < 0 || (size_t)u < t || !cvm__tri2_in_domain(T, u))
-                continue;
-            if (!have) {
-                cvm__dual_tri_vertex(T, (int32_t)t, ct);
-                have = 1;
-            }
-            cvm__dual_tri_vertex(T, u, cu);
-            p = T->xy + 2 * (size_t)T->tv[3 * t + (size_t)(j + 1) % 3];
-            q = T->xy + 2 * (size_t)T->tv[3 * t + (size_t)(j + 2) % 3];
-            r = hypot(ct[0] - cu[0], ct[1] - cu[1]) / hypot(p[0] - q[0], p[1] - q[1]);
-            if (r < best)
-                best = r;
-        }
+    if (!(m->quality.have & CVM__HAVE_TRI)) {
+        triangle_stats(&m->tri, &m->quality.tri);
+        m->quality.have |= CVM__HAVE_TRI;
     }
-    return best == HUGE_VAL ? 0.0 : best;
+    return &m->quality.tri;
+}
+
+/* The degree histogram of m (NBIN_DEGREE entries) and its number of interior
+ * vertices, computed once per state of m. CVM_OK or CVM_E_NOMEM (with its message). */
+static cvm_status cached_degree_stats(cvm_mesh *m, const double **hist, size_t *n_interior)
+{
+    cvm_status s;
+    if (!(m->quality.have & CVM__HAVE_DEGREE)) {
+        if ((s = degree_stats(m, m->quality.degree_hist, &m->quality.n_interior)))
+            return s;
+        m->quality.have |= CVM__HAVE_DEGREE;
+    }
+    *hist = m->quality.degree_hist;
+    *n_interior = m->quality.n_interior;
+    return CVM_OK;
+}
+
+/* 1 when T has a domain triangle; stops at the first (this runs on every call). */
+static int has_domain_triangle(const cvm__tri2 *T)
+{
+    size_t t;
+    for (t = 0; t < T->nt; t++)
+        if (cvm__tri2_in_domain(T, (int32_t)t))
+            return 1;
+    return 0;
 }
 
 static cvm_status need_triangles(cvm_mesh *m)
 {
-    if (!m->triangulated || cvm__domain_triangles(&m->tri) == 0)
+    if (!m->triangulated || !has_domain_triangle(&m->tri))
         return cvm__error(&m->ctx, CVM_E_STATE, CVM_ENT_NONE, -1,
                           "no triangles: call cvm_mesh_triangulate() first");
     return CVM_OK;
@@ -177,13 +241,13 @@ static cvm_status need_triangles(cvm_mesh *m)
 
 cvm_status cvm_mesh_get_measure(double *out, cvm_mesh *m, cvm_measure which)
 {
-    qstats q;
-    double hist[NBIN_DEGREE];
+    const qstats *q;
+    const double *hist;
     size_t n_int;
     cvm_status s;
     if (!m)
         return CVM_E_NULL_ARG;
-    CVM__BEGIN(m);
+    CVM__BEGIN_READ(m);
     if (!out)
         return cvm__error(&m->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "out is NULL");
     if (cvm__refine_measure(out, m, which) == CVM_OK)
@@ -204,37 +268,40 @@ cvm_status cvm_mesh_get_measure(double *out, cvm_mesh *m, cvm_measure which)
     if ((s = need_triangles(m)))
         return s;
     if (which == CVM_MEASURE_DEGREE6_PCT) {
-        if ((s = degree_stats(m, hist, &n_int)))
+        if ((s = cached_degree_stats(m, &hist, &n_int)))
             return s;
         *out = n_int ? 100.0 * hist[6] / (double)n_int : 0.0;
         return CVM_OK;
     }
     if (which == CVM_MEASURE_MIN_DUAL_EDGE_RATIO) {
-        *out = dual_ratio(&m->tri);
+        double minima[3];
+        if ((s = cvm__dual_edge_minima(m, minima)))
+            return s;
+        *out = minima[2];
         return CVM_OK;
     }
-    triangle_stats(&m->tri, &q);
+    q = cached_triangle_stats(m);
     switch (which) {
-    case CVM_MEASURE_MIN_ANGLE_DEG: *out = q.min_angle; break;
-    case CVM_MEASURE_MAX_ANGLE_DEG: *out = q.max_angle; break;
-    case CVM_MEASURE_REGULAR_PCT: *out = 100.0 * (double)q.n_regular / (3.0 * (double)q.nt); break;
-    case CVM_MEASURE_OBTUSE_PCT: *out = 100.0 * (double)q.n_obtuse / (double)q.nt; break;
-    case CVM_MEASURE_MIN_EDGE: *out = q.min_edge; break;
-    case CVM_MEASURE_MAX_EDGE: *out = q.max_edge; break;
-    case CVM_MEASURE_AREA: *out = q.area + q.area_c; break;
-    default: *out = q.min_area; break;
+    case CVM_MEASURE_MIN_ANGLE_DEG: *out = q->min_angle; break;
+    case CVM_MEASURE_MAX_ANGLE_DEG: *out = q->max_angle; break;
+    case CVM_MEASURE_REGULAR_PCT: *out = 100.0 * (double)q->n_regular / (3.0 * (double)q->nt); break;
+    case CVM_MEASURE_OBTUSE_PCT: *out = 100.0 * (double)q->n_obtuse / (double)q->nt; break;
+    case CVM_MEASURE_MIN_EDGE: *out = q->min_edge; break;
+    case CVM_MEASURE_MAX_EDGE: *out = q->max_edge; break;
+    case CVM_MEASURE_AREA: *out = q->area + q->area_c; break;
+    default: *out = q->min_area; break;
     }
     return CVM_OK;
 }
 
 cvm_status cvm_mesh_copy_histogram(double *dst, size_t dst_len, cvm_mesh *m, cvm_histogram which)
 {
-    qstats q;
+    const double *hist;
     size_t need, n_int;
     cvm_status s;
     if (!m)
         return CVM_E_NULL_ARG;
-    CVM__BEGIN(m);
+    CVM__BEGIN_READ(m);
     if (!dst)
         return cvm__error(&m->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "dst is NULL");
     if ((int)which < (int)CVM_HIST_ANGLE_DEG || (int)which > (int)CVM_HIST_Q5)
@@ -249,9 +316,12 @@ cvm_status cvm_mesh_copy_histogram(double *dst, size_t dst_len, cvm_mesh *m, cvm
         return cvm__error(&m->ctx, CVM_E_BUFFER_TOO_SMALL, CVM_ENT_NONE, -1,
                           "histogram needs %lu entries, dst_len is %lu", (unsigned long)need,
                           (unsigned long)dst_len);
-    if (which == CVM_HIST_DEGREE)
-        return degree_stats(m, dst, &n_int);
-    triangle_stats(&m->tri, &q);
-    memcpy(dst, q.angle_hist, sizeof q.angle_hist);
+    if (which == CVM_HIST_DEGREE) {
+        if ((s = cached_degree_stats(m, &hist, &n_int)))
+            return s;
+        memcpy(dst, hist, NBIN_DEGREE * sizeof *dst);
+        return CVM_OK;
+    }
+    memcpy(dst, cached_triangle_stats(m)->angle_hist, NBIN_ANGLE * sizeof *dst);
     return CVM_OK;
 }

@@ -167,6 +167,17 @@ expect_exit 0 "same run again" "$CLI" triangulate "$DOMAINS/annulus.poly" -o "$O
 if cmp -s "$OUT/a.vtu" "$OUT/b.vtu"; then pass; else fail "the same input and seed gave different bytes"; fi
 expect_exit 0 "write with no -o" "$CLI" triangulate "$DOMAINS/square.poly" --quality
 
+# A right triangle at the largest doubles: angles and dual ratios are exact,
+# lengths and the area overflow to inf, and nothing is NaN.
+expect_exit 0 "--quality near the largest doubles" "$CLI" triangulate "$DATA/huge_right_triangle.node" --quality
+for want in "min angle|45 deg" "max angle|90 deg" "area|inf" "max edge|inf" "q2 max|0.8047" \
+            "q1 mean min angle|45 deg"; do
+    expect_grep "--quality near the largest doubles" "$TMP/out" \
+        "$(printf '%-28s %s' "${want%%|*}" "${want#*|}")"
+done
+expect_grep "--quality near the largest doubles: 45-degree angles" "$TMP/out" "  40-50              2 "
+if grep -i -q nan "$TMP/out"; then fail "--quality near the largest doubles prints NaN: $(grep -i nan "$TMP/out" | head -3)"; else pass; fi
+
 # ---- other inputs -----------------------------------------------------------
 OUT=$TMP/inputs
 mkdir "$OUT"

@@ -149,8 +149,9 @@ class Mesh:
     Mesh(**options) and set the input. Options can be given as keywords
     (Mesh(seed=3), mesh.triangulate(time_limit_s=1.0)) or with set_option().
 
-    One call at a time per mesh: calls from several threads are serialised,
-    and a progress callback must not call methods of the mesh it reports on.
+    One call at a time per mesh: calls from several threads are serialised
+    (close() too: it waits for a running call), and a progress callback must
+    not call methods of the mesh it reports on.
     Long calls (triangulate, insert_points, read, write, check) release the
     GIL, and Ctrl-C stops them with KeyboardInterrupt, leaving a valid mesh.
     """
@@ -209,14 +210,32 @@ class Mesh:
     # ---- lifetime ----------------------------------------------------------
 
     def close(self):
-        """Free the C handle now (also done when the object is collected)."""
-        m, self._m = self._m, None
-        if m is not None and capi is not None:
-            capi.cvm_mesh_free(m)
+        """Free the C handle now (also done when the object is collected).
+
+        A call running on this mesh in another thread is waited for: the
+        handle is never freed under it. Raises StateError from a progress
+        callback of this mesh (the call it reports on is still running)."""
+        if self._owner == threading.get_ident():
+            raise StateError("a progress callback must not close the mesh that is "
+                             "reporting to it", Status.E_STATE)
+        with self._lock:
+            m, self._m = self._m, None
+            if m is not None and capi is not None:
+                capi.cvm_mesh_free(m)
 
     def __del__(self):
-        if getattr(self, "_m", None) is not None:
-            self.close()
+        # No call can hold the lock of an unreachable mesh; should one still
+        # do (a thread frozen at interpreter exit), leak rather than free
+        # under it or block the finaliser.
+        lock = getattr(self, "_lock", None)
+        if getattr(self, "_m", None) is None or lock is None or not lock.acquire(False):
+            return
+        try:
+            m, self._m = self._m, None
+            if capi is not None:
+                capi.cvm_mesh_free(m)
+        finally:
+            lock.release()
 
     def __enter__(self):
         return self
@@ -755,14 +774,30 @@ class Sizing:
             self.set_callback(callback)
 
     def close(self):
-        """Free the C handle now (also done when the object is collected)."""
-        s, self._s = self._s, None
-        if s is not None and capi is not None:
-            capi.cvm_sizing_free(s)
+        """Free the C handle now (also done when the object is collected).
+
+        A call using this sizing in another thread (a Mesh.refine() or
+        optimise_dual(), or an evaluation) is waited for: the handle is never
+        freed under it. Raises StateError from this sizing's own callback."""
+        if self._owner == threading.get_ident():
+            raise StateError("a sizing callback must not close the sizing that calls it",
+                             Status.E_STATE)
+        with self._lock:
+            s, self._s = self._s, None
+            if s is not None and capi is not None:
+                capi.cvm_sizing_free(s)
 
     def __del__(self):
-        if getattr(self, "_s", None) is not None:
-            self.close()
+        # As Mesh.__del__: never free under a call, never block a finaliser.
+        lock = getattr(self, "_lock", None)
+        if getattr(self, "_s", None) is None or lock is None or not lock.acquire(False):
+            return
+        try:
+            s, self._s = self._s, None
+            if capi is not None:
+                capi.cvm_sizing_free(s)
+        finally:
+            lock.release()
 
     def __enter__(self):
         return self

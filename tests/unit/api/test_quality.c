@@ -148,6 +148,198 @@ START_TEST(measures_need_triangles_and_valid_arguments)
 }
 END_TEST
 
+/* The right triangle (-X, 0), (X, 0), (0, X) at the largest doubles: its
+ * edges and area exceed the largest double, but its angles and the dual's
+ * ratios are defined; unscaled products gave inf - inf (NaN angles counted in
+ * the 0-10 bin, area NaN). */
+START_TEST(huge_right_triangle_has_exact_angles_and_infinite_area)
+{
+    static const double xy[] = {-1.797e308, 0, 1.797e308, 0, 0, 1.797e308};
+    cvm_mesh *m = points(xy, 3);
+    double h[20], q1[1], q2[1];
+    ck_assert_double_eq_tol(measure(m, CVM_MEASURE_MIN_ANGLE_DEG), 45, TOL);
+    ck_assert_double_eq_tol(measure(m, CVM_MEASURE_MAX_ANGLE_DEG), 90, TOL);
+    ck_assert(measure(m, CVM_MEASURE_REGULAR_PCT) == 0);
+    ck_assert(measure(m, CVM_MEASURE_AREA) == HUGE_VAL);
+    ck_assert(measure(m, CVM_MEASURE_MIN_AREA) == HUGE_VAL);
+    ck_assert(measure(m, CVM_MEASURE_MAX_EDGE) == HUGE_VAL);
+    ck_assert_int_eq(cvm_mesh_copy_histogram(h, 18, m, CVM_HIST_ANGLE_DEG), CVM_OK);
+    ck_assert(h[0] == 0 && h[4] == 2 && h[8] + h[9] == 1);
+    /* |centroid - circumcentre| / inradius = (X / 3) / (X / (1 + sqrt 2)) */
+    ck_assert_double_eq_tol(measure(m, CVM_MEASURE_Q2_MAX), (1 + sqrt(2.0)) / 3, TOL);
+    ck_assert_double_eq_tol(measure(m, CVM_MEASURE_Q1_MEAN_DEG), 45, TOL);
+    ck_assert_int_eq(cvm_mesh_copy_dual_quality(q1, 1, m, CVM_HIST_Q1), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_copy_dual_quality(q2, 1, m, CVM_HIST_Q2), CVM_OK);
+    ck_assert_double_eq_tol(q1[0], 45, TOL);
+    ck_assert_double_eq_tol(q2[0], (1 + sqrt(2.0)) / 3, TOL);
+    ck_assert_int_eq(cvm_mesh_copy_histogram(h, 20, m, CVM_HIST_Q2), CVM_OK);
+    ck_assert(h[3] == 1); /* 0.8047 in [0.75, 1) */
+    cvm_mesh_free(m);
+}
+END_TEST
+
+/* Coordinates exact in binary: b - a = (2^533, 2^533), c - a = (2^532,
+ * 2^532 + 2^490). Each product of the area formula is about 2^1065 and
+ * overflows, their difference is exactly 2^1023: area 2^1022. */
+START_TEST(thin_triangle_with_overflowing_products_has_its_exact_area)
+{
+    double xy[6] = {0, 0, 0, 0, 0, 0};
+    cvm_mesh *m;
+    double h[18];
+    xy[2] = xy[3] = ldexp(1, 533);
+    xy[4] = ldexp(1, 532);
+    xy[5] = ldexp(1, 532) + ldexp(1, 490);
+    m = points(xy, 3);
+    ck_assert(measure(m, CVM_MEASURE_AREA) == ldexp(1, 1022));
+    ck_assert(measure(m, CVM_MEASURE_MIN_AREA) == ldexp(1, 1022));
+    ck_assert(measure(m, CVM_MEASURE_MIN_ANGLE_DEG) > 0);
+    ck_assert(measure(m, CVM_MEASURE_MIN_ANGLE_DEG) < 1e-9);
+    ck_assert(measure(m, CVM_MEASURE_MAX_ANGLE_DEG) > 180 - 1e-9);
+    ck_assert(measure(m, CVM_MEASURE_OBTUSE_PCT) == 100);
+    ck_assert_int_eq(cvm_mesh_copy_histogram(h, 18, m, CVM_HIST_ANGLE_DEG), CVM_OK);
+    ck_assert(h[0] == 2 && h[17] == 1);
+    cvm_mesh_free(m);
+}
+END_TEST
+
+/* At 2^-600 the products of edge components underflow to 0 (atan2(0, 0) gave
+ * 0-degree angles); the area 2^-1201 is below the smallest double. */
+START_TEST(tiny_right_triangle_has_exact_angles)
+{
+    double xy[6] = {0, 0, 0, 0, 0, 0};
+    cvm_mesh *m;
+    xy[2] = ldexp(1, -600);
+    xy[5] = ldexp(1, -600);
+    m = points(xy, 3);
+    ck_assert_double_eq_tol(measure(m, CVM_MEASURE_MIN_ANGLE_DEG), 45, TOL);
+    ck_assert_double_eq_tol(measure(m, CVM_MEASURE_MAX_ANGLE_DEG), 90, TOL);
+    ck_assert(measure(m, CVM_MEASURE_MIN_EDGE) == ldexp(1, -600));
+    ck_assert(measure(m, CVM_MEASURE_AREA) == 0);
+    ck_assert_double_eq_tol(measure(m, CVM_MEASURE_Q2_MAX), (1 + sqrt(2.0)) / 3, TOL);
+    cvm_mesh_free(m);
+}
+END_TEST
+
+/* Every measure and histogram of the --quality report, in report order. */
+static const cvm_measure k_measures[] = {
+    CVM_MEASURE_MIN_ANGLE_DEG, CVM_MEASURE_MAX_ANGLE_DEG, CVM_MEASURE_REGULAR_PCT,
+    CVM_MEASURE_OBTUSE_PCT, CVM_MEASURE_DEGREE6_PCT, CVM_MEASURE_MIN_DUAL_EDGE_RATIO,
+    CVM_MEASURE_MIN_EDGE, CVM_MEASURE_MAX_EDGE, CVM_MEASURE_AREA, CVM_MEASURE_MIN_AREA,
+    CVM_MEASURE_DUAL_OUTSIDE_PCT, CVM_MEASURE_DUAL_OUTSIDE_BOUNDARY_PCT,
+    CVM_MEASURE_MIN_DUAL_EDGE, CVM_MEASURE_TIME_STEP_PROXY, CVM_MEASURE_VANISHED_VERTICES,
+    CVM_MEASURE_Q1_MEAN_DEG, CVM_MEASURE_Q1_MIN_BOUNDARY_DEG, CVM_MEASURE_Q2_MAX,
+    CVM_MEASURE_Q2_MEAN, CVM_MEASURE_Q2_MAX_BOUNDARY, CVM_MEASURE_Q3_MAX, CVM_MEASURE_Q4_MAX,
+    CVM_MEASURE_Q5_MIN, CVM_MEASURE_Q5_MEAN, CVM_MEASURE_Q5_MIN_BOUNDARY};
+#define N_MEASURES (sizeof k_measures / sizeof k_measures[0])
+#define N_HISTS 7
+#define N_VALUES (N_MEASURES + 20 * N_HISTS)
+
+/* Every value of the report into v (N_VALUES); when fresh, each is computed
+ * after a call that forgets the cached values (setting an option to the
+ * value it has), so none comes from an earlier request. */
+static void report_values(cvm_mesh *m, int fresh, double *v)
+{
+    size_t i;
+    memset(v, 0, N_VALUES * sizeof *v);
+    for (i = 0; i < N_MEASURES + N_HISTS; i++) {
+        if (fresh)
+            ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_SEED, 1), CVM_OK);
+        if (i < N_MEASURES)
+            v[i] = measure(m, k_measures[i]);
+        else
+            ck_assert_int_eq(cvm_mesh_copy_histogram(v + N_MEASURES + 20 * (i - N_MEASURES), 20, m,
+                                                     (cvm_histogram)(CVM_HIST_ANGLE_DEG + (int)(i - N_MEASURES))),
+                             CVM_OK);
+    }
+}
+
+/* The Delaunay triangulation of n random points, with a few weights when
+ * weighted, so that every measure is non-trivial. */
+static cvm_mesh *random_mesh(size_t n, uint64_t seed, int weighted)
+{
+    double *xy = malloc(2 * n * sizeof *xy), *w;
+    size_t i, nv;
+    cvm_mesh *m;
+    ck_assert_ptr_nonnull(xy);
+    cvmtest_random_points(xy, n, seed);
+    m = points(xy, n);
+    free(xy);
+    if (!weighted)
+        return m;
+    ck_assert_int_eq(cvm_mesh_count(&nv, m, CVM_ENT_VERTEX), CVM_OK);
+    w = calloc(nv, sizeof *w);
+    ck_assert_ptr_nonnull(w);
+    for (i = 0; i < nv; i += 7)
+        w[i] = 1e-5;
+    ck_assert_int_eq(cvm_mesh_set_weights(m, w, nv), CVM_OK);
+    free(w);
+    return m;
+}
+
+START_TEST(cached_measures_are_identical_to_recomputed_ones)
+{
+    cvm_mesh *m = random_mesh(3000, 11, 1);
+    double fresh[N_VALUES], cached[N_VALUES], again[N_VALUES], *q1, *q2, sum = 0, mx = 0;
+    size_t nt, k;
+    report_values(m, 1, fresh);
+    report_values(m, 0, cached);
+    report_values(m, 0, again);
+    ck_assert(memcmp(fresh, cached, sizeof fresh) == 0);
+    ck_assert(memcmp(fresh, again, sizeof fresh) == 0);
+    /* and the summaries match the per-element values, which are never cached */
+    ck_assert_int_eq(cvm_mesh_count(&nt, m, CVM_ENT_TRIANGLE), CVM_OK);
+    q1 = malloc(nt * sizeof *q1);
+    q2 = malloc(nt * sizeof *q2);
+    ck_assert(q1 && q2);
+    ck_assert_int_eq(cvm_mesh_copy_dual_quality(q1, nt, m, CVM_HIST_Q1), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_copy_dual_quality(q2, nt, m, CVM_HIST_Q2), CVM_OK);
+    for (k = 0; k < nt; k++) {
+        sum += q1[k];
+        mx = q2[k] > mx ? q2[k] : mx;
+    }
+    ck_assert(measure(m, CVM_MEASURE_Q1_MEAN_DEG) == sum / (double)nt);
+    ck_assert(measure(m, CVM_MEASURE_Q2_MAX) == mx);
+    free(q1);
+    free(q2);
+    cvm_mesh_free(m);
+}
+END_TEST
+
+/* After each kind of change, the report equals that of a mesh built in that
+ * state and never measured before. */
+START_TEST(cached_measures_follow_every_change_of_the_mesh)
+{
+    static const double extra[] = {0.25, 0.5, 0.75, 0.5, 0.5, 0.125};
+    cvm_mesh *m = random_mesh(500, 5, 1), *ref;
+    double got[N_VALUES], want[N_VALUES], before[N_VALUES];
+    cvm_index ids[3];
+    report_values(m, 0, before);
+    /* insert points */
+    ck_assert_int_eq(cvm_mesh_insert_points(ids, m, extra, 3, 0.0), CVM_OK);
+    report_values(m, 0, got);
+    ref = random_mesh(500, 5, 1);
+    ck_assert_int_eq(cvm_mesh_insert_points(ids, ref, extra, 3, 0.0), CVM_OK);
+    report_values(ref, 0, want);
+    ck_assert(memcmp(got, want, sizeof got) == 0);
+    ck_assert(memcmp(got, before, sizeof got) != 0);
+    /* remove the weights */
+    ck_assert_int_eq(cvm_mesh_set_weights(m, NULL, 0), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_weights(ref, NULL, 0), CVM_OK);
+    report_values(m, 0, got);
+    report_values(ref, 1, want);
+    ck_assert(memcmp(got, want, sizeof got) == 0);
+    /* triangulate again from the input alone */
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+    report_values(m, 0, got);
+    cvm_mesh_free(ref);
+    ref = random_mesh(500, 5, 0);
+    report_values(ref, 1, want);
+    ck_assert(memcmp(got, want, sizeof got) == 0);
+    cvm_mesh_free(ref);
+    cvm_mesh_free(m);
+}
+END_TEST
+
 TCase *api_quality_tcase(void)
 {
     TCase *tc = tcase_create("quality");
@@ -157,5 +349,10 @@ TCase *api_quality_tcase(void)
     tcase_add_test(tc, flat_triangle_is_obtuse);
     tcase_add_test(tc, degree_histogram_counts_interior_vertices_only);
     tcase_add_test(tc, measures_need_triangles_and_valid_arguments);
+    tcase_add_test(tc, huge_right_triangle_has_exact_angles_and_infinite_area);
+    tcase_add_test(tc, thin_triangle_with_overflowing_products_has_its_exact_area);
+    tcase_add_test(tc, tiny_right_triangle_has_exact_angles);
+    tcase_add_test(tc, cached_measures_are_identical_to_recomputed_ones);
+    tcase_add_test(tc, cached_measures_follow_every_change_of_the_mesh);
     return tc;
 }
