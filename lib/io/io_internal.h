@@ -169,13 +169,21 @@ typedef struct cvm__writer cvm__writer;
  * PATH: reason") or CVM_E_NOMEM; *out is NULL on error. */
 cvm_status cvm__writer_open(cvm__writer **out, cvm__ctx *ctx, const char *path);
 void cvm__writer_puts(cvm__writer *w, const char *s);
+/* n bytes of s (which may hold NULs). */
+void cvm__writer_write(cvm__writer *w, const char *s, size_t n);
+void cvm__writer_putc(cvm__writer *w, char c);
 /* printf-like; use only for integers and strings (no %f/%g: locale). */
 void cvm__writer_printf(cvm__writer *w, const char *fmt, ...) CVM__PRINTF(2, 3);
-/* A double in the shortest form that reads back exactly, '.' as decimal point. */
+/* A double in the shortest of %.15g, %.16g, %.17g that reads back exactly,
+ * '.' as decimal point (cvm__format_double()); "nan", "inf", "-inf" for the
+ * non-finite. */
 void cvm__writer_double(cvm__writer *w, double x);
 /* For the progress fraction only: about how many puts the whole write takes
  * (total), of which before went to earlier files of the same write. */
 void cvm__writer_expect(cvm__writer *w, uint64_t before, uint64_t total);
+/* An integer in decimal, as "%lld" / "%llu" print it. */
+void cvm__writer_long(cvm__writer *w, long long v);
+void cvm__writer_ulong(cvm__writer *w, unsigned long long v);
 /* Flush, sync and close the temporary file; CVM_OK, CVM_E_IO_WRITE or
  * CVM_INCOMPLETE_CANCELLED (the writer stays, to be committed or discarded).
  * Idempotent. */

@@ -65,8 +65,21 @@ int cvm__parse_long(const char *field, long long lo, long long hi, long long *ou
 
 /* Write x with '.' as decimal point, in the shortest of %.15g, %.16g, %.17g that
  * reads back to exactly x. buf holds CVM__DOUBLE_BUF bytes. Returns the length.
- * x must be finite. */
+ * x must be finite. The same bytes whatever the C locale; computed by
+ * cvm__format_double_fast() (fmt_double.h) when it can prove the result, else
+ * by cvm__format_double_libc(). */
 size_t cvm__format_double(char *buf, double x);
+
+/* The same text as cvm__format_double(), always computed with snprintf and
+ * strtod (slow; the reference the fast path is tested against). */
+size_t cvm__format_double_libc(char *buf, double x);
+
+/* Buffer size that holds any output of cvm__format_long()/cvm__format_ulong(). */
+#define CVM__INT_BUF 24
+
+/* Write v in decimal ("%lld"/"%llu"), NUL-terminated; returns the length. */
+size_t cvm__format_long(char *buf, long long v);
+size_t cvm__format_ulong(char *buf, unsigned long long v);
 
 /* ---- Triangle format reader internals ---- */
 

@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "fmt_double.h"
 #include "io_text.h"
 
 /* The decimal point the C library uses now (LC_NUMERIC), e.g. "." or ",". */
@@ -104,7 +105,7 @@ static size_t fix_point(char *buf)
     return n;
 }
 
-size_t cvm__format_double(char *buf, double x)
+size_t cvm__format_double_libc(char *buf, double x)
 {
     double back;
     size_t n;
@@ -118,4 +119,41 @@ size_t cvm__format_double(char *buf, double x)
         return n;
     snprintf(buf, CVM__DOUBLE_BUF, "%.17g", x);
     return fix_point(buf);
+}
+
+size_t cvm__format_double(char *buf, double x)
+{
+    size_t n = cvm__format_double_fast(buf, x);
+    return n ? n : cvm__format_double_libc(buf, x);
+}
+
+size_t cvm__format_ulong(char *buf, unsigned long long v)
+{
+    static const char pairs[] = "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
+                                "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
+                                "8081828384858687888990919293949596979899";
+    unsigned long long t = v;
+    size_t n = 1, i;
+    while (t >= 10) {
+        t /= 10;
+        n++;
+    }
+    buf[n] = '\0';
+    for (i = n; v >= 100; i -= 2, v /= 100)
+        memcpy(buf + i - 2, pairs + 2 * (v % 100), 2);
+    if (v >= 10)
+        memcpy(buf + i - 2, pairs + 2 * v, 2);
+    else
+        buf[i - 1] = (char)('0' + v);
+    return n;
+}
+
+size_t cvm__format_long(char *buf, long long v)
+{
+    if (v < 0) {
+        /* negate in unsigned arithmetic: -LLONG_MIN overflows */
+        buf[0] = '-';
+        return 1 + cvm__format_ulong(buf + 1, 0ull - (unsigned long long)v);
+    }
+    return cvm__format_ulong(buf, (unsigned long long)v);
 }

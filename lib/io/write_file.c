@@ -36,8 +36,8 @@ static uint64_t expected_puts(cvm__format fmt, const cvm__mesh_out *mo)
 {
     uint64_t nv = mo->nv, nt = mo->nt, ns = mo->nseg, na = mo->vattr ? mo->nattr : 0;
     switch (fmt) {
-    case CVM__FMT_VTU: return nv * (5 + 2 * na) + nt * 8 + ns * 4;
-    case CVM__FMT_MSH: return nv * 5 + nt + ns * 2;
+    case CVM__FMT_VTU: return nv * (4 + na) + nt * 7 + ns * 6;
+    case CVM__FMT_MSH: return nv * 4 + nt * 4 + ns * 3;
     case CVM__FMT_SVG: return nt * 8 + ns * 4;
     default: return 0;
     }
@@ -82,8 +82,8 @@ static cvm_status write_triangle(cvm__write_set *ws, const char *path, const cvm
     }
     cvm__free(ctx, name);
     if (!s) { /* each file only when the ones before it succeeded */
-        uint64_t na = mo->vattr ? mo->nattr : 0, nnode = (uint64_t)mo->nv * (5 + 2 * na),
-                 nele = (uint64_t)mo->nt * (mo->tattr ? 4 : 2), total = nnode + nele + mo->ne;
+        uint64_t na = mo->vattr ? mo->nattr : 0, nnode = (uint64_t)mo->nv * (4 + na),
+                 nele = (uint64_t)mo->nt * (mo->tattr ? 5 : 4), total = nnode + nele + (uint64_t)mo->ne * 4;
         cvm__writer_expect(w[0], 0, total);
         cvm__writer_expect(w[1], nnode, total);
         cvm__write_node(w[0], mo);
@@ -144,7 +144,7 @@ cvm_status cvm__write_dual_file_to_set(cvm__write_set *ws, const char *path, con
     cvm_status s = cvm__writer_open(&w, ws->ctx, path);
     if (s)
         return s;
-    cvm__writer_expect(w, 0, (uint64_t)d->ncorner * 5 + (uint64_t)d->ncell * 4);
+    cvm__writer_expect(w, 0, (uint64_t)d->ncorner * 3 + (uint64_t)d->ncell * 9);
     cvm__write_dual_vtu(w, d);
     return cvm__write_set_add(ws, w);
 }

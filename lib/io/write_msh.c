@@ -163,13 +163,15 @@ static void nodes(cvm__writer *w, const cvm__mesh_out *mo)
     size_t v, n = mo->nv;
     cvm__writer_printf(w, "$Nodes\n1 %lu %lu %lu\n2 1 0 %lu\n", (unsigned long)n,
                        (unsigned long)(n ? 1 : 0), (unsigned long)n, (unsigned long)n);
-    for (v = 0; v < n; v++)
-        cvm__writer_printf(w, "%lu\n", (unsigned long)v + 1);
+    for (v = 0; v < n; v++) {
+        cvm__writer_ulong(w, v + 1);
+        cvm__writer_putc(w, '\n');
+    }
     for (v = 0; v < n; v++) {
         cvm__writer_double(w, mo->xy[2 * v]);
-        cvm__writer_puts(w, " ");
+        cvm__writer_putc(w, ' ');
         cvm__writer_double(w, mo->xy[2 * v + 1]);
-        cvm__writer_puts(w, " 0\n");
+        cvm__writer_write(w, " 0\n", 3);
     }
     cvm__writer_puts(w, "$EndNodes\n");
 }
@@ -184,14 +186,23 @@ static void elements(cvm__writer *w, const cvm__mesh_out *mo, const curves *c)
                            (unsigned long)(c->start[i + 1] - c->start[i]));
         for (j = c->start[i]; j < c->start[i + 1]; j++) {
             const int32_t *s = mo->seg + 2 * c->order[j];
-            cvm__writer_printf(w, "%lu %ld %ld\n", (unsigned long)tag++, (long)s[0] + 1, (long)s[1] + 1);
+            cvm__writer_ulong(w, tag++);
+            cvm__writer_putc(w, ' ');
+            cvm__writer_long(w, (long long)s[0] + 1);
+            cvm__writer_putc(w, ' ');
+            cvm__writer_long(w, (long long)s[1] + 1);
+            cvm__writer_putc(w, '\n');
         }
     }
     cvm__writer_printf(w, "2 1 2 %lu\n", (unsigned long)mo->nt);
     for (t = 0; t < mo->nt; t++) {
         const int32_t *v = mo->tri + 3 * t;
-        cvm__writer_printf(w, "%lu %ld %ld %ld\n", (unsigned long)tag++, (long)v[0] + 1, (long)v[1] + 1,
-                           (long)v[2] + 1);
+        cvm__writer_ulong(w, tag++);
+        for (j = 0; j < 3; j++) {
+            cvm__writer_putc(w, ' ');
+            cvm__writer_long(w, (long long)v[j] + 1);
+        }
+        cvm__writer_putc(w, '\n');
     }
     cvm__writer_puts(w, "$EndElements\n");
 }

@@ -8,15 +8,18 @@ void cvm__write_node(cvm__writer *w, const cvm__mesh_out *mo)
     size_t v, k, na = mo->vattr ? mo->nattr : 0;
     cvm__writer_printf(w, "%lu 2 %lu 1\n", (unsigned long)mo->nv, (unsigned long)na);
     for (v = 0; v < mo->nv; v++) {
-        cvm__writer_printf(w, "%lu ", (unsigned long)v);
+        cvm__writer_ulong(w, v);
+        cvm__writer_putc(w, ' ');
         cvm__writer_double(w, mo->xy[2 * v]);
-        cvm__writer_puts(w, " ");
+        cvm__writer_putc(w, ' ');
         cvm__writer_double(w, mo->xy[2 * v + 1]);
         for (k = 0; k < na; k++) {
-            cvm__writer_puts(w, " ");
+            cvm__writer_putc(w, ' ');
             cvm__writer_double(w, mo->vattr[v * na + k]);
         }
-        cvm__writer_printf(w, " %ld\n", (long)(mo->vmark ? mo->vmark[v] : 0));
+        cvm__writer_putc(w, ' ');
+        cvm__writer_long(w, mo->vmark ? mo->vmark[v] : 0);
+        cvm__writer_putc(w, '\n');
     }
 }
 
@@ -27,12 +30,17 @@ void cvm__write_ele(cvm__writer *w, const cvm__mesh_out *mo)
     cvm__writer_printf(w, "%lu 3 %d\n", (unsigned long)mo->nt, mo->tattr ? 1 : 0);
     for (t = 0; t < mo->nt; t++) {
         const int32_t *v = mo->tri + 3 * t;
-        cvm__writer_printf(w, "%lu %ld %ld %ld", (unsigned long)t, (long)v[0], (long)v[1], (long)v[2]);
+        int j;
+        cvm__writer_ulong(w, t);
+        for (j = 0; j < 3; j++) {
+            cvm__writer_putc(w, ' ');
+            cvm__writer_long(w, v[j]);
+        }
         if (mo->tattr) {
-            cvm__writer_puts(w, " ");
+            cvm__writer_putc(w, ' ');
             cvm__writer_double(w, mo->tattr[t]);
         }
-        cvm__writer_puts(w, "\n");
+        cvm__writer_putc(w, '\n');
     }
 }
 
@@ -41,7 +49,14 @@ void cvm__write_edge(cvm__writer *w, const cvm__mesh_out *mo)
 {
     size_t e;
     cvm__writer_printf(w, "%lu 1\n", (unsigned long)mo->ne);
-    for (e = 0; e < mo->ne; e++)
-        cvm__writer_printf(w, "%lu %ld %ld %ld\n", (unsigned long)e, (long)mo->edge[2 * e],
-                           (long)mo->edge[2 * e + 1], (long)(mo->emark ? mo->emark[e] : 0));
+    for (e = 0; e < mo->ne; e++) {
+        cvm__writer_ulong(w, e);
+        cvm__writer_putc(w, ' ');
+        cvm__writer_long(w, mo->edge[2 * e]);
+        cvm__writer_putc(w, ' ');
+        cvm__writer_long(w, mo->edge[2 * e + 1]);
+        cvm__writer_putc(w, ' ');
+        cvm__writer_long(w, mo->emark ? mo->emark[e] : 0);
+        cvm__writer_putc(w, '\n');
+    }
 }

@@ -33,7 +33,7 @@ static void doubles(cvm__writer *w, const double *x, size_t n, size_t ncomp)
     size_t i;
     for (i = 0; i < n; i++) {
         cvm__writer_double(w, x[i]);
-        cvm__writer_puts(w, (i + 1) % ncomp == 0 || i + 1 == n ? "\n" : " ");
+        cvm__writer_putc(w, (i + 1) % ncomp == 0 || i + 1 == n ? '\n' : ' ');
     }
 }
 
@@ -42,9 +42,10 @@ static void point_data(cvm__writer *w, const cvm__mesh_out *mo)
     size_t v;
     cvm__writer_puts(w, "      <PointData Scalars=\"marker\">\n");
     begin_array(w, "Int32", "marker", 1);
-    for (v = 0; v < mo->nv; v++)
-        cvm__writer_printf(w, "%ld%s", (long)(mo->vmark ? mo->vmark[v] : 0),
-                           (v + 1) % PER_LINE == 0 || v + 1 == mo->nv ? "\n" : " ");
+    for (v = 0; v < mo->nv; v++) {
+        cvm__writer_long(w, mo->vmark ? mo->vmark[v] : 0);
+        cvm__writer_putc(w, (v + 1) % PER_LINE == 0 || v + 1 == mo->nv ? '\n' : ' ');
+    }
     end_array(w);
     if (mo->weight) {
         begin_array(w, "Float64", "weight", 1);
@@ -57,7 +58,7 @@ static void point_data(cvm__writer *w, const cvm__mesh_out *mo)
         for (v2 = 0; v2 < mo->nv; v2++)
             for (k = 0; k < na; k++) {
                 cvm__writer_double(w, mo->vattr[v2 * mo->nattr + skip + k]);
-                cvm__writer_puts(w, k + 1 == na ? "\n" : " ");
+                cvm__writer_putc(w, k + 1 == na ? '\n' : ' ');
             }
         end_array(w);
     }
@@ -81,9 +82,10 @@ static void cell_data(cvm__writer *w, const cvm__mesh_out *mo)
     cvm__writer_puts(w, "      <CellData>\n");
     if (mo->nseg) {
         begin_array(w, "Int32", "marker", 1);
-        for (k = 0; k < mo->nt + mo->nseg; k++)
-            cvm__writer_printf(w, "%ld%s", (long)(k < mo->nt || !mo->smark ? 0 : mo->smark[k - mo->nt]),
-                               (k + 1) % PER_LINE == 0 || k + 1 == mo->nt + mo->nseg ? "\n" : " ");
+        for (k = 0; k < mo->nt + mo->nseg; k++) {
+            cvm__writer_long(w, k < mo->nt || !mo->smark ? 0 : mo->smark[k - mo->nt]);
+            cvm__writer_putc(w, (k + 1) % PER_LINE == 0 || k + 1 == mo->nt + mo->nseg ? '\n' : ' ');
+        }
         end_array(w);
     }
     if (mo->tattr) {
@@ -109,17 +111,20 @@ static void cells(cvm__writer *w, const cvm__mesh_out *mo)
     size_t t, n = mo->nt + mo->nseg;
     cvm__writer_puts(w, "      <Cells>\n");
     begin_array(w, "Int32", "connectivity", 1);
-    for (t = 0; t < mo->nt; t++)
-        cvm__writer_printf(w, "%ld %ld %ld\n", (long)mo->tri[3 * t], (long)mo->tri[3 * t + 1],
-                           (long)mo->tri[3 * t + 2]);
-    for (t = 0; t < mo->nseg; t++)
-        cvm__writer_printf(w, "%ld %ld\n", (long)mo->seg[2 * t], (long)mo->seg[2 * t + 1]);
+    for (t = 0; t < 3 * mo->nt; t++) {
+        cvm__writer_long(w, mo->tri[t]);
+        cvm__writer_putc(w, t % 3 == 2 ? '\n' : ' ');
+    }
+    for (t = 0; t < 2 * mo->nseg; t++) {
+        cvm__writer_long(w, mo->seg[t]);
+        cvm__writer_putc(w, t % 2 == 1 ? '\n' : ' ');
+    }
     end_array(w);
     begin_array(w, "Int64", "offsets", 1);
-    for (t = 0; t < n; t++)
-        cvm__writer_printf(w, "%lu%s",
-                           (unsigned long)(t < mo->nt ? 3 * (t + 1) : 3 * mo->nt + 2 * (t + 1 - mo->nt)),
-                           (t + 1) % PER_LINE == 0 || t + 1 == n ? "\n" : " ");
+    for (t = 0; t < n; t++) {
+        cvm__writer_ulong(w, t < mo->nt ? 3 * (t + 1) : 3 * mo->nt + 2 * (t + 1 - mo->nt));
+        cvm__writer_putc(w, (t + 1) % PER_LINE == 0 || t + 1 == n ? '\n' : ' ');
+    }
     end_array(w);
     begin_array(w, "UInt8", "types", 1);
     for (t = 0; t < n; t++)
@@ -144,9 +149,9 @@ cvm_status cvm__write_vtu(cvm__writer *w, cvm__ctx *ctx, const cvm__mesh_out *mo
     begin_array(w, "Float64", "coordinates", 3);
     for (v = 0; v < mo->nv; v++) {
         cvm__writer_double(w, mo->xy[2 * v]);
-        cvm__writer_puts(w, " ");
+        cvm__writer_putc(w, ' ');
         cvm__writer_double(w, mo->xy[2 * v + 1]);
-        cvm__writer_puts(w, " 0\n");
+        cvm__writer_write(w, " 0\n", 3);
     }
     end_array(w);
     cvm__writer_puts(w, "      </Points>\n");
@@ -165,9 +170,10 @@ void cvm__write_dual_vtu(cvm__writer *w, const cvm__dual_out *d)
                        (unsigned long)d->ncorner, (unsigned long)d->ncell);
     cvm__writer_puts(w, "      <CellData Scalars=\"area\">\n");
     begin_array(w, "Int32", "vertex", 1);
-    for (c = 0; c < d->ncell; c++)
-        cvm__writer_printf(w, "%ld%s", (long)d->vertex[c],
-                           (c + 1) % PER_LINE == 0 || c + 1 == d->ncell ? "\n" : " ");
+    for (c = 0; c < d->ncell; c++) {
+        cvm__writer_long(w, d->vertex[c]);
+        cvm__writer_putc(w, (c + 1) % PER_LINE == 0 || c + 1 == d->ncell ? '\n' : ' ');
+    }
     end_array(w);
     begin_array(w, "Float64", "area", 1);
     doubles(w, d->area, d->ncell, 1);
@@ -179,22 +185,24 @@ void cvm__write_dual_vtu(cvm__writer *w, const cvm__dual_out *d)
     begin_array(w, "Float64", "coordinates", 3);
     for (k = 0; k < d->ncorner; k++) {
         cvm__writer_double(w, d->xy[2 * k]);
-        cvm__writer_puts(w, " ");
+        cvm__writer_putc(w, ' ');
         cvm__writer_double(w, d->xy[2 * k + 1]);
-        cvm__writer_puts(w, " 0\n");
+        cvm__writer_write(w, " 0\n", 3);
     }
     end_array(w);
     cvm__writer_puts(w, "      </Points>\n      <Cells>\n");
     begin_array(w, "Int32", "connectivity", 1);
     for (c = 0; c < d->ncell; c++)
-        for (k = (size_t)d->off[c]; k < (size_t)d->off[c + 1]; k++)
-            cvm__writer_printf(w, "%lu%s", (unsigned long)k,
-                               k + 1 == (size_t)d->off[c + 1] ? "\n" : " ");
+        for (k = (size_t)d->off[c]; k < (size_t)d->off[c + 1]; k++) {
+            cvm__writer_ulong(w, k);
+            cvm__writer_putc(w, k + 1 == (size_t)d->off[c + 1] ? '\n' : ' ');
+        }
     end_array(w);
     begin_array(w, "Int64", "offsets", 1);
-    for (c = 0; c < d->ncell; c++)
-        cvm__writer_printf(w, "%lu%s", (unsigned long)d->off[c + 1],
-                           (c + 1) % PER_LINE == 0 || c + 1 == d->ncell ? "\n" : " ");
+    for (c = 0; c < d->ncell; c++) {
+        cvm__writer_ulong(w, (unsigned long long)d->off[c + 1]);
+        cvm__writer_putc(w, (c + 1) % PER_LINE == 0 || c + 1 == d->ncell ? '\n' : ' ');
+    }
     end_array(w);
     begin_array(w, "UInt8", "types", 1);
     for (c = 0; c < d->ncell; c++)

@@ -5,6 +5,8 @@
  * the target; any failure or cancellation removes the temporary file. A
  * write set renames several such files together and puts back the files it
  * replaced when one rename fails.
+ * Text collects in a buffer inside the writer (so a number costs a memcpy,
+ * not a locked stdio call) and goes to the file a block at a time.
  */
 #ifndef _POSIX_C_SOURCE
 #define _POSIX_C_SOURCE 200809L
@@ -20,6 +22,9 @@
 #include <unistd.h>
 
 #include "io_text.h"
+
+/* Size of the writer's own buffer; holds any one number or short line. */
+#define WBUF 65536
 
 struct cvm__writer {
     cvm__ctx *ctx;
@@ -37,6 +42,8 @@ struct cvm__writer {
     uint64_t poll;  /* ask the progress callback every poll puts */
     char *bak;      /* during a set's commit: a hard link to the replaced file, or NULL */
     int existed;    /* during a set's commit: the target existed before */
+    size_t used;    /* bytes of buf not yet given to f */
+    char buf[WBUF];
 };
 
 static char *dup_str(cvm__ctx *ctx, const char *s)
@@ -251,13 +258,59 @@ static int stopped(cvm__writer *w)
     return w->cancelled;
 }
 
-void cvm__writer_puts(cvm__writer *w, const char *s)
+/* Give the buffered bytes to the file. */
+static void flush_buf(cvm__writer *w)
+{
+    if (w->used && !w->err && w->f) {
+        errno = 0;
+        if (fwrite(w->buf, 1, w->used, w->f) != w->used)
+            note_error(w);
+    }
+    w->used = 0;
+}
+
+/* Room for n more bytes in buf (n <= WBUF); 0 after an output error or a
+ * cancellation. */
+static int room(cvm__writer *w, size_t n)
+{
+    if (w->err || w->cancelled || !w->f)
+        return 0;
+    if (WBUF - w->used < n)
+        flush_buf(w);
+    return !w->err;
+}
+
+void cvm__writer_write(cvm__writer *w, const char *s, size_t n)
 {
     if (stopped(w))
         return;
-    errno = 0;
-    if (fputs(s, w->f) == EOF)
-        note_error(w);
+    if (n > WBUF) {
+        flush_buf(w);
+        if (w->err || !w->f)
+            return;
+        errno = 0;
+        if (fwrite(s, 1, n, w->f) != n)
+            note_error(w);
+        return;
+    }
+    if (!room(w, n))
+        return;
+    memcpy(w->buf + w->used, s, n);
+    w->used += n;
+}
+
+void cvm__writer_puts(cvm__writer *w, const char *s)
+{
+    cvm__writer_write(w, s, strlen(s));
+}
+
+/* Not counted as a put: separators would make the progress fraction depend
+ * on the layout more than on the size. */
+void cvm__writer_putc(cvm__writer *w, char c)
+{
+    if (!room(w, 1))
+        return;
+    w->buf[w->used++] = c;
 }
 
 void cvm__writer_printf(cvm__writer *w, const char *fmt, ...)
@@ -266,29 +319,60 @@ void cvm__writer_printf(cvm__writer *w, const char *fmt, ...)
     int r;
     if (stopped(w))
         return;
-    errno = 0;
     va_start(ap, fmt);
-    r = vfprintf(w->f, fmt, ap);
+    r = vsnprintf(w->buf + w->used, WBUF - w->used, fmt, ap);
     va_end(ap);
-    if (r < 0)
+    if (r < 0) {
         note_error(w);
+        return;
+    }
+    if ((size_t)r < WBUF - w->used) {
+        w->used += (size_t)r;
+        return;
+    }
+    /* did not fit: flush and print again, straight to the file if too long */
+    flush_buf(w);
+    if (w->err)
+        return;
+    va_start(ap, fmt);
+    if ((size_t)r < WBUF) {
+        vsnprintf(w->buf, WBUF, fmt, ap);
+        w->used = (size_t)r;
+    } else {
+        errno = 0;
+        if (vfprintf(w->f, fmt, ap) < 0)
+            note_error(w);
+    }
+    va_end(ap);
 }
 
 void cvm__writer_double(cvm__writer *w, double x)
 {
-    char buf[CVM__DOUBLE_BUF];
-    size_t n;
-    if (stopped(w))
+    const char *t = x > 0 ? "inf" : "-inf";
+    if (stopped(w) || !room(w, CVM__DOUBLE_BUF))
         return;
     if (isnan(x))
-        n = (size_t)snprintf(buf, sizeof buf, "nan");
-    else if (isinf(x))
-        n = (size_t)snprintf(buf, sizeof buf, x > 0 ? "inf" : "-inf");
-    else
-        n = cvm__format_double(buf, x);
-    errno = 0;
-    if (fwrite(buf, 1, n, w->f) != n)
-        note_error(w);
+        t = "nan";
+    else if (!isinf(x))
+        t = NULL;
+    if (t) {
+        memcpy(w->buf + w->used, t, strlen(t));
+        w->used += strlen(t);
+    } else {
+        w->used += cvm__format_double(w->buf + w->used, x);
+    }
+}
+
+void cvm__writer_long(cvm__writer *w, long long v)
+{
+    if (!stopped(w) && room(w, CVM__INT_BUF))
+        w->used += cvm__format_long(w->buf + w->used, v);
+}
+
+void cvm__writer_ulong(cvm__writer *w, unsigned long long v)
+{
+    if (!stopped(w) && room(w, CVM__INT_BUF))
+        w->used += cvm__format_ulong(w->buf + w->used, v);
 }
 
 cvm_status cvm__writer_finish(cvm__writer *w)
@@ -296,6 +380,7 @@ cvm_status cvm__writer_finish(cvm__writer *w)
     if (w->finished)
         return w->status;
     w->finished = 1;
+    flush_buf(w);
     errno = 0;
     if (fflush(w->f) != 0)
         note_error(w);

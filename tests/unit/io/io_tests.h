@@ -9,6 +9,7 @@
 #include "support/failing_alloc.h"
 
 TCase *io_numtext_tcase(void);       /* test_numtext.c: numtext.c */
+TCase *io_fmt_double_tcase(void);    /* test_fmt_double.c: fmt_double.c, integer output of numtext.c */
 TCase *io_scan_tcase(void);          /* test_scan.c: scan.c */
 TCase *io_read_triangle_tcase(void); /* test_read_triangle.c: read_triangle.c */
 TCase *io_reader_tcase(void);        /* test_reader.c: reader.c and injected read faults */

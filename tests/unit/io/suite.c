@@ -6,6 +6,7 @@ Suite *io_suite(void)
 {
     Suite *s = suite_create("io");
     suite_add_tcase(s, io_numtext_tcase());
+    suite_add_tcase(s, io_fmt_double_tcase());
     suite_add_tcase(s, io_scan_tcase());
     suite_add_tcase(s, io_read_triangle_tcase());
     suite_add_tcase(s, io_reader_tcase());

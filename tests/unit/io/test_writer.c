@@ -1,4 +1,5 @@
 /* test_writer.c - atomic output files: whole file or nothing, in every failure. */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -6,6 +7,7 @@
 #include <unistd.h>
 
 #include "io/io_tests.h"
+#include "io/io_text.h"
 
 static cvmtest_alloc g_a;
 static cvm__ctx g_ctx;
@@ -182,6 +184,125 @@ START_TEST(a_replaced_file_keeps_its_permissions)
 }
 END_TEST
 
+/* Expected text, grown alongside what the writer is given. */
+typedef struct text {
+    char *s;
+    size_t n, cap;
+} text;
+
+static void text_add(text *t, const char *s, size_t n)
+{
+    if (t->n + n + 1 > t->cap) {
+        t->cap = 2 * (t->n + n + 1);
+        t->s = realloc(t->s, t->cap);
+        ck_assert_ptr_nonnull(t->s);
+    }
+    memcpy(t->s + t->n, s, n);
+    t->n += n;
+    t->s[t->n] = '\0';
+}
+
+/* Every kind of put, many times over, with a printf longer than the
+ * writer's buffer among them: the file holds exactly the expected bytes. */
+START_TEST(buffered_output_keeps_every_byte_in_order)
+{
+    char path[4096], buf[64], *got, *big = malloc(200001);
+    text want = {NULL, 0, 0};
+    cvm__writer *w;
+    uint64_t z = 5;
+    size_t len, i;
+    ck_assert_ptr_nonnull(big);
+    memset(big, 'b', 200000);
+    big[200000] = '\0';
+    in_dir(path, sizeof path, "many.txt");
+    ck_assert_int_eq(cvm__writer_open(&w, &g_ctx, path), CVM_OK);
+    for (i = 0; i < 60000; i++) {
+        double x;
+        long long v;
+        z = z * 6364136223846793005ull + 1442695040888963407ull;
+        memcpy(&x, &z, sizeof x);
+        v = (long long)z >> (z % 60);
+        switch (i % 8) {
+        case 0:
+            cvm__writer_double(w, x);
+            if (isnan(x))
+                snprintf(buf, sizeof buf, "nan");
+            else if (isinf(x))
+                snprintf(buf, sizeof buf, x > 0 ? "inf" : "-inf");
+            else
+                cvm__format_double_libc(buf, x);
+            break;
+        case 1:
+            cvm__writer_long(w, v);
+            snprintf(buf, sizeof buf, "%lld", v);
+            break;
+        case 2:
+            cvm__writer_ulong(w, z);
+            snprintf(buf, sizeof buf, "%llu", (unsigned long long)z);
+            break;
+        case 3:
+            cvm__writer_putc(w, ' ');
+            snprintf(buf, sizeof buf, " ");
+            break;
+        case 4:
+            cvm__writer_puts(w, "abc\n");
+            snprintf(buf, sizeof buf, "abc\n");
+            break;
+        case 5:
+            cvm__writer_write(w, "x\0y", 3);
+            memcpy(buf, "x\0y", 3);
+            text_add(&want, buf, 3);
+            continue;
+        case 6:
+            cvm__writer_printf(w, "<%ld %s>", (long)i, "p");
+            snprintf(buf, sizeof buf, "<%ld %s>", (long)i, "p");
+            break;
+        default:
+            if (i % 20000 == 7) {
+                cvm__writer_printf(w, "%s", big);
+                text_add(&want, big, 200000);
+                cvm__writer_write(w, big, 100000);
+                text_add(&want, big, 100000);
+            }
+            continue;
+        }
+        text_add(&want, buf, strlen(buf));
+    }
+    ck_assert_int_eq(cvm__writer_commit(w), CVM_OK);
+    got = iotest_slurp(path, &len);
+    ck_assert_uint_eq(len, want.n);
+    ck_assert(memcmp(got, want.s, len) == 0);
+    free(got);
+    free(want.s);
+    free(big);
+    ck_assert_int_eq((int)g_a.live_blocks, 0);
+}
+END_TEST
+
+/* A device that refuses every block: the error surfaces at the end, after
+ * many blocks went out, and nothing is left behind. */
+START_TEST(full_device_after_many_blocks_is_io_write)
+{
+    char path[4096];
+    struct stat st;
+    cvm__writer *w;
+    long i;
+    if (stat("/dev/full", &st) != 0)
+        return;
+    in_dir(path, sizeof path, "full.node");
+    ck_assert_int_eq(symlink("/dev/full", path), 0);
+    ck_assert_int_eq(cvm__writer_open(&w, &g_ctx, path), CVM_OK);
+    for (i = 0; i < 100000; i++) {
+        cvm__writer_double(w, i * 0.1);
+        cvm__writer_putc(w, '\n');
+    }
+    ck_assert_int_eq(cvm__writer_commit(w), CVM_E_IO_WRITE);
+    ck_assert_ptr_nonnull(strstr(g_ctx.errmsg, "full.node"));
+    ck_assert_int_eq(iotest_count_entries(g_dir), 1);
+    ck_assert_int_eq((int)g_a.live_blocks, 0);
+}
+END_TEST
+
 TCase *io_writer_tcase(void)
 {
     TCase *tc = tcase_create("writer");
@@ -194,5 +315,7 @@ TCase *io_writer_tcase(void)
     tcase_add_test(tc, symbolic_link_keeps_pointing_at_the_replaced_file);
     tcase_add_test(tc, directory_target_is_io_open);
     tcase_add_test(tc, writer_open_runs_out_of_memory_cleanly);
+    tcase_add_test(tc, buffered_output_keeps_every_byte_in_order);
+    tcase_add_test(tc, full_device_after_many_blocks_is_io_write);
     return tc;
 }
