@@ -53,18 +53,22 @@ static cvm_status need_line(parser *ps, const char *expected)
     return CVM_OK;
 }
 
+/* The error for field f that cvm__parse_long() rejected with r (1 or 2). */
+static cvm_status int_error(parser *ps, const char *what, const char *f, int r, long long lo, long long hi)
+{
+    if (r == 1)
+        return cvm__scan_error(&ps->sc, CVM_E_IO_FORMAT, "%s: expected an integer, found '%.40s'",
+                               what, f);
+    return cvm__scan_error(&ps->sc, CVM_E_IO_FORMAT, "%s: %.40s is out of range [%lld, %lld]", what, f,
+                           lo, hi);
+}
+
 static cvm_status int_field(parser *ps, const char *what, long long lo, long long hi,
                             long long *out)
 {
     const char *f = cvm__scan_field(&ps->sc);
     int r = cvm__parse_long(f, lo, hi, out);
-    if (r == 1)
-        return cvm__scan_error(&ps->sc, CVM_E_IO_FORMAT, "%s: expected an integer, found '%.40s'",
-                               what, f);
-    if (r == 2)
-        return cvm__scan_error(&ps->sc, CVM_E_IO_FORMAT, "%s: %.40s is out of range [%lld, %lld]",
-                               what, f, lo, hi);
-    return CVM_OK;
+    return r ? int_error(ps, what, f, r, lo, hi) : CVM_OK;
 }
 
 /* A count: a non-negative integer no larger than MAX_COUNT (else CVM_E_TOO_LARGE). */
@@ -97,14 +101,17 @@ static cvm_status real_field(parser *ps, const char *what, long long number, dou
     return CVM_OK;
 }
 
+/* The field's name is only formatted for an error: this runs for every line. */
 static cvm_status marker_field(parser *ps, const char *what, long long number, int32_t *out)
 {
-    char name[64];
+    const char *f = cvm__scan_field(&ps->sc);
     long long v;
-    cvm_status s;
-    snprintf(name, sizeof name, "marker of %s %lld", what, number);
-    if ((s = int_field(ps, name, INT32_MIN, INT32_MAX, &v)))
-        return s;
+    int r = cvm__parse_long(f, INT32_MIN, INT32_MAX, &v);
+    if (r) {
+        char name[64];
+        snprintf(name, sizeof name, "marker of %s %lld", what, number);
+        return int_error(ps, name, f, r, INT32_MIN, INT32_MAX);
+    }
     *out = (int32_t)v;
     return CVM_OK;
 }
@@ -129,6 +136,27 @@ static cvm_status note_src(parser *ps, cvm__item_src *src, long long num)
     if (cvm__item_src_add(ps->ctx, src, ps->sc.name, (int64_t)num, (int64_t)ps->sc.lineno))
         return cvm__nomem(ps->ctx);
     return CVM_OK;
+}
+
+/* The line of item k (0-based) of n items of a kind ("point"), with nf (or
+ * nf2 when nf2 > 0) fields laid out as layout says. As need_line() then
+ * want_fields(), but the item's name is only formatted for an error: this
+ * runs for every line of a file. */
+static cvm_status need_item_line(parser *ps, const char *kind, size_t k, long long n, size_t nf,
+                                 size_t nf2, const char *layout)
+{
+    char expected[96];
+    int got;
+    cvm_status s = cvm__scan_line(&ps->sc, &got);
+    if (s)
+        return s;
+    if (got && (ps->sc.nfields == nf || (nf2 && ps->sc.nfields == nf2)))
+        return CVM_OK;
+    snprintf(expected, sizeof expected, "%s %lu of %lld", kind, (unsigned long)k + 1, n);
+    if (!got)
+        return cvm__scan_error(&ps->sc, CVM_E_IO_FORMAT, "unexpected end of file: expected %s",
+                               expected);
+    return want_fields(ps, nf, nf2, expected, layout);
 }
 
 static cvm_status grow(parser *ps, void *pp, size_t *cap, size_t need, size_t elem)
@@ -169,21 +197,14 @@ static cvm_status read_point_header(parser *ps, long long *np, long long *nattr,
     return CVM_OK;
 }
 
-static cvm_status read_point(parser *ps, size_t i, long long np, long long nattr, long long nmark)
+static cvm_status read_point(parser *ps, size_t i, long long np, long long nattr, long long nmark,
+                             const char *layout)
 {
     cvm__pslg *p = ps->p;
-    char expected[96];
     long long num, k;
     cvm_status s;
-    snprintf(expected, sizeof expected, "point %lu of %lld", (unsigned long)i + 1, np);
-    if ((s = need_line(ps, expected)))
+    if ((s = need_item_line(ps, "point", i, np, (size_t)(3 + nattr + nmark), 0, layout)))
         return s;
-    if (ps->sc.nfields != (size_t)(3 + nattr + nmark)) {
-        char layout[96];
-        snprintf(layout, sizeof layout, "number, x, y%s%s%s", nattr ? ", " : "",
-                 nattr ? (nattr == 1 ? "1 attribute" : "attributes") : "", nmark ? ", marker" : "");
-        return want_fields(ps, (size_t)(3 + nattr + nmark), 0, expected, layout);
-    }
     if ((s = int_field(ps, "point number", LLONG_MIN, LLONG_MAX, &num)))
         return s;
     if (i == 0) {
@@ -221,6 +242,7 @@ static cvm_status read_point(parser *ps, size_t i, long long np, long long nattr
 static cvm_status read_points(parser *ps)
 {
     long long np, nattr, nmark;
+    char layout[96];
     size_t i;
     cvm_status s;
     if ((s = read_point_header(ps, &np, &nattr, &nmark)))
@@ -228,8 +250,10 @@ static cvm_status read_points(parser *ps)
     if (np == 0)
         return CVM_OK;
     ps->p->nattr = (size_t)nattr;
+    snprintf(layout, sizeof layout, "number, x, y%s%s%s", nattr ? ", " : "",
+             nattr ? (nattr == 1 ? "1 attribute" : "attributes") : "", nmark ? ", marker" : "");
     for (i = 0; i < (size_t)np; i++)
-        if ((s = read_point(ps, i, np, nattr, nmark)))
+        if ((s = read_point(ps, i, np, nattr, nmark, layout)))
             return s;
     return CVM_OK;
 }
@@ -238,11 +262,13 @@ static cvm_status read_points(parser *ps)
 static cvm_status endpoint(parser *ps, long long num, int32_t *out)
 {
     long long v, np = (long long)ps->p->np, base = ps->base;
-    char what[64];
-    cvm_status s;
-    snprintf(what, sizeof what, "endpoint of segment %lld", num);
-    if ((s = int_field(ps, what, LLONG_MIN, LLONG_MAX, &v)))
-        return s;
+    const char *f = cvm__scan_field(&ps->sc);
+    int r = cvm__parse_long(f, LLONG_MIN, LLONG_MAX, &v);
+    if (r) {
+        char what[64];
+        snprintf(what, sizeof what, "endpoint of segment %lld", num);
+        return int_error(ps, what, f, r, LLONG_MIN, LLONG_MAX);
+    }
     if (ps->p->np == 0 && ps->ext) {
         np = (long long)ps->ext->np;
         base = ps->ext->base;
@@ -282,11 +308,8 @@ static cvm_status read_segments(parser *ps)
     if (n > 1 && (s = int_field(ps, "segment marker count", 0, 1, &nmark)))
         return s;
     for (k = 0; k < (size_t)nseg; k++) {
-        char expected[96];
-        snprintf(expected, sizeof expected, "segment %lu of %lld", (unsigned long)k + 1, nseg);
-        if ((s = need_line(ps, expected)) ||
-            (s = want_fields(ps, (size_t)(3 + nmark), 0, expected,
-                             nmark ? "number, endpoint, endpoint, marker" : "number, endpoint, endpoint")))
+        if ((s = need_item_line(ps, "segment", k, nseg, (size_t)(3 + nmark), 0,
+                                nmark ? "number, endpoint, endpoint, marker" : "number, endpoint, endpoint")))
             return s;
         if ((s = int_field(ps, "segment number", LLONG_MIN, LLONG_MAX, &num)))
             return s;
@@ -318,9 +341,7 @@ static cvm_status read_holes(parser *ps)
         (s = count_field(ps, "hole count", &nh)))
         return s;
     for (k = 0; k < (size_t)nh; k++) {
-        char expected[96];
-        snprintf(expected, sizeof expected, "hole %lu of %lld", (unsigned long)k + 1, nh);
-        if ((s = need_line(ps, expected)) || (s = want_fields(ps, 3, 0, expected, "number, x, y")) ||
+        if ((s = need_item_line(ps, "hole", k, nh, 3, 0, "number, x, y")) ||
             (s = int_field(ps, "hole number", LLONG_MIN, LLONG_MAX, &num)))
             return s;
         if ((s = grow(ps, &p->holes, &ps->cap_holes, 2 * (k + 1), sizeof(double))))
@@ -351,11 +372,8 @@ static cvm_status read_regions(parser *ps)
         (s = count_field(ps, "region count", &nr)))
         return s;
     for (k = 0; k < (size_t)nr; k++) {
-        char expected[96];
         double *r;
-        snprintf(expected, sizeof expected, "region %lu of %lld", (unsigned long)k + 1, nr);
-        if ((s = need_line(ps, expected)) ||
-            (s = want_fields(ps, 5, 4, expected, "number, x, y, attribute[, maximum area]")) ||
+        if ((s = need_item_line(ps, "region", k, nr, 5, 4, "number, x, y, attribute[, maximum area]")) ||
             (s = int_field(ps, "region number", LLONG_MIN, LLONG_MAX, &num)))
             return s;
         if ((s = grow(ps, &p->regions, &ps->cap_regions, 4 * (k + 1), sizeof(double))))
