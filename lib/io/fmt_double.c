@@ -204,7 +204,7 @@ static size_t format_big_int(char *buf, int neg, uint64_t m, int e, int pow2)
 
 size_t cvm__format_double_fast(char *buf, double x)
 {
-    uint64_t bits, frac, m, I, F;
+    uint64_t bits, frac, m, I, F, Iv[3];
     int be, e, e10, tries, exact, prec;
     u128 X = 0, H = 0, lo = (u128)POW10_U64[16] << 64, hi = (u128)POW10_U64[17] << 64, margin, below2;
     int neg;
@@ -246,9 +246,13 @@ size_t cvm__format_double_fast(char *buf, double x)
     below2 = frac == 0 && be > 1 ? H : 2 * H;
     I = (uint64_t)(X >> 64);
     F = (uint64_t)X;
+    /* divided by constants ahead: multiplications, not divide instructions */
+    Iv[0] = I / 100;
+    Iv[1] = I / 10;
+    Iv[2] = I;
     for (prec = 15; prec <= 17; prec++) {
-        uint64_t d = POW10_U64[17 - prec], D = I / d;
-        u128 rem = ((u128)(I % d) << 64) | F, half = (u128)d << 63, C, diff;
+        uint64_t d = POW10_U64[17 - prec], D = Iv[prec - 15];
+        u128 rem = ((u128)(I - D * d) << 64) | F, half = (u128)d << 63, C, diff;
         int n = prec, exp10 = e10;
         if (rem == half && exact) {
             D += D & 1; /* a tie: to even, as printf rounds to nearest */
