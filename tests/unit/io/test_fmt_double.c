@@ -197,6 +197,40 @@ START_TEST(format_long_matches_printf)
 }
 END_TEST
 
+#if defined(__SIZEOF_INT128__) && (defined(__GNUC__) || defined(__clang__))
+__extension__ typedef unsigned __int128 u128;
+
+/* Each entry is ten times the one before, renormalised: exactly while 10^k
+ * is an integer below 2^128 (k <= 55), within rounding after. 10^0 = 2^127 * 2^-127
+ * anchors the chain. */
+START_TEST(power_of_ten_table_is_consistent)
+{
+    const cvm__pow10_entry *t = cvm__pow10_table;
+    int k;
+    ck_assert(t[-CVM__POW10_KMIN].hi == 1ull << 63 && t[-CVM__POW10_KMIN].lo == 0);
+    ck_assert_int_eq(t[-CVM__POW10_KMIN].b, -127);
+    for (k = CVM__POW10_KMIN; k < CVM__POW10_KMAX; k++) {
+        const cvm__pow10_entry *p = &t[k - CVM__POW10_KMIN], *q = p + 1;
+        u128 P = ((u128)p->hi << 64) | p->lo, Q = ((u128)q->hi << 64) | q->lo;
+        /* P * 10 = P * 8 + P * 2 has 131 or 132 bits: keep the top 128 */
+        u128 lo8 = P << 3, lo2 = P << 1, low = lo8 + lo2;
+        uint64_t high = (uint64_t)(P >> 125) + (uint64_t)(P >> 127) + (low < lo8);
+        int sh = high >> 3 ? 4 : 3;
+        u128 R = ((u128)high << (128 - sh)) | (low >> sh);
+        int lost = (low << (128 - sh)) != 0;
+        ck_assert_msg(q->hi >> 63, "10^%d not normalised", k + 1);
+        ck_assert_msg(q->b == p->b + sh, "10^%d: exponent %d, expected %d", k + 1, (int)q->b, (int)p->b + sh);
+        if (k >= 0 && k < 55) {
+            ck_assert_msg(!lost && R == Q, "10^%d is not exact", k + 1);
+        } else {
+            u128 d = R > Q ? R - Q : Q - R;
+            ck_assert_msg(d <= 2, "10^%d differs from 10 * 10^%d by more than rounding", k + 1, k);
+        }
+    }
+}
+END_TEST
+#endif
+
 TCase *io_fmt_double_tcase(void)
 {
     TCase *tc = tcase_create("fmt_double");
@@ -207,5 +241,8 @@ TCase *io_fmt_double_tcase(void)
     tcase_add_test(tc, fast_format_matches_libc_on_short_decimals);
     tcase_add_test(tc, format_double_follows_libc_in_other_rounding_modes);
     tcase_add_test(tc, format_long_matches_printf);
+#if defined(__SIZEOF_INT128__) && (defined(__GNUC__) || defined(__clang__))
+    tcase_add_test(tc, power_of_ten_table_is_consistent);
+#endif
     return tc;
 }
