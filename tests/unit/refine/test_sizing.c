@@ -645,5 +645,8 @@ TCase *refine_sizing_tcase(void)
     tcase_add_test(tc, background_interpolates_linearly);
     tcase_add_test(tc, background_bad_input_is_named);
     tcase_add_test(tc, background_drives_refinement);
+    /* the out-of-memory sweeps rebuild the field once per allocation: about 1 s
+       of CPU, more under ASan or on a loaded machine */
+    tcase_set_timeout(tc, 60);
     return tc;
 }
