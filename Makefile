@@ -361,6 +361,7 @@ install: install-c install-fortran install-python
 install-c: all
 	install -d $(DESTDIR)$(PREFIX)/include $(DESTDIR)$(PREFIX)/lib/pkgconfig $(DESTDIR)$(PREFIX)/bin
 	install -m 644 include/cvmesh.h $(DESTDIR)$(PREFIX)/include/
+	install -m 644 include/cvmesh_experimental.h $(DESTDIR)$(PREFIX)/include/
 	install -m 644 $(STATIC) $(DESTDIR)$(PREFIX)/lib/
 	install -m 755 $(SHARED) $(DESTDIR)$(PREFIX)/lib/
 	ln -sf libcvmesh.so.$(VERSION) $(DESTDIR)$(PREFIX)/lib/$(SONAME)

@@ -151,8 +151,11 @@ typedef enum cvm_entity {
     CVM_ENT_OPTION = 11,      /**< an option key (error reports only) */
     CVM_ENT_TETRAHEDRON = 12, /**< reserved for the 3D kernel */
     CVM_ENT_FACET = 13,       /**< reserved for the 3D kernel */
-    CVM_ENT_REFINE_UNMET = 20 /**< triangles the last cvm_mesh_refine() left below the angle or
+    CVM_ENT_REFINE_UNMET = 20, /**< triangles the last cvm_mesh_refine() left below the angle or
                                    above the size (cvm_mesh_copy_refine_unmet()) */
+    CVM_ENT_CELL = 21,        /**< the cells of the mesh's dimension, of any type (triangles
+                                   today; quads, tetrahedra later): cvm_mesh_copy_cells_mixed() */
+    CVM_ENT_QUAD = 22         /**< reserved for quad-dominant meshing */
 } cvm_entity;
 
 /* ------------------------------------------------------------------------ */
@@ -254,6 +257,21 @@ CVM_API cvm_status cvm_mesh_error_item(cvm_entity *kind_out, int64_t *index_out,
 CVM_API cvm_status cvm_mesh_set_points(cvm_mesh *m, const double *coords, size_t count, int dim);
 
 /**
+ * Dimension of @p m: the number of coordinates per point of its input and
+ * output (points, holes, regions, inserted points, dual vertices) in the
+ * dimension-generic calls (the *_nd functions, cvm_sizing_*_nd).
+ *
+ * @param out  receives 2 for every mesh of this version: a new handle is 2D, and
+ *             only 2D input can be set. A handle given 3D points by the 3D kernel
+ *             (planned) will report 3.
+ * @param m    mesh handle; not NULL.
+ * Thread-safety: may run concurrently with other read-only calls on @p m.
+ * @return CVM_OK, CVM_E_NULL_ARG (out or m is NULL)
+ * @since 0.2
+ */
+CVM_API cvm_status cvm_mesh_dim(int32_t *out, const cvm_mesh *m);
+
+/**
  * Set an integer boundary marker for each input point (as Triangle's .node markers).
  * @param markers count values; count must equal the number of input points (0 removes them).
  * Ownership: copied.
@@ -308,6 +326,27 @@ CVM_API cvm_status cvm_mesh_set_segment_markers(cvm_mesh *m, const int32_t *mark
 CVM_API cvm_status cvm_mesh_set_holes(cvm_mesh *m, const double *xy, size_t count);
 
 /**
+ * cvm_mesh_set_holes() in the mesh's dimension: dim coordinates per hole.
+ *
+ * @param m       mesh handle; not NULL.
+ * @param coords  dim*count coordinates, hole k at coords[dim*k ..]; NULL only with count 0.
+ * @param count   number of holes; 0 removes them.
+ * @param dim     the mesh's dimension (cvm_mesh_dim()): 2. 3 is for the 3D kernel,
+ *                which is not there yet: CVM_E_UNSUPPORTED.
+ * Ownership:    copied. Units: length.
+ * Thread-safety: must not run concurrently with any other call on @p m.
+ * Atomicity:    on error the previous holes are kept unchanged.
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG         m is NULL, or coords is NULL while count > 0
+ *         CVM_E_ARGUMENT         dim is neither 2 nor 3
+ *         CVM_E_UNSUPPORTED      dim is 3 (no 3D kernel yet; message says so)
+ *         CVM_E_INPUT_NONFINITE  a coordinate is NaN or infinite (names hole k)
+ *         CVM_E_TOO_LARGE, CVM_E_NOMEM
+ * @since 0.2
+ */
+CVM_API cvm_status cvm_mesh_set_holes_nd(cvm_mesh *m, const double *coords, size_t count, int dim);
+
+/**
  * Set regional attributes: region k is seeded at (r[4k], r[4k+1]); every
  * triangle reachable from it without crossing a segment gets attribute r[4k+2];
  * r[4k+3] is a maximum triangle area for the refiners (<= 0 means none, as a
@@ -319,6 +358,28 @@ CVM_API cvm_status cvm_mesh_set_holes(cvm_mesh *m, const double *xy, size_t coun
  * @since 0.1
  */
 CVM_API cvm_status cvm_mesh_set_regions(cvm_mesh *m, const double *r, size_t count);
+
+/**
+ * cvm_mesh_set_regions() in the mesh's dimension: dim + 2 values per region,
+ * the seed point (dim coordinates), the attribute, and the largest cell
+ * measure for the refiners (an area in 2D, a volume in 3D; <= 0: no bound).
+ *
+ * @param m      mesh handle; not NULL.
+ * @param r      (dim+2)*count values, region k at r[(dim+2)*k ..]; NULL only with count 0.
+ * @param count  number of regions; 0 removes them.
+ * @param dim    2; 3 gives CVM_E_UNSUPPORTED (no 3D kernel yet).
+ * Ownership:    copied.
+ * Thread-safety: must not run concurrently with any other call on @p m.
+ * Atomicity:    on error the previous regions are kept unchanged.
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG         m is NULL, or r is NULL while count > 0
+ *         CVM_E_ARGUMENT         dim is neither 2 nor 3
+ *         CVM_E_UNSUPPORTED      dim is 3 (message says so)
+ *         CVM_E_INPUT_NONFINITE  a value is NaN or infinite (names region k)
+ *         CVM_E_TOO_LARGE, CVM_E_NOMEM
+ * @since 0.2
+ */
+CVM_API cvm_status cvm_mesh_set_regions_nd(cvm_mesh *m, const double *r, size_t count, int dim);
 
 /**
  * Read a Triangle .poly (PSLG) or .node (point set) file into the input of @p m,
@@ -391,6 +452,12 @@ CVM_API cvm_status cvm_mesh_read(cvm_mesh *m, const char *path);
 /**
  * Option keys, numbered in blocks of 100 per module; never renumbered.
  * Each value is a double; integer options must be given as whole numbers.
+ * Blocks: 100 Delaunay kernel, 200 refinement, 400 run control, 500 dual
+ * optimisation, 600 output; 700-799 are reserved for the 3D kernel, 800-899
+ * for quad-dominant meshing, 1000 and up for experimental keys, which only
+ * include/cvmesh_experimental.h declares (with CVM_EXPERIMENTAL defined).
+ * Every key and value declared here is stable; a value documented as
+ * experimental is named in cvmesh_experimental.h and may change meaning.
  */
 typedef enum cvm_option {
     /** Delaunay kernel (100..199). */
@@ -641,7 +708,9 @@ typedef enum cvm_option {
      *  CVM_OPT_DUAL_TARGET_ANGLE_DEG, its removable Steiner neighbour of least degree
      *  is removed, and interior Steiner vertices of degree 4 or less are removed
      *  (CVM_MEASURE_DUAL_OPT_REMOVED_DEGREE). Experimental: it tends to lower the
-     *  minimum angle, so it is not the default. 0: no vertex is ever removed. */
+     *  minimum angle, so it is not the default (the value is
+     *  CVM_DUAL_TOPOLOGY_DEGREE_REPAIR of cvmesh_experimental.h; 0 and 1 are stable).
+     *  0: no vertex is ever removed. */
     CVM_OPT_DUAL_TOPOLOGY = 509,
     /** Topology pre-pass of cvm_mesh_optimise_dual(), integer, [0, 1], default 0
      *  (off). 1: before the sweeps, up to two rounds of: removal of
@@ -712,6 +781,10 @@ typedef enum cvm_option {
     CVM_OPT_SVG_WINDOW_YMIN = 601, /**< see CVM_OPT_SVG_WINDOW_XMIN */
     CVM_OPT_SVG_WINDOW_XMAX = 602, /**< see CVM_OPT_SVG_WINDOW_XMIN */
     CVM_OPT_SVG_WINDOW_YMAX = 603  /**< see CVM_OPT_SVG_WINDOW_XMIN */
+
+    /* ---- 700-799: reserved for the 3D kernel ---- */
+    /* ---- 800-899: reserved for quad-dominant meshing ---- */
+    /* ---- 1000 and up: experimental (include/cvmesh_experimental.h) ---- */
 } cvm_option;
 
 /** Bounds of an option; the one frozen struct of the ABI. */
@@ -842,6 +915,25 @@ CVM_API cvm_status cvm_mesh_insert_points(cvm_index *ids_out, cvm_mesh *m, const
                                           size_t count, double min_dist);
 
 /**
+ * cvm_mesh_insert_points() in the mesh's dimension: dim coordinates per point,
+ * the same rules, stops and statuses.
+ *
+ * @param ids_out  count entries (new vertex id or CVM_REJECTED); may be NULL.
+ * @param m        mesh handle, triangulated; not NULL.
+ * @param coords   dim*count coordinates. Ownership: read only during the call.
+ * @param count    number of points.
+ * @param dim      2; 3 gives CVM_E_UNSUPPORTED (no 3D kernel yet).
+ * @param min_dist as cvm_mesh_insert_points(). Units: length.
+ * Thread-safety: must not run concurrently with any other call on @p m.
+ * @return those of cvm_mesh_insert_points(), and
+ *         CVM_E_ARGUMENT     dim is neither 2 nor 3 (nothing inserted)
+ *         CVM_E_UNSUPPORTED  dim is 3 (nothing inserted; message says so)
+ * @since 0.2
+ */
+CVM_API cvm_status cvm_mesh_insert_points_nd(cvm_index *ids_out, cvm_mesh *m, const double *coords,
+                                             size_t count, int dim, double min_dist);
+
+/**
  * Re-verify @p m with exact predicates: every triangle counter-clockwise,
  * adjacency symmetric, each edge in at most two triangles, every input segment
  * a chain of constrained mesh edges from end to end (segments of a chain
@@ -950,6 +1042,48 @@ CVM_API cvm_status cvm_sizing_add_line_source(cvm_sizing *s, double x0, double y
                                               double y1, double h, double growth);
 
 /**
+ * cvm_sizing_add_point_source() with the position in the mesh's dimension:
+ * h(p) = h + growth * |p - x|.
+ *
+ * @param s       sizing handle; not NULL.
+ * @param x       dim coordinates of the source.
+ * @param dim     2; 3 gives CVM_E_UNSUPPORTED (no 3D kernel yet).
+ * @param h, growth  as cvm_sizing_add_point_source().
+ * Units: lengths; growth dimensionless. Ownership: x is copied.
+ * Thread-safety: one call at a time on @p s.
+ * Atomicity: on error the handle is unchanged.
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG         s or x is NULL
+ *         CVM_E_ARGUMENT         dim is neither 2 nor 3; h <= 0 or growth < 0 (names point source k)
+ *         CVM_E_UNSUPPORTED      dim is 3 (message says so)
+ *         CVM_E_INPUT_NONFINITE  a value is NaN or infinite (names point source k)
+ *         CVM_E_NOMEM
+ * @since 0.2
+ */
+CVM_API cvm_status cvm_sizing_add_point_source_nd(cvm_sizing *s, const double *x, int dim,
+                                                  double h, double growth);
+
+/**
+ * cvm_sizing_add_line_source() with the ends in the mesh's dimension:
+ * h(p) = h + growth * dist(p, segment).
+ *
+ * @param s       sizing handle; not NULL.
+ * @param ends    2*dim coordinates: the first end, then the second (they may coincide).
+ * @param dim     2; 3 gives CVM_E_UNSUPPORTED (no 3D kernel yet).
+ * @param h, growth  as cvm_sizing_add_point_source().
+ * Units, ownership, thread-safety and atomicity as cvm_sizing_add_point_source_nd().
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG         s or ends is NULL
+ *         CVM_E_ARGUMENT         dim is neither 2 nor 3; h <= 0 or growth < 0 (names line source k)
+ *         CVM_E_UNSUPPORTED      dim is 3 (message says so)
+ *         CVM_E_INPUT_NONFINITE  a value is NaN or infinite (names line source k)
+ *         CVM_E_NOMEM
+ * @since 0.2
+ */
+CVM_API cvm_status cvm_sizing_add_line_source_nd(cvm_sizing *s, const double *ends, int dim,
+                                                 double h, double growth);
+
+/**
  * Set (or, with fn NULL, remove) a user sizing function.
  *
  * @param fn       called with @p payload and a position; must return a positive finite
@@ -963,6 +1097,69 @@ CVM_API cvm_status cvm_sizing_add_line_source(cvm_sizing *s, double x0, double y
  * @since 0.1
  */
 CVM_API cvm_status cvm_sizing_set_callback(cvm_sizing *s, cvm_sizing_fn fn, void *payload);
+
+/**
+ * User sizing function in the mesh's dimension: the target edge length at the
+ * point @p x (@p dim coordinates, dim = the dimension of the mesh being refined),
+ * positive and finite, deterministic. It must not call any function on the mesh
+ * being refined.
+ */
+typedef double (*cvm_sizing_nd_fn)(void *payload, const double *x, int dim);
+
+/**
+ * Set (or, with fn NULL, remove) a user sizing function that takes the position
+ * as an array. A handle has one user function: this replaces one set by
+ * cvm_sizing_set_callback() and the other way round.
+ *
+ * @param s        sizing handle; not NULL.
+ * @param fn       as cvm_sizing_nd_fn; NULL removes the user function.
+ * @param payload  passed unchanged to fn; may be NULL.
+ * Ownership: fn and payload must stay valid while the handle is used.
+ * Errors of fn: as cvm_sizing_set_callback() (a value <= 0: CVM_E_ARGUMENT, NaN or
+ *               infinite: CVM_E_INPUT_NONFINITE, naming "the sizing callback" and the
+ *               position).
+ * Thread-safety: one call at a time on @p s.
+ * @return CVM_OK, CVM_E_NULL_ARG (s is NULL)
+ * @since 0.2
+ */
+CVM_API cvm_status cvm_sizing_set_callback_nd(cvm_sizing *s, cvm_sizing_nd_fn fn, void *payload);
+
+/**
+ * Metric (tensor) function: at the point @p x (@p dim coordinates) write the
+ * symmetric positive definite metric g into @p g as its dim*(dim+1)/2
+ * upper-triangle entries, row by row (2D: g11, g12, g22; 3D: g11, g12, g13, g22,
+ * g23, g33). An edge e has the metric length sqrt(e^T g e); an isotropic size h is
+ * g = I / h^2. When @p dg is not NULL (only for a function installed with
+ * has_derivatives = 1) also write the derivatives of those entries: dim blocks of
+ * dim*(dim+1)/2 values, the block for d/dx_1 first. Return 0 when the point is
+ * accepted, non-zero when the metric is not defined there. Deterministic; it must
+ * not call any function on the mesh being meshed.
+ */
+typedef int (*cvm_metric_fn)(void *payload, const double *x, int dim, double *g, double *dg);
+
+/**
+ * Set (or, with fn NULL, remove) the metric (tensor) source of @p s, kept beside the
+ * scalar sources for the anisotropic and quad-dominant meshers (planned). In this
+ * version no meshing call uses a metric, and none ignores it silently:
+ * cvm_mesh_refine() and cvm_mesh_optimise_dual() given a sizing with a metric
+ * return CVM_E_UNSUPPORTED and change nothing. cvm_sizing_eval() and
+ * cvm_sizing_eval_nd() give the scalar size and do not read the metric;
+ * cvm_sizing_eval_metric() evaluates it.
+ *
+ * @param s                sizing handle; not NULL.
+ * @param fn               as cvm_metric_fn; NULL removes the metric.
+ * @param has_derivatives  1: fn fills dg when it is given; 0: it is always called with
+ *                         dg NULL (a user of derivatives then differentiates itself).
+ * @param payload          passed unchanged to fn; may be NULL.
+ * Ownership: fn and payload must stay valid while the handle is used.
+ * Thread-safety: one call at a time on @p s.
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG  s is NULL
+ *         CVM_E_ARGUMENT  has_derivatives is neither 0 nor 1 (handle unchanged)
+ * @since 0.2
+ */
+CVM_API cvm_status cvm_sizing_set_metric_fn(cvm_sizing *s, cvm_metric_fn fn, int has_derivatives,
+                                            void *payload);
 
 /**
  * Automatic sizing from the geometry of the domain being refined:
@@ -1063,6 +1260,50 @@ CVM_API cvm_status cvm_sizing_set_background(cvm_sizing *s, const double *xyh, s
  */
 CVM_API cvm_status cvm_sizing_eval(double *out, cvm_sizing *s, double x, double y);
 
+/**
+ * Evaluate the scalar sizing at the point @p x of @p dim coordinates (the
+ * metric source is not read; see cvm_sizing_eval_metric()).
+ *
+ * @param out  receives the size; +infinity when the handle has no scalar source.
+ * @param s    sizing handle; not NULL.
+ * @param x    dim coordinates.
+ * @param dim  2; 3 gives CVM_E_UNSUPPORTED (no 3D kernel yet).
+ * Thread-safety: one call at a time on @p s (it records the message of a failure).
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG         out, s or x is NULL
+ *         CVM_E_ARGUMENT         dim is neither 2 nor 3, or the callback returned a value <= 0
+ *         CVM_E_UNSUPPORTED      dim is 3 (message says so)
+ *         CVM_E_INPUT_NONFINITE  a coordinate is not finite, or the callback returned NaN/Inf
+ * @since 0.2
+ */
+CVM_API cvm_status cvm_sizing_eval_nd(double *out, cvm_sizing *s, const double *x, int dim);
+
+/**
+ * Evaluate the metric source of @p s at the point @p x and check it: every entry
+ * finite and the tensor positive definite (2D: g11 > 0 and g11 g22 - g12^2 > 0).
+ *
+ * @param dst      receives dim*(dim+1)/2 entries (see cvm_metric_fn); NULL only with
+ *                 dst_len 0.
+ * @param dst_len  capacity of dst in doubles.
+ * @param s        sizing handle; not NULL.
+ * @param x        dim coordinates.
+ * @param dim      2; 3 gives CVM_E_UNSUPPORTED (no 3D kernel yet).
+ * Units: 1 / length^2.
+ * Thread-safety: one call at a time on @p s (it records the message of a failure).
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG          s or x is NULL, or dst is NULL while dst_len > 0
+ *         CVM_E_ARGUMENT          dim is neither 2 nor 3, or the metric is not positive
+ *                                 definite (message gives the position and the entries)
+ *         CVM_E_UNSUPPORTED       dim is 3 (message says so)
+ *         CVM_E_STATE             the handle has no metric (cvm_sizing_set_metric_fn())
+ *         CVM_E_BUFFER_TOO_SMALL  dst_len < dim*(dim+1)/2 (nothing written)
+ *         CVM_E_INPUT_NONFINITE   a coordinate, or an entry the function wrote, is not finite
+ *         CVM_E_INPUT_OUTSIDE     the function refused the point (non-zero return)
+ * @since 0.2
+ */
+CVM_API cvm_status cvm_sizing_eval_metric(double *dst, size_t dst_len, cvm_sizing *s,
+                                          const double *x, int dim);
+
 /** Refinement algorithms of cvm_mesh_refine(). Values never change. */
 typedef enum cvm_algorithm {
     CVM_ALGO_DELAUNAY = 1, /**< Delaunay refinement (Ruppert, Shewchuk): circumcentres or
@@ -1137,7 +1378,9 @@ typedef enum cvm_algorithm {
  *                                 or empty; the error item is that option; mesh unchanged)
  *                                 or CVM_OPT_AFLR_SMOOTH_LAYERS != 0 with an algo other
  *                                 than CVM_ALGO_AFLR (the error item is that option; mesh
- *                                 unchanged)
+ *                                 unchanged), or the sizing has a metric source
+ *                                 (cvm_sizing_set_metric_fn(): no refiner of this version
+ *                                 meshes to a metric; mesh unchanged)
  *         CVM_E_NOMEM             (the mesh keeps the points inserted before it and is valid)
  *         CVM_INCOMPLETE_STEINER_LIMIT, CVM_INCOMPLETE_TIME_LIMIT, CVM_INCOMPLETE_CANCELLED
  * @since 0.1
@@ -1202,6 +1445,26 @@ CVM_API cvm_status cvm_mesh_count(size_t *out, const cvm_mesh *m, cvm_entity kin
 CVM_API cvm_status cvm_mesh_copy_points(double *dst, size_t dst_len, const cvm_mesh *m);
 
 /**
+ * Copy vertex coordinates in the mesh's dimension: dim doubles per vertex.
+ *
+ * @param dst      receives dim * vertex count doubles; NULL only with dst_len 0.
+ * @param dst_len  capacity of dst in doubles.
+ * @param dim      the dimension the caller expects; must equal cvm_mesh_dim() (2 in this
+ *                 version), so code written for one dimension cannot misread another.
+ * @param m        mesh handle; not NULL.
+ * Units: length. Thread-safety: may run concurrently with other read-only calls on @p m.
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG          m is NULL, or dst is NULL while dst_len > 0
+ *         CVM_E_UNSUPPORTED       dim is 3 (no 3D meshes yet; later a dim that differs from
+ *                                 the mesh's is CVM_E_ARGUMENT)
+ *         CVM_E_ARGUMENT          dim is neither 2 nor 3
+ *         CVM_E_BUFFER_TOO_SMALL  (nothing written)
+ * (A const handle: no message is recorded; the status says what failed.)
+ * @since 0.2
+ */
+CVM_API cvm_status cvm_mesh_copy_points_nd(double *dst, size_t dst_len, int dim, const cvm_mesh *m);
+
+/**
  * Copy connectivity: CVM_ENT_TRIANGLE (3 ids each, counter-clockwise),
  * CVM_ENT_EDGE (2 ids, sorted by (lower, higher) id), CVM_ENT_SEGMENT (2 ids).
  * Order is deterministic for given input and options.
@@ -1213,12 +1476,97 @@ CVM_API cvm_status cvm_mesh_copy_cells(cvm_index *dst, size_t dst_len, const cvm
                                        cvm_entity kind);
 
 /**
+ * Cell type codes of cvm_mesh_copy_cells_mixed(). The values are VTK's cell type
+ * numbers, so the arrays go to VTK, meshio or PyVista unchanged. Values never change.
+ */
+typedef enum cvm_cell_type {
+    CVM_CELL_TRIANGLE = 5,     /**< 3 vertex ids, counter-clockwise */
+    CVM_CELL_POLYGON = 7,      /**< n vertex ids, counter-clockwise (reserved: dual cells) */
+    CVM_CELL_QUAD = 9,         /**< 4 vertex ids, counter-clockwise (reserved: quad meshing) */
+    CVM_CELL_TETRAHEDRON = 10, /**< 4 vertex ids, positively oriented (reserved: 3D kernel) */
+    CVM_CELL_POLYHEDRON = 42   /**< reserved: 3D dual cells; their connectivity will be
+                                    documented with them */
+} cvm_cell_type;
+
+/**
+ * Sizes of the arrays of cvm_mesh_copy_cells_mixed().
+ *
+ * @param ncells_out  receives the number of cells (offsets need ncells + 1 entries, types ncells).
+ * @param nconn_out   receives the total number of vertex ids over all cells.
+ * @param m           mesh handle; not NULL.
+ * @param kind        CVM_ENT_CELL: the cells of the mesh's dimension (this version: its
+ *                    triangles, in CVM_ENT_TRIANGLE order).
+ * Thread-safety: may run concurrently with other read-only calls on @p m.
+ * @return CVM_OK (counts 0 before triangulation)
+ *         CVM_E_NULL_ARG  a pointer is NULL
+ *         CVM_E_ARGUMENT  kind is not CVM_ENT_CELL
+ *         CVM_E_TOO_LARGE the ids exceed what cvm_index offsets can address
+ * @since 0.2
+ */
+CVM_API cvm_status cvm_mesh_count_cells_mixed(size_t *ncells_out, size_t *nconn_out,
+                                              const cvm_mesh *m, cvm_entity kind);
+
+/**
+ * Copy cells of several types in compressed form (as the dual cells are): cell c has
+ * type types[c] (a cvm_cell_type) and the vertex ids conn[offsets[c] .. offsets[c+1]-1];
+ * offsets[0] = 0 and offsets[ncells] = nconn (cvm_mesh_count_cells_mixed()). In this
+ * version every cell is a CVM_CELL_TRIANGLE, in CVM_ENT_TRIANGLE order; a program
+ * that reads the types works unchanged when quads and tetrahedra come.
+ *
+ * @param offsets      ncells + 1 entries; NULL only with offsets_len 0.
+ * @param offsets_len  capacity of offsets.
+ * @param types        ncells entries; NULL only with types_len 0.
+ * @param types_len    capacity of types.
+ * @param conn         nconn entries; NULL only with conn_len 0.
+ * @param conn_len     capacity of conn.
+ * @param m            mesh handle; not NULL.
+ * @param kind         CVM_ENT_CELL.
+ * Thread-safety: may run concurrently with other read-only calls on @p m.
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG          m is NULL, or an array is NULL while its capacity > 0
+ *         CVM_E_ARGUMENT          kind is not CVM_ENT_CELL
+ *         CVM_E_BUFFER_TOO_SMALL  an array is too short (nothing written to any)
+ *         CVM_E_TOO_LARGE         as cvm_mesh_count_cells_mixed()
+ * (A const handle: no message is recorded; the status says what failed.)
+ * @since 0.2
+ */
+CVM_API cvm_status cvm_mesh_copy_cells_mixed(cvm_index *offsets, size_t offsets_len,
+                                             int32_t *types, size_t types_len, cvm_index *conn,
+                                             size_t conn_len, const cvm_mesh *m, cvm_entity kind);
+
+/**
  * Copy the neighbours of each triangle: 3 per triangle, neighbour k lies
  * across the edge opposite vertex k, -1 on the domain boundary.
  * @return CVM_OK, CVM_E_NULL_ARG, CVM_E_BUFFER_TOO_SMALL, CVM_E_NOMEM
  * @since 0.1
  */
 CVM_API cvm_status cvm_mesh_copy_neighbors(cvm_index *dst, size_t dst_len, const cvm_mesh *m);
+
+/**
+ * Copy the neighbours of the cells of kind @p kind, -1 on the domain boundary.
+ * CVM_ENT_TRIANGLE: 3 per triangle, neighbour k across the edge opposite vertex k
+ * (as cvm_mesh_copy_neighbors()). CVM_ENT_CELL: one per face of each cell, in
+ * the layout of cvm_mesh_copy_cells_mixed() (the same offsets, since a triangle,
+ * quad, tetrahedron or polygon has as many faces as vertices), neighbours given as
+ * cell indices in that order; face k of a triangle or tetrahedron is opposite its
+ * vertex k, face k of a quad or polygon joins its vertices k and k+1 (mod n).
+ * CVM_ENT_TETRAHEDRON is reserved for the 3D kernel.
+ *
+ * @param dst      receives the neighbours; NULL only with dst_len 0.
+ * @param dst_len  capacity in entries; >= 3 x the triangle count (this version, both kinds).
+ * @param m        mesh handle; not NULL.
+ * @param kind     CVM_ENT_TRIANGLE or CVM_ENT_CELL.
+ * Thread-safety: may run concurrently with other read-only calls on @p m.
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG          m is NULL, or dst is NULL while dst_len > 0
+ *         CVM_E_ARGUMENT          another kind
+ *         CVM_E_UNSUPPORTED       kind is CVM_ENT_TETRAHEDRON (no 3D kernel yet)
+ *         CVM_E_BUFFER_TOO_SMALL  (nothing written)
+ *         CVM_E_NOMEM
+ * @since 0.2
+ */
+CVM_API cvm_status cvm_mesh_copy_cell_neighbors(cvm_index *dst, size_t dst_len, const cvm_mesh *m,
+                                                cvm_entity kind);
 
 /**
  * Copy integer markers: CVM_ENT_VERTEX (the input marker; a vertex whose
@@ -1239,6 +1587,25 @@ CVM_API cvm_status cvm_mesh_copy_markers(int32_t *dst, size_t dst_len, const cvm
  */
 CVM_API cvm_status cvm_mesh_copy_triangle_attributes(double *dst, size_t dst_len,
                                                      const cvm_mesh *m);
+
+/**
+ * Copy the regional attribute of each cell of kind @p kind (0 outside every
+ * region): CVM_ENT_TRIANGLE as cvm_mesh_copy_triangle_attributes(); CVM_ENT_CELL in
+ * the order of cvm_mesh_copy_cells_mixed().
+ *
+ * @param dst      one value per cell; NULL only with dst_len 0.
+ * @param dst_len  capacity in doubles.
+ * @param m        mesh handle; not NULL.
+ * @param kind     CVM_ENT_TRIANGLE or CVM_ENT_CELL.
+ * Thread-safety: may run concurrently with other read-only calls on @p m.
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG          m is NULL, or dst is NULL while dst_len > 0
+ *         CVM_E_ARGUMENT          another kind
+ *         CVM_E_BUFFER_TOO_SMALL  (nothing written)
+ * @since 0.2
+ */
+CVM_API cvm_status cvm_mesh_copy_cell_attributes(double *dst, size_t dst_len, const cvm_mesh *m,
+                                                 cvm_entity kind);
 
 /**
  * Copy the advancing-front layer index of each triangle (in CVM_ENT_TRIANGLE
@@ -1292,6 +1659,21 @@ CVM_API cvm_status cvm_mesh_copy_input_map(cvm_index *dst, size_t dst_len, const
  */
 CVM_API cvm_status cvm_mesh_view_points(const double **ptr_out, size_t *count_out,
                                         const cvm_mesh *m);
+
+/**
+ * Read-only view of the vertex coordinates in the mesh's dimension, without a copy.
+ *
+ * @param ptr_out    receives *dim_out doubles per vertex (NULL when there is none).
+ * @param count_out  receives the vertex count.
+ * @param dim_out    receives the mesh's dimension (cvm_mesh_dim(): 2 in this version).
+ * @param m          mesh handle; not NULL.
+ * Ownership: owned by @p m; valid until the next call that modifies @p m, or cvm_mesh_free().
+ * Thread-safety: may run concurrently with other read-only calls on @p m.
+ * @return CVM_OK, CVM_E_NULL_ARG (a pointer is NULL)
+ * @since 0.2
+ */
+CVM_API cvm_status cvm_mesh_view_points_nd(const double **ptr_out, size_t *count_out,
+                                           int32_t *dim_out, const cvm_mesh *m);
 
 /**
  * Write the mesh; the format follows the extension of @p path:
@@ -1388,6 +1770,26 @@ CVM_API cvm_status cvm_mesh_copy_weights(double *dst, size_t dst_len, const cvm_
  * @since 0.1
  */
 CVM_API cvm_status cvm_mesh_copy_dual_vertices(double *dst, size_t dst_len, const cvm_mesh *m);
+
+/**
+ * cvm_mesh_copy_dual_vertices() in the mesh's dimension: dim doubles per cell
+ * (the power vertex of each triangle, in CVM_ENT_TRIANGLE order).
+ *
+ * @param dst      NULL only with dst_len 0.
+ * @param dst_len  capacity in doubles; >= dim x the cell count.
+ * @param dim      must equal cvm_mesh_dim() (see cvm_mesh_copy_points_nd()).
+ * @param m        mesh handle; not NULL.
+ * Units: length. A construction: plain doubles.
+ * Thread-safety: may run concurrently with other read-only calls on @p m.
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG          m is NULL, or dst is NULL while dst_len > 0
+ *         CVM_E_UNSUPPORTED       dim is 3 (no 3D meshes yet)
+ *         CVM_E_ARGUMENT          dim is neither 2 nor 3
+ *         CVM_E_BUFFER_TOO_SMALL  (nothing written)
+ * @since 0.2
+ */
+CVM_API cvm_status cvm_mesh_copy_dual_vertices_nd(double *dst, size_t dst_len, int dim,
+                                                  const cvm_mesh *m);
 
 /**
  * Copy, per triangle in CVM_ENT_TRIANGLE order, 1 when the triangle contains its
@@ -1647,7 +2049,9 @@ CVM_API cvm_status cvm_mesh_copy_dual_merge_groups(cvm_index *dst, size_t dst_le
  *         CVM_E_NULL_ARG           m is NULL
  *         CVM_E_STATE              nothing triangulated
  *         CVM_E_UNSUPPORTED        CVM_OPT_DUAL_PREPASS or CVM_OPT_DUAL_MAXMIN_TRIALS set with
- *                                  CVM_OPT_DUAL_TOPOLOGY 0 (error item: that option; mesh unchanged)
+ *                                  CVM_OPT_DUAL_TOPOLOGY 0 (error item: that option; mesh unchanged),
+ *                                  or the sizing has a metric source (cvm_sizing_set_metric_fn();
+ *                                  mesh unchanged)
  *         CVM_E_ARGUMENT           the sizing callback returned a value <= 0 (message
  *                                  gives the position)
  *         CVM_E_INPUT_NONFINITE    the sizing callback returned NaN or infinity
@@ -1661,7 +2065,13 @@ CVM_API cvm_status cvm_mesh_optimise_dual(cvm_mesh *m, const cvm_sizing *sizing)
 /* Quality                                                                   */
 /* ------------------------------------------------------------------------ */
 
-/** Scalar quality measures of cvm_mesh_get_measure(). Values never change. */
+/**
+ * Scalar quality measures of cvm_mesh_get_measure(). Values never change.
+ * Most are measures of the current mesh; 11-16 and 40-49 are reports of the last
+ * run (what it asked for and did), which cvm_mesh_get_report() reads under the
+ * names of cvm_report. New measures of the mesh use the free numbers below 100;
+ * 700-799 are reserved for 3D measures, 800-899 for quad measures.
+ */
 typedef enum cvm_measure {
     CVM_MEASURE_MIN_ANGLE_DEG = 1,      /**< smallest triangle angle, degrees */
     CVM_MEASURE_MAX_ANGLE_DEG = 2,      /**< largest triangle angle, degrees */
@@ -1801,6 +2211,53 @@ typedef enum cvm_histogram {
  * @since 0.1
  */
 CVM_API cvm_status cvm_mesh_get_measure(double *out, cvm_mesh *m, cvm_measure which);
+
+/**
+ * Reports of the last run of a meshing call on the handle, read with
+ * cvm_mesh_get_report(): what a run asked for and did, as opposed to the
+ * measures of the mesh (cvm_measure), which depend only on the current mesh.
+ * The values equal those of the CVM_MEASURE_* of the same name, which
+ * cvm_mesh_get_measure() keeps accepting. Blocks: 11-16 and 40-49 as below,
+ * 700-799 reserved for the 3D kernel's runs, 800-899 for quad meshing.
+ * Values never change.
+ */
+typedef enum cvm_report {
+    /* the last cvm_mesh_refine() (0 before any refinement, and after cvm_mesh_triangulate()) */
+    CVM_REPORT_REFINE_STEINER = 11,           /**< = CVM_MEASURE_REFINE_STEINER */
+    CVM_REPORT_REFINE_UNMET_ANGLE = 12,       /**< = CVM_MEASURE_REFINE_UNMET_ANGLE */
+    CVM_REPORT_REFINE_UNMET_SIZE = 13,        /**< = CVM_MEASURE_REFINE_UNMET_SIZE */
+    CVM_REPORT_REFINE_SMALL_INPUT_ANGLE = 14, /**< = CVM_MEASURE_REFINE_SMALL_INPUT_ANGLE */
+    CVM_REPORT_REFINE_REQUESTED_ANGLE = 15,   /**< = CVM_MEASURE_REFINE_REQUESTED_ANGLE */
+    CVM_REPORT_REFINE_MET_ANGLE = 16,         /**< = CVM_MEASURE_REFINE_MET_ANGLE */
+    /* the last cvm_mesh_optimise_dual() (0 before any, and after cvm_mesh_triangulate()) */
+    CVM_REPORT_DUAL_OPT_SWEEPS = 40,          /**< = CVM_MEASURE_DUAL_OPT_SWEEPS */
+    CVM_REPORT_DUAL_OPT_NONCOMPLIANT_BEFORE_PCT = 41, /**< = CVM_MEASURE_DUAL_OPT_NONCOMPLIANT_BEFORE_PCT */
+    CVM_REPORT_DUAL_OPT_NONCOMPLIANT_AFTER_PCT = 42,  /**< = CVM_MEASURE_DUAL_OPT_NONCOMPLIANT_AFTER_PCT */
+    CVM_REPORT_DUAL_OPT_MOVES = 43,           /**< = CVM_MEASURE_DUAL_OPT_MOVES */
+    CVM_REPORT_DUAL_OPT_FLIPS = 44,           /**< = CVM_MEASURE_DUAL_OPT_FLIPS */
+    CVM_REPORT_DUAL_OPT_WEIGHT_FIXES = 45,    /**< = CVM_MEASURE_DUAL_OPT_WEIGHT_FIXES */
+    CVM_REPORT_DUAL_OPT_SECONDS = 46,         /**< = CVM_MEASURE_DUAL_OPT_SECONDS (wall time:
+                                                   the one report that is not deterministic) */
+    CVM_REPORT_DUAL_OPT_REMOVED_VANISHED = 47,/**< = CVM_MEASURE_DUAL_OPT_REMOVED_VANISHED */
+    CVM_REPORT_DUAL_OPT_REMOVED_DEGREE = 48,  /**< = CVM_MEASURE_DUAL_OPT_REMOVED_DEGREE */
+    CVM_REPORT_DUAL_OPT_REMOVED_MAXMIN = 49   /**< = CVM_MEASURE_DUAL_OPT_REMOVED_MAXMIN */
+} cvm_report;
+
+/**
+ * Read report @p which of the last run (see cvm_report). Reports are kept with
+ * the handle; reading one computes nothing and needs no triangles.
+ *
+ * @param out    receives the value.
+ * @param m      mesh handle; not NULL.
+ * @param which  a cvm_report value.
+ * Thread-safety: may run concurrently with other read-only calls on @p m.
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG  out or m is NULL
+ *         CVM_E_ARGUMENT  which is not a report (a measure of the mesh is read with
+ *                         cvm_mesh_get_measure())
+ * @since 0.2
+ */
+CVM_API cvm_status cvm_mesh_get_report(double *out, const cvm_mesh *m, cvm_report which);
 
 /**
  * Copy histogram @p which as counts (doubles, so one typemap serves all outputs).

@@ -171,6 +171,9 @@ CVMPY_OUT_SCALAR(size_t, nattr_out, PyLong_FromSize_t)
 CVMPY_OUT_SCALAR(double, out, PyFloat_FromDouble)
 CVMPY_OUT_SCALAR(int64_t, index_out, PyLong_FromLongLong)
 CVMPY_OUT_SCALAR(cvm_entity, kind_out, PyLong_FromLong)
+CVMPY_OUT_SCALAR(int32_t, out, PyLong_FromLong)
+CVMPY_OUT_SCALAR(size_t, ncells_out, PyLong_FromSize_t)
+CVMPY_OUT_SCALAR(size_t, nconn_out, PyLong_FromSize_t)
 
 %{
 /* (lo, hi, default, is_integer) */
@@ -206,6 +209,9 @@ CVMPY_HANDLE_OUT(cvm_sizing)
 %ignore cvm_sizing_free;
 %ignore cvm_sizing_errmsg;
 %ignore cvm_sizing_set_callback;
+%ignore cvm_mesh_insert_points_nd;
+%ignore cvm_sizing_set_callback_nd;
+%ignore cvm_sizing_set_metric_fn;
 %rename(cvm_mesh_free) cvmpy_mesh_free;
 %rename(cvm_mesh_errmsg) cvmpy_mesh_errmsg;
 %rename(cvm_mesh_set_progress) cvmpy_set_progress;
@@ -213,6 +219,9 @@ CVMPY_HANDLE_OUT(cvm_sizing)
 %rename(cvm_sizing_free) cvmpy_sizing_free;
 %rename(cvm_sizing_errmsg) cvmpy_sizing_errmsg;
 %rename(cvm_sizing_set_callback) cvmpy_sizing_set_callback;
+%rename(cvm_mesh_insert_points_nd) cvmpy_insert_points_nd;
+%rename(cvm_sizing_set_callback_nd) cvmpy_sizing_set_callback_nd;
+%rename(cvm_sizing_set_metric_fn) cvmpy_sizing_set_metric_fn;
 /* Allocation hooks are C function pointers; there is nothing to pass from Python. */
 %ignore cvm_mesh_create_with_allocator;
 %ignore cvm_malloc_fn;
@@ -224,6 +233,7 @@ CVMPY_HANDLE_OUT(cvm_sizing)
  * dict per handle type), so each stays alive as long as it is installed. */
 static PyObject *cvmpy_progress_fns = NULL;
 static PyObject *cvmpy_sizing_fns = NULL;
+static PyObject *cvmpy_metric_fns = NULL;
 
 /* Keep fn (NULL: forget) for handle h in *registry; 0, or -1 with an exception. */
 static int cvmpy_keep(PyObject **registry, const void *h, PyObject *fn)
@@ -301,6 +311,73 @@ static double cvmpy_sizing_trampoline(void *payload, double x, double y)
     PyGILState_Release(g);
     return h;
 }
+
+/* A new float64 array holding the dim coordinates of x, or NULL with an exception. */
+static PyObject *cvmpy_point_array(const double *x, int dim)
+{
+    npy_intp n = (npy_intp)dim;
+    PyArrayObject *a = (PyArrayObject *)PyArray_SimpleNew(1, &n, NPY_DOUBLE);
+    if (a && dim > 0)
+        memcpy(PyArray_DATA(a), x, (size_t)dim * sizeof(double));
+    return (PyObject *)a;
+}
+
+/* The C sizing function behind a Python callback(x) -> float of the
+ * dimension-generic setter; errors as cvmpy_sizing_trampoline. */
+static double cvmpy_sizing_nd_trampoline(void *payload, const double *x, int dim)
+{
+    PyGILState_STATE g = PyGILState_Ensure();
+    double h = Py_NAN;
+    if (!PyErr_Occurred()) {
+        PyObject *p = cvmpy_point_array(x, dim);
+        PyObject *r = p ? PyObject_CallFunctionObjArgs((PyObject *)payload, p, NULL) : NULL;
+        Py_XDECREF(p);
+        if (r) {
+            h = PyFloat_AsDouble(r);
+            if (h == -1.0 && PyErr_Occurred())
+                h = Py_NAN;
+            Py_DECREF(r);
+        }
+    }
+    PyGILState_Release(g);
+    return h;
+}
+
+/*
+ * The C metric function behind a Python callback(x) -> dim*(dim+1)/2 floats
+ * (upper triangle, row by row), or None to refuse the point. An exception
+ * refuses the point and is re-raised by the wrapper. Derivatives are never
+ * asked of a Python metric (it is installed with has_derivatives = 0).
+ */
+static int cvmpy_metric_trampoline(void *payload, const double *x, int dim, double *gout,
+                                   double *dg)
+{
+    PyGILState_STATE gil = PyGILState_Ensure();
+    int refused = 1;
+    (void)dg;
+    if (!PyErr_Occurred()) {
+        PyObject *p = cvmpy_point_array(x, dim);
+        PyObject *r = p ? PyObject_CallFunctionObjArgs((PyObject *)payload, p, NULL) : NULL;
+        Py_XDECREF(p);
+        if (r && r != Py_None) {
+            npy_intp want = (npy_intp)(dim * (dim + 1) / 2);
+            PyArrayObject *a = (PyArrayObject *)PyArray_FROMANY(r, NPY_DOUBLE, 0, 1,
+                                                                NPY_ARRAY_IN_ARRAY);
+            if (a && PyArray_SIZE(a) == want) {
+                memcpy(gout, PyArray_DATA(a), (size_t)want * sizeof(double));
+                refused = 0;
+            } else if (a) {
+                PyErr_Format(PyExc_ValueError, "the metric callback must return %ld values "
+                             "(the upper triangle of the tensor), got %ld", (long)want,
+                             (long)PyArray_SIZE(a));
+            }
+            Py_XDECREF(a);
+        }
+        Py_XDECREF(r);
+    }
+    PyGILState_Release(gil);
+    return refused;
+}
 %}
 
 %inline %{
@@ -352,6 +429,8 @@ void cvmpy_sizing_free(cvm_sizing *handle)
 {
     if (handle && cvmpy_keep(&cvmpy_sizing_fns, handle, NULL) < 0)
         PyErr_Clear();
+    if (handle && cvmpy_keep(&cvmpy_metric_fns, handle, NULL) < 0)
+        PyErr_Clear();
     cvm_sizing_free(handle);
 }
 
@@ -378,6 +457,42 @@ cvm_status cvmpy_sizing_set_callback(cvm_sizing *s, PyObject *callback)
         return CVM_E_NOMEM;
     return st;
 }
+
+/*
+ * Set callback(x) -> float, x a float64 array of the mesh's dimension, as the
+ * sizing function of s (None removes it); it replaces a callback(x, y).
+ */
+cvm_status cvmpy_sizing_set_callback_nd(cvm_sizing *s, PyObject *callback)
+{
+    cvm_status st;
+    PyObject *fn = callback != Py_None ? callback : NULL;
+    if (fn && !PyCallable_Check(fn)) {
+        PyErr_SetString(PyExc_TypeError, "sizing callback must be callable or None");
+        return CVM_E_ARGUMENT;
+    }
+    st = cvm_sizing_set_callback_nd(s, fn ? cvmpy_sizing_nd_trampoline : NULL, (void *)fn);
+    if (st == CVM_OK && cvmpy_keep(&cvmpy_sizing_fns, s, fn) < 0)
+        return CVM_E_NOMEM;
+    return st;
+}
+
+/*
+ * Set callback(x) -> (g11, g12, g22) (None: the point is refused) as the
+ * metric source of s (None removes it). See cvm_sizing_set_metric_fn().
+ */
+cvm_status cvmpy_sizing_set_metric_fn(cvm_sizing *s, PyObject *callback)
+{
+    cvm_status st;
+    PyObject *fn = callback != Py_None ? callback : NULL;
+    if (fn && !PyCallable_Check(fn)) {
+        PyErr_SetString(PyExc_TypeError, "metric callback must be callable or None");
+        return CVM_E_ARGUMENT;
+    }
+    st = cvm_sizing_set_metric_fn(s, fn ? cvmpy_metric_trampoline : NULL, 0, (void *)fn);
+    if (st == CVM_OK && cvmpy_keep(&cvmpy_metric_fns, s, fn) < 0)
+        return CVM_E_NOMEM;
+    return st;
+}
 %}
 
 %typemap(in, numinputs=0) PyObject **ids_out (PyObject *tmp = NULL) {
@@ -391,6 +506,9 @@ cvm_status cvmpy_sizing_set_callback(cvm_sizing *s, PyObject *callback)
 }
 %typemap(freearg) PyObject **ids_out { Py_XDECREF(tmp$argnum); }
 %typemap(out) cvm_status cvmpy_insert_points {
+    $result = cvmpy_status_result($1, 1);
+}
+%typemap(out) cvm_status cvmpy_insert_points_nd {
     $result = cvmpy_status_result($1, 1);
 }
 %inline %{
@@ -411,6 +529,24 @@ cvm_status cvmpy_insert_points(PyObject **ids_out, cvm_mesh *m, const double *xy
     ids = (cvm_index *)PyArray_DATA(a);
     Py_BEGIN_ALLOW_THREADS
     s = cvm_mesh_insert_points(ids, m, xy, count, min_dist);
+    Py_END_ALLOW_THREADS
+    *ids_out = (PyObject *)a;
+    return s;
+}
+
+/* cvm_mesh_insert_points_nd() returning (status, ids), as cvmpy_insert_points. */
+cvm_status cvmpy_insert_points_nd(PyObject **ids_out, cvm_mesh *m, const double *coords,
+                                  size_t count, int dim, double min_dist)
+{
+    cvm_status s;
+    npy_intp n = (npy_intp)count;
+    cvm_index *ids;
+    PyArrayObject *a = (PyArrayObject *)PyArray_ZEROS(1, &n, NPY_INT32, 0);
+    if (!a)
+        return CVM_E_NOMEM;
+    ids = (cvm_index *)PyArray_DATA(a);
+    Py_BEGIN_ALLOW_THREADS
+    s = cvm_mesh_insert_points_nd(ids, m, coords, count, dim, min_dist);
     Py_END_ALLOW_THREADS
     *ids_out = (PyObject *)a;
     return s;

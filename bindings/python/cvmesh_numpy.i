@@ -9,6 +9,9 @@
  *   (const double *attrs, size_t count, size_t nattr) (n, k) float64 attributes
  *   (const double *xy, size_t count)                  (k, 2) float64 points
  *   (const double *r, size_t count)                   (k, 4) float64 regions
+ *   (const double *r, size_t count, int dim)          (k, d + 2) float64 regions
+ *   (const double *x, int dim)                        (d,) float64 point
+ *   (const double *ends, int dim)                     (2, d) float64 segment ends
  *   (const cvm_index *segs, size_t count)             (m, 2) integer pairs
  *   (const int32_t *markers, size_t count)            (n,) integers
  * Any array-like is accepted; it is converted without a Python loop. Integer
@@ -21,6 +24,7 @@
  *   (double *dst, size_t dst_len)      float64
  *   (cvm_index *dst, size_t dst_len)   int32
  *   (int32_t *dst, size_t dst_len)     int32
+ *   (offsets, offsets_len), (types, types_len), (conn, conn_len)   int32, in that order
  *
  * Every typemap returns its output only when the call did not fail
  * ($result is NULL after an error status; see cvmesh.i) and releases its
@@ -267,6 +271,42 @@ static PyArrayObject *cvmpy_out_array(PyObject *obj, int typenum, const char *wh
 }
 %typemap(freearg) (const double *attrs, size_t count, size_t nattr) { Py_XDECREF(arr$argnum); }
 
+/* Regions in the mesh's dimension: (k, dim + 2) rows (point, attribute, max measure). */
+%typemap(in, fragment="cvmpy_numpy") (const double *r, size_t count, int dim)
+    (PyArrayObject *arr = NULL) {
+    arr = cvmpy_in_double($input, -1, "regions");
+    if (!arr)
+        SWIG_fail;
+    $2 = cvmpy_rows(arr);
+    $1 = $2 ? (double *)PyArray_DATA(arr) : NULL;
+    $3 = $2 ? (int)cvmpy_cols(arr) - 2 : 2;
+}
+%typemap(freearg) (const double *r, size_t count, int dim) { Py_XDECREF(arr$argnum); }
+
+/* One point in the mesh's dimension: a 1-D array of dim coordinates. */
+%typemap(in, fragment="cvmpy_numpy") (const double *x, int dim) (PyArrayObject *arr = NULL) {
+    arr = cvmpy_in_double($input, 0, "x");
+    if (!arr)
+        SWIG_fail;
+    $1 = (double *)PyArray_DATA(arr);
+    $2 = (int)PyArray_DIM(arr, 0);
+}
+%typemap(freearg) (const double *x, int dim) { Py_XDECREF(arr$argnum); }
+
+/* The two ends of a line source: a (2, dim) array. */
+%typemap(in, fragment="cvmpy_numpy") (const double *ends, int dim) (PyArrayObject *arr = NULL) {
+    arr = cvmpy_in_double($input, -1, "ends");
+    if (!arr)
+        SWIG_fail;
+    if (cvmpy_rows(arr) != 2) {
+        PyErr_SetString(PyExc_ValueError, "ends must have shape (2, dim)");
+        SWIG_fail;
+    }
+    $1 = (double *)PyArray_DATA(arr);
+    $2 = (int)cvmpy_cols(arr);
+}
+%typemap(freearg) (const double *ends, int dim) { Py_XDECREF(arr$argnum); }
+
 /* CVMPY_IN_ROWS(CTYPE, NAME, CONVERT, NCOLS, WHAT): (const CTYPE *NAME, size_t count). */
 %define CVMPY_IN_ROWS(CTYPE, NAME, CONVERT, NCOLS, WHAT)
 %typemap(in, fragment="cvmpy_numpy") (const CTYPE *NAME, size_t count) (PyArrayObject *arr = NULL) {
@@ -324,6 +364,29 @@ CVMPY_OUT_ARRAY(double, NPY_DOUBLE)
 CVMPY_OUT_ARRAY(cvm_index, NPY_INT32)
 CVMPY_OUT_ARRAY(int32_t, NPY_INT32)
 
+/* CVMPY_OUT_ARRAY_N(CTYPE, NAME, LEN, NPYTYPE): (CTYPE *NAME, size_t LEN), for calls
+ * with several output arrays (cvm_mesh_copy_cells_mixed); returned in order. */
+%define CVMPY_OUT_ARRAY_N(CTYPE, NAME, LEN, NPYTYPE)
+%typemap(in, fragment="cvmpy_numpy") (CTYPE *NAME, size_t LEN) (PyArrayObject *arr = NULL) {
+    arr = cvmpy_out_array($input, NPYTYPE, "$symname");
+    if (!arr)
+        SWIG_fail;
+    $1 = (CTYPE *)PyArray_DATA(arr);
+    $2 = (size_t)PyArray_SIZE(arr);
+}
+%typemap(argout) (CTYPE *NAME, size_t LEN) {
+    if ($result) {
+        $result = cvmpy_append($result, (PyObject *)arr$argnum);
+        arr$argnum = NULL;
+    }
+}
+%typemap(freearg) (CTYPE *NAME, size_t LEN) { Py_XDECREF(arr$argnum); }
+%enddef
+
+CVMPY_OUT_ARRAY_N(cvm_index, offsets, offsets_len, NPY_INT32)
+CVMPY_OUT_ARRAY_N(int32_t, types, types_len, NPY_INT32)
+CVMPY_OUT_ARRAY_N(cvm_index, conn, conn_len, NPY_INT32)
+
 /* Read-only views are returned as (n, 2) copies: a view into the handle
  * would dangle after the next call that modifies it. */
 %typemap(in, numinputs=0) (const double **ptr_out, size_t *count_out)
@@ -340,6 +403,27 @@ CVMPY_OUT_ARRAY(int32_t, NPY_INT32)
         a = (PyArrayObject *)PyArray_SimpleNew(2, dims, NPY_DOUBLE);
         if (a && cnt$argnum)
             memcpy(PyArray_DATA(a), ptr$argnum, 2 * cnt$argnum * sizeof(double));
+        $result = cvmpy_append($result, (PyObject *)a);
+    }
+}
+
+/* The same in the mesh's dimension: an (n, dim) copy, and dim itself is in its shape. */
+%typemap(in, numinputs=0) (const double **ptr_out, size_t *count_out, int32_t *dim_out)
+    (const double *ptr = NULL, size_t cnt = 0, int32_t dim = 0) {
+    $1 = ($1_ltype)&ptr;
+    $2 = &cnt;
+    $3 = &dim;
+}
+%typemap(argout, fragment="cvmpy_numpy") (const double **ptr_out, size_t *count_out,
+                                          int32_t *dim_out) {
+    if ($result) {
+        npy_intp dims[2];
+        PyArrayObject *a;
+        dims[0] = (npy_intp)cnt$argnum;
+        dims[1] = (npy_intp)dim$argnum;
+        a = (PyArrayObject *)PyArray_SimpleNew(2, dims, NPY_DOUBLE);
+        if (a && cnt$argnum)
+            memcpy(PyArray_DATA(a), ptr$argnum, (size_t)dims[0] * (size_t)dims[1] * sizeof(double));
         $result = cvmpy_append($result, (PyObject *)a);
     }
 }

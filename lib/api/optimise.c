@@ -88,6 +88,8 @@ cvm_status cvm_mesh_optimise_dual(cvm_mesh *m, const cvm_sizing *sizing)
     if (!m)
         return CVM_E_NULL_ARG;
     CVM__BEGIN(m);
+    if (cvm__sizing_refuse_metric(m, sizing, "cvm_mesh_optimise_dual()"))
+        return CVM_E_UNSUPPORTED;
     cvm__mesh_forget_layers(m);
     if (!m->triangulated || !cvm__domain_triangles(&m->tri))
         return cvm__error(&m->ctx, CVM_E_STATE, CVM_ENT_NONE, -1,

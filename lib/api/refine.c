@@ -264,6 +264,8 @@ cvm_status cvm_mesh_refine(cvm_mesh *m, const cvm_sizing *sizing, cvm_algorithm 
                           "only CVM_ALGO_AFLR has layers (set it to 0 for %s)",
                           cvm__opt(m, CVM_OPT_AFLR_SMOOTH_LAYERS),
                           algo == CVM_ALGO_FRONTAL ? "CVM_ALGO_FRONTAL" : "CVM_ALGO_DELAUNAY");
+    if (cvm__sizing_refuse_metric(m, sizing, "cvm_mesh_refine()"))
+        return CVM_E_UNSUPPORTED;
     memset(m->refine_report, 0, sizeof m->refine_report);
     cvm__free(&m->ctx, m->refine_unmet);
     m->refine_unmet = NULL;

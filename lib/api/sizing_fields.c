@@ -48,6 +48,16 @@ cvm_status cvm__sizing_fields_begin(cvm_mesh *m, const cvm_sizing *sizing, cvm__
     return CVM_OK;
 }
 
+cvm_status cvm__sizing_refuse_metric(cvm_mesh *m, const cvm_sizing *sizing, const char *call)
+{
+    if (!cvm__sizing_has_metric(sizing))
+        return CVM_OK;
+    return cvm__error(&m->ctx, CVM_E_UNSUPPORTED, CVM_ENT_NONE, -1,
+                      "%s does not mesh to a metric (tensor) source yet: remove it with "
+                      "cvm_sizing_set_metric_fn(s, NULL, 0, NULL) or use a sizing without one",
+                      call);
+}
+
 void cvm__sizing_fields_end(cvm_mesh *m, cvm__sizing_fields *F)
 {
     cvm__auto_field_free(&F->autof, &m->ctx);

@@ -19,4 +19,9 @@ cvm_status cvm__sizing_fields_begin(cvm_mesh *m, const cvm_sizing *sizing, cvm__
                                     const cvm_sizing **use);
 void cvm__sizing_fields_end(cvm_mesh *m, cvm__sizing_fields *F);
 
+/* CVM_E_UNSUPPORTED with a message on m naming call when sizing has a metric
+ * source (no meshing call of this version uses one, and none may ignore it);
+ * else CVM_OK. */
+cvm_status cvm__sizing_refuse_metric(cvm_mesh *m, const cvm_sizing *sizing, const char *call);
+
 #endif

@@ -77,8 +77,12 @@ struct cvm_sizing {
     size_t npts, cap_pts;
     cvm__line_source *lines;
     size_t nlines, cap_lines;
-    cvm_sizing_fn fn;
+    cvm_sizing_fn fn;     /* the user function: fn or fn_nd, never both */
+    cvm_sizing_nd_fn fn_nd;
     void *fn_payload;
+    cvm_metric_fn metric; /* cvm_sizing_set_metric_fn(); no refiner reads it yet */
+    void *metric_payload;
+    int metric_has_dg;
     int has_auto;         /* cvm_sizing_set_automatic() */
     double auto_R, auto_G;
     cvm__background *bg;  /* NULL, or cvm_sizing_set_background() */
@@ -110,6 +114,9 @@ void cvm__background_free(cvm__background *bg, cvm__ctx *ctx);
 
 /* 1 when s is NULL or has no source (no size bound). */
 int cvm__sizing_is_empty(const cvm_sizing *s);
+
+/* 1 when s has a metric source (sizing_nd.c). */
+int cvm__sizing_has_metric(const cvm_sizing *s);
 
 /* Size at (x, y) into *h (+infinity without sources). A bad callback value
  * records an error naming the callback and the position on err and returns

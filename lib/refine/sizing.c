@@ -148,6 +148,7 @@ cvm_status cvm_sizing_set_callback(cvm_sizing *s, cvm_sizing_fn fn, void *payloa
         return CVM_E_NULL_ARG;
     cvm__clear_error(&s->ctx);
     s->fn = fn;
+    s->fn_nd = NULL;
     s->fn_payload = fn ? payload : NULL;
     return CVM_OK;
 }
@@ -193,7 +194,8 @@ cvm_status cvm_sizing_set_boundary_grading(cvm_sizing *s, double g)
 
 int cvm__sizing_is_empty(const cvm_sizing *s)
 {
-    return !s || (!s->has_uniform && s->npts == 0 && s->nlines == 0 && !s->fn && !s->has_auto &&
+    return !s || (!s->has_uniform && s->npts == 0 && s->nlines == 0 && !s->fn && !s->fn_nd &&
+                  !s->has_auto &&
                   !s->bg && !(s->bgrad > 0));
 }
 
@@ -243,8 +245,12 @@ cvm_status cvm__sizing_at(const cvm_sizing *s, double x, double y, double *h, cv
         best = cvm__auto_field_below(s->autof, x, y, best);
     if (s->spacingf)
         best = cvm__auto_field_below(s->spacingf, x, y, best);
-    if (s->fn) {
-        double d = s->fn(s->fn_payload, x, y);
+    if (s->fn || s->fn_nd) {
+        double p[2];
+        double d;
+        p[0] = x;
+        p[1] = y;
+        d = s->fn ? s->fn(s->fn_payload, x, y) : s->fn_nd(s->fn_payload, p, 2);
         if (!isfinite(d))
             return cvm__error(err, CVM_E_INPUT_NONFINITE, CVM_ENT_NONE, -1,
                               "the sizing callback returned a non-finite size at (%.17g, %.17g)",

@@ -33,7 +33,7 @@ from ._errors import (ArgumentError, Error, FileError, IncompleteWarning,
 
 __all__ = [
     "Mesh", "Sizing", "Quality", "Bounds", "Status", "Option", "Entity", "Measure",
-    "Histogram", "Stage", "Algorithm", "option_bounds", "version", "Error", "ArgumentError",
+    "Report", "CellType", "Histogram", "Stage", "Algorithm", "option_bounds", "version", "Error", "ArgumentError",
     "OptionError", "InputError", "StateError", "UnsupportedError", "FileError",
     "NoMemoryError", "InternalError", "IncompleteWarning", "error_class",
 ]
@@ -65,6 +65,11 @@ Entity = enum.IntEnum("Entity", _constants(("CVM_ENT_",), 8), module=__name__)
 Entity.__doc__ = "Kinds of mesh entities (cvm_entity)."
 Measure = enum.IntEnum("Measure", _constants(("CVM_MEASURE_",), 12), module=__name__)
 Measure.__doc__ = "Scalar quality measures (cvm_measure)."
+Report = enum.IntEnum("Report", _constants(("CVM_REPORT_",), 11), module=__name__)
+Report.__doc__ = "Reports of the last run of a meshing call (cvm_report; Mesh.report())."
+CellType = enum.IntEnum("CellType", _constants(("CVM_CELL_",), 9), module=__name__)
+CellType.__doc__ = ("Cell type codes of Mesh.cells_mixed() (cvm_cell_type); the values "
+                    "are VTK's cell types.")
 Histogram = enum.IntEnum("Histogram", _constants(("CVM_HIST_",), 9), module=__name__)
 Histogram.__doc__ = "Quality histograms (cvm_histogram)."
 Stage = enum.IntEnum("Stage", _constants(("CVM_STAGE_",), 10), module=__name__)
@@ -296,6 +301,18 @@ class Mesh:
         with self._handle() as m:
             capi.cvm_mesh_set_regions(m, regions)
 
+    def set_holes_nd(self, holes):
+        """Set hole seed points in the mesh's dimension ((k, dim) array-like;
+        dim 2 in this version, 3 raises UnsupportedError)."""
+        with self._handle() as m:
+            capi.cvm_mesh_set_holes_nd(m, holes)
+
+    def set_regions_nd(self, regions):
+        """Set regions in the mesh's dimension: (r, dim + 2) rows (point,
+        attribute, largest cell measure; <= 0 no bound)."""
+        with self._handle() as m:
+            capi.cvm_mesh_set_regions_nd(m, regions)
+
     def load(self, path):
         """Replace the input by a Triangle .poly or .node file; a .vtu file
         replaces the mesh too (triangulated, with its weights)."""
@@ -381,6 +398,13 @@ class Mesh:
         closer than min_dist to an existing vertex."""
         with self._handle() as m, self._progress_installed(m, progress, every):
             code, ids = capi.cvm_mesh_insert_points(m, xy, float(min_dist))
+            self._finish(code)
+            return ids
+
+    def insert_points_nd(self, points, min_dist=0.0, progress=None, every=None):
+        """insert_points() with (k, dim) points in the mesh's dimension."""
+        with self._handle() as m, self._progress_installed(m, progress, every):
+            code, ids = capi.cvm_mesh_insert_points_nd(m, points, float(min_dist))
             self._finish(code)
             return ids
 
@@ -471,6 +495,55 @@ class Mesh:
             kind = Entity[kind.upper()]
         with self._handle() as m:
             return capi.cvm_mesh_count(m, int(kind))
+
+    @property
+    def dim(self):
+        """Dimension of the mesh: coordinates per point (2 in this version)."""
+        with self._handle() as m:
+            return capi.cvm_mesh_dim(m)
+
+    @property
+    def points_nd(self):
+        """(n, dim) float64 vertex coordinates in the mesh's dimension (a copy)."""
+        with self._handle() as m:
+            return capi.cvm_mesh_view_points_nd(m)
+
+    def cells_mixed(self, kind=None):
+        """Cells of several types as (offsets, types, conn) int32 arrays: cell c
+        has type types[c] (a CellType, VTK's numbering) and the vertex ids
+        conn[offsets[c]:offsets[c + 1]]. kind: Entity.CELL (the default)."""
+        kind = Entity.CELL if kind is None else kind
+        with self._handle() as m:
+            nc, nconn = capi.cvm_mesh_count_cells_mixed(m, int(kind))
+            return tuple(capi.cvm_mesh_copy_cells_mixed(nc + 1, nc, nconn, m, int(kind)))
+
+    def cell_neighbors(self, kind=None):
+        """Neighbour of each cell across each face, -1 on the boundary, in the
+        layout of cells_mixed() (kind Entity.CELL, the default: a flat int32
+        array) or, for Entity.TRIANGLE, as the (m, 3) array of neighbors."""
+        kind = Entity.CELL if kind is None else kind
+        with self._handle() as m:
+            nc, nconn = capi.cvm_mesh_count_cells_mixed(m, Entity.CELL)
+            nb = capi.cvm_mesh_copy_cell_neighbors(nconn, m, int(kind))
+        return nb.reshape(-1, 3) if kind == Entity.TRIANGLE else nb
+
+    def cell_attributes(self, kind=None):
+        """(cells,) float64 regional attribute of each cell (kind as cell_neighbors)."""
+        kind = Entity.CELL if kind is None else kind
+        with self._handle() as m:
+            nc, _ = capi.cvm_mesh_count_cells_mixed(m, Entity.CELL)
+            return capi.cvm_mesh_copy_cell_attributes(nc, m, int(kind))
+
+    def report(self, which):
+        """Report of the last run (a Report or its name, e.g. 'refine_steiner')."""
+        if isinstance(which, str):
+            which = Report[which.upper()]
+        with self._handle() as m:
+            return capi.cvm_mesh_get_report(m, int(which))
+
+    def reports(self):
+        """{name: value} of every Report of the last runs."""
+        return {r.name.lower(): self.report(r) for r in Report}
 
     def _cells(self, kind, width):
         with self._handle() as m:
@@ -589,6 +662,14 @@ class Mesh:
         with self._handle() as m:
             n = capi.cvm_mesh_count(m, Entity.TRIANGLE)
             return capi.cvm_mesh_copy_dual_vertices(2 * n, m).reshape(n, 2)
+
+    @property
+    def dual_vertices_nd(self):
+        """(m, dim) float64 power vertex of each cell, in the mesh's dimension."""
+        with self._handle() as m:
+            d = capi.cvm_mesh_dim(m)
+            n = capi.cvm_mesh_count(m, Entity.TRIANGLE)
+            return capi.cvm_mesh_copy_dual_vertices_nd(d * n, d, m).reshape(n, d)
 
     @property
     def dual_inside(self):
@@ -767,6 +848,7 @@ class Sizing:
         self._lock = threading.Lock()
         self._owner = None
         self._callback = None
+        self._metric = None
         self._s = capi.cvm_sizing_create()
         if uniform is not None:
             self.set_uniform(uniform)
@@ -841,6 +923,42 @@ class Sizing:
         with self._handle() as s:
             capi.cvm_sizing_set_callback(s, callback)
             self._callback = callback
+
+    def add_point_source_nd(self, x, h, growth=0.0):
+        """h(p) = h + growth * |p - x|, x of the mesh's dimension (2 values)."""
+        with self._handle() as s:
+            capi.cvm_sizing_add_point_source_nd(s, x, float(h), float(growth))
+
+    def add_line_source_nd(self, ends, h, growth=0.0):
+        """h(p) = h + growth * distance(p, segment); ends: (2, dim)."""
+        with self._handle() as s:
+            capi.cvm_sizing_add_line_source_nd(s, ends, float(h), float(growth))
+
+    def set_callback_nd(self, callback):
+        """Use callback(x) -> size, x a float64 array of the mesh's dimension,
+        as one more source (replaces a callback(x, y); None removes it)."""
+        with self._handle() as s:
+            capi.cvm_sizing_set_callback_nd(s, callback)
+            self._callback = callback
+
+    def set_metric(self, callback):
+        """Metric (tensor) source: callback(x) -> (g11, g12, g22), or None to
+        refuse the point (None removes the source). No refiner of this version
+        uses a metric: Mesh.refine() and optimise_dual() raise UnsupportedError
+        with a sizing that has one."""
+        with self._handle() as s:
+            capi.cvm_sizing_set_metric_fn(s, callback)
+            self._metric = callback
+
+    def eval_nd(self, x):
+        """The target size at the point x (inf when there is no scalar source)."""
+        with self._handle() as s:
+            return capi.cvm_sizing_eval_nd(s, x)
+
+    def metric_at(self, x):
+        """The metric at x as (g11, g12, g22), checked finite and positive definite."""
+        with self._handle() as s:
+            return capi.cvm_sizing_eval_metric(3, s, x)
 
     def set_automatic(self, R, G=4.0):
         """Size from the geometry being refined: local feature size / R (R edges

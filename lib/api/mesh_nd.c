@@ -1,0 +1,118 @@
+/* mesh_nd.c - the dimension-generic calls of the cvm_mesh handle: its dimension, and inputs and
+ * outputs given as dim coordinates per item, dispatched to the 2D calls (the only kernel yet). */
+#include "api_internal.h"
+
+/* The dimension of every handle until the 3D kernel sets points of dim 3. */
+#define MESH_DIM 2
+
+/* A setter's dim must be the mesh's: 3 waits for the 3D kernel, anything else is no dimension. */
+static cvm_status check_dim(cvm_mesh *m, int dim, const char *call)
+{
+    if (dim == MESH_DIM)
+        return CVM_OK;
+    if (dim == 3)
+        return cvm__error(&m->ctx, CVM_E_UNSUPPORTED, CVM_ENT_NONE, -1,
+                          "%s: dim 3 is not supported yet (the 3D kernel is not in this version)",
+                          call);
+    return cvm__error(&m->ctx, CVM_E_ARGUMENT, CVM_ENT_NONE, -1,
+                      "%s: dim must be 2 (or 3 once the 3D kernel exists), got %d", call, dim);
+}
+
+/* The same for the const readers, which record no message. */
+static cvm_status check_dim_const(int dim)
+{
+    return dim == MESH_DIM ? CVM_OK : dim == 3 ? CVM_E_UNSUPPORTED : CVM_E_ARGUMENT;
+}
+
+cvm_status cvm_mesh_dim(int32_t *out, const cvm_mesh *m)
+{
+    if (!out || !m)
+        return CVM_E_NULL_ARG;
+    *out = MESH_DIM;
+    return CVM_OK;
+}
+
+cvm_status cvm_mesh_set_holes_nd(cvm_mesh *m, const double *coords, size_t count, int dim)
+{
+    cvm_status s;
+    if (!m)
+        return CVM_E_NULL_ARG;
+    CVM__BEGIN(m);
+    if (!coords && count > 0)
+        return cvm__error(&m->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "coords is NULL");
+    if ((s = check_dim(m, dim, "cvm_mesh_set_holes_nd")))
+        return s;
+    return cvm_mesh_set_holes(m, coords, count);
+}
+
+cvm_status cvm_mesh_set_regions_nd(cvm_mesh *m, const double *r, size_t count, int dim)
+{
+    cvm_status s;
+    if (!m)
+        return CVM_E_NULL_ARG;
+    CVM__BEGIN(m);
+    if (!r && count > 0)
+        return cvm__error(&m->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "r is NULL");
+    if ((s = check_dim(m, dim, "cvm_mesh_set_regions_nd")))
+        return s;
+    return cvm_mesh_set_regions(m, r, count); /* 2D: dim + 2 = 4 values per region */
+}
+
+cvm_status cvm_mesh_insert_points_nd(cvm_index *ids_out, cvm_mesh *m, const double *coords,
+                                     size_t count, int dim, double min_dist)
+{
+    cvm_status s;
+    if (!m)
+        return CVM_E_NULL_ARG;
+    CVM__BEGIN(m);
+    if (!coords && count > 0)
+        return cvm__error(&m->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "coords is NULL");
+    if ((s = check_dim(m, dim, "cvm_mesh_insert_points_nd")))
+        return s;
+    return cvm_mesh_insert_points(ids_out, m, coords, count, min_dist);
+}
+
+cvm_status cvm_mesh_copy_points_nd(double *dst, size_t dst_len, int dim, const cvm_mesh *m)
+{
+    cvm_status s;
+    if (!m)
+        return CVM_E_NULL_ARG;
+    if ((s = check_dim_const(dim)))
+        return s;
+    return cvm_mesh_copy_points(dst, dst_len, m);
+}
+
+cvm_status cvm_mesh_view_points_nd(const double **ptr_out, size_t *count_out, int32_t *dim_out,
+                                   const cvm_mesh *m)
+{
+    cvm_status s;
+    if (!ptr_out || !count_out || !dim_out || !m)
+        return CVM_E_NULL_ARG;
+    if ((s = cvm_mesh_view_points(ptr_out, count_out, m)))
+        return s;
+    *dim_out = MESH_DIM;
+    return CVM_OK;
+}
+
+cvm_status cvm_mesh_copy_dual_vertices_nd(double *dst, size_t dst_len, int dim, const cvm_mesh *m)
+{
+    cvm_status s;
+    if (!m)
+        return CVM_E_NULL_ARG;
+    if ((s = check_dim_const(dim)))
+        return s;
+    return cvm_mesh_copy_dual_vertices(dst, dst_len, m);
+}
+
+cvm_status cvm_mesh_get_report(double *out, const cvm_mesh *m, cvm_report which)
+{
+    int w = (int)which;
+    if (!out || !m)
+        return CVM_E_NULL_ARG;
+    if (w >= (int)CVM_REPORT_REFINE_STEINER && w <= (int)CVM_REPORT_REFINE_MET_ANGLE)
+        return cvm__refine_measure(out, m, (cvm_measure)w);
+    if (w >= (int)CVM_REPORT_DUAL_OPT_SWEEPS && w <= (int)CVM_REPORT_DUAL_OPT_REMOVED_MAXMIN)
+        /* the run's report is stored: this path of cvm__optimise_measure() only reads m */
+        return cvm__optimise_measure(out, (cvm_mesh *)m, (cvm_measure)w);
+    return CVM_E_ARGUMENT;
+}

@@ -1,0 +1,134 @@
+/* sizing_nd.c - the dimension-generic calls of the cvm_sizing handle (positions as arrays of the
+ * mesh's dimension) and its metric (tensor) source. */
+#include <math.h>
+
+#include "refine_internal.h"
+
+/* dim must be 2: 3 waits for the 3D kernel, anything else is not a dimension. */
+static cvm_status check_dim(cvm_sizing *s, int dim, const char *call)
+{
+    if (dim == 2)
+        return CVM_OK;
+    if (dim == 3)
+        return cvm__error(&s->ctx, CVM_E_UNSUPPORTED, CVM_ENT_NONE, -1,
+                          "%s: dim 3 is not supported yet (the 3D kernel is not in this version)",
+                          call);
+    return cvm__error(&s->ctx, CVM_E_ARGUMENT, CVM_ENT_NONE, -1,
+                      "%s: dim must be 2 (or 3 once the 3D kernel exists), got %d", call, dim);
+}
+
+cvm_status cvm_sizing_add_point_source_nd(cvm_sizing *s, const double *x, int dim, double h,
+                                          double growth)
+{
+    cvm_status st;
+    if (!s)
+        return CVM_E_NULL_ARG;
+    cvm__clear_error(&s->ctx);
+    if (!x)
+        return cvm__error(&s->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "x is NULL");
+    if ((st = check_dim(s, dim, "cvm_sizing_add_point_source_nd")))
+        return st;
+    return cvm_sizing_add_point_source(s, x[0], x[1], h, growth);
+}
+
+cvm_status cvm_sizing_add_line_source_nd(cvm_sizing *s, const double *ends, int dim, double h,
+                                         double growth)
+{
+    cvm_status st;
+    if (!s)
+        return CVM_E_NULL_ARG;
+    cvm__clear_error(&s->ctx);
+    if (!ends)
+        return cvm__error(&s->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "ends is NULL");
+    if ((st = check_dim(s, dim, "cvm_sizing_add_line_source_nd")))
+        return st;
+    return cvm_sizing_add_line_source(s, ends[0], ends[1], ends[2], ends[3], h, growth);
+}
+
+cvm_status cvm_sizing_set_callback_nd(cvm_sizing *s, cvm_sizing_nd_fn fn, void *payload)
+{
+    if (!s)
+        return CVM_E_NULL_ARG;
+    cvm__clear_error(&s->ctx);
+    s->fn = NULL; /* one user function per handle */
+    s->fn_nd = fn;
+    s->fn_payload = fn ? payload : NULL;
+    return CVM_OK;
+}
+
+cvm_status cvm_sizing_eval_nd(double *out, cvm_sizing *s, const double *x, int dim)
+{
+    cvm_status st;
+    if (!out || !s)
+        return CVM_E_NULL_ARG;
+    cvm__clear_error(&s->ctx);
+    if (!x)
+        return cvm__error(&s->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "x is NULL");
+    if ((st = check_dim(s, dim, "cvm_sizing_eval_nd")))
+        return st;
+    return cvm_sizing_eval(out, s, x[0], x[1]);
+}
+
+cvm_status cvm_sizing_set_metric_fn(cvm_sizing *s, cvm_metric_fn fn, int has_derivatives,
+                                    void *payload)
+{
+    if (!s)
+        return CVM_E_NULL_ARG;
+    cvm__clear_error(&s->ctx);
+    if (has_derivatives != 0 && has_derivatives != 1)
+        return cvm__error(&s->ctx, CVM_E_ARGUMENT, CVM_ENT_NONE, -1,
+                          "has_derivatives must be 0 or 1, got %d", has_derivatives);
+    s->metric = fn;
+    s->metric_payload = fn ? payload : NULL;
+    s->metric_has_dg = fn ? has_derivatives : 0;
+    return CVM_OK;
+}
+
+int cvm__sizing_has_metric(const cvm_sizing *s)
+{
+    return s && s->metric;
+}
+
+cvm_status cvm_sizing_eval_metric(double *dst, size_t dst_len, cvm_sizing *s, const double *x,
+                                  int dim)
+{
+    double g[3] = {0, 0, 0};
+    int k;
+    cvm_status st;
+    if (!s)
+        return CVM_E_NULL_ARG;
+    cvm__clear_error(&s->ctx);
+    if (!x)
+        return cvm__error(&s->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "x is NULL");
+    if (!dst && dst_len > 0)
+        return cvm__error(&s->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "dst is NULL");
+    if ((st = check_dim(s, dim, "cvm_sizing_eval_metric")))
+        return st;
+    if (!s->metric)
+        return cvm__error(&s->ctx, CVM_E_STATE, CVM_ENT_NONE, -1,
+                          "the sizing has no metric: set one with cvm_sizing_set_metric_fn()");
+    if (dst_len < 3)
+        return cvm__error(&s->ctx, CVM_E_BUFFER_TOO_SMALL, CVM_ENT_NONE, -1,
+                          "dst holds %lu values; a 2D metric has 3 (g11, g12, g22)",
+                          (unsigned long)dst_len);
+    if (!isfinite(x[0]) || !isfinite(x[1]))
+        return cvm__error(&s->ctx, CVM_E_INPUT_NONFINITE, CVM_ENT_NONE, -1,
+                          "position (%.17g, %.17g) is not finite", x[0], x[1]);
+    if (s->metric(s->metric_payload, x, 2, g, NULL) != 0)
+        return cvm__error(&s->ctx, CVM_E_INPUT_OUTSIDE, CVM_ENT_NONE, -1,
+                          "the metric callback refused the point (%.17g, %.17g)", x[0], x[1]);
+    for (k = 0; k < 3; k++)
+        if (!isfinite(g[k]))
+            return cvm__error(&s->ctx, CVM_E_INPUT_NONFINITE, CVM_ENT_NONE, -1,
+                              "the metric callback returned a non-finite entry %d at "
+                              "(%.17g, %.17g)", k, x[0], x[1]);
+    /* Sylvester's criterion; a measure check on plain doubles, not a topological decision */
+    if (!(g[0] > 0) || !(g[0] * g[2] - g[1] * g[1] > 0))
+        return cvm__error(&s->ctx, CVM_E_ARGUMENT, CVM_ENT_NONE, -1,
+                          "the metric at (%.17g, %.17g) is not positive definite: g11 = %.17g, "
+                          "g12 = %.17g, g22 = %.17g",
+                          x[0], x[1], g[0], g[1], g[2]);
+    for (k = 0; k < 3; k++)
+        dst[k] = g[k];
+    return CVM_OK;
+}
