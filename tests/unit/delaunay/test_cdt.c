@@ -6,6 +6,8 @@
 #include "delaunay/delaunay_tests.h"
 #include "support/mesh_oracle.h"
 #include "api/api_internal.h"
+#include "delaunay/tri2_store.h"
+#include "geom/geom_internal.h"
 
 static void expect_pslg(cvmtest_expect *e, const cvm_index *segs, size_t nseg, long euler, double area)
 {
@@ -245,6 +247,52 @@ START_TEST(check_detects_a_lost_segment)
 }
 END_TEST
 
+/* Segments of length about 0.01 near (1e6, 1e6) that cross many times: their
+ * crossing points are rounded at the scale of 1e6, up to about one unit in the
+ * last place (1.2e-10, 1e-8 of a segment's length) off the segment, and the
+ * piece 11-7 of segment 3-7 is shared with segment 7-11, which carries its
+ * index. The mesh is valid under the rule of cvm_mesh_check(); a check that
+ * scaled the tolerance by the length alone rejected it. */
+START_TEST(crossings_near_large_offset_keep_their_chains)
+{
+    static const double xy[] = {
+        1000000.002, 1000000.003,        1000000.0140000001, 1000000,
+        1000000.0150000001, 1000000.007, 1000000.0000000001, 1000000,
+        1000000.015, 1000000.007,        1000000.009, 1000000.003,
+        1000000, 1000000.015,            1000000.0140000001, 1000000.007,
+        1000000.0130000002, 1000000.005, 1000000.003, 1000000.014,
+        1000000.0020000001, 1000000.01,  1000000.0100000001, 1000000.005,
+        1000000.0120000001, 1000000.004};
+    static const cvm_index segs[] = {3, 7, 11, 4, 9, 5, 7, 11, 1, 9, 10, 12, 8, 6, 0, 2};
+    const double *p3 = xy + 6, *p7 = xy + 14;
+    double len = hypot(p7[0] - p3[0], p7[1] - p3[1]), tol = 0x1p-40 * (1000000.0140000001 + len);
+    size_t nv, k, off = 0;
+    cvm_mesh *m;
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_points(m, xy, 13, 2), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_segments(m, segs, 8), CVM_OK);
+    ck_assert_msg(cvm_mesh_triangulate(m) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    cvmtest_assert_valid(m);
+    /* point 11 lies exactly on segment 3-7; vertices on the shared piece
+     * 11-7 lie off it by rounding, within the stated bound */
+    ck_assert(cvm__orient2d(p3, p7, xy + 22) == 0);
+    ck_assert_int_eq(cvm_mesh_count(&nv, m, CVM_ENT_VERTEX), CVM_OK);
+    for (k = 0; k < 3 * m->tri.nt; k++) {
+        int32_t t = (int32_t)(k / 3), v;
+        const double *pv;
+        if (m->tri.te[k] != 3 || !cvm__tri2_is_live(&m->tri, t))
+            continue;
+        v = m->tri.tv[3 * (size_t)t + (k + 1) % 3];
+        pv = m->tri.xy + 2 * (size_t)v;
+        ck_assert_uint_lt((size_t)v, nv);
+        ck_assert(fabs(cvm__orient2d(p3, p7, pv)) <= tol * len);
+        off += cvm__orient2d(p3, p7, pv) != 0;
+    }
+    ck_assert_uint_gt(off, 0);
+    cvm_mesh_free(m);
+}
+END_TEST
+
 TCase *delaunay_cdt_tcase(void)
 {
     TCase *tc = tcase_create("cdt");
@@ -258,5 +306,6 @@ TCase *delaunay_cdt_tcase(void)
     tcase_add_test(tc, regions_get_attributes);
     tcase_add_test(tc, jagged_star_polygon);
     tcase_add_test(tc, check_detects_a_lost_segment);
+    tcase_add_test(tc, crossings_near_large_offset_keep_their_chains);
     return tc;
 }
