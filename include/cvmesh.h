@@ -791,7 +791,9 @@ CVM_API cvm_status cvm_mesh_set_progress(cvm_mesh *m, cvm_progress_fn fn, int64_
  * are split at a new vertex, their crossing point rounded to doubles, so it
  * may lie off both by a few units in the last place of the coordinates; a
  * piece from it may then pass exactly through an input point near the segment,
- * which joins the segment's chain too. Every inner vertex of a segment's chain
+ * which joins the segment's chain too, and a segment whose own crossing point
+ * rounds onto or beside such a vertex (three segments meeting at one point)
+ * passes through that vertex. Every inner vertex of a segment's chain
  * lies on the segment or within 2^-40 (M + L) of it, M the largest absolute
  * coordinate of the segment's ends and L its length; cvm_mesh_check() accepts
  * exactly that. CVM_OK implies that every segment is such a chain of

@@ -12,6 +12,7 @@ typedef struct seg_work {
     int32_t *newtri; size_t nnew, cap_new;
     int32_t *rng; size_t cap_rng;                /* ranges for the pseudo-polygon stack */
     int32_t *xe; size_t nxe, cap_xe;             /* crossed edges as vertex pairs */
+    size_t reroutes;                             /* crossings routed through an existing vertex */
 } seg_work;
 
 static cvm_status push(cvm__tri2 *T, int32_t **arr, size_t *n, size_t *cap, int32_t v)
@@ -272,10 +273,20 @@ static cvm_status recover(cvm__tri2 *T, seg_work *w, int32_t a, int32_t b, int32
                 return s;
             }
             if (res != CVM__INS_DONE) {
+                /* The rounded point cannot split x-y: it fell on or beside an
+                 * end of the piece, itself a rounded crossing where a third
+                 * segment meets these two (concurrent segments). That end is
+                 * the crossing: route a-b through it. The reroute budget
+                 * keeps a pathological cycle finite. */
+                const double *q = cvm__tri2_pt(T, x), *r = cvm__tri2_pt(T, y);
+                double dq = (q[0] - p[0]) * (q[0] - p[0]) + (q[1] - p[1]) * (q[1] - p[1]);
+                double dr = (r[0] - p[0]) * (r[0] - p[0]) + (r[1] - p[1]) * (r[1] - p[1]);
                 T->nv--;
-                return cvm__error(T->ctx, CVM_E_INTERNAL, CVM_ENT_VERTEX, nv,
-                                  "vertex %ld, computed where two segments cross, rounded too far "
-                                  "off them to be inserted", (long)nv);
+                if (w->reroutes++ > 64 + T->nv)
+                    return cvm__error(T->ctx, CVM_E_INTERNAL, CVM_ENT_VERTEX, nv,
+                                      "vertex %ld, computed where two segments cross, rounded too "
+                                      "far off them to be inserted", (long)nv);
+                nv = dq <= dr ? x : y;
             }
             if ((s = push(T, &w->pairs, &w->npairs, &w->cap_pairs, nv)) ||
                 (s = push(T, &w->pairs, &w->npairs, &w->cap_pairs, b)) ||

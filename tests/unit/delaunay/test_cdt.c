@@ -293,6 +293,31 @@ START_TEST(crossings_near_large_offset_keep_their_chains)
 }
 END_TEST
 
+/* Segments (15,3)-(2,10), (11,4)-(0,15) and (11,8)-(6,5) of this integer PSLG
+ * meet at (8.5, 6.5). The first two cross at a rounded vertex an ulp away;
+ * the third then crosses their piece so close to that vertex that its own
+ * rounded crossing cannot split the piece: it is routed through the vertex,
+ * not refused. */
+START_TEST(concurrent_crossings_route_through_the_rounded_crossing)
+{
+    static const double xy[] = {15, 15, 15, 15, 15, 15, 15, 15, 15, 15, 15, 15, 15, 3, 3, 13, 6, 3,
+        6, 5, 14, 13, 14, 11, 12, 4, 14, 1, 7, 13, 6, 9, 8, 4, 8, 14, 6, 5, 8, 14, 9, 15, 2, 10, 5,
+        15, 12, 8, 5, 9, 0, 15, 14, 12, 11, 4, 9, 3, 1, 12, 11, 5, 15, 15, 13, 10, 12, 5, 13, 2, 11,
+        15, 11, 8, 8, 11, 15, 8, 6, 11, 10, 11, 12, 9, 1, 1};
+    static const cvm_index segs[] = {32, 33, 6, 21, 5, 27, 42, 37, 11, 22, 18, 10, 6, 11, 4, 37, 7,
+        2, 15, 14, 42, 29, 42, 15, 13, 29, 15, 40, 41, 1, 41, 15, 31, 26, 26, 2, 30, 35, 26, 6, 21,
+        26, 29, 41, 27, 25, 13, 33, 6, 32, 13, 18, 40, 23, 7, 22, 36, 18};
+    cvm_mesh *m;
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_points(m, xy, 43, 2), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_segments(m, segs, 29), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_KEEP_CONVEX_HULL, 1), CVM_OK);
+    ck_assert_msg(cvm_mesh_triangulate(m) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    cvmtest_assert_valid(m);
+    cvm_mesh_free(m);
+}
+END_TEST
+
 TCase *delaunay_cdt_tcase(void)
 {
     TCase *tc = tcase_create("cdt");
@@ -307,5 +332,6 @@ TCase *delaunay_cdt_tcase(void)
     tcase_add_test(tc, jagged_star_polygon);
     tcase_add_test(tc, check_detects_a_lost_segment);
     tcase_add_test(tc, crossings_near_large_offset_keep_their_chains);
+    tcase_add_test(tc, concurrent_crossings_route_through_the_rounded_crossing);
     return tc;
 }
