@@ -788,8 +788,9 @@ CVM_API cvm_status cvm_mesh_set_progress(cvm_mesh *m, cvm_progress_fn fn, int64_
  * previous triangulation.
  *
  * Rounded crossings: two segments that cross (CVM_OPT_SPLIT_INTERSECTIONS = 1)
- * are split at a new vertex, their crossing point rounded to doubles, so it
- * may lie off both by a few units in the last place of the coordinates; a
+ * are split at a new vertex, their crossing point rounded to doubles (moved
+ * up to 8 units in the last place where the rounded point cannot split the
+ * crossed piece), so it may lie off both by a few ulps of the coordinates; a
  * piece from it may then pass exactly through an input point near the segment,
  * which joins the segment's chain too, and a segment whose own crossing point
  * rounds onto or beside such a vertex (three segments meeting at one point)

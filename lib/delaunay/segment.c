@@ -1,4 +1,6 @@
 /* segment.c - recovery of constraint segments: constrained Delaunay triangulation by cavity re-triangulation (Anglada 1997; Shewchuk's pseudo-polygon method). */
+#include <math.h>
+
 #include "delaunay_internal.h"
 #include "tri2_store.h"
 #include "cavity.h"
@@ -76,6 +78,70 @@ static cvm_status fill_pseudo_polygon(cvm__tri2 *T, seg_work *w, const int32_t *
 }
 
 enum { STEP_DONE, STEP_SPLIT, STEP_CROSS };
+
+/* p moved k units in the last place toward q in each coordinate that differs. */
+static void nudge_toward(double *p, const double *q, int k)
+{
+    int i, j;
+    for (i = 0; i < 2; i++)
+        for (j = 0; j < k && p[i] != q[i]; j++)
+            p[i] = nextafter(p[i], q[i]);
+}
+
+/* Split constrained edge hj of triangle ht (piece x-y of another segment) at
+ * the rounded crossing p, or with nudge set at p moved 1, 2, 4 or 8 ulps
+ * toward either apex: when p rounded past a sliver beside the piece, the
+ * exact crossing lies inside the two triangles, and a nearby double on the
+ * right side usually does too. *nv_out is the new vertex, or -1 when no
+ * candidate could be inserted (nothing changed). */
+static cvm_status split_at_crossing(cvm__tri2 *T, const double *p, int32_t ht, int hj, int nudge,
+                                    int32_t *nv_out)
+{
+    int32_t hu = T->tn[3 * (size_t)ht + hj];
+    int32_t apex[2];
+    int attempt;
+    apex[0] = T->tv[hu];                  /* across the piece */
+    apex[1] = T->tv[3 * (size_t)ht + hj]; /* this side */
+    *nv_out = -1;
+    for (attempt = nudge ? 0 : 8; attempt < 9; attempt++) {
+        double q[2];
+        int32_t nv, toward = attempt < 8 ? apex[attempt % 2] : -1;
+        cvm__ins res;
+        cvm_status s;
+        q[0] = p[0];
+        q[1] = p[1];
+        if (attempt < 8) {
+            if (toward < 0)
+                continue; /* a ghost apex: the piece is on the hull */
+            nudge_toward(q, cvm__tri2_pt(T, toward), 1 << (attempt / 2));
+        }
+        if ((s = cvm__tri2_add_vertex(T, q, &nv)))
+            return s;
+        if ((s = cvm__tri2_split_edge(T, nv, ht, hj, &res))) {
+            T->nv--;
+            return s;
+        }
+        if (res == CVM__INS_DONE) {
+            *nv_out = nv;
+            return CVM_OK;
+        }
+        T->nv--;
+    }
+    return CVM_OK;
+}
+
+/* 1 if q is within 16 ulps of p in both coordinates: p is then that vertex,
+ * rounded differently. A choice of construction, not a topological decision. */
+static int at_vertex(const double *p, const double *q)
+{
+    int i;
+    for (i = 0; i < 2; i++) {
+        double m = fmax(fabs(p[i]), fabs(q[i]));
+        if (fabs(p[i] - q[i]) > 16 * (nextafter(m, INFINITY) - m))
+            return 0;
+    }
+    return 1;
+}
 
 /* Find, around a, the edge a-b or the first triangle the segment enters.
  * Returns STEP_DONE (edge exists, now constrained), STEP_SPLIT (*v_out on the
@@ -260,33 +326,29 @@ static cvm_status recover(cvm__tri2 *T, seg_work *w, int32_t a, int32_t b, int32
             int hj = (int)(h % 3);
             double p[2];
             int32_t nv;
-            cvm__ins res;
             if (!split) {
                 *other_seg_out = s2;
                 return CVM_E_INPUT_INTERSECTING;
             }
             cvm__segment_intersection2d(pa, pb, cvm__tri2_pt(T, x), cvm__tri2_pt(T, y), p);
-            if ((s = cvm__tri2_add_vertex(T, p, &nv)))
+            if ((s = split_at_crossing(T, p, ht, hj, 0, &nv)))
                 return s;
-            if ((s = cvm__tri2_split_edge(T, nv, ht, hj, &res))) {
-                T->nv--;
-                return s;
-            }
-            if (res != CVM__INS_DONE) {
-                /* The rounded point cannot split x-y: it fell on or beside an
-                 * end of the piece, itself a rounded crossing where a third
-                 * segment meets these two (concurrent segments). That end is
-                 * the crossing: route a-b through it. The reroute budget
-                 * keeps a pathological cycle finite. */
+            if (nv < 0) {
+                /* p cannot split x-y. On or beside an end of the piece, a
+                 * rounded crossing where a third segment meets these two
+                 * (concurrent segments), that end is the crossing: route a-b
+                 * through it (the budget keeps a pathological cycle finite).
+                 * Elsewhere p rounded past a sliver: nudge it. */
                 const double *q = cvm__tri2_pt(T, x), *r = cvm__tri2_pt(T, y);
-                double dq = (q[0] - p[0]) * (q[0] - p[0]) + (q[1] - p[1]) * (q[1] - p[1]);
-                double dr = (r[0] - p[0]) * (r[0] - p[0]) + (r[1] - p[1]) * (r[1] - p[1]);
-                T->nv--;
-                if (w->reroutes++ > 64 + T->nv)
-                    return cvm__error(T->ctx, CVM_E_INTERNAL, CVM_ENT_VERTEX, nv,
+                int32_t end = at_vertex(p, q) ? x : at_vertex(p, r) ? y : -1;
+                if (end >= 0 && w->reroutes++ <= 64 + T->nv)
+                    nv = end;
+                else if ((s = split_at_crossing(T, p, ht, hj, 1, &nv)))
+                    return s;
+                if (nv < 0)
+                    return cvm__error(T->ctx, CVM_E_INTERNAL, CVM_ENT_VERTEX, (int64_t)T->nv,
                                       "vertex %ld, computed where two segments cross, rounded too "
-                                      "far off them to be inserted", (long)nv);
-                nv = dq <= dr ? x : y;
+                                      "far off them to be inserted", (long)T->nv);
             }
             if ((s = push(T, &w->pairs, &w->npairs, &w->cap_pairs, nv)) ||
                 (s = push(T, &w->pairs, &w->npairs, &w->cap_pairs, b)) ||

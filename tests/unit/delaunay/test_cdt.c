@@ -318,6 +318,29 @@ START_TEST(concurrent_crossings_route_through_the_rounded_crossing)
 }
 END_TEST
 
+/* Segment 2, (11,0)-(6,15), is crossed at a rounded vertex near (9.27, 5.18)
+ * and its piece from there to (6,15) passes within an ulp of the input point
+ * (7,12), which lies exactly on the segment: a sliver. Segment 3, (0,13)-(15,8),
+ * crosses that piece at (7.5, 10.5), which rounds past the sliver; a double a
+ * few ulps toward the far side splits it instead of a refusal. */
+START_TEST(crossing_rounded_past_a_sliver_is_nudged)
+{
+    static const double xy[] = {2, 8, 7, 11, 14, 0, 14, 14, 15, 7, 10, 1, 0, 5, 8, 3, 0, 0, 0, 15,
+        14, 7, 2, 12, 9, 13, 4, 3, 15, 7, 6, 0, 14, 6, 0, 13, 15, 8, 13, 5, 1, 14, 1, 14, 1, 14, 1,
+        14, 1, 14, 1, 14, 1, 14, 1, 14, 1, 14, 7, 12, 13, 1, 3, 8, 11, 0, 7, 11, 14, 12, 9, 0, 2, 1,
+        3, 1, 0, 2, 1, 2, 14, 5, 6, 15, 0, 0};
+    static const cvm_index segs[] = {3, 40, 39, 10, 32, 41, 17, 18, 18, 0, 31, 0};
+    cvm_mesh *m;
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_points(m, xy, 43, 2), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_segments(m, segs, 6), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_KEEP_CONVEX_HULL, 1), CVM_OK);
+    ck_assert_msg(cvm_mesh_triangulate(m) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    cvmtest_assert_valid(m);
+    cvm_mesh_free(m);
+}
+END_TEST
+
 TCase *delaunay_cdt_tcase(void)
 {
     TCase *tc = tcase_create("cdt");
@@ -333,5 +356,6 @@ TCase *delaunay_cdt_tcase(void)
     tcase_add_test(tc, check_detects_a_lost_segment);
     tcase_add_test(tc, crossings_near_large_offset_keep_their_chains);
     tcase_add_test(tc, concurrent_crossings_route_through_the_rounded_crossing);
+    tcase_add_test(tc, crossing_rounded_past_a_sliver_is_nudged);
     return tc;
 }
