@@ -788,17 +788,19 @@ CVM_API cvm_status cvm_mesh_set_progress(cvm_mesh *m, cvm_progress_fn fn, int64_
  * previous triangulation.
  *
  * Rounded crossings: two segments that cross (CVM_OPT_SPLIT_INTERSECTIONS = 1)
- * are split at a new vertex, their crossing point rounded to doubles (moved
- * up to 8 units in the last place where the rounded point cannot split the
- * crossed piece), so it may lie off both by a few ulps of the coordinates; a
- * piece from it may then pass exactly through an input point near the segment,
- * which joins the segment's chain too, and a segment whose own crossing point
- * rounds onto or beside such a vertex (three segments meeting at one point)
- * passes through that vertex. Every inner vertex of a segment's chain
- * lies on the segment or within 2^-40 (M + L) of it, M the largest absolute
- * coordinate of the segment's ends and L its length; cvm_mesh_check() accepts
- * exactly that. CVM_OK implies that every segment is such a chain of
- * constrained edges (verified before returning, in linear time).
+ * are split at a new vertex, their crossing point rounded to doubles, so it
+ * may lie off both by a few units in the last place (ulps) of the coordinates.
+ * Where that double cannot split the crossed piece, it is moved up to 64 ulps
+ * across the piece; where it lies within 16 ulps of an end of the piece (a
+ * third segment through the same point), or no nearby double can split the
+ * piece (nearly coincident segments), the segment passes through that end
+ * instead. A piece from a rounded vertex may also pass exactly through an
+ * input point near the segment, which then joins its chain. Every inner
+ * vertex of a segment's chain lies on the segment or within 2^-40 (M + L) of
+ * it, M the largest absolute coordinate of the segment's ends and L its
+ * length; cvm_mesh_check() accepts exactly that. CVM_OK implies that every
+ * segment is such a chain of constrained edges (verified before returning,
+ * in linear time).
  *
  * Stops: triangulation cannot stop half-way; on a time limit or cancellation
  * the mesh is left empty (count 0) and CVM_INCOMPLETE_* is returned.

@@ -79,42 +79,41 @@ static cvm_status fill_pseudo_polygon(cvm__tri2 *T, seg_work *w, const int32_t *
 
 enum { STEP_DONE, STEP_SPLIT, STEP_CROSS };
 
-/* p moved k units in the last place toward q in each coordinate that differs. */
-static void nudge_toward(double *p, const double *q, int k)
+/* p moved k units in the last place, in each coordinate, to the side of the
+ * line x-y given by side (+1: left of x -> y): straight across the line. */
+static void nudge_across(double *p, const double *x, const double *y, int side, int k)
 {
+    double n[2];
     int i, j;
+    n[0] = -(y[1] - x[1]) * side;
+    n[1] = (y[0] - x[0]) * side;
     for (i = 0; i < 2; i++)
-        for (j = 0; j < k && p[i] != q[i]; j++)
-            p[i] = nextafter(p[i], q[i]);
+        for (j = 0; j < k && n[i] != 0; j++)
+            p[i] = nextafter(p[i], n[i] > 0 ? INFINITY : -INFINITY);
 }
 
 /* Split constrained edge hj of triangle ht (piece x-y of another segment) at
- * the rounded crossing p, or with nudge set at p moved 1, 2, 4 or 8 ulps
- * toward either apex: when p rounded past a sliver beside the piece, the
- * exact crossing lies inside the two triangles, and a nearby double on the
- * right side usually does too. *nv_out is the new vertex, or -1 when no
- * candidate could be inserted (nothing changed). */
+ * the rounded crossing p, or with nudge set at p moved 1, 2, 4, ... 64 ulps
+ * across the piece to either side: when p rounded past a sliver beside the
+ * piece, the exact crossing lies inside the two triangles, and a nearby
+ * double on the right side usually does too. *nv_out is the new vertex, or -1
+ * when no candidate could be inserted (nothing changed). */
 static cvm_status split_at_crossing(cvm__tri2 *T, const double *p, int32_t ht, int hj, int nudge,
                                     int32_t *nv_out)
 {
-    int32_t hu = T->tn[3 * (size_t)ht + hj];
-    int32_t apex[2];
-    int attempt;
-    apex[0] = T->tv[hu];                  /* across the piece */
-    apex[1] = T->tv[3 * (size_t)ht + hj]; /* this side */
+    const int32_t *tv = T->tv + 3 * (size_t)ht;
+    const double *px = cvm__tri2_pt(T, tv[(hj + 1) % 3]), *py = cvm__tri2_pt(T, tv[(hj + 2) % 3]);
+    int attempt, last = nudge ? 14 : 0;
     *nv_out = -1;
-    for (attempt = nudge ? 0 : 8; attempt < 9; attempt++) {
+    for (attempt = nudge ? 0 : -1; attempt < last; attempt++) {
         double q[2];
-        int32_t nv, toward = attempt < 8 ? apex[attempt % 2] : -1;
+        int32_t nv;
         cvm__ins res;
         cvm_status s;
         q[0] = p[0];
         q[1] = p[1];
-        if (attempt < 8) {
-            if (toward < 0)
-                continue; /* a ghost apex: the piece is on the hull */
-            nudge_toward(q, cvm__tri2_pt(T, toward), 1 << (attempt / 2));
-        }
+        if (attempt >= 0)
+            nudge_across(q, px, py, attempt % 2 ? -1 : 1, 1 << (attempt / 2));
         if ((s = cvm__tri2_add_vertex(T, q, &nv)))
             return s;
         if ((s = cvm__tri2_split_edge(T, nv, ht, hj, &res))) {
@@ -128,6 +127,22 @@ static cvm_status split_at_crossing(cvm__tri2 *T, const double *p, int32_t ht, i
         T->nv--;
     }
     return CVM_OK;
+}
+
+/* No double splits the piece x-y: the two slivers beside it are thinner than
+ * an ulp where a-b crosses it (a-b and the piece nearly coincide). Of x and y
+ * the end nearer the line a-b, if within the tolerance of a segment's chain
+ * stated at cvm_mesh_triangulate() (2^-40 (M + L)), is where they meet; else -1. */
+static int32_t near_end(const double *pa, const double *pb, int32_t x, const double *px,
+                        int32_t y, const double *py)
+{
+    double dx = pb[0] - pa[0], dy = pb[1] - pa[1], len = sqrt(dx * dx + dy * dy);
+    double mag = fmax(fmax(fabs(pa[0]), fabs(pa[1])), fmax(fabs(pb[0]), fabs(pb[1])));
+    double ox = fabs(cvm__orient2d(pa, pb, px)), oy = fabs(cvm__orient2d(pa, pb, py));
+    double tol = 0x1p-40 * (mag + len) * len;
+    if (ox <= oy)
+        return ox <= tol ? x : -1;
+    return oy <= tol ? y : -1;
 }
 
 /* 1 if q is within 16 ulps of p in both coordinates: p is then that vertex,
@@ -345,6 +360,8 @@ static cvm_status recover(cvm__tri2 *T, seg_work *w, int32_t a, int32_t b, int32
                     nv = end;
                 else if ((s = split_at_crossing(T, p, ht, hj, 1, &nv)))
                     return s;
+                if (nv < 0 && w->reroutes++ <= 64 + T->nv)
+                    nv = near_end(pa, pb, x, q, y, r);
                 if (nv < 0)
                     return cvm__error(T->ctx, CVM_E_INTERNAL, CVM_ENT_VERTEX, (int64_t)T->nv,
                                       "vertex %ld, computed where two segments cross, rounded too "

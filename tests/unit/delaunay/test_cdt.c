@@ -341,6 +341,31 @@ START_TEST(crossing_rounded_past_a_sliver_is_nudged)
 }
 END_TEST
 
+/* Segments (15,15)-(7+u,2) and (15+u,15)-(7,2), u one ulp, cross at a tiny
+ * angle between two other crossings: the slivers on both sides of the piece
+ * they cross are thinner than an ulp there, so no double splits it. The
+ * crossing segment is routed through the end of the piece within rounding of
+ * its line. */
+START_TEST(nearly_coincident_crossing_meets_at_the_piece_end)
+{
+    double xy[20];
+    static const int grid[20] = {15, 15, 15, 15, 15, 15, 15, 15, 15, 15, 15, 15, 8, 12, 11, 9, 7, 2, 7, 2};
+    static const cvm_index segs[] = {2, 9, 5, 0, 9, 1, 1, 7, 2, 8, 1, 0, 9, 7,
+                                     9, 2, 3, 4, 5, 8, 9, 0, 1, 4, 6, 1};
+    cvm_mesh *m;
+    int i;
+    for (i = 0; i < 20; i++)
+        xy[i] = (i % 4 == 2) ? nextafter((double)grid[i], 1e300) : (double)grid[i];
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_points(m, xy, 10, 2), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_segments(m, segs, 13), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_KEEP_CONVEX_HULL, 1), CVM_OK);
+    ck_assert_msg(cvm_mesh_triangulate(m) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    cvmtest_assert_valid(m);
+    cvm_mesh_free(m);
+}
+END_TEST
+
 TCase *delaunay_cdt_tcase(void)
 {
     TCase *tc = tcase_create("cdt");
@@ -357,5 +382,6 @@ TCase *delaunay_cdt_tcase(void)
     tcase_add_test(tc, crossings_near_large_offset_keep_their_chains);
     tcase_add_test(tc, concurrent_crossings_route_through_the_rounded_crossing);
     tcase_add_test(tc, crossing_rounded_past_a_sliver_is_nudged);
+    tcase_add_test(tc, nearly_coincident_crossing_meets_at_the_piece_end);
     return tc;
 }
