@@ -820,7 +820,10 @@ CVM_API cvm_status cvm_mesh_set_progress(cvm_mesh *m, cvm_progress_fn fn, int64_
  *         CVM_E_INPUT_OUTSIDE      a hole point lies outside the convex hull
  *         CVM_E_NOMEM
  *         CVM_E_INTERNAL           a kernel fault, e.g. a segment left without its chain
- *                                  (message names the input segment); the mesh is left empty
+ *                                  (message names the input segment), or a crossing that
+ *                                  no double can split: segments crossing beside a sliver
+ *                                  thinner than an ulp, with no piece end near the crossing
+ *                                  (message names the vertex); the mesh is left empty
  *         CVM_INCOMPLETE_TIME_LIMIT, CVM_INCOMPLETE_CANCELLED
  * @since 0.1
  */
