@@ -366,6 +366,31 @@ START_TEST(nearly_coincident_crossing_meets_at_the_piece_end)
 }
 END_TEST
 
+/* Segment (12+u,2)-(3+u,7), u one ulp, crosses (15,6)-(3,7) within an ulp of
+ * the end (3,7): it passes through that end, an ulp beyond its own end along
+ * its axis, and both cvm_mesh_check() and the oracle walking the segments
+ * accept the chain. */
+START_TEST(segment_ends_an_ulp_apart_meet_at_one)
+{
+    double xy[8] = {15, 6, 0, 7, 3, 7, 0, 2};
+    static const cvm_index segs[] = {0, 2, 3, 1, 2, 0};
+    cvmtest_expect e;
+    cvm_mesh *m;
+    xy[2] = nextafter(3.0, 4.0);
+    xy[6] = nextafter(12.0, 13.0);
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_points(m, xy, 4, 2), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_segments(m, segs, 3), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_KEEP_CONVEX_HULL, 1), CVM_OK);
+    ck_assert_msg(cvm_mesh_triangulate(m) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    cvmtest_expect_init(&e);
+    e.segs = segs;
+    e.nseg = 3;
+    cvmtest_assert_valid_ex(m, &e);
+    cvm_mesh_free(m);
+}
+END_TEST
+
 TCase *delaunay_cdt_tcase(void)
 {
     TCase *tc = tcase_create("cdt");
@@ -383,5 +408,6 @@ TCase *delaunay_cdt_tcase(void)
     tcase_add_test(tc, concurrent_crossings_route_through_the_rounded_crossing);
     tcase_add_test(tc, crossing_rounded_past_a_sliver_is_nudged);
     tcase_add_test(tc, nearly_coincident_crossing_meets_at_the_piece_end);
+    tcase_add_test(tc, segment_ends_an_ulp_apart_meet_at_one);
     return tc;
 }

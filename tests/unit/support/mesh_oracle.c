@@ -322,12 +322,15 @@ static int check_segment(oracle *o, size_t k, cvm_index a, cvm_index b)
         for (i = o->adj_off[cur]; i < o->adj_off[cur + 1]; i++) {
             cvm_index w = o->adj[i];
             const double *pw = P(o, w);
-            int steiner = (size_t)w >= o->n_orig, on_line;
-            int weak = steiner || (size_t)cur >= o->n_orig;
+            int steiner = (size_t)w >= o->n_orig;
+            int on_line = w == b || cvm__orient2d(pa, pb, pw) == 0;
+            /* a step off the exact line is a rounding case: an input vertex
+             * an ulp from the segment's end may carry it (concurrent or
+             * nearly coincident segments meet there), even an ulp beyond b */
+            int weak = steiner || (size_t)cur >= o->n_orig || !on_line;
             if (o->visit[w] == stamp ||
                 (w != b && !progresses(P(o, cur), pw, pb, ax, weak, pa)))
                 continue;
-            on_line = w == b || cvm__orient2d(pa, pb, pw) == 0;
             /* an input vertex within rounding of the segment may carry it too:
              * a sub-segment from a rounded crossing can pass exactly through it
              * (then only along output segments) */
