@@ -276,11 +276,13 @@ static int progresses(const double *cur, const double *w, const double *b, int a
                       const double *a)
 {
     if (weak) {
-        /* a rounded intersection may sit an ulp behind the previous one: any
-         * place within the segment's extent (widened by 1e-9 of it) will do;
-         * visit stamps keep the search finite */
+        /* a rounded intersection may sit an ulp behind the previous one, or
+         * an ulp beyond an end: any place within the segment's extent, widened
+         * by 1e-9 of it plus 2^-40 of its coordinates (rounding happens at
+         * their scale), will do; visit stamps keep the search finite */
         double lo = a[ax] < b[ax] ? a[ax] : b[ax], hi = a[ax] < b[ax] ? b[ax] : a[ax];
-        double eps = 1e-9 * (hi - lo);
+        double mag = fabs(a[0]) + fabs(a[1]) + fabs(b[0]) + fabs(b[1]);
+        double eps = 1e-9 * (hi - lo) + 0x1p-40 * mag;
         return w[ax] >= lo - eps && w[ax] <= hi + eps;
     }
     if (cur[ax] < b[ax])
