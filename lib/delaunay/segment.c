@@ -102,8 +102,12 @@ static cvm_status split_at_crossing(cvm__tri2 *T, const double *p, int32_t ht, i
                                     int32_t *nv_out)
 {
     const int32_t *tv = T->tv + 3 * (size_t)ht;
-    const double *px = cvm__tri2_pt(T, tv[(hj + 1) % 3]), *py = cvm__tri2_pt(T, tv[(hj + 2) % 3]);
+    double px[2], py[2]; /* copies: adding a vertex may move T->xy */
     int attempt, last = nudge ? 14 : 0;
+    px[0] = cvm__tri2_pt(T, tv[(hj + 1) % 3])[0];
+    px[1] = cvm__tri2_pt(T, tv[(hj + 1) % 3])[1];
+    py[0] = cvm__tri2_pt(T, tv[(hj + 2) % 3])[0];
+    py[1] = cvm__tri2_pt(T, tv[(hj + 2) % 3])[1];
     *nv_out = -1;
     for (attempt = nudge ? 0 : -1; attempt < last; attempt++) {
         double q[2];
@@ -354,14 +358,17 @@ static cvm_status recover(cvm__tri2 *T, seg_work *w, int32_t a, int32_t b, int32
                  * (concurrent segments), that end is the crossing: route a-b
                  * through it (the budget keeps a pathological cycle finite).
                  * Elsewhere p rounded past a sliver: nudge it. */
-                const double *q = cvm__tri2_pt(T, x), *r = cvm__tri2_pt(T, y);
-                int32_t end = at_vertex(p, q) ? x : at_vertex(p, r) ? y : -1;
+                int32_t end = at_vertex(p, cvm__tri2_pt(T, x))   ? x
+                              : at_vertex(p, cvm__tri2_pt(T, y)) ? y
+                                                                 : -1;
                 if (end >= 0 && w->reroutes++ <= 64 + T->nv)
                     nv = end;
                 else if ((s = split_at_crossing(T, p, ht, hj, 1, &nv)))
                     return s;
+                /* re-read every position: adding a vertex may move T->xy */
                 if (nv < 0 && w->reroutes++ <= 64 + T->nv)
-                    nv = near_end(pa, pb, x, q, y, r);
+                    nv = near_end(cvm__tri2_pt(T, a), cvm__tri2_pt(T, b), x, cvm__tri2_pt(T, x), y,
+                                  cvm__tri2_pt(T, y));
                 if (nv < 0)
                     return cvm__error(T->ctx, CVM_E_INTERNAL, CVM_ENT_VERTEX, (int64_t)T->nv,
                                       "vertex %ld, computed where two segments cross, rounded too "
