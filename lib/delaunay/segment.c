@@ -133,20 +133,28 @@ static cvm_status split_at_crossing(cvm__tri2 *T, const double *p, int32_t ht, i
     return CVM_OK;
 }
 
-/* No double splits the piece x-y: the two slivers beside it are thinner than
- * an ulp where a-b crosses it (a-b and the piece nearly coincide). Of x and y
- * the end nearer the line a-b, if within the tolerance of a segment's chain
- * stated at cvm_mesh_triangulate() (2^-40 (M + L)), is where they meet; else -1. */
-static int32_t near_end(const double *pa, const double *pb, int32_t x, const double *px,
-                        int32_t y, const double *py)
+/* Whether q lies on segment a-b within the tolerance of a segment's chain
+ * stated at cvm_mesh_triangulate(): 2^-40 (M + L) across it and along it. */
+static int within_chain(const double *pa, const double *pb, const double *q)
 {
     double dx = pb[0] - pa[0], dy = pb[1] - pa[1], len = sqrt(dx * dx + dy * dy);
     double mag = fmax(fmax(fabs(pa[0]), fabs(pa[1])), fmax(fabs(pb[0]), fabs(pb[1])));
+    double tol = 0x1p-40 * (mag + len);
+    double along = ((q[0] - pa[0]) * dx + (q[1] - pa[1]) * dy) / len;
+    return along >= -tol && along <= len + tol && fabs(cvm__orient2d(pa, pb, q)) <= tol * len;
+}
+
+/* No double splits the piece x-y: the two slivers beside it are thinner than
+ * an ulp where a-b crosses it (a-b and the piece nearly coincide). Of x and y
+ * the end nearer the line a-b, if within_chain() of a-b, is where they meet;
+ * else -1. */
+static int32_t near_end(const double *pa, const double *pb, int32_t x, const double *px,
+                        int32_t y, const double *py)
+{
     double ox = fabs(cvm__orient2d(pa, pb, px)), oy = fabs(cvm__orient2d(pa, pb, py));
-    double tol = 0x1p-40 * (mag + len) * len;
     if (ox <= oy)
-        return ox <= tol ? x : -1;
-    return oy <= tol ? y : -1;
+        return within_chain(pa, pb, px) ? x : -1;
+    return within_chain(pa, pb, py) ? y : -1;
 }
 
 /* 1 if q is within 16 ulps of p in both coordinates: p is then that vertex,
@@ -357,15 +365,18 @@ static cvm_status recover(cvm__tri2 *T, seg_work *w, int32_t a, int32_t b, int32
                  * rounded crossing where a third segment meets these two
                  * (concurrent segments), that end is the crossing: route a-b
                  * through it (the budget keeps a pathological cycle finite).
-                 * Elsewhere p rounded past a sliver: nudge it. */
+                 * Elsewhere p rounded past a sliver: nudge it. Positions are
+                 * read afresh: adding a candidate vertex may move T->xy, so
+                 * pa and pb are stale here. */
                 int32_t end = at_vertex(p, cvm__tri2_pt(T, x))   ? x
                               : at_vertex(p, cvm__tri2_pt(T, y)) ? y
                                                                  : -1;
-                if (end >= 0 && w->reroutes++ <= 64 + T->nv)
+                if (end >= 0 &&
+                    within_chain(cvm__tri2_pt(T, a), cvm__tri2_pt(T, b), cvm__tri2_pt(T, end)) &&
+                    w->reroutes++ <= 64 + T->nv)
                     nv = end;
                 else if ((s = split_at_crossing(T, p, ht, hj, 1, &nv)))
                     return s;
-                /* re-read every position: adding a vertex may move T->xy */
                 if (nv < 0 && w->reroutes++ <= 64 + T->nv)
                     nv = near_end(cvm__tri2_pt(T, a), cvm__tri2_pt(T, b), x, cvm__tri2_pt(T, x), y,
                                   cvm__tri2_pt(T, y));
