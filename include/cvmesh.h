@@ -867,6 +867,21 @@ CVM_API cvm_status cvm_mesh_set_progress(cvm_mesh *m, cvm_progress_fn fn, int64_
  * point lying exactly in the interior of a segment splits it. Replaces any
  * previous triangulation.
  *
+ * Rounded crossings: two segments that cross (CVM_OPT_SPLIT_INTERSECTIONS = 1)
+ * are split at a new vertex, their crossing point rounded to doubles, so it
+ * may lie off both by a few units in the last place (ulps) of the coordinates.
+ * Where that double cannot split the crossed piece, it is moved up to 64 ulps
+ * across the piece; where it lies within 16 ulps of an end of the piece (a
+ * third segment through the same point), or no nearby double can split the
+ * piece (nearly coincident segments), the segment passes through that end
+ * instead. A piece from a rounded vertex may also pass exactly through an
+ * input point near the segment, which then joins its chain. Every inner
+ * vertex of a segment's chain lies on the segment or within 2^-40 (M + L) of
+ * it, M the largest absolute coordinate of the segment's ends and L its
+ * length; cvm_mesh_check() accepts exactly that. CVM_OK implies that every
+ * segment is such a chain of constrained edges (verified before returning,
+ * in linear time).
+ *
  * Stops: triangulation cannot stop half-way; on a time limit or cancellation
  * the mesh is left empty (count 0) and CVM_INCOMPLETE_* is returned.
  * @return CVM_OK
@@ -883,7 +898,12 @@ CVM_API cvm_status cvm_mesh_set_progress(cvm_mesh *m, cvm_progress_fn fn, int64_
  *         CVM_E_INPUT_NOT_CLOSED   removing the exterior or a hole removed every triangle
  *                                  (the boundary does not close)
  *         CVM_E_INPUT_OUTSIDE      a hole point lies outside the convex hull
- *         CVM_E_NOMEM, CVM_E_INTERNAL
+ *         CVM_E_NOMEM
+ *         CVM_E_INTERNAL           a kernel fault, e.g. a segment left without its chain
+ *                                  (message names the input segment), or a crossing that
+ *                                  no double can split: segments crossing beside a sliver
+ *                                  thinner than an ulp, with no piece end near the crossing
+ *                                  (message names the vertex); the mesh is left empty
  *         CVM_INCOMPLETE_TIME_LIMIT, CVM_INCOMPLETE_CANCELLED
  * @since 0.1
  */
@@ -936,7 +956,9 @@ CVM_API cvm_status cvm_mesh_insert_points_nd(cvm_index *ids_out, cvm_mesh *m, co
 /**
  * Re-verify @p m with exact predicates: every triangle counter-clockwise,
  * adjacency symmetric, each edge in at most two triangles, every input segment
- * a chain of constrained mesh edges from end to end (segments of a chain
+ * a chain of constrained mesh edges from end to end, through vertices on it or
+ * within 2^-40 (M + L) of it (rounded crossings, see cvm_mesh_triangulate();
+ * a tolerance of the check only, no meshing decision uses it) (segments of a chain
  * re-discretised by CVM_OPT_KEEP_SEGMENT_VERTICES = 0, whose inner ends are gone,
  * are replaced by its new pieces, checked as constrained edges), every interior
  * non-constrained edge locally Delaunay (in-circle, or the power test with

@@ -274,6 +274,8 @@ static cvm_status check_dynamic_range(cvm_mesh *m)
     return CVM_OK;
 }
 
+static cvm_status check_segment_chains(cvm_mesh *m);
+
 static cvm_status triangulate(cvm_mesh *m)
 {
     cvm__tri2 *T = &m->tri;
@@ -339,7 +341,9 @@ static cvm_status triangulate(cvm_mesh *m)
             return s;
     }
     boundary_vertex_markers(m);
-    return CVM_OK;
+    /* post-condition, linear in the mesh: never report success on a mesh
+     * that cvm_mesh_check() rejects for a missing segment */
+    return check_segment_chains(m);
 }
 
 cvm_status cvm_mesh_triangulate(cvm_mesh *m)
@@ -428,108 +432,54 @@ cvm_status cvm_mesh_insert_points(cvm_index *ids_out, cvm_mesh *m, const double 
     return CVM_OK;
 }
 
-typedef struct seg_key {
-    int32_t lo, hi, idx;
-} seg_key;
-
-static int cmp_seg_key(const void *pa, const void *pb)
-{
-    const seg_key *x = pa, *y = pb;
-    if (x->lo != y->lo)
-        return x->lo < y->lo ? -1 : 1;
-    if (x->hi != y->hi)
-        return x->hi < y->hi ? -1 : 1;
-    return x->idx < y->idx ? -1 : x->idx > y->idx;
-}
-
-/* canon[k]: the first input segment with the same two (mapped) end vertices as
- * segment k, so a segment given twice is one chain. */
-static cvm_status canonical_segments(cvm_mesh *m, int32_t *canon)
-{
-    size_t k, n = m->in.nseg;
-    seg_key *keys = cvm__malloc(&m->ctx, n * sizeof *keys);
-    if (!keys)
-        return CVM_E_NOMEM;
-    for (k = 0; k < n; k++) {
-        int32_t a = m->input_map[m->in.seg[2 * k]], b = m->input_map[m->in.seg[2 * k + 1]];
-        keys[k].lo = a < b ? a : b;
-        keys[k].hi = a < b ? b : a;
-        keys[k].idx = (int32_t)k;
-    }
-    qsort(keys, n, sizeof *keys, cmp_seg_key);
-    for (k = 0; k < n; k++) {
-        int same = k > 0 && keys[k].lo == keys[k - 1].lo && keys[k].hi == keys[k - 1].hi;
-        canon[keys[k].idx] = same ? canon[keys[k - 1].idx] : keys[k].idx;
-    }
-    cvm__free(&m->ctx, keys);
-    return CVM_OK;
-}
-
-/* Whether x may lie on the chain of segment a-b when reached across an edge
- * that carries another segment's index (an edge stores one index, so pieces
- * that two segments share, exactly or within the rounding of their crossing
- * points, show only one): b itself, or a vertex within 1e-9 of the segment's
- * length from the segment. This is a check of the output, with a stated
- * tolerance; no meshing decision depends on it. */
-static int may_continue(const cvm__tri2 *T, int32_t x, int32_t a, int32_t b)
+/* Whether x may be an inner vertex of the chain of segment a-b: within
+ * CVM__CHAIN_SLACK x (M + L) of the segment, M the largest absolute
+ * coordinate of a and b, L the length (the rule stated at cvm_mesh_check()).
+ * A crossing point is rounded at the scale of M, not of L: segments of length
+ * 0.01 near 1e6 put it 1e-8 of L off. Labels are not consulted: an edge
+ * stores one segment index, so a piece two segments share, exactly or within
+ * rounding, carries only one of them. This is a check of the output, with a
+ * stated tolerance; no meshing decision depends on it. */
+#define CVM__CHAIN_SLACK 0x1p-40
+static int on_chain(const cvm__tri2 *T, int32_t x, int32_t a, int32_t b)
 {
     const double *pa = T->xy + 2 * (size_t)a, *pb = T->xy + 2 * (size_t)b, *px = T->xy + 2 * (size_t)x;
-    double dx = pb[0] - pa[0], dy = pb[1] - pa[1], len2 = dx * dx + dy * dy;
-    double t, cx, cy, tol2;
+    double dx = pb[0] - pa[0], dy = pb[1] - pa[1], len = sqrt(dx * dx + dy * dy);
+    double mag = fmax(fmax(fabs(pa[0]), fabs(pa[1])), fmax(fabs(pb[0]), fabs(pb[1])));
+    double tol = CVM__CHAIN_SLACK * (mag + len), along;
     if (x == b)
         return 1;
-    if (!(len2 > 0))
+    if (!(len > 0))
         return 0;
-    t = ((px[0] - pa[0]) * dx + (px[1] - pa[1]) * dy) / len2;
-    if (t < -1e-9 || t > 1 + 1e-9)
+    along = ((px[0] - pa[0]) * dx + (px[1] - pa[1]) * dy) / len;
+    if (!(along >= -tol && along <= len + tol))
         return 0;
-    if (cvm__orient2d(pa, pb, px) == 0)
-        return 1;
-    cx = pa[0] + t * dx - px[0];
-    cy = pa[1] + t * dy - px[1];
-    tol2 = 1e-18 * len2;
-    return cx * cx + cy * cy <= tol2;
+    /* distance x length in plain floating point: its rounding error, about
+     * 2^-51 L |x - a|, is far below the tolerance 2^-40 (M + L) L */
+    return fabs(dx * (px[1] - pa[1]) - dy * (px[0] - pa[0])) <= tol * len;
 }
 
-/* x has a constrained edge of canonical segment ck to a vertex other than
- * from: a piece labelled with another segment is then shared, sandwiched
- * between pieces of ck. */
-static int continues_with(const cvm__tri2 *T, int32_t x, int32_t from, const int32_t *canon,
-                          size_t nseg, int32_t ck)
-{
-    int32_t t0 = T->vtri[x], t = t0;
-    if (t0 < 0)
-        return 0;
-    do {
-        const int32_t *v = T->tv + 3 * (size_t)t;
-        int i = v[0] == x ? 0 : v[1] == x ? 1 : 2;
-        int32_t y = v[(i + 1) % 3], seg = cvm__tri2_edge_seg(T, t, (i + 2) % 3);
-        if (y >= 0 && y != from && seg >= 0 && (size_t)seg < nseg && canon[seg] == ck)
-            return 1;
-        t = T->tn[3 * (size_t)t + (i + 1) % 3] / 3;
-    } while (t != t0);
-    return 0;
-}
-
-/* Every input segment must be joined end to end by constrained edges: those
- * of its own (canonical) index, and shared pieces as may_continue() allows. */
+/* Every input segment must be joined end to end by constrained edges through
+ * vertices that on_chain() accepts. A breadth-first search per segment visits
+ * each vertex at most once (seen[] holds the last segment that queued it), so
+ * the check costs the stars of the chain vertices: linear in the mesh unless
+ * many segments overlap. cvm_mesh_triangulate() runs it as its post-condition. */
 static cvm_status check_segment_chains(cvm_mesh *m)
 {
     cvm__tri2 *T = &m->tri;
     size_t k;
-    int32_t *canon;
+    int32_t *seen;
     cvm_status s = CVM_OK;
     if (!m->in.nseg)
         return CVM_OK;
-    canon = cvm__malloc(&m->ctx, m->in.nseg * sizeof *canon);
-    if (!canon || canonical_segments(m, canon)) {
-        cvm__free(&m->ctx, canon);
+    seen = cvm__malloc(&m->ctx, (T->nv ? T->nv : 1) * sizeof *seen);
+    if (!seen)
         return cvm__nomem(&m->ctx);
-    }
+    for (k = 0; k < T->nv; k++)
+        seen[k] = -1;
     for (k = 0; k < m->in.nseg && !s; k++) {
         int32_t a = m->input_map[m->in.seg[2 * k]], b = m->input_map[m->in.seg[2 * k + 1]];
-        int32_t ck = canon[k];
-        size_t n = 0, head = 0, q;
+        size_t n = 0, head = 0;
         int found = a == b;
         if (a < 0 || b < 0)
             continue; /* an end removed by CVM_OPT_KEEP_SEGMENT_VERTICES = 0: the chain was
@@ -539,6 +489,7 @@ static cvm_status check_segment_chains(cvm_mesh *m)
             break;
         }
         T->stack[n++] = a;
+        seen[a] = (int32_t)k;
         while (head < n && !found && !s) {
             int32_t cur = T->stack[head++], t0 = T->vtri[cur], t = t0;
             if (t0 < 0)
@@ -548,14 +499,7 @@ static cvm_status check_segment_chains(cvm_mesh *m)
                 int i = v[0] == cur ? 0 : v[1] == cur ? 1 : 2;
                 int32_t x = v[(i + 1) % 3], seg = cvm__tri2_edge_seg(T, t, (i + 2) % 3);
                 t = T->tn[3 * (size_t)t + (i + 1) % 3] / 3;
-                if (x < 0 || seg < 0)
-                    continue;
-                if ((seg >= (int32_t)m->in.nseg || canon[seg] != ck) && !may_continue(T, x, a, b) &&
-                    !continues_with(T, x, cur, canon, m->in.nseg, ck))
-                    continue;
-                for (q = 0; q < n && T->stack[q] != x; q++)
-                    ;
-                if (q < n)
+                if (x < 0 || seg < 0 || seen[x] == (int32_t)k || !on_chain(T, x, a, b))
                     continue;
                 if (x == b)
                     found = 1;
@@ -564,6 +508,7 @@ static cvm_status check_segment_chains(cvm_mesh *m)
                     s = cvm__nomem(&m->ctx);
                     break;
                 }
+                seen[x] = (int32_t)k;
                 T->stack[n++] = x;
             } while (t != t0);
         }
@@ -573,7 +518,7 @@ static cvm_status check_segment_chains(cvm_mesh *m)
                               "to end by constrained edges",
                               (unsigned long)k, (long)m->in.seg[2 * k], (long)m->in.seg[2 * k + 1]);
     }
-    cvm__free(&m->ctx, canon);
+    cvm__free(&m->ctx, seen);
     return s;
 }
 

@@ -1,4 +1,6 @@
 /* segment.c - recovery of constraint segments: constrained Delaunay triangulation by cavity re-triangulation (Anglada 1997; Shewchuk's pseudo-polygon method). */
+#include <math.h>
+
 #include "delaunay_internal.h"
 #include "tri2_store.h"
 #include "cavity.h"
@@ -12,6 +14,7 @@ typedef struct seg_work {
     int32_t *newtri; size_t nnew, cap_new;
     int32_t *rng; size_t cap_rng;                /* ranges for the pseudo-polygon stack */
     int32_t *xe; size_t nxe, cap_xe;             /* crossed edges as vertex pairs */
+    size_t reroutes;                             /* crossings routed through an existing vertex */
 } seg_work;
 
 static cvm_status push(cvm__tri2 *T, int32_t **arr, size_t *n, size_t *cap, int32_t v)
@@ -75,6 +78,97 @@ static cvm_status fill_pseudo_polygon(cvm__tri2 *T, seg_work *w, const int32_t *
 }
 
 enum { STEP_DONE, STEP_SPLIT, STEP_CROSS };
+
+/* p moved k units in the last place, in each coordinate, to the side of the
+ * line x-y given by side (+1: left of x -> y): straight across the line. */
+static void nudge_across(double *p, const double *x, const double *y, int side, int k)
+{
+    double n[2];
+    int i, j;
+    n[0] = -(y[1] - x[1]) * side;
+    n[1] = (y[0] - x[0]) * side;
+    for (i = 0; i < 2; i++)
+        for (j = 0; j < k && n[i] != 0; j++)
+            p[i] = nextafter(p[i], n[i] > 0 ? INFINITY : -INFINITY);
+}
+
+/* Split constrained edge hj of triangle ht (piece x-y of another segment) at
+ * the rounded crossing p, or with nudge set at p moved 1, 2, 4, ... 64 ulps
+ * across the piece to either side: when p rounded past a sliver beside the
+ * piece, the exact crossing lies inside the two triangles, and a nearby
+ * double on the right side usually does too. *nv_out is the new vertex, or -1
+ * when no candidate could be inserted (nothing changed). */
+static cvm_status split_at_crossing(cvm__tri2 *T, const double *p, int32_t ht, int hj, int nudge,
+                                    int32_t *nv_out)
+{
+    const int32_t *tv = T->tv + 3 * (size_t)ht;
+    double px[2], py[2]; /* copies: adding a vertex may move T->xy */
+    int attempt, last = nudge ? 14 : 0;
+    px[0] = cvm__tri2_pt(T, tv[(hj + 1) % 3])[0];
+    px[1] = cvm__tri2_pt(T, tv[(hj + 1) % 3])[1];
+    py[0] = cvm__tri2_pt(T, tv[(hj + 2) % 3])[0];
+    py[1] = cvm__tri2_pt(T, tv[(hj + 2) % 3])[1];
+    *nv_out = -1;
+    for (attempt = nudge ? 0 : -1; attempt < last; attempt++) {
+        double q[2];
+        int32_t nv;
+        cvm__ins res;
+        cvm_status s;
+        q[0] = p[0];
+        q[1] = p[1];
+        if (attempt >= 0)
+            nudge_across(q, px, py, attempt % 2 ? -1 : 1, 1 << (attempt / 2));
+        if ((s = cvm__tri2_add_vertex(T, q, &nv)))
+            return s;
+        if ((s = cvm__tri2_split_edge(T, nv, ht, hj, &res))) {
+            T->nv--;
+            return s;
+        }
+        if (res == CVM__INS_DONE) {
+            *nv_out = nv;
+            return CVM_OK;
+        }
+        T->nv--;
+    }
+    return CVM_OK;
+}
+
+/* Whether q lies on segment a-b within the tolerance of a segment's chain
+ * stated at cvm_mesh_triangulate(): 2^-40 (M + L) across it and along it. */
+static int within_chain(const double *pa, const double *pb, const double *q)
+{
+    double dx = pb[0] - pa[0], dy = pb[1] - pa[1], len = sqrt(dx * dx + dy * dy);
+    double mag = fmax(fmax(fabs(pa[0]), fabs(pa[1])), fmax(fabs(pb[0]), fabs(pb[1])));
+    double tol = 0x1p-40 * (mag + len);
+    double along = ((q[0] - pa[0]) * dx + (q[1] - pa[1]) * dy) / len;
+    return along >= -tol && along <= len + tol && fabs(cvm__orient2d(pa, pb, q)) <= tol * len;
+}
+
+/* No double splits the piece x-y: the two slivers beside it are thinner than
+ * an ulp where a-b crosses it (a-b and the piece nearly coincide). Of x and y
+ * the end nearer the line a-b, if within_chain() of a-b, is where they meet;
+ * else -1. */
+static int32_t near_end(const double *pa, const double *pb, int32_t x, const double *px,
+                        int32_t y, const double *py)
+{
+    double ox = fabs(cvm__orient2d(pa, pb, px)), oy = fabs(cvm__orient2d(pa, pb, py));
+    if (ox <= oy)
+        return within_chain(pa, pb, px) ? x : -1;
+    return within_chain(pa, pb, py) ? y : -1;
+}
+
+/* 1 if q is within 16 ulps of p in both coordinates: p is then that vertex,
+ * rounded differently. A choice of construction, not a topological decision. */
+static int at_vertex(const double *p, const double *q)
+{
+    int i;
+    for (i = 0; i < 2; i++) {
+        double m = fmax(fabs(p[i]), fabs(q[i]));
+        if (fabs(p[i] - q[i]) > 16 * (nextafter(m, INFINITY) - m))
+            return 0;
+    }
+    return 1;
+}
 
 /* Find, around a, the edge a-b or the first triangle the segment enters.
  * Returns STEP_DONE (edge exists, now constrained), STEP_SPLIT (*v_out on the
@@ -259,23 +353,37 @@ static cvm_status recover(cvm__tri2 *T, seg_work *w, int32_t a, int32_t b, int32
             int hj = (int)(h % 3);
             double p[2];
             int32_t nv;
-            cvm__ins res;
             if (!split) {
                 *other_seg_out = s2;
                 return CVM_E_INPUT_INTERSECTING;
             }
             cvm__segment_intersection2d(pa, pb, cvm__tri2_pt(T, x), cvm__tri2_pt(T, y), p);
-            if ((s = cvm__tri2_add_vertex(T, p, &nv)))
+            if ((s = split_at_crossing(T, p, ht, hj, 0, &nv)))
                 return s;
-            if ((s = cvm__tri2_split_edge(T, nv, ht, hj, &res))) {
-                T->nv--;
-                return s;
-            }
-            if (res != CVM__INS_DONE) {
-                T->nv--;
-                return cvm__error(T->ctx, CVM_E_INTERNAL, CVM_ENT_VERTEX, nv,
-                                  "vertex %ld, computed where two segments cross, rounded too far "
-                                  "off them to be inserted", (long)nv);
+            if (nv < 0) {
+                /* p cannot split x-y. On or beside an end of the piece, a
+                 * rounded crossing where a third segment meets these two
+                 * (concurrent segments), that end is the crossing: route a-b
+                 * through it (the budget keeps a pathological cycle finite).
+                 * Elsewhere p rounded past a sliver: nudge it. Positions are
+                 * read afresh: adding a candidate vertex may move T->xy, so
+                 * pa and pb are stale here. */
+                int32_t end = at_vertex(p, cvm__tri2_pt(T, x))   ? x
+                              : at_vertex(p, cvm__tri2_pt(T, y)) ? y
+                                                                 : -1;
+                if (end >= 0 &&
+                    within_chain(cvm__tri2_pt(T, a), cvm__tri2_pt(T, b), cvm__tri2_pt(T, end)) &&
+                    w->reroutes++ <= 64 + T->nv)
+                    nv = end;
+                else if ((s = split_at_crossing(T, p, ht, hj, 1, &nv)))
+                    return s;
+                if (nv < 0 && w->reroutes++ <= 64 + T->nv)
+                    nv = near_end(cvm__tri2_pt(T, a), cvm__tri2_pt(T, b), x, cvm__tri2_pt(T, x), y,
+                                  cvm__tri2_pt(T, y));
+                if (nv < 0)
+                    return cvm__error(T->ctx, CVM_E_INTERNAL, CVM_ENT_VERTEX, (int64_t)T->nv,
+                                      "vertex %ld, computed where two segments cross, rounded too "
+                                      "far off them to be inserted", (long)T->nv);
             }
             if ((s = push(T, &w->pairs, &w->npairs, &w->cap_pairs, nv)) ||
                 (s = push(T, &w->pairs, &w->npairs, &w->cap_pairs, b)) ||

@@ -187,6 +187,9 @@ expect_exit 0 ".poly with points in .node" "$CLI" triangulate "$DATA/points_in_n
 expect_exit 0 "0-based poly with comments" "$CLI" triangulate "$DATA/zero_based_with_comments.poly" -o "$OUT/z.vtu" --keep-hull
 expect_exit 0 "regions and attributes" "$CLI" triangulate "$DATA/one_based_attributes_regions.poly" -o "$OUT/r.vtu"
 expect_grep "regions give cell data" "$OUT/r.vtu" 'Name="attribute"'
+# crossings rounded at the scale of 1e6: success, 13 points plus 17 crossing vertices
+expect_exit 0 "crossings near a large offset" "$CLI" triangulate "$DATA/crossings_near_large_offset.poly" -o "$OUT/c.node"
+expect_grep "crossings near a large offset: 17 crossing vertices" "$OUT/c.node" "30 2 0 1"
 
 # ---- optimise: the power dual -------------------------------------------------
 OUT=$TMP/optimise

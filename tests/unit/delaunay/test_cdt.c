@@ -11,6 +11,8 @@
 #include "support/fixtures.h"
 #include "support/mesh_oracle.h"
 #include "api/api_internal.h"
+#include "delaunay/tri2_store.h"
+#include "geom/geom_internal.h"
 
 static void expect_pslg(cvmtest_expect *e, const cvm_index *segs, size_t nseg, long euler, double area)
 {
@@ -393,6 +395,150 @@ START_TEST(check_detects_a_lost_segment)
 }
 END_TEST
 
+/* Segments of length about 0.01 near (1e6, 1e6) that cross many times: their
+ * crossing points are rounded at the scale of 1e6, up to about one unit in the
+ * last place (1.2e-10, 1e-8 of a segment's length) off the segment, and the
+ * piece 11-7 of segment 3-7 is shared with segment 7-11, which carries its
+ * index. The mesh is valid under the rule of cvm_mesh_check(); a check that
+ * scaled the tolerance by the length alone rejected it. */
+START_TEST(crossings_near_large_offset_keep_their_chains)
+{
+    static const double xy[] = {
+        1000000.002, 1000000.003,        1000000.0140000001, 1000000,
+        1000000.0150000001, 1000000.007, 1000000.0000000001, 1000000,
+        1000000.015, 1000000.007,        1000000.009, 1000000.003,
+        1000000, 1000000.015,            1000000.0140000001, 1000000.007,
+        1000000.0130000002, 1000000.005, 1000000.003, 1000000.014,
+        1000000.0020000001, 1000000.01,  1000000.0100000001, 1000000.005,
+        1000000.0120000001, 1000000.004};
+    static const cvm_index segs[] = {3, 7, 11, 4, 9, 5, 7, 11, 1, 9, 10, 12, 8, 6, 0, 2};
+    const double *p3 = xy + 6, *p7 = xy + 14;
+    double len = hypot(p7[0] - p3[0], p7[1] - p3[1]), tol = 0x1p-40 * (1000000.0140000001 + len);
+    size_t nv, k, off = 0;
+    cvm_mesh *m;
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_points(m, xy, 13, 2), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_segments(m, segs, 8), CVM_OK);
+    ck_assert_msg(cvm_mesh_triangulate(m) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    cvmtest_assert_valid(m);
+    /* point 11 lies exactly on segment 3-7; vertices on the shared piece
+     * 11-7 lie off it by rounding, within the stated bound */
+    ck_assert(cvm__orient2d(p3, p7, xy + 22) == 0);
+    ck_assert_int_eq(cvm_mesh_count(&nv, m, CVM_ENT_VERTEX), CVM_OK);
+    for (k = 0; k < 3 * m->tri.nt; k++) {
+        int32_t t = (int32_t)(k / 3), v;
+        const double *pv;
+        if (m->tri.te[k] != 3 || !cvm__tri2_is_live(&m->tri, t))
+            continue;
+        v = m->tri.tv[3 * (size_t)t + (k + 1) % 3];
+        pv = m->tri.xy + 2 * (size_t)v;
+        ck_assert_uint_lt((size_t)v, nv);
+        ck_assert(fabs(cvm__orient2d(p3, p7, pv)) <= tol * len);
+        off += cvm__orient2d(p3, p7, pv) != 0;
+    }
+    ck_assert_uint_gt(off, 0);
+    cvm_mesh_free(m);
+}
+END_TEST
+
+/* Segments (15,3)-(2,10), (11,4)-(0,15) and (11,8)-(6,5) of this integer PSLG
+ * meet at (8.5, 6.5). The first two cross at a rounded vertex an ulp away;
+ * the third then crosses their piece so close to that vertex that its own
+ * rounded crossing cannot split the piece: it is routed through the vertex,
+ * not refused. */
+START_TEST(concurrent_crossings_route_through_the_rounded_crossing)
+{
+    static const double xy[] = {15, 15, 15, 15, 15, 15, 15, 15, 15, 15, 15, 15, 15, 3, 3, 13, 6, 3,
+        6, 5, 14, 13, 14, 11, 12, 4, 14, 1, 7, 13, 6, 9, 8, 4, 8, 14, 6, 5, 8, 14, 9, 15, 2, 10, 5,
+        15, 12, 8, 5, 9, 0, 15, 14, 12, 11, 4, 9, 3, 1, 12, 11, 5, 15, 15, 13, 10, 12, 5, 13, 2, 11,
+        15, 11, 8, 8, 11, 15, 8, 6, 11, 10, 11, 12, 9, 1, 1};
+    static const cvm_index segs[] = {32, 33, 6, 21, 5, 27, 42, 37, 11, 22, 18, 10, 6, 11, 4, 37, 7,
+        2, 15, 14, 42, 29, 42, 15, 13, 29, 15, 40, 41, 1, 41, 15, 31, 26, 26, 2, 30, 35, 26, 6, 21,
+        26, 29, 41, 27, 25, 13, 33, 6, 32, 13, 18, 40, 23, 7, 22, 36, 18};
+    cvm_mesh *m;
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_points(m, xy, 43, 2), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_segments(m, segs, 29), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_KEEP_CONVEX_HULL, 1), CVM_OK);
+    ck_assert_msg(cvm_mesh_triangulate(m) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    cvmtest_assert_valid(m);
+    cvm_mesh_free(m);
+}
+END_TEST
+
+/* Segment 2, (11,0)-(6,15), is crossed at a rounded vertex near (9.27, 5.18)
+ * and its piece from there to (6,15) passes within an ulp of the input point
+ * (7,12), which lies exactly on the segment: a sliver. Segment 3, (0,13)-(15,8),
+ * crosses that piece at (7.5, 10.5), which rounds past the sliver; a double a
+ * few ulps toward the far side splits it instead of a refusal. */
+START_TEST(crossing_rounded_past_a_sliver_is_nudged)
+{
+    static const double xy[] = {2, 8, 7, 11, 14, 0, 14, 14, 15, 7, 10, 1, 0, 5, 8, 3, 0, 0, 0, 15,
+        14, 7, 2, 12, 9, 13, 4, 3, 15, 7, 6, 0, 14, 6, 0, 13, 15, 8, 13, 5, 1, 14, 1, 14, 1, 14, 1,
+        14, 1, 14, 1, 14, 1, 14, 1, 14, 1, 14, 7, 12, 13, 1, 3, 8, 11, 0, 7, 11, 14, 12, 9, 0, 2, 1,
+        3, 1, 0, 2, 1, 2, 14, 5, 6, 15, 0, 0};
+    static const cvm_index segs[] = {3, 40, 39, 10, 32, 41, 17, 18, 18, 0, 31, 0};
+    cvm_mesh *m;
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_points(m, xy, 43, 2), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_segments(m, segs, 6), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_KEEP_CONVEX_HULL, 1), CVM_OK);
+    ck_assert_msg(cvm_mesh_triangulate(m) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    cvmtest_assert_valid(m);
+    cvm_mesh_free(m);
+}
+END_TEST
+
+/* Segments (15,15)-(7+u,2) and (15+u,15)-(7,2), u one ulp, cross at a tiny
+ * angle between two other crossings: the slivers on both sides of the piece
+ * they cross are thinner than an ulp there, so no double splits it. The
+ * crossing segment is routed through the end of the piece within rounding of
+ * its line. */
+START_TEST(nearly_coincident_crossing_meets_at_the_piece_end)
+{
+    double xy[20];
+    static const int grid[20] = {15, 15, 15, 15, 15, 15, 15, 15, 15, 15, 15, 15, 8, 12, 11, 9, 7, 2, 7, 2};
+    static const cvm_index segs[] = {2, 9, 5, 0, 9, 1, 1, 7, 2, 8, 1, 0, 9, 7,
+                                     9, 2, 3, 4, 5, 8, 9, 0, 1, 4, 6, 1};
+    cvm_mesh *m;
+    int i;
+    for (i = 0; i < 20; i++)
+        xy[i] = (i % 4 == 2) ? nextafter((double)grid[i], 1e300) : (double)grid[i];
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_points(m, xy, 10, 2), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_segments(m, segs, 13), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_KEEP_CONVEX_HULL, 1), CVM_OK);
+    ck_assert_msg(cvm_mesh_triangulate(m) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    cvmtest_assert_valid(m);
+    cvm_mesh_free(m);
+}
+END_TEST
+
+/* Segment (12+u,2)-(3+u,7), u one ulp, crosses (15,6)-(3,7) within an ulp of
+ * the end (3,7): it passes through that end, an ulp beyond its own end along
+ * its axis, and both cvm_mesh_check() and the oracle walking the segments
+ * accept the chain. */
+START_TEST(segment_ends_an_ulp_apart_meet_at_one)
+{
+    double xy[8] = {15, 6, 0, 7, 3, 7, 0, 2};
+    static const cvm_index segs[] = {0, 2, 3, 1, 2, 0};
+    cvmtest_expect e;
+    cvm_mesh *m;
+    xy[2] = nextafter(3.0, 4.0);
+    xy[6] = nextafter(12.0, 13.0);
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_points(m, xy, 4, 2), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_segments(m, segs, 3), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_KEEP_CONVEX_HULL, 1), CVM_OK);
+    ck_assert_msg(cvm_mesh_triangulate(m) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    cvmtest_expect_init(&e);
+    e.segs = segs;
+    e.nseg = 3;
+    cvmtest_assert_valid_ex(m, &e);
+    cvm_mesh_free(m);
+}
+END_TEST
+
 TCase *delaunay_cdt_tcase(void)
 {
     TCase *tc = tcase_create("cdt");
@@ -410,5 +556,10 @@ TCase *delaunay_cdt_tcase(void)
     tcase_add_test(tc, hole_grid_names_the_first_bad_hole);
     tcase_add_test(tc, carving_can_be_cancelled);
     tcase_add_test(tc, time_limit_stops_carving);
+    tcase_add_test(tc, crossings_near_large_offset_keep_their_chains);
+    tcase_add_test(tc, concurrent_crossings_route_through_the_rounded_crossing);
+    tcase_add_test(tc, crossing_rounded_past_a_sliver_is_nudged);
+    tcase_add_test(tc, nearly_coincident_crossing_meets_at_the_piece_end);
+    tcase_add_test(tc, segment_ends_an_ulp_apart_meet_at_one);
     return tc;
 }

@@ -276,11 +276,13 @@ static int progresses(const double *cur, const double *w, const double *b, int a
                       const double *a)
 {
     if (weak) {
-        /* a rounded intersection may sit an ulp behind the previous one: any
-         * place within the segment's extent (widened by 1e-9 of it) will do;
-         * visit stamps keep the search finite */
+        /* a rounded intersection may sit an ulp behind the previous one, or
+         * an ulp beyond an end: any place within the segment's extent, widened
+         * by 1e-9 of it plus 2^-40 of its coordinates (rounding happens at
+         * their scale), will do; visit stamps keep the search finite */
         double lo = a[ax] < b[ax] ? a[ax] : b[ax], hi = a[ax] < b[ax] ? b[ax] : a[ax];
-        double eps = 1e-9 * (hi - lo);
+        double mag = fabs(a[0]) + fabs(a[1]) + fabs(b[0]) + fabs(b[1]);
+        double eps = 1e-9 * (hi - lo) + 0x1p-40 * mag;
         return w[ax] >= lo - eps && w[ax] <= hi + eps;
     }
     if (cur[ax] < b[ax])
@@ -322,12 +324,15 @@ static int check_segment(oracle *o, size_t k, cvm_index a, cvm_index b)
         for (i = o->adj_off[cur]; i < o->adj_off[cur + 1]; i++) {
             cvm_index w = o->adj[i];
             const double *pw = P(o, w);
-            int steiner = (size_t)w >= o->n_orig, on_line;
-            int weak = steiner || (size_t)cur >= o->n_orig;
+            int steiner = (size_t)w >= o->n_orig;
+            int on_line = w == b || cvm__orient2d(pa, pb, pw) == 0;
+            /* a step off the exact line is a rounding case: an input vertex
+             * an ulp from the segment's end may carry it (concurrent or
+             * nearly coincident segments meet there), even an ulp beyond b */
+            int weak = steiner || (size_t)cur >= o->n_orig || !on_line;
             if (o->visit[w] == stamp ||
                 (w != b && !progresses(P(o, cur), pw, pb, ax, weak, pa)))
                 continue;
-            on_line = w == b || cvm__orient2d(pa, pb, pw) == 0;
             /* an input vertex within rounding of the segment may carry it too:
              * a sub-segment from a rounded crossing can pass exactly through it
              * (then only along output segments) */
