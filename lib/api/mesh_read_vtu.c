@@ -18,15 +18,38 @@
  * cvm_mesh_set_weights() keeps. The result must have exactly the file's
  * triangles (as vertex sets); then the kernel's triangle slots are reordered
  * and rotated to the file's order and first vertices, so that writing the
- * mesh again reproduces the file. Everything runs on a scratch handle that
- * replaces the caller's only on success.
+ * mesh again reproduces the file. Everything is built in engine structures
+ * of its own (struct rebuild) that replace the handle's mesh only on success.
  */
+#include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "output_internal.h"
 #include "geom/geom_internal.h"
+
+/* The mesh being rebuilt: the parts of a cvm_mesh that a read replaces, built
+ * with the kernel (lib/delaunay) as cvm_mesh_triangulate() and
+ * cvm_mesh_set_weights() would build them from the same input and options,
+ * and moved into the handle (adopt()) only once they hold the file's mesh.
+ * in.xy, in.pmark, in.pattr are the file's arrays (owned by the
+ * cvm__vtu_mesh until adopt() takes them); in.seg, in.smark, in.holes and the
+ * rest are owned here. */
+typedef struct rebuild {
+    cvm__ctx ctx;        /* the handle's allocator; no progress callback and no time
+                            limit (a read is not cut short); the message of a failure */
+    uint64_t seed;       /* CVM_OPT_SEED */
+    int reject_dup;      /* CVM_OPT_REJECT_DUPLICATES */
+    int split;           /* CVM_OPT_SPLIT_INTERSECTIONS */
+    cvm__pslg in;        /* the input of the current attempt */
+    cvm__tri2 tri;
+    int32_t *input_map;  /* in.np: input point -> vertex */
+    size_t n_dup;
+    int32_t *vmark;      /* marker per vertex */
+    double *vattr;       /* in.nattr per vertex, or NULL */
+    size_t cap_vmark, cap_vattr;
+} rebuild;
 
 /* A triangle as its sorted vertex ids, and where it comes from. */
 typedef struct tkey {
@@ -246,12 +269,12 @@ static cvm_status segments(cvm_mesh *m, const cvm__vtu_mesh *vm, const int32_t *
     return CVM_OK;
 }
 
-/* File triangle keys in vertex ids (through t's input map), sorted. */
-static tkey *file_keys(cvm_mesh *t, const cvm__vtu_mesh *vm)
+/* File triangle keys in vertex ids (through rb's input map), sorted. */
+static tkey *file_keys(rebuild *rb, const cvm__vtu_mesh *vm)
 {
-    tkey *k = cvm__malloc(&t->ctx, (vm->nt + 1) * sizeof *k);
+    tkey *k = cvm__malloc(&rb->ctx, (vm->nt + 1) * sizeof *k);
     size_t i;
-    const int32_t *map = t->input_map;
+    const int32_t *map = rb->input_map;
     if (!k)
         return NULL;
     for (i = 0; i < vm->nt; i++)
@@ -403,14 +426,14 @@ static int in_file_domain(const cvm__vtu_mesh *vm, const tri_grid *g, const doub
  * inside the file's domain is triangulated as in the file when the file is
  * valid, and a triangle outside the domain cannot have the vertex set of a
  * file triangle (the two would coincide). *n_out = 0 when there is none. */
-static cvm_status hole_seeds(cvm_mesh *t, const cvm__vtu_mesh *vm, double **out, size_t *n_out)
+static cvm_status hole_seeds(rebuild *rb, const cvm__vtu_mesh *vm, double **out, size_t *n_out)
 {
-    const cvm__tri2 *T = &t->tri;
-    tkey *fk = file_keys(t, vm);
-    uint8_t *state = cvm__calloc(&t->ctx, T->nt + 1, 1); /* 1 unvisited, 2 visited, 0 other */
-    uint8_t *member = cvm__calloc(&t->ctx, T->nt + 1, 1);
-    int32_t *stack = cvm__malloc(&t->ctx, (T->nt + 1) * sizeof *stack);
-    double *h = cvm__malloc(&t->ctx, (2 * T->nt + 2) * sizeof *h);
+    const cvm__tri2 *T = &rb->tri;
+    tkey *fk = file_keys(rb, vm);
+    uint8_t *state = cvm__calloc(&rb->ctx, T->nt + 1, 1); /* 1 unvisited, 2 visited, 0 other */
+    uint8_t *member = cvm__calloc(&rb->ctx, T->nt + 1, 1);
+    int32_t *stack = cvm__malloc(&rb->ctx, (T->nt + 1) * sizeof *stack);
+    double *h = cvm__malloc(&rb->ctx, (2 * T->nt + 2) * sizeof *h);
     tri_grid g;
     int have_grid = 0;
     size_t s, n = 0;
@@ -420,7 +443,7 @@ static cvm_status hole_seeds(cvm_mesh *t, const cvm__vtu_mesh *vm, double **out,
     *out = NULL;
     *n_out = 0;
     if (!fk || !state || !member || !stack || !h) {
-        st = cvm__nomem(&t->ctx);
+        st = cvm__nomem(&rb->ctx);
         goto out;
     }
     for (s = 0; s < T->nt; s++) {
@@ -452,8 +475,8 @@ static cvm_status hole_seeds(cvm_mesh *t, const cvm__vtu_mesh *vm, double **out,
         if (!any) {
             const int32_t *v = T->tv + 3 * s;
             if (!have_grid) {
-                if (grid_build(&t->ctx, vm, &g)) {
-                    st = cvm__nomem(&t->ctx);
+                if (grid_build(&rb->ctx, vm, &g)) {
+                    st = cvm__nomem(&rb->ctx);
                     goto out;
                 }
                 have_grid = 1;
@@ -471,12 +494,12 @@ static cvm_status hole_seeds(cvm_mesh *t, const cvm__vtu_mesh *vm, double **out,
     h = NULL;
     *n_out = n;
 out:
-    grid_free(&t->ctx, &g);
-    cvm__free(&t->ctx, fk);
-    cvm__free(&t->ctx, state);
-    cvm__free(&t->ctx, member);
-    cvm__free(&t->ctx, stack);
-    cvm__free(&t->ctx, h);
+    grid_free(&rb->ctx, &g);
+    cvm__free(&rb->ctx, fk);
+    cvm__free(&rb->ctx, state);
+    cvm__free(&rb->ctx, member);
+    cvm__free(&rb->ctx, stack);
+    cvm__free(&rb->ctx, h);
     return st;
 }
 
@@ -552,22 +575,22 @@ out:
     return s;
 }
 
-/* Compare t's domain triangles with the file's; on a match put them in the
+/* Compare rb's domain triangles with the file's; on a match put them in the
  * file's order. *bad receives the first file triangle not reproduced, or -1. */
-static cvm_status match(cvm_mesh *t, const cvm__vtu_mesh *vm, int64_t *bad)
+static cvm_status match(rebuild *rb, const cvm__vtu_mesh *vm, int64_t *bad)
 {
     size_t nk = 0, k;
-    tkey *sk = slot_keys(&t->ctx, &t->tri, &nk);
-    int32_t *slot = cvm__malloc(&t->ctx, (vm->nt + 1) * sizeof *slot);
-    uint8_t *rot = cvm__malloc(&t->ctx, vm->nt + 1), *taken = cvm__calloc(&t->ctx, t->tri.nt + 1, 1);
+    tkey *sk = slot_keys(&rb->ctx, &rb->tri, &nk);
+    int32_t *slot = cvm__malloc(&rb->ctx, (vm->nt + 1) * sizeof *slot);
+    uint8_t *rot = cvm__malloc(&rb->ctx, vm->nt + 1), *taken = cvm__calloc(&rb->ctx, rb->tri.nt + 1, 1);
     cvm_status s = CVM_OK;
     *bad = -1;
     if (!sk || !slot || !rot || !taken) {
-        s = cvm__nomem(&t->ctx);
+        s = cvm__nomem(&rb->ctx);
         goto out;
     }
     for (k = 0; k < vm->nt && *bad < 0; k++) {
-        const int32_t *f = vm->tri + 3 * k, *map = t->input_map;
+        const int32_t *f = vm->tri + 3 * k, *map = rb->input_map;
         tkey key;
         int32_t sl;
         make_key(&key, map[f[0]], map[f[1]], map[f[2]], 0);
@@ -578,177 +601,425 @@ static cvm_status match(cvm_mesh *t, const cvm__vtu_mesh *vm, int64_t *bad)
         }
         taken[sl] = 1;
         slot[k] = sl;
-        rot[k] = (uint8_t)(t->tri.tv[3 * (size_t)sl] == map[f[0]] ? 0
-                           : t->tri.tv[3 * (size_t)sl + 1] == map[f[0]] ? 1 : 2);
+        rot[k] = (uint8_t)(rb->tri.tv[3 * (size_t)sl] == map[f[0]] ? 0
+                           : rb->tri.tv[3 * (size_t)sl + 1] == map[f[0]] ? 1 : 2);
     }
     if (*bad < 0 && nk != vm->nt)
         *bad = (int64_t)vm->nt; /* the triangulation has more triangles than the file */
-    if (*bad < 0 && permute(&t->tri, slot, rot, vm->nt))
-        s = cvm__nomem(&t->ctx);
+    if (*bad < 0 && permute(&rb->tri, slot, rot, vm->nt))
+        s = cvm__nomem(&rb->ctx);
 out:
-    cvm__free(&t->ctx, sk);
-    cvm__free(&t->ctx, slot);
-    cvm__free(&t->ctx, rot);
-    cvm__free(&t->ctx, taken);
+    cvm__free(&rb->ctx, sk);
+    cvm__free(&rb->ctx, slot);
+    cvm__free(&rb->ctx, rot);
+    cvm__free(&rb->ctx, taken);
     return s;
 }
 
-/* Set the file's input on t (segments as given) and triangulate. */
-static cvm_status build(cvm_mesh *t, const cvm__vtu_mesh *vm, const int32_t *seg,
-                        const int32_t *smark, size_t nseg, const double *holes, size_t nholes)
+/* ---- the rebuild: cvm_mesh_triangulate() of the attempt's input, on rb ---- */
+
+static void rb_init(rebuild *rb, const cvm_mesh *m, const cvm__vtu_mesh *vm)
 {
-    cvm_status s;
-    if ((s = cvm_mesh_set_points(t, vm->p.xy, vm->p.np, 2)) ||
-        (vm->p.pmark && (s = cvm_mesh_set_point_markers(t, vm->p.pmark, vm->p.np))) ||
-        (vm->p.pattr && (s = cvm_mesh_set_point_attributes(t, vm->p.pattr, vm->p.np, vm->p.nattr))) ||
-        (s = cvm_mesh_set_segments(t, seg, nseg)) ||
-        (s = cvm_mesh_set_segment_markers(t, nseg ? smark : NULL, nseg)) ||
-        (s = cvm_mesh_set_holes(t, holes, nholes)))
-        return s;
-    return cvm_mesh_triangulate(t);
+    memset(rb, 0, sizeof *rb);
+    rb->ctx = m->ctx;
+    rb->ctx.progress_fn = NULL;
+    rb->ctx.progress_payload = NULL;
+    rb->ctx.progress_every = 0;
+    cvm__clear_error(&rb->ctx);
+    cvm__run_begin(&rb->ctx, 0);
+    rb->seed = (uint64_t)cvm__opt(m, CVM_OPT_SEED);
+    rb->reject_dup = cvm__opt(m, CVM_OPT_REJECT_DUPLICATES) != 0;
+    rb->split = cvm__opt(m, CVM_OPT_SPLIT_INTERSECTIONS) != 0;
+    rb->in.xy = vm->p.xy;
+    rb->in.np = vm->p.np;
+    rb->in.pmark = vm->p.pmark;
+    rb->in.pattr = vm->p.pattr;
+    rb->in.nattr = vm->p.pattr ? vm->p.nattr : 0;
+    cvm__tri2_init(&rb->tri, &rb->ctx);
 }
 
-/* Weights of the file (per input point) onto t's vertices. forced: t holds
- * the file's triangles already; the weights are set without flips, then the
- * Lawson flips of cvm_mesh_set_weights() run, which change nothing in the
- * domain exactly when the file's mesh is what cvm_mesh_set_weights() keeps
- * (regular, or its illegal edges unflippable: vanished vertices). */
-static cvm_status weights(cvm_mesh *t, const cvm__vtu_mesh *vm, int forced)
+/* Free what rb owns (not the file's point arrays). */
+static void rb_free(rebuild *rb)
 {
-    cvm__tri2 *T = &t->tri;
-    size_t i, nv = T->nv;
-    double *w;
-    cvm_status s;
-    if (!vm->w && !forced)
-        return CVM_OK;
-    w = cvm__calloc(&t->ctx, (forced && T->cap_v > nv ? T->cap_v : nv) + 1, sizeof *w);
-    if (!w)
-        return cvm__nomem(&t->ctx);
-    for (i = 0; vm->w && i < vm->p.np; i++)
-        w[t->input_map[i]] = vm->w[i];
-    if (!forced) {
-        s = cvm_mesh_set_weights(t, w, nv);
-        cvm__free(&t->ctx, w);
-        return s;
+    cvm__tri2_destroy(&rb->tri);
+    cvm__free(&rb->ctx, rb->input_map);
+    cvm__free(&rb->ctx, rb->vmark);
+    cvm__free(&rb->ctx, rb->vattr);
+    cvm__free(&rb->ctx, rb->in.seg);
+    cvm__free(&rb->ctx, rb->in.smark);
+    cvm__free(&rb->ctx, rb->in.holes);
+}
+
+/* Grow the per-vertex marker and attribute arrays to the kernel's vertex count. */
+static cvm_status rb_grow_vertex_data(rebuild *rb)
+{
+    size_t nv = rb->tri.nv, na = rb->in.nattr;
+    if (nv > rb->cap_vmark &&
+        cvm__grow(&rb->ctx, (void **)&rb->vmark, &rb->cap_vmark, nv, sizeof(int32_t)))
+        return CVM_E_NOMEM;
+    if (na && nv * na > rb->cap_vattr &&
+        cvm__grow(&rb->ctx, (void **)&rb->vattr, &rb->cap_vattr, nv * na, sizeof(double)))
+        return CVM_E_NOMEM;
+    return CVM_OK;
+}
+
+static int32_t rb_seg_marker(const rebuild *rb, int32_t seg)
+{
+    if (seg < 0 || (size_t)seg >= rb->in.nseg)
+        return 0;
+    return rb->in.smark ? rb->in.smark[seg] : 1;
+}
+
+/* Marker and attributes of the vertices from..nv-1 that splitting crossing
+ * line cells created on segment k: the segment's marker, the attributes of
+ * its ends interpolated (as cvm_mesh_triangulate() gives them). */
+static void rb_steiner_data(rebuild *rb, size_t from, int32_t k)
+{
+    size_t v, na = rb->in.nattr, i;
+    const int32_t *sg = rb->in.seg + 2 * (size_t)k;
+    const double *pa = rb->in.xy + 2 * (size_t)sg[0], *pb = rb->in.xy + 2 * (size_t)sg[1];
+    double len2 = (pb[0] - pa[0]) * (pb[0] - pa[0]) + (pb[1] - pa[1]) * (pb[1] - pa[1]);
+    for (v = from; v < rb->tri.nv; v++) {
+        const double *p = rb->tri.xy + 2 * v;
+        double t = len2 > 0 ? ((p[0] - pa[0]) * (pb[0] - pa[0]) + (p[1] - pa[1]) * (pb[1] - pa[1])) / len2 : 0;
+        rb->vmark[v] = rb_seg_marker(rb, k);
+        t = t < 0 ? 0 : t > 1 ? 1 : t;
+        for (i = 0; i < na; i++)
+            rb->vattr[v * na + i] =
+                (1 - t) * rb->in.pattr[(size_t)sg[0] * na + i] + t * rb->in.pattr[(size_t)sg[1] * na + i];
     }
-    cvm__free(&t->ctx, T->w);
-    T->w = vm->w ? w : NULL;
-    if (!vm->w)
-        cvm__free(&t->ctx, w);
-    return cvm__tri2_make_regular(T, NULL) ? cvm__nomem(&t->ctx) : CVM_OK;
 }
 
-/* Forget the temporary constraints (segment ids nreal and up) of a forced rebuild. */
-static void drop_temporary(cvm_mesh *t, size_t nreal)
+/* The exact predicates cannot span more than 2^180 between the largest
+ * coordinate and a nonzero one (see cvm_mesh_triangulate()): refused alike. */
+static cvm_status rb_check_dynamic_range(rebuild *rb)
 {
-    cvm__tri2 *T = &t->tri;
-    size_t k;
-    if (t->in.nseg <= nreal)
-        return;
-    for (k = 0; T->te && k < 3 * T->nt; k++)
-        if (T->te[k] >= (int32_t)nreal)
-            T->te[k] = -1;
-    t->in.nseg = nreal;
-}
-
-/* One attempt with the first nseg segments of seg, of which the first
- * nreal are kept (nseg > nreal: a forced rebuild, see weights()); nseg = 0
- * tries the plain triangulation of the points (files without lines). *bad as
- * in match(). */
-static cvm_status attempt(cvm_mesh *t, const cvm__vtu_mesh *vm, const int32_t *seg,
-                          const int32_t *smark, size_t nseg, size_t nreal, int64_t *bad)
-{
-    double *holes = NULL;
-    size_t nholes = 0;
-    int forced = nseg > nreal;
-    cvm_status s = build(t, vm, seg, smark, nseg, NULL, 0);
-    if (s)
-        return s;
-    drop_temporary(t, nreal);
-    if ((s = weights(t, vm, forced)))
-        return s;
-    if (nseg) {
-        if ((s = hole_seeds(t, vm, &holes, &nholes)))
-            return s;
-        if (nholes && !(s = build(t, vm, seg, smark, nseg, holes, nholes))) {
-            drop_temporary(t, nreal);
-            s = weights(t, vm, forced);
-        }
-        cvm__free(&t->ctx, holes);
-        if (s)
-            return s;
-    }
-    if ((s = match(t, vm, bad)) || *bad >= 0)
-        return s;
-    if (vm->tattr) {
-        size_t k;
-        if (cvm__tri2_enable_attributes(&t->tri))
-            return cvm__nomem(&t->ctx);
-        for (k = 0; k < vm->nt; k++)
-            t->tri.ta[k] = vm->tattr[k];
+    const double *xy = rb->in.xy;
+    size_t i, n = 2 * rb->in.np;
+    double big = 0, lim;
+    for (i = 0; i < n; i++)
+        big = fabs(xy[i]) > big ? fabs(xy[i]) : big;
+    lim = ldexp(big, -180);
+    for (i = 0; i < n; i++) {
+        double a = fabs(xy[i]);
+        char where[CVM__WHERE_LEN];
+        if (a != 0 && a < lim)
+            return cvm__error(&rb->ctx, CVM_E_INPUT_DEGENERATE, CVM_ENT_INPUT_POINT, (int64_t)(i / 2),
+                              "%spoint %lld has %c = %.17g, more than 2^180 times smaller than the "
+                              "largest coordinate %.17g: exact predicates cannot span that range; "
+                              "round it to 0 or translate the input",
+                              cvm__src_where(where, sizeof where, &rb->in.src_point, i / 2),
+                              cvm__src_num(&rb->in.src_point, i / 2), i % 2 ? 'y' : 'x', xy[i], big);
     }
     return CVM_OK;
 }
 
-/* Move the mesh of t into m (m's front markers and staged writes stay) and
- * free t with m's old mesh. */
-static void adopt(cvm_mesh *m, cvm_mesh *t)
+/* The input points as vertices: the Delaunay triangulation of the distinct
+ * ones, input_map, markers and attributes (first occurrences win). */
+static cvm_status rb_points(rebuild *rb)
 {
-    cvm_mesh tmp = *m;
-    cvm__ctx c;
-    int32_t *fm = m->front_marks;
-    size_t nfm = m->n_front_marks;
-    cvm__write_set staged = m->staged;
-    *m = *t;
-    *t = tmp;
-    c = m->ctx;
-    m->ctx = t->ctx;
-    t->ctx = c;
-    m->tri.ctx = &m->ctx;
-    t->tri.ctx = &t->ctx;
-    t->front_marks = m->front_marks;
-    t->n_front_marks = m->n_front_marks;
-    m->front_marks = fm;
-    m->n_front_marks = nfm;
-    t->staged = m->staged;
-    m->staged = staged;
-    memcpy(m->opt, t->opt, sizeof m->opt);
-    cvm_mesh_free(t);
+    cvm__tri2 *T = &rb->tri;
+    const cvm__item_src *src = &rb->in.src_point;
+    size_t i, n = rb->in.np, na = rb->in.nattr;
+    int32_t *dup_of;
+    cvm_status s;
+    if (n > (size_t)INT32_MAX / 4)
+        return cvm__error(&rb->ctx, CVM_E_TOO_LARGE, CVM_ENT_INPUT_POINT, -1,
+                          "%lu points exceed the limit of %ld", (unsigned long)n,
+                          (long)(INT32_MAX / 4));
+    if ((s = rb_check_dynamic_range(rb)))
+        return s;
+    if ((s = cvm__tri2_reserve_vertices(T, n)))
+        return s == CVM_E_NOMEM ? cvm__nomem(&rb->ctx)
+                                : cvm__error(&rb->ctx, s, CVM_ENT_NONE, -1, "too many points");
+    for (i = 0; i < n; i++) {
+        int32_t id;
+        if (cvm__tri2_add_vertex(T, rb->in.xy + 2 * i, &id))
+            return cvm__nomem(&rb->ctx);
+    }
+    dup_of = cvm__malloc(&rb->ctx, n * sizeof *dup_of);
+    rb->input_map = cvm__malloc(&rb->ctx, n * sizeof *rb->input_map);
+    if (!dup_of || !rb->input_map) {
+        cvm__free(&rb->ctx, dup_of);
+        return cvm__nomem(&rb->ctx);
+    }
+    if ((s = cvm__tri2_build(T, rb->seed, dup_of))) {
+        cvm__free(&rb->ctx, dup_of);
+        return s;
+    }
+    rb->n_dup = 0;
+    for (i = 0; i < n; i++) {
+        char where[CVM__WHERE_LEN], also[CVM__WHERE_LEN];
+        if (dup_of[i] < 0)
+            continue;
+        if (rb->reject_dup) {
+            s = cvm__error(&rb->ctx, CVM_E_INPUT_DUPLICATE, CVM_ENT_INPUT_POINT, (int64_t)i,
+                           "%spoint %lld at (%.17g, %.17g) duplicates point %lld%s",
+                           cvm__src_where(where, sizeof where, src, i), cvm__src_num(src, i),
+                           rb->in.xy[2 * i], rb->in.xy[2 * i + 1], cvm__src_num(src, (size_t)dup_of[i]),
+                           cvm__src_also(also, sizeof also, src, (size_t)dup_of[i], src));
+            cvm__free(&rb->ctx, dup_of);
+            return s;
+        }
+        rb->n_dup++;
+    }
+    cvm__tri2_compact(T, dup_of, rb->input_map);
+    cvm__free(&rb->ctx, dup_of);
+    if (rb_grow_vertex_data(rb))
+        return cvm__nomem(&rb->ctx);
+    for (i = n; i-- > 0;) {
+        int32_t v = rb->input_map[i];
+        size_t k;
+        rb->vmark[v] = rb->in.pmark ? rb->in.pmark[i] : 0;
+        for (k = 0; k < na; k++)
+            rb->vattr[(size_t)v * na + k] = rb->in.pattr[i * na + k];
+    }
+    return CVM_OK;
 }
 
-static cvm_status run(cvm_mesh *m, cvm_mesh *t, const char *path, const cvm__vtu_mesh *vm)
+/* The segments as constrained edges. Their ends are distinct file points
+ * (file_checks()), so only crossings can fail, with
+ * CVM_OPT_SPLIT_INTERSECTIONS = 0. */
+static cvm_status rb_segments(rebuild *rb)
 {
-    int32_t *bnd = NULL, *inner = NULL, *seg = NULL, *mark = NULL;
+    cvm__tri2 *T = &rb->tri;
+    const cvm__item_src *src = &rb->in.src_segment, *psrc = &rb->in.src_point;
+    size_t k;
+    cvm_status s;
+    for (k = 0; k < rb->in.nseg; k++) {
+        int32_t ia = rb->in.seg[2 * k], ib = rb->in.seg[2 * k + 1];
+        int32_t a = rb->input_map[ia], b = rb->input_map[ib], other = -1;
+        size_t nv0 = T->nv;
+        char where[CVM__WHERE_LEN], also[CVM__WHERE_LEN];
+        if (a == b)
+            return cvm__error(&rb->ctx, CVM_E_INPUT_DEGENERATE, CVM_ENT_INPUT_SEGMENT, (int64_t)k,
+                              "%ssegment %lld (points %lld-%lld) has zero length%s",
+                              cvm__src_where(where, sizeof where, src, k), cvm__src_num(src, k),
+                              cvm__src_num(psrc, (size_t)ia), cvm__src_num(psrc, (size_t)ib),
+                              ia == ib ? "" : ": its endpoints are at the same position");
+        s = cvm__tri2_insert_segment(T, a, b, (int32_t)k, rb->split, &other);
+        if (s == CVM_E_INPUT_INTERSECTING) {
+            const int32_t *o = rb->in.seg + 2 * (size_t)other;
+            return cvm__error(&rb->ctx, s, CVM_ENT_INPUT_SEGMENT, (int64_t)k,
+                              "%ssegment %lld (points %lld-%lld) crosses segment %lld%s (points "
+                              "%lld-%lld) in its interior",
+                              cvm__src_where(where, sizeof where, src, k), cvm__src_num(src, k),
+                              cvm__src_num(psrc, (size_t)ia), cvm__src_num(psrc, (size_t)ib),
+                              cvm__src_num(src, (size_t)other),
+                              cvm__src_also(also, sizeof also, src, (size_t)other, src),
+                              cvm__src_num(psrc, (size_t)o[0]), cvm__src_num(psrc, (size_t)o[1]));
+        }
+        if (s == CVM_E_NOMEM)
+            return cvm__nomem(&rb->ctx);
+        if (s)
+            return s;
+        if (T->nv > nv0) {
+            if (rb_grow_vertex_data(rb))
+                return cvm__nomem(&rb->ctx);
+            rb_steiner_data(rb, nv0, (int32_t)k);
+        }
+    }
+    return CVM_OK;
+}
+
+static size_t rb_domain_count(const cvm__tri2 *T)
+{
+    size_t t, n = 0;
+    for (t = 0; t < T->nt; t++)
+        n += cvm__tri2_in_domain(T, (int32_t)t);
+    return n;
+}
+
+/* Remove the exterior (the segments bound the file's domain) and the holes. */
+static cvm_status rb_carve(rebuild *rb)
+{
+    cvm__tri2 *T = &rb->tri;
+    const cvm__item_src *src = &rb->in.src_hole;
+    size_t k, ndomain, visited = 0, removed = 0;
+    cvm_status s = CVM_OK;
+    if (cvm__tri2_flood_out(T, NULL, 0, rb->in.nseg != 0))
+        return cvm__nomem(&rb->ctx);
+    if ((ndomain = rb_domain_count(T)) == 0)
+        return cvm__error(&rb->ctx, CVM_E_INPUT_NOT_CLOSED, CVM_ENT_NONE, -1,
+                          "removing the exterior removed every triangle: the segments do not "
+                          "enclose a region (open boundary)");
+    for (k = 0; k < rb->in.nholes && !s; k++) {
+        const double *h = rb->in.holes + 2 * k;
+        char where[CVM__WHERE_LEN];
+        int32_t t;
+        int j;
+        cvm__loc loc = cvm__tri2_locate(T, h, -1, &t, &j);
+        if (loc == CVM__LOC_OUTSIDE || t < 0) {
+            s = cvm__error(&rb->ctx, CVM_E_INPUT_OUTSIDE, CVM_ENT_HOLE, (int64_t)k,
+                           "%shole %lld at (%.17g, %.17g) lies outside the convex hull of the points",
+                           cvm__src_where(where, sizeof where, src, k), cvm__src_num(src, k), h[0], h[1]);
+        } else if (cvm__tri2_flood_out_more(T, t, &visited, &removed)) {
+            s = cvm__nomem(&rb->ctx);
+        } else if ((ndomain -= removed) == 0) {
+            s = cvm__error(&rb->ctx, CVM_E_INPUT_NOT_CLOSED, CVM_ENT_HOLE, (int64_t)k,
+                           "%shole %lld at (%.17g, %.17g) removed every remaining triangle: no "
+                           "closed loop of segments separates it from the rest of the domain",
+                           cvm__src_where(where, sizeof where, src, k), cvm__src_num(src, k), h[0], h[1]);
+        }
+    }
+    cvm__tri2_clear_mark2(T);
+    return s;
+}
+
+/* Vertices on constrained edges with marker 0 take the segment's marker. */
+static void rb_boundary_markers(rebuild *rb)
+{
+    const cvm__tri2 *T = &rb->tri;
+    size_t t;
+    int j, k;
+    for (t = 0; T->te && t < T->nt; t++) {
+        if (!cvm__tri2_in_domain(T, (int32_t)t))
+            continue;
+        for (j = 0; j < 3; j++) {
+            int32_t seg = T->te[3 * t + (size_t)j];
+            for (k = 1; seg >= 0 && k <= 2; k++) {
+                int32_t v = T->tv[3 * t + (size_t)(j + k) % 3];
+                if (rb->vmark[v] == 0)
+                    rb->vmark[v] = rb_seg_marker(rb, seg);
+            }
+        }
+    }
+}
+
+/* Triangulate rb's input with the first nseg of in.seg as segments and the
+ * given hole points: what cvm_mesh_triangulate() makes of it. */
+static cvm_status build(rebuild *rb, size_t nseg, const double *holes, size_t nholes)
+{
+    cvm_status s;
+    cvm__tri2_clear(&rb->tri);
+    cvm__free(&rb->ctx, rb->input_map);
+    rb->input_map = NULL;
+    rb->n_dup = 0;
+    rb->in.nseg = nseg;
+    cvm__free(&rb->ctx, rb->in.holes);
+    rb->in.holes = NULL;
+    rb->in.nholes = 0;
+    if (nholes) {
+        if (!(rb->in.holes = cvm__malloc(&rb->ctx, 2 * nholes * sizeof *holes)))
+            return cvm__nomem(&rb->ctx);
+        memcpy(rb->in.holes, holes, 2 * nholes * sizeof *holes);
+        rb->in.nholes = nholes;
+    }
+    if ((s = rb_points(rb)) || (nseg && (s = rb_segments(rb))) ||
+        ((nseg || nholes) && (s = rb_carve(rb))))
+        return s;
+    rb_boundary_markers(rb);
+    return CVM_OK;
+}
+
+/* Weights of the file (per input point) onto rb's vertices. forced: rb holds
+ * the file's triangles already; the weights are set without flips, then the
+ * Lawson flips of cvm_mesh_set_weights() run, which change nothing in the
+ * domain exactly when the file's mesh is what cvm_mesh_set_weights() keeps
+ * (regular, or its illegal edges unflippable: vanished vertices). Not
+ * forced: the flips of cvm_mesh_set_weights() from the (constrained)
+ * Delaunay triangulation. */
+static cvm_status weights(rebuild *rb, const cvm__vtu_mesh *vm, int forced)
+{
+    cvm__tri2 *T = &rb->tri;
+    size_t i, nv = T->nv;
+    double *w;
+    if (!vm->w && !forced)
+        return CVM_OK;
+    w = cvm__calloc(&rb->ctx, (T->cap_v > nv ? T->cap_v : nv) + 1, sizeof *w);
+    if (!w)
+        return cvm__nomem(&rb->ctx);
+    for (i = 0; vm->w && i < vm->p.np; i++)
+        w[rb->input_map[i]] = vm->w[i];
+    cvm__free(&rb->ctx, T->w);
+    T->w = vm->w ? w : NULL;
+    if (!vm->w)
+        cvm__free(&rb->ctx, w);
+    return cvm__tri2_make_regular(T, NULL) ? cvm__nomem(&rb->ctx) : CVM_OK;
+}
+
+/* Forget the temporary constraints (segment ids nreal and up) of a forced rebuild. */
+static void drop_temporary(rebuild *rb, size_t nreal)
+{
+    cvm__tri2 *T = &rb->tri;
+    size_t k;
+    if (rb->in.nseg <= nreal)
+        return;
+    for (k = 0; T->te && k < 3 * T->nt; k++)
+        if (T->te[k] >= (int32_t)nreal)
+            T->te[k] = -1;
+    rb->in.nseg = nreal;
+}
+
+/* One attempt with the first nseg segments of rb->in.seg, of which the first
+ * nreal are kept (nseg > nreal: a forced rebuild, see weights()); nseg = 0
+ * tries the plain triangulation of the points (files without lines). *bad as
+ * in match(). */
+static cvm_status attempt(rebuild *rb, const cvm__vtu_mesh *vm, size_t nseg, size_t nreal,
+                          int64_t *bad)
+{
+    double *holes = NULL;
+    size_t nholes = 0;
+    int forced = nseg > nreal;
+    cvm_status s = build(rb, nseg, NULL, 0);
+    if (s)
+        return s;
+    drop_temporary(rb, nreal);
+    if ((s = weights(rb, vm, forced)))
+        return s;
+    if (nseg) {
+        if ((s = hole_seeds(rb, vm, &holes, &nholes)))
+            return s;
+        if (nholes && !(s = build(rb, nseg, holes, nholes))) {
+            drop_temporary(rb, nreal);
+            s = weights(rb, vm, forced);
+        }
+        cvm__free(&rb->ctx, holes);
+        if (s)
+            return s;
+    }
+    if ((s = match(rb, vm, bad)) || *bad >= 0)
+        return s;
+    if (vm->tattr) {
+        size_t k;
+        if (cvm__tri2_enable_attributes(&rb->tri))
+            return cvm__nomem(&rb->ctx);
+        for (k = 0; k < vm->nt; k++)
+            rb->tri.ta[k] = vm->tattr[k];
+    }
+    return CVM_OK;
+}
+
+static cvm_status run(cvm_mesh *m, rebuild *rb, const char *path, const cvm__vtu_mesh *vm)
+{
+    int32_t *bnd = NULL, *inner = NULL;
     size_t nbnd = 0, ninner = 0, nseg = 0, nreal = 0;
     int64_t bad = -1;
     cvm_status s;
     if ((s = file_checks(m, path, vm, &bnd, &nbnd, &inner, &ninner)))
         return s;
-    s = segments(m, vm, bnd, nbnd, inner, ninner, &seg, &mark, &nseg, &nreal);
+    s = segments(m, vm, bnd, nbnd, inner, ninner, &rb->in.seg, &rb->in.smark, &nseg, &nreal);
     cvm__free(&m->ctx, bnd);
     cvm__free(&m->ctx, inner);
     if (s)
         return s;
     /* 1. no lines: the Delaunay (regular) triangulation of the points */
     if (!vm->has_lines)
-        s = attempt(t, vm, NULL, NULL, 0, 0, &bad);
+        s = attempt(rb, vm, 0, 0, &bad);
     /* 2. the constrained one, with the boundary as segments and hole seeds */
     if (!s && (vm->has_lines || bad >= 0)) {
         bad = -1;
-        t->opt[cvm__option_slot(CVM_OPT_KEEP_CONVEX_HULL)] = 0;
-        s = attempt(t, vm, seg, mark, nreal, nreal, &bad);
+        s = attempt(rb, vm, nreal, nreal, &bad);
     }
     /* 3. every file edge forced, then checked by the flips (weights the
        regular triangulation does not reach from the CDT: vanished vertices) */
     if (!s && bad >= 0 && nseg > nreal) {
         bad = -1;
-        s = attempt(t, vm, seg, mark, nseg, nreal, &bad);
+        s = attempt(rb, vm, nseg, nreal, &bad);
     }
-    cvm__free(&m->ctx, seg);
-    cvm__free(&m->ctx, mark);
     if (s)
-        return cvm__error(&m->ctx, t->ctx.status, t->ctx.err_kind, t->ctx.err_index,
-                          "%s: rebuilding the mesh: %s", path, t->ctx.errmsg);
+        return cvm__error(&m->ctx, rb->ctx.status, rb->ctx.err_kind, rb->ctx.err_index,
+                          "%s: rebuilding the mesh: %s", path, rb->ctx.errmsg);
     if (bad >= 0) {
         const int32_t *f = vm->tri + 3 * (bad < (int64_t)vm->nt ? bad : 0);
         if (bad == (int64_t)vm->nt)
@@ -764,27 +1035,55 @@ static cvm_status run(cvm_mesh *m, cvm_mesh *t, const char *path, const cvm__vtu
     return CVM_OK;
 }
 
+/* Move the rebuilt mesh into m, part by part: its input and triangulation
+ * replace m's (which are freed, with the reports of m's earlier runs); m's
+ * context, options, front markers and staged writes stay. Takes the file's
+ * point arrays from vm. Cannot fail. */
+static void adopt(cvm_mesh *m, rebuild *rb, cvm__vtu_mesh *vm)
+{
+    cvm__mesh_drop_output(m);
+    cvm__pslg_free(&m->ctx, &m->in);
+    if (rb->in.nseg == 0) { /* read as the triangulation of the points */
+        cvm__free(&rb->ctx, rb->in.seg);
+        cvm__free(&rb->ctx, rb->in.smark);
+        rb->in.seg = NULL;
+        rb->in.smark = NULL;
+    }
+    m->in = rb->in;
+    memset(&rb->in, 0, sizeof rb->in);
+    vm->p.xy = NULL; /* now m->in's */
+    vm->p.pmark = NULL;
+    vm->p.pattr = NULL;
+    cvm__tri2_destroy(&m->tri);
+    m->tri = rb->tri;
+    m->tri.ctx = &m->ctx;
+    cvm__tri2_init(&rb->tri, &rb->ctx);
+    m->input_map = rb->input_map;
+    rb->input_map = NULL;
+    m->n_dup = rb->n_dup;
+    cvm__free(&m->ctx, m->vmark);
+    cvm__free(&m->ctx, m->vattr);
+    m->vmark = rb->vmark;
+    m->vattr = rb->vattr;
+    m->cap_vmark = rb->cap_vmark;
+    m->cap_vattr = rb->cap_vattr;
+    rb->vmark = NULL;
+    rb->vattr = NULL;
+    m->triangulated = 1;
+    m->nv_triangulated = m->tri.nv;
+}
+
 cvm_status cvm__mesh_read_vtu(cvm_mesh *m, const char *path)
 {
     cvm__vtu_mesh vm;
-    cvm_mesh *t = NULL;
+    rebuild rb;
     cvm_status s = cvm__read_vtu_file(&m->ctx, path, &vm);
     if (s)
         return s;
-    if (cvm_mesh_create_with_allocator(&t, m->ctx.alloc_fn, m->ctx.realloc_fn, m->ctx.free_fn,
-                                       m->ctx.payload)) {
-        cvm__vtu_mesh_free(&m->ctx, &vm);
-        return cvm__nomem(&m->ctx);
-    }
-    memcpy(t->opt, m->opt, sizeof t->opt);
-    t->opt[cvm__option_slot(CVM_OPT_TIME_LIMIT_S)] = 0; /* a read is not cut short */
-    s = run(m, t, path, &vm);
+    rb_init(&rb, m, &vm);
+    if (!(s = run(m, &rb, path, &vm)))
+        adopt(m, &rb, &vm);
+    rb_free(&rb);
     cvm__vtu_mesh_free(&m->ctx, &vm);
-    if (s) {
-        cvm_mesh_free(t);
-        return s;
-    }
-    memcpy(t->opt, m->opt, sizeof t->opt); /* undo the attempt's KEEP_CONVEX_HULL */
-    adopt(m, t);
-    return CVM_OK;
+    return s;
 }

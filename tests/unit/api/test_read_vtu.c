@@ -36,13 +36,11 @@ static double uniform(uint64_t *s)
 
 /* Square with a square hole, refined, optionally with random weights and a
  * region attribute and point markers. */
-static cvm_mesh *holed_mesh(int weighted)
+static void fill_holed(cvm_mesh *m, int weighted)
 {
     static const double region[4] = {0.5, 0.5, 7.0, 0.0};
-    cvm_mesh *m;
     cvm_sizing *sz;
     size_t nv, v;
-    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
     ck_assert_int_eq(cvmtest_pslg_set(m, &cvmtest_square_with_hole), CVM_OK);
     ck_assert_int_eq(cvm_mesh_set_regions(m, region, 1), CVM_OK);
     ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
@@ -66,6 +64,13 @@ static cvm_mesh *holed_mesh(int weighted)
         ck_assert_int_eq(cvm_mesh_get_measure(&vanished, m, CVM_MEASURE_VANISHED_VERTICES), CVM_OK);
         ck_assert(vanished > 0);
     }
+}
+
+static cvm_mesh *holed_mesh(int weighted)
+{
+    cvm_mesh *m;
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    fill_holed(m, weighted);
     return m;
 }
 
@@ -317,6 +322,130 @@ START_TEST(vtu_read_out_of_memory_at_every_allocation)
 }
 END_TEST
 
+/* The mesh of m as the bytes of a .vtu (points, markers, attributes,
+ * weights, triangles, segments) and its input counts. */
+static char *snapshot(cvm_mesh *m, const char *name, size_t *len, size_t *counts)
+{
+    char path[4096];
+    char *t;
+    in_dir(path, sizeof path, name);
+    ck_assert_msg(cvm_mesh_write(m, path) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    t = iotest_slurp(path, len);
+    ck_assert_ptr_nonnull(t);
+    ck_assert_int_eq(cvm_mesh_count(&counts[0], m, CVM_ENT_INPUT_POINT), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_count(&counts[1], m, CVM_ENT_INPUT_SEGMENT), CVM_OK);
+    return t;
+}
+
+static void assert_unchanged(cvm_mesh *m, const char *before, size_t len, const size_t *counts)
+{
+    size_t l2, c2[2];
+    char *after = snapshot(m, "after.vtu", &l2, c2);
+    ck_assert_uint_eq(l2, len);
+    ck_assert_msg(memcmp(before, after, len) == 0, "the previous mesh changed");
+    ck_assert_uint_eq(c2[0], counts[0]);
+    ck_assert_uint_eq(c2[1], counts[1]);
+    ck_assert_msg(cvm_mesh_check(m) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    free(after);
+}
+
+/* The Delaunay diagonal 1-3 of the parallelogram above, and both diagonals
+ * as line cells: they cross. */
+static const char k_crossing_lines[] =
+    "<VTKFile type=\"UnstructuredGrid\"><UnstructuredGrid>"
+    "<Piece NumberOfPoints=\"4\" NumberOfCells=\"4\"><Points>"
+    "<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">"
+    "0 0 0 3 0 0 4 1 0 1 1 0</DataArray></Points><Cells>"
+    "<DataArray type=\"Int32\" Name=\"connectivity\" format=\"ascii\">0 1 3 1 2 3 0 2 1 3</DataArray>"
+    "<DataArray type=\"Int32\" Name=\"offsets\" format=\"ascii\">3 6 8 10</DataArray>"
+    "<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">5 5 3 3</DataArray>"
+    "</Cells></Piece></UnstructuredGrid></VTKFile>\n";
+
+/* Every way a read can fail - the file is missing, malformed, fails the
+ * checks of its cells, cannot be rebuilt (crossing lines refused), or is
+ * not reproduced - leaves the previous mesh of the handle as it was, to
+ * the byte, with its input. */
+START_TEST(vtu_failed_read_keeps_the_previous_mesh)
+{
+    static const struct { const char *from, *to; cvm_status want; const char *msg; } bad[] = {
+        {NULL, NULL, CVM_E_IO_OPEN, "cannot open"},
+        {"0 1 2 0 2 3", "0 1 3 1 2 7", CVM_E_IO_FORMAT, "cell 1 names point 7"},
+        {"0 1 2 0 2 3", "0 1 2 0 2 1", CVM_E_INPUT_DEGENERATE, "point 3 lies in no triangle"},
+        {"0 1 2 0 2 3", "0 1 2 0 2 3", CVM_E_INPUT_DEGENERATE, "is not reproduced"},
+        {"", "", CVM_E_INPUT_INTERSECTING,
+         "rebuilding the mesh: segment 1 (points 1-3) crosses segment 0 (points 0-2)"},
+    };
+    cvm_mesh *m = holed_mesh(1);
+    size_t len, counts[2], k;
+    char *before = snapshot(m, "before.vtu", &len, counts), path[4096];
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_SPLIT_INTERSECTIONS, 0), CVM_OK);
+    for (k = 0; k < sizeof bad / sizeof bad[0]; k++) {
+        char *t = malloc(sizeof k_crossing_lines + sizeof k_bad_diagonal);
+        ck_assert_ptr_nonnull(t);
+        strcpy(t, bad[k].want == CVM_E_INPUT_INTERSECTING ? k_crossing_lines : k_bad_diagonal);
+        if (bad[k].from) {
+            char *at = strstr(t, bad[k].from);
+            ck_assert_ptr_nonnull(at);
+            memmove(at + strlen(bad[k].to), at + strlen(bad[k].from), strlen(at + strlen(bad[k].from)) + 1);
+            memcpy(at, bad[k].to, strlen(bad[k].to));
+            in_dir(path, sizeof path, "bad.vtu");
+            write_text(path, t);
+        } else {
+            in_dir(path, sizeof path, "missing.vtu");
+        }
+        free(t);
+        ck_assert_int_eq(cvm_mesh_read(m, path), bad[k].want);
+        ck_assert_msg(strstr(cvm_mesh_errmsg(m), bad[k].msg) != NULL, "case %lu: %s",
+                      (unsigned long)k, cvm_mesh_errmsg(m));
+        assert_unchanged(m, before, len, counts);
+    }
+    free(before);
+    cvm_mesh_free(m);
+}
+END_TEST
+
+/* Out of memory at each allocation of a read into a handle that holds a
+ * mesh: CVM_E_NOMEM and the previous mesh unchanged, until the read succeeds
+ * and gives the file's mesh. */
+START_TEST(vtu_read_out_of_memory_keeps_the_previous_mesh)
+{
+    char path[4096];
+    cvm_mesh *src = holed_mesh(2), *m;
+    cvmtest_alloc a;
+    size_t len, counts[2], l2, c2[2];
+    char *before, *want, *got;
+    long k;
+    in_dir(path, sizeof path, "next.vtu");
+    ck_assert_int_eq(cvm_mesh_write(src, path), CVM_OK);
+    cvm_mesh_free(src);
+    want = iotest_slurp(path, &l2);
+    ck_assert_ptr_nonnull(want);
+    cvmtest_alloc_init(&a, 0, 0);
+    ck_assert_int_eq(cvmtest_mesh_create(&m, &a), CVM_OK);
+    fill_holed(m, 1);
+    before = snapshot(m, "before.vtu", &len, counts);
+    for (k = 1;; k++) {
+        cvm_status s;
+        cvmtest_alloc_arm(&a, a.n_calls + k, 1);
+        s = cvm_mesh_read(m, path);
+        cvmtest_alloc_arm(&a, 0, 0);
+        if (s == CVM_OK)
+            break;
+        ck_assert_msg(s == CVM_E_NOMEM, "allocation %ld: status %d (%s)", k, s, cvm_mesh_errmsg(m));
+        assert_unchanged(m, before, len, counts);
+    }
+    ck_assert(k > 20);
+    got = snapshot(m, "got.vtu", &len, c2);
+    ck_assert_uint_eq(len, l2);
+    ck_assert_msg(memcmp(want, got, len) == 0, "the mesh read differs from the file");
+    free(before);
+    free(want);
+    free(got);
+    cvm_mesh_free(m);
+    ck_assert_int_eq((int)a.live_blocks, 0);
+}
+END_TEST
+
 TCase *api_read_vtu_tcase(void)
 {
     TCase *tc = tcase_create("read_vtu");
@@ -329,5 +458,7 @@ TCase *api_read_vtu_tcase(void)
     tcase_add_test(tc, vtu_not_reproduced_is_an_error_and_keeps_the_mesh);
     tcase_add_test(tc, vtu_unused_point_and_bad_cells_are_named);
     tcase_add_test(tc, vtu_read_out_of_memory_at_every_allocation);
+    tcase_add_test(tc, vtu_failed_read_keeps_the_previous_mesh);
+    tcase_add_test(tc, vtu_read_out_of_memory_keeps_the_previous_mesh);
     return tc;
 }
