@@ -58,6 +58,7 @@
 
 #include "optimise.h"
 #include "geom/geom_internal.h"
+#include "geom/measure.h"
 
 #define FIX_ROUNDS 8
 #define BATCH 256
@@ -715,23 +716,13 @@ static size_t sweep_order(dopt *D, uint64_t sweep)
     return n;
 }
 
-/* Smallest sin^2 of an angle of triangle t (plain doubles). */
+/* Smallest sin^2 of an angle of triangle t (plain doubles), at most 1. */
 static double tri_min_sin2(const cvm__tri2 *T, int32_t t)
 {
     const int32_t *v = T->tv + 3 * (size_t)t;
-    double l2[3], c, m = 1.0;
-    int k;
-    const double *p0 = T->xy + 2 * (size_t)v[0], *p1 = T->xy + 2 * (size_t)v[1], *p2 = T->xy + 2 * (size_t)v[2];
-    c = (p1[0] - p0[0]) * (p2[1] - p0[1]) - (p1[1] - p0[1]) * (p2[0] - p0[0]);
-    for (k = 0; k < 3; k++) {
-        const double *a = T->xy + 2 * (size_t)v[(k + 1) % 3], *b = T->xy + 2 * (size_t)v[(k + 2) % 3];
-        l2[k] = sq(b[0] - a[0]) + sq(b[1] - a[1]);
-    }
-    for (k = 0; k < 3; k++) {
-        double s = c * c / (l2[(k + 1) % 3] * l2[(k + 2) % 3]);
-        m = s < m ? s : m;
-    }
-    return m;
+    double m = cvm__min_sin2_corners(T->xy + 2 * (size_t)v[0], T->xy + 2 * (size_t)v[1],
+                                     T->xy + 2 * (size_t)v[2]);
+    return m < 1.0 ? m : 1.0;
 }
 
 /* Order of a max-min round into D->list: the domain triangles whose smallest

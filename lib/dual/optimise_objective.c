@@ -3,6 +3,7 @@
 
 #include "optimise.h"
 #include "geom/geom_internal.h"
+#include "geom/measure.h"
 
 /* Weight of the centroid term beside the containment penalty, and of the
  * weight regulariser (keeps weights near 0 where nothing asks for them). */
@@ -62,18 +63,10 @@ static int corners(const cvm__dopt_local *L, int32_t t, const double *p, double 
     return iv;
 }
 
+/* sin^2 of the smallest angle of q[0], q[1], q[2]; 0 unless counter-clockwise. */
 static double min_sin2(const double *const *q)
 {
-    double l2[3], c = cross(q[0], q[1], q[2]), m = HUGE_VAL;
-    int k;
-    for (k = 0; k < 3; k++)
-        l2[k] = sq(q[(k + 1) % 3][0] - q[(k + 2) % 3][0]) + sq(q[(k + 1) % 3][1] - q[(k + 2) % 3][1]);
-    for (k = 0; k < 3; k++) {
-        /* angle at corner k lies between the sides (k+1) and (k+2) */
-        double s = c * c / (l2[(k + 1) % 3] * l2[(k + 2) % 3]);
-        m = s < m ? s : m;
-    }
-    return c > 0 ? m : 0.0;
+    return cross(q[0], q[1], q[2]) > 0 ? cvm__min_sin2_corners(q[0], q[1], q[2]) : 0.0;
 }
 
 double cvm__dopt_star_min_sin2(const cvm__dopt_local *L)

@@ -32,6 +32,7 @@
 
 #include "dual_internal.h"
 #include "delaunay/tri2_store.h"
+#include "geom/measure.h"
 
 #define PRE_SHORT 0.5
 #define PRE_LONG 1.5
@@ -41,17 +42,6 @@
 static double dist2(const double *a, const double *b)
 {
     return (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]);
-}
-
-/* sin^2 of the smallest angle of a, b, c (plain doubles). */
-static double min_sin2(const double *a, const double *b, const double *c)
-{
-    double ab = dist2(a, b), bc = dist2(b, c), ca = dist2(c, a);
-    double cr = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
-    double mn = ab < bc ? (ab < ca ? ab : ca) : (bc < ca ? bc : ca);
-    double pr = ab * bc * ca;
-    /* law of sines: sin^2 of the angle facing edge e is cr^2 e^2 / pr; the smallest faces mn */
-    return pr > 0 ? cr * cr * mn / pr : 0.0;
 }
 
 typedef struct pre {
@@ -127,7 +117,7 @@ static int wants_removal(pre *P, int32_t v)
             return 0; /* a neighbour goes already: keep v this round */
         if (ea < ha * ha)
             shortie = 1;
-        if (min_sin2(pv, pa, pb) < P->sin2_target && (ea <= ab || eb <= ab))
+        if (cvm__min_sin2(pv, pa, pb) < P->sin2_target && (ea <= ab || eb <= ab))
             bad = 1; /* v ends the shortest edge of a triangle below the target */
         sx += pa[0];
         sy += pa[1];

@@ -61,6 +61,7 @@
 #include "refine_internal.h"
 #include "delaunay/tri2_store.h"
 #include "geom/geom_internal.h"
+#include "geom/measure.h"
 
 /* Good needs every edge shorter than this times the mean size at its ends. */
 #define AF_SIZE_BAD 1.5
@@ -194,22 +195,21 @@ static int af_quality(cvm__refiner *R, int32_t t)
 {
     const int32_t *tv = R->T->tv + 3 * (size_t)t;
     const double *p[3];
-    double l[3], cross, sin2, lmin;
+    double l[3], cross, sin2;
     int k;
     for (k = 0; k < 3; k++)
         p[k] = af_pt(R, tv[k]);
     for (k = 0; k < 3; k++) {
         const double *a = p[af_n1[k]], *b = p[af_n2[k]];
         double ls = (R->vls[tv[af_n1[k]]] + R->vls[tv[af_n2[k]]]) / 2;
-        l[k] = (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]);
+        l[k] = cvm__dist2(a, b);
         if (isfinite(ls) && !(l[k] < AF_SIZE_BAD * AF_SIZE_BAD * ls * ls))
             return AF_BIG;
     }
-    cross = (p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[1][1] - p[0][1]) * (p[2][0] - p[0][0]);
+    cross = cvm__cross2(p[0], p[1], p[2]);
     if (cvm__rf_max_area(R, t) > 0 && cross / 2 > cvm__rf_max_area(R, t))
         return AF_BIG;
-    lmin = l[0] < l[1] ? (l[0] < l[2] ? l[0] : l[2]) : (l[1] < l[2] ? l[1] : l[2]);
-    sin2 = cross > 0 ? lmin * cross * cross / (l[0] * l[1] * l[2]) : 0.0;
+    sin2 = cross > 0 ? cvm__min_sin2_sides(l[0], l[1], l[2], cross) : 0.0;
     if (sin2 >= R->sin2_min && cross > 0)
         return AF_OK;
     return cvm__rf_classify(R, t, &sin2) == 3 ? AF_OK : AF_SKINNY;

@@ -405,7 +405,6 @@ int cvm__pgrid_any_within(const cvm__pgrid *g, const double *xy, const double *x
 /* ---- post-processing (swap.c, smooth.c) ---- */
 
 /* sin^2 of the smallest angle of triangle (p, q, r); 0 unless counter-clockwise. */
-double cvm__rf_min_sin2(const double *p, const double *q, const double *r);
 /* Sweeps of edge flips (triangle index order) towards the ideal vertex degree
  * (6 inside; round(boundary angle / 60 degrees) + 1 on the boundary): an
  * unconstrained edge between two domain triangles whose quadrilateral is

@@ -4,6 +4,7 @@
 
 #include "refine_internal.h"
 #include "geom/geom_internal.h"
+#include "geom/measure.h"
 
 size_t cvm__rf_star(cvm__refiner *R, int32_t v)
 {
@@ -213,7 +214,7 @@ static cvm_status rf_report(cvm__refiner *R, cvm__refine_report *rep)
              * three arc tangents only for triangles that may hold the
              * minimum (the slack covers the rounding of the sine) */
             const int32_t *tv = T->tv + 3 * t;
-            double s2 = cvm__rf_min_sin2(T->xy + 2 * (size_t)tv[0], T->xy + 2 * (size_t)tv[1],
+            double s2 = cvm__min_sin2_ccw(T->xy + 2 * (size_t)tv[0], T->xy + 2 * (size_t)tv[1],
                                          T->xy + 2 * (size_t)tv[2]);
             if (s2 <= best_sin2 * (1 + 1e-6)) {
                 double a = rf_min_angle_deg(T, (int32_t)t);

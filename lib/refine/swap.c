@@ -5,6 +5,7 @@
 #include "refine_internal.h"
 #include "delaunay/tri2_store.h"
 #include "geom/geom_internal.h"
+#include "geom/measure.h"
 
 /* Sweeps of degree swapping at most (each flip lowers an integer energy, so
  * the passes end anyway; the cap bounds the time). */
@@ -56,19 +57,6 @@ static void sw_flip(cvm__tri2 *T, int32_t t, int j)
         T->vtri[b] = t;
     if (T->vtri[c] == t)
         T->vtri[c] = u;
-}
-
-/* sin^2 of the smallest angle of (p, q, r) (0 when not counter-clockwise). */
-double cvm__rf_min_sin2(const double *p, const double *q, const double *r)
-{
-    double l0 = (q[0] - r[0]) * (q[0] - r[0]) + (q[1] - r[1]) * (q[1] - r[1]);
-    double l1 = (p[0] - r[0]) * (p[0] - r[0]) + (p[1] - r[1]) * (p[1] - r[1]);
-    double l2 = (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]);
-    double cross = (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0]);
-    double lmin = l0 < l1 ? (l0 < l2 ? l0 : l2) : (l1 < l2 ? l1 : l2);
-    if (!(cross > 0))
-        return 0.0;
-    return lmin * cross * cross / (l0 * l1 * l2);
 }
 
 /* Degree of every vertex (edges in the domain) and its ideal degree: 6 inside,
@@ -226,9 +214,9 @@ cvm_status cvm__rf_swap_degree(const cvm__refiner *R, size_t *flips_out)
                        (deg[d] - ideal[d]);
                 if (gain < 3 || !sw_flippable(T, (int32_t)t, j))
                     continue;
-                if (cvm__rf_min_sin2(cvm__tri2_pt(T, a), cvm__tri2_pt(T, b), cvm__tri2_pt(T, d)) <
+                if (cvm__min_sin2_ccw(cvm__tri2_pt(T, a), cvm__tri2_pt(T, b), cvm__tri2_pt(T, d)) <
                         sin2_min ||
-                    cvm__rf_min_sin2(cvm__tri2_pt(T, d), cvm__tri2_pt(T, c), cvm__tri2_pt(T, a)) <
+                    cvm__min_sin2_ccw(cvm__tri2_pt(T, d), cvm__tri2_pt(T, c), cvm__tri2_pt(T, a)) <
                         sin2_min ||
                     sw_too_big(R, (int32_t)t, a, b, d) || sw_too_big(R, (int32_t)t, d, c, a))
                     continue;

@@ -1,0 +1,107 @@
+/* measure.c - plain-double measures of 2D triangles: angles, smallest-angle sin^2, areas, circumradii. */
+#include <math.h>
+
+#include "geom/measure.h"
+
+double cvm__dist2(const double *a, const double *b)
+{
+    return (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]);
+}
+
+double cvm__cross2(const double *a, const double *b, const double *c)
+{
+    return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+}
+
+double cvm__tri_area(const double *a, const double *b, const double *c)
+{
+    return cvm__cross2(a, b, c) / 2;
+}
+
+double cvm__tri_area_abs(const double *a, const double *b, const double *c)
+{
+    return fabs(cvm__cross2(a, b, c)) / 2;
+}
+
+double cvm__circumradius2_sides(double l0, double l1, double l2, double cross)
+{
+    return l0 * l1 * l2 / (4 * cross * cross);
+}
+
+double cvm__circumradius2(const double *a, const double *b, const double *c)
+{
+    return cvm__circumradius2_sides(cvm__dist2(b, c), cvm__dist2(c, a), cvm__dist2(a, b),
+                                    cvm__cross2(a, b, c));
+}
+
+double cvm__vec_angle(double ux, double uy, double wx, double wy)
+{
+    return atan2(fabs(ux * wy - uy * wx), ux * wx + uy * wy);
+}
+
+double cvm__corner_angle(const double *o, const double *a, const double *b)
+{
+    return cvm__vec_angle(a[0] - o[0], a[1] - o[1], b[0] - o[0], b[1] - o[1]);
+}
+
+double cvm__turn_angle(const double *a, const double *b, const double *c)
+{
+    return cvm__vec_angle(b[0] - a[0], b[1] - a[1], c[0] - b[0], c[1] - b[1]);
+}
+
+double cvm__tri_min_angle_deg(const double *a, const double *b, const double *c)
+{
+    const double *p[3];
+    double best = 180.0;
+    int q;
+    p[0] = a;
+    p[1] = b;
+    p[2] = c;
+    for (q = 0; q < 3; q++) {
+        double x = cvm__corner_angle(p[q], p[(q + 1) % 3], p[(q + 2) % 3]) * (180.0 / CVM__PI);
+        if (x < best)
+            best = x;
+    }
+    return best;
+}
+
+double cvm__min_sin2(const double *a, const double *b, const double *c)
+{
+    double ab = cvm__dist2(a, b), bc = cvm__dist2(b, c), ca = cvm__dist2(c, a);
+    double cr = cvm__cross2(a, b, c);
+    double mn = ab < bc ? (ab < ca ? ab : ca) : (bc < ca ? bc : ca);
+    double pr = ab * bc * ca;
+    return pr > 0 ? cr * cr * mn / pr : 0.0;
+}
+
+double cvm__min_sin2_sides(double l0, double l1, double l2, double cross)
+{
+    double lmin = l0 < l1 ? (l0 < l2 ? l0 : l2) : (l1 < l2 ? l1 : l2);
+    return lmin * cross * cross / (l0 * l1 * l2);
+}
+
+double cvm__min_sin2_ccw(const double *a, const double *b, const double *c)
+{
+    double cross = cvm__cross2(a, b, c);
+    if (!(cross > 0))
+        return 0.0;
+    return cvm__min_sin2_sides(cvm__dist2(b, c), cvm__dist2(a, c), cvm__dist2(a, b), cross);
+}
+
+double cvm__min_sin2_corners(const double *a, const double *b, const double *c)
+{
+    const double *p[3];
+    double l2[3], cr = cvm__cross2(a, b, c), m = HUGE_VAL;
+    int k;
+    p[0] = a;
+    p[1] = b;
+    p[2] = c;
+    for (k = 0; k < 3; k++)
+        l2[k] = cvm__dist2(p[(k + 1) % 3], p[(k + 2) % 3]); /* the side opposite corner k */
+    for (k = 0; k < 3; k++) {
+        /* the angle at corner k lies between the sides opposite corners k+1 and k+2 */
+        double s = cr * cr / (l2[(k + 1) % 3] * l2[(k + 2) % 3]);
+        m = s < m ? s : m;
+    }
+    return m;
+}
