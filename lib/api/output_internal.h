@@ -66,7 +66,5 @@ int32_t cvm__segment_marker(const cvm_mesh *m, int32_t seg);
 cvm_status cvm__scaled_view(cvm__ctx *ctx, const cvm__tri2 *T, cvm__tri2 *view, int *k);
 void cvm__scaled_view_free(cvm__ctx *ctx, const cvm__tri2 *T, cvm__tri2 *view);
 
-/* Smallest angle of triangle a, b, c in degrees (inexact: a measure). */
-double cvm__min_angle_deg(const double *a, const double *b, const double *c);
 
 #endif

@@ -529,13 +529,12 @@ static size_t corner_angles(const dopt *D, int32_t v, double *avg)
         if (cvm__tri2_in_domain(T, t)) {
             const double *p = T->xy + 2 * (size_t)v, *a = T->xy + 2 * (size_t)tv[(i + 1) % 3];
             const double *b = T->xy + 2 * (size_t)tv[(i + 2) % 3];
-            double ux = a[0] - p[0], uy = a[1] - p[1], wx = b[0] - p[0], wy = b[1] - p[1];
-            sum += atan2(fabs(ux * wy - uy * wx), ux * wx + uy * wy);
+            sum += cvm__corner_angle(p, a, b);
             n++;
         }
         t = T->tn[3 * (size_t)t + (size_t)(i + 1) % 3] / 3;
     } while (t != t0 && ++k < T->nt);
-    *avg = n ? sum / (double)n * (180.0 / 3.14159265358979323846) : 0.0;
+    *avg = n ? sum / (double)n * (180.0 / CVM__PI) : 0.0;
     return n;
 }
 
@@ -740,8 +739,8 @@ static size_t mm_order(dopt *D)
         D->F[t] = tri_min_sin2(T, (int32_t)t);
         m = D->F[t] < m ? D->F[t] : m;
     }
-    D->mm_min = asin(sqrt(m)) * (180.0 / 3.14159265358979323846);
-    g = D->mm_min + MM_BAND_DEG < 90.0 ? sin((D->mm_min + MM_BAND_DEG) * 3.14159265358979323846 / 180.0) : 1.0;
+    D->mm_min = asin(sqrt(m)) * (180.0 / CVM__PI);
+    g = D->mm_min + MM_BAND_DEG < 90.0 ? sin((D->mm_min + MM_BAND_DEG) * CVM__PI / 180.0) : 1.0;
     g *= g;
     for (t = 0; t < T->nt; t++) {
         const int32_t *tv = T->tv + 3 * t;
@@ -908,17 +907,13 @@ static double min_angle(const dopt *D)
     double best = 180.0;
     for (t = 0; t < T->nt; t++) {
         const int32_t *v = T->tv + 3 * t;
-        int q;
+        double a;
         if (!cvm__tri2_in_domain(T, (int32_t)t))
             continue;
-        for (q = 0; q < 3; q++) {
-            const double *P = T->xy + 2 * (size_t)v[q], *A = T->xy + 2 * (size_t)v[(q + 1) % 3];
-            const double *B = T->xy + 2 * (size_t)v[(q + 2) % 3];
-            double ux = A[0] - P[0], uy = A[1] - P[1], wx = B[0] - P[0], wy = B[1] - P[1];
-            double a = atan2(fabs(ux * wy - uy * wx), ux * wx + uy * wy) * (180.0 / 3.14159265358979323846);
-            if (a < best)
-                best = a;
-        }
+        a = cvm__tri_min_angle_deg(T->xy + 2 * (size_t)v[0], T->xy + 2 * (size_t)v[1],
+                                   T->xy + 2 * (size_t)v[2]);
+        if (a < best)
+            best = a;
     }
     return best;
 }
@@ -1098,7 +1093,7 @@ static void mark_region(dopt *D, const int32_t *seed, size_t n)
 static size_t count_below(const dopt *D, double deg)
 {
     const cvm__tri2 *T = D->T;
-    double g = sin(deg * 3.14159265358979323846 / 180.0);
+    double g = sin(deg * CVM__PI / 180.0);
     size_t t, n = 0;
     g *= g;
     for (t = 0; t < T->nt; t++)
@@ -1129,7 +1124,7 @@ static cvm_status removal_trials(dopt *D, uint64_t k0, size_t *best_nc, double *
     *kept_out = 0;
     if (!D->topo)
         return CVM_OK;
-    g = sin((gmin + RM_BAND_DEG) * 3.14159265358979323846 / 180.0);
+    g = sin((gmin + RM_BAND_DEG) * CVM__PI / 180.0);
     g *= g;
     /* candidates: the removable Steiner neighbour of least degree of each hub
      * (an interior vertex of RM_HUB_DEG or more triangles at the smallest
@@ -1199,7 +1194,7 @@ static cvm_status removal_trials(dopt *D, uint64_t k0, size_t *best_nc, double *
     }
     nlow0 = count_below(D, gmin + MM_PROGRESS_DEG);
     /* trials aim at the target the caller set, not at a raised one */
-    D->sin2_target = sin(D->p->target_angle_deg * 3.14159265358979323846 / 180.0);
+    D->sin2_target = sin(D->p->target_angle_deg * CVM__PI / 180.0);
     D->sin2_target *= D->sin2_target;
     for (n = 0; n < nc && !s; n++) {
         size_t k, moved;
@@ -1429,7 +1424,7 @@ static cvm_status run(dopt *D)
                 /* next phase: a higher target angle; keep_best keeps the best end */
                 phase++;
                 stall = 0;
-                D->sin2_target = sin(push * 3.14159265358979323846 / 180.0);
+                D->sin2_target = sin(push * CVM__PI / 180.0);
                 D->sin2_target *= D->sin2_target;
             }
         }
@@ -1457,7 +1452,7 @@ cvm_status cvm__dual_optimise(cvm__tri2 *T, const cvm__dual_opt_params *p, cvm__
     D.T = T;
     D.p = p;
     D.rep = rep;
-    D.sin2_min = sin(p->min_angle_deg * 3.14159265358979323846 / 180.0);
+    D.sin2_min = sin(p->min_angle_deg * CVM__PI / 180.0);
     D.sin2_min *= D.sin2_min;
     D.nthreads = p->threads;
 #ifdef _OPENMP
@@ -1466,7 +1461,7 @@ cvm_status cvm__dual_optimise(cvm__tri2 *T, const cvm__dual_opt_params *p, cvm__
 #endif
     if (D.nthreads <= 0)
         D.nthreads = 1;
-    D.sin2_target = sin(p->target_angle_deg * 3.14159265358979323846 / 180.0);
+    D.sin2_target = sin(p->target_angle_deg * CVM__PI / 180.0);
     D.sin2_target *= D.sin2_target;
     if (!T->w) {
         T->w = cvm__calloc(ctx, T->cap_v ? T->cap_v : 1, sizeof *T->w);

@@ -1,17 +1,8 @@
 /* measure.c - plain-double measures of 2D triangles: angles, smallest-angle sin^2, areas, circumradii. */
+#include <float.h>
 #include <math.h>
 
 #include "geom/measure.h"
-
-double cvm__dist2(const double *a, const double *b)
-{
-    return (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]);
-}
-
-double cvm__cross2(const double *a, const double *b, const double *c)
-{
-    return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
-}
 
 double cvm__tri_area(const double *a, const double *b, const double *c)
 {
@@ -104,4 +95,81 @@ double cvm__min_sin2_corners(const double *a, const double *b, const double *c)
         m = s < m ? s : m;
     }
     return m;
+}
+
+/* ---- range-safe measures (for reports on any finite input) ---- */
+
+/* An edge vector whose larger component lies in [SAFE_LO, SAFE_HI] gives
+ * products that neither overflow (2^1001 < DBL_MAX) nor lose precision to
+ * subnormals (2^-1000 > DBL_MIN). */
+#define SAFE_LO 0x1p-500
+#define SAFE_HI 0x1p+500
+
+static int in_safe_range(double x, double y)
+{
+    double mx = fmax(fabs(x), fabs(y));
+    return mx >= SAFE_LO && mx <= SAFE_HI;
+}
+
+/* q - p as u * 2^(return value), the larger component of u in [1, 2) (u = 0
+ * for p = q). Exact unless the difference overflows; then it comes from the
+ * halved coordinates (which round only subnormal parts). */
+static int scaled_diff(const double *p, const double *q, double *u)
+{
+    double x = q[0] - p[0], y = q[1] - p[1], mx;
+    int e = 0;
+    if (!(fabs(x) <= DBL_MAX && fabs(y) <= DBL_MAX)) {
+        x = 0.5 * q[0] - 0.5 * p[0];
+        y = 0.5 * q[1] - 0.5 * p[1];
+        e = 1;
+    }
+    mx = fmax(fabs(x), fabs(y));
+    if (mx > 0) {
+        int k = ilogb(mx);
+        x = ldexp(x, -k);
+        y = ldexp(y, -k);
+        e += k;
+    }
+    u[0] = x;
+    u[1] = y;
+    return e;
+}
+
+/* Angle at a of triangle a, b, c, degrees; *dot receives the dot product of
+ * the two edge vectors (times a positive factor outside the safe range). */
+double cvm__corner_angle_deg_safe(const double *a, const double *b, const double *c, double *dot)
+{
+    double ux = b[0] - a[0], uy = b[1] - a[1], vx = c[0] - a[0], vy = c[1] - a[1];
+    if (!in_safe_range(ux, uy) || !in_safe_range(vx, vy)) {
+        double u[2], v[2];
+        scaled_diff(a, b, u);
+        scaled_diff(a, c, v);
+        ux = u[0];
+        uy = u[1];
+        vx = v[0];
+        vy = v[1];
+    }
+    *dot = ux * vx + uy * vy;
+    return cvm__vec_angle(ux, uy, vx, vy) * (180.0 / CVM__PI);
+}
+
+/* Signed area of triangle a, b, c (positive counter-clockwise); +-inf only
+ * when its magnitude exceeds the largest double. */
+double cvm__tri_area_safe(const double *a, const double *b, const double *c)
+{
+    double ux = b[0] - a[0], uy = b[1] - a[1], vx = c[0] - a[0], vy = c[1] - a[1];
+    double u[2], v[2];
+    int e;
+    if (in_safe_range(ux, uy) && in_safe_range(vx, vy))
+        return 0.5 * (ux * vy - uy * vx);
+    e = scaled_diff(a, b, u) + scaled_diff(a, c, v);
+    return ldexp(0.5 * (u[0] * v[1] - u[1] * v[0]), e);
+}
+
+double cvm__min_angle_deg(const double *a, const double *b, const double *c)
+{
+    double d, x = cvm__corner_angle_deg_safe(a, b, c, &d);
+    double y = cvm__corner_angle_deg_safe(b, c, a, &d), z = cvm__corner_angle_deg_safe(c, a, b, &d);
+    double mn = x < y ? x : y;
+    return mn < z ? mn : z;
 }

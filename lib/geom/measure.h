@@ -17,12 +17,19 @@
 /* pi to the precision of a double (the literal rounds to the nearest double). */
 #define CVM__PI 3.14159265358979323846
 
-/* |a - b|^2. */
-double cvm__dist2(const double *a, const double *b);
+/* |a - b|^2. Inline: the optimiser's objective calls it in its inner loop. */
+static inline double cvm__dist2(const double *a, const double *b)
+{
+    return (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]);
+}
 
 /* (b - a) x (c - a): twice the signed area of a, b, c, positive when they are
- * counter-clockwise. Rounded; use cvm__orient2d for a sign that decides. */
-double cvm__cross2(const double *a, const double *b, const double *c);
+ * counter-clockwise. Rounded; use cvm__orient2d for a sign that decides. Inline
+ * like cvm__dist2. */
+static inline double cvm__cross2(const double *a, const double *b, const double *c)
+{
+    return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+}
 
 /* Signed area of triangle a, b, c (positive counter-clockwise), and its
  * absolute value. */
@@ -50,6 +57,24 @@ double cvm__turn_angle(const double *a, const double *b, const double *c);
 /* Smallest interior angle of triangle a, b, c in degrees: the smallest of the
  * three corner angles, each times (180 / pi), and never above 180. */
 double cvm__tri_min_angle_deg(const double *a, const double *b, const double *c);
+
+/*
+ * Range-safe variants, for measures reported on any finite input: near the
+ * limits of the double range (an edge vector beyond 2^500 or below 2^-500, or
+ * a difference that overflows) each edge vector is scaled by a power of two
+ * before the products, so angles stay right where plain products would give
+ * inf - inf, and areas are scaled back (inf only when the true area exceeds
+ * the largest double). Inside that range they round as the plain functions
+ * (cvm__corner_angle(a, b, c) * (180.0 / CVM__PI), cvm__cross2 / 2).
+ */
+/* Angle at a of triangle a, b, c in degrees; *dot receives the dot product of
+ * the two edge vectors (times a positive factor outside the safe range). */
+double cvm__corner_angle_deg_safe(const double *a, const double *b, const double *c, double *dot);
+/* Signed area of triangle a, b, c (positive counter-clockwise). */
+double cvm__tri_area_safe(const double *a, const double *b, const double *c);
+/* Smallest angle of triangle a, b, c in degrees: the smallest of the three
+ * cvm__corner_angle_deg_safe (no cap at 180, unlike cvm__tri_min_angle_deg). */
+double cvm__min_angle_deg(const double *a, const double *b, const double *c);
 
 /*
  * sin^2 of the smallest angle. By the law of sines the smallest angle faces

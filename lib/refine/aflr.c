@@ -83,7 +83,6 @@ enum { AF_OK = 0, AF_BIG = 1, AF_SKINNY = 2 };
 #define AF_INF INT32_MAX
 /* Sweeps that pass layers on to edges made after the fronts stopped. */
 #define AF_SWEEPS 64
-#define AF_PI 3.14159265358979323846
 /* Interleaved smoothing (CVM_OPT_AFLR_SMOOTH_LAYERS): relaxation and smart
  * (or max-min) sweeps per completed group of layers. */
 #define AF_SM_RELAX 2
@@ -422,7 +421,7 @@ static int af_candidates(cvm__refiner *R, int32_t t, int j, const double *m, con
     if (dc > 0)
         cand[n++] = dc;
     if (R->p->min_angle_deg >= AF_SHAPE_MIN_DEG)
-        cand[n++] = le / (2 * tan(R->p->min_angle_deg * AF_PI / 360.0));
+        cand[n++] = le / (2 * tan(R->p->min_angle_deg * CVM__PI / 360.0));
     if (isfinite(h) && h > le / 2)
         cand[n++] = sqrt(h * h - le * le / 4);
     /* sort (n <= 4) and keep those inside the circumcircle */

@@ -35,9 +35,10 @@
 #include <string.h>
 
 #include "refine_internal.h"
+#include "geom/measure.h"
 
-#define AF_CHAIN_TURN (3.14159265358979323846 / 3.0) /* 60 degrees */
-#define AF_SMOOTH_TURN (3.14159265358979323846 / 6.0) /* 30 degrees */
+#define AF_CHAIN_TURN (CVM__PI / 3.0) /* 60 degrees */
+#define AF_SMOOTH_TURN (CVM__PI / 6.0) /* 30 degrees */
 #define AF_MAX_DEPTH 24
 #define CELLS_PER_SAMPLE 4 /* grid cells per sample (ring searches visit few samples) */
 
@@ -170,7 +171,7 @@ static cvm_status af_adjacency(af_build *B, size_t nv)
             int32_t c = B->fe[2 * e1] == (int32_t)v ? B->fe[2 * e1 + 1] : B->fe[2 * e1];
             const double *pa = af_pt(B, a), *pv = af_pt(B, (int32_t)v), *pc = af_pt(B, c);
             double ux = pv[0] - pa[0], uy = pv[1] - pa[1], wx = pc[0] - pv[0], wy = pc[1] - pv[1];
-            double th = atan2(fabs(ux * wy - uy * wx), ux * wx + uy * wy);
+            double th = cvm__vec_angle(ux, uy, wx, wy);
             if (th > 0 && th <= AF_SMOOTH_TURN)
                 B->curv[v] = (hypot(ux, uy) + hypot(wx, wy)) / (2 * th);
         }
@@ -267,10 +268,9 @@ static void af_excl_chain(af_build *B, int32_t e, int32_t u)
         int32_t f = B->vedges[B->vstart[u]] == e ? B->vedges[B->vstart[u] + 1] : B->vedges[B->vstart[u]];
         int32_t next = af_other(B, f, u);
         const double *pa = af_pt(B, from), *pu = af_pt(B, u), *pn = af_pt(B, next);
-        double ux = pu[0] - pa[0], uy = pu[1] - pa[1], wx = pn[0] - pu[0], wy = pn[1] - pu[1];
         if (B->excl[f] == B->excl_stamp)
             return; /* closed loop */
-        acc += atan2(fabs(ux * wy - uy * wx), ux * wx + uy * wy);
+        acc += cvm__turn_angle(pa, pu, pn);
         if (acc >= AF_CHAIN_TURN)
             return;
         B->excl[f] = B->excl_stamp;

@@ -107,14 +107,13 @@ static cvm_status sw_degrees(const cvm__tri2 *T, cvm__ctx *ctx, int32_t **deg_ou
         for (j = 0; j < 3; j++) {
             const double *o = cvm__tri2_pt(T, tv[j]), *p = cvm__tri2_pt(T, tv[(j + 1) % 3]);
             const double *q = cvm__tri2_pt(T, tv[(j + 2) % 3]);
-            double ux = p[0] - o[0], uy = p[1] - o[1], wx = q[0] - o[0], wy = q[1] - o[1];
             if (bnd[tv[j]])
-                ang[tv[j]] += atan2(fabs(ux * wy - uy * wx), ux * wx + uy * wy);
+                ang[tv[j]] += cvm__corner_angle(o, p, q);
         }
     }
     for (v = 0; v < T->nv; v++) {
         if (bnd[v]) {
-            int32_t id = (int32_t)floor(ang[v] / (3.14159265358979323846 / 3) + 0.5) + 1;
+            int32_t id = (int32_t)floor(ang[v] / (CVM__PI / 3) + 0.5) + 1;
             ideal[v] = id < 2 ? 2 : id;
         } else {
             ideal[v] = 6;
