@@ -199,13 +199,12 @@ cvm_status cvm_mesh_copy_dual_merge_groups(cvm_index *dst, size_t dst_len, const
     double *vsize, *V;
     int32_t *group, *map;
     size_t n, t, k = 0;
+    cvm_status s;
     if (!m)
         return CVM_E_NULL_ARG;
-    n = m->triangulated ? cvm__domain_triangles(&m->tri) : 0;
-    if (!dst && dst_len)
-        return CVM_E_NULL_ARG;
-    if (dst_len < n)
-        return CVM_E_BUFFER_TOO_SMALL;
+    n = cvm__mesh_n_triangles(m);
+    if ((s = cvm__room(dst, dst_len, n)))
+        return s;
     if (!n)
         return CVM_OK;
     ctx = (cvm__ctx *)&m->ctx; /* allocation does not change the handle */

@@ -20,6 +20,14 @@ typedef struct cvm__edges {
 /* Number of domain triangles. */
 size_t cvm__domain_triangles(const cvm__tri2 *T);
 
+/* Number of domain triangles of m: 0 when it is not triangulated. */
+size_t cvm__mesh_n_triangles(const cvm_mesh *m);
+
+/* Whether an output buffer dst of dst_len entries holds need entries:
+ * CVM_E_NULL_ARG when dst is NULL with dst_len > 0, CVM_E_BUFFER_TOO_SMALL when
+ * dst_len < need, else CVM_OK (no message set). */
+cvm_status cvm__room(const void *dst, size_t dst_len, size_t need);
+
 /* Count the unique edges of the domain triangles (*nedge) and, among them,
  * the constrained ones (*nseg), without allocating. */
 void cvm__domain_edge_counts(const cvm__tri2 *T, size_t *nedge, size_t *nseg);

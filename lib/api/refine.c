@@ -320,14 +320,13 @@ cvm_status cvm_mesh_copy_layer_index(double *dst, size_t dst_len, const cvm_mesh
     const cvm__tri2 *T;
     size_t t, k = 0, nt;
     int have;
+    cvm_status s;
     if (!m)
         return CVM_E_NULL_ARG;
     T = &m->tri;
-    nt = m->triangulated ? cvm__domain_triangles(T) : 0;
-    if (!dst && dst_len)
-        return CVM_E_NULL_ARG;
-    if (dst_len < nt)
-        return CVM_E_BUFFER_TOO_SMALL;
+    nt = cvm__mesh_n_triangles(m);
+    if ((s = cvm__room(dst, dst_len, nt)))
+        return s;
     have = m->tlayer && m->n_tlayer == T->nt;
     for (t = 0; t < T->nt && nt; t++)
         if (cvm__tri2_in_domain(T, (int32_t)t))

@@ -454,11 +454,7 @@ static int af_point(cvm__refiner *R, int32_t t, int j, double *x)
     nrm[1] = (q[0] - p[0]) / le;
     n = af_candidates(R, t, j, m, nrm, le, d);
     r = AF_PROX * le;
-    /* A relative change below 1e-9, deterministic in the vertex count (as in
-     * frontal.c), keeps the points off an exact lattice: lattice points are
-     * cocircular in many fours, which sends the in-circle tests of the
-     * insertion to their slow exact stages. */
-    jit = 1 + 1e-9 * ((double)(((uint32_t)R->T->nv * 2654435761u) % 2048u) / 1024.0 - 1.0);
+    jit = cvm__rf_lattice_jitter(R->T->nv);
     for (k = 0; k < n; k++) {
         x[0] = m[0] + d[k] * jit * nrm[0];
         x[1] = m[1] + d[k] * jit * nrm[1];

@@ -313,11 +313,7 @@ static int fr_point(const cvm__refiner *R, int32_t t, int jf, double *x)
     d = rho + sqrt(rho * rho > p * p ? rho * rho - p * p : 0);
     if (d > q + 0.5 * sqrt(p * p + q * q))
         d = q + 0.5 * sqrt(p * p + q * q);
-    /* A relative change below 1e-9, deterministic in the vertex count, keeps
-     * the frontal points off an exact lattice: lattice points are cocircular
-     * in many fours, which sends the in-circle tests of the insertion to their
-     * slow exact stages. */
-    d *= 1 + 1e-9 * ((double)(((uint32_t)R->T->nv * 2654435761u) % 2048u) / 1024.0 - 1.0);
+    d *= cvm__rf_lattice_jitter(R->T->nv);
     x[0] = m[0] + d * nx;
     x[1] = m[1] + d * ny;
     return q > 0;

@@ -226,6 +226,22 @@ typedef struct cvm__refine_report {
                                   triangulation's ctx and owned by the caller; else NULL */
 } cvm__refine_report;
 
+/* A factor within 1e-9 of 1 that the frontal and advancing-front refiners
+ * apply to the distance of a new point: deterministic in the vertex count nv,
+ * it keeps the points off an exact lattice (lattice points are cocircular in
+ * many fours, which sends the insertion's in-circle tests to their slow exact
+ * stages). nv is spread by Knuth's multiplicative hash (2^32 / golden ratio)
+ * over CVM__RF_JITTER_STEPS steps in [1 - CVM__RF_JITTER_REL, 1 + ...). */
+#define CVM__RF_JITTER_HASH 2654435761u
+#define CVM__RF_JITTER_STEPS 2048u
+#define CVM__RF_JITTER_REL 1e-9
+static inline double cvm__rf_lattice_jitter(size_t nv)
+{
+    uint32_t h = (uint32_t)nv * CVM__RF_JITTER_HASH;
+    return 1 + CVM__RF_JITTER_REL *
+                   ((double)(h % CVM__RF_JITTER_STEPS) / (CVM__RF_JITTER_STEPS / 2) - 1.0);
+}
+
 /* Largest area allowed for triangle t: CVM_OPT_MAX_AREA and its region's
  * maximum area, the smaller of those set; 0 = none. */
 #define cvm__rf_max_area(R, t) cvm__rf_max_area_((R)->p, (R)->T, (t))
