@@ -11,13 +11,6 @@
 
 #include "output_internal.h"
 
-int32_t cvm__segment_marker(const cvm_mesh *m, int32_t seg)
-{
-    if (seg < 0 || (size_t)seg >= m->in.nseg)
-        return 0;
-    return m->in.smark ? m->in.smark[seg] : 1;
-}
-
 /* The allocator of a const handle: allocation does not change the handle. */
 static cvm__ctx *alloc_ctx(const cvm_mesh *m)
 {

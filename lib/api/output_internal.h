@@ -59,10 +59,6 @@ cvm_status cvm__dual_cells(cvm__ctx *ctx, const cvm__tri2 *T, int32_t *off, doub
  * cancellation every staged write of m is discarded. Returns s. */
 cvm_status cvm__mesh_stage_settle(cvm_mesh *m, cvm_status s);
 
-/* Marker of input segment seg of m: its marker, or 1 when the input has no
- * segment markers (Triangle's default boundary marker); 0 for seg < 0. */
-int32_t cvm__segment_marker(const cvm_mesh *m, int32_t seg);
-
 /* A view of T for dimensionless dual measures (lib/api/dual_quality.c): when
  * the coordinates of T reach beyond 2^300 or all lie below 2^-300 (the
  * constructions of the dual form cubes of coordinate differences, which
