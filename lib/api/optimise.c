@@ -276,7 +276,7 @@ static cvm_status merge_stats(cvm_mesh *m, double *merged, double *nc, double *n
         if (group[t] < 0)
             continue;
         bnd = on_bnd[v[0]] || on_bnd[v[1]] || on_bnd[v[2]];
-        bad = cvm__dual_tri_status(T, vsize, tol, V, (int32_t)t) == 2;
+        bad = cvm__dual_tri_compliance(T, vsize, tol, V, (int32_t)t) == CVM__DUAL_NONCOMPLIANT;
         n++;
         nm += gsize[group[t]] > 1;
         nn += (size_t)bad;

@@ -94,7 +94,7 @@ typedef struct dopt {
     uint8_t *mark;   /* nv: scratch (visited / vanished) */
     double *V;       /* 2 per slot */
     double *F;       /* per slot */
-    uint8_t *st;     /* per slot: cvm__dual_tri_status */
+    uint8_t *st;     /* per slot: cvm__dual_tri_compliance */
     int32_t *layer;  /* per slot: cvm__dual_layers */
     uint8_t *weak;   /* per slot: compliant but an angle below the target, merged, or the
                         power vertex within half the margin of an edge */
@@ -198,7 +198,7 @@ static double score(const dopt *D, int32_t t)
     const cvm__tri2 *T = D->T;
     const int32_t *v = T->tv + 3 * (size_t)t;
     double cx, cy, prio;
-    if (D->st[t] != 2)
+    if (D->st[t] != CVM__DUAL_NONCOMPLIANT)
         return 0.0;
     cx = (T->xy[2 * (size_t)v[0]] + T->xy[2 * (size_t)v[1]] + T->xy[2 * (size_t)v[2]]) / 3.0;
     cy = (T->xy[2 * (size_t)v[0] + 1] + T->xy[2 * (size_t)v[1] + 1] + T->xy[2 * (size_t)v[2] + 1]) / 3.0;
@@ -219,7 +219,7 @@ static int is_weak(const dopt *D, int32_t t)
     const double *V = D->V + 2 * (size_t)t;
     double l2[3], c;
     int k;
-    if (D->st[t] == 1)
+    if (D->st[t] == CVM__DUAL_MERGED)
         return 1;
     {
         const double *p0 = T->xy + 2 * (size_t)v[0], *p1 = T->xy + 2 * (size_t)v[1];
@@ -244,9 +244,9 @@ static int is_weak(const dopt *D, int32_t t)
 static void rescore(dopt *D, int32_t t)
 {
     uint8_t old = D->st[t], oldw = D->weak[t];
-    D->st[t] = (uint8_t)cvm__dual_tri_status(D->T, D->vsize, D->p->merge_tol, D->V, t);
-    D->nc += (D->st[t] == 2) - (old == 2);
-    D->weak[t] = (uint8_t)(D->st[t] != 2 && is_weak(D, t));
+    D->st[t] = (uint8_t)cvm__dual_tri_compliance(D->T, D->vsize, D->p->merge_tol, D->V, t);
+    D->nc += (D->st[t] == CVM__DUAL_NONCOMPLIANT) - (old == CVM__DUAL_NONCOMPLIANT);
+    D->weak[t] = (uint8_t)(D->st[t] != CVM__DUAL_NONCOMPLIANT && is_weak(D, t));
     D->nweak += D->weak[t];
     D->nweak -= oldw;
     D->F[t] = score(D, t);
@@ -662,8 +662,8 @@ static cvm_status restore(dopt *D)
 static int by_score(const void *a, const void *b, const double *F, const uint8_t *st)
 {
     int32_t x = *(const int32_t *)a, y = *(const int32_t *)b;
-    if ((st[x] == 2) != (st[y] == 2))
-        return st[x] == 2 ? -1 : 1;
+    if ((st[x] == CVM__DUAL_NONCOMPLIANT) != (st[y] == CVM__DUAL_NONCOMPLIANT))
+        return st[x] == CVM__DUAL_NONCOMPLIANT ? -1 : 1;
     if (F[x] != F[y])
         return F[x] > F[y] ? -1 : 1;
     return x < y ? -1 : x > y;
@@ -696,7 +696,7 @@ static size_t sweep_order(dopt *D, uint64_t sweep)
     size_t t, n = 0, nb, b;
     cvm__rng r;
     for (t = 0; t < T->nt; t++)
-        if (D->st[t] == 2 || (D->weak[t] && !D->nc_only))
+        if (D->st[t] == CVM__DUAL_NONCOMPLIANT || (D->weak[t] && !D->nc_only))
             D->list[n++] = (int32_t)t;
     sort_list(D->list, D->star, n, D->F, D->st);
     nb = n / 25 < 20 ? n / 25 : 20;
@@ -844,7 +844,8 @@ static cvm_status sweep(dopt *D, uint64_t k, size_t *moved_out)
         while (i < n && nb < BATCH && !closed) {
             int32_t t = D->list[i];
             int j;
-            if ((!D->mm && D->st[t] != 2 && !D->weak[t]) || !cvm__tri2_in_domain(T, t)) {
+            if ((!D->mm && D->st[t] != CVM__DUAL_NONCOMPLIANT && !D->weak[t]) ||
+                !cvm__tri2_in_domain(T, t)) {
                 i++;
                 continue;
             }

@@ -104,7 +104,7 @@ typedef struct af_state {
     size_t cap_lo;
     unsigned char *front;      /* per segment id: starts a front */
     size_t nfront;
-    cvm__pgrid grid;
+    cvm__vertex_grid grid;
     size_t ngrid;              /* vertices 0..ngrid-1 are in the grid */
     double lmin0;              /* shortest domain edge when the pass started */
     /* interleaved smoothing, only with nsm > 0 (see af_layers_done) */
@@ -339,7 +339,7 @@ static cvm_status af_new_vertex(cvm__refiner *R, int32_t v, int32_t base_layer)
     if (n == 0 || (n > A->cap_lo && cvm__grow(R->ctx, (void **)&A->lo, &A->cap_lo, n, sizeof *A->lo)))
         return cvm__nomem(R->ctx);
     for (; A->ngrid <= (size_t)v; A->ngrid++)
-        if (cvm__pgrid_add(&A->grid, (int32_t)A->ngrid, af_pt(R, (int32_t)A->ngrid)))
+        if (cvm__vertex_grid_add(&A->grid, (int32_t)A->ngrid, af_pt(R, (int32_t)A->ngrid)))
             return cvm__nomem(R->ctx);
     if (A->nsm) {
         if (af_grow_fill(R->ctx, &A->vlay, &A->cap_vlay, (size_t)v + 1, AF_INF))
@@ -458,7 +458,7 @@ static int af_point(cvm__refiner *R, int32_t t, int j, double *x)
     for (k = 0; k < n; k++) {
         x[0] = m[0] + d[k] * jit * nrm[0];
         x[1] = m[1] + d[k] * jit * nrm[1];
-        if (!cvm__pgrid_any_within(&A->grid, R->T->xy, x, r))
+        if (!cvm__vertex_grid_any_within(&A->grid, R->T->xy, x, r))
             return 1;
     }
     return 0;
@@ -558,7 +558,7 @@ static cvm_status af_smooth_group(cvm__refiner *R, int32_t lo, int32_t hi)
         int m = x[0] != o[0] || x[1] != o[1];
         A->mask[w] = (uint8_t)m;
         if (m && (size_t)w < A->ngrid)
-            cvm__pgrid_move(&A->grid, w, o, x);
+            cvm__vertex_grid_move(&A->grid, w, o, x);
         if (m)
             A->list[moved++] = w;
     }
@@ -670,11 +670,11 @@ static cvm_status af_setup(cvm__refiner *R)
             A->lmin0 = l < A->lmin0 ? l : A->lmin0;
         }
     }
-    if (cvm__pgrid_init(&A->grid, R->ctx, x0, y0, x1, y1, cs, 4 * T->nv + (1u << 20)))
+    if (cvm__vertex_grid_init(&A->grid, R->ctx, x0, y0, x1, y1, cs, 4 * T->nv + (1u << 20)))
         return cvm__nomem(R->ctx);
     for (; A->ngrid < T->nv; A->ngrid++)
         if (T->vtri[A->ngrid] >= 0 &&
-            cvm__pgrid_add(&A->grid, (int32_t)A->ngrid, af_pt(R, (int32_t)A->ngrid)))
+            cvm__vertex_grid_add(&A->grid, (int32_t)A->ngrid, af_pt(R, (int32_t)A->ngrid)))
             return cvm__nomem(R->ctx);
     return CVM_OK;
 }
@@ -684,7 +684,7 @@ void cvm__rf_aflr_free(cvm__refiner *R)
     af_state *A = R->aflr;
     if (!A)
         return;
-    cvm__pgrid_destroy(&A->grid);
+    cvm__vertex_grid_destroy(&A->grid);
     cvm__free(R->ctx, A->sl);
     cvm__free(R->ctx, A->sv);
     cvm__free(R->ctx, A->sq);
