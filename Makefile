@@ -91,7 +91,7 @@ EXAMPLES_C := $(sort $(wildcard examples/c/*.c))
 
 .PHONY: install-c python fortran install-python install-fortran
 .PHONY: venv check-standalone check-golden
-.PHONY: all lib cli tests deps demo check check-unit check-asan check-symbols check-cli \
+.PHONY: all lib cli tests deps demo check check-unit check-asan check-symbols check-layers check-cli \
         check-examples check-python check-fortran check-clang check-noomp check-fuzz \
         check-replay check-valgrind check-amalgamation fuzz fuzz-bins replay-bins bench \
         install clean python fortran amalgamation
@@ -236,7 +236,7 @@ demo: deps
 
 # ---- make check ------------------------------------------------------------
 # Each step prints "== step ==" and its time; the first failure stops the run.
-CHECK_STEPS := build check-unit check-symbols check-cli check-golden check-standalone check-examples check-asan \
+CHECK_STEPS := build check-unit check-symbols check-layers check-cli check-golden check-standalone check-examples check-asan \
                check-amalgamation check-clang check-noomp check-fuzz check-python check-fortran
 
 check: deps
@@ -285,6 +285,11 @@ check-standalone:
 
 check-symbols: $(SHARED)
 	sh .ci/check_symbols.sh $(SHARED) .ci/exported_symbols.txt
+
+# lib/ keeps its layers (a lower folder never includes a higher one) and its
+# files within 800 lines, bar the few in .ci/layers_allow.txt.
+check-layers:
+	sh .ci/check_layers.sh
 
 # The venv of every Python that a target runs (the CLI tests' checker, the
 # binding tests, the benchmarks), from tests/requirements.txt.

@@ -169,6 +169,22 @@ cvm_status cvm__dual_edge_minima(cvm_mesh *m, double *out);
  * triangulated, with weights, equal to the file's mesh; on error m is unchanged
  * and the message names the file and the offending line or item. */
 cvm_status cvm__mesh_read_vtu(cvm_mesh *m, const char *path);
+
+/* Grow m->vmark and m->vattr to the kernel's vertex count (new entries
+ * uninitialised). CVM_OK or CVM_E_NOMEM (no message set). */
+cvm_status cvm__grow_vertex_data(cvm_mesh *m);
+
+/* Marker of input segment seg: its own, or 1 when the input has no segment
+ * markers (Triangle's default boundary marker); 0 for seg < 0 or past the
+ * input segments (a convex-hull edge). */
+int32_t cvm__segment_marker(const cvm_mesh *m, int32_t seg);
+
+/* Vertex v (m->tri coordinates) lies on input segment seg: it takes the
+ * segment's marker, and its attributes are interpolated linearly between the
+ * segment's input ends (by the projection of v, clamped to the segment). For
+ * a seg outside the input segments only the marker (0) is written. vmark and
+ * vattr must have room for v (cvm__grow_vertex_data). */
+void cvm__segment_vertex_data(cvm_mesh *m, size_t v, int32_t seg);
 /* The merge and compliance measures CVM_MEASURE_DUAL_MERGED_PCT ..
  * CVM_MEASURE_DUAL_NONCOMPLIANT_BOUNDARY_PCT and the report
  * CVM_MEASURE_DUAL_OPT_* (lib/api/optimise.c); m has triangles for the former.

@@ -11,6 +11,18 @@ size_t cvm__domain_triangles(const cvm__tri2 *T)
     return n;
 }
 
+size_t cvm__mesh_n_triangles(const cvm_mesh *m)
+{
+    return m->triangulated ? cvm__domain_triangles(&m->tri) : 0;
+}
+
+cvm_status cvm__room(const void *dst, size_t dst_len, size_t need)
+{
+    if (!dst && dst_len)
+        return CVM_E_NULL_ARG;
+    return dst_len < need ? CVM_E_BUFFER_TOO_SMALL : CVM_OK;
+}
+
 /* The triangle across edge j of domain triangle t, or -1 outside the domain. */
 static int32_t across(const cvm__tri2 *T, size_t t, int j)
 {

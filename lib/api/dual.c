@@ -45,18 +45,6 @@ static int tri_contains(const cvm__tri2 *T, size_t t)
     return 1;
 }
 
-static size_t n_triangles(const cvm_mesh *m)
-{
-    return m->triangulated ? cvm__domain_triangles(&m->tri) : 0;
-}
-
-static cvm_status room(const void *dst, size_t dst_len, size_t need)
-{
-    if (!dst && dst_len)
-        return CVM_E_NULL_ARG;
-    return dst_len < need ? CVM_E_BUFFER_TOO_SMALL : CVM_OK;
-}
-
 cvm_status cvm_mesh_set_weights(cvm_mesh *m, const double *w, size_t count)
 {
     cvm__tri2 *T;
@@ -106,7 +94,7 @@ cvm_status cvm_mesh_copy_weights(double *dst, size_t dst_len, const cvm_mesh *m)
     if (!m)
         return CVM_E_NULL_ARG;
     nv = m->triangulated ? m->tri.nv : 0;
-    if ((s = room(dst, dst_len, nv)))
+    if ((s = cvm__room(dst, dst_len, nv)))
         return s;
     if (nv && m->tri.w)
         memcpy(dst, m->tri.w, nv * sizeof *dst);
@@ -121,7 +109,7 @@ cvm_status cvm_mesh_copy_dual_vertices(double *dst, size_t dst_len, const cvm_me
     cvm_status s;
     if (!m)
         return CVM_E_NULL_ARG;
-    if ((s = room(dst, dst_len, 2 * n_triangles(m))) || !m->triangulated)
+    if ((s = cvm__room(dst, dst_len, 2 * cvm__mesh_n_triangles(m))) || !m->triangulated)
         return s;
     for (t = 0; t < m->tri.nt; t++)
         if (cvm__tri2_in_domain(&m->tri, (int32_t)t))
@@ -135,7 +123,7 @@ cvm_status cvm_mesh_copy_dual_inside(int32_t *dst, size_t dst_len, const cvm_mes
     cvm_status s;
     if (!m)
         return CVM_E_NULL_ARG;
-    if ((s = room(dst, dst_len, n_triangles(m))) || !m->triangulated)
+    if ((s = cvm__room(dst, dst_len, cvm__mesh_n_triangles(m))) || !m->triangulated)
         return s;
     for (t = 0; t < m->tri.nt; t++)
         if (cvm__tri2_in_domain(&m->tri, (int32_t)t))
@@ -152,7 +140,7 @@ cvm_status cvm_mesh_copy_dual_areas(double *dst, size_t dst_len, const cvm_mesh 
     if (!m)
         return CVM_E_NULL_ARG;
     nv = m->triangulated ? m->tri.nv : 0;
-    if ((s = room(dst, dst_len, nv)) || !nv)
+    if ((s = cvm__room(dst, dst_len, nv)) || !nv)
         return s;
     T = &m->tri;
     memset(dst, 0, nv * sizeof *dst);
@@ -200,7 +188,7 @@ cvm_status cvm_mesh_copy_dual_edge_lengths(double *dst, size_t dst_len, const cv
         return CVM_E_NULL_ARG;
     if (m->triangulated)
         cvm__domain_edge_counts(&m->tri, &ne, &ns);
-    if ((s = room(dst, dst_len, ne)) || !ne)
+    if ((s = cvm__room(dst, dst_len, ne)) || !ne)
         return s;
     if (cvm__domain_edges(alloc_ctx(m), &m->tri, 0, &e))
         return CVM_E_NOMEM;

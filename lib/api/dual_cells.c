@@ -134,13 +134,6 @@ cvm_status cvm__dual_cells(cvm__ctx *ctx, const cvm__tri2 *T, int32_t *off, doub
     return CVM_OK;
 }
 
-static cvm_status room(const void *dst, size_t dst_len, size_t need)
-{
-    if (!dst && dst_len)
-        return CVM_E_NULL_ARG;
-    return dst_len < need ? CVM_E_BUFFER_TOO_SMALL : CVM_OK;
-}
-
 /* Fresh offsets of m's cells (nv + 1 entries). */
 static cvm_status offsets(cvm__ctx *ctx, const cvm_mesh *m, int32_t **out)
 {
@@ -166,7 +159,7 @@ cvm_status cvm_mesh_copy_dual_cell_offsets(cvm_index *dst, size_t dst_len, const
     if (!m)
         return CVM_E_NULL_ARG;
     nv = m->triangulated ? m->tri.nv : 0;
-    if ((s = room(dst, dst_len, nv + 1)))
+    if ((s = cvm__room(dst, dst_len, nv + 1)))
         return s;
     if (!nv) {
         dst[0] = 0;
@@ -188,11 +181,11 @@ cvm_status cvm_mesh_copy_dual_cells(double *dst, size_t dst_len, const cvm_mesh 
     if (!m)
         return CVM_E_NULL_ARG;
     if (!m->triangulated || !m->tri.nv)
-        return room(dst, dst_len, 0);
+        return cvm__room(dst, dst_len, 0);
     ctx = (cvm__ctx *)&m->ctx;
     if ((s = offsets(ctx, m, &off)))
         return s;
-    if ((s = room(dst, dst_len, 2 * (size_t)off[m->tri.nv])) == CVM_OK)
+    if ((s = cvm__room(dst, dst_len, 2 * (size_t)off[m->tri.nv])) == CVM_OK)
         s = cvm__dual_cells(ctx, &m->tri, off, dst);
     cvm__free(ctx, off);
     return s;

@@ -19,6 +19,7 @@
 #include <string.h>
 
 #include "output_internal.h"
+#include "geom/measure.h"
 #include "dual/dual_internal.h"
 
 #define SQRT3 1.7320508075688772935

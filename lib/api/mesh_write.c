@@ -2,6 +2,7 @@
 #include <string.h>
 
 #include "output_internal.h"
+#include "geom/measure.h"
 
 void cvm__mesh_out_free(cvm_mesh *m, cvm__mesh_out *mo)
 {

@@ -201,13 +201,12 @@ cvm_status cvm_mesh_copy_dual_merge_groups(cvm_index *dst, size_t dst_len, const
     double *vsize, *V;
     int32_t *group, *map;
     size_t n, t, k = 0;
+    cvm_status s;
     if (!m)
         return CVM_E_NULL_ARG;
-    n = m->triangulated ? cvm__domain_triangles(&m->tri) : 0;
-    if (!dst && dst_len)
-        return CVM_E_NULL_ARG;
-    if (dst_len < n)
-        return CVM_E_BUFFER_TOO_SMALL;
+    n = cvm__mesh_n_triangles(m);
+    if ((s = cvm__room(dst, dst_len, n)))
+        return s;
     if (!n)
         return CVM_OK;
     ctx = (cvm__ctx *)&m->ctx; /* allocation does not change the handle */
@@ -279,7 +278,7 @@ static cvm_status merge_stats(cvm_mesh *m, double *merged, double *nc, double *n
         if (group[t] < 0)
             continue;
         bnd = on_bnd[v[0]] || on_bnd[v[1]] || on_bnd[v[2]];
-        bad = cvm__dual_tri_status(T, vsize, tol, V, (int32_t)t) == 2;
+        bad = cvm__dual_tri_compliance(T, vsize, tol, V, (int32_t)t) == CVM__DUAL_NONCOMPLIANT;
         n++;
         nm += gsize[group[t]] > 1;
         nn += (size_t)bad;

@@ -11,13 +11,6 @@
 
 #include "output_internal.h"
 
-int32_t cvm__segment_marker(const cvm_mesh *m, int32_t seg)
-{
-    if (seg < 0 || (size_t)seg >= m->in.nseg)
-        return 0;
-    return m->in.smark ? m->in.smark[seg] : 1;
-}
-
 /* The allocator of a const handle: allocation does not change the handle. */
 static cvm__ctx *alloc_ctx(const cvm_mesh *m)
 {
@@ -29,19 +22,6 @@ static size_t n_vertices(const cvm_mesh *m)
     return m->triangulated ? m->tri.nv : 0;
 }
 
-static size_t n_triangles(const cvm_mesh *m)
-{
-    return m->triangulated ? cvm__domain_triangles(&m->tri) : 0;
-}
-
-/* Check dst against need entries. */
-static cvm_status room(const void *dst, size_t dst_len, size_t need)
-{
-    if (!dst && dst_len)
-        return CVM_E_NULL_ARG;
-    return dst_len < need ? CVM_E_BUFFER_TOO_SMALL : CVM_OK;
-}
-
 cvm_status cvm_mesh_count(size_t *out, const cvm_mesh *m, cvm_entity kind)
 {
     size_t ne = 0, ns = 0;
@@ -50,7 +30,7 @@ cvm_status cvm_mesh_count(size_t *out, const cvm_mesh *m, cvm_entity kind)
     *out = 0;
     switch (kind) {
     case CVM_ENT_VERTEX: *out = n_vertices(m); return CVM_OK;
-    case CVM_ENT_TRIANGLE: *out = n_triangles(m); return CVM_OK;
+    case CVM_ENT_TRIANGLE: *out = cvm__mesh_n_triangles(m); return CVM_OK;
     case CVM_ENT_EDGE:
     case CVM_ENT_SEGMENT:
         if (m->triangulated)
@@ -74,7 +54,7 @@ cvm_status cvm_mesh_copy_points(double *dst, size_t dst_len, const cvm_mesh *m)
     if (!m)
         return CVM_E_NULL_ARG;
     nv = n_vertices(m);
-    if ((s = room(dst, dst_len, 2 * nv)))
+    if ((s = cvm__room(dst, dst_len, 2 * nv)))
         return s;
     if (nv)
         memcpy(dst, m->tri.xy, 2 * nv * sizeof *dst);
@@ -85,7 +65,7 @@ static cvm_status copy_triangles(cvm_index *dst, size_t dst_len, const cvm_mesh 
 {
     const cvm__tri2 *T = &m->tri;
     size_t t, k = 0;
-    cvm_status s = room(dst, dst_len, 3 * n_triangles(m));
+    cvm_status s = cvm__room(dst, dst_len, 3 * cvm__mesh_n_triangles(m));
     if (s || !m->triangulated)
         return s;
     for (t = 0; t < T->nt; t++)
@@ -103,7 +83,7 @@ static cvm_status copy_edges(cvm_index *dst, size_t dst_len, const cvm_mesh *m, 
     cvm_status s;
     if (m->triangulated)
         cvm__domain_edge_counts(&m->tri, &ne, &ns);
-    if ((s = room(dst, dst_len, 2 * (segments ? ns : ne))) || !m->triangulated)
+    if ((s = cvm__room(dst, dst_len, 2 * (segments ? ns : ne))) || !m->triangulated)
         return s;
     if (cvm__domain_edges(alloc_ctx(m), &m->tri, segments, &e))
         return CVM_E_NOMEM;
@@ -134,7 +114,7 @@ cvm_status cvm_mesh_copy_neighbors(cvm_index *dst, size_t dst_len, const cvm_mes
     cvm_status s;
     if (!m)
         return CVM_E_NULL_ARG;
-    if ((s = room(dst, dst_len, 3 * n_triangles(m))) || !m->triangulated)
+    if ((s = cvm__room(dst, dst_len, 3 * cvm__mesh_n_triangles(m))) || !m->triangulated)
         return s;
     T = &m->tri;
     if (cvm__domain_map(alloc_ctx(m), T, &map))
@@ -159,7 +139,7 @@ static cvm_status segment_markers(int32_t *dst, size_t dst_len, const cvm_mesh *
     cvm_status s;
     if (m->triangulated)
         cvm__domain_edge_counts(&m->tri, &ne, &ns);
-    if ((s = room(dst, dst_len, ns)) || !m->triangulated)
+    if ((s = cvm__room(dst, dst_len, ns)) || !m->triangulated)
         return s;
     if (cvm__domain_edges(alloc_ctx(m), &m->tri, 1, &e))
         return CVM_E_NOMEM;
@@ -180,7 +160,7 @@ cvm_status cvm_mesh_copy_markers(int32_t *dst, size_t dst_len, const cvm_mesh *m
     if (kind != CVM_ENT_VERTEX)
         return CVM_E_ARGUMENT;
     nv = n_vertices(m);
-    if ((s = room(dst, dst_len, nv)))
+    if ((s = cvm__room(dst, dst_len, nv)))
         return s;
     if (nv && m->vmark)
         memcpy(dst, m->vmark, nv * sizeof *dst);
@@ -196,7 +176,7 @@ cvm_status cvm_mesh_copy_triangle_attributes(double *dst, size_t dst_len, const 
     cvm_status s;
     if (!m)
         return CVM_E_NULL_ARG;
-    if ((s = room(dst, dst_len, n_triangles(m))) || !m->triangulated)
+    if ((s = cvm__room(dst, dst_len, cvm__mesh_n_triangles(m))) || !m->triangulated)
         return s;
     T = &m->tri;
     for (t = 0; t < T->nt; t++)
@@ -215,7 +195,7 @@ cvm_status cvm_mesh_copy_point_attributes(double *dst, size_t dst_len, size_t *n
     nv = n_vertices(m);
     na = m->vattr ? m->in.nattr : 0;
     *nattr_out = na;
-    if ((s = room(dst, dst_len, nv * na)))
+    if ((s = cvm__room(dst, dst_len, nv * na)))
         return s;
     if (nv && na)
         memcpy(dst, m->vattr, nv * na * sizeof *dst);
@@ -229,7 +209,7 @@ cvm_status cvm_mesh_copy_input_map(cvm_index *dst, size_t dst_len, const cvm_mes
         return CVM_E_NULL_ARG;
     if (!m->triangulated)
         return CVM_E_STATE;
-    if ((s = room(dst, dst_len, m->in.np)))
+    if ((s = cvm__room(dst, dst_len, m->in.np)))
         return s;
     if (m->in.np)
         memcpy(dst, m->input_map, m->in.np * sizeof *dst);

@@ -20,6 +20,14 @@ typedef struct cvm__edges {
 /* Number of domain triangles. */
 size_t cvm__domain_triangles(const cvm__tri2 *T);
 
+/* Number of domain triangles of m: 0 when it is not triangulated. */
+size_t cvm__mesh_n_triangles(const cvm_mesh *m);
+
+/* Whether an output buffer dst of dst_len entries holds need entries:
+ * CVM_E_NULL_ARG when dst is NULL with dst_len > 0, CVM_E_BUFFER_TOO_SMALL when
+ * dst_len < need, else CVM_OK (no message set). */
+cvm_status cvm__room(const void *dst, size_t dst_len, size_t need);
+
 /* Count the unique edges of the domain triangles (*nedge) and, among them,
  * the constrained ones (*nseg), without allocating. */
 void cvm__domain_edge_counts(const cvm__tri2 *T, size_t *nedge, size_t *nseg);
@@ -51,10 +59,6 @@ cvm_status cvm__dual_cells(cvm__ctx *ctx, const cvm__tri2 *T, int32_t *off, doub
  * cancellation every staged write of m is discarded. Returns s. */
 cvm_status cvm__mesh_stage_settle(cvm_mesh *m, cvm_status s);
 
-/* Marker of input segment seg of m: its marker, or 1 when the input has no
- * segment markers (Triangle's default boundary marker); 0 for seg < 0. */
-int32_t cvm__segment_marker(const cvm_mesh *m, int32_t seg);
-
 /* A view of T for dimensionless dual measures (lib/api/dual_quality.c): when
  * the coordinates of T reach beyond 2^300 or all lie below 2^-300 (the
  * constructions of the dual form cubes of coordinate differences, which
@@ -66,7 +70,5 @@ int32_t cvm__segment_marker(const cvm_mesh *m, int32_t seg);
 cvm_status cvm__scaled_view(cvm__ctx *ctx, const cvm__tri2 *T, cvm__tri2 *view, int *k);
 void cvm__scaled_view_free(cvm__ctx *ctx, const cvm__tri2 *T, cvm__tri2 *view);
 
-/* Smallest angle of triangle a, b, c in degrees (inexact: a measure). */
-double cvm__min_angle_deg(const double *a, const double *b, const double *c);
 
 #endif

@@ -27,85 +27,12 @@
 #include <string.h>
 
 #include "output_internal.h"
-
-#define RAD2DEG (180.0 / 3.14159265358979323846)
-#define NBIN_ANGLE CVM__NBIN_ANGLE
-#define NBIN_DEGREE CVM__NBIN_DEGREE
-/* An edge vector whose larger component lies in [SAFE_LO, SAFE_HI] gives
- * products that neither overflow (2^1001 < DBL_MAX) nor lose precision to
- * subnormals (2^-1000 > DBL_MIN). */
-#define SAFE_LO 0x1p-500
-#define SAFE_HI 0x1p+500
+#include "geom/measure.h"
 
 typedef cvm__tri_quality qstats;
 
-static int in_safe_range(double x, double y)
-{
-    double mx = fmax(fabs(x), fabs(y));
-    return mx >= SAFE_LO && mx <= SAFE_HI;
-}
-
-/* q - p as u * 2^(return value), the larger component of u in [1, 2) (u = 0
- * for p = q). Exact unless the difference overflows; then it comes from the
- * halved coordinates (which round only subnormal parts). */
-static int scaled_diff(const double *p, const double *q, double *u)
-{
-    double x = q[0] - p[0], y = q[1] - p[1], mx;
-    int e = 0;
-    if (!(fabs(x) <= DBL_MAX && fabs(y) <= DBL_MAX)) {
-        x = 0.5 * q[0] - 0.5 * p[0];
-        y = 0.5 * q[1] - 0.5 * p[1];
-        e = 1;
-    }
-    mx = fmax(fabs(x), fabs(y));
-    if (mx > 0) {
-        int k = ilogb(mx);
-        x = ldexp(x, -k);
-        y = ldexp(y, -k);
-        e += k;
-    }
-    u[0] = x;
-    u[1] = y;
-    return e;
-}
-
-/* Angle at a of triangle a, b, c, degrees; *dot receives the dot product of
- * the two edge vectors (times a positive factor outside the safe range). */
-static double corner(const double *a, const double *b, const double *c, double *dot)
-{
-    double ux = b[0] - a[0], uy = b[1] - a[1], vx = c[0] - a[0], vy = c[1] - a[1];
-    if (!in_safe_range(ux, uy) || !in_safe_range(vx, vy)) {
-        double u[2], v[2];
-        scaled_diff(a, b, u);
-        scaled_diff(a, c, v);
-        ux = u[0];
-        uy = u[1];
-        vx = v[0];
-        vy = v[1];
-    }
-    *dot = ux * vx + uy * vy;
-    return atan2(fabs(ux * vy - uy * vx), *dot) * RAD2DEG;
-}
-
-/* Signed area of triangle a, b, c (positive counter-clockwise); +-inf only
- * when its magnitude exceeds the largest double. */
-static double signed_area(const double *a, const double *b, const double *c)
-{
-    double ux = b[0] - a[0], uy = b[1] - a[1], vx = c[0] - a[0], vy = c[1] - a[1];
-    double u[2], v[2];
-    int e;
-    if (in_safe_range(ux, uy) && in_safe_range(vx, vy))
-        return 0.5 * (ux * vy - uy * vx);
-    e = scaled_diff(a, b, u) + scaled_diff(a, c, v);
-    return ldexp(0.5 * (u[0] * v[1] - u[1] * v[0]), e);
-}
-
-double cvm__min_angle_deg(const double *a, const double *b, const double *c)
-{
-    double d, x = corner(a, b, c, &d), y = corner(b, c, a, &d), z = corner(c, a, b, &d);
-    double mn = x < y ? x : y;
-    return mn < z ? mn : z;
-}
+#define NBIN_ANGLE CVM__NBIN_ANGLE
+#define NBIN_DEGREE CVM__NBIN_DEGREE
 
 static void add_area(qstats *q, double x)
 {
@@ -135,7 +62,7 @@ static void triangle_stats(const cvm__tri2 *T, qstats *q)
         for (k = 0; k < 3; k++)
             p[k] = T->xy + 2 * (size_t)T->tv[3 * t + (size_t)k];
         for (k = 0; k < 3; k++) {
-            double dot, a = corner(p[k], p[(k + 1) % 3], p[(k + 2) % 3], &dot);
+            double dot, a = cvm__corner_angle_deg_safe(p[k], p[(k + 1) % 3], p[(k + 2) % 3], &dot);
             double len = hypot(p[(k + 1) % 3][0] - p[k][0], p[(k + 1) % 3][1] - p[k][1]);
             int bin = a >= 0 && a < 10.0 * NBIN_ANGLE ? (int)(a / 10.0) : a >= 0 ? NBIN_ANGLE - 1 : 0;
             q->min_angle = a < q->min_angle ? a : q->min_angle;
@@ -148,7 +75,7 @@ static void triangle_stats(const cvm__tri2 *T, qstats *q)
                 obtuse = 1;
         }
         q->n_obtuse += obtuse != 0;
-        area = signed_area(p[0], p[1], p[2]);
+        area = cvm__tri_area_safe(p[0], p[1], p[2]);
         add_area(q, area);
         q->min_area = area < q->min_area ? area : q->min_area;
         q->nt++;

@@ -7,46 +7,12 @@
 
 enum { REP_STEINER, REP_UNMET_ANGLE, REP_UNMET_SIZE, REP_SMALL_ANGLE, REP_REQUESTED, REP_MET };
 
-static cvm_status refine_grow_vertex_data(cvm_mesh *m)
-{
-    size_t nv = m->tri.nv, na = m->in.nattr;
-    if (nv > m->cap_vmark &&
-        cvm__grow(&m->ctx, (void **)&m->vmark, &m->cap_vmark, nv, sizeof(int32_t)))
-        return CVM_E_NOMEM;
-    if (na && nv * na > m->cap_vattr &&
-        cvm__grow(&m->ctx, (void **)&m->vattr, &m->cap_vattr, nv * na, sizeof(double)))
-        return CVM_E_NOMEM;
-    return CVM_OK;
-}
-
-/* Vertex v (>= the first new one) lies on segment seg: take its marker and
- * interpolate the attributes of the segment's input ends. */
-static void refine_segment_vertex(cvm_mesh *m, int32_t v, int32_t seg)
-{
-    size_t na = m->in.nattr, i;
-    const int32_t *s;
-    const double *pa, *pb, *p = m->tri.xy + 2 * (size_t)v;
-    double len2, t;
-    if (seg < 0 || (size_t)seg >= m->in.nseg)
-        return; /* a convex-hull segment: marker 0, attributes 0 */
-    s = m->in.seg + 2 * (size_t)seg;
-    m->vmark[v] = m->in.smark ? m->in.smark[seg] : 1;
-    pa = m->in.xy + 2 * (size_t)s[0];
-    pb = m->in.xy + 2 * (size_t)s[1];
-    len2 = (pb[0] - pa[0]) * (pb[0] - pa[0]) + (pb[1] - pa[1]) * (pb[1] - pa[1]);
-    t = len2 > 0 ? ((p[0] - pa[0]) * (pb[0] - pa[0]) + (p[1] - pa[1]) * (pb[1] - pa[1])) / len2 : 0;
-    t = t < 0 ? 0 : t > 1 ? 1 : t;
-    for (i = 0; i < na; i++)
-        m->vattr[(size_t)v * na + i] =
-            (1 - t) * m->in.pattr[(size_t)s[0] * na + i] + t * m->in.pattr[(size_t)s[1] * na + i];
-}
-
 /* Markers and attributes of the vertices nv0..nv-1 added by the refiner. */
 static cvm_status refine_vertex_data(cvm_mesh *m, size_t nv0)
 {
     const cvm__tri2 *T = &m->tri;
     size_t v, t, na = m->in.nattr;
-    if (refine_grow_vertex_data(m))
+    if (cvm__grow_vertex_data(m))
         return CVM_E_NOMEM;
     for (v = nv0; v < T->nv; v++) {
         m->vmark[v] = 0;
@@ -64,7 +30,7 @@ static cvm_status refine_vertex_data(cvm_mesh *m, size_t nv0)
             for (k = 1; k <= 2; k++) {
                 int32_t u = T->tv[3 * t + (size_t)(j + k) % 3];
                 if ((size_t)u >= nv0)
-                    refine_segment_vertex(m, u, seg);
+                    cvm__segment_vertex_data(m, (size_t)u, seg);
             }
         }
     }
@@ -322,14 +288,13 @@ cvm_status cvm_mesh_copy_layer_index(double *dst, size_t dst_len, const cvm_mesh
     const cvm__tri2 *T;
     size_t t, k = 0, nt;
     int have;
+    cvm_status s;
     if (!m)
         return CVM_E_NULL_ARG;
     T = &m->tri;
-    nt = m->triangulated ? cvm__domain_triangles(T) : 0;
-    if (!dst && dst_len)
-        return CVM_E_NULL_ARG;
-    if (dst_len < nt)
-        return CVM_E_BUFFER_TOO_SMALL;
+    nt = cvm__mesh_n_triangles(m);
+    if ((s = cvm__room(dst, dst_len, nt)))
+        return s;
     have = m->tlayer && m->n_tlayer == T->nt;
     for (t = 0; t < T->nt && nt; t++)
         if (cvm__tri2_in_domain(T, (int32_t)t))

@@ -6,6 +6,7 @@
 #include "output_internal.h"
 #include "refine/refine_internal.h"
 #include "geom/geom_internal.h"
+#include "geom/measure.h"
 
 /* An inner vertex of a chain turns by less than this (degrees). */
 #define RS_TURN_DEG 30.0
@@ -111,8 +112,7 @@ static int32_t rs_other(const rs_state *S, size_t k, int32_t v)
 /* Turning angle (degrees) at b of the path a-b-c. */
 static double rs_turn(const double *a, const double *b, const double *c)
 {
-    double ux = b[0] - a[0], uy = b[1] - a[1], wx = c[0] - b[0], wy = c[1] - b[1];
-    return atan2(fabs(ux * wy - uy * wx), ux * wx + uy * wy) * 180.0 / 3.14159265358979323846;
+    return cvm__turn_angle(a, b, c) * 180.0 / CVM__PI;
 }
 
 /* Constrained edges with a domain side, incidences, and which vertices may

@@ -6,44 +6,12 @@
 #include "api_internal.h"
 #include "geom/geom_internal.h"
 
-/* Grow the per-vertex marker and attribute arrays to the kernel's vertex count. */
-static cvm_status grow_vertex_data(cvm_mesh *m)
-{
-    size_t nv = m->tri.nv, na = m->in.nattr;
-    if (nv > m->cap_vmark &&
-        cvm__grow(&m->ctx, (void **)&m->vmark, &m->cap_vmark, nv, sizeof(int32_t)))
-        return CVM_E_NOMEM;
-    if (na && nv * na > m->cap_vattr &&
-        cvm__grow(&m->ctx, (void **)&m->vattr, &m->cap_vattr, nv * na, sizeof(double)))
-        return CVM_E_NOMEM;
-    return CVM_OK;
-}
-
-static int32_t seg_marker(const cvm_mesh *m, int32_t seg)
-{
-    if (seg < 0 || (size_t)seg >= m->in.nseg)
-        return 0;
-    return m->in.smark ? m->in.smark[seg] : 1;
-}
-
 /* Marker and attributes of Steiner vertices from..nv-1 created on segment k. */
 static void steiner_data(cvm_mesh *m, size_t from, int32_t k)
 {
-    size_t v, na = m->in.nattr, i;
-    const int32_t *s = m->in.seg + 2 * (size_t)k;
-    const double *pa = m->in.xy + 2 * (size_t)s[0], *pb = m->in.xy + 2 * (size_t)s[1];
-    double len2 = (pb[0] - pa[0]) * (pb[0] - pa[0]) + (pb[1] - pa[1]) * (pb[1] - pa[1]);
-    for (v = from; v < m->tri.nv; v++) {
-        const double *p = m->tri.xy + 2 * v;
-        double t = len2 > 0 ? ((p[0] - pa[0]) * (pb[0] - pa[0]) + (p[1] - pa[1]) * (pb[1] - pa[1])) / len2 : 0;
-        m->vmark[v] = seg_marker(m, k);
-        if (t < 0)
-            t = 0;
-        if (t > 1)
-            t = 1;
-        for (i = 0; i < na; i++)
-            m->vattr[v * na + i] = (1 - t) * m->in.pattr[s[0] * na + i] + t * m->in.pattr[s[1] * na + i];
-    }
+    size_t v;
+    for (v = from; v < m->tri.nv; v++)
+        cvm__segment_vertex_data(m, v, k);
 }
 
 static size_t count_domain(const cvm__tri2 *T)
@@ -111,7 +79,7 @@ static cvm_status recover_segments(cvm_mesh *m)
         if (s)
             return s;
         if (T->nv > nv0) {
-            if (grow_vertex_data(m))
+            if (cvm__grow_vertex_data(m))
                 return cvm__nomem(&m->ctx);
             steiner_data(m, nv0, (int32_t)k);
         }
@@ -241,7 +209,7 @@ static void boundary_vertex_markers(cvm_mesh *m)
             for (k = 1; k <= 2; k++) {
                 int32_t v = T->tv[3 * t + (j + k) % 3];
                 if (m->vmark[v] == 0)
-                    m->vmark[v] = seg_marker(m, seg);
+                    m->vmark[v] = cvm__segment_marker(m, seg);
             }
         }
     }
@@ -322,7 +290,7 @@ static cvm_status triangulate(cvm_mesh *m)
     }
     cvm__tri2_compact(T, dup_of, m->input_map);
     cvm__free(&m->ctx, dup_of);
-    if (grow_vertex_data(m))
+    if (cvm__grow_vertex_data(m))
         return cvm__nomem(&m->ctx);
     /* first occurrences win: write them last */
     for (i = n; i-- > 0;) {
@@ -402,7 +370,7 @@ cvm_status cvm_mesh_insert_points(cvm_index *ids_out, cvm_mesh *m, const double 
         if ((s = cvm__tri2_add_vertex(T, xy + 2 * i, &v)))
             return s == CVM_E_NOMEM ? cvm__nomem(&m->ctx)
                                     : cvm__error(&m->ctx, s, CVM_ENT_INPUT_POINT, (int64_t)i, "too many vertices");
-        if (grow_vertex_data(m)) {
+        if (cvm__grow_vertex_data(m)) {
             T->nv--;
             return cvm__nomem(&m->ctx);
         }

@@ -54,12 +54,20 @@ void cvm__dual_tri_vertex(const cvm__tri2 *T, int32_t t, double *out);
 int cvm__dual_edge_mergeable(const cvm__tri2 *T, const double *vsize, double tol, int32_t t, int j,
                              const double *Vt, const double *Vu);
 
-/* Compliance of domain triangle t: 0 when its power vertex lies inside or on
- * it (exact cvm__power_side2d on each edge), 1 when outside but every edge it
- * lies beyond is mergeable (the merged cell holds it), 2 when non-compliant.
+/* The compliance classes of cvm__dual_tri_compliance (not a cvm_status). */
+enum {
+    CVM__DUAL_INSIDE = 0,   /* the power vertex lies inside or on the triangle */
+    CVM__DUAL_MERGED = 1,   /* outside, but only beyond mergeable edges */
+    CVM__DUAL_NONCOMPLIANT = 2
+};
+
+/* Compliance of domain triangle t: CVM__DUAL_INSIDE when its power vertex
+ * lies inside or on it (exact cvm__power_side2d on each edge),
+ * CVM__DUAL_MERGED when outside but every edge it lies beyond is mergeable
+ * (the merged cell holds it), CVM__DUAL_NONCOMPLIANT otherwise.
  * V: cache of power vertices by slot (2 per slot, filled for domain slots). */
-int cvm__dual_tri_status(const cvm__tri2 *T, const double *vsize, double tol, const double *V,
-                         int32_t t);
+int cvm__dual_tri_compliance(const cvm__tri2 *T, const double *vsize, double tol, const double *V,
+                             int32_t t);
 
 /* Merge groups by slot: group[t] = the smallest slot of the group of domain
  * triangles joined by mergeable edges (union-find), t itself when unmerged,

@@ -81,11 +81,11 @@ int cvm__dual_edge_mergeable(const cvm__tri2 *T, const double *vsize, double tol
     return d < tol * l / sqrt(3.0);
 }
 
-int cvm__dual_tri_status(const cvm__tri2 *T, const double *vsize, double tol, const double *V,
-                         int32_t t)
+int cvm__dual_tri_compliance(const cvm__tri2 *T, const double *vsize, double tol, const double *V,
+                             int32_t t)
 {
     const int32_t *v = T->tv + 3 * (size_t)t;
-    int k, out = 0;
+    int k, out = CVM__DUAL_INSIDE;
     for (k = 0; k < 3; k++) {
         int32_t a = v[(k + 1) % 3], b = v[(k + 2) % 3], c = v[k];
         if (cvm__power_side2d(pt(T, a), pt(T, b), pt(T, c), weight(T, a), weight(T, b),
@@ -94,8 +94,8 @@ int cvm__dual_tri_status(const cvm__tri2 *T, const double *vsize, double tol, co
         /* beyond edge k (opposite c) */
         if (!cvm__dual_edge_mergeable(T, vsize, tol, t, k, V + 2 * (size_t)t,
                                       V + 2 * (size_t)(T->tn[3 * (size_t)t + (size_t)k] / 3)))
-            return 2;
-        out = 1;
+            return CVM__DUAL_NONCOMPLIANT;
+        out = CVM__DUAL_MERGED;
     }
     return out;
 }

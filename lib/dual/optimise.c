@@ -58,6 +58,7 @@
 
 #include "optimise.h"
 #include "geom/geom_internal.h"
+#include "geom/measure.h"
 
 #define FIX_ROUNDS 8
 #define BATCH 256
@@ -93,7 +94,7 @@ typedef struct dopt {
     uint8_t *mark;   /* nv: scratch (visited / vanished) */
     double *V;       /* 2 per slot */
     double *F;       /* per slot */
-    uint8_t *st;     /* per slot: cvm__dual_tri_status */
+    uint8_t *st;     /* per slot: cvm__dual_tri_compliance */
     int32_t *layer;  /* per slot: cvm__dual_layers */
     uint8_t *weak;   /* per slot: compliant but an angle below the target, merged, or the
                         power vertex within half the margin of an edge */
@@ -197,7 +198,7 @@ static double score(const dopt *D, int32_t t)
     const cvm__tri2 *T = D->T;
     const int32_t *v = T->tv + 3 * (size_t)t;
     double cx, cy, prio;
-    if (D->st[t] != 2)
+    if (D->st[t] != CVM__DUAL_NONCOMPLIANT)
         return 0.0;
     cx = (T->xy[2 * (size_t)v[0]] + T->xy[2 * (size_t)v[1]] + T->xy[2 * (size_t)v[2]]) / 3.0;
     cy = (T->xy[2 * (size_t)v[0] + 1] + T->xy[2 * (size_t)v[1] + 1] + T->xy[2 * (size_t)v[2] + 1]) / 3.0;
@@ -218,7 +219,7 @@ static int is_weak(const dopt *D, int32_t t)
     const double *V = D->V + 2 * (size_t)t;
     double l2[3], c;
     int k;
-    if (D->st[t] == 1)
+    if (D->st[t] == CVM__DUAL_MERGED)
         return 1;
     {
         const double *p0 = T->xy + 2 * (size_t)v[0], *p1 = T->xy + 2 * (size_t)v[1];
@@ -243,9 +244,9 @@ static int is_weak(const dopt *D, int32_t t)
 static void rescore(dopt *D, int32_t t)
 {
     uint8_t old = D->st[t], oldw = D->weak[t];
-    D->st[t] = (uint8_t)cvm__dual_tri_status(D->T, D->vsize, D->p->merge_tol, D->V, t);
-    D->nc += (D->st[t] == 2) - (old == 2);
-    D->weak[t] = (uint8_t)(D->st[t] != 2 && is_weak(D, t));
+    D->st[t] = (uint8_t)cvm__dual_tri_compliance(D->T, D->vsize, D->p->merge_tol, D->V, t);
+    D->nc += (D->st[t] == CVM__DUAL_NONCOMPLIANT) - (old == CVM__DUAL_NONCOMPLIANT);
+    D->weak[t] = (uint8_t)(D->st[t] != CVM__DUAL_NONCOMPLIANT && is_weak(D, t));
     D->nweak += D->weak[t];
     D->nweak -= oldw;
     D->F[t] = score(D, t);
@@ -528,13 +529,12 @@ static size_t corner_angles(const dopt *D, int32_t v, double *avg)
         if (cvm__tri2_in_domain(T, t)) {
             const double *p = T->xy + 2 * (size_t)v, *a = T->xy + 2 * (size_t)tv[(i + 1) % 3];
             const double *b = T->xy + 2 * (size_t)tv[(i + 2) % 3];
-            double ux = a[0] - p[0], uy = a[1] - p[1], wx = b[0] - p[0], wy = b[1] - p[1];
-            sum += atan2(fabs(ux * wy - uy * wx), ux * wx + uy * wy);
+            sum += cvm__corner_angle(p, a, b);
             n++;
         }
         t = T->tn[3 * (size_t)t + (size_t)(i + 1) % 3] / 3;
     } while (t != t0 && ++k < T->nt);
-    *avg = n ? sum / (double)n * (180.0 / 3.14159265358979323846) : 0.0;
+    *avg = n ? sum / (double)n * (180.0 / CVM__PI) : 0.0;
     return n;
 }
 
@@ -662,8 +662,8 @@ static cvm_status restore(dopt *D)
 static int by_score(const void *a, const void *b, const double *F, const uint8_t *st)
 {
     int32_t x = *(const int32_t *)a, y = *(const int32_t *)b;
-    if ((st[x] == 2) != (st[y] == 2))
-        return st[x] == 2 ? -1 : 1;
+    if ((st[x] == CVM__DUAL_NONCOMPLIANT) != (st[y] == CVM__DUAL_NONCOMPLIANT))
+        return st[x] == CVM__DUAL_NONCOMPLIANT ? -1 : 1;
     if (F[x] != F[y])
         return F[x] > F[y] ? -1 : 1;
     return x < y ? -1 : x > y;
@@ -696,7 +696,7 @@ static size_t sweep_order(dopt *D, uint64_t sweep)
     size_t t, n = 0, nb, b;
     cvm__rng r;
     for (t = 0; t < T->nt; t++)
-        if (D->st[t] == 2 || (D->weak[t] && !D->nc_only))
+        if (D->st[t] == CVM__DUAL_NONCOMPLIANT || (D->weak[t] && !D->nc_only))
             D->list[n++] = (int32_t)t;
     sort_list(D->list, D->star, n, D->F, D->st);
     nb = n / 25 < 20 ? n / 25 : 20;
@@ -715,23 +715,13 @@ static size_t sweep_order(dopt *D, uint64_t sweep)
     return n;
 }
 
-/* Smallest sin^2 of an angle of triangle t (plain doubles). */
+/* Smallest sin^2 of an angle of triangle t (plain doubles), at most 1. */
 static double tri_min_sin2(const cvm__tri2 *T, int32_t t)
 {
     const int32_t *v = T->tv + 3 * (size_t)t;
-    double l2[3], c, m = 1.0;
-    int k;
-    const double *p0 = T->xy + 2 * (size_t)v[0], *p1 = T->xy + 2 * (size_t)v[1], *p2 = T->xy + 2 * (size_t)v[2];
-    c = (p1[0] - p0[0]) * (p2[1] - p0[1]) - (p1[1] - p0[1]) * (p2[0] - p0[0]);
-    for (k = 0; k < 3; k++) {
-        const double *a = T->xy + 2 * (size_t)v[(k + 1) % 3], *b = T->xy + 2 * (size_t)v[(k + 2) % 3];
-        l2[k] = sq(b[0] - a[0]) + sq(b[1] - a[1]);
-    }
-    for (k = 0; k < 3; k++) {
-        double s = c * c / (l2[(k + 1) % 3] * l2[(k + 2) % 3]);
-        m = s < m ? s : m;
-    }
-    return m;
+    double m = cvm__min_sin2_corners(T->xy + 2 * (size_t)v[0], T->xy + 2 * (size_t)v[1],
+                                     T->xy + 2 * (size_t)v[2]);
+    return m < 1.0 ? m : 1.0;
 }
 
 /* Order of a max-min round into D->list: the domain triangles whose smallest
@@ -749,8 +739,8 @@ static size_t mm_order(dopt *D)
         D->F[t] = tri_min_sin2(T, (int32_t)t);
         m = D->F[t] < m ? D->F[t] : m;
     }
-    D->mm_min = asin(sqrt(m)) * (180.0 / 3.14159265358979323846);
-    g = D->mm_min + MM_BAND_DEG < 90.0 ? sin((D->mm_min + MM_BAND_DEG) * 3.14159265358979323846 / 180.0) : 1.0;
+    D->mm_min = asin(sqrt(m)) * (180.0 / CVM__PI);
+    g = D->mm_min + MM_BAND_DEG < 90.0 ? sin((D->mm_min + MM_BAND_DEG) * CVM__PI / 180.0) : 1.0;
     g *= g;
     for (t = 0; t < T->nt; t++) {
         const int32_t *tv = T->tv + 3 * t;
@@ -854,7 +844,8 @@ static cvm_status sweep(dopt *D, uint64_t k, size_t *moved_out)
         while (i < n && nb < BATCH && !closed) {
             int32_t t = D->list[i];
             int j;
-            if ((!D->mm && D->st[t] != 2 && !D->weak[t]) || !cvm__tri2_in_domain(T, t)) {
+            if ((!D->mm && D->st[t] != CVM__DUAL_NONCOMPLIANT && !D->weak[t]) ||
+                !cvm__tri2_in_domain(T, t)) {
                 i++;
                 continue;
             }
@@ -917,17 +908,13 @@ static double min_angle(const dopt *D)
     double best = 180.0;
     for (t = 0; t < T->nt; t++) {
         const int32_t *v = T->tv + 3 * t;
-        int q;
+        double a;
         if (!cvm__tri2_in_domain(T, (int32_t)t))
             continue;
-        for (q = 0; q < 3; q++) {
-            const double *P = T->xy + 2 * (size_t)v[q], *A = T->xy + 2 * (size_t)v[(q + 1) % 3];
-            const double *B = T->xy + 2 * (size_t)v[(q + 2) % 3];
-            double ux = A[0] - P[0], uy = A[1] - P[1], wx = B[0] - P[0], wy = B[1] - P[1];
-            double a = atan2(fabs(ux * wy - uy * wx), ux * wx + uy * wy) * (180.0 / 3.14159265358979323846);
-            if (a < best)
-                best = a;
-        }
+        a = cvm__tri_min_angle_deg(T->xy + 2 * (size_t)v[0], T->xy + 2 * (size_t)v[1],
+                                   T->xy + 2 * (size_t)v[2]);
+        if (a < best)
+            best = a;
     }
     return best;
 }
@@ -1107,7 +1094,7 @@ static void mark_region(dopt *D, const int32_t *seed, size_t n)
 static size_t count_below(const dopt *D, double deg)
 {
     const cvm__tri2 *T = D->T;
-    double g = sin(deg * 3.14159265358979323846 / 180.0);
+    double g = sin(deg * CVM__PI / 180.0);
     size_t t, n = 0;
     g *= g;
     for (t = 0; t < T->nt; t++)
@@ -1138,7 +1125,7 @@ static cvm_status removal_trials(dopt *D, uint64_t k0, size_t *best_nc, double *
     *kept_out = 0;
     if (!D->topo)
         return CVM_OK;
-    g = sin((gmin + RM_BAND_DEG) * 3.14159265358979323846 / 180.0);
+    g = sin((gmin + RM_BAND_DEG) * CVM__PI / 180.0);
     g *= g;
     /* candidates: the removable Steiner neighbour of least degree of each hub
      * (an interior vertex of RM_HUB_DEG or more triangles at the smallest
@@ -1208,7 +1195,7 @@ static cvm_status removal_trials(dopt *D, uint64_t k0, size_t *best_nc, double *
     }
     nlow0 = count_below(D, gmin + MM_PROGRESS_DEG);
     /* trials aim at the target the caller set, not at a raised one */
-    D->sin2_target = sin(D->p->target_angle_deg * 3.14159265358979323846 / 180.0);
+    D->sin2_target = sin(D->p->target_angle_deg * CVM__PI / 180.0);
     D->sin2_target *= D->sin2_target;
     for (n = 0; n < nc && !s; n++) {
         size_t k, moved;
@@ -1438,7 +1425,7 @@ static cvm_status run(dopt *D)
                 /* next phase: a higher target angle; keep_best keeps the best end */
                 phase++;
                 stall = 0;
-                D->sin2_target = sin(push * 3.14159265358979323846 / 180.0);
+                D->sin2_target = sin(push * CVM__PI / 180.0);
                 D->sin2_target *= D->sin2_target;
             }
         }
@@ -1466,7 +1453,7 @@ cvm_status cvm__dual_optimise(cvm__tri2 *T, const cvm__dual_opt_params *p, cvm__
     D.T = T;
     D.p = p;
     D.rep = rep;
-    D.sin2_min = sin(p->min_angle_deg * 3.14159265358979323846 / 180.0);
+    D.sin2_min = sin(p->min_angle_deg * CVM__PI / 180.0);
     D.sin2_min *= D.sin2_min;
     D.nthreads = p->threads;
 #ifdef _OPENMP
@@ -1475,7 +1462,7 @@ cvm_status cvm__dual_optimise(cvm__tri2 *T, const cvm__dual_opt_params *p, cvm__
 #endif
     if (D.nthreads <= 0)
         D.nthreads = 1;
-    D.sin2_target = sin(p->target_angle_deg * 3.14159265358979323846 / 180.0);
+    D.sin2_target = sin(p->target_angle_deg * CVM__PI / 180.0);
     D.sin2_target *= D.sin2_target;
     if (!T->w) {
         T->w = cvm__calloc(ctx, T->cap_v ? T->cap_v : 1, sizeof *T->w);

@@ -3,6 +3,7 @@
 
 #include "optimise.h"
 #include "geom/geom_internal.h"
+#include "geom/measure.h"
 
 /* Weight of the centroid term beside the containment penalty, and of the
  * weight regulariser (keeps weights near 0 where nothing asks for them). */
@@ -32,11 +33,6 @@ void cvm__dopt_point(const cvm__dopt_local *L, const double *u, double *p, doubl
     }
 }
 
-static double cross(const double *o, const double *a, const double *b)
-{
-    return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
-}
-
 static double sq(double x)
 {
     return x * x;
@@ -62,18 +58,10 @@ static int corners(const cvm__dopt_local *L, int32_t t, const double *p, double 
     return iv;
 }
 
+/* sin^2 of the smallest angle of q[0], q[1], q[2]; 0 unless counter-clockwise. */
 static double min_sin2(const double *const *q)
 {
-    double l2[3], c = cross(q[0], q[1], q[2]), m = HUGE_VAL;
-    int k;
-    for (k = 0; k < 3; k++)
-        l2[k] = sq(q[(k + 1) % 3][0] - q[(k + 2) % 3][0]) + sq(q[(k + 1) % 3][1] - q[(k + 2) % 3][1]);
-    for (k = 0; k < 3; k++) {
-        /* angle at corner k lies between the sides (k+1) and (k+2) */
-        double s = c * c / (l2[(k + 1) % 3] * l2[(k + 2) % 3]);
-        m = s < m ? s : m;
-    }
-    return c > 0 ? m : 0.0;
+    return cvm__cross2(q[0], q[1], q[2]) > 0 ? cvm__min_sin2_corners(q[0], q[1], q[2]) : 0.0;
 }
 
 double cvm__dopt_star_min_sin2(const cvm__dopt_local *L)
@@ -133,7 +121,7 @@ double cvm__dopt_eval_below(cvm__dopt_local *L, const double *u, double bound)
         for (k = 0; k < 3; k++) {
             const double *a = q[(k + 1) % 3], *b = q[(k + 2) % 3];
             double e2 = sq(b[0] - a[0]) + sq(b[1] - a[1]), len = sqrt(e2);
-            double s = cross(a, b, V) / len; /* > 0: V on the inner side of edge k */
+            double s = cvm__cross2(a, b, V) / len; /* > 0: V on the inner side of edge k */
             double d = L->margin * len - s;
             l2 += e2;
             if (d > 0)
@@ -153,7 +141,7 @@ double cvm__dopt_eval_below(cvm__dopt_local *L, const double *u, double bound)
             double Ma[2], Mb[2];
             cvm__power_foot2d(p, a, wv, wk[(iv + 1) % 3], Ma);
             cvm__power_foot2d(b, p, wk[(iv + 2) % 3], wv, Mb);
-            cell += 0.5 * (cross(p, Ma, V) + cross(p, V, Mb));
+            cell += 0.5 * (cvm__cross2(p, Ma, V) + cvm__cross2(p, V, Mb));
         }
     }
     if (!(cell > 0))
@@ -264,7 +252,7 @@ double cvm__dopt_eval_maxmin(cvm__dopt_local *L, const double *u, double *slack_
             return HUGE_VAL;
         for (k = 0; k < 3; k++) {
             const double *a = q[(k + 1) % 3], *b = q[(k + 2) % 3];
-            double s = cross(a, b, V) / (sq(b[0] - a[0]) + sq(b[1] - a[1]));
+            double s = cvm__cross2(a, b, V) / (sq(b[0] - a[0]) + sq(b[1] - a[1]));
             slack = s < slack ? s : slack;
         }
     }

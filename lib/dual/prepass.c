@@ -32,27 +32,12 @@
 
 #include "dual_internal.h"
 #include "delaunay/tri2_store.h"
+#include "geom/measure.h"
 
 #define PRE_SHORT 0.5
 #define PRE_LONG 1.5
 #define PRE_ROUNDS 2
 #define PRE_BAD_DEG 35.0 /* re-seed below min(this, the target angle) */
-
-static double dist2(const double *a, const double *b)
-{
-    return (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]);
-}
-
-/* sin^2 of the smallest angle of a, b, c (plain doubles). */
-static double min_sin2(const double *a, const double *b, const double *c)
-{
-    double ab = dist2(a, b), bc = dist2(b, c), ca = dist2(c, a);
-    double cr = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
-    double mn = ab < bc ? (ab < ca ? ab : ca) : (bc < ca ? bc : ca);
-    double pr = ab * bc * ca;
-    /* law of sines: sin^2 of the angle facing edge e is cr^2 e^2 / pr; the smallest faces mn */
-    return pr > 0 ? cr * cr * mn / pr : 0.0;
-}
 
 typedef struct pre {
     cvm__tri2 *T;
@@ -121,13 +106,13 @@ static int wants_removal(pre *P, int32_t v)
         int32_t a = T->tv[3 * (size_t)t + (size_t)(i + 1) % 3];
         int32_t b = T->tv[3 * (size_t)t + (size_t)(i + 2) % 3];
         const double *pa = T->xy + 2 * (size_t)a, *pb = T->xy + 2 * (size_t)b;
-        double ea = dist2(pv, pa), eb = dist2(pv, pb), ab = dist2(pa, pb);
+        double ea = cvm__dist2(pv, pa), eb = cvm__dist2(pv, pb), ab = cvm__dist2(pa, pb);
         double ha = PRE_SHORT * 0.5 * (P->h[v] + P->h[a]);
         if (P->pick[a])
             return 0; /* a neighbour goes already: keep v this round */
         if (ea < ha * ha)
             shortie = 1;
-        if (min_sin2(pv, pa, pb) < P->sin2_target && (ea <= ab || eb <= ab))
+        if (cvm__min_sin2(pv, pa, pb) < P->sin2_target && (ea <= ab || eb <= ab))
             bad = 1; /* v ends the shortest edge of a triangle below the target */
         sx += pa[0];
         sy += pa[1];
@@ -214,7 +199,7 @@ static cvm_status round_once(pre *P, size_t nv0, size_t *nrem, size_t *nadd)
                 (T->ta && T->ta[u] != T->ta[t]) || (size_t)a >= nv || (size_t)b >= nv)
                 continue;
             he = 0.5 * (P->h[a] + P->h[b]);
-            l2 = dist2(T->xy + 2 * (size_t)a, T->xy + 2 * (size_t)b);
+            l2 = cvm__dist2(T->xy + 2 * (size_t)a, T->xy + 2 * (size_t)b);
             if (!(he > 0) || l2 <= PRE_LONG * PRE_LONG * he * he)
                 continue;
             if (nmid + 1 > cap_mid) {
@@ -265,7 +250,7 @@ cvm_status cvm__dual_prepass(cvm__tri2 *T, const cvm__dual_opt_params *p, size_t
     P.T = T;
     P.p = p;
     P.sin2_target = sin((p->target_angle_deg < PRE_BAD_DEG ? p->target_angle_deg : PRE_BAD_DEG) *
-                        3.14159265358979323846 / 180.0);
+                        CVM__PI / 180.0);
     P.sin2_target *= P.sin2_target;
     for (r = 0; r < PRE_ROUNDS && !s; r++) {
         size_t nr = 0, na = 0;

@@ -25,6 +25,7 @@
 #include "dual_internal.h"
 #include "delaunay/tri2_store.h"
 #include "geom/geom_internal.h"
+#include "geom/measure.h"
 
 /* Index of v in triangle t. */
 int cvm__dual_removable(const cvm__tri2 *T, int32_t v, size_t *deg)
@@ -46,19 +47,6 @@ int cvm__dual_removable(const cvm__tri2 *T, int32_t v, size_t *deg)
     if (deg)
         *deg = n;
     return n >= 3;
-}
-
-/* sin^2 of the smallest angle of triangle a, b, c (plain doubles). */
-static double min_sin2(const double *a, const double *b, const double *c)
-{
-    double ab = (b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]);
-    double bc = (c[0] - b[0]) * (c[0] - b[0]) + (c[1] - b[1]) * (c[1] - b[1]);
-    double ca = (a[0] - c[0]) * (a[0] - c[0]) + (a[1] - c[1]) * (a[1] - c[1]);
-    double cr = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
-    double mn = ab < bc ? (ab < ca ? ab : ca) : (bc < ca ? bc : ca);
-    double pr = ab * bc * ca;
-    /* the smallest angle faces the shortest edge: sin^2 = cr^2 / (product of the two longer) */
-    return pr > 0 ? cr * cr * mn / pr : 0.0;
 }
 
 /* The 3-to-1 flip of v's three triangles. */
@@ -120,7 +108,7 @@ int cvm__dual_remove_vertex(cvm__tri2 *T, int32_t v, int32_t avoid)
             /* edge j of t is x-v; its flip makes a-x-b and b-v-a */
             if (cvm__orient2d(pa, px, pb) > 0 && cvm__orient2d(pb, pv, pa) > 0) {
                 int bad = a == avoid || b == avoid;
-                double q = min_sin2(pa, px, pb);
+                double q = cvm__min_sin2(pa, px, pb);
                 if (best_t < 0 || bad < best_bad || (bad == best_bad && q > best_q)) {
                     best_t = t;
                     best_j = j;

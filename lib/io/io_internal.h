@@ -153,6 +153,10 @@ typedef enum cvm__format {
 
 cvm__format cvm__format_of(const char *path);
 
+/* 1 when path is longer than ext and ends in ext (a ".xxx" in lower case),
+ * ignoring the case of path; else 0. */
+int cvm__path_has_ext(const char *path, const char *ext);
+
 /* A byte sink with atomic commit: the text goes to a new temporary file
  * PATH.tmp.XXXXXX beside PATH, which cvm__writer_commit() renames over PATH.
  * A replaced file's permissions (and owner, where allowed) carry over; a new

@@ -3,22 +3,6 @@
 
 #include "io_text.h"
 
-/* 1 if path ends in ext (a ".xxx" in lower case), ignoring case. */
-static int has_ext(const char *path, const char *ext)
-{
-    size_t n = strlen(path), k = strlen(ext), i;
-    if (n <= k)
-        return 0;
-    for (i = 0; i < k; i++) {
-        char c = path[n - k + i];
-        if (c >= 'A' && c <= 'Z')
-            c = (char)(c - 'A' + 'a');
-        if (c != ext[i])
-            return 0;
-    }
-    return 1;
-}
-
 static cvm_status read_one(cvm__ctx *ctx, const char *path, int is_poly,
                            const cvm__node_points *ext, cvm__pslg *p, int *base_out)
 {
@@ -77,9 +61,9 @@ cvm_status cvm__read_file(cvm__ctx *ctx, const char *path, cvm__pslg *p)
 {
     cvm_status s;
     memset(p, 0, sizeof *p);
-    if (has_ext(path, ".node"))
+    if (cvm__path_has_ext(path, ".node"))
         return read_one(ctx, path, 0, NULL, p, NULL);
-    if (!has_ext(path, ".poly"))
+    if (!cvm__path_has_ext(path, ".poly"))
         return cvm__error(ctx, CVM_E_UNSUPPORTED, CVM_ENT_NONE, -1,
                           "cannot read %s: unknown extension (expected .poly, .node or .vtu)", path);
     if ((s = read_one(ctx, path, 1, NULL, p, NULL)))

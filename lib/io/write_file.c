@@ -3,30 +3,15 @@
 
 #include "formats.h"
 
-static int ends_with(const char *path, const char *ext)
-{
-    size_t n = strlen(path), k = strlen(ext), i;
-    if (n <= k)
-        return 0;
-    for (i = 0; i < k; i++) {
-        char c = path[n - k + i];
-        if (c >= 'A' && c <= 'Z')
-            c = (char)(c - 'A' + 'a');
-        if (c != ext[i])
-            return 0;
-    }
-    return 1;
-}
-
 cvm__format cvm__format_of(const char *path)
 {
-    if (ends_with(path, ".vtu"))
+    if (cvm__path_has_ext(path, ".vtu"))
         return CVM__FMT_VTU;
-    if (ends_with(path, ".msh"))
+    if (cvm__path_has_ext(path, ".msh"))
         return CVM__FMT_MSH;
-    if (ends_with(path, ".node"))
+    if (cvm__path_has_ext(path, ".node"))
         return CVM__FMT_NODE;
-    if (ends_with(path, ".svg"))
+    if (cvm__path_has_ext(path, ".svg"))
         return CVM__FMT_SVG;
     return CVM__FMT_NONE;
 }

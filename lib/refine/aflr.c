@@ -61,6 +61,7 @@
 #include "refine_internal.h"
 #include "delaunay/tri2_store.h"
 #include "geom/geom_internal.h"
+#include "geom/measure.h"
 
 /* Good needs every edge shorter than this times the mean size at its ends. */
 #define AF_SIZE_BAD 1.5
@@ -82,7 +83,6 @@ enum { AF_OK = 0, AF_BIG = 1, AF_SKINNY = 2 };
 #define AF_INF INT32_MAX
 /* Sweeps that pass layers on to edges made after the fronts stopped. */
 #define AF_SWEEPS 64
-#define AF_PI 3.14159265358979323846
 /* Interleaved smoothing (CVM_OPT_AFLR_SMOOTH_LAYERS): relaxation and smart
  * (or max-min) sweeps per completed group of layers. */
 #define AF_SM_RELAX 2
@@ -104,7 +104,7 @@ typedef struct af_state {
     size_t cap_lo;
     unsigned char *front;      /* per segment id: starts a front */
     size_t nfront;
-    cvm__pgrid grid;
+    cvm__vertex_grid grid;
     size_t ngrid;              /* vertices 0..ngrid-1 are in the grid */
     double lmin0;              /* shortest domain edge when the pass started */
     /* interleaved smoothing, only with nsm > 0 (see af_layers_done) */
@@ -194,22 +194,21 @@ static int af_quality(cvm__refiner *R, int32_t t)
 {
     const int32_t *tv = R->T->tv + 3 * (size_t)t;
     const double *p[3];
-    double l[3], cross, sin2, lmin;
+    double l[3], cross, sin2;
     int k;
     for (k = 0; k < 3; k++)
         p[k] = af_pt(R, tv[k]);
     for (k = 0; k < 3; k++) {
         const double *a = p[af_n1[k]], *b = p[af_n2[k]];
         double ls = (R->vls[tv[af_n1[k]]] + R->vls[tv[af_n2[k]]]) / 2;
-        l[k] = (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]);
+        l[k] = cvm__dist2(a, b);
         if (isfinite(ls) && !(l[k] < AF_SIZE_BAD * AF_SIZE_BAD * ls * ls))
             return AF_BIG;
     }
-    cross = (p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[1][1] - p[0][1]) * (p[2][0] - p[0][0]);
+    cross = cvm__cross2(p[0], p[1], p[2]);
     if (cvm__rf_max_area(R, t) > 0 && cross / 2 > cvm__rf_max_area(R, t))
         return AF_BIG;
-    lmin = l[0] < l[1] ? (l[0] < l[2] ? l[0] : l[2]) : (l[1] < l[2] ? l[1] : l[2]);
-    sin2 = cross > 0 ? lmin * cross * cross / (l[0] * l[1] * l[2]) : 0.0;
+    sin2 = cross > 0 ? cvm__min_sin2_sides(l[0], l[1], l[2], cross) : 0.0;
     if (sin2 >= R->sin2_min && cross > 0)
         return AF_OK;
     return cvm__rf_classify(R, t, &sin2) == 3 ? AF_OK : AF_SKINNY;
@@ -340,7 +339,7 @@ static cvm_status af_new_vertex(cvm__refiner *R, int32_t v, int32_t base_layer)
     if (n == 0 || (n > A->cap_lo && cvm__grow(R->ctx, (void **)&A->lo, &A->cap_lo, n, sizeof *A->lo)))
         return cvm__nomem(R->ctx);
     for (; A->ngrid <= (size_t)v; A->ngrid++)
-        if (cvm__pgrid_add(&A->grid, (int32_t)A->ngrid, af_pt(R, (int32_t)A->ngrid)))
+        if (cvm__vertex_grid_add(&A->grid, (int32_t)A->ngrid, af_pt(R, (int32_t)A->ngrid)))
             return cvm__nomem(R->ctx);
     if (A->nsm) {
         if (af_grow_fill(R->ctx, &A->vlay, &A->cap_vlay, (size_t)v + 1, AF_INF))
@@ -422,7 +421,7 @@ static int af_candidates(cvm__refiner *R, int32_t t, int j, const double *m, con
     if (dc > 0)
         cand[n++] = dc;
     if (R->p->min_angle_deg >= AF_SHAPE_MIN_DEG)
-        cand[n++] = le / (2 * tan(R->p->min_angle_deg * AF_PI / 360.0));
+        cand[n++] = le / (2 * tan(R->p->min_angle_deg * CVM__PI / 360.0));
     if (isfinite(h) && h > le / 2)
         cand[n++] = sqrt(h * h - le * le / 4);
     /* sort (n <= 4) and keep those inside the circumcircle */
@@ -455,15 +454,11 @@ static int af_point(cvm__refiner *R, int32_t t, int j, double *x)
     nrm[1] = (q[0] - p[0]) / le;
     n = af_candidates(R, t, j, m, nrm, le, d);
     r = AF_PROX * le;
-    /* A relative change below 1e-9, deterministic in the vertex count (as in
-     * frontal.c), keeps the points off an exact lattice: lattice points are
-     * cocircular in many fours, which sends the in-circle tests of the
-     * insertion to their slow exact stages. */
-    jit = 1 + 1e-9 * ((double)(((uint32_t)R->T->nv * 2654435761u) % 2048u) / 1024.0 - 1.0);
+    jit = cvm__rf_lattice_jitter(R->T->nv);
     for (k = 0; k < n; k++) {
         x[0] = m[0] + d[k] * jit * nrm[0];
         x[1] = m[1] + d[k] * jit * nrm[1];
-        if (!cvm__pgrid_any_within(&A->grid, R->T->xy, x, r))
+        if (!cvm__vertex_grid_any_within(&A->grid, R->T->xy, x, r))
             return 1;
     }
     return 0;
@@ -563,7 +558,7 @@ static cvm_status af_smooth_group(cvm__refiner *R, int32_t lo, int32_t hi)
         int m = x[0] != o[0] || x[1] != o[1];
         A->mask[w] = (uint8_t)m;
         if (m && (size_t)w < A->ngrid)
-            cvm__pgrid_move(&A->grid, w, o, x);
+            cvm__vertex_grid_move(&A->grid, w, o, x);
         if (m)
             A->list[moved++] = w;
     }
@@ -675,11 +670,11 @@ static cvm_status af_setup(cvm__refiner *R)
             A->lmin0 = l < A->lmin0 ? l : A->lmin0;
         }
     }
-    if (cvm__pgrid_init(&A->grid, R->ctx, x0, y0, x1, y1, cs, 4 * T->nv + (1u << 20)))
+    if (cvm__vertex_grid_init(&A->grid, R->ctx, x0, y0, x1, y1, cs, 4 * T->nv + (1u << 20)))
         return cvm__nomem(R->ctx);
     for (; A->ngrid < T->nv; A->ngrid++)
         if (T->vtri[A->ngrid] >= 0 &&
-            cvm__pgrid_add(&A->grid, (int32_t)A->ngrid, af_pt(R, (int32_t)A->ngrid)))
+            cvm__vertex_grid_add(&A->grid, (int32_t)A->ngrid, af_pt(R, (int32_t)A->ngrid)))
             return cvm__nomem(R->ctx);
     return CVM_OK;
 }
@@ -689,7 +684,7 @@ void cvm__rf_aflr_free(cvm__refiner *R)
     af_state *A = R->aflr;
     if (!A)
         return;
-    cvm__pgrid_destroy(&A->grid);
+    cvm__vertex_grid_destroy(&A->grid);
     cvm__free(R->ctx, A->sl);
     cvm__free(R->ctx, A->sv);
     cvm__free(R->ctx, A->sq);

@@ -3,6 +3,7 @@
 
 #include "refine_internal.h"
 #include "geom/geom_internal.h"
+#include "geom/measure.h"
 
 /* Size test of Delaunay refinement: a triangle is too big when its
  * circumradius exceeds the mean size at its three vertices times this. */
@@ -122,10 +123,10 @@ static int dr_classify(cvm__refiner *R, int32_t t, double *key_out, double *lmin
     const double *p0 = dr_pt(R, tv[0]), *p1 = dr_pt(R, tv[1]), *p2 = dr_pt(R, tv[2]);
     double l[3], cross, lmin, r2, ls, sin2;
     int jmin = 0, k;
-    l[0] = (p1[0] - p2[0]) * (p1[0] - p2[0]) + (p1[1] - p2[1]) * (p1[1] - p2[1]);
-    l[1] = (p2[0] - p0[0]) * (p2[0] - p0[0]) + (p2[1] - p0[1]) * (p2[1] - p0[1]);
-    l[2] = (p0[0] - p1[0]) * (p0[0] - p1[0]) + (p0[1] - p1[1]) * (p0[1] - p1[1]);
-    cross = (p1[0] - p0[0]) * (p2[1] - p0[1]) - (p1[1] - p0[1]) * (p2[0] - p0[0]);
+    l[0] = cvm__dist2(p1, p2);
+    l[1] = cvm__dist2(p2, p0);
+    l[2] = cvm__dist2(p0, p1);
+    cross = cvm__cross2(p0, p1, p2);
     for (k = 1; k < 3; k++)
         if (l[k] < l[jmin])
             jmin = k;
@@ -136,7 +137,7 @@ static int dr_classify(cvm__refiner *R, int32_t t, double *key_out, double *lmin
         *key_out = 0;
         return dr_exempt(R, tv[(jmin + 1) % 3], tv[(jmin + 2) % 3]) ? 3 : 2;
     }
-    r2 = l[0] * l[1] * l[2] / (4 * cross * cross);
+    r2 = cvm__circumradius2_sides(l[0], l[1], l[2], cross);
     ls = (R->vls[tv[0]] + R->vls[tv[1]] + R->vls[tv[2]]) / 3 * DR_SIZE_FACTOR;
     {
         double ratio = isfinite(ls) ? r2 / (ls * ls * R->size2) : 0;
@@ -148,7 +149,7 @@ static int dr_classify(cvm__refiner *R, int32_t t, double *key_out, double *lmin
             return 1;
         }
     }
-    sin2 = lmin * cross * cross / (l[0] * l[1] * l[2]);
+    sin2 = cvm__min_sin2_sides(l[0], l[1], l[2], cross);
     *key_out = sin2;
     if (sin2 >= R->sin2_min)
         return 0;

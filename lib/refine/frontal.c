@@ -9,6 +9,7 @@
 
 #include "refine_internal.h"
 #include "geom/geom_internal.h"
+#include "geom/measure.h"
 
 /* Accepted (Rebay's "small enough"): circumradius at most sqrt(this) times
  * the local size (CVM__FRONTAL_ACCEPT2, refine_internal.h). */
@@ -42,19 +43,18 @@ static void fr_measure(const cvm__refiner *R, int32_t t, double *ratio, double *
 {
     const int32_t *tv = R->T->tv + 3 * (size_t)t;
     const double *p0 = fr_pt(R, tv[0]), *p1 = fr_pt(R, tv[1]), *p2 = fr_pt(R, tv[2]);
-    double l0, l1, l2, cross, lmin, ls;
-    l0 = (p1[0] - p2[0]) * (p1[0] - p2[0]) + (p1[1] - p2[1]) * (p1[1] - p2[1]);
-    l1 = (p2[0] - p0[0]) * (p2[0] - p0[0]) + (p2[1] - p0[1]) * (p2[1] - p0[1]);
-    l2 = (p0[0] - p1[0]) * (p0[0] - p1[0]) + (p0[1] - p1[1]) * (p0[1] - p1[1]);
-    cross = (p1[0] - p0[0]) * (p2[1] - p0[1]) - (p1[1] - p0[1]) * (p2[0] - p0[0]);
+    double l0, l1, l2, cross, ls;
+    l0 = cvm__dist2(p1, p2);
+    l1 = cvm__dist2(p2, p0);
+    l2 = cvm__dist2(p0, p1);
+    cross = cvm__cross2(p0, p1, p2);
     ls = (fr_size(R, tv[0]) + fr_size(R, tv[1]) + fr_size(R, tv[2])) / 3;
     if (!(cross > 0)) {
         *sin2 = 0;
         *ratio = isfinite(ls) ? HUGE_VAL : 0;
         return;
     }
-    lmin = l0 < l1 ? (l0 < l2 ? l0 : l2) : (l1 < l2 ? l1 : l2);
-    *sin2 = lmin * cross * cross / (l0 * l1 * l2);
+    *sin2 = cvm__min_sin2_sides(l0, l1, l2, cross);
     *ratio = isfinite(ls) ? l0 * l1 * l2 / (4 * cross * cross * ls * ls) : 0;
 }
 
@@ -313,11 +313,7 @@ static int fr_point(const cvm__refiner *R, int32_t t, int jf, double *x)
     d = rho + sqrt(rho * rho > p * p ? rho * rho - p * p : 0);
     if (d > q + 0.5 * sqrt(p * p + q * q))
         d = q + 0.5 * sqrt(p * p + q * q);
-    /* A relative change below 1e-9, deterministic in the vertex count, keeps
-     * the frontal points off an exact lattice: lattice points are cocircular
-     * in many fours, which sends the in-circle tests of the insertion to their
-     * slow exact stages. */
-    d *= 1 + 1e-9 * ((double)(((uint32_t)R->T->nv * 2654435761u) % 2048u) / 1024.0 - 1.0);
+    d *= cvm__rf_lattice_jitter(R->T->nv);
     x[0] = m[0] + d * nx;
     x[1] = m[1] + d * ny;
     return q > 0;

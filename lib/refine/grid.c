@@ -3,7 +3,7 @@
 
 #include "refine_internal.h"
 
-void cvm__ugrid_fit(cvm__ugrid *g, double xmin, double ymin, double xmax, double ymax, size_t n)
+void cvm__cell_grid_fit(cvm__cell_grid *g, double xmin, double ymin, double xmax, double ymax, size_t n)
 {
     double w = xmax - xmin, h = ymax - ymin;
     if (!(w >= 0) || !(h >= 0)) {
@@ -22,7 +22,7 @@ void cvm__ugrid_fit(cvm__ugrid *g, double xmin, double ymin, double xmax, double
     g->y0 = ymin;
 }
 
-void cvm__ugrid_cell(const cvm__ugrid *g, double x, double y, int *i, int *j)
+void cvm__cell_grid_cell(const cvm__cell_grid *g, double x, double y, int *i, int *j)
 {
     double fx = floor((x - g->x0) / g->cs), fy = floor((y - g->y0) / g->cs);
     *i = fx < 0 ? 0 : fx >= g->nx ? g->nx - 1 : (int)fx;

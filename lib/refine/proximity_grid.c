@@ -3,7 +3,7 @@
 
 #include "refine_internal.h"
 
-cvm_status cvm__pgrid_init(cvm__pgrid *g, cvm__ctx *ctx, double x0, double y0, double x1,
+cvm_status cvm__vertex_grid_init(cvm__vertex_grid *g, cvm__ctx *ctx, double x0, double y0, double x1,
                            double y1, double cs, size_t max_cells)
 {
     double w = x1 - x0, h = y1 - y0, nx, ny;
@@ -36,7 +36,7 @@ cvm_status cvm__pgrid_init(cvm__pgrid *g, cvm__ctx *ctx, double x0, double y0, d
     return CVM_OK;
 }
 
-void cvm__pgrid_destroy(cvm__pgrid *g)
+void cvm__vertex_grid_destroy(cvm__vertex_grid *g)
 {
     if (!g->ctx)
         return; /* never initialised */
@@ -55,7 +55,7 @@ static int32_t pg_cell(double x, double x0, double inv, int32_t n)
     return c >= n - 1 ? n - 1 : (int32_t)c;
 }
 
-cvm_status cvm__pgrid_add(cvm__pgrid *g, int32_t v, const double *p)
+cvm_status cvm__vertex_grid_add(cvm__vertex_grid *g, int32_t v, const double *p)
 {
     size_t c;
     if ((size_t)v >= g->cap_next &&
@@ -68,7 +68,7 @@ cvm_status cvm__pgrid_add(cvm__pgrid *g, int32_t v, const double *p)
     return CVM_OK;
 }
 
-void cvm__pgrid_move(cvm__pgrid *g, int32_t v, const double *old, const double *p)
+void cvm__vertex_grid_move(cvm__vertex_grid *g, int32_t v, const double *old, const double *p)
 {
     size_t c0 = (size_t)pg_cell(old[1], g->y0, g->inv, g->ny) * (size_t)g->nx +
                 (size_t)pg_cell(old[0], g->x0, g->inv, g->nx);
@@ -86,7 +86,7 @@ void cvm__pgrid_move(cvm__pgrid *g, int32_t v, const double *old, const double *
     g->head[c1] = v;
 }
 
-int cvm__pgrid_any_within(const cvm__pgrid *g, const double *xy, const double *x, double r)
+int cvm__vertex_grid_any_within(const cvm__vertex_grid *g, const double *xy, const double *x, double r)
 {
     int32_t i0 = pg_cell(x[0] - r, g->x0, g->inv, g->nx), i1 = pg_cell(x[0] + r, g->x0, g->inv, g->nx);
     int32_t j0 = pg_cell(x[1] - r, g->y0, g->inv, g->ny), j1 = pg_cell(x[1] + r, g->y0, g->inv, g->ny);

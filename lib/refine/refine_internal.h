@@ -34,17 +34,20 @@ typedef struct cvm__line_source {
     double x0, y0, x1, y1, h, growth;
 } cvm__line_source;
 
-/* A uniform grid of square cells over a box (grid.c). */
-typedef struct cvm__ugrid {
+/* The layout of a uniform grid of square cells over a box (grid.c): origin,
+ * cell side and counts only. Its users (the automatic and background sizing
+ * fields) bucket static items into its cells themselves, in offset arrays
+ * built once; compare cvm__vertex_grid, which stores a changing vertex set. */
+typedef struct cvm__cell_grid {
     double x0, y0, cs;    /* origin and cell side */
     int nx, ny;
-} cvm__ugrid;
+} cvm__cell_grid;
 
 /* Fit about n cells (at least 1, at most 2048 a side) over the box
  * [xmin, xmax] x [ymin, ymax]; a flat or empty box still gets cells. */
-void cvm__ugrid_fit(cvm__ugrid *g, double xmin, double ymin, double xmax, double ymax, size_t n);
+void cvm__cell_grid_fit(cvm__cell_grid *g, double xmin, double ymin, double xmax, double ymax, size_t n);
 /* Cell (i, j) of (x, y), clamped into the grid. */
-void cvm__ugrid_cell(const cvm__ugrid *g, double x, double y, int *i, int *j);
+void cvm__cell_grid_cell(const cvm__cell_grid *g, double x, double y, int *i, int *j);
 
 /* The automatic length scale (sizing_auto.c), built per refinement from the
  * domain: samples (x, y, LS) on the boundary in a uniform grid; the size at a
@@ -53,7 +56,7 @@ typedef struct cvm__auto_field {
     double *smp;          /* 3 per sample: x, y, LS */
     size_t ns;
     double G, ls_min;
-    cvm__ugrid g;
+    cvm__cell_grid g;
     int32_t *start;       /* g.nx * g.ny + 1 offsets into items */
     int32_t *items;       /* sample indices by cell */
     double *cmin;         /* least LS per cell */
@@ -65,7 +68,7 @@ typedef struct cvm__background {
     double *xy, *h;       /* 2 and 1 per node */
     int32_t *tri;         /* 3 per triangle, counter-clockwise */
     size_t np, nt;
-    cvm__ugrid g;         /* grid of triangles by bounding box */
+    cvm__cell_grid g;         /* grid of triangles by bounding box */
     int32_t *start, *items;
 } cvm__background;
 
@@ -233,6 +236,22 @@ typedef struct cvm__refine_report {
                                   triangulation's ctx and owned by the caller; else NULL */
 } cvm__refine_report;
 
+/* A factor within 1e-9 of 1 that the frontal and advancing-front refiners
+ * apply to the distance of a new point: deterministic in the vertex count nv,
+ * it keeps the points off an exact lattice (lattice points are cocircular in
+ * many fours, which sends the insertion's in-circle tests to their slow exact
+ * stages). nv is spread by Knuth's multiplicative hash (2^32 / golden ratio)
+ * over CVM__RF_JITTER_STEPS steps in [1 - CVM__RF_JITTER_REL, 1 + ...). */
+#define CVM__RF_JITTER_HASH 2654435761u
+#define CVM__RF_JITTER_STEPS 2048u
+#define CVM__RF_JITTER_REL 1e-9
+static inline double cvm__rf_lattice_jitter(size_t nv)
+{
+    uint32_t h = (uint32_t)nv * CVM__RF_JITTER_HASH;
+    return 1 + CVM__RF_JITTER_REL *
+                   ((double)(h % CVM__RF_JITTER_STEPS) / (CVM__RF_JITTER_STEPS / 2) - 1.0);
+}
+
 /* Largest area allowed for triangle t: CVM_OPT_MAX_AREA and its region's
  * maximum area, the smaller of those set; 0 = none. */
 #define cvm__rf_max_area(R, t) cvm__rf_max_area_((R)->p, (R)->T, (t))
@@ -387,32 +406,33 @@ cvm_status cvm__rf_aflr_cell_layers(cvm__refiner *R, double **out);
 /* Free R->aflr (NULL is fine). */
 void cvm__rf_aflr_free(cvm__refiner *R);
 
-/* A uniform grid of vertices for proximity queries (proximity_grid.c). */
-typedef struct cvm__pgrid {
+/* A uniform grid that stores vertices (proximity_grid.c): per-cell linked
+ * lists that grow and move with the mesh (cvm__vertex_grid_add / _move), for
+ * "any vertex closer than r" queries during advancing-front refinement.
+ * Unlike cvm__cell_grid it owns its storage. */
+typedef struct cvm__vertex_grid {
     cvm__ctx *ctx;
     double x0, y0, inv;        /* origin and 1 / cell size */
     int32_t nx, ny;
     int32_t *head;             /* nx*ny: first vertex of each cell, -1 */
     int32_t *next;             /* per vertex: next vertex of its cell, -1 */
     size_t cap_next;
-} cvm__pgrid;
+} cvm__vertex_grid;
 
 /* Grid over the box [x0, x1] x [y0, y1] with cells of about size cs (coarser
  * when that would need more than max_cells cells). CVM_OK or CVM_E_NOMEM. */
-cvm_status cvm__pgrid_init(cvm__pgrid *g, cvm__ctx *ctx, double x0, double y0, double x1,
+cvm_status cvm__vertex_grid_init(cvm__vertex_grid *g, cvm__ctx *ctx, double x0, double y0, double x1,
                            double y1, double cs, size_t max_cells);
-void cvm__pgrid_destroy(cvm__pgrid *g);
+void cvm__vertex_grid_destroy(cvm__vertex_grid *g);
 /* Add vertex v at p (points outside the box go to the nearest cell). CVM_OK or CVM_E_NOMEM. */
-cvm_status cvm__pgrid_add(cvm__pgrid *g, int32_t v, const double *p);
+cvm_status cvm__vertex_grid_add(cvm__vertex_grid *g, int32_t v, const double *p);
 /* Vertex v of the grid, added at old, now lies at p: moved to p's cell. */
-void cvm__pgrid_move(cvm__pgrid *g, int32_t v, const double *old, const double *p);
+void cvm__vertex_grid_move(cvm__vertex_grid *g, int32_t v, const double *old, const double *p);
 /* 1 when some vertex of the grid lies strictly closer than r to x (xy: all coordinates). */
-int cvm__pgrid_any_within(const cvm__pgrid *g, const double *xy, const double *x, double r);
+int cvm__vertex_grid_any_within(const cvm__vertex_grid *g, const double *xy, const double *x, double r);
 
 /* ---- post-processing (swap.c, smooth.c) ---- */
 
-/* sin^2 of the smallest angle of triangle (p, q, r); 0 unless counter-clockwise. */
-double cvm__rf_min_sin2(const double *p, const double *q, const double *r);
 /* Sweeps of edge flips (triangle index order) towards the ideal vertex degree
  * (6 inside; round(boundary angle / 60 degrees) + 1 on the boundary): an
  * unconstrained edge between two domain triangles whose quadrilateral is

@@ -4,6 +4,7 @@
 
 #include "refine_internal.h"
 #include "geom/geom_internal.h"
+#include "geom/measure.h"
 
 size_t cvm__rf_star(cvm__refiner *R, int32_t v)
 {
@@ -89,7 +90,7 @@ static cvm_status rf_constrain_hull(cvm__refiner *R)
 static cvm_status rf_setup(cvm__refiner *R, cvm__tri2 *T, const cvm__refine_params *p)
 {
     size_t v, t;
-    double th = p->min_angle_deg * 3.14159265358979323846 / 180.0;
+    double th = p->min_angle_deg * CVM__PI / 180.0;
     cvm_status s;
     memset(R, 0, sizeof *R);
     R->T = T;
@@ -154,7 +155,7 @@ static double rf_min_angle_deg(const cvm__tri2 *T, int32_t t)
     for (k = 0; k < 3; k++) {
         const double *a = T->xy + 2 * (size_t)tv[(k + 1) % 3];
         const double *b = T->xy + 2 * (size_t)tv[(k + 2) % 3];
-        l[k] = (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]);
+        l[k] = cvm__dist2(a, b);
         if (l[k] < l[m])
             m = k;
     }
@@ -162,8 +163,7 @@ static double rf_min_angle_deg(const cvm__tri2 *T, int32_t t)
         const double *o = T->xy + 2 * (size_t)tv[m];
         const double *a = T->xy + 2 * (size_t)tv[(m + 1) % 3];
         const double *b = T->xy + 2 * (size_t)tv[(m + 2) % 3];
-        double ux = a[0] - o[0], uy = a[1] - o[1], wx = b[0] - o[0], wy = b[1] - o[1];
-        return atan2(fabs(ux * wy - uy * wx), ux * wx + uy * wy) * 180.0 / 3.14159265358979323846;
+        return cvm__corner_angle(o, a, b) * 180.0 / CVM__PI;
     }
 }
 
@@ -213,7 +213,7 @@ static cvm_status rf_report(cvm__refiner *R, cvm__refine_report *rep)
              * three arc tangents only for triangles that may hold the
              * minimum (the slack covers the rounding of the sine) */
             const int32_t *tv = T->tv + 3 * t;
-            double s2 = cvm__rf_min_sin2(T->xy + 2 * (size_t)tv[0], T->xy + 2 * (size_t)tv[1],
+            double s2 = cvm__min_sin2_ccw(T->xy + 2 * (size_t)tv[0], T->xy + 2 * (size_t)tv[1],
                                          T->xy + 2 * (size_t)tv[2]);
             if (s2 <= best_sin2 * (1 + 1e-6)) {
                 double a = rf_min_angle_deg(T, (int32_t)t);

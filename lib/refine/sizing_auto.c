@@ -35,16 +35,17 @@
 #include <string.h>
 
 #include "refine_internal.h"
+#include "geom/measure.h"
 
-#define AF_CHAIN_TURN (3.14159265358979323846 / 3.0) /* 60 degrees */
-#define AF_SMOOTH_TURN (3.14159265358979323846 / 6.0) /* 30 degrees */
-#define AF_MAX_DEPTH 24
+#define AUTO_CHAIN_TURN (CVM__PI / 3.0) /* 60 degrees */
+#define AUTO_SMOOTH_TURN (CVM__PI / 6.0) /* 30 degrees */
+#define AUTO_MAX_DEPTH 24
 #define CELLS_PER_SAMPLE 4 /* grid cells per sample (ring searches visit few samples) */
 
 
-#define AF_MAX_CHAIN_STEPS 100000
+#define AUTO_MAX_CHAIN_STEPS 100000
 
-typedef struct af_build {
+typedef struct auto_build {
     cvm__ctx *ctx;
     const double *xy;
     /* features: edge k joins fe[2k], fe[2k+1] (equal for a point feature) */
@@ -54,7 +55,7 @@ typedef struct af_build {
     int32_t *vstart, *vedges;
     double *curv;          /* radius of curvature per vertex (+inf: none) */
     /* feature grid */
-    cvm__ugrid g;
+    cvm__cell_grid g;
     int32_t *gstart, *gitems;
     /* stamps */
     uint32_t *excl, *seen;
@@ -62,14 +63,14 @@ typedef struct af_build {
     /* samples, 3 doubles each: x, y, LS */
     double *smp;
     size_t ns, cap_smp;
-} af_build;
+} auto_build;
 
-static const double *af_pt(const af_build *B, int32_t v)
+static const double *auto_pt(const auto_build *B, int32_t v)
 {
     return B->xy + 2 * (size_t)v;
 }
 
-static double af_dist_seg(const double *p, const double *a, const double *b)
+static double auto_dist_seg(const double *p, const double *a, const double *b)
 {
     double dx = b[0] - a[0], dy = b[1] - a[1], len2 = dx * dx + dy * dy, t = 0;
     if (len2 > 0) {
@@ -79,7 +80,7 @@ static double af_dist_seg(const double *p, const double *a, const double *b)
     return hypot(a[0] + t * dx - p[0], a[1] + t * dy - p[1]);
 }
 
-static cvm_status af_add_edge(af_build *B, int32_t a, int32_t b)
+static cvm_status auto_add_edge(auto_build *B, int32_t a, int32_t b)
 {
     if (cvm__grow(B->ctx, (void **)&B->fe, &B->cap_fe, 2 * (B->nfe + 1), sizeof *B->fe))
         return CVM_E_NOMEM;
@@ -90,7 +91,7 @@ static cvm_status af_add_edge(af_build *B, int32_t a, int32_t b)
 }
 
 /* Domain boundary and constrained edges, once each; then free input points. */
-static cvm_status af_collect(af_build *B, const cvm__tri2 *T, const uint8_t *is_input)
+static cvm_status auto_collect(auto_build *B, const cvm__tri2 *T, const uint8_t *is_input)
 {
     size_t t;
     uint8_t *used;
@@ -104,7 +105,7 @@ static cvm_status af_collect(af_build *B, const cvm__tri2 *T, const uint8_t *is_
             int con = T->te && T->te[3 * t + (size_t)j] >= 0;
             if (nin && (!con || (size_t)n < t))
                 continue;
-            if (af_add_edge(B, T->tv[3 * t + (size_t)(j + 1) % 3],
+            if (auto_add_edge(B, T->tv[3 * t + (size_t)(j + 1) % 3],
                             T->tv[3 * t + (size_t)(j + 2) % 3]))
                 return CVM_E_NOMEM;
         }
@@ -123,7 +124,7 @@ static cvm_status af_collect(af_build *B, const cvm__tri2 *T, const uint8_t *is_
             if (used[u] || (is_input && !is_input[u]))
                 continue;
             used[u] = 1;
-            if (af_add_edge(B, u, u)) {
+            if (auto_add_edge(B, u, u)) {
                 cvm__free(B->ctx, used);
                 return CVM_E_NOMEM;
             }
@@ -134,7 +135,7 @@ static cvm_status af_collect(af_build *B, const cvm__tri2 *T, const uint8_t *is_
 }
 
 /* Incident edges per vertex (point features excluded) and curvature radii. */
-static cvm_status af_adjacency(af_build *B, size_t nv)
+static cvm_status auto_adjacency(auto_build *B, size_t nv)
 {
     size_t k, v;
     B->vstart = cvm__malloc(B->ctx, (nv + 1) * sizeof *B->vstart);
@@ -168,10 +169,10 @@ static cvm_status af_adjacency(af_build *B, size_t nv)
             int32_t e0 = B->vedges[B->vstart[v]], e1 = B->vedges[B->vstart[v] + 1];
             int32_t a = B->fe[2 * e0] == (int32_t)v ? B->fe[2 * e0 + 1] : B->fe[2 * e0];
             int32_t c = B->fe[2 * e1] == (int32_t)v ? B->fe[2 * e1 + 1] : B->fe[2 * e1];
-            const double *pa = af_pt(B, a), *pv = af_pt(B, (int32_t)v), *pc = af_pt(B, c);
+            const double *pa = auto_pt(B, a), *pv = auto_pt(B, (int32_t)v), *pc = auto_pt(B, c);
             double ux = pv[0] - pa[0], uy = pv[1] - pa[1], wx = pc[0] - pv[0], wy = pc[1] - pv[1];
-            double th = atan2(fabs(ux * wy - uy * wx), ux * wx + uy * wy);
-            if (th > 0 && th <= AF_SMOOTH_TURN)
+            double th = cvm__vec_angle(ux, uy, wx, wy);
+            if (th > 0 && th <= AUTO_SMOOTH_TURN)
                 B->curv[v] = (hypot(ux, uy) + hypot(wx, wy)) / (2 * th);
         }
     }
@@ -180,19 +181,19 @@ static cvm_status af_adjacency(af_build *B, size_t nv)
 
 /* Visit the cells an edge meets (their circumscribed circle touches it):
  * count them (pos NULL) or append the edge to them. */
-static void af_grid_edge(af_build *B, size_t k, int32_t *pos)
+static void auto_grid_edge(auto_build *B, size_t k, int32_t *pos)
 {
-    const double *a = af_pt(B, B->fe[2 * k]), *b = af_pt(B, B->fe[2 * k + 1]);
+    const double *a = auto_pt(B, B->fe[2 * k]), *b = auto_pt(B, B->fe[2 * k + 1]);
     int i0, j0, i1, j1, i, j;
-    cvm__ugrid_cell(&B->g, fmin(a[0], b[0]), fmin(a[1], b[1]), &i0, &j0);
-    cvm__ugrid_cell(&B->g, fmax(a[0], b[0]), fmax(a[1], b[1]), &i1, &j1);
+    cvm__cell_grid_cell(&B->g, fmin(a[0], b[0]), fmin(a[1], b[1]), &i0, &j0);
+    cvm__cell_grid_cell(&B->g, fmax(a[0], b[0]), fmax(a[1], b[1]), &i1, &j1);
     for (j = j0; j <= j1; j++)
         for (i = i0; i <= i1; i++) {
             size_t c = (size_t)j * (size_t)B->g.nx + (size_t)i;
             double m[2];
             m[0] = B->g.x0 + (i + 0.5) * B->g.cs;
             m[1] = B->g.y0 + (j + 0.5) * B->g.cs;
-            if (af_dist_seg(m, a, b) > 0.7072 * B->g.cs)
+            if (auto_dist_seg(m, a, b) > 0.7072 * B->g.cs)
                 continue;
             if (pos)
                 B->gitems[pos[c]++] = (int32_t)k;
@@ -202,19 +203,19 @@ static void af_grid_edge(af_build *B, size_t k, int32_t *pos)
 }
 
 /* Grid of features over their bounding box, about one edge per cell. */
-static cvm_status af_grid(af_build *B)
+static cvm_status auto_grid(auto_build *B)
 {
     double xmin = HUGE_VAL, ymin = HUGE_VAL, xmax = -HUGE_VAL, ymax = -HUGE_VAL;
     size_t k, ncell;
     int32_t *pos;
     for (k = 0; k < 2 * B->nfe; k++) {
-        const double *p = af_pt(B, B->fe[k]);
+        const double *p = auto_pt(B, B->fe[k]);
         xmin = fmin(xmin, p[0]);
         xmax = fmax(xmax, p[0]);
         ymin = fmin(ymin, p[1]);
         ymax = fmax(ymax, p[1]);
     }
-    cvm__ugrid_fit(&B->g, xmin, ymin, xmax, ymax, B->nfe);
+    cvm__cell_grid_fit(&B->g, xmin, ymin, xmax, ymax, B->nfe);
     ncell = (size_t)B->g.nx * (size_t)B->g.ny;
     B->gstart = cvm__malloc(B->ctx, (ncell + 1) * sizeof *B->gstart);
     B->excl = cvm__malloc(B->ctx, (B->nfe + 1) * sizeof *B->excl);
@@ -225,7 +226,7 @@ static cvm_status af_grid(af_build *B)
     memset(B->seen, 0, (B->nfe + 1) * sizeof *B->seen);
     memset(B->gstart, 0, (ncell + 1) * sizeof *B->gstart);
     for (k = 0; k < B->nfe; k++)
-        af_grid_edge(B, k, NULL);
+        auto_grid_edge(B, k, NULL);
     for (k = 0; k < ncell; k++)
         B->gstart[k + 1] += B->gstart[k];
     B->gitems = cvm__malloc(B->ctx, ((size_t)B->gstart[ncell] + 1) * sizeof *B->gitems);
@@ -236,13 +237,13 @@ static cvm_status af_grid(af_build *B)
     }
     memcpy(pos, B->gstart, (ncell + 1) * sizeof *pos);
     for (k = 0; k < B->nfe; k++)
-        af_grid_edge(B, k, pos);
+        auto_grid_edge(B, k, pos);
     cvm__free(B->ctx, pos);
     return CVM_OK;
 }
 
 /* Next exclusion stamp (a fresh empty set). */
-static void af_excl_new(af_build *B)
+static void auto_excl_new(auto_build *B)
 {
     if (++B->excl_stamp == 0) {
         memset(B->excl, 0, (B->nfe + 1) * sizeof *B->excl);
@@ -250,28 +251,27 @@ static void af_excl_new(af_build *B)
     }
 }
 
-static int32_t af_other(const af_build *B, int32_t e, int32_t v)
+static int32_t auto_other(const auto_build *B, int32_t e, int32_t v)
 {
     return B->fe[2 * e] == v ? B->fe[2 * e + 1] : B->fe[2 * e];
 }
 
 /* Exclude the edges of the smooth chain beyond vertex u, arriving along edge e
  * (from the other end of e): while u has degree 2 and the chain has turned by
- * less than AF_CHAIN_TURN in total. */
-static void af_excl_chain(af_build *B, int32_t e, int32_t u)
+ * less than AUTO_CHAIN_TURN in total. */
+static void auto_excl_chain(auto_build *B, int32_t e, int32_t u)
 {
     double acc = 0;
     int steps = 0;
-    int32_t from = af_other(B, e, u);
-    while (B->vstart[u + 1] - B->vstart[u] == 2 && steps++ < AF_MAX_CHAIN_STEPS) {
+    int32_t from = auto_other(B, e, u);
+    while (B->vstart[u + 1] - B->vstart[u] == 2 && steps++ < AUTO_MAX_CHAIN_STEPS) {
         int32_t f = B->vedges[B->vstart[u]] == e ? B->vedges[B->vstart[u] + 1] : B->vedges[B->vstart[u]];
-        int32_t next = af_other(B, f, u);
-        const double *pa = af_pt(B, from), *pu = af_pt(B, u), *pn = af_pt(B, next);
-        double ux = pu[0] - pa[0], uy = pu[1] - pa[1], wx = pn[0] - pu[0], wy = pn[1] - pu[1];
+        int32_t next = auto_other(B, f, u);
+        const double *pa = auto_pt(B, from), *pu = auto_pt(B, u), *pn = auto_pt(B, next);
         if (B->excl[f] == B->excl_stamp)
             return; /* closed loop */
-        acc += atan2(fabs(ux * wy - uy * wx), ux * wx + uy * wy);
-        if (acc >= AF_CHAIN_TURN)
+        acc += cvm__turn_angle(pa, pu, pn);
+        if (acc >= AUTO_CHAIN_TURN)
             return;
         B->excl[f] = B->excl_stamp;
         from = u;
@@ -281,36 +281,36 @@ static void af_excl_chain(af_build *B, int32_t e, int32_t u)
 }
 
 /* Exclusion set of vertex v: its edges and the smooth chains beyond them. */
-static void af_excl_vertex(af_build *B, int32_t v)
+static void auto_excl_vertex(auto_build *B, int32_t v)
 {
     int32_t k;
-    af_excl_new(B);
+    auto_excl_new(B);
     for (k = B->vstart[v]; k < B->vstart[v + 1]; k++)
         B->excl[B->vedges[k]] = B->excl_stamp;
     for (k = B->vstart[v]; k < B->vstart[v + 1]; k++) {
         int32_t e = B->vedges[k];
-        af_excl_chain(B, e, af_other(B, e, v));
+        auto_excl_chain(B, e, auto_other(B, e, v));
     }
 }
 
 /* Exclusion set of the inside of edge e: e, the edges at its ends, and the
  * smooth chains beyond its ends. */
-static void af_excl_edge(af_build *B, int32_t e)
+static void auto_excl_edge(auto_build *B, int32_t e)
 {
     int end;
-    af_excl_new(B);
+    auto_excl_new(B);
     B->excl[e] = B->excl_stamp;
     for (end = 0; end < 2; end++) {
         int32_t u = B->fe[2 * e + end], k;
         for (k = B->vstart[u]; k < B->vstart[u + 1]; k++)
             B->excl[B->vedges[k]] = B->excl_stamp;
-        af_excl_chain(B, e, u);
+        auto_excl_chain(B, e, u);
     }
 }
 
 /* Distance from p to the nearest feature outside the current exclusion set
  * (+inf when there is none). */
-static double af_nearest(af_build *B, const double *p)
+static double auto_nearest(auto_build *B, const double *p)
 {
     double best = HUGE_VAL;
     int ci, cj, r, rmax = B->g.nx > B->g.ny ? B->g.nx : B->g.ny;
@@ -318,7 +318,7 @@ static double af_nearest(af_build *B, const double *p)
         memset(B->seen, 0, (B->nfe + 1) * sizeof *B->seen);
         B->seen_stamp = 1;
     }
-    cvm__ugrid_cell(&B->g, p[0], p[1], &ci, &cj);
+    cvm__cell_grid_cell(&B->g, p[0], p[1], &ci, &cj);
     for (r = 0; r <= rmax; r++) {
         int i, j;
         /* every cell of ring r + 1 is at least r cells away */
@@ -340,7 +340,7 @@ static double af_nearest(af_build *B, const double *p)
                     if (B->excl[e] == B->excl_stamp || B->seen[e] == B->seen_stamp)
                         continue;
                     B->seen[e] = B->seen_stamp;
-                    d = af_dist_seg(p, af_pt(B, B->fe[2 * e]), af_pt(B, B->fe[2 * e + 1]));
+                    d = auto_dist_seg(p, auto_pt(B, B->fe[2 * e]), auto_pt(B, B->fe[2 * e + 1]));
                     if (d < best)
                         best = d;
                 }
@@ -350,7 +350,7 @@ static double af_nearest(af_build *B, const double *p)
     return best;
 }
 
-static cvm_status af_add_sample(af_build *B, double x, double y, double ls)
+static cvm_status auto_add_sample(auto_build *B, double x, double y, double ls)
 {
     if (cvm__grow(B->ctx, (void **)&B->smp, &B->cap_smp, 3 * (B->ns + 1), sizeof *B->smp))
         return CVM_E_NOMEM;
@@ -363,25 +363,25 @@ static cvm_status af_add_sample(af_build *B, double x, double y, double ls)
 
 /* Samples strictly inside edge e between parameters t0 and t1 whose ends have
  * feature sizes l0 and l1 (exclusion set of e current). */
-static cvm_status af_sample_edge(af_build *B, int32_t e, double t0, double t1, double l0,
+static cvm_status auto_sample_edge(auto_build *B, int32_t e, double t0, double t1, double l0,
                                  double l1, double curv, double R, double G, int depth)
 {
-    const double *a = af_pt(B, B->fe[2 * e]), *b = af_pt(B, B->fe[2 * e + 1]);
+    const double *a = auto_pt(B, B->fe[2 * e]), *b = auto_pt(B, B->fe[2 * e + 1]);
     double len = hypot(b[0] - a[0], b[1] - a[1]) * (t1 - t0), tm = 0.5 * (t0 + t1), p[2], lm;
     cvm_status s;
-    if (depth >= AF_MAX_DEPTH || !(len > fmin(l0, l1) * fmin(0.5, G / R)))
+    if (depth >= AUTO_MAX_DEPTH || !(len > fmin(l0, l1) * fmin(0.5, G / R)))
         return CVM_OK;
     p[0] = a[0] + (b[0] - a[0]) * tm;
     p[1] = a[1] + (b[1] - a[1]) * tm;
-    lm = af_nearest(B, p);
-    if ((s = af_add_sample(B, p[0], p[1], fmin(lm, curv) / R)))
+    lm = auto_nearest(B, p);
+    if ((s = auto_add_sample(B, p[0], p[1], fmin(lm, curv) / R)))
         return s;
-    if ((s = af_sample_edge(B, e, t0, tm, l0, lm, curv, R, G, depth + 1)))
+    if ((s = auto_sample_edge(B, e, t0, tm, l0, lm, curv, R, G, depth + 1)))
         return s;
-    return af_sample_edge(B, e, tm, t1, lm, l1, curv, R, G, depth + 1);
+    return auto_sample_edge(B, e, tm, t1, lm, l1, curv, R, G, depth + 1);
 }
 
-static cvm_status af_samples(af_build *B, size_t nv, double R, double G, double *vlfs)
+static cvm_status auto_samples(auto_build *B, size_t nv, double R, double G, double *vlfs)
 {
     size_t k, v;
     cvm_status s;
@@ -393,14 +393,14 @@ static cvm_status af_samples(af_build *B, size_t nv, double R, double G, double 
         double l;
         if (vlfs[u] >= 0)
             continue;
-        af_excl_vertex(B, u);
+        auto_excl_vertex(B, u);
         if (B->fe[k ^ 1] == u)
             B->excl[k / 2] = B->excl_stamp; /* a point feature: itself */
-        l = af_nearest(B, af_pt(B, u));
+        l = auto_nearest(B, auto_pt(B, u));
         if (!isfinite(l))
             l = diam > 0 ? diam : 1;
         vlfs[u] = l;
-        if ((s = af_add_sample(B, af_pt(B, u)[0], af_pt(B, u)[1], fmin(l, B->curv[u]) / R)))
+        if ((s = auto_add_sample(B, auto_pt(B, u)[0], auto_pt(B, u)[1], fmin(l, B->curv[u]) / R)))
             return s;
     }
     for (k = 0; k < B->nfe; k++) {
@@ -408,8 +408,8 @@ static cvm_status af_samples(af_build *B, size_t nv, double R, double G, double 
         double curv = fmin(B->curv[a], B->curv[b]);
         if (a == b)
             continue;
-        af_excl_edge(B, (int32_t)k);
-        if ((s = af_sample_edge(B, (int32_t)k, 0, 1, vlfs[a], vlfs[b], curv, R, G, 0)))
+        auto_excl_edge(B, (int32_t)k);
+        if ((s = auto_sample_edge(B, (int32_t)k, 0, 1, vlfs[a], vlfs[b], curv, R, G, 0)))
             return s;
     }
     return CVM_OK;
@@ -417,7 +417,7 @@ static cvm_status af_samples(af_build *B, size_t nv, double R, double G, double 
 
 /* ---- the field: samples in a grid, evaluated by a ring search ---- */
 
-static cvm_status af_field_grid(cvm__auto_field *F, cvm__ctx *ctx)
+static cvm_status auto_field_grid(cvm__auto_field *F, cvm__ctx *ctx)
 {
     double xmin = HUGE_VAL, ymin = HUGE_VAL, xmax = -HUGE_VAL, ymax = -HUGE_VAL;
     size_t k, ncell;
@@ -429,7 +429,7 @@ static cvm_status af_field_grid(cvm__auto_field *F, cvm__ctx *ctx)
         ymax = fmax(ymax, F->smp[3 * k + 1]);
         F->ls_min = fmin(F->ls_min, F->smp[3 * k + 2]);
     }
-    cvm__ugrid_fit(&F->g, xmin, ymin, xmax, ymax, F->ns * CELLS_PER_SAMPLE);
+    cvm__cell_grid_fit(&F->g, xmin, ymin, xmax, ymax, F->ns * CELLS_PER_SAMPLE);
     ncell = (size_t)F->g.nx * (size_t)F->g.ny;
     F->start = cvm__malloc(ctx, (ncell + 1) * sizeof *F->start);
     F->cmin = cvm__malloc(ctx, (ncell + 1) * sizeof *F->cmin);
@@ -445,7 +445,7 @@ static cvm_status af_field_grid(cvm__auto_field *F, cvm__ctx *ctx)
     for (k = 0; k < F->ns; k++) {
         int i, j;
         size_t c;
-        cvm__ugrid_cell(&F->g, F->smp[3 * k], F->smp[3 * k + 1], &i, &j);
+        cvm__cell_grid_cell(&F->g, F->smp[3 * k], F->smp[3 * k + 1], &i, &j);
         c = (size_t)j * (size_t)F->g.nx + (size_t)i;
         F->start[c + 1]++;
         F->cmin[c] = fmin(F->cmin[c], F->smp[3 * k + 2]);
@@ -455,7 +455,7 @@ static cvm_status af_field_grid(cvm__auto_field *F, cvm__ctx *ctx)
     memcpy(pos, F->start, (ncell + 1) * sizeof *pos);
     for (k = 0; k < F->ns; k++) {
         int i, j;
-        cvm__ugrid_cell(&F->g, F->smp[3 * k], F->smp[3 * k + 1], &i, &j);
+        cvm__cell_grid_cell(&F->g, F->smp[3 * k], F->smp[3 * k + 1], &i, &j);
         F->items[pos[(size_t)j * (size_t)F->g.nx + (size_t)i]++] = (int32_t)k;
     }
     cvm__free(ctx, pos);
@@ -471,7 +471,7 @@ double cvm__auto_field_below(const cvm__auto_field *F, double x, double y, doubl
     rmax = F->g.nx > F->g.ny ? F->g.nx : F->g.ny;
     /* outside the grid: count the rings from the nearest cell, the bound below
        still holds because distances only grow */
-    cvm__ugrid_cell(&F->g, x, y, &ci, &cj);
+    cvm__cell_grid_cell(&F->g, x, y, &ci, &cj);
     for (r = 0; r <= rmax + 1; r++) {
         int i, j;
         if (r > 0 && F->ls_min + (double)(r - 1) * F->g.cs * inv_g >= best)
@@ -506,7 +506,7 @@ double cvm__auto_field_below(const cvm__auto_field *F, double x, double y, doubl
     return best;
 }
 
-static void af_build_free(af_build *B)
+static void auto_build_free(auto_build *B)
 {
     cvm__free(B->ctx, B->fe);
     cvm__free(B->ctx, B->vstart);
@@ -520,13 +520,13 @@ static void af_build_free(af_build *B)
 
 /* Hand the samples of B to F, free B, grid the samples; on any failure (s
  * set, or the grid) F is emptied and CVM_E_NOMEM recorded on ctx. */
-static cvm_status af_finish(cvm__auto_field *F, af_build *B, cvm_status s, cvm__ctx *ctx)
+static cvm_status auto_finish(cvm__auto_field *F, auto_build *B, cvm_status s, cvm__ctx *ctx)
 {
     F->smp = B->smp;
     F->ns = B->ns;
     B->smp = NULL;
-    af_build_free(B);
-    if (!s && F->ns > 0 && af_field_grid(F, ctx))
+    auto_build_free(B);
+    if (!s && F->ns > 0 && auto_field_grid(F, ctx))
         s = CVM_E_NOMEM;
     if (s) {
         cvm__auto_field_free(F, ctx);
@@ -538,7 +538,7 @@ static cvm_status af_finish(cvm__auto_field *F, af_build *B, cvm_status s, cvm__
 cvm_status cvm__auto_field_build(cvm__auto_field *F, const cvm__tri2 *T, const uint8_t *is_input,
                                  double R, double G, cvm__ctx *ctx)
 {
-    af_build B;
+    auto_build B;
     double *vlfs = NULL;
     cvm_status s = CVM_OK;
     memset(F, 0, sizeof *F);
@@ -547,15 +547,15 @@ cvm_status cvm__auto_field_build(cvm__auto_field *F, const cvm__tri2 *T, const u
     F->ls_min = HUGE_VAL;
     B.ctx = ctx;
     B.xy = T->xy;
-    if (af_collect(&B, T, is_input) || af_adjacency(&B, T->nv))
+    if (auto_collect(&B, T, is_input) || auto_adjacency(&B, T->nv))
         s = CVM_E_NOMEM;
     if (!s && B.nfe > 0) {
         vlfs = cvm__malloc(ctx, (T->nv + 1) * sizeof *vlfs);
-        if (!vlfs || af_grid(&B) || af_samples(&B, T->nv, R, G, vlfs))
+        if (!vlfs || auto_grid(&B) || auto_samples(&B, T->nv, R, G, vlfs))
             s = CVM_E_NOMEM;
     }
     cvm__free(ctx, vlfs);
-    return af_finish(F, &B, s, ctx);
+    return auto_finish(F, &B, s, ctx);
 }
 
 /* ---- the boundary-spacing field of cvm_sizing_set_boundary_grading() ----
@@ -570,7 +570,7 @@ cvm_status cvm__auto_field_build(cvm__auto_field *F, const cvm__tri2 *T, const u
 cvm_status cvm__spacing_field_build(cvm__auto_field *F, const cvm__tri2 *T, double g,
                                     cvm__ctx *ctx)
 {
-    af_build B;
+    auto_build B;
     uint8_t *no_points = NULL;
     double *vmin = NULL;
     size_t k, v;
@@ -583,22 +583,22 @@ cvm_status cvm__spacing_field_build(cvm__auto_field *F, const cvm__tri2 *T, doub
     B.xy = T->xy;
     no_points = cvm__calloc(ctx, T->nv + 1, 1); /* edges only: no point features */
     vmin = cvm__malloc(ctx, (T->nv + 1) * sizeof *vmin);
-    if (!no_points || !vmin || af_collect(&B, T, no_points))
+    if (!no_points || !vmin || auto_collect(&B, T, no_points))
         s = CVM_E_NOMEM;
     for (v = 0; !s && v < T->nv; v++)
         vmin[v] = HUGE_VAL;
     for (k = 0; !s && k < B.nfe; k++) {
-        const double *a = af_pt(&B, B.fe[2 * k]), *b = af_pt(&B, B.fe[2 * k + 1]);
+        const double *a = auto_pt(&B, B.fe[2 * k]), *b = auto_pt(&B, B.fe[2 * k + 1]);
         double len = hypot(b[0] - a[0], b[1] - a[1]);
         vmin[B.fe[2 * k]] = fmin(vmin[B.fe[2 * k]], len);
         vmin[B.fe[2 * k + 1]] = fmin(vmin[B.fe[2 * k + 1]], len);
     }
     for (v = 0; !s && v < T->nv; v++)
-        if (isfinite(vmin[v]) && vmin[v] > 0 && af_add_sample(&B, T->xy[2 * v], T->xy[2 * v + 1], vmin[v]))
+        if (isfinite(vmin[v]) && vmin[v] > 0 && auto_add_sample(&B, T->xy[2 * v], T->xy[2 * v + 1], vmin[v]))
             s = CVM_E_NOMEM;
     for (k = 0; !s && k < B.nfe; k++) {
         int32_t ia = B.fe[2 * k], ib = B.fe[2 * k + 1];
-        const double *a = af_pt(&B, ia), *b = af_pt(&B, ib);
+        const double *a = auto_pt(&B, ia), *b = auto_pt(&B, ib);
         double len = hypot(b[0] - a[0], b[1] - a[1]), lend = fmin(vmin[ia], vmin[ib]);
         size_t m, i;
         if (!(len > 0) || !(len > lend))
@@ -606,13 +606,13 @@ cvm_status cvm__spacing_field_build(cvm__auto_field *F, const cvm__tri2 *T, doub
         m = len / lend < (double)BG_MAX_INNER ? (size_t)ceil(len / lend) : BG_MAX_INNER;
         for (i = 1; i < m && !s; i++) {
             double t = (double)i / (double)m;
-            if (af_add_sample(&B, a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), len))
+            if (auto_add_sample(&B, a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), len))
                 s = CVM_E_NOMEM;
         }
     }
     cvm__free(ctx, no_points);
     cvm__free(ctx, vmin);
-    return af_finish(F, &B, s, ctx);
+    return auto_finish(F, &B, s, ctx);
 }
 
 void cvm__auto_field_free(cvm__auto_field *F, cvm__ctx *ctx)

@@ -36,8 +36,8 @@ static void bg_grid_tri(cvm__background *bg, size_t t, int32_t *pos)
         ymin = fmin(ymin, p[1]);
         ymax = fmax(ymax, p[1]);
     }
-    cvm__ugrid_cell(&bg->g, xmin, ymin, &i0, &j0);
-    cvm__ugrid_cell(&bg->g, xmax, ymax, &i1, &j1);
+    cvm__cell_grid_cell(&bg->g, xmin, ymin, &i0, &j0);
+    cvm__cell_grid_cell(&bg->g, xmax, ymax, &i1, &j1);
     for (j = j0; j <= j1; j++)
         for (i = i0; i <= i1; i++) {
             size_t c = (size_t)j * (size_t)bg->g.nx + (size_t)i;
@@ -59,7 +59,7 @@ static cvm_status bg_grid(cvm__background *bg, cvm__ctx *ctx)
         ymin = fmin(ymin, bg->xy[2 * k + 1]);
         ymax = fmax(ymax, bg->xy[2 * k + 1]);
     }
-    cvm__ugrid_fit(&bg->g, xmin, ymin, xmax, ymax, bg->nt);
+    cvm__cell_grid_fit(&bg->g, xmin, ymin, xmax, ymax, bg->nt);
     ncell = (size_t)bg->g.nx * (size_t)bg->g.ny;
     bg->start = cvm__malloc(ctx, (ncell + 1) * sizeof *bg->start);
     if (!bg->start)
@@ -193,7 +193,7 @@ double cvm__background_at(const cvm__background *bg, double x, double y)
         return HUGE_VAL;
     p[0] = x;
     p[1] = y;
-    cvm__ugrid_cell(&bg->g, x, y, &i, &j);
+    cvm__cell_grid_cell(&bg->g, x, y, &i, &j);
     c = (size_t)j * (size_t)bg->g.nx + (size_t)i;
     for (q = bg->start[c]; q < bg->start[c + 1]; q++) {
         const int32_t *v = bg->tri + 3 * (size_t)bg->items[q];

@@ -5,6 +5,7 @@
 #include "refine_internal.h"
 #include "delaunay/tri2_store.h"
 #include "geom/geom_internal.h"
+#include "geom/measure.h"
 
 /* Sweeps of degree swapping at most (each flip lowers an integer energy, so
  * the passes end anyway; the cap bounds the time). */
@@ -58,19 +59,6 @@ static void sw_flip(cvm__tri2 *T, int32_t t, int j)
         T->vtri[c] = u;
 }
 
-/* sin^2 of the smallest angle of (p, q, r) (0 when not counter-clockwise). */
-double cvm__rf_min_sin2(const double *p, const double *q, const double *r)
-{
-    double l0 = (q[0] - r[0]) * (q[0] - r[0]) + (q[1] - r[1]) * (q[1] - r[1]);
-    double l1 = (p[0] - r[0]) * (p[0] - r[0]) + (p[1] - r[1]) * (p[1] - r[1]);
-    double l2 = (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]);
-    double cross = (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0]);
-    double lmin = l0 < l1 ? (l0 < l2 ? l0 : l2) : (l1 < l2 ? l1 : l2);
-    if (!(cross > 0))
-        return 0.0;
-    return lmin * cross * cross / (l0 * l1 * l2);
-}
-
 /* Degree of every vertex (edges in the domain) and its ideal degree: 6 inside,
  * round(angle / 60 degrees) + 1 on the domain boundary (angle: the sum of the
  * domain angles at the vertex), at least 2. */
@@ -119,14 +107,13 @@ static cvm_status sw_degrees(const cvm__tri2 *T, cvm__ctx *ctx, int32_t **deg_ou
         for (j = 0; j < 3; j++) {
             const double *o = cvm__tri2_pt(T, tv[j]), *p = cvm__tri2_pt(T, tv[(j + 1) % 3]);
             const double *q = cvm__tri2_pt(T, tv[(j + 2) % 3]);
-            double ux = p[0] - o[0], uy = p[1] - o[1], wx = q[0] - o[0], wy = q[1] - o[1];
             if (bnd[tv[j]])
-                ang[tv[j]] += atan2(fabs(ux * wy - uy * wx), ux * wx + uy * wy);
+                ang[tv[j]] += cvm__corner_angle(o, p, q);
         }
     }
     for (v = 0; v < T->nv; v++) {
         if (bnd[v]) {
-            int32_t id = (int32_t)floor(ang[v] / (3.14159265358979323846 / 3) + 0.5) + 1;
+            int32_t id = (int32_t)floor(ang[v] / (CVM__PI / 3) + 0.5) + 1;
             ideal[v] = id < 2 ? 2 : id;
         } else {
             ideal[v] = 6;
@@ -226,9 +213,9 @@ cvm_status cvm__rf_swap_degree(const cvm__refiner *R, size_t *flips_out)
                        (deg[d] - ideal[d]);
                 if (gain < 3 || !sw_flippable(T, (int32_t)t, j))
                     continue;
-                if (cvm__rf_min_sin2(cvm__tri2_pt(T, a), cvm__tri2_pt(T, b), cvm__tri2_pt(T, d)) <
+                if (cvm__min_sin2_ccw(cvm__tri2_pt(T, a), cvm__tri2_pt(T, b), cvm__tri2_pt(T, d)) <
                         sin2_min ||
-                    cvm__rf_min_sin2(cvm__tri2_pt(T, d), cvm__tri2_pt(T, c), cvm__tri2_pt(T, a)) <
+                    cvm__min_sin2_ccw(cvm__tri2_pt(T, d), cvm__tri2_pt(T, c), cvm__tri2_pt(T, a)) <
                         sin2_min ||
                     sw_too_big(R, (int32_t)t, a, b, d) || sw_too_big(R, (int32_t)t, d, c, a))
                     continue;
