@@ -208,15 +208,28 @@ static cvm_status ss_size_along(cvm__refiner *R, const ss_line *L, double d, dou
     return s;
 }
 
+/* The most pieces a march may plan: 1e7, and no more than the Steiner points
+ * left (CVM_OPT_MAX_STEINER), since a longer march would stop half-way while
+ * its table (eight entries per piece) had already grown without bound. */
+static double ss_piece_limit(const cvm__refiner *R)
+{
+    double left;
+    if (!R->p->max_steiner)
+        return 1e7;
+    left = R->steiner < R->p->max_steiner ? (double)(R->p->max_steiner - R->steiner) + 1.0 : 1.0;
+    return left < 1e7 ? left : 1e7;
+}
+
 /* Tabulate I(s) = integral from 0 to s of du / h(u) along the line (midpoint
- * rule, steps of h/8) into pairs (s, I) of *tab; *n_out pairs. */
+ * rule, steps of h/8) into pairs (s, I) of *tab; *n_out pairs. Stops once I
+ * passes ss_piece_limit(). */
 static cvm_status ss_integrate(cvm__refiner *R, const ss_line *L, double **tab, size_t *cap,
                                size_t *n_out)
 {
-    double sofar = 0, total = 0;
+    double sofar = 0, total = 0, limit = ss_piece_limit(R);
     size_t n = 0;
     cvm_status s;
-    while (sofar < L->len && total <= 1e7) {
+    while (sofar < L->len && total <= limit) {
         double h, ds;
         if ((s = ss_size_along(R, L, sofar, &h)))
             return s;
@@ -263,7 +276,7 @@ static cvm_status ss_plan(cvm__refiner *R, const ss_line *L, double **tab, size_
     if ((s = ss_integrate(R, L, tab, cap, ns)) || *ns == 0)
         return s;
     total = (*tab)[2 * *ns - 1];
-    if (total > 1e7 || (long)floor(total + 0.5) < 2)
+    if (total > ss_piece_limit(R) || (long)floor(total + 0.5) < 2)
         return CVM_OK;
     *n_out = (long)floor(total + 0.5);
     *first = ss_reach(*tab, *ns, total / (double)*n_out, &i);
