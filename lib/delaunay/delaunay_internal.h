@@ -199,6 +199,13 @@ cvm_status cvm__tri2_split_edge(cvm__tri2 *T, int32_t v, int32_t t, int j, cvm__
  * (a duplicate maps to the new id of the vertex it duplicates). */
 void cvm__tri2_compact(cvm__tri2 *T, const int32_t *dup_of, int32_t *map_out);
 
+/* Reorder and rotate the slots of T: slot[k] (k < nfile, distinct live
+ * slots) moves to slot k, rotated so that its vertex at position rot[k]
+ * comes first; the other live slots follow in their order; dead slots are
+ * dropped (the free list is emptied). Neighbour links, constraints,
+ * attributes and vtri follow. CVM_OK or CVM_E_NOMEM (T unchanged). */
+cvm_status cvm__tri2_reorder(cvm__tri2 *T, const int32_t *slot, const uint8_t *rot, size_t nfile);
+
 /* Allocate ta if needed (all 0). */
 cvm_status cvm__tri2_enable_attributes(cvm__tri2 *T);
 
