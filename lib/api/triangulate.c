@@ -1,10 +1,9 @@
-/* triangulate.c - cvm_mesh_triangulate (Delaunay / constrained Delaunay of the input), point insertion and checking. */
+/* triangulate.c - cvm_mesh_triangulate (the engine's PSLG triangulation, its input faults worded for the user), point insertion and checking. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "api_internal.h"
-#include "geom/geom_internal.h"
 
 /* Number naming input point i in messages (the file's, or i; i may be out of range). */
 static long long point_num(const cvm_mesh *m, int32_t i)
