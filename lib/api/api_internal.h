@@ -137,6 +137,18 @@ long long cvm__src_num(const cvm__item_src *src, size_t k);
 const char *cvm__src_also(char *buf, size_t cap, const cvm__item_src *src, size_t k,
                           const cvm__item_src *primary);
 
+/* The engine's input faults (cvm__cdt_build, cvm__cdt_carve) as messages
+ * naming the items of in in the user's terms (lib/api/triangulate.c): sets
+ * the message for status s and returns s; a fault of kind NONE returns s
+ * untouched (the engine set the message). */
+cvm_status cvm__cdt_fault_message(cvm__ctx *ctx, const cvm__pslg *in, cvm_status s,
+                                  const cvm__cdt_fault *f);
+
+/* The input p with the options of m (seed, duplicates, crossings, convex
+ * hull) as the engine's triangulation input (lib/api/triangulate.c); out
+ * borrows p's arrays. */
+void cvm__mesh_cdt_input(cvm__cdt_input *out, const cvm_mesh *m, const cvm__pslg *p);
+
 /* Forget the triangulation (input kept). */
 void cvm__mesh_drop_output(cvm_mesh *m);
 

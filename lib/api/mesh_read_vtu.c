@@ -39,16 +39,10 @@
 typedef struct rebuild {
     cvm__ctx ctx;        /* the handle's allocator; no progress callback and no time
                             limit (a read is not cut short); the message of a failure */
-    uint64_t seed;       /* CVM_OPT_SEED */
-    int reject_dup;      /* CVM_OPT_REJECT_DUPLICATES */
-    int split;           /* CVM_OPT_SPLIT_INTERSECTIONS */
+    cvm__cdt_input opt;  /* the handle's options for cvm__cdt_build() */
     cvm__pslg in;        /* the input of the current attempt */
     cvm__tri2 tri;
-    int32_t *input_map;  /* in.np: input point -> vertex */
-    size_t n_dup;
-    int32_t *vmark;      /* marker per vertex */
-    double *vattr;       /* in.nattr per vertex, or NULL */
-    size_t cap_vmark, cap_vattr;
+    cvm__cdt_out out;    /* input map, markers and attributes of the vertices */
 } rebuild;
 
 /* A triangle as its sorted vertex ids, and where it comes from. */
@@ -274,7 +268,7 @@ static tkey *file_keys(rebuild *rb, const cvm__vtu_mesh *vm)
 {
     tkey *k = cvm__malloc(&rb->ctx, (vm->nt + 1) * sizeof *k);
     size_t i;
-    const int32_t *map = rb->input_map;
+    const int32_t *map = rb->out.input_map;
     if (!k)
         return NULL;
     for (i = 0; i < vm->nt; i++)
@@ -503,78 +497,6 @@ out:
     return st;
 }
 
-/* Reorder and rotate the slots of T: file triangle k goes to slot k with the
- * file's first vertex first; the other live slots follow in their order;
- * dead slots are dropped. slot[k], rot[k]: the old slot of file triangle k and
- * the position of its first vertex there. */
-static cvm_status permute(cvm__tri2 *T, const int32_t *slot, const uint8_t *rotk, size_t nfile)
-{
-    cvm__ctx *ctx = T->ctx;
-    size_t nt = T->nt, t, n = 0, v;
-    int32_t *newof = cvm__malloc(ctx, (nt + 1) * sizeof *newof);
-    uint8_t *rot = cvm__calloc(ctx, nt + 1, 1);
-    int32_t *otv = cvm__malloc(ctx, (3 * nt + 1) * sizeof *otv);
-    int32_t *otn = cvm__malloc(ctx, (3 * nt + 1) * sizeof *otn);
-    int32_t *ote = T->te ? cvm__malloc(ctx, (3 * nt + 1) * sizeof *ote) : NULL;
-    uint8_t *otf = cvm__malloc(ctx, nt + 1);
-    double *ota = T->ta ? cvm__malloc(ctx, (nt + 1) * sizeof *ota) : NULL;
-    cvm_status s = CVM_OK;
-    if (!newof || !rot || !otv || !otn || (T->te && !ote) || !otf || (T->ta && !ota)) {
-        s = CVM_E_NOMEM;
-        goto out;
-    }
-    memcpy(otv, T->tv, 3 * nt * sizeof *otv);
-    memcpy(otn, T->tn, 3 * nt * sizeof *otn);
-    if (ote)
-        memcpy(ote, T->te, 3 * nt * sizeof *ote);
-    memcpy(otf, T->tf, nt);
-    if (ota)
-        memcpy(ota, T->ta, nt * sizeof *ota);
-    for (t = 0; t < nt; t++)
-        newof[t] = -1;
-    for (t = 0; t < nfile; t++) {
-        newof[slot[t]] = (int32_t)n++;
-        rot[slot[t]] = rotk[t];
-    }
-    for (t = 0; t < nt; t++)
-        if (newof[t] < 0 && !(otf[t] & CVM__TF_DEAD))
-            newof[t] = (int32_t)n++;
-    for (t = 0; t < nt; t++) {
-        size_t ns = (size_t)newof[t];
-        int j;
-        if (newof[t] < 0)
-            continue;
-        for (j = 0; j < 3; j++) {
-            size_t o = 3 * t + (size_t)(j + rot[t]) % 3;
-            int32_t a = otn[o];
-            T->tv[3 * ns + (size_t)j] = otv[o];
-            T->tn[3 * ns + (size_t)j] =
-                a < 0 ? a : 3 * newof[a / 3] + (a % 3 - rot[a / 3] + 3) % 3;
-            if (ote)
-                T->te[3 * ns + (size_t)j] = ote[o];
-        }
-        T->tf[ns] = otf[t];
-        if (ota)
-            T->ta[ns] = ota[t];
-    }
-    for (v = 0; v < T->nv; v++)
-        if (T->vtri[v] >= 0)
-            T->vtri[v] = newof[T->vtri[v]];
-    T->nt = n;
-    T->free_head = -1;
-    T->n_dead = 0;
-    T->last = 0;
-out:
-    cvm__free(ctx, newof);
-    cvm__free(ctx, rot);
-    cvm__free(ctx, otv);
-    cvm__free(ctx, otn);
-    cvm__free(ctx, ote);
-    cvm__free(ctx, otf);
-    cvm__free(ctx, ota);
-    return s;
-}
-
 /* Compare rb's domain triangles with the file's; on a match put them in the
  * file's order. *bad receives the first file triangle not reproduced, or -1. */
 static cvm_status match(rebuild *rb, const cvm__vtu_mesh *vm, int64_t *bad)
@@ -590,7 +512,7 @@ static cvm_status match(rebuild *rb, const cvm__vtu_mesh *vm, int64_t *bad)
         goto out;
     }
     for (k = 0; k < vm->nt && *bad < 0; k++) {
-        const int32_t *f = vm->tri + 3 * k, *map = rb->input_map;
+        const int32_t *f = vm->tri + 3 * k, *map = rb->out.input_map;
         tkey key;
         int32_t sl;
         make_key(&key, map[f[0]], map[f[1]], map[f[2]], 0);
@@ -606,7 +528,7 @@ static cvm_status match(rebuild *rb, const cvm__vtu_mesh *vm, int64_t *bad)
     }
     if (*bad < 0 && nk != vm->nt)
         *bad = (int64_t)vm->nt; /* the triangulation has more triangles than the file */
-    if (*bad < 0 && permute(&rb->tri, slot, rot, vm->nt))
+    if (*bad < 0 && cvm__tri2_reorder(&rb->tri, slot, rot, vm->nt))
         s = cvm__nomem(&rb->ctx);
 out:
     cvm__free(&rb->ctx, sk);
@@ -627,274 +549,40 @@ static void rb_init(rebuild *rb, const cvm_mesh *m, const cvm__vtu_mesh *vm)
     rb->ctx.progress_every = 0;
     cvm__clear_error(&rb->ctx);
     cvm__run_begin(&rb->ctx, 0);
-    rb->seed = (uint64_t)cvm__opt(m, CVM_OPT_SEED);
-    rb->reject_dup = cvm__opt(m, CVM_OPT_REJECT_DUPLICATES) != 0;
-    rb->split = cvm__opt(m, CVM_OPT_SPLIT_INTERSECTIONS) != 0;
     rb->in.xy = vm->p.xy;
     rb->in.np = vm->p.np;
     rb->in.pmark = vm->p.pmark;
     rb->in.pattr = vm->p.pattr;
     rb->in.nattr = vm->p.pattr ? vm->p.nattr : 0;
     cvm__tri2_init(&rb->tri, &rb->ctx);
+    cvm__mesh_cdt_input(&rb->opt, m, &rb->in);
+    rb->opt.keep_hull = 0; /* the file's boundary edges are segments: its domain is inside them */
 }
 
 /* Free what rb owns (not the file's point arrays). */
 static void rb_free(rebuild *rb)
 {
     cvm__tri2_destroy(&rb->tri);
-    cvm__free(&rb->ctx, rb->input_map);
-    cvm__free(&rb->ctx, rb->vmark);
-    cvm__free(&rb->ctx, rb->vattr);
+    cvm__free(&rb->ctx, rb->out.input_map);
+    cvm__free(&rb->ctx, rb->out.vmark);
+    cvm__free(&rb->ctx, rb->out.vattr);
     cvm__free(&rb->ctx, rb->in.seg);
     cvm__free(&rb->ctx, rb->in.smark);
     cvm__free(&rb->ctx, rb->in.holes);
-}
-
-/* Grow the per-vertex marker and attribute arrays to the kernel's vertex count. */
-static cvm_status rb_grow_vertex_data(rebuild *rb)
-{
-    size_t nv = rb->tri.nv, na = rb->in.nattr;
-    if (nv > rb->cap_vmark &&
-        cvm__grow(&rb->ctx, (void **)&rb->vmark, &rb->cap_vmark, nv, sizeof(int32_t)))
-        return CVM_E_NOMEM;
-    if (na && nv * na > rb->cap_vattr &&
-        cvm__grow(&rb->ctx, (void **)&rb->vattr, &rb->cap_vattr, nv * na, sizeof(double)))
-        return CVM_E_NOMEM;
-    return CVM_OK;
-}
-
-static int32_t rb_seg_marker(const rebuild *rb, int32_t seg)
-{
-    if (seg < 0 || (size_t)seg >= rb->in.nseg)
-        return 0;
-    return rb->in.smark ? rb->in.smark[seg] : 1;
-}
-
-/* Marker and attributes of the vertices from..nv-1 that splitting crossing
- * line cells created on segment k: the segment's marker, the attributes of
- * its ends interpolated (as cvm_mesh_triangulate() gives them). */
-static void rb_steiner_data(rebuild *rb, size_t from, int32_t k)
-{
-    size_t v, na = rb->in.nattr, i;
-    const int32_t *sg = rb->in.seg + 2 * (size_t)k;
-    const double *pa = rb->in.xy + 2 * (size_t)sg[0], *pb = rb->in.xy + 2 * (size_t)sg[1];
-    double len2 = (pb[0] - pa[0]) * (pb[0] - pa[0]) + (pb[1] - pa[1]) * (pb[1] - pa[1]);
-    for (v = from; v < rb->tri.nv; v++) {
-        const double *p = rb->tri.xy + 2 * v;
-        double t = len2 > 0 ? ((p[0] - pa[0]) * (pb[0] - pa[0]) + (p[1] - pa[1]) * (pb[1] - pa[1])) / len2 : 0;
-        rb->vmark[v] = rb_seg_marker(rb, k);
-        t = t < 0 ? 0 : t > 1 ? 1 : t;
-        for (i = 0; i < na; i++)
-            rb->vattr[v * na + i] =
-                (1 - t) * rb->in.pattr[(size_t)sg[0] * na + i] + t * rb->in.pattr[(size_t)sg[1] * na + i];
-    }
-}
-
-/* The exact predicates cannot span more than 2^180 between the largest
- * coordinate and a nonzero one (see cvm_mesh_triangulate()): refused alike. */
-static cvm_status rb_check_dynamic_range(rebuild *rb)
-{
-    const double *xy = rb->in.xy;
-    size_t i, n = 2 * rb->in.np;
-    double big = 0, lim;
-    for (i = 0; i < n; i++)
-        big = fabs(xy[i]) > big ? fabs(xy[i]) : big;
-    lim = ldexp(big, -180);
-    for (i = 0; i < n; i++) {
-        double a = fabs(xy[i]);
-        char where[CVM__WHERE_LEN];
-        if (a != 0 && a < lim)
-            return cvm__error(&rb->ctx, CVM_E_INPUT_DEGENERATE, CVM_ENT_INPUT_POINT, (int64_t)(i / 2),
-                              "%spoint %lld has %c = %.17g, more than 2^180 times smaller than the "
-                              "largest coordinate %.17g: exact predicates cannot span that range; "
-                              "round it to 0 or translate the input",
-                              cvm__src_where(where, sizeof where, &rb->in.src_point, i / 2),
-                              cvm__src_num(&rb->in.src_point, i / 2), i % 2 ? 'y' : 'x', xy[i], big);
-    }
-    return CVM_OK;
-}
-
-/* The input points as vertices: the Delaunay triangulation of the distinct
- * ones, input_map, markers and attributes (first occurrences win). */
-static cvm_status rb_points(rebuild *rb)
-{
-    cvm__tri2 *T = &rb->tri;
-    const cvm__item_src *src = &rb->in.src_point;
-    size_t i, n = rb->in.np, na = rb->in.nattr;
-    int32_t *dup_of;
-    cvm_status s;
-    if (n > (size_t)INT32_MAX / 4)
-        return cvm__error(&rb->ctx, CVM_E_TOO_LARGE, CVM_ENT_INPUT_POINT, -1,
-                          "%lu points exceed the limit of %ld", (unsigned long)n,
-                          (long)(INT32_MAX / 4));
-    if ((s = rb_check_dynamic_range(rb)))
-        return s;
-    if ((s = cvm__tri2_reserve_vertices(T, n)))
-        return s == CVM_E_NOMEM ? cvm__nomem(&rb->ctx)
-                                : cvm__error(&rb->ctx, s, CVM_ENT_NONE, -1, "too many points");
-    for (i = 0; i < n; i++) {
-        int32_t id;
-        if (cvm__tri2_add_vertex(T, rb->in.xy + 2 * i, &id))
-            return cvm__nomem(&rb->ctx);
-    }
-    dup_of = cvm__malloc(&rb->ctx, n * sizeof *dup_of);
-    rb->input_map = cvm__malloc(&rb->ctx, n * sizeof *rb->input_map);
-    if (!dup_of || !rb->input_map) {
-        cvm__free(&rb->ctx, dup_of);
-        return cvm__nomem(&rb->ctx);
-    }
-    if ((s = cvm__tri2_build(T, rb->seed, dup_of))) {
-        cvm__free(&rb->ctx, dup_of);
-        return s;
-    }
-    rb->n_dup = 0;
-    for (i = 0; i < n; i++) {
-        char where[CVM__WHERE_LEN], also[CVM__WHERE_LEN];
-        if (dup_of[i] < 0)
-            continue;
-        if (rb->reject_dup) {
-            s = cvm__error(&rb->ctx, CVM_E_INPUT_DUPLICATE, CVM_ENT_INPUT_POINT, (int64_t)i,
-                           "%spoint %lld at (%.17g, %.17g) duplicates point %lld%s",
-                           cvm__src_where(where, sizeof where, src, i), cvm__src_num(src, i),
-                           rb->in.xy[2 * i], rb->in.xy[2 * i + 1], cvm__src_num(src, (size_t)dup_of[i]),
-                           cvm__src_also(also, sizeof also, src, (size_t)dup_of[i], src));
-            cvm__free(&rb->ctx, dup_of);
-            return s;
-        }
-        rb->n_dup++;
-    }
-    cvm__tri2_compact(T, dup_of, rb->input_map);
-    cvm__free(&rb->ctx, dup_of);
-    if (rb_grow_vertex_data(rb))
-        return cvm__nomem(&rb->ctx);
-    for (i = n; i-- > 0;) {
-        int32_t v = rb->input_map[i];
-        size_t k;
-        rb->vmark[v] = rb->in.pmark ? rb->in.pmark[i] : 0;
-        for (k = 0; k < na; k++)
-            rb->vattr[(size_t)v * na + k] = rb->in.pattr[i * na + k];
-    }
-    return CVM_OK;
-}
-
-/* The segments as constrained edges. Their ends are distinct file points
- * (file_checks()), so only crossings can fail, with
- * CVM_OPT_SPLIT_INTERSECTIONS = 0. */
-static cvm_status rb_segments(rebuild *rb)
-{
-    cvm__tri2 *T = &rb->tri;
-    const cvm__item_src *src = &rb->in.src_segment, *psrc = &rb->in.src_point;
-    size_t k;
-    cvm_status s;
-    for (k = 0; k < rb->in.nseg; k++) {
-        int32_t ia = rb->in.seg[2 * k], ib = rb->in.seg[2 * k + 1];
-        int32_t a = rb->input_map[ia], b = rb->input_map[ib], other = -1;
-        size_t nv0 = T->nv;
-        char where[CVM__WHERE_LEN], also[CVM__WHERE_LEN];
-        if (a == b)
-            return cvm__error(&rb->ctx, CVM_E_INPUT_DEGENERATE, CVM_ENT_INPUT_SEGMENT, (int64_t)k,
-                              "%ssegment %lld (points %lld-%lld) has zero length%s",
-                              cvm__src_where(where, sizeof where, src, k), cvm__src_num(src, k),
-                              cvm__src_num(psrc, (size_t)ia), cvm__src_num(psrc, (size_t)ib),
-                              ia == ib ? "" : ": its endpoints are at the same position");
-        s = cvm__tri2_insert_segment(T, a, b, (int32_t)k, rb->split, &other);
-        if (s == CVM_E_INPUT_INTERSECTING) {
-            const int32_t *o = rb->in.seg + 2 * (size_t)other;
-            return cvm__error(&rb->ctx, s, CVM_ENT_INPUT_SEGMENT, (int64_t)k,
-                              "%ssegment %lld (points %lld-%lld) crosses segment %lld%s (points "
-                              "%lld-%lld) in its interior",
-                              cvm__src_where(where, sizeof where, src, k), cvm__src_num(src, k),
-                              cvm__src_num(psrc, (size_t)ia), cvm__src_num(psrc, (size_t)ib),
-                              cvm__src_num(src, (size_t)other),
-                              cvm__src_also(also, sizeof also, src, (size_t)other, src),
-                              cvm__src_num(psrc, (size_t)o[0]), cvm__src_num(psrc, (size_t)o[1]));
-        }
-        if (s == CVM_E_NOMEM)
-            return cvm__nomem(&rb->ctx);
-        if (s)
-            return s;
-        if (T->nv > nv0) {
-            if (rb_grow_vertex_data(rb))
-                return cvm__nomem(&rb->ctx);
-            rb_steiner_data(rb, nv0, (int32_t)k);
-        }
-    }
-    return CVM_OK;
-}
-
-static size_t rb_domain_count(const cvm__tri2 *T)
-{
-    size_t t, n = 0;
-    for (t = 0; t < T->nt; t++)
-        n += cvm__tri2_in_domain(T, (int32_t)t);
-    return n;
-}
-
-/* Remove the exterior (the segments bound the file's domain) and the holes. */
-static cvm_status rb_carve(rebuild *rb)
-{
-    cvm__tri2 *T = &rb->tri;
-    const cvm__item_src *src = &rb->in.src_hole;
-    size_t k, ndomain, visited = 0, removed = 0;
-    cvm_status s = CVM_OK;
-    if (cvm__tri2_flood_out(T, NULL, 0, rb->in.nseg != 0))
-        return cvm__nomem(&rb->ctx);
-    if ((ndomain = rb_domain_count(T)) == 0)
-        return cvm__error(&rb->ctx, CVM_E_INPUT_NOT_CLOSED, CVM_ENT_NONE, -1,
-                          "removing the exterior removed every triangle: the segments do not "
-                          "enclose a region (open boundary)");
-    for (k = 0; k < rb->in.nholes && !s; k++) {
-        const double *h = rb->in.holes + 2 * k;
-        char where[CVM__WHERE_LEN];
-        int32_t t;
-        int j;
-        cvm__loc loc = cvm__tri2_locate(T, h, -1, &t, &j);
-        if (loc == CVM__LOC_OUTSIDE || t < 0) {
-            s = cvm__error(&rb->ctx, CVM_E_INPUT_OUTSIDE, CVM_ENT_HOLE, (int64_t)k,
-                           "%shole %lld at (%.17g, %.17g) lies outside the convex hull of the points",
-                           cvm__src_where(where, sizeof where, src, k), cvm__src_num(src, k), h[0], h[1]);
-        } else if (cvm__tri2_flood_out_more(T, t, &visited, &removed)) {
-            s = cvm__nomem(&rb->ctx);
-        } else if ((ndomain -= removed) == 0) {
-            s = cvm__error(&rb->ctx, CVM_E_INPUT_NOT_CLOSED, CVM_ENT_HOLE, (int64_t)k,
-                           "%shole %lld at (%.17g, %.17g) removed every remaining triangle: no "
-                           "closed loop of segments separates it from the rest of the domain",
-                           cvm__src_where(where, sizeof where, src, k), cvm__src_num(src, k), h[0], h[1]);
-        }
-    }
-    cvm__tri2_clear_mark2(T);
-    return s;
-}
-
-/* Vertices on constrained edges with marker 0 take the segment's marker. */
-static void rb_boundary_markers(rebuild *rb)
-{
-    const cvm__tri2 *T = &rb->tri;
-    size_t t;
-    int j, k;
-    for (t = 0; T->te && t < T->nt; t++) {
-        if (!cvm__tri2_in_domain(T, (int32_t)t))
-            continue;
-        for (j = 0; j < 3; j++) {
-            int32_t seg = T->te[3 * t + (size_t)j];
-            for (k = 1; seg >= 0 && k <= 2; k++) {
-                int32_t v = T->tv[3 * t + (size_t)(j + k) % 3];
-                if (rb->vmark[v] == 0)
-                    rb->vmark[v] = rb_seg_marker(rb, seg);
-            }
-        }
-    }
 }
 
 /* Triangulate rb's input with the first nseg of in.seg as segments and the
  * given hole points: what cvm_mesh_triangulate() makes of it. */
 static cvm_status build(rebuild *rb, size_t nseg, const double *holes, size_t nholes)
 {
+    cvm__cdt_input in;
+    cvm__cdt_fault f;
     cvm_status s;
+    size_t n = rb->in.np;
     cvm__tri2_clear(&rb->tri);
-    cvm__free(&rb->ctx, rb->input_map);
-    rb->input_map = NULL;
-    rb->n_dup = 0;
+    cvm__free(&rb->ctx, rb->out.input_map);
+    rb->out.input_map = NULL;
+    rb->out.n_dup = 0;
     rb->in.nseg = nseg;
     cvm__free(&rb->ctx, rb->in.holes);
     rb->in.holes = NULL;
@@ -905,11 +593,18 @@ static cvm_status build(rebuild *rb, size_t nseg, const double *holes, size_t nh
         memcpy(rb->in.holes, holes, 2 * nholes * sizeof *holes);
         rb->in.nholes = nholes;
     }
-    if ((s = rb_points(rb)) || (nseg && (s = rb_segments(rb))) ||
-        ((nseg || nholes) && (s = rb_carve(rb))))
-        return s;
-    rb_boundary_markers(rb);
-    return CVM_OK;
+    if (n > (size_t)INT32_MAX / 4)
+        return cvm__error(&rb->ctx, CVM_E_TOO_LARGE, CVM_ENT_INPUT_POINT, -1,
+                          "%lu points exceed the limit of %ld", (unsigned long)n,
+                          (long)(INT32_MAX / 4));
+    in = rb->opt;
+    in.seg = rb->in.seg;
+    in.nseg = nseg;
+    in.smark = rb->in.smark;
+    in.holes = rb->in.holes;
+    in.nholes = nholes;
+    s = cvm__cdt_build(&rb->tri, &in, &rb->out, &f);
+    return s ? cvm__cdt_fault_message(&rb->ctx, &rb->in, s, &f) : CVM_OK;
 }
 
 /* Weights of the file (per input point) onto rb's vertices. forced: rb holds
@@ -930,7 +625,7 @@ static cvm_status weights(rebuild *rb, const cvm__vtu_mesh *vm, int forced)
     if (!w)
         return cvm__nomem(&rb->ctx);
     for (i = 0; vm->w && i < vm->p.np; i++)
-        w[rb->input_map[i]] = vm->w[i];
+        w[rb->out.input_map[i]] = vm->w[i];
     cvm__free(&rb->ctx, T->w);
     T->w = vm->w ? w : NULL;
     if (!vm->w)
@@ -1058,17 +753,15 @@ static void adopt(cvm_mesh *m, rebuild *rb, cvm__vtu_mesh *vm)
     m->tri = rb->tri;
     m->tri.ctx = &m->ctx;
     cvm__tri2_init(&rb->tri, &rb->ctx);
-    m->input_map = rb->input_map;
-    rb->input_map = NULL;
-    m->n_dup = rb->n_dup;
+    m->input_map = rb->out.input_map;
+    m->n_dup = rb->out.n_dup;
     cvm__free(&m->ctx, m->vmark);
     cvm__free(&m->ctx, m->vattr);
-    m->vmark = rb->vmark;
-    m->vattr = rb->vattr;
-    m->cap_vmark = rb->cap_vmark;
-    m->cap_vattr = rb->cap_vattr;
-    rb->vmark = NULL;
-    rb->vattr = NULL;
+    m->vmark = rb->out.vmark;
+    m->vattr = rb->out.vattr;
+    m->cap_vmark = rb->out.cap_vmark;
+    m->cap_vattr = rb->out.cap_vattr;
+    memset(&rb->out, 0, sizeof rb->out);
     m->triangulated = 1;
     m->nv_triangulated = m->tri.nv;
 }

@@ -1,26 +1,9 @@
-/* triangulate.c - cvm_mesh_triangulate (Delaunay / constrained Delaunay of the input), point insertion and checking. */
+/* triangulate.c - cvm_mesh_triangulate (the engine's PSLG triangulation, its input faults worded for the user), point insertion and checking. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "api_internal.h"
-#include "geom/geom_internal.h"
-
-/* Marker and attributes of Steiner vertices from..nv-1 created on segment k. */
-static void steiner_data(cvm_mesh *m, size_t from, int32_t k)
-{
-    size_t v;
-    for (v = from; v < m->tri.nv; v++)
-        cvm__segment_vertex_data(m, v, k);
-}
-
-static size_t count_domain(const cvm__tri2 *T)
-{
-    size_t t, n = 0;
-    for (t = 0; t < T->nt; t++)
-        n += cvm__tri2_in_domain(T, (int32_t)t);
-    return n;
-}
 
 /* Number naming input point i in messages (the file's, or i; i may be out of range). */
 static long long point_num(const cvm_mesh *m, int32_t i)
@@ -45,50 +28,96 @@ static cvm_status check_segments(cvm_mesh *m)
     return CVM_OK;
 }
 
-static cvm_status recover_segments(cvm_mesh *m)
+/* Number naming input point i of in in messages (i in range). */
+static long long in_point_num(const cvm__pslg *in, size_t i)
 {
-    cvm__tri2 *T = &m->tri;
-    size_t k;
-    int split = cvm__opt(m, CVM_OPT_SPLIT_INTERSECTIONS) != 0;
-    cvm_status s;
-    for (k = 0; k < m->in.nseg; k++) {
-        int32_t ia = m->in.seg[2 * k], ib = m->in.seg[2 * k + 1];
-        int32_t a = m->input_map[ia], b = m->input_map[ib], other = -1;
-        size_t nv0 = T->nv;
-        char where[CVM__WHERE_LEN], also[CVM__WHERE_LEN];
-        const cvm__item_src *src = &m->in.src_segment;
-        if (a == b)
-            return cvm__error(&m->ctx, CVM_E_INPUT_DEGENERATE, CVM_ENT_INPUT_SEGMENT, (int64_t)k,
-                              "%ssegment %lld (points %lld-%lld) has zero length%s",
-                              cvm__src_where(where, sizeof where, src, k), cvm__src_num(src, k),
-                              point_num(m, ia), point_num(m, ib),
-                              ia == ib ? "" : ": its endpoints are at the same position");
-        s = cvm__tri2_insert_segment(T, a, b, (int32_t)k, split, &other);
-        if (s == CVM_E_INPUT_INTERSECTING) {
-            const int32_t *o = m->in.seg + 2 * (size_t)other;
-            return cvm__error(&m->ctx, s, CVM_ENT_INPUT_SEGMENT, (int64_t)k,
-                              "%ssegment %lld (points %lld-%lld) crosses segment %lld%s (points "
-                              "%lld-%lld) in its interior",
-                              cvm__src_where(where, sizeof where, src, k), cvm__src_num(src, k),
-                              point_num(m, ia), point_num(m, ib), cvm__src_num(src, (size_t)other),
-                              cvm__src_also(also, sizeof also, src, (size_t)other, src),
-                              point_num(m, o[0]), point_num(m, o[1]));
-        }
-        if (s == CVM_E_NOMEM)
-            return cvm__nomem(&m->ctx);
-        if (s)
-            return s;
-        if (T->nv > nv0) {
-            if (cvm__grow_vertex_data(m))
-                return cvm__nomem(&m->ctx);
-            steiner_data(m, nv0, (int32_t)k);
-        }
-        s = cvm__tick(&m->ctx, 1, CVM_STAGE_RECOVER_SEGMENTS, (double)k / (double)m->in.nseg);
-        if (s)
-            return cvm__error(&m->ctx, s, CVM_ENT_NONE, -1, "%s during segment recovery; the mesh is empty",
-                              s == CVM_INCOMPLETE_CANCELLED ? "cancelled" : "time limit reached");
+    return cvm__src_num(&in->src_point, i);
+}
+
+cvm_status cvm__cdt_fault_message(cvm__ctx *ctx, const cvm__pslg *in, cvm_status s,
+                                  const cvm__cdt_fault *f)
+{
+    char where[CVM__WHERE_LEN], also[CVM__WHERE_LEN];
+    size_t k = f->item;
+    const cvm__item_src *src;
+    const int32_t *sg, *o;
+    const double *p;
+    switch (f->kind) {
+    case CVM__CDT_FAULT_RANGE:
+        src = &in->src_point;
+        return cvm__error(ctx, s, CVM_ENT_INPUT_POINT, (int64_t)k,
+                          "%spoint %lld has %c = %.17g, more than 2^180 times smaller than the "
+                          "largest coordinate %.17g: exact predicates cannot span that range; "
+                          "round it to 0 or translate the input",
+                          cvm__src_where(where, sizeof where, src, k), in_point_num(in, k),
+                          f->axis ? 'y' : 'x', in->xy[2 * k + (size_t)f->axis], f->big);
+    case CVM__CDT_FAULT_DUPLICATE:
+        src = &in->src_point;
+        return cvm__error(ctx, s, CVM_ENT_INPUT_POINT, (int64_t)k,
+                          "%spoint %lld at (%.17g, %.17g) duplicates point %lld%s",
+                          cvm__src_where(where, sizeof where, src, k), in_point_num(in, k),
+                          in->xy[2 * k], in->xy[2 * k + 1], in_point_num(in, f->other),
+                          cvm__src_also(also, sizeof also, src, f->other, src));
+    case CVM__CDT_FAULT_ZERO_LENGTH:
+        src = &in->src_segment;
+        sg = in->seg + 2 * k;
+        return cvm__error(ctx, s, CVM_ENT_INPUT_SEGMENT, (int64_t)k,
+                          "%ssegment %lld (points %lld-%lld) has zero length%s",
+                          cvm__src_where(where, sizeof where, src, k), cvm__src_num(src, k),
+                          in_point_num(in, (size_t)sg[0]), in_point_num(in, (size_t)sg[1]),
+                          sg[0] == sg[1] ? "" : ": its endpoints are at the same position");
+    case CVM__CDT_FAULT_CROSSING:
+        src = &in->src_segment;
+        sg = in->seg + 2 * k;
+        o = in->seg + 2 * f->other;
+        return cvm__error(ctx, s, CVM_ENT_INPUT_SEGMENT, (int64_t)k,
+                          "%ssegment %lld (points %lld-%lld) crosses segment %lld%s (points "
+                          "%lld-%lld) in its interior",
+                          cvm__src_where(where, sizeof where, src, k), cvm__src_num(src, k),
+                          in_point_num(in, (size_t)sg[0]), in_point_num(in, (size_t)sg[1]),
+                          cvm__src_num(src, f->other),
+                          cvm__src_also(also, sizeof also, src, f->other, src),
+                          in_point_num(in, (size_t)o[0]), in_point_num(in, (size_t)o[1]));
+    case CVM__CDT_FAULT_HOLE_OUTSIDE:
+    case CVM__CDT_FAULT_HOLE_ALL:
+        src = &in->src_hole;
+        p = in->holes + 2 * k;
+        return cvm__error(ctx, s, CVM_ENT_HOLE, (int64_t)k,
+                          f->kind == CVM__CDT_FAULT_HOLE_OUTSIDE
+                              ? "%shole %lld at (%.17g, %.17g) lies outside the convex hull of the points"
+                              : "%shole %lld at (%.17g, %.17g) removed every remaining triangle: no "
+                                "closed loop of segments separates it from the rest of the domain",
+                          cvm__src_where(where, sizeof where, src, k), cvm__src_num(src, k), p[0], p[1]);
+    case CVM__CDT_FAULT_REGION_OUTSIDE:
+        src = &in->src_region;
+        p = in->regions + 4 * k;
+        return cvm__error(ctx, s, CVM_ENT_REGION, (int64_t)k,
+                          "%sregion %lld at (%.17g, %.17g) lies outside the domain",
+                          cvm__src_where(where, sizeof where, src, k), cvm__src_num(src, k), p[0], p[1]);
+    case CVM__CDT_FAULT_NONE:
+        break;
     }
-    return CVM_OK;
+    return s; /* not an input fault: the engine set the message */
+}
+
+void cvm__mesh_cdt_input(cvm__cdt_input *out, const cvm_mesh *m, const cvm__pslg *p)
+{
+    out->xy = p->xy;
+    out->np = p->np;
+    out->pmark = p->pmark;
+    out->pattr = p->pattr;
+    out->nattr = p->nattr;
+    out->seg = p->seg;
+    out->nseg = p->nseg;
+    out->smark = p->smark;
+    out->holes = p->holes;
+    out->nholes = p->nholes;
+    out->regions = p->regions;
+    out->nregions = p->nregions;
+    out->seed = (uint64_t)cvm__opt(m, CVM_OPT_SEED);
+    out->reject_duplicates = cvm__opt(m, CVM_OPT_REJECT_DUPLICATES) != 0;
+    out->split = cvm__opt(m, CVM_OPT_SPLIT_INTERSECTIONS) != 0;
+    out->keep_hull = cvm__opt(m, CVM_OPT_KEEP_CONVEX_HULL) != 0;
 }
 
 /* Locate a seed point: the domain triangle containing it, or -1 outside. */
@@ -102,216 +131,41 @@ int32_t cvm__mesh_seed_triangle(cvm_mesh *m, const double *p)
     return t;
 }
 
-/* A stop (time limit or cancellation) while carving: the caller drops the mesh. */
-static cvm_status carve_stopped(cvm_mesh *m, cvm_status s, const char *what, size_t k, size_t n)
-{
-    return cvm__error(&m->ctx, s, CVM_ENT_NONE, -1,
-                      "%s while carving (%s %lu of %lu); the mesh is empty",
-                      s == CVM_INCOMPLETE_CANCELLED ? "cancelled" : "time limit reached", what,
-                      (unsigned long)k + 1, (unsigned long)n);
-}
-
-/* Holes are carved one after another, as if each flooded the whole
- * triangulation afresh, but a triangle is visited by one hole at most (see
- * cvm__tri2_flood_out_more) and the domain is counted down rather than
- * recounted, so the work is linear in the triangles plus the walks that
- * locate the hole points (each starts where the previous one ended). */
-static cvm_status carve_holes(cvm_mesh *m, size_t ndomain)
-{
-    cvm__tri2 *T = &m->tri;
-    size_t k, visited = 0, removed = 0;
-    cvm_status s = CVM_OK;
-    for (k = 0; k < m->in.nholes && !s; k++) {
-        const double *h = m->in.holes + 2 * k;
-        int32_t t = cvm__mesh_seed_triangle(m, h);
-        char where[CVM__WHERE_LEN];
-        if (t < 0) {
-            s = cvm__error(&m->ctx, CVM_E_INPUT_OUTSIDE, CVM_ENT_HOLE, (int64_t)k,
-                           "%shole %lld at (%.17g, %.17g) lies outside the convex hull of the points",
-                           cvm__src_where(where, sizeof where, &m->in.src_hole, k),
-                           cvm__src_num(&m->in.src_hole, k), h[0], h[1]);
-            break;
-        }
-        if (cvm__tri2_flood_out_more(T, t, &visited, &removed)) {
-            s = cvm__nomem(&m->ctx);
-            break;
-        }
-        ndomain -= removed;
-        /* the flood stops only at segments: when it reached every triangle left,
-           no closed loop of segments separates the hole from the rest (the hole
-           lies in the outer region itself, or its own loop is open) */
-        if (ndomain == 0) {
-            s = cvm__error(&m->ctx, CVM_E_INPUT_NOT_CLOSED, CVM_ENT_HOLE, (int64_t)k,
-                           "%shole %lld at (%.17g, %.17g) removed every remaining triangle: no "
-                           "closed loop of segments separates it from the rest of the domain",
-                           cvm__src_where(where, sizeof where, &m->in.src_hole, k),
-                           cvm__src_num(&m->in.src_hole, k), h[0], h[1]);
-            break;
-        }
-        if ((s = cvm__tick(&m->ctx, 1 + (int64_t)visited, CVM_STAGE_CARVE,
-                           (double)k / (double)m->in.nholes)))
-            s = carve_stopped(m, s, "hole", k, m->in.nholes);
-    }
-    cvm__tri2_clear_mark2(T);
-    return s;
-}
-
 cvm_status cvm__mesh_carve(cvm_mesh *m)
 {
-    cvm__tri2 *T = &m->tri;
-    size_t k, ndomain;
-    int keep = cvm__opt(m, CVM_OPT_KEEP_CONVEX_HULL) != 0 || m->in.nseg == 0;
-    cvm_status s = cvm__tri2_flood_out(T, NULL, 0, !keep);
-    if (s)
-        return cvm__nomem(&m->ctx);
-    ndomain = count_domain(T);
-    if (ndomain == 0)
-        return cvm__error(&m->ctx, CVM_E_INPUT_NOT_CLOSED, CVM_ENT_NONE, -1,
-                          "removing the exterior removed every triangle: the segments do not "
-                          "enclose a region (open boundary)");
-    if ((s = cvm__tick(&m->ctx, 1 + (int64_t)T->nt, CVM_STAGE_CARVE, 0.0)))
-        return carve_stopped(m, s, "exterior", 0, 1);
-    if (m->in.nholes && (s = carve_holes(m, ndomain)))
-        return s;
-    for (k = 0; k < m->in.nregions; k++) {
-        const double *r = m->in.regions + 4 * k;
-        int32_t t = cvm__mesh_seed_triangle(m, r);
-        char where[CVM__WHERE_LEN];
-        if (t < 0 || !cvm__tri2_in_domain(T, t))
-            return cvm__error(&m->ctx, CVM_E_INPUT_OUTSIDE, CVM_ENT_REGION, (int64_t)k,
-                              "%sregion %lld at (%.17g, %.17g) lies outside the domain",
-                              cvm__src_where(where, sizeof where, &m->in.src_region, k),
-                              cvm__src_num(&m->in.src_region, k), r[0], r[1]);
-        if ((s = cvm__tri2_flood_attribute(T, t, r[2])))
-            return cvm__nomem(&m->ctx);
-        if ((s = cvm__tick(&m->ctx, 1, CVM_STAGE_CARVE, (double)k / (double)m->in.nregions)))
-            return carve_stopped(m, s, "region", k, m->in.nregions);
-    }
-    return CVM_OK;
+    cvm__cdt_input in;
+    cvm__cdt_fault f;
+    cvm_status s;
+    cvm__mesh_cdt_input(&in, m, &m->in);
+    s = cvm__cdt_carve(&m->tri, &in, &f);
+    return s ? cvm__cdt_fault_message(&m->ctx, &m->in, s, &f) : CVM_OK;
 }
 
-/* Vertices on constrained edges with marker 0 take the segment's marker. */
-static void boundary_vertex_markers(cvm_mesh *m)
-{
-    const cvm__tri2 *T = &m->tri;
-    size_t t;
-    int j;
-    if (!T->te)
-        return;
-    for (t = 0; t < T->nt; t++) {
-        if (!cvm__tri2_in_domain(T, (int32_t)t))
-            continue;
-        for (j = 0; j < 3; j++) {
-            int32_t seg = T->te[3 * t + j];
-            int k;
-            if (seg < 0)
-                continue;
-            for (k = 1; k <= 2; k++) {
-                int32_t v = T->tv[3 * t + (j + k) % 3];
-                if (m->vmark[v] == 0)
-                    m->vmark[v] = cvm__segment_marker(m, seg);
-            }
-        }
-    }
-}
-
-/* The exact predicates work on double expansions, whose error-free
- * transformations fail when a product underflows: with every coordinate
- * rescaled (by a power of two) near the largest one, a nonzero coordinate more
- * than 2^180 times smaller than the largest could make a product of four of
- * them underflow. Such input is refused rather than decided inexactly. */
-static cvm_status check_dynamic_range(cvm_mesh *m)
-{
-    const double *xy = m->in.xy;
-    size_t i, n = 2 * m->in.np;
-    double big = 0, lim;
-    for (i = 0; i < n; i++)
-        big = fabs(xy[i]) > big ? fabs(xy[i]) : big;
-    lim = ldexp(big, -180);
-    for (i = 0; i < n; i++) {
-        double a = fabs(xy[i]);
-        char where[CVM__WHERE_LEN];
-        if (a != 0 && a < lim)
-            return cvm__error(&m->ctx, CVM_E_INPUT_DEGENERATE, CVM_ENT_INPUT_POINT, (int64_t)(i / 2),
-                              "%spoint %lld has %c = %.17g, more than 2^180 times smaller than the "
-                              "largest coordinate %.17g: exact predicates cannot span that range; "
-                              "round it to 0 or translate the input",
-                              cvm__src_where(where, sizeof where, &m->in.src_point, i / 2),
-                              point_num(m, (int32_t)(i / 2)), i % 2 ? 'y' : 'x', xy[i], big);
-    }
-    return CVM_OK;
-}
-
-static cvm_status check_segment_chains(cvm_mesh *m);
-
+/* The engine's triangulation of m's input; the input map, markers and
+ * attributes it makes go to m also on failure (dropped with the output). */
 static cvm_status triangulate(cvm_mesh *m)
 {
-    cvm__tri2 *T = &m->tri;
-    size_t i, n = m->in.np, na = m->in.nattr;
-    int32_t *dup_of = NULL;
+    cvm__cdt_input in;
+    cvm__cdt_out out;
+    cvm__cdt_fault f;
     cvm_status s;
-
-    if ((s = check_segments(m)) || (s = check_dynamic_range(m)))
+    if ((s = check_segments(m)))
         return s;
-    if ((s = cvm__tri2_reserve_vertices(T, n)))
-        return s == CVM_E_NOMEM ? cvm__nomem(&m->ctx) : cvm__error(&m->ctx, s, CVM_ENT_NONE, -1, "too many points");
-    for (i = 0; i < n; i++) {
-        int32_t id;
-        if ((s = cvm__tri2_add_vertex(T, m->in.xy + 2 * i, &id)))
-            return cvm__nomem(&m->ctx);
-    }
-    dup_of = cvm__malloc(&m->ctx, n * sizeof *dup_of);
-    m->input_map = cvm__malloc(&m->ctx, n * sizeof *m->input_map);
-    if (!dup_of || !m->input_map) {
-        cvm__free(&m->ctx, dup_of);
-        return cvm__nomem(&m->ctx);
-    }
-    s = cvm__tri2_build(T, (uint64_t)cvm__opt(m, CVM_OPT_SEED), dup_of);
-    if (s) {
-        cvm__free(&m->ctx, dup_of);
-        return s;
-    }
-    m->n_dup = 0;
-    for (i = 0; i < n; i++) {
-        if (dup_of[i] < 0)
-            continue;
-        if (cvm__opt(m, CVM_OPT_REJECT_DUPLICATES) != 0) {
-            const cvm__item_src *src = &m->in.src_point;
-            char where[CVM__WHERE_LEN], also[CVM__WHERE_LEN];
-            s = cvm__error(&m->ctx, CVM_E_INPUT_DUPLICATE, CVM_ENT_INPUT_POINT, (int64_t)i,
-                           "%spoint %lld at (%.17g, %.17g) duplicates point %lld%s",
-                           cvm__src_where(where, sizeof where, src, i), point_num(m, (int32_t)i),
-                           m->in.xy[2 * i], m->in.xy[2 * i + 1], point_num(m, dup_of[i]),
-                           cvm__src_also(also, sizeof also, src, (size_t)dup_of[i], src));
-            cvm__free(&m->ctx, dup_of);
-            return s;
-        }
-        m->n_dup++;
-    }
-    cvm__tri2_compact(T, dup_of, m->input_map);
-    cvm__free(&m->ctx, dup_of);
-    if (cvm__grow_vertex_data(m))
-        return cvm__nomem(&m->ctx);
-    /* first occurrences win: write them last */
-    for (i = n; i-- > 0;) {
-        int32_t v = m->input_map[i];
-        size_t k;
-        m->vmark[v] = m->in.pmark ? m->in.pmark[i] : 0;
-        for (k = 0; k < na; k++)
-            m->vattr[(size_t)v * na + k] = m->in.pattr[i * na + k];
-    }
-    if (m->in.nseg) {
-        if ((s = recover_segments(m)))
-            return s;
-    }
-    if (m->in.nseg || m->in.nholes || m->in.nregions) {
-        if ((s = cvm__mesh_carve(m)))
-            return s;
-    }
-    boundary_vertex_markers(m);
-    /* post-condition, linear in the mesh: never report success on a mesh
-     * that cvm_mesh_check() rejects for a missing segment */
-    return check_segment_chains(m);
+    cvm__mesh_cdt_input(&in, m, &m->in);
+    out.input_map = m->input_map;
+    out.n_dup = m->n_dup;
+    out.vmark = m->vmark;
+    out.vattr = m->vattr;
+    out.cap_vmark = m->cap_vmark;
+    out.cap_vattr = m->cap_vattr;
+    s = cvm__cdt_build(&m->tri, &in, &out, &f);
+    m->input_map = out.input_map;
+    m->n_dup = out.n_dup;
+    m->vmark = out.vmark;
+    m->vattr = out.vattr;
+    m->cap_vmark = out.cap_vmark;
+    m->cap_vattr = out.cap_vattr;
+    return s ? cvm__cdt_fault_message(&m->ctx, &m->in, s, &f) : CVM_OK;
 }
 
 cvm_status cvm_mesh_triangulate(cvm_mesh *m)
@@ -400,96 +254,6 @@ cvm_status cvm_mesh_insert_points(cvm_index *ids_out, cvm_mesh *m, const double 
     return CVM_OK;
 }
 
-/* Whether x may be an inner vertex of the chain of segment a-b: within
- * CVM__CHAIN_SLACK x (M + L) of the segment, M the largest absolute
- * coordinate of a and b, L the length (the rule stated at cvm_mesh_check()).
- * A crossing point is rounded at the scale of M, not of L: segments of length
- * 0.01 near 1e6 put it 1e-8 of L off. Labels are not consulted: an edge
- * stores one segment index, so a piece two segments share, exactly or within
- * rounding, carries only one of them. This is a check of the output, with a
- * stated tolerance; no meshing decision depends on it. */
-#define CVM__CHAIN_SLACK 0x1p-40
-static int on_chain(const cvm__tri2 *T, int32_t x, int32_t a, int32_t b)
-{
-    const double *pa = T->xy + 2 * (size_t)a, *pb = T->xy + 2 * (size_t)b, *px = T->xy + 2 * (size_t)x;
-    double dx = pb[0] - pa[0], dy = pb[1] - pa[1], len = sqrt(dx * dx + dy * dy);
-    double mag = fmax(fmax(fabs(pa[0]), fabs(pa[1])), fmax(fabs(pb[0]), fabs(pb[1])));
-    double tol = CVM__CHAIN_SLACK * (mag + len), along;
-    if (x == b)
-        return 1;
-    if (!(len > 0))
-        return 0;
-    along = ((px[0] - pa[0]) * dx + (px[1] - pa[1]) * dy) / len;
-    if (!(along >= -tol && along <= len + tol))
-        return 0;
-    /* distance x length in plain floating point: its rounding error, about
-     * 2^-51 L |x - a|, is far below the tolerance 2^-40 (M + L) L */
-    return fabs(dx * (px[1] - pa[1]) - dy * (px[0] - pa[0])) <= tol * len;
-}
-
-/* Every input segment must be joined end to end by constrained edges through
- * vertices that on_chain() accepts. A breadth-first search per segment visits
- * each vertex at most once (seen[] holds the last segment that queued it), so
- * the check costs the stars of the chain vertices: linear in the mesh unless
- * many segments overlap. cvm_mesh_triangulate() runs it as its post-condition. */
-static cvm_status check_segment_chains(cvm_mesh *m)
-{
-    cvm__tri2 *T = &m->tri;
-    size_t k;
-    int32_t *seen;
-    cvm_status s = CVM_OK;
-    if (!m->in.nseg)
-        return CVM_OK;
-    seen = cvm__malloc(&m->ctx, (T->nv ? T->nv : 1) * sizeof *seen);
-    if (!seen)
-        return cvm__nomem(&m->ctx);
-    for (k = 0; k < T->nv; k++)
-        seen[k] = -1;
-    for (k = 0; k < m->in.nseg && !s; k++) {
-        int32_t a = m->input_map[m->in.seg[2 * k]], b = m->input_map[m->in.seg[2 * k + 1]];
-        size_t n = 0, head = 0;
-        int found = a == b;
-        if (a < 0 || b < 0)
-            continue; /* an end removed by CVM_OPT_KEEP_SEGMENT_VERTICES = 0: the chain was
-                         re-discretised, its pieces are checked as constrained edges */
-        if (cvm__grow(T->ctx, (void **)&T->stack, &T->cap_stack, 1, sizeof(int32_t))) {
-            s = cvm__nomem(&m->ctx);
-            break;
-        }
-        T->stack[n++] = a;
-        seen[a] = (int32_t)k;
-        while (head < n && !found && !s) {
-            int32_t cur = T->stack[head++], t0 = T->vtri[cur], t = t0;
-            if (t0 < 0)
-                continue;
-            do {
-                const int32_t *v = T->tv + 3 * (size_t)t;
-                int i = v[0] == cur ? 0 : v[1] == cur ? 1 : 2;
-                int32_t x = v[(i + 1) % 3], seg = cvm__tri2_edge_seg(T, t, (i + 2) % 3);
-                t = T->tn[3 * (size_t)t + (i + 1) % 3] / 3;
-                if (x < 0 || seg < 0 || seen[x] == (int32_t)k || !on_chain(T, x, a, b))
-                    continue;
-                if (x == b)
-                    found = 1;
-                if (n + 1 > T->cap_stack &&
-                    cvm__grow(T->ctx, (void **)&T->stack, &T->cap_stack, n + 1, sizeof(int32_t))) {
-                    s = cvm__nomem(&m->ctx);
-                    break;
-                }
-                seen[x] = (int32_t)k;
-                T->stack[n++] = x;
-            } while (t != t0);
-        }
-        if (!found && !s)
-            s = cvm__error(&m->ctx, CVM_E_INTERNAL, CVM_ENT_INPUT_SEGMENT, (int64_t)k,
-                              "check failed: input segment %lu (points %ld-%ld) is not joined end "
-                              "to end by constrained edges",
-                              (unsigned long)k, (long)m->in.seg[2 * k], (long)m->in.seg[2 * k + 1]);
-    }
-    cvm__free(&m->ctx, seen);
-    return s;
-}
-
 cvm_status cvm_mesh_check(cvm_mesh *m)
 {
     const cvm__tri2 *T;
@@ -501,7 +265,8 @@ cvm_status cvm_mesh_check(cvm_mesh *m)
     CVM__BEGIN(m);
     if (!m->triangulated)
         return cvm__error(&m->ctx, CVM_E_STATE, CVM_ENT_NONE, -1, "nothing triangulated");
-    if ((s = cvm__tri2_check(&m->tri)) || (s = check_segment_chains(m)))
+    if ((s = cvm__tri2_check(&m->tri)) ||
+        (s = cvm__cdt_check_chains(&m->tri, m->in.seg, m->in.nseg, m->input_map)))
         return s;
     T = &m->tri;
     /* the domain is bounded by constrained edges or by the convex hull */

@@ -199,6 +199,13 @@ cvm_status cvm__tri2_split_edge(cvm__tri2 *T, int32_t v, int32_t t, int j, cvm__
  * (a duplicate maps to the new id of the vertex it duplicates). */
 void cvm__tri2_compact(cvm__tri2 *T, const int32_t *dup_of, int32_t *map_out);
 
+/* Reorder and rotate the slots of T: slot[k] (k < nfile, distinct live
+ * slots) moves to slot k, rotated so that its vertex at position rot[k]
+ * comes first; the other live slots follow in their order; dead slots are
+ * dropped (the free list is emptied). Neighbour links, constraints,
+ * attributes and vtri follow. CVM_OK or CVM_E_NOMEM (T unchanged). */
+cvm_status cvm__tri2_reorder(cvm__tri2 *T, const int32_t *slot, const uint8_t *rot, size_t nfile);
+
 /* Allocate ta if needed (all 0). */
 cvm_status cvm__tri2_enable_attributes(cvm__tri2 *T);
 
@@ -264,5 +271,103 @@ size_t cvm__tri2_count_unregular(const cvm__tri2 *T, uint8_t *mark);
  * predicates; on failure sets a message naming the failed check and returns
  * CVM_E_INTERNAL. */
 cvm_status cvm__tri2_check(cvm__tri2 *T);
+
+/* ---- a planar straight-line graph to its constrained triangulation (pslg_build.c) ---- */
+
+/* The input of cvm__cdt_build(), borrowed for the call: points with their
+ * markers and attributes, segments (point indices, checked by the caller to
+ * be in range) with their markers, hole points, regions and the options that
+ * decide the result. */
+typedef struct cvm__cdt_input {
+    const double *xy;      /* 2 per point */
+    size_t np;
+    const int32_t *pmark;  /* np, or NULL: markers 0 */
+    const double *pattr;   /* np * nattr, or NULL when nattr = 0 */
+    size_t nattr;
+    const int32_t *seg;    /* 2 per segment, 0-based point indices */
+    size_t nseg;
+    const int32_t *smark;  /* nseg, or NULL: every segment has marker 1 */
+    const double *holes;   /* 2 per hole point */
+    size_t nholes;
+    const double *regions; /* 4 per region: x, y, attribute, max area */
+    size_t nregions;
+    uint64_t seed;         /* insertion order (CVM_OPT_SEED) */
+    int reject_duplicates; /* a repeated point is an error, not merged */
+    int split;             /* crossing segments are split at the crossing, not an error */
+    int keep_hull;         /* segments do not carve the exterior away */
+} cvm__cdt_input;
+
+/* What cvm__cdt_build() makes besides the triangulation; the arrays are
+ * allocated through the triangulation's ctx and owned by the caller, who
+ * frees them also after an error. vmark and vattr are grown in place (they
+ * may hold an earlier allocation of capacity cap_vmark, cap_vattr). */
+typedef struct cvm__cdt_out {
+    int32_t *input_map; /* np: input point -> vertex (a duplicate: its first occurrence's) */
+    size_t n_dup;       /* input points merged into an earlier one */
+    int32_t *vmark;     /* marker per vertex */
+    double *vattr;      /* nattr per vertex, or NULL when nattr = 0 */
+    size_t cap_vmark, cap_vattr;
+} cvm__cdt_out;
+
+/* An error of cvm__cdt_build() or cvm__cdt_carve() caused by one input item:
+ * returned without a message, for the caller to name the items in its terms. */
+typedef enum cvm__cdt_fault_kind {
+    CVM__CDT_FAULT_NONE = 0,
+    CVM__CDT_FAULT_RANGE,          /* point item: coordinate axis is nonzero and more than
+                                      2^180 times smaller than big (CVM_E_INPUT_DEGENERATE) */
+    CVM__CDT_FAULT_DUPLICATE,      /* point item lies at point other (CVM_E_INPUT_DUPLICATE) */
+    CVM__CDT_FAULT_ZERO_LENGTH,    /* segment item has coinciding ends (CVM_E_INPUT_DEGENERATE) */
+    CVM__CDT_FAULT_CROSSING,       /* segment item crosses segment other
+                                      (CVM_E_INPUT_INTERSECTING) */
+    CVM__CDT_FAULT_HOLE_OUTSIDE,   /* hole item outside the hull (CVM_E_INPUT_OUTSIDE) */
+    CVM__CDT_FAULT_HOLE_ALL,       /* hole item removed the whole domain (CVM_E_INPUT_NOT_CLOSED) */
+    CVM__CDT_FAULT_REGION_OUTSIDE  /* region item outside the domain (CVM_E_INPUT_OUTSIDE) */
+} cvm__cdt_fault_kind;
+
+typedef struct cvm__cdt_fault {
+    cvm__cdt_fault_kind kind;
+    size_t item, other; /* 0-based indices into the input's points, segments, holes, regions */
+    int axis;           /* CVM__CDT_FAULT_RANGE: 0 x, 1 y */
+    double big;         /* CVM__CDT_FAULT_RANGE: the largest absolute coordinate */
+} cvm__cdt_fault;
+
+/* Triangulate in into T (empty, its ctx the allocator and run control): the
+ * Delaunay triangulation of the distinct points, the segments recovered as
+ * constrained edges, the exterior (unless keep_hull or there are no
+ * segments) and the holes carved, the regional attributes flooded; markers
+ * and attributes of every vertex (first occurrences win; a vertex created on
+ * a segment takes the segment's marker and the attributes interpolated
+ * between its ends; a vertex of marker 0 on a segment takes the segment's
+ * marker); then every segment is checked to be a chain of constrained edges
+ * (cvm__cdt_check_chains). Returns CVM_OK; an input error with *fault set and
+ * no message; CVM_E_INPUT_NOT_CLOSED, CVM_E_TOO_LARGE, CVM_E_NOMEM,
+ * CVM_E_INTERNAL, CVM_INCOMPLETE_* (time limit, cancelled) and the errors of
+ * cvm__tri2_build() with their message. After an error T and out hold a
+ * partial result, to be dropped. */
+cvm_status cvm__cdt_build(cvm__tri2 *T, const cvm__cdt_input *in, cvm__cdt_out *out,
+                          cvm__cdt_fault *fault);
+
+/* The carving step of cvm__cdt_build() alone, on a triangulation whose
+ * segments are recovered: exterior, holes, regions of in (points, segments
+ * and markers are not read, except nseg). Errors as cvm__cdt_build(). */
+cvm_status cvm__cdt_carve(cvm__tri2 *T, const cvm__cdt_input *in, cvm__cdt_fault *fault);
+
+/* Every input segment seg[2k], seg[2k+1] (point indices, mapped to vertices
+ * by input_map; a segment with an end mapped to -1 is skipped) is joined end
+ * to end by constrained edges through vertices within a rounding tolerance
+ * of it. CVM_OK, CVM_E_INTERNAL (message names the segment), CVM_E_NOMEM. */
+cvm_status cvm__cdt_check_chains(cvm__tri2 *T, const int32_t *seg, size_t nseg,
+                                 const int32_t *input_map);
+
+/* Marker of segment seg: smark[seg], 1 when smark is NULL; 0 for seg < 0 or
+ * seg >= nseg (a convex-hull edge). */
+int32_t cvm__cdt_segment_marker(const int32_t *smark, size_t nseg, int32_t seg);
+
+/* Marker and attributes of a point p on segment seg of in: the segment's
+ * marker into *mark, and into attr (in->nattr values) the attributes of its
+ * ends interpolated by the projection of p, clamped to the segment; for seg
+ * outside the segments only *mark (0) is written. */
+void cvm__cdt_segment_point(const cvm__cdt_input *in, const double *p, int32_t seg,
+                            int32_t *mark, double *attr);
 
 #endif

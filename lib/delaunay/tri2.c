@@ -240,3 +240,73 @@ int cvm__tri2_find_edge(const cvm__tri2 *T, int32_t a, int32_t b, int32_t *t_out
     } while (t != t0 && ++steps <= T->nt);
     return 0;
 }
+
+/* The whole slot table is rebuilt from copies, so slot[] may name the slots
+ * in any order. */
+cvm_status cvm__tri2_reorder(cvm__tri2 *T, const int32_t *slot, const uint8_t *rotk, size_t nfile)
+{
+    cvm__ctx *ctx = T->ctx;
+    size_t nt = T->nt, t, n = 0, v;
+    int32_t *newof = cvm__malloc(ctx, (nt + 1) * sizeof *newof);
+    uint8_t *rot = cvm__calloc(ctx, nt + 1, 1);
+    int32_t *otv = cvm__malloc(ctx, (3 * nt + 1) * sizeof *otv);
+    int32_t *otn = cvm__malloc(ctx, (3 * nt + 1) * sizeof *otn);
+    int32_t *ote = T->te ? cvm__malloc(ctx, (3 * nt + 1) * sizeof *ote) : NULL;
+    uint8_t *otf = cvm__malloc(ctx, nt + 1);
+    double *ota = T->ta ? cvm__malloc(ctx, (nt + 1) * sizeof *ota) : NULL;
+    cvm_status s = CVM_OK;
+    if (!newof || !rot || !otv || !otn || (T->te && !ote) || !otf || (T->ta && !ota)) {
+        s = CVM_E_NOMEM;
+        goto out;
+    }
+    memcpy(otv, T->tv, 3 * nt * sizeof *otv);
+    memcpy(otn, T->tn, 3 * nt * sizeof *otn);
+    if (ote)
+        memcpy(ote, T->te, 3 * nt * sizeof *ote);
+    memcpy(otf, T->tf, nt);
+    if (ota)
+        memcpy(ota, T->ta, nt * sizeof *ota);
+    for (t = 0; t < nt; t++)
+        newof[t] = -1;
+    for (t = 0; t < nfile; t++) {
+        newof[slot[t]] = (int32_t)n++;
+        rot[slot[t]] = rotk[t];
+    }
+    for (t = 0; t < nt; t++)
+        if (newof[t] < 0 && !(otf[t] & CVM__TF_DEAD))
+            newof[t] = (int32_t)n++;
+    for (t = 0; t < nt; t++) {
+        size_t ns = (size_t)newof[t];
+        int j;
+        if (newof[t] < 0)
+            continue;
+        for (j = 0; j < 3; j++) {
+            size_t o = 3 * t + (size_t)(j + rot[t]) % 3;
+            int32_t a = otn[o];
+            T->tv[3 * ns + (size_t)j] = otv[o];
+            T->tn[3 * ns + (size_t)j] =
+                a < 0 ? a : 3 * newof[a / 3] + (a % 3 - rot[a / 3] + 3) % 3;
+            if (ote)
+                T->te[3 * ns + (size_t)j] = ote[o];
+        }
+        T->tf[ns] = otf[t];
+        if (ota)
+            T->ta[ns] = ota[t];
+    }
+    for (v = 0; v < T->nv; v++)
+        if (T->vtri[v] >= 0)
+            T->vtri[v] = newof[T->vtri[v]];
+    T->nt = n;
+    T->free_head = -1;
+    T->n_dead = 0;
+    T->last = 0;
+out:
+    cvm__free(ctx, newof);
+    cvm__free(ctx, rot);
+    cvm__free(ctx, otv);
+    cvm__free(ctx, otn);
+    cvm__free(ctx, ote);
+    cvm__free(ctx, otf);
+    cvm__free(ctx, ota);
+    return s;
+}

@@ -7,6 +7,7 @@
 TCase *delaunay_build_tcase(void);
 TCase *delaunay_cdt_tcase(void);
 TCase *delaunay_insert_tcase(void);
+TCase *delaunay_pslg_build_tcase(void);
 
 /* Fetch the triangles of m (caller frees), count in *nt. */
 cvm_index *dtest_triangles(cvm_mesh *m, size_t *nt);

@@ -8,5 +8,6 @@ Suite *delaunay_suite(void)
     suite_add_tcase(s, delaunay_build_tcase());
     suite_add_tcase(s, delaunay_cdt_tcase());
     suite_add_tcase(s, delaunay_insert_tcase());
+    suite_add_tcase(s, delaunay_pslg_build_tcase());
     return s;
 }
