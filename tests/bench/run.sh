@@ -13,9 +13,7 @@ VENV="$BUILD/venv"
 if [ ! -x "$VENV/bin/python" ]; then
     python3 -m venv "$VENV"
 fi
-"$VENV/bin/python" -c 'import importlib.util as u, sys
-sys.exit(not all(u.find_spec(m) for m in ("numpy", "scipy", "triangle", "gmsh")))' ||
-    "$VENV/bin/pip" install -q numpy scipy triangle gmsh
+"$VENV/bin/python" -m pip install -q --disable-pip-version-check -r tests/bench/requirements.txt
 # The gmsh wheel loads X11/GL libraries even when run headless; on bare Debian
 # install them (root only), else say what is missing and let bench_refine.py
 # skip the gmsh rows.

@@ -432,8 +432,7 @@ OUT=$TMP/tlimit
 mkdir -p "$OUT"
 expect_exit 0 "triangulate --help: time limit" "$CLI" triangulate --help
 expect_grep "triangulate --help: time limit" "$TMP/out" "--time-limit bounds the whole command"
-if command -v python3 > /dev/null 2>&1; then
-    python3 "$HERE/../bench/hole_grid.py" 30 "$OUT/grid.poly"
+if "$PY" "$HERE/../bench/hole_grid.py" 30 "$OUT/grid.poly"; then
     # a stopped triangulation writes nothing and says where it stopped
     expect_exit 1 "triangulate stopped by --time-limit" "$CLI" triangulate "$OUT/grid.poly" \
         --time-limit 0.000001 -o "$OUT/t.vtu"
@@ -444,6 +443,8 @@ if command -v python3 > /dev/null 2>&1; then
         -o "$OUT/g.vtu"
     expect_exit 0 "the hole grid's mesh reads back" "$CLI" triangulate "$OUT/g.vtu" -o "$OUT/g2.vtu"
     if cmp -s "$OUT/g.vtu" "$OUT/g2.vtu"; then pass; else fail "the hole grid's .vtu rewrites differently"; fi
+else
+    fail "hole_grid.py could not write the hole grid"
 fi
 # a stopped refinement writes its valid mesh and says so
 expect_exit 0 "refine stopped by --time-limit" "$CLI" refine "$DOMAINS/square.poly" --size 0.01 \
