@@ -17,32 +17,30 @@ static cvm_status check_dim(cvm_sizing *s, int dim, const char *call)
                       "%s: dim must be 2 (or 3 once the 3D kernel exists), got %d", call, dim);
 }
 
-cvm_status cvm_sizing_add_point_source_nd(cvm_sizing *s, const double *x, int dim, double h,
-                                          double growth)
+/* The checks the positional calls below start with: a handle (whose message is then cleared),
+ * the array x (named name in the message), dim. */
+static cvm_status begin_nd(cvm_sizing *s, const double *x, const char *name, int dim, const char *call)
 {
-    cvm_status st;
     if (!s)
         return CVM_E_NULL_ARG;
     cvm__clear_error(&s->ctx);
     if (!x)
-        return cvm__error(&s->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "x is NULL");
-    if ((st = check_dim(s, dim, "cvm_sizing_add_point_source_nd")))
-        return st;
-    return cvm_sizing_add_point_source(s, x[0], x[1], h, growth);
+        return cvm__error(&s->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "%s is NULL", name);
+    return check_dim(s, dim, call);
+}
+
+cvm_status cvm_sizing_add_point_source_nd(cvm_sizing *s, const double *x, int dim, double h,
+                                          double growth)
+{
+    cvm_status st = begin_nd(s, x, "x", dim, "cvm_sizing_add_point_source_nd");
+    return st ? st : cvm_sizing_add_point_source(s, x[0], x[1], h, growth);
 }
 
 cvm_status cvm_sizing_add_line_source_nd(cvm_sizing *s, const double *ends, int dim, double h,
                                          double growth)
 {
-    cvm_status st;
-    if (!s)
-        return CVM_E_NULL_ARG;
-    cvm__clear_error(&s->ctx);
-    if (!ends)
-        return cvm__error(&s->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "ends is NULL");
-    if ((st = check_dim(s, dim, "cvm_sizing_add_line_source_nd")))
-        return st;
-    return cvm_sizing_add_line_source(s, ends[0], ends[1], ends[2], ends[3], h, growth);
+    cvm_status st = begin_nd(s, ends, "ends", dim, "cvm_sizing_add_line_source_nd");
+    return st ? st : cvm_sizing_add_line_source(s, ends[0], ends[1], ends[2], ends[3], h, growth);
 }
 
 cvm_status cvm_sizing_set_callback_nd(cvm_sizing *s, cvm_sizing_nd_fn fn, void *payload)
@@ -59,14 +57,10 @@ cvm_status cvm_sizing_set_callback_nd(cvm_sizing *s, cvm_sizing_nd_fn fn, void *
 cvm_status cvm_sizing_eval_nd(double *out, cvm_sizing *s, const double *x, int dim)
 {
     cvm_status st;
-    if (!out || !s)
+    if (!out)
         return CVM_E_NULL_ARG;
-    cvm__clear_error(&s->ctx);
-    if (!x)
-        return cvm__error(&s->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "x is NULL");
-    if ((st = check_dim(s, dim, "cvm_sizing_eval_nd")))
-        return st;
-    return cvm_sizing_eval(out, s, x[0], x[1]);
+    st = begin_nd(s, x, "x", dim, "cvm_sizing_eval_nd");
+    return st ? st : cvm_sizing_eval(out, s, x[0], x[1]);
 }
 
 cvm_status cvm_sizing_set_metric_fn(cvm_sizing *s, cvm_metric_fn fn, int has_derivatives,
