@@ -208,25 +208,6 @@ static int run(const fuzz_pslg *g, const options *op, output *o, int validate_it
     return 1;
 }
 
-/* Smallest angle of triangle (a, b, c) in degrees, each corner by atan2. */
-static double min_angle(const double *a, const double *b, const double *c)
-{
-    const double *p[3];
-    double best = 180.0;
-    int k;
-    p[0] = a;
-    p[1] = b;
-    p[2] = c;
-    for (k = 0; k < 3; k++) {
-        const double *o = p[k], *u = p[(k + 1) % 3], *w = p[(k + 2) % 3];
-        double ux = u[0] - o[0], uy = u[1] - o[1], wx = w[0] - o[0], wy = w[1] - o[1];
-        double ang = atan2(fabs(ux * wy - uy * wx), ux * wx + uy * wy) * DEG;
-        if (ang < best)
-            best = ang;
-    }
-    return best;
-}
-
 static double dist(const double *a, const double *b)
 {
     return hypot(a[0] - b[0], a[1] - b[1]);
@@ -370,7 +351,7 @@ static void check_report(const fuzz_pslg *g, const options *op, const output *o)
                 u++;
             }
         }
-        ang = min_angle(p[0], p[1], p[2]);
+        ang = cvmtest_tri_min_angle_deg(p[0], p[1], p[2]);
         l0 = dist(p[1], p[2]);
         l1 = dist(p[2], p[0]);
         l2 = dist(p[0], p[1]);
