@@ -5,28 +5,16 @@
 /* The dimension of every handle until the 3D kernel sets points of dim 3. */
 #define MESH_DIM 2
 
-/* A setter's dim must be the mesh's: 3 waits for the 3D kernel, anything else is no dimension. */
-static cvm_status check_dim(cvm_mesh *m, int dim, const char *call)
-{
-    if (dim == MESH_DIM)
-        return CVM_OK;
-    if (dim == 3)
-        return cvm__error(&m->ctx, CVM_E_UNSUPPORTED, CVM_ENT_NONE, -1,
-                          "%s: dim 3 is not supported yet (the 3D kernel is not in this version)",
-                          call);
-    return cvm__error(&m->ctx, CVM_E_ARGUMENT, CVM_ENT_NONE, -1,
-                      "%s: dim must be 2 (or 3 once the 3D kernel exists), got %d", call, dim);
-}
-
-/* The checks every setter below starts with (cvm__mesh_begin_set()), then its dim. */
+/* The checks every setter below starts with (cvm__mesh_begin_set()), then its dim, which must
+ * be the mesh's (cvm__check_dim()). */
 static cvm_status begin_nd(cvm_mesh *m, const double *items, size_t count, const char *name, int dim,
                            const char *call)
 {
     cvm_status s = cvm__mesh_begin_set(m, items, count, name);
-    return s ? s : check_dim(m, dim, call);
+    return s ? s : cvm__check_dim(&m->ctx, dim, call);
 }
 
-/* The same for the const readers, which record no message. */
+/* The statuses of cvm__check_dim() for the const readers, which record no message. */
 static cvm_status check_dim_const(int dim)
 {
     return dim == MESH_DIM ? CVM_OK : dim == 3 ? CVM_E_UNSUPPORTED : CVM_E_ARGUMENT;
