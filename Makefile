@@ -85,7 +85,7 @@ FUZZ_CHECK_TARGETS := poly_read node_read cdt vtu_read
 FUZZ_BINS := $(FUZZ_TARGETS:%=$(BUILD)/fuzz/fuzz_%)
 REPLAY_BINS := $(FUZZ_TARGETS:%=$(BUILD)/fuzz/replay_%)
 FUZZ_SUPPORT_OBJ := $(BUILD)/obj/tests/fuzz/mesh_oracle.o $(BUILD)/obj/tests/fuzz/fuzz_input.o \
-                    $(BUILD)/obj/tests/fuzz/fuzz_pslg.o \
+                    $(BUILD)/obj/tests/fuzz/fuzz_pslg.o $(BUILD)/obj/tests/fuzz/fuzz_run.o \
                     $(BUILD)/obj/tests/unit/support/failing_alloc.o
 
 # Build steps of make check run with -j$(JOBS) unless make was given -j.
@@ -153,7 +153,8 @@ $(BUILD)/fuzz/replay_%: $(BUILD)/obj/tests/fuzz/fuzz_%.o $(BUILD)/obj/tests/fuzz
 
 # Keep the objects of the fuzz programs (make would delete them as intermediates).
 .SECONDARY: $(FUZZ_TARGETS:%=$(BUILD)/obj/tests/fuzz/fuzz_%.o) $(BUILD)/obj/tests/fuzz/regression_driver.o \
-            $(BUILD)/obj/tests/fuzz/fuzz_input.o $(BUILD)/obj/tests/fuzz/fuzz_pslg.o
+            $(BUILD)/obj/tests/fuzz/fuzz_input.o $(BUILD)/obj/tests/fuzz/fuzz_pslg.o \
+            $(BUILD)/obj/tests/fuzz/fuzz_run.o
 
 fuzz-bins: $(FUZZ_BINS)
 replay-bins: $(REPLAY_BINS)

@@ -105,6 +105,11 @@ double cvm__opt(const cvm_mesh *m, cvm_option key);
 #define CVM__BEGIN(m) (cvm__clear_error(&(m)->ctx), (void)((m)->quality.have = 0))
 #define CVM__BEGIN_READ(m) cvm__clear_error(&(m)->ctx)
 
+/* The start of a setter taking count items at items: CVM_E_NULL_ARG without m; else
+ * CVM__BEGIN(m), and CVM_E_NULL_ARG with the message "<name> is NULL" when items is NULL
+ * but count is not 0; CVM_OK otherwise. */
+cvm_status cvm__mesh_begin_set(cvm_mesh *m, const void *items, size_t count, const char *name);
+
 /* The triangle holding point p (a hole or region seed), or -1 outside the triangulation. */
 int32_t cvm__mesh_seed_triangle(cvm_mesh *m, const double *p);
 

@@ -272,17 +272,7 @@ static cvm_status write_dual_to_set(cvm_mesh *m, const char *path, cvm__write_se
 
 cvm_status cvm_mesh_write_dual(cvm_mesh *m, const char *path)
 {
-    cvm__write_set ws;
-    cvm_status s;
-    if (!m)
-        return CVM_E_NULL_ARG;
-    CVM__BEGIN(m);
-    cvm__write_set_init(&ws, &m->ctx);
-    if ((s = write_dual_to_set(m, path, &ws))) {
-        cvm__write_set_discard(&ws);
-        return s;
-    }
-    return cvm__write_set_commit(&ws);
+    return cvm__mesh_write_now(m, path, write_dual_to_set);
 }
 
 cvm_status cvm_mesh_stage_write_dual(cvm_mesh *m, const char *path)

@@ -146,15 +146,22 @@ static cvm_status copy_finite(cvm_mesh *m, double **dst, const double *src, size
     return CVM_OK;
 }
 
+cvm_status cvm__mesh_begin_set(cvm_mesh *m, const void *items, size_t count, const char *name)
+{
+    if (!m)
+        return CVM_E_NULL_ARG;
+    CVM__BEGIN(m);
+    if (!items && count > 0)
+        return cvm__error(&m->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "%s is NULL", name);
+    return CVM_OK;
+}
+
 cvm_status cvm_mesh_set_points(cvm_mesh *m, const double *coords, size_t count, int dim)
 {
     double *p = NULL;
     cvm_status s;
-    if (!m)
-        return CVM_E_NULL_ARG;
-    CVM__BEGIN(m);
-    if (!coords && count > 0)
-        return cvm__error(&m->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "coords is NULL");
+    if ((s = cvm__mesh_begin_set(m, coords, count, "coords")))
+        return s;
     if (dim != 2 && dim != 3)
         return cvm__error(&m->ctx, CVM_E_ARGUMENT, CVM_ENT_NONE, -1,
                           "dim must be 2 (or 3 in a later version), got %d", dim);
@@ -239,11 +246,9 @@ cvm_status cvm_mesh_set_point_attributes(cvm_mesh *m, const double *attrs, size_
 cvm_status cvm_mesh_set_segments(cvm_mesh *m, const cvm_index *segs, size_t count)
 {
     int32_t *p;
-    if (!m)
-        return CVM_E_NULL_ARG;
-    CVM__BEGIN(m);
-    if (!segs && count > 0)
-        return cvm__error(&m->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "segs is NULL");
+    cvm_status s;
+    if ((s = cvm__mesh_begin_set(m, segs, count, "segs")))
+        return s;
     if (count > (size_t)INT32_MAX / 4)
         return cvm__error(&m->ctx, CVM_E_TOO_LARGE, CVM_ENT_INPUT_SEGMENT, -1, "too many segments");
     p = NULL;
@@ -294,11 +299,8 @@ cvm_status cvm_mesh_set_holes(cvm_mesh *m, const double *xy, size_t count)
 {
     double *p = NULL;
     cvm_status s;
-    if (!m)
-        return CVM_E_NULL_ARG;
-    CVM__BEGIN(m);
-    if (!xy && count > 0)
-        return cvm__error(&m->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "xy is NULL");
+    if ((s = cvm__mesh_begin_set(m, xy, count, "xy")))
+        return s;
     if ((s = copy_finite(m, &p, xy ? xy : (const double *)&m->opt[0], count, 2, CVM_ENT_HOLE, "hole")))
         return s;
     cvm__free(&m->ctx, m->in.holes);
@@ -313,11 +315,8 @@ cvm_status cvm_mesh_set_regions(cvm_mesh *m, const double *r, size_t count)
 {
     double *p = NULL;
     cvm_status s;
-    if (!m)
-        return CVM_E_NULL_ARG;
-    CVM__BEGIN(m);
-    if (!r && count > 0)
-        return cvm__error(&m->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "r is NULL");
+    if ((s = cvm__mesh_begin_set(m, r, count, "r")))
+        return s;
     if ((s = copy_finite(m, &p, r ? r : (const double *)&m->opt[0], count, 4, CVM_ENT_REGION, "region")))
         return s;
     cvm__free(&m->ctx, m->in.regions);

@@ -5,20 +5,16 @@
 /* The dimension of every handle until the 3D kernel sets points of dim 3. */
 #define MESH_DIM 2
 
-/* A setter's dim must be the mesh's: 3 waits for the 3D kernel, anything else is no dimension. */
-static cvm_status check_dim(cvm_mesh *m, int dim, const char *call)
+/* The checks every setter below starts with (cvm__mesh_begin_set()), then its dim, which must
+ * be the mesh's (cvm__check_dim()). */
+static cvm_status begin_nd(cvm_mesh *m, const double *items, size_t count, const char *name, int dim,
+                           const char *call)
 {
-    if (dim == MESH_DIM)
-        return CVM_OK;
-    if (dim == 3)
-        return cvm__error(&m->ctx, CVM_E_UNSUPPORTED, CVM_ENT_NONE, -1,
-                          "%s: dim 3 is not supported yet (the 3D kernel is not in this version)",
-                          call);
-    return cvm__error(&m->ctx, CVM_E_ARGUMENT, CVM_ENT_NONE, -1,
-                      "%s: dim must be 2 (or 3 once the 3D kernel exists), got %d", call, dim);
+    cvm_status s = cvm__mesh_begin_set(m, items, count, name);
+    return s ? s : cvm__check_dim(&m->ctx, dim, call);
 }
 
-/* The same for the const readers, which record no message. */
+/* The statuses of cvm__check_dim() for the const readers, which record no message. */
 static cvm_status check_dim_const(int dim)
 {
     return dim == MESH_DIM ? CVM_OK : dim == 3 ? CVM_E_UNSUPPORTED : CVM_E_ARGUMENT;
@@ -34,42 +30,21 @@ cvm_status cvm_mesh_dim(int32_t *out, const cvm_mesh *m)
 
 cvm_status cvm_mesh_set_holes_nd(cvm_mesh *m, const double *coords, size_t count, int dim)
 {
-    cvm_status s;
-    if (!m)
-        return CVM_E_NULL_ARG;
-    CVM__BEGIN(m);
-    if (!coords && count > 0)
-        return cvm__error(&m->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "coords is NULL");
-    if ((s = check_dim(m, dim, "cvm_mesh_set_holes_nd")))
-        return s;
-    return cvm_mesh_set_holes(m, coords, count);
+    cvm_status s = begin_nd(m, coords, count, "coords", dim, "cvm_mesh_set_holes_nd");
+    return s ? s : cvm_mesh_set_holes(m, coords, count);
 }
 
 cvm_status cvm_mesh_set_regions_nd(cvm_mesh *m, const double *r, size_t count, int dim)
 {
-    cvm_status s;
-    if (!m)
-        return CVM_E_NULL_ARG;
-    CVM__BEGIN(m);
-    if (!r && count > 0)
-        return cvm__error(&m->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "r is NULL");
-    if ((s = check_dim(m, dim, "cvm_mesh_set_regions_nd")))
-        return s;
-    return cvm_mesh_set_regions(m, r, count); /* 2D: dim + 2 = 4 values per region */
+    cvm_status s = begin_nd(m, r, count, "r", dim, "cvm_mesh_set_regions_nd");
+    return s ? s : cvm_mesh_set_regions(m, r, count); /* 2D: dim + 2 = 4 values per region */
 }
 
 cvm_status cvm_mesh_insert_points_nd(cvm_index *ids_out, cvm_mesh *m, const double *coords,
                                      size_t count, int dim, double min_dist)
 {
-    cvm_status s;
-    if (!m)
-        return CVM_E_NULL_ARG;
-    CVM__BEGIN(m);
-    if (!coords && count > 0)
-        return cvm__error(&m->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "coords is NULL");
-    if ((s = check_dim(m, dim, "cvm_mesh_insert_points_nd")))
-        return s;
-    return cvm_mesh_insert_points(ids_out, m, coords, count, min_dist);
+    cvm_status s = begin_nd(m, coords, count, "coords", dim, "cvm_mesh_insert_points_nd");
+    return s ? s : cvm_mesh_insert_points(ids_out, m, coords, count, min_dist);
 }
 
 cvm_status cvm_mesh_copy_points_nd(double *dst, size_t dst_len, int dim, const cvm_mesh *m)

@@ -137,7 +137,7 @@ static cvm_status write_to_set(cvm_mesh *m, const char *path, cvm__write_set *ws
     return s;
 }
 
-cvm_status cvm_mesh_write(cvm_mesh *m, const char *path)
+cvm_status cvm__mesh_write_now(cvm_mesh *m, const char *path, cvm__mesh_write_fn write)
 {
     cvm__write_set ws;
     cvm_status s;
@@ -145,11 +145,16 @@ cvm_status cvm_mesh_write(cvm_mesh *m, const char *path)
         return CVM_E_NULL_ARG;
     CVM__BEGIN(m);
     cvm__write_set_init(&ws, &m->ctx);
-    if ((s = write_to_set(m, path, &ws))) {
+    if ((s = write(m, path, &ws))) {
         cvm__write_set_discard(&ws);
         return s;
     }
     return cvm__write_set_commit(&ws);
+}
+
+cvm_status cvm_mesh_write(cvm_mesh *m, const char *path)
+{
+    return cvm__mesh_write_now(m, path, write_to_set);
 }
 
 cvm_status cvm__mesh_stage_settle(cvm_mesh *m, cvm_status s)

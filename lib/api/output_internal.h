@@ -55,6 +55,14 @@ cvm_status cvm__dual_edge_ends(cvm__ctx *ctx, const cvm__tri2 *T, const cvm__edg
  * (no message). */
 cvm_status cvm__dual_cells(cvm__ctx *ctx, const cvm__tri2 *T, int32_t *off, double *xy);
 
+/* Writes of the files of path into a write set (the staged one or a fresh one). */
+typedef cvm_status (*cvm__mesh_write_fn)(cvm_mesh *m, const char *path, cvm__write_set *ws);
+
+/* A cvm_mesh_write*() call: CVM_E_NULL_ARG without m; else CVM__BEGIN(m), write(m, path)
+ * into a fresh write set, then commit it, or discard it when write fails. Returns the
+ * first failing status. */
+cvm_status cvm__mesh_write_now(cvm_mesh *m, const char *path, cvm__mesh_write_fn write);
+
 /* The end of a cvm_mesh_stage_write*() call that returns s: on an error or
  * cancellation every staged write of m is discarded. Returns s. */
 cvm_status cvm__mesh_stage_settle(cvm_mesh *m, cvm_status s);

@@ -65,6 +65,10 @@ cvm_status cvm__error(cvm__ctx *ctx, cvm_status s, cvm_entity kind, int64_t inde
 void cvm__escape_text(char *dst, size_t cap, const char *src);
 /* Out of memory with a standard message. */
 cvm_status cvm__nomem(cvm__ctx *ctx);
+/* The dim argument of the dimension-generic (_nd) call named call: CVM_OK for 2 (the only
+ * kernel yet), else an error with a message: CVM_E_UNSUPPORTED for 3 (the 3D kernel is not
+ * in this version), CVM_E_ARGUMENT for anything else. */
+cvm_status cvm__check_dim(cvm__ctx *ctx, int dim, const char *call);
 /* Forget the last error: called at the start of every public call. */
 void cvm__clear_error(cvm__ctx *ctx);
 

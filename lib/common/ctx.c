@@ -159,6 +159,18 @@ cvm_status cvm__nomem(cvm__ctx *ctx)
     return cvm__error(ctx, CVM_E_NOMEM, CVM_ENT_NONE, -1, "out of memory");
 }
 
+cvm_status cvm__check_dim(cvm__ctx *ctx, int dim, const char *call)
+{
+    if (dim == 2)
+        return CVM_OK;
+    if (dim == 3)
+        return cvm__error(ctx, CVM_E_UNSUPPORTED, CVM_ENT_NONE, -1,
+                          "%s: dim 3 is not supported yet (the 3D kernel is not in this version)",
+                          call);
+    return cvm__error(ctx, CVM_E_ARGUMENT, CVM_ENT_NONE, -1,
+                      "%s: dim must be 2 (or 3 once the 3D kernel exists), got %d", call, dim);
+}
+
 void cvm__clear_error(cvm__ctx *ctx)
 {
     ctx->status = CVM_OK;

@@ -160,6 +160,22 @@ static size_t layout(char *buf, int neg, uint64_t d, int n, int exp10, int prec)
     return len;
 }
 
+/* layout() of D, the prec digits of x rounded, times 10^(exp10 - prec + 1): a
+ * round-up to 10^prec carries into the exponent, trailing zeros are dropped. */
+static size_t layout_rounded(char *buf, int neg, uint64_t D, int exp10, int prec)
+{
+    int n = prec;
+    if (D == POW10_U64[prec]) {
+        D /= 10;
+        exp10++;
+    }
+    while (n > 1 && D % 10 == 0) {
+        D /= 10;
+        n--;
+    }
+    return layout(buf, neg, D, n, exp10, prec);
+}
+
 /* The integers from 10^17 to below 2^123: v = m * 2^e is formed exactly, so
  * every rounding and round-trip decision is exact here too, where the
  * inexact table entries for negative powers would leave the frequent exact
@@ -174,7 +190,7 @@ static size_t format_big_int(char *buf, int neg, uint64_t m, int e, int pow2)
         e10++;
     }
     for (prec = 15; prec <= 17; prec++) {
-        int t, n = prec, exp10 = e10;
+        int t;
         uint64_t D;
         u128 r;
         for (t = 0, div = 1; t < e10 - prec + 1; t++)
@@ -189,15 +205,7 @@ static size_t format_big_int(char *buf, int neg, uint64_t m, int e, int pow2)
             if (diff2 > bound2 || (diff2 == bound2 && (m & 1)))
                 continue;
         }
-        if (D == POW10_U64[prec]) {
-            D /= 10;
-            exp10++;
-        }
-        while (n > 1 && D % 10 == 0) {
-            D /= 10;
-            n--;
-        }
-        return layout(buf, neg, D, n, exp10, prec);
+        return layout_rounded(buf, neg, D, e10, prec);
     }
     return 0;
 }
@@ -253,7 +261,6 @@ size_t cvm__format_double_fast(char *buf, double x)
     for (prec = 15; prec <= 17; prec++) {
         uint64_t d = POW10_U64[17 - prec], D = Iv[prec - 15];
         u128 rem = ((u128)(I - D * d) << 64) | F, half = (u128)d << 63, C, diff;
-        int n = prec, exp10 = e10;
         if (rem == half && exact) {
             D += D & 1; /* a tie: to even, as printf rounds to nearest */
         } else {
@@ -276,15 +283,7 @@ size_t cvm__format_double_fast(char *buf, double x)
                     continue; /* does not read back to x */
             }
         }
-        if (D == POW10_U64[prec]) {
-            D /= 10;
-            exp10++;
-        }
-        while (n > 1 && D % 10 == 0) {
-            D /= 10;
-            n--;
-        }
-        return layout(buf, neg, D, n, exp10, prec);
+        return layout_rounded(buf, neg, D, e10, prec);
     }
     return 0;
 }

@@ -4,45 +4,30 @@
 
 #include "refine_internal.h"
 
-/* dim must be 2: 3 waits for the 3D kernel, anything else is not a dimension. */
-static cvm_status check_dim(cvm_sizing *s, int dim, const char *call)
+/* The checks the positional calls below start with: a handle (whose message is then cleared),
+ * the array x (named name in the message), dim. */
+static cvm_status begin_nd(cvm_sizing *s, const double *x, const char *name, int dim, const char *call)
 {
-    if (dim == 2)
-        return CVM_OK;
-    if (dim == 3)
-        return cvm__error(&s->ctx, CVM_E_UNSUPPORTED, CVM_ENT_NONE, -1,
-                          "%s: dim 3 is not supported yet (the 3D kernel is not in this version)",
-                          call);
-    return cvm__error(&s->ctx, CVM_E_ARGUMENT, CVM_ENT_NONE, -1,
-                      "%s: dim must be 2 (or 3 once the 3D kernel exists), got %d", call, dim);
+    if (!s)
+        return CVM_E_NULL_ARG;
+    cvm__clear_error(&s->ctx);
+    if (!x)
+        return cvm__error(&s->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "%s is NULL", name);
+    return cvm__check_dim(&s->ctx, dim, call);
 }
 
 cvm_status cvm_sizing_add_point_source_nd(cvm_sizing *s, const double *x, int dim, double h,
                                           double growth)
 {
-    cvm_status st;
-    if (!s)
-        return CVM_E_NULL_ARG;
-    cvm__clear_error(&s->ctx);
-    if (!x)
-        return cvm__error(&s->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "x is NULL");
-    if ((st = check_dim(s, dim, "cvm_sizing_add_point_source_nd")))
-        return st;
-    return cvm_sizing_add_point_source(s, x[0], x[1], h, growth);
+    cvm_status st = begin_nd(s, x, "x", dim, "cvm_sizing_add_point_source_nd");
+    return st ? st : cvm_sizing_add_point_source(s, x[0], x[1], h, growth);
 }
 
 cvm_status cvm_sizing_add_line_source_nd(cvm_sizing *s, const double *ends, int dim, double h,
                                          double growth)
 {
-    cvm_status st;
-    if (!s)
-        return CVM_E_NULL_ARG;
-    cvm__clear_error(&s->ctx);
-    if (!ends)
-        return cvm__error(&s->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "ends is NULL");
-    if ((st = check_dim(s, dim, "cvm_sizing_add_line_source_nd")))
-        return st;
-    return cvm_sizing_add_line_source(s, ends[0], ends[1], ends[2], ends[3], h, growth);
+    cvm_status st = begin_nd(s, ends, "ends", dim, "cvm_sizing_add_line_source_nd");
+    return st ? st : cvm_sizing_add_line_source(s, ends[0], ends[1], ends[2], ends[3], h, growth);
 }
 
 cvm_status cvm_sizing_set_callback_nd(cvm_sizing *s, cvm_sizing_nd_fn fn, void *payload)
@@ -59,14 +44,10 @@ cvm_status cvm_sizing_set_callback_nd(cvm_sizing *s, cvm_sizing_nd_fn fn, void *
 cvm_status cvm_sizing_eval_nd(double *out, cvm_sizing *s, const double *x, int dim)
 {
     cvm_status st;
-    if (!out || !s)
+    if (!out)
         return CVM_E_NULL_ARG;
-    cvm__clear_error(&s->ctx);
-    if (!x)
-        return cvm__error(&s->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "x is NULL");
-    if ((st = check_dim(s, dim, "cvm_sizing_eval_nd")))
-        return st;
-    return cvm_sizing_eval(out, s, x[0], x[1]);
+    st = begin_nd(s, x, "x", dim, "cvm_sizing_eval_nd");
+    return st ? st : cvm_sizing_eval(out, s, x[0], x[1]);
 }
 
 cvm_status cvm_sizing_set_metric_fn(cvm_sizing *s, cvm_metric_fn fn, int has_derivatives,
@@ -102,7 +83,7 @@ cvm_status cvm_sizing_eval_metric(double *dst, size_t dst_len, cvm_sizing *s, co
         return cvm__error(&s->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "x is NULL");
     if (!dst && dst_len > 0)
         return cvm__error(&s->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "dst is NULL");
-    if ((st = check_dim(s, dim, "cvm_sizing_eval_metric")))
+    if ((st = cvm__check_dim(&s->ctx, dim, "cvm_sizing_eval_metric")))
         return st;
     if (!s->metric)
         return cvm__error(&s->ctx, CVM_E_STATE, CVM_ENT_NONE, -1,

@@ -43,6 +43,7 @@
 
 #include "cvmesh.h"
 #include "fuzz_pslg.h"
+#include "fuzz_run.h"
 #include "geom/expansion.h"
 #include "support/mesh_oracle.h"
 
@@ -129,33 +130,18 @@ static cvm_status set_options(cvm_mesh *m, const options *o)
     return s;
 }
 
-static double measure(cvm_mesh *m, cvm_measure which)
-{
-    double v = 0;
-    cvm_status s = cvm_mesh_get_measure(&v, m, which);
-    FUZZ_REQUIRE(s == CVM_OK, "measure %d: %s", (int)which, cvm_mesh_errmsg(m));
-    return v;
-}
-
-static void *alloc(size_t n)
-{
-    void *p = malloc(n + 1);
-    FUZZ_REQUIRE(p != NULL, "out of memory");
-    return p;
-}
-
 static void fetch(cvm_mesh *m, output *o, size_t n_input)
 {
     FUZZ_REQUIRE(cvm_mesh_count(&o->nv, m, CVM_ENT_VERTEX) == CVM_OK, "count");
     FUZZ_REQUIRE(cvm_mesh_count(&o->nt, m, CVM_ENT_TRIANGLE) == CVM_OK, "count");
     FUZZ_REQUIRE(cvm_mesh_count(&o->nseg, m, CVM_ENT_SEGMENT) == CVM_OK, "count");
-    o->xy = (double *)alloc(2 * o->nv * sizeof(double));
-    o->w = (double *)alloc(o->nv * sizeof(double));
-    o->tri = (cvm_index *)alloc(3 * o->nt * sizeof(cvm_index));
-    o->nb = (cvm_index *)alloc(3 * o->nt * sizeof(cvm_index));
-    o->seg = (cvm_index *)alloc(2 * o->nseg * sizeof(cvm_index));
-    o->map = (cvm_index *)alloc(n_input * sizeof(cvm_index));
-    o->inside = (int32_t *)alloc(o->nt * sizeof(int32_t));
+    o->xy = (double *)fuzz_alloc(2 * o->nv * sizeof(double));
+    o->w = (double *)fuzz_alloc(o->nv * sizeof(double));
+    o->tri = (cvm_index *)fuzz_alloc(3 * o->nt * sizeof(cvm_index));
+    o->nb = (cvm_index *)fuzz_alloc(3 * o->nt * sizeof(cvm_index));
+    o->seg = (cvm_index *)fuzz_alloc(2 * o->nseg * sizeof(cvm_index));
+    o->map = (cvm_index *)fuzz_alloc(n_input * sizeof(cvm_index));
+    o->inside = (int32_t *)fuzz_alloc(o->nt * sizeof(int32_t));
     FUZZ_REQUIRE(cvm_mesh_copy_points(o->xy, 2 * o->nv, m) == CVM_OK, "copy_points");
     FUZZ_REQUIRE(cvm_mesh_copy_weights(o->w, o->nv, m) == CVM_OK, "copy_weights");
     FUZZ_REQUIRE(cvm_mesh_copy_cells(o->tri, 3 * o->nt, m, CVM_ENT_TRIANGLE) == CVM_OK, "cells");
@@ -163,14 +149,14 @@ static void fetch(cvm_mesh *m, output *o, size_t n_input)
     FUZZ_REQUIRE(cvm_mesh_copy_cells(o->seg, 2 * o->nseg, m, CVM_ENT_SEGMENT) == CVM_OK, "segments");
     FUZZ_REQUIRE(cvm_mesh_copy_input_map(o->map, n_input, m) == CVM_OK, "input map");
     FUZZ_REQUIRE(cvm_mesh_copy_dual_inside(o->inside, o->nt, m) == CVM_OK, "dual inside");
-    o->before = measure(m, CVM_MEASURE_DUAL_OPT_NONCOMPLIANT_BEFORE_PCT);
-    o->after = measure(m, CVM_MEASURE_DUAL_OPT_NONCOMPLIANT_AFTER_PCT);
-    o->outside = measure(m, CVM_MEASURE_DUAL_OUTSIDE_PCT);
-    o->outside_bnd = measure(m, CVM_MEASURE_DUAL_OUTSIDE_BOUNDARY_PCT);
-    o->merged = measure(m, CVM_MEASURE_DUAL_MERGED_PCT);
-    o->noncompliant = measure(m, CVM_MEASURE_DUAL_NONCOMPLIANT_PCT);
-    o->noncompliant_bnd = measure(m, CVM_MEASURE_DUAL_NONCOMPLIANT_BOUNDARY_PCT);
-    o->vanished = measure(m, CVM_MEASURE_VANISHED_VERTICES);
+    o->before = fuzz_measure(m, CVM_MEASURE_DUAL_OPT_NONCOMPLIANT_BEFORE_PCT);
+    o->after = fuzz_measure(m, CVM_MEASURE_DUAL_OPT_NONCOMPLIANT_AFTER_PCT);
+    o->outside = fuzz_measure(m, CVM_MEASURE_DUAL_OUTSIDE_PCT);
+    o->outside_bnd = fuzz_measure(m, CVM_MEASURE_DUAL_OUTSIDE_BOUNDARY_PCT);
+    o->merged = fuzz_measure(m, CVM_MEASURE_DUAL_MERGED_PCT);
+    o->noncompliant = fuzz_measure(m, CVM_MEASURE_DUAL_NONCOMPLIANT_PCT);
+    o->noncompliant_bnd = fuzz_measure(m, CVM_MEASURE_DUAL_NONCOMPLIANT_BOUNDARY_PCT);
+    o->vanished = fuzz_measure(m, CVM_MEASURE_VANISHED_VERTICES);
 }
 
 static void release(output *o)
@@ -186,10 +172,7 @@ static void release(output *o)
 
 static void validate(cvm_mesh *m, const fuzz_pslg *g)
 {
-    char msg[512];
     cvmtest_expect e;
-    cvm_status c = cvm_mesh_check(m);
-    FUZZ_REQUIRE(c == CVM_OK, "cvm_mesh_check: %s", cvm_mesh_errmsg(m));
     cvmtest_expect_init(&e);
     e.delaunay = 0; /* regular, not Delaunay: cvm_mesh_check() tests the power property */
     /* segments are walked only where no triangle along them can have been
@@ -198,24 +181,19 @@ static void validate(cvm_mesh *m, const fuzz_pslg *g)
         e.segs = g->seg;
         e.nseg = g->nseg;
     }
-    FUZZ_REQUIRE(cvmtest_mesh_validate(msg, sizeof msg, m, &e), "oracle: %s", msg);
+    fuzz_validate(m, &e);
 }
 
 static int run(const fuzz_pslg *g, const options *op, output *o, int validate_it)
 {
-    cvm_mesh *m = NULL;
+    cvm_mesh *m;
     cvm_sizing *sz = NULL;
     cvm_status s;
     memset(o, 0, sizeof *o);
-    FUZZ_REQUIRE(cvm_mesh_create(&m) == CVM_OK, "create");
-    s = fuzz_pslg_set(m, g);
-    FUZZ_REQUIRE(s == CVM_OK, "setting input: %s", cvm_mesh_errmsg(m));
+    m = fuzz_pslg_mesh(g);
     s = set_options(m, op);
     FUZZ_REQUIRE(s == CVM_OK, "setting options: %s", cvm_mesh_errmsg(m));
-    s = cvm_mesh_triangulate(m);
-    if (s != CVM_OK) {
-        FUZZ_REQUIRE(cvm_status_is_error(s) && cvm_mesh_errmsg(m)[0] != '\0',
-                     "triangulate returned %d without a message", (int)s);
+    if (fuzz_triangulate(m) != CVM_OK) {
         cvm_mesh_free(m);
         return 0;
     }
@@ -228,7 +206,7 @@ static int run(const fuzz_pslg *g, const options *op, output *o, int validate_it
         size_t nv, v;
         double *w;
         FUZZ_REQUIRE(cvm_mesh_count(&nv, m, CVM_ENT_VERTEX) == CVM_OK, "count");
-        w = (double *)alloc(nv * sizeof(double));
+        w = (double *)fuzz_alloc(nv * sizeof(double));
         for (v = 0; v < nv; v++)
             w[v] = 0.01 * op->h * op->h * (double)((int)((v * 37 + (size_t)op->seed) % 7) - 3);
         s = cvm_mesh_set_weights(m, w, nv);
@@ -354,10 +332,10 @@ static void check_dual(const fuzz_pslg *g, const options *op, const output *o)
 {
     size_t t, v, n_bnd = 0, n_out = 0, n_out_bnd = 0, n_nc = 0, n_nc_bnd = 0, n_merged = 0, n_amb = 0;
     size_t n_amb_bnd = 0, n_amb_merged = 0;
-    double *vsum = (double *)alloc(o->nv * sizeof(double)), *vcnt = (double *)alloc(o->nv * sizeof(double));
-    double *V = (double *)alloc(2 * o->nt * sizeof(double));
-    int8_t *mergeable = (int8_t *)alloc(3 * o->nt); /* 1 yes, 0 no, -1 too close to call */
-    uint8_t *bnd = (uint8_t *)alloc(o->nv);
+    double *vsum = (double *)fuzz_alloc(o->nv * sizeof(double)), *vcnt = (double *)fuzz_alloc(o->nv * sizeof(double));
+    double *V = (double *)fuzz_alloc(2 * o->nt * sizeof(double));
+    int8_t *mergeable = (int8_t *)fuzz_alloc(3 * o->nt); /* 1 yes, 0 no, -1 too close to call */
+    uint8_t *bnd = (uint8_t *)fuzz_alloc(o->nv);
     FUZZ_REQUIRE(o->vanished == 0, "%g vertices with an empty power cell", o->vanished);
     /* input points stay (a duplicate maps to its first occurrence's vertex) */
     for (v = 0; v < g->np; v++) {

@@ -43,6 +43,7 @@
 
 #include "cvmesh.h"
 #include "fuzz_pslg.h"
+#include "fuzz_run.h"
 #include "support/mesh_oracle.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
@@ -130,40 +131,25 @@ static cvm_status set_options(cvm_mesh *m, const options *o)
     return s;
 }
 
-static double measure(cvm_mesh *m, cvm_measure which)
-{
-    double v = 0;
-    cvm_status s = cvm_mesh_get_measure(&v, m, which);
-    FUZZ_REQUIRE(s == CVM_OK, "measure %d: %s", (int)which, cvm_mesh_errmsg(m));
-    return v;
-}
-
-static void *alloc(size_t n)
-{
-    void *p = malloc(n + 1);
-    FUZZ_REQUIRE(p != NULL, "out of memory");
-    return p;
-}
-
 static void fetch(cvm_mesh *m, output *o)
 {
     FUZZ_REQUIRE(cvm_mesh_count(&o->nv, m, CVM_ENT_VERTEX) == CVM_OK, "count");
     FUZZ_REQUIRE(cvm_mesh_count(&o->nt, m, CVM_ENT_TRIANGLE) == CVM_OK, "count");
     FUZZ_REQUIRE(cvm_mesh_count(&o->nunmet, m, CVM_ENT_REFINE_UNMET) == CVM_OK, "count");
-    o->xy = (double *)alloc(2 * o->nv * sizeof(double));
-    o->tri = (cvm_index *)alloc(3 * o->nt * sizeof(cvm_index));
-    o->nb = (cvm_index *)alloc(3 * o->nt * sizeof(cvm_index));
-    o->unmet = (double *)alloc(3 * o->nunmet * sizeof(double));
+    o->xy = (double *)fuzz_alloc(2 * o->nv * sizeof(double));
+    o->tri = (cvm_index *)fuzz_alloc(3 * o->nt * sizeof(cvm_index));
+    o->nb = (cvm_index *)fuzz_alloc(3 * o->nt * sizeof(cvm_index));
+    o->unmet = (double *)fuzz_alloc(3 * o->nunmet * sizeof(double));
     FUZZ_REQUIRE(cvm_mesh_copy_points(o->xy, 2 * o->nv, m) == CVM_OK, "copy_points");
     FUZZ_REQUIRE(cvm_mesh_copy_cells(o->tri, 3 * o->nt, m, CVM_ENT_TRIANGLE) == CVM_OK, "cells");
     FUZZ_REQUIRE(cvm_mesh_copy_neighbors(o->nb, 3 * o->nt, m) == CVM_OK, "neighbors");
     FUZZ_REQUIRE(cvm_mesh_copy_refine_unmet(o->unmet, 3 * o->nunmet, m) == CVM_OK, "unmet");
-    o->steiner = measure(m, CVM_MEASURE_REFINE_STEINER);
-    o->unmet_angle = measure(m, CVM_MEASURE_REFINE_UNMET_ANGLE);
-    o->unmet_size = measure(m, CVM_MEASURE_REFINE_UNMET_SIZE);
-    o->small_angle = measure(m, CVM_MEASURE_REFINE_SMALL_INPUT_ANGLE);
-    o->met_angle = measure(m, CVM_MEASURE_REFINE_MET_ANGLE);
-    o->requested = measure(m, CVM_MEASURE_REFINE_REQUESTED_ANGLE);
+    o->steiner = fuzz_measure(m, CVM_MEASURE_REFINE_STEINER);
+    o->unmet_angle = fuzz_measure(m, CVM_MEASURE_REFINE_UNMET_ANGLE);
+    o->unmet_size = fuzz_measure(m, CVM_MEASURE_REFINE_UNMET_SIZE);
+    o->small_angle = fuzz_measure(m, CVM_MEASURE_REFINE_SMALL_INPUT_ANGLE);
+    o->met_angle = fuzz_measure(m, CVM_MEASURE_REFINE_MET_ANGLE);
+    o->requested = fuzz_measure(m, CVM_MEASURE_REFINE_REQUESTED_ANGLE);
 }
 
 static void release(output *o)
@@ -176,12 +162,11 @@ static void release(output *o)
 
 static void validate(cvm_mesh *m, const fuzz_pslg *g, const options *op)
 {
-    char msg[512];
     cvmtest_expect e;
-    cvm_status c = cvm_mesh_check(m);
-    FUZZ_REQUIRE(c == CVM_OK, "cvm_mesh_check: %s", cvm_mesh_errmsg(m));
-    if (op->keep_seg)
-        return; /* the oracle needs every input point in the mesh (the input map has -1) */
+    if (op->keep_seg) {
+        fuzz_validate(m, NULL); /* the oracle needs every input point in the mesh (the input map has -1) */
+        return;
+    }
     cvmtest_expect_init(&e);
     /* Input segments are walked only where no triangle along them can have
      * been carved away (holes, free segments reaching outside). */
@@ -189,24 +174,20 @@ static void validate(cvm_mesh *m, const fuzz_pslg *g, const options *op)
         e.segs = g->seg;
         e.nseg = g->nseg;
     }
-    FUZZ_REQUIRE(cvmtest_mesh_validate(msg, sizeof msg, m, &e), "oracle: %s", msg);
+    fuzz_validate(m, &e);
 }
 
 static int run(const fuzz_pslg *g, const options *op, output *o, int validate_it)
 {
-    cvm_mesh *m = NULL;
+    cvm_mesh *m;
     cvm_sizing *sz = NULL;
     cvm_status s;
     memset(o, 0, sizeof *o);
-    FUZZ_REQUIRE(cvm_mesh_create(&m) == CVM_OK, "create");
-    s = fuzz_pslg_set(m, g);
-    FUZZ_REQUIRE(s == CVM_OK, "setting input: %s", cvm_mesh_errmsg(m));
+    m = fuzz_pslg_mesh(g);
     s = set_options(m, op);
     FUZZ_REQUIRE(s == CVM_OK, "setting options: %s", cvm_mesh_errmsg(m));
-    o->tri_status = cvm_mesh_triangulate(m);
+    o->tri_status = fuzz_triangulate(m);
     if (o->tri_status != CVM_OK) {
-        FUZZ_REQUIRE(cvm_status_is_error(o->tri_status), "triangulate returned %d", (int)o->tri_status);
-        FUZZ_REQUIRE(cvm_mesh_errmsg(m)[0] != '\0', "status %d without a message", (int)o->tri_status);
         cvm_mesh_free(m);
         return 0;
     }
@@ -225,25 +206,6 @@ static int run(const fuzz_pslg *g, const options *op, output *o, int validate_it
     fetch(m, o);
     cvm_mesh_free(m);
     return 1;
-}
-
-/* Smallest angle of triangle (a, b, c) in degrees, each corner by atan2. */
-static double min_angle(const double *a, const double *b, const double *c)
-{
-    const double *p[3];
-    double best = 180.0;
-    int k;
-    p[0] = a;
-    p[1] = b;
-    p[2] = c;
-    for (k = 0; k < 3; k++) {
-        const double *o = p[k], *u = p[(k + 1) % 3], *w = p[(k + 2) % 3];
-        double ux = u[0] - o[0], uy = u[1] - o[1], wx = w[0] - o[0], wy = w[1] - o[1];
-        double ang = atan2(fabs(ux * wy - uy * wx), ux * wx + uy * wy) * DEG;
-        if (ang < best)
-            best = ang;
-    }
-    return best;
 }
 
 static double dist(const double *a, const double *b)
@@ -389,7 +351,7 @@ static void check_report(const fuzz_pslg *g, const options *op, const output *o)
                 u++;
             }
         }
-        ang = min_angle(p[0], p[1], p[2]);
+        ang = cvmtest_tri_min_angle_deg(p[0], p[1], p[2]);
         l0 = dist(p[1], p[2]);
         l1 = dist(p[2], p[0]);
         l2 = dist(p[0], p[1]);

@@ -109,25 +109,6 @@ static void fetch(cvm_mesh *m, double **xy, size_t *nv, cvm_index **tri, size_t 
     ck_assert_int_eq(cvm_mesh_copy_cells(*tri, 3 * *nt, m, CVM_ENT_TRIANGLE), CVM_OK);
 }
 
-/* Smallest angle of triangle a, b, c in degrees (law of cosines via atan2). */
-static double tri_min_angle(const double *a, const double *b, const double *c)
-{
-    const double *p[3];
-    double best = 180;
-    int k;
-    p[0] = a;
-    p[1] = b;
-    p[2] = c;
-    for (k = 0; k < 3; k++) {
-        const double *o = p[k], *u = p[(k + 1) % 3], *w = p[(k + 2) % 3];
-        double ux = u[0] - o[0], uy = u[1] - o[1], wx = w[0] - o[0], wy = w[1] - o[1];
-        double ang = atan2(fabs(ux * wy - uy * wx), ux * wx + uy * wy) * 57.29577951308232;
-        if (ang < best)
-            best = ang;
-    }
-    return best;
-}
-
 void rtest_measure(cvm_mesh *m, rtest_quality *q)
 {
     double *xy;
@@ -142,7 +123,7 @@ void rtest_measure(cvm_mesh *m, rtest_quality *q)
         double la = hypot(b[0] - c[0], b[1] - c[1]), lb = hypot(c[0] - a[0], c[1] - a[1]);
         double lc = hypot(a[0] - b[0], a[1] - b[1]);
         double area2 = fabs((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
-        double r = la * lb * lc / (2 * area2), ang = tri_min_angle(a, b, c);
+        double r = la * lb * lc / (2 * area2), ang = cvmtest_tri_min_angle_deg(a, b, c);
         if (ang < q->min_angle)
             q->min_angle = ang;
         if (r > q->max_circumradius)
@@ -174,7 +155,7 @@ double rtest_min_angle_away(cvm_mesh *m, const double *apex, size_t napex, doubl
                     near = 1;
             }
         if (!near) {
-            double a = tri_min_angle(xy + 2 * tri[3 * t], xy + 2 * tri[3 * t + 1], xy + 2 * tri[3 * t + 2]);
+            double a = cvmtest_tri_min_angle_deg(xy + 2 * tri[3 * t], xy + 2 * tri[3 * t + 1], xy + 2 * tri[3 * t + 2]);
             if (a < best)
                 best = a;
         }

@@ -12,6 +12,24 @@
 #include <check.h>
 #endif
 
+double cvmtest_tri_min_angle_deg(const double *a, const double *b, const double *c)
+{
+    const double *p[3];
+    double best = 180.0;
+    int k;
+    p[0] = a;
+    p[1] = b;
+    p[2] = c;
+    for (k = 0; k < 3; k++) {
+        const double *o = p[k], *u = p[(k + 1) % 3], *w = p[(k + 2) % 3];
+        double ux = u[0] - o[0], uy = u[1] - o[1], wx = w[0] - o[0], wy = w[1] - o[1];
+        double ang = atan2(fabs(ux * wy - uy * wx), ux * wx + uy * wy) * 57.29577951308232;
+        if (ang < best)
+            best = ang;
+    }
+    return best;
+}
+
 /* A directed edge a->b of triangle t; sorted by the undirected key (lo, hi). */
 typedef struct hedge {
     cvm_index lo, hi;

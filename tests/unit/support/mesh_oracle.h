@@ -53,6 +53,14 @@ int cvmtest_oracle(char *msg, size_t msglen, const double *xy, size_t nv, const 
  */
 int cvmtest_mesh_validate(char *msg, size_t msglen, cvm_mesh *m, const cvmtest_expect *e);
 
+/*
+ * Smallest angle of triangle (a, b, c) in degrees, each corner by atan2 of the
+ * cross and dot products of its edges. The tests' own measure, written apart
+ * from the library's (lib/geom/measure.c) on purpose: a check of the angles the
+ * library reports must not reuse the code it checks.
+ */
+double cvmtest_tri_min_angle_deg(const double *a, const double *b, const double *c);
+
 #ifndef CVMTEST_NO_CHECK
 /* Check assertions: cvm_mesh_check(m) == CVM_OK and the oracle with defaults (or e). */
 void cvmtest_assert_valid(cvm_mesh *m);
