@@ -58,32 +58,40 @@ cvm_status cvm__rf_may_insert(cvm__refiner *R)
     return CVM_OK;
 }
 
-/* Domain edges on the convex hull that no segment covers become segments of
- * their own (ids after the input segments), so refinement never leaves the hull. */
+/* Convex hull edges that no segment covers become segments of their own (ids
+ * after the input segments): those of the domain first, so refinement never
+ * leaves the hull, then those of triangles outside the domain. A split point on
+ * a hull segment may round a few ulps outside its line; the hull then turns
+ * reflex at the segment's ends, which cvm__tri2_check accepts only between
+ * constrained hull edges (no cavity crosses them), so a hull edge of a carved
+ * triangle beside such a segment must be constrained too. */
 static cvm_status rf_constrain_hull(cvm__refiner *R)
 {
     cvm__tri2 *T = R->T;
     size_t t;
-    int j;
-    for (t = 0; t < T->nt; t++) {
-        if (!cvm__tri2_in_domain(T, (int32_t)t))
-            continue;
-        for (j = 0; j < 3; j++) {
-            size_t h = 3 * t + (size_t)j;
-            int32_t nb = T->tn[h] / 3;
-            size_t cap = 2 * R->nseg;
-            if (T->te[h] >= 0 || !cvm__tri2_is_ghost(T, nb))
+    int j, pass;
+    for (pass = 0; pass < 2; pass++)
+        for (t = 0; t < T->nt; t++) {
+            if (pass == 0 ? !cvm__tri2_in_domain(T, (int32_t)t)
+                          : !cvm__tri2_is_live(T, (int32_t)t) || cvm__tri2_is_ghost(T, (int32_t)t) ||
+                                cvm__tri2_in_domain(T, (int32_t)t))
                 continue;
-            if (R->nseg >= (size_t)INT32_MAX ||
-                cvm__grow(R->ctx, (void **)&R->seg_ends, &cap, 2 * R->nseg + 2, sizeof(int32_t)))
-                return cvm__nomem(R->ctx);
-            R->seg_ends[2 * R->nseg] = T->tv[h - (size_t)j + (size_t)(j + 1) % 3];
-            R->seg_ends[2 * R->nseg + 1] = T->tv[h - (size_t)j + (size_t)(j + 2) % 3];
-            T->te[h] = (int32_t)R->nseg;
-            T->te[T->tn[h]] = (int32_t)R->nseg;
-            R->nseg++;
+            for (j = 0; j < 3; j++) {
+                size_t h = 3 * t + (size_t)j;
+                int32_t nb = T->tn[h] / 3;
+                size_t cap = 2 * R->nseg;
+                if (T->te[h] >= 0 || !cvm__tri2_is_ghost(T, nb))
+                    continue;
+                if (R->nseg >= (size_t)INT32_MAX ||
+                    cvm__grow(R->ctx, (void **)&R->seg_ends, &cap, 2 * R->nseg + 2, sizeof(int32_t)))
+                    return cvm__nomem(R->ctx);
+                R->seg_ends[2 * R->nseg] = T->tv[h - (size_t)j + (size_t)(j + 1) % 3];
+                R->seg_ends[2 * R->nseg + 1] = T->tv[h - (size_t)j + (size_t)(j + 2) % 3];
+                T->te[h] = (int32_t)R->nseg;
+                T->te[T->tn[h]] = (int32_t)R->nseg;
+                R->nseg++;
+            }
         }
-    }
     return CVM_OK;
 }
 

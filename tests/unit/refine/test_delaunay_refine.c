@@ -196,6 +196,44 @@ START_TEST(point_set_refines_inside_hull)
 }
 END_TEST
 
+/* A domain side on the convex hull, and beyond a pocket cut into the domain
+ * the hull goes on along the same line: the pocket's triangle has an
+ * unconstrained hull edge that meets the side. Splits of the side round a few
+ * ulps off the line, so the hull turns reflex at the pocket: every algorithm
+ * must still leave a mesh that cvm_mesh_check accepts (hull edges constrained
+ * on both sides of such a turn). */
+START_TEST(hull_pocket_beside_split_hull_side)
+{
+    /* A, G, E, D on the line y = 3x (the hull); E-F-G is the pocket */
+    static const double xy[] = {0, 0, 6, 0, 6, 9, 3, 9, 2, 6, 3, 7, 1, 3};
+    static const cvm_index seg[] = {0, 1, 1, 2, 2, 3, 3, 4, 4, 5, 5, 6, 6, 0};
+    static const cvm_algorithm algos[] = {CVM_ALGO_DELAUNAY, CVM_ALGO_FRONTAL, CVM_ALGO_AFLR};
+    static const double sizes[] = {0.5, 0.7};
+    size_t a, k;
+    for (a = 0; a < 3; a++)
+        for (k = 0; k < 2; k++) {
+            cvm_mesh *m;
+            cvmtest_expect e;
+            ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+            ck_assert_int_eq(cvm_mesh_set_points(m, xy, 7, 2), CVM_OK);
+            ck_assert_int_eq(cvm_mesh_set_segments(m, seg, 7), CVM_OK);
+            ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+            ck_assert_int_eq(rtest_refine_uniform(m, sizes[k], algos[a]), CVM_OK);
+            ck_assert_msg(cvm_mesh_check(m) == CVM_OK, "algorithm %d, size %g: %s", (int)algos[a], sizes[k],
+                          cvm_mesh_errmsg(m));
+            cvmtest_expect_init(&e);
+            e.segs = seg;
+            e.nseg = 7;
+            e.check_euler = 1;
+            e.euler = 1;
+            e.check_area = 1;
+            e.area = 39.5; /* shoelace of the heptagon */
+            cvmtest_assert_valid_ex(m, &e);
+            cvm_mesh_free(m);
+        }
+}
+END_TEST
+
 START_TEST(lens_and_no_marching_still_meet_bounds)
 {
     char path[1024];
@@ -374,6 +412,7 @@ TCase *refine_delaunay_tcase(void)
     tcase_add_test(tc, steiner_limit_leaves_valid_mesh);
     tcase_add_test(tc, cancellation_leaves_valid_mesh);
     tcase_add_test(tc, point_set_refines_inside_hull);
+    tcase_add_test(tc, hull_pocket_beside_split_hull_side);
     tcase_add_test(tc, lens_and_no_marching_still_meet_bounds);
     tcase_add_test(tc, high_angle_bounds_terminate);
     tcase_add_test(tc, crossing_segments_terminate);
