@@ -291,17 +291,27 @@ static int ghost_corner(const cvm__tri2 *T, int32_t g)
     return tv[0] == CVM__GHOST ? 0 : tv[1] == CVM__GHOST ? 1 : 2;
 }
 
+/* 1 when the hull edge of ghost triangle g is a constrained edge of a domain
+ * triangle. */
+static int hull_domain_side(const cvm__tri2 *T, int32_t g)
+{
+    int k = ghost_corner(T, g);
+    return cvm__tri2_edge_seg(T, g, k) >= 0 && cvm__tri2_in_domain(T, T->tn[3 * (size_t)g + (size_t)k] / 3);
+}
+
 /* 1 when moving a corner of the hull edge of ghost triangle g cannot break the
  * hull convexity cvm__tri2_check asks of unconstrained hull edges: that edge
- * and the hull edges of the two ghost triangles beside g are constrained. */
+ * and the hull edges of the two ghost triangles beside g are constrained.
+ * Taken only where all three are sides of the domain: a hull edge of a carved
+ * triangle is constrained by the refiner, but a corner beside one stays fixed. */
 static int hull_safe(const cvm__tri2 *T, int32_t g)
 {
     int k = ghost_corner(T, g), e;
-    if (cvm__tri2_edge_seg(T, g, k) < 0)
+    if (!hull_domain_side(T, g))
         return 0;
     for (e = 1; e <= 2; e++) {
         int32_t h = T->tn[3 * (size_t)g + (size_t)(k + e) % 3] / 3;
-        if (!cvm__tri2_is_ghost(T, h) || cvm__tri2_edge_seg(T, h, ghost_corner(T, h)) < 0)
+        if (!cvm__tri2_is_ghost(T, h) || !hull_domain_side(T, h))
             return 0;
     }
     return 1;
