@@ -205,6 +205,8 @@ void cvm__tri2_compact(cvm__tri2 *T, const int32_t *dup_of, int32_t *map_out);
  * dropped (the free list is emptied). Neighbour links, constraints,
  * attributes and vtri follow. CVM_OK or CVM_E_NOMEM (T unchanged). */
 cvm_status cvm__tri2_reorder(cvm__tri2 *T, const int32_t *slot, const uint8_t *rot, size_t nfile);
+/* 1 when every live real (non-ghost) triangle of T is strictly counter-clockwise (exact orient2d). */
+int cvm__tri2_all_ccw(const cvm__tri2 *T);
 
 /* Allocate ta if needed (all 0). */
 cvm_status cvm__tri2_enable_attributes(cvm__tri2 *T);

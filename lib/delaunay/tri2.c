@@ -2,6 +2,7 @@
 #include <string.h>
 
 #include "delaunay_internal.h"
+#include "geom/geom_internal.h"
 #include "tri2_store.h"
 
 void cvm__tri2_init(cvm__tri2 *T, cvm__ctx *ctx)
@@ -309,4 +310,17 @@ out:
     cvm__free(ctx, otf);
     cvm__free(ctx, ota);
     return s;
+}
+
+int cvm__tri2_all_ccw(const cvm__tri2 *T)
+{
+    size_t t;
+    for (t = 0; t < T->nt; t++) {
+        const int32_t *v = T->tv + 3 * t;
+        if (!cvm__tri2_is_live(T, (int32_t)t) || cvm__tri2_is_ghost(T, (int32_t)t))
+            continue;
+        if (cvm__orient2d(T->xy + 2 * (size_t)v[0], T->xy + 2 * (size_t)v[1], T->xy + 2 * (size_t)v[2]) <= 0)
+            return 0;
+    }
+    return 1;
 }

@@ -891,20 +891,6 @@ static cvm_status sweep(dopt *D, uint64_t k, size_t *moved_out)
 
 static double min_angle(const dopt *D);
 
-/* 1 when every live real triangle of T is strictly counter-clockwise (exact). */
-static int all_ccw(const cvm__tri2 *T)
-{
-    size_t t;
-    for (t = 0; t < T->nt; t++) {
-        const int32_t *v = T->tv + 3 * t;
-        if (!cvm__tri2_is_live(T, (int32_t)t) || cvm__tri2_is_ghost(T, (int32_t)t))
-            continue;
-        if (cvm__orient2d(T->xy + 2 * (size_t)v[0], T->xy + 2 * (size_t)v[1], T->xy + 2 * (size_t)v[2]) <= 0)
-            return 0;
-    }
-    return 1;
-}
-
 /* Go back to the best state kept by keep_best when it beats the current one
  * and has the same vertices: its positions and weights, made regular again
  * (the regular triangulation of a weighted point set is unique, so this is
@@ -924,7 +910,7 @@ static cvm_status end_at_best(dopt *D, size_t best_nc, double best_min)
         D->T->xy[2 * v + 1] = D->best[3 * v + 1];
         D->T->w[v] = D->best[3 * v + 2];
     }
-    if (!all_ccw(D->T)) {
+    if (!cvm__tri2_all_ccw(D->T)) {
         load_state(D);
         return CVM_OK;
     }
