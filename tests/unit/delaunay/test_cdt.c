@@ -26,6 +26,20 @@ static void expect_pslg(cvmtest_expect *e, const cvm_index *segs, size_t nseg, l
     e->area_rel_tol = 1e-12;
 }
 
+/* Triangulate xy (n points) with segs (ns) keeping the convex hull, and
+ * require CVM_OK and a valid mesh. */
+static void triangulate_keeping_hull(const double *xy, size_t n, const cvm_index *segs, size_t ns)
+{
+    cvm_mesh *m;
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_points(m, xy, n, 2), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_segments(m, segs, ns), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_KEEP_CONVEX_HULL, 1), CVM_OK);
+    ck_assert_msg(cvm_mesh_triangulate(m) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    cvmtest_assert_valid(m);
+    cvm_mesh_free(m);
+}
+
 /* A square [0,4]^2 with a square hole [1,3]^2 and random interior points. */
 START_TEST(square_with_hole_is_constrained_delaunay)
 {
@@ -455,14 +469,7 @@ START_TEST(concurrent_crossings_route_through_the_rounded_crossing)
     static const cvm_index segs[] = {32, 33, 6, 21, 5, 27, 42, 37, 11, 22, 18, 10, 6, 11, 4, 37, 7,
         2, 15, 14, 42, 29, 42, 15, 13, 29, 15, 40, 41, 1, 41, 15, 31, 26, 26, 2, 30, 35, 26, 6, 21,
         26, 29, 41, 27, 25, 13, 33, 6, 32, 13, 18, 40, 23, 7, 22, 36, 18};
-    cvm_mesh *m;
-    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
-    ck_assert_int_eq(cvm_mesh_set_points(m, xy, 43, 2), CVM_OK);
-    ck_assert_int_eq(cvm_mesh_set_segments(m, segs, 29), CVM_OK);
-    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_KEEP_CONVEX_HULL, 1), CVM_OK);
-    ck_assert_msg(cvm_mesh_triangulate(m) == CVM_OK, "%s", cvm_mesh_errmsg(m));
-    cvmtest_assert_valid(m);
-    cvm_mesh_free(m);
+    triangulate_keeping_hull(xy, 43, segs, 29);
 }
 END_TEST
 
@@ -478,14 +485,7 @@ START_TEST(crossing_rounded_past_a_sliver_is_nudged)
         14, 1, 14, 1, 14, 1, 14, 1, 14, 1, 14, 7, 12, 13, 1, 3, 8, 11, 0, 7, 11, 14, 12, 9, 0, 2, 1,
         3, 1, 0, 2, 1, 2, 14, 5, 6, 15, 0, 0};
     static const cvm_index segs[] = {3, 40, 39, 10, 32, 41, 17, 18, 18, 0, 31, 0};
-    cvm_mesh *m;
-    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
-    ck_assert_int_eq(cvm_mesh_set_points(m, xy, 43, 2), CVM_OK);
-    ck_assert_int_eq(cvm_mesh_set_segments(m, segs, 6), CVM_OK);
-    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_KEEP_CONVEX_HULL, 1), CVM_OK);
-    ck_assert_msg(cvm_mesh_triangulate(m) == CVM_OK, "%s", cvm_mesh_errmsg(m));
-    cvmtest_assert_valid(m);
-    cvm_mesh_free(m);
+    triangulate_keeping_hull(xy, 43, segs, 6);
 }
 END_TEST
 
