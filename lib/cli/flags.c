@@ -207,8 +207,9 @@ int cli_apply_settings(cvm_mesh *m, const cli_setting *set, int nset)
     int k;
     for (k = 0; k < nset; k++) {
         if (cvm_mesh_set_option(m, set[k].flag->key, set[k].value) != CVM_OK) {
-            fprintf(stderr, "cvmesh: %s %.17g: %s\n", set[k].flag->name, set[k].value,
-                    cvm_mesh_errmsg(m));
+            char v[32];
+            fprintf(stderr, "cvmesh: %s %s: %s\n", set[k].flag->name,
+                    cli_fmt_number(v, sizeof v, set[k].value), cvm_mesh_errmsg(m));
             return CLI_EXIT_USAGE;
         }
     }
@@ -226,8 +227,11 @@ void cli_print_option_flags(FILE *f, unsigned cmd)
         snprintf(left, sizeof left, "%s%s%s", k_flags[i].name, k_flags[i].arg ? " " : "",
                  k_flags[i].arg ? k_flags[i].arg : "");
         fprintf(f, "  %-26s %s", left, k_flags[i].help);
-        if (k_flags[i].arg && cvm_option_bounds(&b, k_flags[i].key) == CVM_OK)
-            fprintf(f, " [default %.17g, range %.17g..%.17g]", b.def, b.lo, b.hi);
+        if (k_flags[i].arg && cvm_option_bounds(&b, k_flags[i].key) == CVM_OK) {
+            char d[32], lo[32], hi[32];
+            fprintf(f, " [default %s, range %s..%s]", cli_fmt_number(d, sizeof d, b.def),
+                    cli_fmt_number(lo, sizeof lo, b.lo), cli_fmt_number(hi, sizeof hi, b.hi));
+        }
         fputc('\n', f);
     }
     fprintf(f, "  %-26s %s\n", WINDOW_FLAG " X0,Y0,X1,Y1",
