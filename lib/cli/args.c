@@ -84,6 +84,10 @@ int cli_parse_outputs(cli_outputs *o, int argc, char **argv, int *i)
         fprintf(stderr, "cvmesh: %s: expected --quality, --quality=short or --quality=full\n", s);
         return -1;
     }
+    if (strcmp(s, "--progress") == 0 || strcmp(s, "--quiet") == 0) {
+        cli_progress_mode(s[2] == 'p');
+        return 1;
+    }
     if (strcmp(s, "--timings") == 0) {
         o->timings = 1;
         return 1;
@@ -166,6 +170,8 @@ void cli_print_output_help(FILE *f, int with_svg, int with_dual)
             "                             (short, the default), or also the histograms of\n"
             "                             angles, degrees and the dual's q1-q5 (full)\n"
             "  --timings                  print 'phase: seconds' for each phase\n"
+            "  --progress, --quiet        show (hide) the progress line on standard error;\n"
+            "                             default: shown when standard error is a terminal\n"
             "  -h, --help                 print this help\n"
             "Every flag that takes a value takes it as --flag V or --flag=V. With -o -, the\n"
             "reports go to standard error.\n");

@@ -187,6 +187,15 @@ int cli_write_outputs(cvm_mesh *m, cli_outputs *o);
 /* Called once the outputs are committed (the message then says so). */
 void cli_outputs_committed(void);
 
+/* ---- progress.c: the progress line on standard error ---- */
+
+/* --progress (1) or --quiet (0); without either, on when stderr is a terminal. */
+void cli_progress_mode(int on);
+/* Redraw the line for stage at fraction (0..1; outside: no percentage). */
+void cli_progress_show(cvm_stage stage, double fraction);
+/* Erase the line, if one is shown (before any other output to stderr). */
+void cli_progress_clear(void);
+
 /* Subcommands: argv[0] is the subcommand's name. */
 int cli_triangulate(int argc, char **argv);
 void cli_triangulate_help(FILE *f);

@@ -312,6 +312,7 @@ int cli_fail(cvm_mesh *m, cvm_sizing *sz, const char *prefix)
     const char *msg;
     if (cli_interrupted())
         return cli_stop(m, sz);
+    cli_progress_clear();
     msg = cvm_mesh_errmsg(m);
     /* a message about an item read from the file starts with "FILE:LINE: " already */
     if (prefix && strncmp(msg, prefix, strlen(prefix)) == 0 && msg[strlen(prefix)] == ':')

@@ -52,6 +52,7 @@ void cli_signals_install(void)
 
 void cli_phase(const char *what, const char *name)
 {
+    cli_progress_clear();
     g_what = what;
     g_name = name;
 }
@@ -64,8 +65,8 @@ int cli_interrupted(void)
 int cli_progress(void *payload, cvm_stage stage, double fraction)
 {
     (void)payload;
-    (void)stage;
-    (void)fraction;
+    if (!g_signal)
+        cli_progress_show(stage, fraction);
     return g_signal != 0;
 }
 
@@ -77,6 +78,7 @@ void cli_outputs_committed(void)
 int cli_stop(cvm_mesh *m, cvm_sizing *sz)
 {
     int sig = (int)g_signal;
+    cli_progress_clear();
     cvm_sizing_free(sz);
     cvm_mesh_free(m); /* removes the staged outputs */
     fprintf(stderr, "cvmesh: interrupted by %s while %s%s%s; %s\n",

@@ -59,8 +59,11 @@ int main(int argc, char **argv)
     }
     for (i = 0; i < NCOMMANDS; i++)
         if (strcmp(argv[1], k_commands[i].name) == 0) {
+            int rc;
             cli_signals_install();
-            return k_commands[i].run(argc - 1, argv + 1);
+            rc = k_commands[i].run(argc - 1, argv + 1);
+            cli_progress_clear();
+            return rc;
         }
     fprintf(stderr, "cvmesh: unknown command '%s' (see cvmesh --help)\n", argv[1]);
     return CLI_EXIT_USAGE;

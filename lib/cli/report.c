@@ -185,6 +185,7 @@ int cli_finish(cvm_mesh *m, cvm_sizing *sz, const char *in, cvm_status s, cli_ou
     int rc;
     if (cli_interrupted() || cvm_status_is_error(s))
         return cli_fail(m, sz, in);
+    cli_progress_clear();
     if (s != CVM_OK)
         fprintf(stderr, "cvmesh: note: %s: %s\n", in, cvm_mesh_errmsg(m));
     if ((rc = cli_write_outputs(m, o)) < 0)

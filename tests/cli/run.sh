@@ -219,6 +219,11 @@ expect_exit 0 "optimise --timings" "$CLI" optimise "$DOMAINS/square.poly" --size
 for phase in read triangulate refine optimise write; do
     if grep -E -q "^$phase: [0-9]+\.[0-9]+$" "$TMP/out"; then pass; else fail "optimise --timings: no '$phase: seconds' line"; fi
 done
+# The progress line: --progress forces it (stderr is not a terminal here), --quiet hides it.
+expect_exit 0 "--progress" "$CLI" refine "$DOMAINS/square.poly" --size 0.05 --progress -o "$OUT/p.vtu"
+expect_grep "--progress" "$TMP/err" "cvmesh: refining"
+expect_exit 0 "--quiet" "$CLI" refine "$DOMAINS/square.poly" --size 0.05 --quiet -o "$OUT/q.vtu"
+if [ -s "$TMP/err" ]; then fail "--quiet: stderr not empty: $(head -c 200 "$TMP/err")"; else pass; fi
 # Help prints defaults as they are typed.
 expect_exit 0 "optimise --help" "$CLI" optimise --help
 expect_grep "help: default as typed" "$TMP/out" "[default 0.15, range 0..0.25]"
