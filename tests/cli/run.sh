@@ -239,6 +239,15 @@ expect_exit 0 ".poly with points in .node" "$CLI" triangulate "$DATA/points_in_n
 expect_exit 0 "0-based poly with comments" "$CLI" triangulate "$DATA/zero_based_with_comments.poly" -o "$OUT/z.vtu" --keep-hull
 expect_exit 0 "regions and attributes" "$CLI" triangulate "$DATA/one_based_attributes_regions.poly" -o "$OUT/r.vtu"
 expect_grep "regions give cell data" "$OUT/r.vtu" 'Name="attribute"'
+# .msh: one physical surface per region, nodes classified on the curves (meshio reads both).
+expect_exit 0 "regions to .msh" "$CLI" refine "$DATA/one_based_attributes_regions.poly" --size 0.3 -o "$OUT/r.msh"
+if "$PY" -c '
+import sys, meshio
+m = meshio.read(sys.argv[1])
+assert {"region_7", "region_9", "marker_1"} <= set(m.cell_sets), m.cell_sets.keys()
+dims = set(int(d) for d in m.point_data["gmsh:dim_tags"][:, 0])
+assert dims == {0, 1, 2}, dims
+' "$OUT/r.msh" > "$OUT/meshio_regions.log" 2>&1; then pass; else fail "regions .msh with meshio: $(tail -c 300 "$OUT/meshio_regions.log")"; fi
 # crossings rounded at the scale of 1e6: success, 13 points plus 17 crossing vertices
 expect_exit 0 "crossings near a large offset" "$CLI" triangulate "$DATA/crossings_near_large_offset.poly" -o "$OUT/c.node"
 expect_grep "crossings near a large offset: 17 crossing vertices" "$OUT/c.node" "30 2 0 1"
