@@ -7,6 +7,7 @@ int main(void)
     SRunner *sr = srunner_create(geom_suite());
     int failed;
     srunner_add_suite(sr, delaunay_suite());
+    srunner_add_suite(sr, delaunay3_suite());
     srunner_add_suite(sr, io_suite());
     srunner_add_suite(sr, api_suite());
     srunner_add_suite(sr, refine_suite());

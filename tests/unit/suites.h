@@ -5,6 +5,7 @@
 
 Suite *geom_suite(void);     /* tests/unit/geom/suite.c */
 Suite *delaunay_suite(void); /* tests/unit/delaunay/suite.c */
+Suite *delaunay3_suite(void); /* tests/unit/delaunay3/suite.c */
 Suite *io_suite(void);       /* tests/unit/io/suite.c */
 Suite *api_suite(void);      /* tests/unit/api/suite.c */
 Suite *refine_suite(void);   /* tests/unit/refine/suite.c */
