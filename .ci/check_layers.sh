@@ -3,6 +3,7 @@
 # stay small enough to read:
 #  1. a file under lib/ includes only its own folder and the layers below it:
 #       common <- geom <- delaunay <- {refine, dual};  io <- common;
+#       common <- geom <- surface3 (3D surface checks);  tetgen <- common;
 #       api sees every engine (not cli);  cli sees only include/ (and itself).
 #     The public headers (include/cvmesh*.h) are open to every layer.
 #  2. no .c or .h file under lib/ passes MAX_LINES lines, unless
@@ -22,6 +23,8 @@ allowed() {
     delaunay) echo "common geom" ;;
     refine | dual) echo "common geom delaunay" ;;
     io) echo "common" ;;
+    surface3) echo "common geom" ;;
+    tetgen) echo "common" ;;
     api) echo "common geom delaunay refine dual io" ;;
     cli) echo "" ;;
     *) echo "?" ;;
