@@ -102,12 +102,12 @@ TEST_ENV = CVM_DATA_DIR=$(DATA_DIR) CVM_TEST_DATA=$(CURDIR)/tests/data CVM_DATA3
 DATA3D := $(BUILD)/data3d
 
 # Fuzz targets: tests/fuzz/fuzz_<name>.c, seeds in tests/fuzz/corpus/<name>/.
-FUZZ_TARGETS := poly_read node_read cdt vtu_read refine optimise
+FUZZ_TARGETS := poly_read node_read cdt vtu_read refine optimise off_read stl_read tetpoly_read
 # The targets make check runs for FUZZ_TIME seconds with a fixed seed. The
 # refinement and optimisation targets still have open findings
 # (tests/fuzz/open/): they run in make fuzz and their seeds are replayed by
 # check-asan, but a timed run in make check would fail on those known inputs.
-FUZZ_CHECK_TARGETS := poly_read node_read cdt vtu_read
+FUZZ_CHECK_TARGETS := poly_read node_read cdt vtu_read off_read stl_read tetpoly_read
 FUZZ_BINS := $(FUZZ_TARGETS:%=$(BUILD)/fuzz/fuzz_%)
 REPLAY_BINS := $(FUZZ_TARGETS:%=$(BUILD)/fuzz/replay_%)
 FUZZ_SUPPORT_OBJ := $(BUILD)/obj/tests/fuzz/mesh_oracle.o $(BUILD)/obj/tests/fuzz/fuzz_input.o \
@@ -189,7 +189,10 @@ replay-bins: $(REPLAY_BINS)
 # Seed corpus of a target: committed seeds, plus the example domains and test data for the readers.
 fuzz_seeds = $(wildcard tests/fuzz/corpus/$(1)/*) \
   $(if $(filter poly_read,$(1)),$(wildcard examples/data/*.poly tests/data/*.poly)) \
-  $(if $(filter node_read,$(1)),$(wildcard tests/data/*.node))
+  $(if $(filter node_read,$(1)),$(wildcard tests/data/*.node)) \
+  $(if $(filter off_read,$(1)),$(wildcard examples/data3d/*.off)) \
+  $(if $(filter stl_read,$(1)),$(wildcard examples/data3d/*.stl)) \
+  $(if $(filter tetpoly_read,$(1)),$(wildcard examples/data3d/*.poly examples/data3d/*.smesh))
 
 FUZZ_BUILD := $(BUILD)/fuzzer
 FUZZ_SEED ?= 1
@@ -201,6 +204,9 @@ FUZZ_RUNS_cdt ?= 15000
 FUZZ_RUNS_vtu_read ?= 100000
 FUZZ_RUNS_refine ?= 2000
 FUZZ_RUNS_optimise ?= 1000
+FUZZ_RUNS_off_read ?= 200000
+FUZZ_RUNS_stl_read ?= 200000
+FUZZ_RUNS_tetpoly_read ?= 200000
 FUZZ_MAKE = $(MAKE) $(PAR) --no-print-directory BUILD=$(FUZZ_BUILD) CC=$(CLANG) SAN=1 FUZZ=1 OPENMP=0 TETGEN=0
 
 # run_fuzz(target, seconds, seed, runs): fresh work corpus seeded from the committed one;
@@ -237,6 +243,9 @@ check-replay: replay-bins
 	  case $$t in \
 	    poly_read) extra="$(wildcard examples/data/*.poly tests/data/*.poly)";; \
 	    node_read) extra="$(wildcard tests/data/*.node)";; \
+	    off_read) extra="$(wildcard examples/data3d/*.off)";; \
+	    stl_read) extra="$(wildcard examples/data3d/*.stl)";; \
+	    tetpoly_read) extra="$(wildcard examples/data3d/*.poly examples/data3d/*.smesh)";; \
 	    *) extra="";; \
 	  esac; \
 	  ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
