@@ -70,6 +70,8 @@ ifeq ($(TETGEN),1)
   TETGEN_OBJ := $(BUILD)/obj/lib/tetgen/tetgen_shim.o
   LIB_OBJ += $(TETGEN_OBJ)
   LDLIBS_LIB += -ltet -lstdc++
+  # Linking those libraries would also export _edata, _end and __bss_start.
+  SHARED_LDFLAGS := -Wl,--version-script=lib/tetgen/exports.map
   $(LIB_OBJ): ALL_CFLAGS += -DCVM_WITH_TETGEN
 else ifneq ($(TETGEN),0)
   $(error TETGEN=$(TETGEN): use TETGEN=1 (link TetGen) or TETGEN=0 (BSD-only))
@@ -145,7 +147,7 @@ $(STATIC): $(LIB_OBJ)
 
 $(SHARED): $(LIB_OBJ)
 	@mkdir -p $(dir $@)
-	$(CC) -shared -Wl,-soname,$(SONAME) -Wl,--no-undefined $(SANFLAGS) -o $@ $^ $(LDLIBS_LIB)
+	$(CC) -shared -Wl,-soname,$(SONAME) -Wl,--no-undefined $(SHARED_LDFLAGS) $(SANFLAGS) -o $@ $^ $(LDLIBS_LIB)
 	ln -sf libcvmesh.so.$(VERSION) $(BUILD)/lib/$(SONAME)
 	ln -sf $(SONAME) $(BUILD)/lib/libcvmesh.so
 
