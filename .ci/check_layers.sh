@@ -2,7 +2,12 @@
 # check_layers.sh - the library's folders keep their layering, and its files
 # stay small enough to read:
 #  1. a file under lib/ includes only its own folder and the layers below it:
+<<<<<<< HEAD
 #       common <- geom <- delaunay <- {refine, dual};  geom <- delaunay3;  io <- common;
+=======
+#       common <- geom <- delaunay <- {refine, dual};  io <- common;
+#       common <- geom <- surface3 (3D surface checks);  common <- geom <- tetgen (TetGen shim, C++);
+>>>>>>> surf3
 #       api sees every engine (not cli);  cli sees only include/ (and itself).
 #     The public headers (include/cvmesh*.h) are open to every layer.
 #  2. no .c or .h file under lib/ passes MAX_LINES lines, unless
@@ -23,13 +28,16 @@ allowed() {
     delaunay3) echo "common geom" ;;
     refine | dual) echo "common geom delaunay" ;;
     io) echo "common" ;;
-    api) echo "common geom delaunay delaunay3 refine dual io" ;;
+    surface3) echo "common geom" ;;
+    tetgen) echo "common geom" ;;
+    api) echo "common geom delaunay delaunay3 surface3 tetgen refine dual io" ;;
     cli) echo "" ;;
     *) echo "?" ;;
     esac
 }
 
-for f in lib/*/*.c lib/*/*.h; do
+for f in lib/*/*.c lib/*/*.cxx lib/*/*.h; do
+    [ -f "$f" ] || continue
     layer=$(echo "$f" | cut -d/ -f2)
     ok=$(allowed "$layer")
     if [ "$ok" = "?" ]; then
@@ -71,7 +79,8 @@ done
 bound_of() {
     sed -e 's/#.*//' "$allow" | awk -v f="$1" '$1 == f { print $2 }'
 }
-for f in lib/*/*.c lib/*/*.h; do
+for f in lib/*/*.c lib/*/*.cxx lib/*/*.h; do
+    [ -f "$f" ] || continue
     n=$(wc -l < "$f")
     b=$(bound_of "$f")
     if [ -n "$b" ]; then
