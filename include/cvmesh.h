@@ -2172,9 +2172,24 @@ typedef enum cvm_measure {
                                              power cell vanished (CVM_OPT_DUAL_TOPOLOGY) */
     CVM_MEASURE_DUAL_OPT_REMOVED_DEGREE = 48, /**< Steiner vertices removed by the degree
                                              repair (CVM_OPT_DUAL_TOPOLOGY) */
-    CVM_MEASURE_DUAL_OPT_REMOVED_MAXMIN = 49 /**< Steiner vertices removed by the kept removal
+    CVM_MEASURE_DUAL_OPT_REMOVED_MAXMIN = 49, /**< Steiner vertices removed by the kept removal
                                              trials of the max-min-angle phase
                                              (CVM_OPT_DUAL_MAXMIN_ROUNDS) */
+    /* ---- 700-799: 3D meshes (cvm_mesh_dim() 3); MIN_EDGE, MAX_EDGE and
+     * VANISHED_VERTICES apply to them too ---- */
+    CVM_MEASURE_VOLUME = 700,           /**< total volume of the tetrahedra */
+    CVM_MEASURE_MIN_DIHEDRAL_DEG = 701, /**< smallest dihedral angle, degrees */
+    CVM_MEASURE_MAX_DIHEDRAL_DEG = 702, /**< largest dihedral angle, degrees */
+    CVM_MEASURE_MAX_RADIUS_EDGE = 703,  /**< largest circumradius / shortest edge of a tetrahedron
+                                             (1/sqrt(2) ~ 0.612 for the regular one) */
+    CVM_MEASURE_CIRCUMCENTRE_OUTSIDE_PCT = 704, /**< % of tetrahedra whose circumcentre (power
+                                             vertex, with weights) lies outside them (computed in
+                                             floating point: a centre within rounding of a face
+                                             may count either way) */
+    CVM_MEASURE_CIRCUMCENTRE_OUTSIDE_BOUNDARY_PCT = 705, /**< the same over the tetrahedra with a
+                                             face on the boundary */
+    CVM_MEASURE_RECOVERY_STEINER = 706  /**< points the boundary recovery added (0 for a point
+                                             set's Delaunay tetrahedralisation) */
 } cvm_measure;
 
 /**

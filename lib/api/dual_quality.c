@@ -21,6 +21,7 @@
 #include "output_internal.h"
 #include "geom/measure.h"
 #include "dual/dual_internal.h"
+#include "api/mesh3.h"
 
 #define SQRT3 1.7320508075688772935
 
@@ -227,6 +228,8 @@ static cvm_status dq_compute(cvm__ctx *ctx, const cvm__tri2 *T, dq *d, double *m
 cvm_status cvm_mesh_copy_dual_quality(double *dst, size_t dst_len, const cvm_mesh *m,
                                       cvm_histogram which)
 {
+    if (m && m->m3)
+        return CVM_E_UNSUPPORTED; /* a 2D call on a 3D mesh */
     cvm__ctx *ctx;
     size_t nt = 0, ne = 0, ns = 0, need;
     int w = (int)which - (int)CVM_HIST_Q1 + 1;

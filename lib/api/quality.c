@@ -28,6 +28,7 @@
 
 #include "output_internal.h"
 #include "geom/measure.h"
+#include "api/mesh3.h"
 
 typedef cvm__tri_quality qstats;
 
@@ -168,6 +169,10 @@ static cvm_status need_triangles(cvm_mesh *m)
 
 cvm_status cvm_mesh_get_measure(double *out, cvm_mesh *m, cvm_measure which)
 {
+    if (out && m && m->m3) {
+        CVM__BEGIN_READ(m);
+        return cvm__mesh3_measure(out, m, which);
+    }
     const qstats *q;
     const double *hist;
     size_t n_int;
@@ -223,6 +228,10 @@ cvm_status cvm_mesh_get_measure(double *out, cvm_mesh *m, cvm_measure which)
 
 cvm_status cvm_mesh_copy_histogram(double *dst, size_t dst_len, cvm_mesh *m, cvm_histogram which)
 {
+    if (m && m->m3) {
+        CVM__BEGIN(m);
+        return cvm__mesh3_unsupported(m, "cvm_mesh_copy_histogram");
+    }
     const double *hist;
     size_t need, n_int;
     cvm_status s;
