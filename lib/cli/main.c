@@ -20,6 +20,8 @@ static const cli_command k_commands[] = {
      cli_refine, cli_refine_help},
     {"optimise", "optimise a mesh's power (weighted Voronoi) dual: every triangle holds its dual vertex",
      cli_optimise, cli_optimise_help},
+    {"tetrahedralize", "Delaunay tetrahedralisation of 3D points, or the tetrahedral mesh of a closed surface",
+     cli_tetrahedralize, cli_tetrahedralize_help},
 };
 
 #define NCOMMANDS (sizeof k_commands / sizeof k_commands[0])

@@ -252,6 +252,40 @@ assert dims == {0, 1, 2}, dims
 expect_exit 0 "crossings near a large offset" "$CLI" triangulate "$DATA/crossings_near_large_offset.poly" -o "$OUT/c.node"
 expect_grep "crossings near a large offset: 17 crossing vertices" "$OUT/c.node" "30 2 0 1"
 
+# ---- tetrahedralize: 3D points and closed surfaces ----------------------------
+OUT=$TMP/tet
+mkdir "$OUT"
+D3=$DOMAINS/../data3d
+expect_exit 0 "tetrahedralize a BCC .node" "$CLI" tetrahedralize "$DATA/bcc_2x2x2.node" -o "$OUT/bcc.vtu" --quality --timings
+for want in "tetrahedra                   96" "volume                       8" "read: " "tetrahedralize: "; do
+    expect_grep "tetrahedralize --quality" "$TMP/out" "$want"
+done
+expect_exit 0 "tetrahedralize two cubes" "$CLI" tetrahedralize "$D3/two_cubes.poly" -o "$OUT/two.vtu"
+expect_exit 0 "tetrahedralize a cube .off to .msh" "$CLI" tetrahedralize "$D3/cube.off" -o "$OUT/cube.msh"
+expect_exit 0 "tetrahedralize a binary .stl to .node" "$CLI" tetrahedralize "$D3/cube_binary.stl" -o "$OUT/cube.node"
+for f in cube.node cube.ele cube.face; do
+    if [ -s "$OUT/$f" ]; then pass; else fail "tetrahedralize .node: $f missing"; fi
+done
+# meshio reads the tetrahedra; their volumes sum to the domain's
+if "$PY" -c '
+import sys, meshio, numpy as np
+for path, want in ((sys.argv[1], 8.0), (sys.argv[2], 2.0), (sys.argv[3], 1.0)):
+    m = meshio.read(path)
+    t = np.vstack([c.data for c in m.cells if c.type == "tetra"])
+    p = m.points[t]
+    v = np.einsum("ij,ij->i", p[:, 0] - p[:, 3], np.cross(p[:, 1] - p[:, 3], p[:, 2] - p[:, 3])) / 6
+    assert (v > 0).all(), path
+    assert abs(v.sum() - want) < 1e-12 * want, (path, v.sum())
+' "$OUT/bcc.vtu" "$OUT/two.vtu" "$OUT/cube.msh" > "$OUT/meshio.log" 2>&1; then pass; else fail "tetrahedralize outputs with meshio: $(tail -c 300 "$OUT/meshio.log")"; fi
+expect_exit 1 "tetrahedralize an open surface" "$CLI" tetrahedralize "$DATA/open_tetra.off" -o "$OUT/open.vtu"
+expect_one_line "tetrahedralize an open surface"
+expect_grep "tetrahedralize an open surface" "$TMP/err" "open"
+if [ ! -e "$OUT/open.vtu" ]; then pass; else fail "tetrahedralize an open surface wrote a file"; fi
+expect_exit 1 "tetrahedralize a 2D input" "$CLI" tetrahedralize "$DOMAINS/square.poly"
+expect_one_line "tetrahedralize a 2D input"
+expect_exit 2 "tetrahedralize to .svg" "$CLI" tetrahedralize "$D3/cube.off" -o "$OUT/c.svg"
+expect_exit 1 "tetrahedralize a missing file" "$CLI" tetrahedralize "$OUT/none.off"
+
 # ---- optimise: the power dual -------------------------------------------------
 OUT=$TMP/optimise
 mkdir "$OUT"
