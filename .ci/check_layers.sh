@@ -2,12 +2,8 @@
 # check_layers.sh - the library's folders keep their layering, and its files
 # stay small enough to read:
 #  1. a file under lib/ includes only its own folder and the layers below it:
-<<<<<<< HEAD
 #       common <- geom <- delaunay <- {refine, dual};  geom <- delaunay3;  io <- common;
-=======
-#       common <- geom <- delaunay <- {refine, dual};  io <- common;
 #       common <- geom <- surface3 (3D surface checks);  common <- geom <- tetgen (TetGen shim, C++);
->>>>>>> surf3
 #       api sees every engine (not cli);  cli sees only include/ (and itself).
 #     The public headers (include/cvmesh*.h) are open to every layer.
 #  2. no .c or .h file under lib/ passes MAX_LINES lines, unless

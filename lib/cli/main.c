@@ -56,7 +56,7 @@ int main(int argc, char **argv)
         return CLI_EXIT_OK;
     }
     if (strcmp(argv[1], "--version") == 0 || strcmp(argv[1], "-V") == 0) {
-        printf("cvmesh %s\n", cvm_version_string());
+        printf("cvmesh %s\n%s\n", cvm_version_string(), cvm_build_string());
         return CLI_EXIT_OK;
     }
     for (i = 0; i < NCOMMANDS; i++)
