@@ -4,7 +4,6 @@
 
 #include "output_internal.h"
 #include "dual/dual_internal.h"
-#include "refine/refine_internal.h"
 #include "sizing_fields.h"
 
 enum { REP_SWEEPS, REP_BEFORE, REP_AFTER, REP_MOVES, REP_FLIPS, REP_FIXES, REP_SECONDS,

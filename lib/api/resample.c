@@ -4,7 +4,7 @@
 #include <string.h>
 
 #include "output_internal.h"
-#include "refine/refine_internal.h"
+#include "sizing/sizing_internal.h"
 #include "geom/geom_internal.h"
 #include "geom/measure.h"
 
