@@ -120,7 +120,7 @@ void cvm__mesh_forget_layers(cvm_mesh *m);
  * recovered) and flood the regional attributes; lib/api/triangulate.c. */
 cvm_status cvm__mesh_carve(cvm_mesh *m);
 
-/* CVM_OPT_KEEP_SEGMENT_VERTICES = 0 (lib/api/resample.c): re-discretise the
+/* CVM_OPT_KEEP_SEGMENT_VERTICES = 0 (lib/api/resample.c, lib/boundary): re-discretise the
  * chains of segments of m that form smooth curves with sizing and rebuild the
  * triangulation; *n_chains receives how many chains were re-discretised.
  * CVM_OK (also when no chain could be: m unchanged), CVM_E_STATE (m is not as
