@@ -113,7 +113,7 @@ cvm_status cvm__mesh_begin_set(cvm_mesh *m, const void *items, size_t count, con
 /* The triangle holding point p (a hole or region seed), or -1 outside the triangulation. */
 int32_t cvm__mesh_seed_triangle(cvm_mesh *m, const double *p);
 
-/* Forget the AFLR layer indices (the triangles they belong to are changing). */
+/* Forget the AFLR layer indices (the triangles they belong to are changing; mesh_state.c). */
 void cvm__mesh_forget_layers(cvm_mesh *m);
 
 /* Remove the exterior and the holes of the triangulation of m (its segments
@@ -143,18 +143,18 @@ const char *cvm__src_also(char *buf, size_t cap, const cvm__item_src *src, size_
                           const cvm__item_src *primary);
 
 /* The engine's input faults (cvm__cdt_build, cvm__cdt_carve) as messages
- * naming the items of in in the user's terms (lib/api/triangulate.c): sets
+ * naming the items of in in the user's terms (lib/api/cdt_input.c): sets
  * the message for status s and returns s; a fault of kind NONE returns s
  * untouched (the engine set the message). */
 cvm_status cvm__cdt_fault_message(cvm__ctx *ctx, const cvm__pslg *in, cvm_status s,
                                   const cvm__cdt_fault *f);
 
 /* The input p with the options of m (seed, duplicates, crossings, convex
- * hull) as the engine's triangulation input (lib/api/triangulate.c); out
+ * hull) as the engine's triangulation input (lib/api/cdt_input.c); out
  * borrows p's arrays. */
 void cvm__mesh_cdt_input(cvm__cdt_input *out, const cvm_mesh *m, const cvm__pslg *p);
 
-/* Forget the triangulation (input kept). */
+/* Forget the triangulation (input kept; mesh_state.c). */
 void cvm__mesh_drop_output(cvm_mesh *m);
 
 /* Gather the domain triangles (and edges, segments) of m into freshly

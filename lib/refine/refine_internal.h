@@ -209,6 +209,11 @@ typedef struct cvm__refiner {
  * CVM_INCOMPLETE_*; the triangulation is valid on every return. */
 cvm_status cvm__refine(cvm__tri2 *T, const cvm__refine_params *p, cvm__refine_report *rep);
 
+/* ---- shared refiner state (refiner_state.c) ---- */
+
+/* Make room in the per-vertex arrays (vls, vseg) for n vertices. CVM_OK or
+ * CVM_E_NOMEM (no message). */
+cvm_status cvm__rf_reserve_vertices(cvm__refiner *R, size_t n);
 /* Record a new vertex v (segment seg or -1) in the per-vertex arrays and count
  * it as a Steiner point. CVM_OK, CVM_E_NOMEM or a sizing error. */
 cvm_status cvm__rf_new_vertex(cvm__refiner *R, int32_t v, int32_t seg);
@@ -216,6 +221,9 @@ cvm_status cvm__rf_new_vertex(cvm__refiner *R, int32_t v, int32_t seg);
 cvm_status cvm__rf_may_insert(cvm__refiner *R);
 /* Triangles around vertex v into R->star; returns their number, or 0 on NOMEM. */
 size_t cvm__rf_star(cvm__refiner *R, int32_t v);
+/* Queue subsegment a-b of segment seg for splitting (R->segq). CVM_OK or
+ * CVM_E_NOMEM (message set). */
+cvm_status cvm__rf_segq_push(cvm__refiner *R, int32_t a, int32_t b, int32_t seg);
 
 /* ---- encroachment (encroach.c) ---- */
 
@@ -234,8 +242,6 @@ cvm_status cvm__rf_cavity_encroached(cvm__refiner *R, int32_t v, int32_t t0);
 
 /* ---- segment splitting (split_segment.c) ---- */
 
-/* Queue subsegment a-b of segment seg for splitting. */
-cvm_status cvm__rf_segq_push(cvm__refiner *R, int32_t a, int32_t b, int32_t seg);
 /* Split every queued subsegment (and those their splits encroach).
  * CVM_OK or a stop / error status. */
 cvm_status cvm__rf_split_queued(cvm__refiner *R);
