@@ -196,7 +196,7 @@ cvm_status cvm__grow_vertex_data(cvm_mesh *m);
  * input segments (a convex-hull edge). */
 int32_t cvm__segment_marker(const cvm_mesh *m, int32_t seg);
 
-/* Vertex v (m->tri coordinates) lies on input segment seg: it takes the
+/* Vertex v (coordinates in the store) lies on input segment seg: it takes the
  * segment's marker, and its attributes are interpolated linearly between the
  * segment's input ends (by the projection of v, clamped to the segment). For
  * a seg outside the input segments only the marker (0) is written. vmark and

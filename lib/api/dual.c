@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "output_internal.h"
+#include "store.h"
 #include "dual/dual_internal.h"
 
 static cvm__ctx *alloc_ctx(const cvm_mesh *m)
@@ -20,21 +21,18 @@ static cvm__ctx *alloc_ctx(const cvm_mesh *m)
 
 cvm_status cvm_mesh_set_weights(cvm_mesh *m, const double *w, size_t count)
 {
-    cvm__tri2 *T;
-    double *old = NULL, *nw;
     size_t v, nv;
     cvm_status s;
     if (!m)
         return CVM_E_NULL_ARG;
     CVM__BEGIN(m);
     cvm__mesh_forget_layers(m);
-    T = &m->tri;
     if (!w && count)
         return cvm__error(&m->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "w is NULL");
     if (!m->triangulated)
         return cvm__error(&m->ctx, CVM_E_STATE, CVM_ENT_NONE, -1,
                           "no triangulation: call cvm_mesh_triangulate() first");
-    nv = T->nv;
+    nv = cvm__store_nv(m);
     if (w && count != nv)
         return cvm__error(&m->ctx, CVM_E_ARGUMENT, CVM_ENT_NONE, -1,
                           "count %lu is not the vertex count %lu", (unsigned long)count,
@@ -43,20 +41,8 @@ cvm_status cvm_mesh_set_weights(cvm_mesh *m, const double *w, size_t count)
         if (!isfinite(w[v]))
             return cvm__error(&m->ctx, CVM_E_INPUT_NONFINITE, CVM_ENT_VERTEX, (int64_t)v,
                               "weight of vertex %lu is not finite", (unsigned long)v);
-    /* keep the old weights until the flips succeeded */
-    old = T->w;
-    nw = w ? cvm__malloc(&m->ctx, (T->cap_v ? T->cap_v : 1) * sizeof *nw) : NULL;
-    if (w && !nw)
-        return cvm__nomem(&m->ctx);
-    if (nw)
-        memcpy(nw, w, nv * sizeof *nw);
-    T->w = nw;
-    if ((s = cvm__tri2_make_regular(T, NULL))) {
-        T->w = old;
-        cvm__free(&m->ctx, nw);
+    if ((s = cvm__store_set_weights(m, w)))
         return s == CVM_E_NOMEM ? cvm__nomem(&m->ctx) : s;
-    }
-    cvm__free(&m->ctx, old);
     return CVM_OK;
 }
 
@@ -66,11 +52,11 @@ cvm_status cvm_mesh_copy_weights(double *dst, size_t dst_len, const cvm_mesh *m)
     cvm_status s;
     if (!m)
         return CVM_E_NULL_ARG;
-    nv = m->triangulated ? m->tri.nv : 0;
+    nv = m->triangulated ? cvm__store_nv(m) : 0;
     if ((s = cvm__room(dst, dst_len, nv)))
         return s;
-    if (nv && m->tri.w)
-        memcpy(dst, m->tri.w, nv * sizeof *dst);
+    if (nv && cvm__store_weights(m))
+        memcpy(dst, cvm__store_weights(m), nv * sizeof *dst);
     else if (nv)
         memset(dst, 0, nv * sizeof *dst);
     return CVM_OK;
@@ -78,29 +64,29 @@ cvm_status cvm_mesh_copy_weights(double *dst, size_t dst_len, const cvm_mesh *m)
 
 cvm_status cvm_mesh_copy_dual_vertices(double *dst, size_t dst_len, const cvm_mesh *m)
 {
-    size_t t, k = 0;
+    int32_t t;
+    size_t k = 0;
     cvm_status s;
     if (!m)
         return CVM_E_NULL_ARG;
     if ((s = cvm__room(dst, dst_len, 2 * cvm__mesh_n_triangles(m))) || !m->triangulated)
         return s;
-    for (t = 0; t < m->tri.nt; t++)
-        if (cvm__tri2_in_domain(&m->tri, (int32_t)t))
-            cvm__dual_tri_vertex(&m->tri, (int32_t)t, dst + 2 * k++);
+    for (t = cvm__store_next_cell(m, -1); t >= 0; t = cvm__store_next_cell(m, t))
+        cvm__dual_tri_vertex(cvm__store_tri2_const(m), t, dst + 2 * k++);
     return CVM_OK;
 }
 
 cvm_status cvm_mesh_copy_dual_inside(int32_t *dst, size_t dst_len, const cvm_mesh *m)
 {
-    size_t t, k = 0;
+    int32_t t;
+    size_t k = 0;
     cvm_status s;
     if (!m)
         return CVM_E_NULL_ARG;
     if ((s = cvm__room(dst, dst_len, cvm__mesh_n_triangles(m))) || !m->triangulated)
         return s;
-    for (t = 0; t < m->tri.nt; t++)
-        if (cvm__tri2_in_domain(&m->tri, (int32_t)t))
-            dst[k++] = cvm__dual_tri_contains(&m->tri, (int32_t)t);
+    for (t = cvm__store_next_cell(m, -1); t >= 0; t = cvm__store_next_cell(m, t))
+        dst[k++] = cvm__dual_tri_contains(cvm__store_tri2_const(m), t);
     return CVM_OK;
 }
 
@@ -110,10 +96,10 @@ cvm_status cvm_mesh_copy_dual_areas(double *dst, size_t dst_len, const cvm_mesh 
     cvm_status s;
     if (!m)
         return CVM_E_NULL_ARG;
-    nv = m->triangulated ? m->tri.nv : 0;
+    nv = m->triangulated ? cvm__store_nv(m) : 0;
     if ((s = cvm__room(dst, dst_len, nv)) || !nv)
         return s;
-    cvm__dual_areas(&m->tri, dst);
+    cvm__dual_areas(cvm__store_tri2_const(m), dst);
     return CVM_OK;
 }
 
@@ -125,12 +111,12 @@ cvm_status cvm_mesh_copy_dual_edge_lengths(double *dst, size_t dst_len, const cv
     if (!m)
         return CVM_E_NULL_ARG;
     if (m->triangulated)
-        cvm__domain_edge_counts(&m->tri, &ne, &ns);
+        cvm__domain_edge_counts(cvm__store_tri2_const(m), &ne, &ns);
     if ((s = cvm__room(dst, dst_len, ne)) || !ne)
         return s;
-    if (cvm__domain_edges(alloc_ctx(m), &m->tri, 0, &e))
+    if (cvm__domain_edges(alloc_ctx(m), cvm__store_tri2_const(m), 0, &e))
         return CVM_E_NOMEM;
-    s = cvm__dual_edge_lengths(alloc_ctx(m), &m->tri, &e, dst);
+    s = cvm__dual_edge_lengths(alloc_ctx(m), cvm__store_tri2_const(m), &e, dst);
     cvm__edges_free(alloc_ctx(m), &e);
     return s;
 }
@@ -142,7 +128,7 @@ static cvm_status outside_pct(cvm_mesh *m, double *all, double *bnd)
 {
     cvm__quality_cache *qc = &m->quality;
     if (!(qc->have & CVM__HAVE_OUTSIDE)) {
-        if (cvm__dual_outside_pct(&m->ctx, &m->tri, qc->pct_outside))
+        if (cvm__dual_outside_pct(&m->ctx, cvm__store_tri2_const(m), qc->pct_outside))
             return cvm__nomem(&m->ctx);
         qc->have |= CVM__HAVE_OUTSIDE;
     }
@@ -169,10 +155,10 @@ cvm_status cvm__dual_measure(double *out, cvm_mesh *m, cvm_measure which)
         *out = which == CVM_MEASURE_MIN_DUAL_EDGE ? minima[0] : minima[1];
         return CVM_OK;
     case CVM_MEASURE_VANISHED_VERTICES: {
-        uint8_t *mark = cvm__malloc(&m->ctx, m->tri.nv + 1);
+        uint8_t *mark = cvm__malloc(&m->ctx, cvm__store_nv(m) + 1);
         if (!mark)
             return cvm__nomem(&m->ctx);
-        *out = (double)cvm__tri2_count_unregular(&m->tri, mark);
+        *out = (double)cvm__store_count_vanished(m, mark);
         cvm__free(&m->ctx, mark);
         return CVM_OK;
     }
@@ -184,17 +170,17 @@ cvm_status cvm__dual_measure(double *out, cvm_mesh *m, cvm_measure which)
 
 cvm_status cvm__mesh_weight_attributes(cvm_mesh *m, double **out)
 {
-    const cvm__tri2 *T = &m->tri;
-    size_t na = m->vattr ? m->in.nattr : 0, v;
+    const double *w = cvm__store_weights(m);
+    size_t na = m->vattr ? m->in.nattr : 0, v, nv = cvm__store_nv(m);
     double *a;
     *out = NULL;
-    if (!T->w)
+    if (!w)
         return CVM_OK;
-    a = cvm__malloc(&m->ctx, (T->nv * (na + 1) + 1) * sizeof *a);
+    a = cvm__malloc(&m->ctx, (nv * (na + 1) + 1) * sizeof *a);
     if (!a)
         return CVM_E_NOMEM;
-    for (v = 0; v < T->nv; v++) {
-        a[v * (na + 1)] = T->w[v];
+    for (v = 0; v < nv; v++) {
+        a[v * (na + 1)] = w[v];
         if (na)
             memcpy(a + v * (na + 1) + 1, m->vattr + v * na, na * sizeof *a);
     }

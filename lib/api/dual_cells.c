@@ -3,16 +3,17 @@
 #include <string.h>
 
 #include "output_internal.h"
+#include "store.h"
 
 /* Fresh offsets of m's cells (nv + 1 entries). */
 static cvm_status offsets(cvm__ctx *ctx, const cvm_mesh *m, int32_t **out)
 {
-    int32_t *off = cvm__malloc(ctx, (m->tri.nv + 1) * sizeof *off);
+    int32_t *off = cvm__malloc(ctx, (cvm__store_nv(m) + 1) * sizeof *off);
     cvm_status s;
     *out = NULL;
     if (!off)
         return CVM_E_NOMEM;
-    if ((s = cvm__dual_cells(ctx, &m->tri, off, NULL))) {
+    if ((s = cvm__dual_cells(ctx, cvm__store_tri2_const(m), off, NULL))) {
         cvm__free(ctx, off);
         return s;
     }
@@ -28,7 +29,7 @@ cvm_status cvm_mesh_copy_dual_cell_offsets(cvm_index *dst, size_t dst_len, const
     cvm_status s;
     if (!m)
         return CVM_E_NULL_ARG;
-    nv = m->triangulated ? m->tri.nv : 0;
+    nv = m->triangulated ? cvm__store_nv(m) : 0;
     if ((s = cvm__room(dst, dst_len, nv + 1)))
         return s;
     if (!nv) {
@@ -50,13 +51,13 @@ cvm_status cvm_mesh_copy_dual_cells(double *dst, size_t dst_len, const cvm_mesh 
     cvm_status s;
     if (!m)
         return CVM_E_NULL_ARG;
-    if (!m->triangulated || !m->tri.nv)
+    if (!m->triangulated || !cvm__store_nv(m))
         return cvm__room(dst, dst_len, 0);
     ctx = (cvm__ctx *)&m->ctx;
     if ((s = offsets(ctx, m, &off)))
         return s;
-    if ((s = cvm__room(dst, dst_len, 2 * (size_t)off[m->tri.nv])) == CVM_OK)
-        s = cvm__dual_cells(ctx, &m->tri, off, dst);
+    if ((s = cvm__room(dst, dst_len, 2 * (size_t)off[cvm__store_nv(m)])) == CVM_OK)
+        s = cvm__dual_cells(ctx, cvm__store_tri2_const(m), off, dst);
     cvm__free(ctx, off);
     return s;
 }
@@ -64,7 +65,9 @@ cvm_status cvm_mesh_copy_dual_cells(double *dst, size_t dst_len, const cvm_mesh 
 /* The non-empty cells of m as a cvm__dual_out (arrays freed by dual_out_free). */
 static cvm_status dual_out_build(cvm_mesh *m, cvm__dual_out *d)
 {
-    const cvm__tri2 *T = &m->tri;
+    const cvm__tri2 *T = cvm__store_tri2_const(m);
+    const double *wt = cvm__store_weights(m);
+    size_t nv = cvm__store_nv(m);
     int32_t *off = NULL, *coff, *vid;
     double *xy, *area, *w;
     size_t v, n = 0;
@@ -72,11 +75,11 @@ static cvm_status dual_out_build(cvm_mesh *m, cvm__dual_out *d)
     memset(d, 0, sizeof *d);
     if ((s = offsets(&m->ctx, m, &off)))
         return s;
-    xy = cvm__malloc(&m->ctx, (2 * (size_t)off[T->nv] + 1) * sizeof *xy);
-    coff = cvm__malloc(&m->ctx, (T->nv + 1) * sizeof *coff);
-    vid = cvm__malloc(&m->ctx, (T->nv + 1) * sizeof *vid);
-    area = cvm__malloc(&m->ctx, (T->nv + 1) * sizeof *area);
-    w = cvm__malloc(&m->ctx, (T->nv + 1) * sizeof *w);
+    xy = cvm__malloc(&m->ctx, (2 * (size_t)off[nv] + 1) * sizeof *xy);
+    coff = cvm__malloc(&m->ctx, (nv + 1) * sizeof *coff);
+    vid = cvm__malloc(&m->ctx, (nv + 1) * sizeof *vid);
+    area = cvm__malloc(&m->ctx, (nv + 1) * sizeof *area);
+    w = cvm__malloc(&m->ctx, (nv + 1) * sizeof *w);
     d->xy = xy;
     d->off = coff;
     d->vertex = vid;
@@ -87,21 +90,21 @@ static cvm_status dual_out_build(cvm_mesh *m, cvm__dual_out *d)
         return CVM_E_NOMEM;
     }
     if ((s = cvm__dual_cells(&m->ctx, T, off, xy)) ||
-        (s = cvm_mesh_copy_dual_areas(area, T->nv, m))) {
+        (s = cvm_mesh_copy_dual_areas(area, nv, m))) {
         cvm__free(&m->ctx, off);
         return s;
     }
     coff[0] = 0;
-    for (v = 0; v < T->nv; v++) {
+    for (v = 0; v < nv; v++) {
         if (off[v + 1] == off[v])
             continue; /* no domain triangle: no cell */
         vid[n] = (int32_t)v;
         area[n] = area[v];
-        w[n] = cvm__dual_weight(T, (int32_t)v);
+        w[n] = wt ? wt[v] : 0.0;
         coff[++n] = off[v + 1];
     }
     d->ncell = n;
-    d->ncorner = (size_t)off[T->nv];
+    d->ncorner = (size_t)off[nv];
     cvm__free(&m->ctx, off);
     return CVM_OK;
 }

@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "output_internal.h"
+#include "store.h"
 
 cvm_status cvm_mesh_copy_dual_quality(double *dst, size_t dst_len, const cvm_mesh *m,
                                       cvm_histogram which)
@@ -19,8 +20,8 @@ cvm_status cvm_mesh_copy_dual_quality(double *dst, size_t dst_len, const cvm_mes
     if (!dst && dst_len)
         return CVM_E_NULL_ARG;
     if (m->triangulated) {
-        nt = cvm__domain_triangles(&m->tri);
-        cvm__domain_edge_counts(&m->tri, &ne, &ns);
+        nt = cvm__domain_triangles(cvm__store_tri2_const(m));
+        cvm__domain_edge_counts(cvm__store_tri2_const(m), &ne, &ns);
     }
     need = w < 3 ? nt : ne;
     if (dst_len < need)
@@ -28,7 +29,7 @@ cvm_status cvm_mesh_copy_dual_quality(double *dst, size_t dst_len, const cvm_mes
     if (!need)
         return CVM_OK;
     ctx = (cvm__ctx *)&m->ctx; /* allocation does not change the handle */
-    if (cvm__dual_q_compute(ctx, &m->tri, &d, NULL))
+    if (cvm__dual_q_compute(ctx, cvm__store_tri2_const(m), &d, NULL))
         return CVM_E_NOMEM;
     memcpy(dst, d.q[w], need * sizeof *dst);
     cvm__dual_q_free(ctx, &d);
@@ -47,7 +48,7 @@ static cvm_status dual_summary(cvm_mesh *m, const cvm__dual_summary **out)
         *out = r;
         return CVM_OK;
     }
-    if (cvm__dual_q_compute(&m->ctx, &m->tri, &d, r->minima))
+    if (cvm__dual_q_compute(&m->ctx, cvm__store_tri2_const(m), &d, r->minima))
         return cvm__nomem(&m->ctx);
 #define Q(which) r->q[(int)(which) - (int)CVM_MEASURE_Q1_MEAN_DEG]
     Q(CVM_MEASURE_Q1_MEAN_DEG) = cvm__dual_q_summarise(&d, 1, 0).mean;

@@ -3,6 +3,7 @@
 #include <string.h>
 
 #include "api_internal.h"
+#include "store.h"
 
 static cvm_status create(cvm_mesh **out, cvm__ctx *proto)
 {
@@ -12,7 +13,7 @@ static cvm_status create(cvm_mesh **out, cvm__ctx *proto)
     memset(m, 0, sizeof *m);
     m->ctx = *proto;
     cvm__options_default(m->opt);
-    cvm__tri2_init(&m->tri, &m->ctx);
+    cvm__store_init(m);
     cvm__write_set_init(&m->staged, &m->ctx);
     *out = m;
     return CVM_OK;
@@ -54,7 +55,7 @@ void cvm_mesh_free(cvm_mesh *m)
         return;
     cvm__write_set_discard(&m->staged);
     cvm__pslg_free(&m->ctx, &m->in);
-    cvm__tri2_destroy(&m->tri);
+    cvm__store_destroy(m);
     cvm__free(&m->ctx, m->input_map);
     cvm__free(&m->ctx, m->vmark);
     cvm__free(&m->ctx, m->vattr);

@@ -3,6 +3,7 @@
 #include <string.h>
 
 #include "api_internal.h"
+#include "store.h"
 
 void cvm__mesh_forget_layers(cvm_mesh *m)
 {
@@ -13,7 +14,7 @@ void cvm__mesh_forget_layers(cvm_mesh *m)
 
 void cvm__mesh_drop_output(cvm_mesh *m)
 {
-    cvm__tri2_clear(&m->tri);
+    cvm__store_clear(m);
     m->triangulated = 0;
     cvm__free(&m->ctx, m->input_map);
     m->input_map = NULL;

@@ -4,26 +4,24 @@
 #include <string.h>
 
 #include "api_internal.h"
+#include "store.h"
 #include "boundary/boundary_internal.h"
 
 /* Swap the rebuilt triangulation of R into m and carve it; R->T receives the old one.
  * *fallback = 1 (m unchanged, R->T the rejected one) when carving refuses it. */
 static cvm_status adopt(cvm_mesh *m, cvm__resample_result *R, int *fallback)
 {
-    cvm__tri2 old = m->tri;
     cvm_status s;
     *fallback = 0;
-    m->tri = R->T;
+    cvm__store_exchange_tri2(m, &R->T);
     if ((s = cvm__mesh_carve(m))) {
-        R->T = m->tri;
-        m->tri = old;
+        cvm__store_exchange_tri2(m, &R->T);
         if (s != CVM_E_NOMEM) {
             *fallback = 1;
             s = CVM_OK;
         }
         return s;
     }
-    R->T = old;
     return CVM_OK;
 }
 
@@ -33,22 +31,22 @@ cvm_status cvm__mesh_resample_boundary(cvm_mesh *m, const cvm_sizing *sizing, si
     cvm__resample_result R;
     int32_t *vmark = NULL;
     double *vattr = NULL;
-    size_t v, k, na = m->in.nattr, nv = m->tri.nv, nv2;
+    size_t v, k, na = m->in.nattr, nv = cvm__store_nv(m), nv2;
     cvm_status s;
     int fallback = 0;
     *n_chains = 0;
-    if (m->tri.nv != m->nv_triangulated)
+    if (nv != m->nv_triangulated)
         return cvm__error(&m->ctx, CVM_E_STATE, CVM_ENT_NONE, -1,
                           "CVM_OPT_KEEP_SEGMENT_VERTICES = 0 re-discretises the input segments, so it "
                           "needs the mesh as cvm_mesh_triangulate() left it; this one has %lu vertices "
                           "instead of %lu (refined, or points inserted): triangulate again first",
-                          (unsigned long)m->tri.nv, (unsigned long)m->nv_triangulated);
-    if (m->tri.w)
+                          (unsigned long)nv, (unsigned long)m->nv_triangulated);
+    if (cvm__store_weights(m))
         return cvm__error(&m->ctx, CVM_E_STATE, CVM_ENT_NONE, -1,
                           "CVM_OPT_KEEP_SEGMENT_VERTICES = 0 cannot re-discretise a weighted (regular) "
                           "triangulation: triangulate again without weights first");
     memset(&in, 0, sizeof in);
-    in.T = &m->tri;
+    in.T = cvm__store_tri2_const(m);
     in.sizing = sizing;
     in.smark = m->in.smark;
     in.nseg = m->in.nseg;
@@ -96,7 +94,7 @@ cvm_status cvm__mesh_resample_boundary(cvm_mesh *m, const cvm_sizing *sizing, si
     for (k = 0; k < m->in.np; k++)
         if (m->input_map[k] >= 0)
             m->input_map[k] = R.newid[m->input_map[k]];
-    m->nv_triangulated = m->tri.nv;
+    m->nv_triangulated = cvm__store_nv(m);
     *n_chains = R.n_chains;
 done:
     cvm__resample_result_free(&R, &m->ctx);

@@ -3,6 +3,7 @@
 #include <string.h>
 
 #include "sizing_fields.h"
+#include "store.h"
 
 cvm_status cvm__sizing_fields_begin(cvm_mesh *m, const cvm_sizing *sizing, cvm__sizing_fields *F,
                                     const cvm_sizing **use)
@@ -17,14 +18,14 @@ cvm_status cvm__sizing_fields_begin(cvm_mesh *m, const cvm_sizing *sizing, cvm__
     if (sizing->has_auto) {
         /* the automatic field's features: boundary and constrained edges, and the input
          * points on none of them */
-        if (!(is_input = cvm__malloc(&m->ctx, m->tri.nv + 1)))
+        if (!(is_input = cvm__malloc(&m->ctx, cvm__store_nv(m) + 1)))
             return cvm__nomem(&m->ctx);
-        memset(is_input, 0, m->tri.nv + 1);
+        memset(is_input, 0, cvm__store_nv(m) + 1);
         for (k = 0; k < m->in.np; k++)
             if (m->input_map[k] >= 0)
                 is_input[m->input_map[k]] = 1;
     }
-    s = cvm__sizing_fields_build(F, use, sizing, &m->tri, is_input, &m->ctx);
+    s = cvm__sizing_fields_build(F, use, sizing, cvm__store_tri2_const(m), is_input, &m->ctx);
     cvm__free(&m->ctx, is_input);
     return s;
 }

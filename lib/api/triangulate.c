@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "api_internal.h"
+#include "store.h"
 
 /* Number naming input point i in messages (the file's, or i; i may be out of range). */
 static long long point_num(const cvm_mesh *m, int32_t i)
@@ -31,12 +32,7 @@ static cvm_status check_segments(cvm_mesh *m)
 /* Locate a seed point: the domain triangle containing it, or -1 outside. */
 int32_t cvm__mesh_seed_triangle(cvm_mesh *m, const double *p)
 {
-    int32_t t;
-    int j;
-    cvm__loc loc = cvm__tri2_locate(&m->tri, p, -1, &t, &j);
-    if (loc == CVM__LOC_OUTSIDE || t < 0)
-        return -1;
-    return t;
+    return cvm__store_locate(m, p);
 }
 
 cvm_status cvm__mesh_carve(cvm_mesh *m)
@@ -45,7 +41,7 @@ cvm_status cvm__mesh_carve(cvm_mesh *m)
     cvm__cdt_fault f;
     cvm_status s;
     cvm__mesh_cdt_input(&in, m, &m->in);
-    s = cvm__cdt_carve(&m->tri, &in, &f);
+    s = cvm__cdt_carve(cvm__store_tri2(m), &in, &f);
     return s ? cvm__cdt_fault_message(&m->ctx, &m->in, s, &f) : CVM_OK;
 }
 
@@ -66,7 +62,7 @@ static cvm_status triangulate(cvm_mesh *m)
     out.vattr = m->vattr;
     out.cap_vmark = m->cap_vmark;
     out.cap_vattr = m->cap_vattr;
-    s = cvm__cdt_build(&m->tri, &in, &out, &f);
+    s = cvm__cdt_build(cvm__store_tri2(m), &in, &out, &f);
     m->input_map = out.input_map;
     m->n_dup = out.n_dup;
     m->vmark = out.vmark;
@@ -92,21 +88,19 @@ cvm_status cvm_mesh_triangulate(cvm_mesh *m)
         return s;
     }
     m->triangulated = 1;
-    m->nv_triangulated = m->tri.nv;
+    m->nv_triangulated = cvm__store_nv(m);
     return CVM_OK;
 }
 
 cvm_status cvm_mesh_insert_points(cvm_index *ids_out, cvm_mesh *m, const double *xy, size_t count,
                                   double min_dist)
 {
-    cvm__tri2 *T;
     size_t i;
     cvm_status s = CVM_OK;
     if (!m)
         return CVM_E_NULL_ARG;
     CVM__BEGIN(m);
     cvm__mesh_forget_layers(m);
-    T = &m->tri;
     if (!xy && count > 0)
         return cvm__error(&m->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "xy is NULL");
     if (!m->triangulated)
@@ -127,24 +121,24 @@ cvm_status cvm_mesh_insert_points(cvm_index *ids_out, cvm_mesh *m, const double 
             ids_out[i] = CVM_REJECTED;
     cvm__run_begin(&m->ctx, cvm__opt(m, CVM_OPT_TIME_LIMIT_S));
     for (i = 0; i < count; i++) {
-        int32_t v, other;
-        cvm__ins res;
-        if ((s = cvm__tri2_add_vertex(T, xy + 2 * i, &v)))
+        int32_t v;
+        int inserted;
+        if ((s = cvm__store_add_vertex(m, xy + 2 * i, &v)))
             return s == CVM_E_NOMEM ? cvm__nomem(&m->ctx)
                                     : cvm__error(&m->ctx, s, CVM_ENT_INPUT_POINT, (int64_t)i, "too many vertices");
         if (cvm__grow_vertex_data(m)) {
-            T->nv--;
+            cvm__store_drop_last_vertex(m);
             return cvm__nomem(&m->ctx);
         }
-        s = cvm__tri2_insert_vertex(T, v, T->last, CVM__INSF_DOMAIN_ONLY, min_dist, &res, &other);
+        s = cvm__store_insert_vertex(m, v, min_dist, &inserted);
         if (s) {
-            T->nv--;
+            cvm__store_drop_last_vertex(m);
             return s == CVM_E_NOMEM ? cvm__nomem(&m->ctx)
                                     : cvm__error(&m->ctx, s, CVM_ENT_INPUT_POINT, (int64_t)i,
                                                  "inserting point %lu failed", (unsigned long)i);
         }
-        if (res != CVM__INS_DONE) {
-            T->nv--;
+        if (!inserted) {
+            cvm__store_drop_last_vertex(m);
             continue;
         }
         m->vmark[v] = 0;
@@ -164,8 +158,7 @@ cvm_status cvm_mesh_insert_points(cvm_index *ids_out, cvm_mesh *m, const double 
 
 cvm_status cvm_mesh_check(cvm_mesh *m)
 {
-    const cvm__tri2 *T;
-    size_t t;
+    int32_t t;
     int j;
     cvm_status s;
     if (!m)
@@ -173,19 +166,15 @@ cvm_status cvm_mesh_check(cvm_mesh *m)
     CVM__BEGIN(m);
     if (!m->triangulated)
         return cvm__error(&m->ctx, CVM_E_STATE, CVM_ENT_NONE, -1, "nothing triangulated");
-    if ((s = cvm__tri2_check(&m->tri)) ||
-        (s = cvm__cdt_check_chains(&m->tri, m->in.seg, m->in.nseg, m->input_map)))
+    if ((s = cvm__store_check(m)))
         return s;
-    T = &m->tri;
     /* the domain is bounded by constrained edges or by the convex hull */
-    for (t = 0; t < T->nt; t++) {
-        if (!cvm__tri2_in_domain(T, (int32_t)t))
-            continue;
+    for (t = cvm__store_next_cell(m, -1); t >= 0; t = cvm__store_next_cell(m, t)) {
         for (j = 0; j < 3; j++) {
-            int32_t u = T->tn[3 * t + j] / 3;
-            if (cvm__tri2_in_domain(T, u) || cvm__tri2_edge_seg(T, (int32_t)t, j) >= 0)
+            int32_t u = cvm__store_across(m, (size_t)t, j);
+            if (cvm__store_in_domain(m, u) || cvm__store_face_segment(m, (size_t)t, j) >= 0)
                 continue;
-            if (cvm__tri2_is_ghost(T, u) && (m->in.nseg == 0 || cvm__opt(m, CVM_OPT_KEEP_CONVEX_HULL) != 0))
+            if (u >= 0 && cvm__store_is_ghost(m, u) && (m->in.nseg == 0 || cvm__opt(m, CVM_OPT_KEEP_CONVEX_HULL) != 0))
                 continue;
             return cvm__error(&m->ctx, CVM_E_INTERNAL, CVM_ENT_TRIANGLE, (int64_t)t,
                               "check failed: triangle slot %lu borders the outside across an "
