@@ -91,8 +91,9 @@ static inline int32_t cvm__store_face_segment(const cvm_mesh *m, size_t t, int j
 {
     return cvm__tri2_edge_seg(&m->tri, (int32_t)t, j);
 }
-/* Regional attribute per slot (writable), or NULL without regions. */
-static inline double *cvm__store_cell_attributes(cvm_mesh *m)
+/* Regional attribute per slot (writable through a non-const m), or NULL
+ * without regions. */
+static inline double *cvm__store_cell_attributes(const cvm_mesh *m)
 {
     return m->tri.ta;
 }
