@@ -2,12 +2,16 @@
 # check_layers.sh - the library's folders keep their layering, and its files
 # stay small enough to read:
 #  1. a file under lib/ includes only its own folder and the layers below it:
-#       common <- geom <- delaunay <- {refine, dual};  geom <- delaunay3;  io <- common;
+#       common <- geom <- delaunay <- sizing <- {boundary, refine, dual};  geom <- delaunay3;
 #       common <- geom <- surface3 (3D surface checks);  common <- geom <- tetgen (TetGen shim, C++);
+#       io <- common;
 #       api sees every engine (not cli);  cli sees only include/ (and itself).
 #     The public headers (include/cvmesh*.h) are open to every layer.
 #  2. no .c or .h file under lib/ passes MAX_LINES lines, unless
 #     .ci/layers_allow.txt names it with its own bound (and a reason).
+#  3. lib/api reaches the simplex store only through lib/api/store.h: no
+#     other file of lib/api includes the kernel's store header, names the
+#     handle's store (m->tri), its fields (T->nv, ...) or calls cvm__tri2_*.
 # Usage: sh .ci/check_layers.sh   (from anywhere; exits 1 on the first report)
 set -eu
 cd "$(dirname "$0")/.."
@@ -22,11 +26,12 @@ allowed() {
     geom) echo "common" ;;
     delaunay) echo "common geom" ;;
     delaunay3) echo "common geom" ;;
-    refine | dual) echo "common geom delaunay" ;;
+    sizing) echo "common geom delaunay" ;;
+    boundary | refine | dual) echo "common geom delaunay sizing" ;;
     io) echo "common" ;;
     surface3) echo "common geom" ;;
     tetgen) echo "common geom" ;;
-    api) echo "common geom delaunay delaunay3 surface3 tetgen refine dual io" ;;
+    api) echo "common geom delaunay delaunay3 sizing boundary surface3 tetgen refine dual io" ;;
     cli) echo "" ;;
     *) echo "?" ;;
     esac
@@ -96,5 +101,31 @@ for f in $(sed -e 's/#.*//' "$allow" | awk 'NF { print $1 }'); do
     fi
 done
 
-[ $fail = 0 ] && echo "check-layers: lib/ keeps its layers; every file within $MAX_LINES lines or allowed"
+# The store accessor (store.h, store2.c) is the only file of lib/api that
+# touches the store. STORE_PENDING: files still reaching in directly (the
+# .vtu reader rebuilds a triangulation of its own and adopts it; it is being
+# extended on another branch, and its rebuild is to move below the API with
+# the adoption through cvm__store_exchange_tri2). Remove an entry when its
+# file is converted; the check fails on a listed file that no longer needs it.
+STORE_PENDING="lib/api/mesh_read_vtu.c"
+store_re='#[[:space:]]*include[[:space:]]*"delaunay/tri2_store\.h"|\bm->tri\b|\bT->[a-z_]+|\bcvm__tri2_[a-z0-9_]+[[:space:]]*\('
+for f in lib/api/*.c lib/api/*.h; do
+    case $f in lib/api/store.h | lib/api/store2.c) continue ;; esac
+    hits=$(grep -nE "$store_re" "$f" | head -3 || true)
+    case " $STORE_PENDING " in
+    *" $f "*)
+        if [ -z "$hits" ]; then
+            echo "check-layers: $f no longer reaches into the store: remove it from STORE_PENDING"
+            fail=1
+        fi
+        continue ;;
+    esac
+    if [ -n "$hits" ]; then
+        echo "check-layers: $f reaches into the simplex store; use lib/api/store.h:"
+        echo "$hits" | sed 's/^/    /'
+        fail=1
+    fi
+done
+
+[ $fail = 0 ] && echo "check-layers: lib/ keeps its layers; every file within $MAX_LINES lines or allowed; lib/api uses the store through store.h"
 exit $fail

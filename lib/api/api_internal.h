@@ -120,14 +120,14 @@ cvm_status cvm__mesh_begin_set(cvm_mesh *m, const void *items, size_t count, con
 /* The triangle holding point p (a hole or region seed), or -1 outside the triangulation. */
 int32_t cvm__mesh_seed_triangle(cvm_mesh *m, const double *p);
 
-/* Forget the AFLR layer indices (the triangles they belong to are changing). */
+/* Forget the AFLR layer indices (the triangles they belong to are changing; mesh_state.c). */
 void cvm__mesh_forget_layers(cvm_mesh *m);
 
 /* Remove the exterior and the holes of the triangulation of m (its segments
  * recovered) and flood the regional attributes; lib/api/triangulate.c. */
 cvm_status cvm__mesh_carve(cvm_mesh *m);
 
-/* CVM_OPT_KEEP_SEGMENT_VERTICES = 0 (lib/api/resample.c): re-discretise the
+/* CVM_OPT_KEEP_SEGMENT_VERTICES = 0 (lib/api/resample.c, lib/boundary): re-discretise the
  * chains of segments of m that form smooth curves with sizing and rebuild the
  * triangulation; *n_chains receives how many chains were re-discretised.
  * CVM_OK (also when no chain could be: m unchanged), CVM_E_STATE (m is not as
@@ -150,18 +150,18 @@ const char *cvm__src_also(char *buf, size_t cap, const cvm__item_src *src, size_
                           const cvm__item_src *primary);
 
 /* The engine's input faults (cvm__cdt_build, cvm__cdt_carve) as messages
- * naming the items of in in the user's terms (lib/api/triangulate.c): sets
+ * naming the items of in in the user's terms (lib/api/cdt_input.c): sets
  * the message for status s and returns s; a fault of kind NONE returns s
  * untouched (the engine set the message). */
 cvm_status cvm__cdt_fault_message(cvm__ctx *ctx, const cvm__pslg *in, cvm_status s,
                                   const cvm__cdt_fault *f);
 
 /* The input p with the options of m (seed, duplicates, crossings, convex
- * hull) as the engine's triangulation input (lib/api/triangulate.c); out
+ * hull) as the engine's triangulation input (lib/api/cdt_input.c); out
  * borrows p's arrays. */
 void cvm__mesh_cdt_input(cvm__cdt_input *out, const cvm_mesh *m, const cvm__pslg *p);
 
-/* Forget the triangulation (input kept). */
+/* Forget the triangulation (input kept; mesh_state.c). */
 void cvm__mesh_drop_output(cvm_mesh *m);
 
 /* Gather the domain triangles (and edges, segments) of m into freshly
@@ -203,7 +203,7 @@ cvm_status cvm__grow_vertex_data(cvm_mesh *m);
  * input segments (a convex-hull edge). */
 int32_t cvm__segment_marker(const cvm_mesh *m, int32_t seg);
 
-/* Vertex v (m->tri coordinates) lies on input segment seg: it takes the
+/* Vertex v (coordinates in the store) lies on input segment seg: it takes the
  * segment's marker, and its attributes are interpolated linearly between the
  * segment's input ends (by the projection of v, clamped to the segment). For
  * a seg outside the input segments only the marker (0) is written. vmark and

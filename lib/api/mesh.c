@@ -4,6 +4,7 @@
 
 #include "api_internal.h"
 #include "api/mesh3.h"
+#include "store.h"
 
 static cvm_status create(cvm_mesh **out, cvm__ctx *proto)
 {
@@ -13,7 +14,7 @@ static cvm_status create(cvm_mesh **out, cvm__ctx *proto)
     memset(m, 0, sizeof *m);
     m->ctx = *proto;
     cvm__options_default(m->opt);
-    cvm__tri2_init(&m->tri, &m->ctx);
+    cvm__store_init(m);
     cvm__write_set_init(&m->staged, &m->ctx);
     *out = m;
     return CVM_OK;
@@ -47,31 +48,6 @@ cvm_status cvm_mesh_create_with_allocator(cvm_mesh **out, cvm_malloc_fn alloc_fn
     return create(out, &proto);
 }
 
-void cvm__mesh_forget_layers(cvm_mesh *m)
-{
-    cvm__free(&m->ctx, m->tlayer);
-    m->tlayer = NULL;
-    m->n_tlayer = 0;
-}
-
-void cvm__mesh_drop_output(cvm_mesh *m)
-{
-    cvm__tri2_clear(&m->tri);
-    m->triangulated = 0;
-    cvm__free(&m->ctx, m->input_map);
-    m->input_map = NULL;
-    m->n_dup = 0;
-    m->nv_triangulated = 0;
-    memset(m->refine_report, 0, sizeof m->refine_report);
-    cvm__free(&m->ctx, m->refine_unmet);
-    m->refine_unmet = NULL;
-    m->n_refine_unmet = 0;
-    memset(m->dual_opt_report, 0, sizeof m->dual_opt_report);
-    cvm__free(&m->ctx, m->tlayer);
-    m->tlayer = NULL;
-    m->n_tlayer = 0;
-}
-
 void cvm_mesh_free(cvm_mesh *m)
 {
     cvm_free_fn f;
@@ -81,7 +57,7 @@ void cvm_mesh_free(cvm_mesh *m)
     cvm__write_set_discard(&m->staged);
     cvm__mesh3_free(m);
     cvm__pslg_free(&m->ctx, &m->in);
-    cvm__tri2_destroy(&m->tri);
+    cvm__store_destroy(m);
     cvm__free(&m->ctx, m->input_map);
     cvm__free(&m->ctx, m->vmark);
     cvm__free(&m->ctx, m->vattr);

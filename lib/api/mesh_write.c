@@ -2,6 +2,7 @@
 #include <string.h>
 
 #include "output_internal.h"
+#include "store.h"
 #include "geom/measure.h"
 #include "api/mesh3.h"
 
@@ -24,31 +25,31 @@ void cvm__mesh_out_free(cvm_mesh *m, cvm__mesh_out *mo)
  * AFLR layer indices. */
 static cvm_status gather_triangles(cvm_mesh *m, cvm__mesh_out *mo, int want_quality)
 {
-    const cvm__tri2 *T = &m->tri;
-    size_t nt = cvm__domain_triangles(T), t, k = 0;
+    const double *cta = cvm__store_cell_attributes(m);
+    size_t nt = cvm__domain_triangles(cvm__store_tri2_const(m)), k = 0;
+    int32_t t;
     int32_t *tri = cvm__malloc(&m->ctx, (3 * nt + 1) * sizeof *tri);
-    double *ta = T->ta ? cvm__malloc(&m->ctx, (nt + 1) * sizeof *ta) : NULL;
+    double *ta = cta ? cvm__malloc(&m->ctx, (nt + 1) * sizeof *ta) : NULL;
     double *q = want_quality ? cvm__malloc(&m->ctx, (nt + 1) * sizeof *q) : NULL;
-    int layers = want_quality && m->tlayer && m->n_tlayer == T->nt;
+    int layers = want_quality && m->tlayer && m->n_tlayer == cvm__store_nslots(m);
     double *la = layers ? cvm__malloc(&m->ctx, (nt + 1) * sizeof *la) : NULL;
     mo->tri = tri;
     mo->tattr = ta;
     mo->tquality = q;
     mo->tlayer = la;
-    if (!tri || (T->ta && !ta) || (want_quality && !q) || (layers && !la))
+    if (!tri || (cta && !ta) || (want_quality && !q) || (layers && !la))
         return CVM_E_NOMEM;
-    for (t = 0; t < T->nt; t++) {
-        const int32_t *v = T->tv + 3 * t;
-        if (!cvm__tri2_in_domain(T, (int32_t)t))
-            continue;
+    for (t = cvm__store_next_cell(m, -1); t >= 0; t = cvm__store_next_cell(m, t)) {
+        const int32_t *v = cvm__store_cell(m, (size_t)t);
         memcpy(tri + 3 * k, v, 3 * sizeof *tri);
         if (ta)
-            ta[k] = T->ta[t];
+            ta[k] = cta[t];
         if (la)
             la[k] = m->tlayer[t];
         if (q)
-            q[k] = cvm__min_angle_deg(T->xy + 2 * (size_t)v[0], T->xy + 2 * (size_t)v[1],
-                                      T->xy + 2 * (size_t)v[2]);
+            q[k] = cvm__min_angle_deg(cvm__store_point(m, (size_t)v[0]),
+                                      cvm__store_point(m, (size_t)v[1]),
+                                      cvm__store_point(m, (size_t)v[2]));
         k++;
     }
     mo->nt = nt;
@@ -63,7 +64,7 @@ static cvm_status gather_edges(cvm_mesh *m, cvm__mesh_out *mo, int segments)
     cvm__edges e;
     int32_t *mark;
     size_t k;
-    if (cvm__domain_edges(&m->ctx, &m->tri, segments, &e))
+    if (cvm__domain_edges(&m->ctx, cvm__store_tri2_const(m), segments, &e))
         return CVM_E_NOMEM;
     mark = cvm__malloc(&m->ctx, (e.n + 1) * sizeof *mark);
     if (!mark) {
@@ -89,18 +90,18 @@ static cvm_status gather_edges(cvm_mesh *m, cvm__mesh_out *mo, int segments)
 cvm_status cvm__mesh_out_build(cvm_mesh *m, cvm__mesh_out *mo, int want_edges, int want_quality)
 {
     memset(mo, 0, sizeof *mo);
-    mo->xy = m->tri.xy;
-    mo->nv = m->tri.nv;
+    mo->xy = cvm__store_points(m);
+    mo->nv = cvm__store_nv(m);
     mo->vmark = m->vmark;
     mo->vattr = m->in.nattr ? m->vattr : NULL;
     mo->nattr = mo->vattr ? m->in.nattr : 0;
-    if (m->tri.w) { /* weights set: the weight is the first attribute */
+    if (cvm__store_weights(m)) { /* weights set: the weight is the first attribute */
         double *wa;
         if (cvm__mesh_weight_attributes(m, &wa))
             return cvm__nomem(&m->ctx);
         mo->vattr = wa;
         mo->nattr++;
-        mo->weight = m->tri.w;
+        mo->weight = cvm__store_weights(m);
     }
     if (gather_triangles(m, mo, want_quality) || gather_edges(m, mo, 1) ||
         (want_edges && gather_edges(m, mo, 0))) {

@@ -3,8 +3,8 @@
 #include <string.h>
 
 #include "output_internal.h"
+#include "store.h"
 #include "dual/dual_internal.h"
-#include "refine/refine_internal.h"
 #include "sizing_fields.h"
 #include "api/mesh3.h"
 
@@ -56,7 +56,7 @@ static void drop_vertex_data(cvm_mesh *m, const int32_t *vmap, size_t nv0)
  * have no marker or attribute storage yet, so the caller reports the error). */
 static cvm_status new_vertex_data(cvm_mesh *m, const int32_t *vmap, size_t nv0)
 {
-    size_t v, kept = 0, nv = m->tri.nv, na = m->vattr ? m->in.nattr : 0;
+    size_t v, kept = 0, nv = cvm__store_nv(m), na = m->vattr ? m->in.nattr : 0;
     for (v = 0; v < nv0; v++)
         kept += vmap[v] >= 0;
     if (nv <= kept)
@@ -96,7 +96,7 @@ cvm_status cvm_mesh_optimise_dual(cvm_mesh *m, const cvm_sizing *sizing)
     if (cvm__sizing_refuse_metric(m, sizing, "cvm_mesh_optimise_dual()"))
         return CVM_E_UNSUPPORTED;
     cvm__mesh_forget_layers(m);
-    if (!m->triangulated || !cvm__domain_triangles(&m->tri))
+    if (!m->triangulated || cvm__store_next_cell(m, -1) < 0)
         return cvm__error(&m->ctx, CVM_E_STATE, CVM_ENT_NONE, -1,
                           "no triangulation: call cvm_mesh_triangulate() first");
     memset(&p, 0, sizeof p);
@@ -123,7 +123,7 @@ cvm_status cvm_mesh_optimise_dual(cvm_mesh *m, const cvm_sizing *sizing)
                           (int64_t)(p.prepass ? CVM_OPT_DUAL_PREPASS : CVM_OPT_DUAL_MAXMIN_TRIALS),
                           "%s needs CVM_OPT_DUAL_TOPOLOGY >= 1 (it changes the vertices)",
                           p.prepass ? "CVM_OPT_DUAL_PREPASS" : "CVM_OPT_DUAL_MAXMIN_TRIALS");
-    nv0 = m->tri.nv;
+    nv0 = cvm__store_nv(m);
     if (p.topology) {
         vmap = cvm__malloc(&m->ctx, (nv0 + 1) * sizeof *vmap);
         if (!vmap)
@@ -143,9 +143,9 @@ cvm_status cvm_mesh_optimise_dual(cvm_mesh *m, const cvm_sizing *sizing)
     }
     memset(m->dual_opt_report, 0, sizeof m->dual_opt_report);
     cvm__run_begin(&m->ctx, cvm__opt(m, CVM_OPT_TIME_LIMIT_S));
-    s = cvm__dual_optimise(&m->tri, &p, &rep);
+    s = cvm__dual_optimise(cvm__store_tri2(m), &p, &rep);
     cvm__sizing_fields_end(m, &fields);
-    if (vmap && (m->tri.nv < nv0 || rep.prepass_removed || rep.prepass_added))
+    if (vmap && (cvm__store_nv(m) < nv0 || rep.prepass_removed || rep.prepass_added))
         drop_vertex_data(m, vmap, nv0);
     if (vmap && rep.prepass_added && new_vertex_data(m, vmap, nv0) && s == CVM_OK)
         s = CVM_E_NOMEM;
@@ -181,11 +181,12 @@ cvm_status cvm_mesh_optimise_dual(cvm_mesh *m, const cvm_sizing *sizing)
 }
 
 /* Sizes and power vertices of m's mesh: fresh arrays (free both). */
-static cvm_status merge_inputs(cvm__ctx *ctx, const cvm__tri2 *T, double **vsize, double **V)
+static cvm_status merge_inputs(cvm__ctx *ctx, const cvm_mesh *m, double **vsize, double **V)
 {
-    size_t t;
-    *vsize = cvm__malloc(ctx, (T->nv + 1) * sizeof **vsize);
-    *V = cvm__malloc(ctx, (2 * T->nt + 1) * sizeof **V);
+    const cvm__tri2 *T = cvm__store_tri2_const(m);
+    int32_t t;
+    *vsize = cvm__malloc(ctx, (cvm__store_nv(m) + 1) * sizeof **vsize);
+    *V = cvm__malloc(ctx, (2 * cvm__store_nslots(m) + 1) * sizeof **V);
     if (!*vsize || !*V) {
         cvm__free(ctx, *vsize);
         cvm__free(ctx, *V);
@@ -193,9 +194,8 @@ static cvm_status merge_inputs(cvm__ctx *ctx, const cvm__tri2 *T, double **vsize
         return CVM_E_NOMEM;
     }
     cvm__dual_mesh_sizes(T, *vsize);
-    for (t = 0; t < T->nt; t++)
-        if (cvm__tri2_in_domain(T, (int32_t)t))
-            cvm__dual_tri_vertex(T, (int32_t)t, *V + 2 * t);
+    for (t = cvm__store_next_cell(m, -1); t >= 0; t = cvm__store_next_cell(m, t))
+        cvm__dual_tri_vertex(T, t, *V + 2 * (size_t)t);
     return CVM_OK;
 }
 
@@ -207,7 +207,8 @@ cvm_status cvm_mesh_copy_dual_merge_groups(cvm_index *dst, size_t dst_len, const
     const cvm__tri2 *T;
     double *vsize, *V;
     int32_t *group, *map;
-    size_t n, t, k = 0;
+    size_t n, k = 0;
+    int32_t t;
     cvm_status s;
     if (!m)
         return CVM_E_NULL_ARG;
@@ -217,10 +218,10 @@ cvm_status cvm_mesh_copy_dual_merge_groups(cvm_index *dst, size_t dst_len, const
     if (!n)
         return CVM_OK;
     ctx = (cvm__ctx *)&m->ctx; /* allocation does not change the handle */
-    T = &m->tri;
-    if (merge_inputs(ctx, T, &vsize, &V))
+    T = cvm__store_tri2_const(m);
+    if (merge_inputs(ctx, m, &vsize, &V))
         return CVM_E_NOMEM;
-    group = cvm__malloc(ctx, (T->nt + 1) * sizeof *group);
+    group = cvm__malloc(ctx, (cvm__store_nslots(m) + 1) * sizeof *group);
     if (!group || cvm__domain_map(ctx, T, &map)) {
         cvm__free(ctx, group);
         cvm__free(ctx, vsize);
@@ -228,9 +229,8 @@ cvm_status cvm_mesh_copy_dual_merge_groups(cvm_index *dst, size_t dst_len, const
         return CVM_E_NOMEM;
     }
     cvm__dual_merge_groups(ctx, T, vsize, cvm__opt(m, CVM_OPT_DUAL_MERGE_TOL), V, group);
-    for (t = 0; t < T->nt; t++)
-        if (cvm__tri2_in_domain(T, (int32_t)t))
-            dst[k++] = map[group[t]]; /* slot order = output order, so the root is the smallest */
+    for (t = cvm__store_next_cell(m, -1); t >= 0; t = cvm__store_next_cell(m, t))
+        dst[k++] = map[group[t]]; /* slot order = output order, so the root is the smallest */
     cvm__free(ctx, map);
     cvm__free(ctx, group);
     cvm__free(ctx, vsize);
@@ -249,16 +249,16 @@ int cvm__optimise_measure_needs_triangles(cvm_measure which)
  * only), as CVM_MEASURE_DUAL_OUTSIDE_BOUNDARY_PCT counts them. */
 static cvm_status merge_stats(cvm_mesh *m, double *merged, double *nc, double *nc_bnd)
 {
-    const cvm__tri2 *T = &m->tri;
+    const cvm__tri2 *T = cvm__store_tri2_const(m);
     double *vsize, *V, tol = cvm__opt(m, CVM_OPT_DUAL_MERGE_TOL);
     int32_t *group;
     size_t *gsize, t, n = 0, nm = 0, nn = 0, nb = 0, nnb = 0;
     uint8_t *on_bnd;
-    if (merge_inputs(&m->ctx, T, &vsize, &V))
+    if (merge_inputs(&m->ctx, m, &vsize, &V))
         return cvm__nomem(&m->ctx);
-    group = cvm__malloc(&m->ctx, (T->nt + 1) * sizeof *group);
-    gsize = cvm__calloc(&m->ctx, T->nt + 1, sizeof *gsize);
-    on_bnd = cvm__calloc(&m->ctx, T->nv + 1, 1);
+    group = cvm__malloc(&m->ctx, (cvm__store_nslots(m) + 1) * sizeof *group);
+    gsize = cvm__calloc(&m->ctx, cvm__store_nslots(m) + 1, sizeof *gsize);
+    on_bnd = cvm__calloc(&m->ctx, cvm__store_nv(m) + 1, 1);
     if (!group || !gsize || !on_bnd) {
         cvm__free(&m->ctx, group);
         cvm__free(&m->ctx, gsize);
@@ -268,19 +268,20 @@ static cvm_status merge_stats(cvm_mesh *m, double *merged, double *nc, double *n
         return cvm__nomem(&m->ctx);
     }
     cvm__dual_merge_groups(&m->ctx, T, vsize, tol, V, group);
-    for (t = 0; t < T->nt; t++) {
+    for (t = 0; t < cvm__store_nslots(m); t++) {
+        const int32_t *v = cvm__store_cell(m, t);
         int j;
         if (group[t] < 0)
             continue;
         gsize[group[t]]++;
         for (j = 0; j < 3; j++)
-            if (!cvm__tri2_in_domain(T, T->tn[3 * t + (size_t)j] / 3)) {
-                on_bnd[T->tv[3 * t + (size_t)(j + 1) % 3]] = 1;
-                on_bnd[T->tv[3 * t + (size_t)(j + 2) % 3]] = 1;
+            if (!cvm__store_in_domain(m, cvm__store_across(m, t, j))) {
+                on_bnd[v[(j + 1) % 3]] = 1;
+                on_bnd[v[(j + 2) % 3]] = 1;
             }
     }
-    for (t = 0; t < T->nt; t++) {
-        const int32_t *v = T->tv + 3 * t;
+    for (t = 0; t < cvm__store_nslots(m); t++) {
+        const int32_t *v = cvm__store_cell(m, t);
         int bnd, bad;
         if (group[t] < 0)
             continue;

@@ -11,6 +11,7 @@
 
 #include "output_internal.h"
 #include "api/mesh3.h"
+#include "store.h"
 
 /* The allocator of a const handle: allocation does not change the handle. */
 static cvm__ctx *alloc_ctx(const cvm_mesh *m)
@@ -20,7 +21,7 @@ static cvm__ctx *alloc_ctx(const cvm_mesh *m)
 
 static size_t n_vertices(const cvm_mesh *m)
 {
-    return m->triangulated ? m->tri.nv : 0;
+    return m->triangulated ? cvm__store_nv(m) : 0;
 }
 
 cvm_status cvm_mesh_count(size_t *out, const cvm_mesh *m, cvm_entity kind)
@@ -37,7 +38,7 @@ cvm_status cvm_mesh_count(size_t *out, const cvm_mesh *m, cvm_entity kind)
     case CVM_ENT_EDGE:
     case CVM_ENT_SEGMENT:
         if (m->triangulated)
-            cvm__domain_edge_counts(&m->tri, &ne, &ns);
+            cvm__domain_edge_counts(cvm__store_tri2_const(m), &ne, &ns);
         *out = kind == CVM_ENT_EDGE ? ne : ns;
         return CVM_OK;
     case CVM_ENT_INPUT_POINT: *out = m->in.np; return CVM_OK;
@@ -62,22 +63,21 @@ cvm_status cvm_mesh_copy_points(double *dst, size_t dst_len, const cvm_mesh *m)
     if ((s = cvm__room(dst, dst_len, 2 * nv)))
         return s;
     if (nv)
-        memcpy(dst, m->tri.xy, 2 * nv * sizeof *dst);
+        memcpy(dst, cvm__store_points(m), 2 * nv * sizeof *dst);
     return CVM_OK;
 }
 
 static cvm_status copy_triangles(cvm_index *dst, size_t dst_len, const cvm_mesh *m)
 {
-    const cvm__tri2 *T = &m->tri;
-    size_t t, k = 0;
+    int32_t t;
+    size_t k = 0;
     cvm_status s = cvm__room(dst, dst_len, 3 * cvm__mesh_n_triangles(m));
     if (s || !m->triangulated)
         return s;
-    for (t = 0; t < T->nt; t++)
-        if (cvm__tri2_in_domain(T, (int32_t)t)) {
-            memcpy(dst + 3 * k, T->tv + 3 * t, 3 * sizeof *dst);
-            k++;
-        }
+    for (t = cvm__store_next_cell(m, -1); t >= 0; t = cvm__store_next_cell(m, t)) {
+        memcpy(dst + 3 * k, cvm__store_cell(m, (size_t)t), 3 * sizeof *dst);
+        k++;
+    }
     return CVM_OK;
 }
 
@@ -87,10 +87,10 @@ static cvm_status copy_edges(cvm_index *dst, size_t dst_len, const cvm_mesh *m, 
     cvm__edges e;
     cvm_status s;
     if (m->triangulated)
-        cvm__domain_edge_counts(&m->tri, &ne, &ns);
+        cvm__domain_edge_counts(cvm__store_tri2_const(m), &ne, &ns);
     if ((s = cvm__room(dst, dst_len, 2 * (segments ? ns : ne))) || !m->triangulated)
         return s;
-    if (cvm__domain_edges(alloc_ctx(m), &m->tri, segments, &e))
+    if (cvm__domain_edges(alloc_ctx(m), cvm__store_tri2_const(m), segments, &e))
         return CVM_E_NOMEM;
     if (e.n)
         memcpy(dst, e.ev, 2 * e.n * sizeof *dst);
@@ -116,7 +116,6 @@ cvm_status cvm_mesh_copy_neighbors(cvm_index *dst, size_t dst_len, const cvm_mes
 {
     if (m && m->m3)
         return CVM_E_UNSUPPORTED; /* a 2D call on a 3D mesh */
-    const cvm__tri2 *T;
     int32_t *map;
     size_t t, k = 0;
     int j;
@@ -125,15 +124,14 @@ cvm_status cvm_mesh_copy_neighbors(cvm_index *dst, size_t dst_len, const cvm_mes
         return CVM_E_NULL_ARG;
     if ((s = cvm__room(dst, dst_len, 3 * cvm__mesh_n_triangles(m))) || !m->triangulated)
         return s;
-    T = &m->tri;
-    if (cvm__domain_map(alloc_ctx(m), T, &map))
+    if (cvm__domain_map(alloc_ctx(m), cvm__store_tri2_const(m), &map))
         return CVM_E_NOMEM;
-    for (t = 0; t < T->nt; t++) {
+    for (t = 0; t < cvm__store_nslots(m); t++) {
         if (map[t] < 0)
             continue;
         for (j = 0; j < 3; j++) {
-            int32_t a = T->tn[3 * t + (size_t)j];
-            dst[3 * k + (size_t)j] = a < 0 ? -1 : map[a / 3];
+            int32_t a = cvm__store_across(m, t, j);
+            dst[3 * k + (size_t)j] = a < 0 ? -1 : map[a];
         }
         k++;
     }
@@ -147,10 +145,10 @@ static cvm_status segment_markers(int32_t *dst, size_t dst_len, const cvm_mesh *
     cvm__edges e;
     cvm_status s;
     if (m->triangulated)
-        cvm__domain_edge_counts(&m->tri, &ne, &ns);
+        cvm__domain_edge_counts(cvm__store_tri2_const(m), &ne, &ns);
     if ((s = cvm__room(dst, dst_len, ns)) || !m->triangulated)
         return s;
-    if (cvm__domain_edges(alloc_ctx(m), &m->tri, 1, &e))
+    if (cvm__domain_edges(alloc_ctx(m), cvm__store_tri2_const(m), 1, &e))
         return CVM_E_NOMEM;
     for (k = 0; k < e.n; k++)
         dst[k] = cvm__segment_marker(m, e.seg[k]);
@@ -184,17 +182,17 @@ cvm_status cvm_mesh_copy_triangle_attributes(double *dst, size_t dst_len, const 
 {
     if (m && m->m3)
         return CVM_E_UNSUPPORTED; /* a 2D call on a 3D mesh */
-    const cvm__tri2 *T;
-    size_t t, k = 0;
+    const double *ta;
+    size_t k = 0;
+    int32_t t;
     cvm_status s;
     if (!m)
         return CVM_E_NULL_ARG;
     if ((s = cvm__room(dst, dst_len, cvm__mesh_n_triangles(m))) || !m->triangulated)
         return s;
-    T = &m->tri;
-    for (t = 0; t < T->nt; t++)
-        if (cvm__tri2_in_domain(T, (int32_t)t))
-            dst[k++] = T->ta ? T->ta[t] : 0.0;
+    ta = cvm__store_cell_attributes(m);
+    for (t = cvm__store_next_cell(m, -1); t >= 0; t = cvm__store_next_cell(m, t))
+        dst[k++] = ta ? ta[t] : 0.0;
     return CVM_OK;
 }
 
@@ -240,6 +238,6 @@ cvm_status cvm_mesh_view_points(const double **ptr_out, size_t *count_out, const
     if (!ptr_out || !count_out || !m)
         return CVM_E_NULL_ARG;
     *count_out = n_vertices(m);
-    *ptr_out = *count_out ? m->tri.xy : NULL;
+    *ptr_out = *count_out ? cvm__store_points(m) : NULL;
     return CVM_OK;
 }

@@ -27,6 +27,7 @@
 #include <string.h>
 
 #include "output_internal.h"
+#include "store.h"
 #include "geom/measure.h"
 #include "api/mesh3.h"
 
@@ -49,19 +50,18 @@ static void add_area(qstats *q, double x)
     q->area = t;
 }
 
-static void triangle_stats(const cvm__tri2 *T, qstats *q)
+static void triangle_stats(const cvm_mesh *m, qstats *q)
 {
-    size_t t;
+    int32_t t;
     memset(q, 0, sizeof *q);
     q->min_angle = q->min_edge = q->min_area = HUGE_VAL;
-    for (t = 0; t < T->nt; t++) {
+    for (t = cvm__store_next_cell(m, -1); t >= 0; t = cvm__store_next_cell(m, t)) {
+        const int32_t *c = cvm__store_cell(m, (size_t)t);
         const double *p[3];
         double obtuse = 0, area;
         int k;
-        if (!cvm__tri2_in_domain(T, (int32_t)t))
-            continue;
         for (k = 0; k < 3; k++)
-            p[k] = T->xy + 2 * (size_t)T->tv[3 * t + (size_t)k];
+            p[k] = cvm__store_point(m, (size_t)c[k]);
         for (k = 0; k < 3; k++) {
             double dot, a = cvm__corner_angle_deg_safe(p[k], p[(k + 1) % 3], p[(k + 2) % 3], &dot);
             double len = hypot(p[(k + 1) % 3][0] - p[k][0], p[(k + 1) % 3][1] - p[k][1]);
@@ -86,24 +86,23 @@ static void triangle_stats(const cvm__tri2 *T, qstats *q)
 /* Degrees of the interior vertices: hist (NBIN_DEGREE bins), *n_interior. */
 static cvm_status degree_stats(cvm_mesh *m, double *hist, size_t *n_interior)
 {
-    const cvm__tri2 *T = &m->tri;
-    int32_t *deg = cvm__calloc(&m->ctx, T->nv + 1, sizeof *deg);
-    uint8_t *on_bnd = cvm__calloc(&m->ctx, T->nv + 1, 1);
-    size_t t, v;
+    size_t nv = cvm__store_nv(m), v;
+    int32_t *deg = cvm__calloc(&m->ctx, nv + 1, sizeof *deg);
+    uint8_t *on_bnd = cvm__calloc(&m->ctx, nv + 1, 1);
+    int32_t t;
     int j;
     if (!deg || !on_bnd) {
         cvm__free(&m->ctx, deg);
         cvm__free(&m->ctx, on_bnd);
         return cvm__nomem(&m->ctx);
     }
-    for (t = 0; t < T->nt; t++) {
-        if (!cvm__tri2_in_domain(T, (int32_t)t))
-            continue;
+    for (t = cvm__store_next_cell(m, -1); t >= 0; t = cvm__store_next_cell(m, t)) {
+        const int32_t *c = cvm__store_cell(m, (size_t)t);
         for (j = 0; j < 3; j++) {
-            int32_t a = T->tn[3 * t + (size_t)j], u = a < 0 ? -1 : a / 3;
-            int32_t v1 = T->tv[3 * t + (size_t)(j + 1) % 3], v2 = T->tv[3 * t + (size_t)(j + 2) % 3];
-            int bnd = u < 0 || !cvm__tri2_in_domain(T, u);
-            if (!bnd && (size_t)u < t)
+            int32_t u = cvm__store_across(m, (size_t)t, j);
+            int32_t v1 = c[(j + 1) % 3], v2 = c[(j + 2) % 3];
+            int bnd = !cvm__store_in_domain(m, u);
+            if (!bnd && u < t)
                 continue; /* counted from u */
             deg[v1]++;
             deg[v2]++;
@@ -113,7 +112,7 @@ static cvm_status degree_stats(cvm_mesh *m, double *hist, size_t *n_interior)
     }
     memset(hist, 0, NBIN_DEGREE * sizeof *hist);
     *n_interior = 0;
-    for (v = 0; v < T->nv; v++) {
+    for (v = 0; v < nv; v++) {
         if (deg[v] == 0 || on_bnd[v])
             continue;
         hist[deg[v] < NBIN_DEGREE - 1 ? deg[v] : NBIN_DEGREE - 1] += 1.0;
@@ -128,7 +127,7 @@ static cvm_status degree_stats(cvm_mesh *m, double *hist, size_t *n_interior)
 static const qstats *cached_triangle_stats(cvm_mesh *m)
 {
     if (!(m->quality.have & CVM__HAVE_TRI)) {
-        triangle_stats(&m->tri, &m->quality.tri);
+        triangle_stats(m, &m->quality.tri);
         m->quality.have |= CVM__HAVE_TRI;
     }
     return &m->quality.tri;
@@ -149,19 +148,10 @@ static cvm_status cached_degree_stats(cvm_mesh *m, const double **hist, size_t *
     return CVM_OK;
 }
 
-/* 1 when T has a domain triangle; stops at the first (this runs on every call). */
-static int has_domain_triangle(const cvm__tri2 *T)
-{
-    size_t t;
-    for (t = 0; t < T->nt; t++)
-        if (cvm__tri2_in_domain(T, (int32_t)t))
-            return 1;
-    return 0;
-}
-
 static cvm_status need_triangles(cvm_mesh *m)
 {
-    if (!m->triangulated || !has_domain_triangle(&m->tri))
+    /* the first domain cell is enough (this runs on every call) */
+    if (!m->triangulated || cvm__store_next_cell(m, -1) < 0)
         return cvm__error(&m->ctx, CVM_E_STATE, CVM_ENT_NONE, -1,
                           "no triangles: call cvm_mesh_triangulate() first");
     return CVM_OK;

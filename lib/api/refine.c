@@ -2,6 +2,7 @@
 #include <string.h>
 
 #include "output_internal.h"
+#include "store.h"
 #include "refine/refine_internal.h"
 #include "sizing_fields.h"
 #include "api/mesh3.h"
@@ -11,25 +12,24 @@ enum { REP_STEINER, REP_UNMET_ANGLE, REP_UNMET_SIZE, REP_SMALL_ANGLE, REP_REQUES
 /* Markers and attributes of the vertices nv0..nv-1 added by the refiner. */
 static cvm_status refine_vertex_data(cvm_mesh *m, size_t nv0)
 {
-    const cvm__tri2 *T = &m->tri;
-    size_t v, t, na = m->in.nattr;
+    size_t v, na = m->in.nattr, nv = cvm__store_nv(m);
+    int32_t t;
     if (cvm__grow_vertex_data(m))
         return CVM_E_NOMEM;
-    for (v = nv0; v < T->nv; v++) {
+    for (v = nv0; v < nv; v++) {
         m->vmark[v] = 0;
         if (na)
             memset(m->vattr + v * na, 0, na * sizeof(double));
     }
-    for (t = 0; t < T->nt && T->nv > nv0; t++) {
+    for (t = nv > nv0 ? cvm__store_next_cell(m, -1) : -1; t >= 0; t = cvm__store_next_cell(m, t)) {
+        const int32_t *c = cvm__store_cell(m, (size_t)t);
         int j, k;
-        if (!cvm__tri2_in_domain(T, (int32_t)t))
-            continue;
         for (j = 0; j < 3; j++) {
-            int32_t seg = T->te[3 * t + (size_t)j];
+            int32_t seg = cvm__store_face_segment(m, (size_t)t, j);
             if (seg < 0)
                 continue;
             for (k = 1; k <= 2; k++) {
-                int32_t u = T->tv[3 * t + (size_t)(j + k) % 3];
+                int32_t u = c[(j + k) % 3];
                 if ((size_t)u >= nv0)
                     cvm__segment_vertex_data(m, (size_t)u, seg);
             }
@@ -43,24 +43,24 @@ static cvm_status refine_vertex_data(cvm_mesh *m, size_t nv0)
  * triangles inherit it; *area_out receives the areas by index. */
 static cvm_status refine_regions_begin(cvm_mesh *m, double **area_out)
 {
-    cvm__tri2 *T = &m->tri;
+    double *ta = cvm__store_cell_attributes(m);
     size_t k, t;
     int any = 0;
     *area_out = NULL;
     for (k = 0; k < m->in.nregions; k++)
         any |= m->in.regions[4 * k + 3] > 0;
-    if (!any || !T->ta)
+    if (!any || !ta)
         return CVM_OK;
     *area_out = cvm__malloc(&m->ctx, m->in.nregions * sizeof **area_out);
     if (!*area_out)
         return cvm__nomem(&m->ctx);
-    for (t = 0; t < T->nt; t++)
-        T->ta[t] = -1;
+    for (t = 0; t < cvm__store_nslots(m); t++)
+        ta[t] = -1;
     for (k = 0; k < m->in.nregions; k++) {
         int32_t seed = cvm__mesh_seed_triangle(m, m->in.regions + 4 * k);
         (*area_out)[k] = m->in.regions[4 * k + 3];
-        if (seed >= 0 && cvm__tri2_in_domain(T, seed) &&
-            cvm__tri2_flood_attribute(T, seed, (double)k)) {
+        if (seed >= 0 && cvm__store_in_domain(m, seed) &&
+            cvm__store_flood_attribute(m, seed, (double)k)) {
             cvm__free(&m->ctx, *area_out);
             *area_out = NULL;
             return cvm__nomem(&m->ctx);
@@ -92,13 +92,13 @@ static cvm_status refine_front_flags(cvm_mesh *m, unsigned char **out)
 /* Back from region indices to the regional attributes (0 outside every region). */
 static void refine_regions_end(cvm_mesh *m, double *area)
 {
-    cvm__tri2 *T = &m->tri;
+    double *ta = cvm__store_cell_attributes(m);
     size_t t;
     if (!area)
         return;
-    for (t = 0; t < T->nt; t++) {
-        double r = T->ta[t];
-        T->ta[t] = r >= 0 && r < (double)m->in.nregions ? m->in.regions[4 * (size_t)r + 2] : 0.0;
+    for (t = 0; t < cvm__store_nslots(m); t++) {
+        double r = ta[t];
+        ta[t] = r >= 0 && r < (double)m->in.nregions ? m->in.regions[4 * (size_t)r + 2] : 0.0;
     }
     cvm__free(&m->ctx, area);
 }
@@ -161,7 +161,7 @@ static cvm_status refine_run(cvm_mesh *m, const cvm_sizing *sizing, cvm_algorith
             return s;
         }
     }
-    nv0 = m->tri.nv;
+    nv0 = cvm__store_nv(m);
     if (m->in.nseg) {
         ends = cvm__malloc(&m->ctx, 2 * m->in.nseg * sizeof *ends);
         if (!ends) {
@@ -187,13 +187,13 @@ static cvm_status refine_run(cvm_mesh *m, const cvm_sizing *sizing, cvm_algorith
     p.seg_ends = ends;
     p.seg_front = front;
     p.nregion = m->in.nregions;
-    s = cvm__refine(&m->tri, &p, &rep);
+    s = cvm__refine(cvm__store_tri2(m), &p, &rep);
     refine_regions_end(m, region_area);
     cvm__sizing_fields_end(m, &fields);
     cvm__free(&m->ctx, ends);
     cvm__free(&m->ctx, front);
     m->tlayer = rep.cell_layer;
-    m->n_tlayer = rep.cell_layer ? m->tri.nt : 0;
+    m->n_tlayer = rep.cell_layer ? cvm__store_nslots(m) : 0;
     s2 = refine_vertex_data(m, nv0);
     if (s2) {
         /* the vertex arrays cannot follow the kernel: the mesh cannot be kept */
@@ -298,19 +298,17 @@ cvm_status cvm_mesh_copy_layer_index(double *dst, size_t dst_len, const cvm_mesh
 {
     if (m && m->m3)
         return CVM_E_UNSUPPORTED; /* a 2D call on a 3D mesh */
-    const cvm__tri2 *T;
-    size_t t, k = 0, nt;
+    size_t k = 0, nt;
+    int32_t t;
     int have;
     cvm_status s;
     if (!m)
         return CVM_E_NULL_ARG;
-    T = &m->tri;
     nt = cvm__mesh_n_triangles(m);
     if ((s = cvm__room(dst, dst_len, nt)))
         return s;
-    have = m->tlayer && m->n_tlayer == T->nt;
-    for (t = 0; t < T->nt && nt; t++)
-        if (cvm__tri2_in_domain(T, (int32_t)t))
-            dst[k++] = have ? m->tlayer[t] : -1.0;
+    have = m->tlayer && m->n_tlayer == cvm__store_nslots(m);
+    for (t = nt ? cvm__store_next_cell(m, -1) : -1; t >= 0; t = cvm__store_next_cell(m, t))
+        dst[k++] = have ? m->tlayer[t] : -1.0;
     return CVM_OK;
 }

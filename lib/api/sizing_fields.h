@@ -1,20 +1,16 @@
-/* sizing_fields.h - a cvm_sizing's domain-dependent parts (automatic length scale, boundary
- * spacing), built from a mesh for one refinement or optimisation (sizing_fields.c). */
+/* sizing_fields.h - a cvm_sizing's domain-dependent fields built from a mesh handle's domain for
+ * one refinement or optimisation, and the refusal of metric sources (sizing_fields.c). */
 #ifndef CVM_API_SIZING_FIELDS_H
 #define CVM_API_SIZING_FIELDS_H
 
 #include "api_internal.h"
-#include "refine/refine_internal.h"
+#include "sizing/sizing_internal.h"
 
-typedef struct cvm__sizing_fields {
-    cvm__auto_field autof;   /* cvm_sizing_set_automatic() */
-    cvm__auto_field spacing; /* cvm_sizing_set_boundary_grading() */
-    cvm_sizing local;        /* the caller's handle with both fields attached */
-} cvm__sizing_fields;
-
-/* Build the fields the handle asks for from m's current domain; *use is the
- * handle to evaluate (sizing itself when it asks for none). On error (CVM_E_NOMEM,
- * recorded on m) nothing is left to free. Pair with cvm__sizing_fields_end(). */
+/* Build the fields the handle asks for from m's current domain (its input
+ * points mark the isolated features of the automatic field); *use is the
+ * handle to evaluate (sizing itself when it asks for none). On error
+ * (CVM_E_NOMEM, recorded on m) nothing is left to free. Pair with
+ * cvm__sizing_fields_end(). */
 cvm_status cvm__sizing_fields_begin(cvm_mesh *m, const cvm_sizing *sizing, cvm__sizing_fields *F,
                                     const cvm_sizing **use);
 void cvm__sizing_fields_end(cvm_mesh *m, cvm__sizing_fields *F);

@@ -5,6 +5,7 @@
 
 #include "api_internal.h"
 #include "api/mesh3.h"
+#include "store.h"
 
 /* Number naming input point i in messages (the file's, or i; i may be out of range). */
 static long long point_num(const cvm_mesh *m, int32_t i)
@@ -29,107 +30,10 @@ static cvm_status check_segments(cvm_mesh *m)
     return CVM_OK;
 }
 
-/* Number naming input point i of in in messages (i in range). */
-static long long in_point_num(const cvm__pslg *in, size_t i)
-{
-    return cvm__src_num(&in->src_point, i);
-}
-
-cvm_status cvm__cdt_fault_message(cvm__ctx *ctx, const cvm__pslg *in, cvm_status s,
-                                  const cvm__cdt_fault *f)
-{
-    char where[CVM__WHERE_LEN], also[CVM__WHERE_LEN];
-    size_t k = f->item;
-    const cvm__item_src *src;
-    const int32_t *sg, *o;
-    const double *p;
-    switch (f->kind) {
-    case CVM__CDT_FAULT_RANGE:
-        src = &in->src_point;
-        return cvm__error(ctx, s, CVM_ENT_INPUT_POINT, (int64_t)k,
-                          "%spoint %lld has %c = %.17g, more than 2^180 times smaller than the "
-                          "largest coordinate %.17g: exact predicates cannot span that range; "
-                          "round it to 0 or translate the input",
-                          cvm__src_where(where, sizeof where, src, k), in_point_num(in, k),
-                          f->axis ? 'y' : 'x', in->xy[2 * k + (size_t)f->axis], f->big);
-    case CVM__CDT_FAULT_DUPLICATE:
-        src = &in->src_point;
-        return cvm__error(ctx, s, CVM_ENT_INPUT_POINT, (int64_t)k,
-                          "%spoint %lld at (%.17g, %.17g) duplicates point %lld%s",
-                          cvm__src_where(where, sizeof where, src, k), in_point_num(in, k),
-                          in->xy[2 * k], in->xy[2 * k + 1], in_point_num(in, f->other),
-                          cvm__src_also(also, sizeof also, src, f->other, src));
-    case CVM__CDT_FAULT_ZERO_LENGTH:
-        src = &in->src_segment;
-        sg = in->seg + 2 * k;
-        return cvm__error(ctx, s, CVM_ENT_INPUT_SEGMENT, (int64_t)k,
-                          "%ssegment %lld (points %lld-%lld) has zero length%s",
-                          cvm__src_where(where, sizeof where, src, k), cvm__src_num(src, k),
-                          in_point_num(in, (size_t)sg[0]), in_point_num(in, (size_t)sg[1]),
-                          sg[0] == sg[1] ? "" : ": its endpoints are at the same position");
-    case CVM__CDT_FAULT_CROSSING:
-        src = &in->src_segment;
-        sg = in->seg + 2 * k;
-        o = in->seg + 2 * f->other;
-        return cvm__error(ctx, s, CVM_ENT_INPUT_SEGMENT, (int64_t)k,
-                          "%ssegment %lld (points %lld-%lld) crosses segment %lld%s (points "
-                          "%lld-%lld) in its interior",
-                          cvm__src_where(where, sizeof where, src, k), cvm__src_num(src, k),
-                          in_point_num(in, (size_t)sg[0]), in_point_num(in, (size_t)sg[1]),
-                          cvm__src_num(src, f->other),
-                          cvm__src_also(also, sizeof also, src, f->other, src),
-                          in_point_num(in, (size_t)o[0]), in_point_num(in, (size_t)o[1]));
-    case CVM__CDT_FAULT_HOLE_OUTSIDE:
-    case CVM__CDT_FAULT_HOLE_ALL:
-        src = &in->src_hole;
-        p = in->holes + 2 * k;
-        return cvm__error(ctx, s, CVM_ENT_HOLE, (int64_t)k,
-                          f->kind == CVM__CDT_FAULT_HOLE_OUTSIDE
-                              ? "%shole %lld at (%.17g, %.17g) lies outside the convex hull of the points"
-                              : "%shole %lld at (%.17g, %.17g) removed every remaining triangle: no "
-                                "closed loop of segments separates it from the rest of the domain",
-                          cvm__src_where(where, sizeof where, src, k), cvm__src_num(src, k), p[0], p[1]);
-    case CVM__CDT_FAULT_REGION_OUTSIDE:
-        src = &in->src_region;
-        p = in->regions + 4 * k;
-        return cvm__error(ctx, s, CVM_ENT_REGION, (int64_t)k,
-                          "%sregion %lld at (%.17g, %.17g) lies outside the domain",
-                          cvm__src_where(where, sizeof where, src, k), cvm__src_num(src, k), p[0], p[1]);
-    case CVM__CDT_FAULT_NONE:
-        break;
-    }
-    return s; /* not an input fault: the engine set the message */
-}
-
-void cvm__mesh_cdt_input(cvm__cdt_input *out, const cvm_mesh *m, const cvm__pslg *p)
-{
-    out->xy = p->xy;
-    out->np = p->np;
-    out->pmark = p->pmark;
-    out->pattr = p->pattr;
-    out->nattr = p->nattr;
-    out->seg = p->seg;
-    out->nseg = p->nseg;
-    out->smark = p->smark;
-    out->holes = p->holes;
-    out->nholes = p->nholes;
-    out->regions = p->regions;
-    out->nregions = p->nregions;
-    out->seed = (uint64_t)cvm__opt(m, CVM_OPT_SEED);
-    out->reject_duplicates = cvm__opt(m, CVM_OPT_REJECT_DUPLICATES) != 0;
-    out->split = cvm__opt(m, CVM_OPT_SPLIT_INTERSECTIONS) != 0;
-    out->keep_hull = cvm__opt(m, CVM_OPT_KEEP_CONVEX_HULL) != 0;
-}
-
 /* Locate a seed point: the domain triangle containing it, or -1 outside. */
 int32_t cvm__mesh_seed_triangle(cvm_mesh *m, const double *p)
 {
-    int32_t t;
-    int j;
-    cvm__loc loc = cvm__tri2_locate(&m->tri, p, -1, &t, &j);
-    if (loc == CVM__LOC_OUTSIDE || t < 0)
-        return -1;
-    return t;
+    return cvm__store_locate(m, p);
 }
 
 cvm_status cvm__mesh_carve(cvm_mesh *m)
@@ -138,7 +42,7 @@ cvm_status cvm__mesh_carve(cvm_mesh *m)
     cvm__cdt_fault f;
     cvm_status s;
     cvm__mesh_cdt_input(&in, m, &m->in);
-    s = cvm__cdt_carve(&m->tri, &in, &f);
+    s = cvm__cdt_carve(cvm__store_tri2(m), &in, &f);
     return s ? cvm__cdt_fault_message(&m->ctx, &m->in, s, &f) : CVM_OK;
 }
 
@@ -159,7 +63,7 @@ static cvm_status triangulate(cvm_mesh *m)
     out.vattr = m->vattr;
     out.cap_vmark = m->cap_vmark;
     out.cap_vattr = m->cap_vattr;
-    s = cvm__cdt_build(&m->tri, &in, &out, &f);
+    s = cvm__cdt_build(cvm__store_tri2(m), &in, &out, &f);
     m->input_map = out.input_map;
     m->n_dup = out.n_dup;
     m->vmark = out.vmark;
@@ -189,7 +93,7 @@ cvm_status cvm_mesh_triangulate(cvm_mesh *m)
         return s;
     }
     m->triangulated = 1;
-    m->nv_triangulated = m->tri.nv;
+    m->nv_triangulated = cvm__store_nv(m);
     return CVM_OK;
 }
 
@@ -200,14 +104,12 @@ cvm_status cvm_mesh_insert_points(cvm_index *ids_out, cvm_mesh *m, const double 
         CVM__BEGIN(m);
         return cvm__mesh3_unsupported(m, "cvm_mesh_insert_points");
     }
-    cvm__tri2 *T;
     size_t i;
     cvm_status s = CVM_OK;
     if (!m)
         return CVM_E_NULL_ARG;
     CVM__BEGIN(m);
     cvm__mesh_forget_layers(m);
-    T = &m->tri;
     if (!xy && count > 0)
         return cvm__error(&m->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "xy is NULL");
     if (!m->triangulated)
@@ -228,24 +130,24 @@ cvm_status cvm_mesh_insert_points(cvm_index *ids_out, cvm_mesh *m, const double 
             ids_out[i] = CVM_REJECTED;
     cvm__run_begin(&m->ctx, cvm__opt(m, CVM_OPT_TIME_LIMIT_S));
     for (i = 0; i < count; i++) {
-        int32_t v, other;
-        cvm__ins res;
-        if ((s = cvm__tri2_add_vertex(T, xy + 2 * i, &v)))
+        int32_t v;
+        int inserted;
+        if ((s = cvm__store_add_vertex(m, xy + 2 * i, &v)))
             return s == CVM_E_NOMEM ? cvm__nomem(&m->ctx)
                                     : cvm__error(&m->ctx, s, CVM_ENT_INPUT_POINT, (int64_t)i, "too many vertices");
         if (cvm__grow_vertex_data(m)) {
-            T->nv--;
+            cvm__store_drop_last_vertex(m);
             return cvm__nomem(&m->ctx);
         }
-        s = cvm__tri2_insert_vertex(T, v, T->last, CVM__INSF_DOMAIN_ONLY, min_dist, &res, &other);
+        s = cvm__store_insert_vertex(m, v, min_dist, &inserted);
         if (s) {
-            T->nv--;
+            cvm__store_drop_last_vertex(m);
             return s == CVM_E_NOMEM ? cvm__nomem(&m->ctx)
                                     : cvm__error(&m->ctx, s, CVM_ENT_INPUT_POINT, (int64_t)i,
                                                  "inserting point %lu failed", (unsigned long)i);
         }
-        if (res != CVM__INS_DONE) {
-            T->nv--;
+        if (!inserted) {
+            cvm__store_drop_last_vertex(m);
             continue;
         }
         m->vmark[v] = 0;
@@ -269,8 +171,7 @@ cvm_status cvm_mesh_check(cvm_mesh *m)
         CVM__BEGIN(m);
         return cvm__mesh3_check(m);
     }
-    const cvm__tri2 *T;
-    size_t t;
+    int32_t t;
     int j;
     cvm_status s;
     if (!m)
@@ -278,19 +179,15 @@ cvm_status cvm_mesh_check(cvm_mesh *m)
     CVM__BEGIN(m);
     if (!m->triangulated)
         return cvm__error(&m->ctx, CVM_E_STATE, CVM_ENT_NONE, -1, "nothing triangulated");
-    if ((s = cvm__tri2_check(&m->tri)) ||
-        (s = cvm__cdt_check_chains(&m->tri, m->in.seg, m->in.nseg, m->input_map)))
+    if ((s = cvm__store_check(m)))
         return s;
-    T = &m->tri;
     /* the domain is bounded by constrained edges or by the convex hull */
-    for (t = 0; t < T->nt; t++) {
-        if (!cvm__tri2_in_domain(T, (int32_t)t))
-            continue;
+    for (t = cvm__store_next_cell(m, -1); t >= 0; t = cvm__store_next_cell(m, t)) {
         for (j = 0; j < 3; j++) {
-            int32_t u = T->tn[3 * t + j] / 3;
-            if (cvm__tri2_in_domain(T, u) || cvm__tri2_edge_seg(T, (int32_t)t, j) >= 0)
+            int32_t u = cvm__store_across(m, (size_t)t, j);
+            if (cvm__store_in_domain(m, u) || cvm__store_face_segment(m, (size_t)t, j) >= 0)
                 continue;
-            if (cvm__tri2_is_ghost(T, u) && (m->in.nseg == 0 || cvm__opt(m, CVM_OPT_KEEP_CONVEX_HULL) != 0))
+            if (u >= 0 && cvm__store_is_ghost(m, u) && (m->in.nseg == 0 || cvm__opt(m, CVM_OPT_KEEP_CONVEX_HULL) != 0))
                 continue;
             return cvm__error(&m->ctx, CVM_E_INTERNAL, CVM_ENT_TRIANGLE, (int64_t)t,
                               "check failed: triangle slot %lu borders the outside across an "

@@ -1,9 +1,10 @@
 /* vertex_data.c - markers and attributes of the vertices the kernels add (Steiner points on segments, refinement vertices). */
 #include "api_internal.h"
+#include "store.h"
 
 cvm_status cvm__grow_vertex_data(cvm_mesh *m)
 {
-    size_t nv = m->tri.nv, na = m->in.nattr;
+    size_t nv = cvm__store_nv(m), na = m->in.nattr;
     if (nv > m->cap_vmark &&
         cvm__grow(&m->ctx, (void **)&m->vmark, &m->cap_vmark, nv, sizeof(int32_t)))
         return CVM_E_NOMEM;
@@ -23,5 +24,5 @@ void cvm__segment_vertex_data(cvm_mesh *m, size_t v, int32_t seg)
     cvm__cdt_input in;
     size_t na = m->in.nattr;
     cvm__mesh_cdt_input(&in, m, &m->in);
-    cvm__cdt_segment_point(&in, m->tri.xy + 2 * v, seg, m->vmark + v, na ? m->vattr + v * na : NULL);
+    cvm__cdt_segment_point(&in, cvm__store_point(m, v), seg, m->vmark + v, na ? m->vattr + v * na : NULL);
 }

@@ -13,6 +13,7 @@
 
 #include <stdint.h>
 #include "delaunay/delaunay_internal.h"
+#include "delaunay/domain.h"
 
 /* Power vertex of the non-degenerate triangle a, b, c with weights wa, wb, wc
  * into out[2]: plain doubles, possibly inexact (a construction). */
@@ -164,5 +165,83 @@ cvm_status cvm__dual_prepass(cvm__tri2 *T, const cvm__dual_opt_params *p, size_t
  * On every return T is a valid regular triangulation with no vanished
  * vertex. CVM_OK, CVM_E_NOMEM, a size_fn error, CVM_INCOMPLETE_*. */
 cvm_status cvm__dual_optimise(cvm__tri2 *T, const cvm__dual_opt_params *p, cvm__dual_opt_report *rep);
+
+/* ---- the dual as geometry and measures (geometry.c, cells.c, quality.c) ---- */
+
+/* Weight of vertex v (0 without weights). */
+static inline double cvm__dual_weight(const cvm__tri2 *T, int32_t v)
+{
+    return T->w ? T->w[v] : 0.0;
+}
+
+/* 1 when slot t contains its power vertex (closed: on an edge counts); exact. */
+int cvm__dual_tri_contains(const cvm__tri2 *T, int32_t t);
+
+/* Signed area of the power cell of every vertex of T, restricted to the
+ * domain, into dst (T->nv entries): the kites of each domain triangle's
+ * power vertex and its edges' power-bisector feet. Constructions. */
+void cvm__dual_areas(const cvm__tri2 *T, double *dst);
+
+/* Ends of the dual edge of every edge of e (from cvm__domain_edges with
+ * constrained_only = 0), 4 doubles per edge into ends: the power vertices of
+ * its two triangles (the first in slot order first), or for a boundary edge
+ * the power vertex of its triangle and the edge's power-bisector foot.
+ * Constructions: plain doubles. CVM_OK or CVM_E_NOMEM (no message). */
+cvm_status cvm__dual_edge_ends(cvm__ctx *ctx, const cvm__tri2 *T, const cvm__edges *e, double *ends);
+
+/* The dual cell polygons of every vertex of T (cells.c): off
+ * (nv + 1 entries) receives the CSR offsets; xy, when not NULL, receives 2
+ * doubles per corner (2 * off[nv]). CVM_OK, CVM_E_NOMEM or CVM_E_TOO_LARGE
+ * (no message). */
+cvm_status cvm__dual_cells(cvm__ctx *ctx, const cvm__tri2 *T, int32_t *off, double *xy);
+
+/* A view of T for dimensionless dual measures (quality.c): when
+ * the coordinates of T reach beyond 2^300 or all lie below 2^-300 (the
+ * constructions of the dual form cubes of coordinate differences, which
+ * would overflow or underflow), *view is a shallow copy of T whose
+ * coordinates are scaled by 2^-*k and weights by 2^-2*k, in fresh arrays;
+ * otherwise *view = *T and *k = 0. A power-of-two scale is exact (up to
+ * subnormal parts) and leaves every ratio unchanged. Read-only; release with
+ * cvm__scaled_view_free(). CVM_OK or CVM_E_NOMEM (no message). */
+cvm_status cvm__scaled_view(cvm__ctx *ctx, const cvm__tri2 *T, cvm__tri2 *view, int *k);
+void cvm__scaled_view_free(cvm__ctx *ctx, const cvm__tri2 *T, cvm__tri2 *view);
+
+/* Dual edge length of every edge of e (from cvm__domain_edges with
+ * constrained_only = 0) into len (e->n entries). CVM_OK or CVM_E_NOMEM. */
+cvm_status cvm__dual_edge_lengths(cvm__ctx *ctx, const cvm__tri2 *T, const cvm__edges *e, double *len);
+
+/* pct[0]: % of the domain triangles whose power vertex lies outside them;
+ * pct[1]: the same among those with a vertex on the domain boundary (0 when
+ * there are none). CVM_OK or CVM_E_NOMEM. */
+cvm_status cvm__dual_outside_pct(cvm__ctx *ctx, const cvm__tri2 *T, double *pct);
+
+/* Every dual quality value of a mesh (quality.c; definitions in
+ * include/cvmesh.h, cvm_histogram). */
+typedef struct cvm__dual_q {
+    size_t nt, ne;
+    double *q[6];  /* q[1], q[2]: nt values; q[3..5]: ne values; q[0] unused */
+    uint8_t *tb;   /* nt: the triangle has a vertex on the domain boundary */
+    uint8_t *eint; /* ne: interior edge (a domain triangle on both sides) */
+    uint8_t *eb;   /* ne: an endpoint lies on the domain boundary */
+} cvm__dual_q;
+
+/* Compute every value of d for the domain of T (in the frame of
+ * cvm__scaled_view), and when minima is not NULL over the interior edges:
+ * the smallest dual edge (minima[0]), the smallest min(primal, dual)
+ * (minima[1]) and the smallest dual / primal ratio (minima[2]); 0 without
+ * interior edges. CVM_OK or CVM_E_NOMEM (d then empty). */
+cvm_status cvm__dual_q_compute(cvm__ctx *ctx, const cvm__tri2 *T, cvm__dual_q *d, double *minima);
+void cvm__dual_q_free(cvm__ctx *ctx, cvm__dual_q *d);
+/* Bins of histogram w (1..5): count, width; the last bin of q2..q5 is open. */
+void cvm__dual_q_bins(int w, size_t *n, double *width);
+/* Histogram w (1..5) of d into dst (its cvm__dual_q_bins() count of entries);
+ * q3..q5 count interior edges only. */
+void cvm__dual_q_histogram(const cvm__dual_q *d, int w, double *dst);
+/* Smallest, largest and mean of q[w] over the triangles (w < 3) or interior
+ * edges, only those touching the boundary when boundary_only. */
+typedef struct cvm__dual_q_summary {
+    double min, max, mean;
+} cvm__dual_q_summary;
+cvm__dual_q_summary cvm__dual_q_summarise(const cvm__dual_q *d, int w, int boundary_only);
 
 #endif

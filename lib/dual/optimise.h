@@ -1,6 +1,6 @@
 /*
  * optimise.h - the parts of the dual optimiser shared by its files: the run
- * state (optimise.c), the local problem of one vertex and its objective
+ * state (optimise_run.h), the local problem of one vertex and its objective
  * (optimise_objective.c), and the two local solvers (optimise_pattern.c,
  * optimise_cuckoo.c).
  *

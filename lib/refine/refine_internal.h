@@ -1,6 +1,6 @@
 /*
- * refine_internal.h - mesh refinement on the 2D kernel: the sizing handle,
- * the queue of bad triangles, segment encroachment and splitting, Delaunay
+ * refine_internal.h - mesh refinement on the 2D kernel: the queue of bad
+ * triangles, segment encroachment and splitting, Delaunay
  * refinement (Ruppert 1995; Shewchuk 1997/2002, as in Triangle) and
  * frontal-Delaunay refinement (Rebay 1993: points on the bisectors of front
  * edges, grown from the boundary) and advancing-front local reconnection
@@ -23,108 +23,7 @@
 #include <stdint.h>
 #include "common/common_internal.h"
 #include "delaunay/delaunay_internal.h"
-
-/* ---- sizing (sizing.c) ---- */
-
-typedef struct cvm__point_source {
-    double x, y, h, growth;
-} cvm__point_source;
-
-typedef struct cvm__line_source {
-    double x0, y0, x1, y1, h, growth;
-} cvm__line_source;
-
-/* The layout of a uniform grid of square cells over a box (grid.c): origin,
- * cell side and counts only. Its users (the automatic and background sizing
- * fields) bucket static items into its cells themselves, in offset arrays
- * built once; compare cvm__vertex_grid, which stores a changing vertex set. */
-typedef struct cvm__cell_grid {
-    double x0, y0, cs;    /* origin and cell side */
-    int nx, ny;
-} cvm__cell_grid;
-
-/* Fit about n cells (at least 1, at most 2048 a side) over the box
- * [xmin, xmax] x [ymin, ymax]; a flat or empty box still gets cells. */
-void cvm__cell_grid_fit(cvm__cell_grid *g, double xmin, double ymin, double xmax, double ymax, size_t n);
-/* Cell (i, j) of (x, y), clamped into the grid. */
-void cvm__cell_grid_cell(const cvm__cell_grid *g, double x, double y, int *i, int *j);
-
-/* The automatic length scale (sizing_auto.c), built per refinement from the
- * domain: samples (x, y, LS) on the boundary in a uniform grid; the size at a
- * point is the least LS + distance / G over the samples. */
-typedef struct cvm__auto_field {
-    double *smp;          /* 3 per sample: x, y, LS */
-    size_t ns;
-    double G, ls_min;
-    cvm__cell_grid g;
-    int32_t *start;       /* g.nx * g.ny + 1 offsets into items */
-    int32_t *items;       /* sample indices by cell */
-    double *cmin;         /* least LS per cell */
-} cvm__auto_field;
-
-/* Sizes on a background triangulation (sizing_background.c), interpolated
- * linearly inside its triangles, no bound outside them. */
-typedef struct cvm__background {
-    double *xy, *h;       /* 2 and 1 per node */
-    int32_t *tri;         /* 3 per triangle, counter-clockwise */
-    size_t np, nt;
-    cvm__cell_grid g;         /* grid of triangles by bounding box */
-    int32_t *start, *items;
-} cvm__background;
-
-struct cvm_sizing {
-    cvm__ctx ctx;
-    int has_uniform;
-    double uniform;
-    cvm__point_source *pts;
-    size_t npts, cap_pts;
-    cvm__line_source *lines;
-    size_t nlines, cap_lines;
-    cvm_sizing_fn fn;     /* the user function: fn or fn_nd, never both */
-    cvm_sizing_nd_fn fn_nd;
-    void *fn_payload;
-    cvm_metric_fn metric; /* cvm_sizing_set_metric_fn(); no refiner reads it yet */
-    void *metric_payload;
-    int metric_has_dg;
-    int has_auto;         /* cvm_sizing_set_automatic() */
-    double auto_R, auto_G;
-    cvm__background *bg;  /* NULL, or cvm_sizing_set_background() */
-    double bgrad;         /* > 0: cvm_sizing_set_boundary_grading() slope */
-    /* set only on the private copy a refinement or optimisation evaluates: */
-    const cvm__auto_field *autof;
-    const cvm__auto_field *spacingf; /* the boundary-spacing field (bgrad) */
-};
-
-/* Build the automatic field of the domain triangles of T (features: domain
- * boundary and constrained edges, and the vertices flagged in is_input that
- * lie on none; is_input NULL: every vertex). CVM_OK or CVM_E_NOMEM (recorded
- * on ctx; F is then empty). */
-cvm_status cvm__auto_field_build(cvm__auto_field *F, const cvm__tri2 *T, const uint8_t *is_input,
-                                 double R, double G, cvm__ctx *ctx);
-void cvm__auto_field_free(cvm__auto_field *F, cvm__ctx *ctx);
-/* The boundary-spacing field of cvm_sizing_set_boundary_grading(): samples
- * on the domain boundary and constrained edges of T with LS = the local edge
- * length, slope g (> 0). CVM_OK or CVM_E_NOMEM (recorded on ctx; F empty). */
-cvm_status cvm__spacing_field_build(cvm__auto_field *F, const cvm__tri2 *T, double g,
-                                    cvm__ctx *ctx);
-/* Size at (x, y) when it is below bound (else bound; bound without samples):
- * the search stops as soon as no sample can beat it, so a small bound makes it cheap. */
-double cvm__auto_field_below(const cvm__auto_field *F, double x, double y, double bound);
-/* Size of the background mesh at (x, y): the least linear interpolant over
- * the triangles containing it, +inf outside them. */
-double cvm__background_at(const cvm__background *bg, double x, double y);
-void cvm__background_free(cvm__background *bg, cvm__ctx *ctx);
-
-/* 1 when s is NULL or has no source (no size bound). */
-int cvm__sizing_is_empty(const cvm_sizing *s);
-
-/* 1 when s has a metric source (sizing_nd.c). */
-int cvm__sizing_has_metric(const cvm_sizing *s);
-
-/* Size at (x, y) into *h (+infinity without sources). A bad callback value
- * records an error naming the callback and the position on err and returns
- * CVM_E_INPUT_NONFINITE or CVM_E_ARGUMENT. */
-cvm_status cvm__sizing_at(const cvm_sizing *s, double x, double y, double *h, cvm__ctx *err);
+#include "sizing/sizing_internal.h"
 
 /* ---- bad-triangle queue (bad_queue.c) ---- */
 
@@ -310,6 +209,11 @@ typedef struct cvm__refiner {
  * CVM_INCOMPLETE_*; the triangulation is valid on every return. */
 cvm_status cvm__refine(cvm__tri2 *T, const cvm__refine_params *p, cvm__refine_report *rep);
 
+/* ---- shared refiner state (refiner_state.c) ---- */
+
+/* Make room in the per-vertex arrays (vls, vseg) for n vertices. CVM_OK or
+ * CVM_E_NOMEM (no message). */
+cvm_status cvm__rf_reserve_vertices(cvm__refiner *R, size_t n);
 /* Record a new vertex v (segment seg or -1) in the per-vertex arrays and count
  * it as a Steiner point. CVM_OK, CVM_E_NOMEM or a sizing error. */
 cvm_status cvm__rf_new_vertex(cvm__refiner *R, int32_t v, int32_t seg);
@@ -317,6 +221,9 @@ cvm_status cvm__rf_new_vertex(cvm__refiner *R, int32_t v, int32_t seg);
 cvm_status cvm__rf_may_insert(cvm__refiner *R);
 /* Triangles around vertex v into R->star; returns their number, or 0 on NOMEM. */
 size_t cvm__rf_star(cvm__refiner *R, int32_t v);
+/* Queue subsegment a-b of segment seg for splitting (R->segq). CVM_OK or
+ * CVM_E_NOMEM (message set). */
+cvm_status cvm__rf_segq_push(cvm__refiner *R, int32_t a, int32_t b, int32_t seg);
 
 /* ---- encroachment (encroach.c) ---- */
 
@@ -335,8 +242,6 @@ cvm_status cvm__rf_cavity_encroached(cvm__refiner *R, int32_t v, int32_t t0);
 
 /* ---- segment splitting (split_segment.c) ---- */
 
-/* Queue subsegment a-b of segment seg for splitting. */
-cvm_status cvm__rf_segq_push(cvm__refiner *R, int32_t a, int32_t b, int32_t seg);
 /* Split every queued subsegment (and those their splits encroach).
  * CVM_OK or a stop / error status. */
 cvm_status cvm__rf_split_queued(cvm__refiner *R);

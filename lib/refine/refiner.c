@@ -1,62 +1,10 @@
-/* refiner.c - the driver of a refinement run: set-up, per-vertex data, run control and the final report. */
+/* refiner.c - the driver of a refinement run: set-up, the algorithm passes, post-processing and the final report. */
 #include <math.h>
 #include <string.h>
 
 #include "refine_internal.h"
 #include "geom/geom_internal.h"
 #include "geom/measure.h"
-
-size_t cvm__rf_star(cvm__refiner *R, int32_t v)
-{
-    size_t n = cvm__tri2_star(R->T, v, R->star, R->cap_star);
-    if (n > R->cap_star) {
-        if (cvm__grow(R->ctx, (void **)&R->star, &R->cap_star, n, sizeof *R->star))
-            return 0;
-        n = cvm__tri2_star(R->T, v, R->star, R->cap_star);
-    }
-    return n;
-}
-
-/* Make room in the per-vertex arrays for n vertices. */
-static cvm_status rf_reserve_vertices(cvm__refiner *R, size_t n)
-{
-    if (cvm__grow(R->ctx, (void **)&R->vls, &R->cap_vls, n, sizeof *R->vls) ||
-        cvm__grow(R->ctx, (void **)&R->vseg, &R->cap_vseg, n, sizeof *R->vseg))
-        return CVM_E_NOMEM;
-    return CVM_OK;
-}
-
-cvm_status cvm__rf_new_vertex(cvm__refiner *R, int32_t v, int32_t seg)
-{
-    const double *p = R->T->xy + 2 * (size_t)v;
-    cvm_status s;
-    if ((s = rf_reserve_vertices(R, (size_t)v + 1)))
-        return cvm__nomem(R->ctx);
-    R->vseg[v] = seg;
-    R->steiner++;
-    return cvm__sizing_at(R->p->sizing, p[0], p[1], &R->vls[v], R->ctx);
-}
-
-cvm_status cvm__rf_may_insert(cvm__refiner *R)
-{
-    cvm_status s;
-    double frac;
-    if (R->p->max_steiner && R->steiner >= R->p->max_steiner)
-        return cvm__error(R->ctx, CVM_INCOMPLETE_STEINER_LIMIT, CVM_ENT_NONE, -1,
-                          "refinement stopped at the Steiner limit (%lu points); the mesh is "
-                          "valid but some triangles may not meet the bounds",
-                          (unsigned long)R->steiner);
-    frac = R->p->max_steiner ? (double)R->steiner / (double)R->p->max_steiner
-                             : (double)R->steiner / (double)(R->steiner + R->q.n + 1);
-    s = cvm__tick(R->ctx, 1, CVM_STAGE_REFINE, frac);
-    if (s)
-        return cvm__error(R->ctx, s, CVM_ENT_NONE, -1,
-                          "refinement %s after %lu Steiner points; the mesh is valid but some "
-                          "triangles may not meet the bounds",
-                          s == CVM_INCOMPLETE_CANCELLED ? "was cancelled" : "reached the time limit",
-                          (unsigned long)R->steiner);
-    return CVM_OK;
-}
 
 /* Convex hull edges that no segment covers become segments of their own (ids
  * after the input segments): those of the domain first, so refinement never
@@ -119,7 +67,7 @@ static cvm_status rf_setup(cvm__refiner *R, cvm__tri2 *T, const cvm__refine_para
     R->nseg = p->nseg;
     if ((s = rf_constrain_hull(R)))
         return s;
-    if (rf_reserve_vertices(R, T->nv + 1))
+    if (cvm__rf_reserve_vertices(R, T->nv + 1))
         return cvm__nomem(R->ctx);
     for (v = 0; v < T->nv; v++) {
         const double *q = T->xy + 2 * v;

@@ -10,19 +10,6 @@ static const double *ss_pt(const cvm__refiner *R, int32_t v)
     return R->T->xy + 2 * (size_t)v;
 }
 
-cvm_status cvm__rf_segq_push(cvm__refiner *R, int32_t a, int32_t b, int32_t seg)
-{
-    size_t need = 3 * (R->segq_n + 1);
-    if (need > R->cap_segq &&
-        cvm__grow(R->ctx, (void **)&R->segq, &R->cap_segq, need, sizeof *R->segq))
-        return cvm__nomem(R->ctx);
-    R->segq[3 * R->segq_n] = a;
-    R->segq[3 * R->segq_n + 1] = b;
-    R->segq[3 * R->segq_n + 2] = seg;
-    R->segq_n++;
-    return CVM_OK;
-}
-
 cvm_status cvm__rf_split_queued(cvm__refiner *R)
 {
     cvm_status s;

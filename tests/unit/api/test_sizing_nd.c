@@ -1,5 +1,5 @@
 /* test_sizing_nd.c - the dimension-generic sizing calls and the metric source
- * (lib/refine/sizing_nd.c): the same sizes as the 2D calls, dims refused, metric checked. */
+ * (lib/sizing/sizing_nd.c): the same sizes as the 2D calls, dims refused, metric checked. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>

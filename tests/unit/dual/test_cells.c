@@ -1,4 +1,4 @@
-/* test_cells.c - dual cell polygons and their .vtu file (lib/api/dual_cells.c). */
+/* test_cells.c - dual cell polygons and their .vtu file (lib/dual/cells.c through lib/api/dual_cells.c). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>

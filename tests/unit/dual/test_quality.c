@@ -1,4 +1,4 @@
-/* test_quality.c - dual quality q1..q5 (lib/api/dual_quality.c) against the test's own computation. */
+/* test_quality.c - dual quality q1..q5 (lib/dual/quality.c through lib/api/dual_quality.c) against the test's own computation. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>

@@ -1,4 +1,4 @@
-/* test_sizing.c - the cvm_sizing handle (lib/refine/sizing.c): combination by minimum, invalid sizes named. */
+/* test_sizing.c - the cvm_sizing handle (lib/sizing/sizing.c): combination by minimum, invalid sizes named. */
 #include <math.h>
 #include <string.h>
 

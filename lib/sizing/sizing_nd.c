@@ -2,7 +2,7 @@
  * mesh's dimension) and its metric (tensor) source. */
 #include <math.h>
 
-#include "refine_internal.h"
+#include "sizing_internal.h"
 
 /* The checks the positional calls below start with: a handle (whose message is then cleared),
  * the array x (named name in the message), dim. */

@@ -1,7 +1,7 @@
 /* grid.c - uniform grids of square cells, as the sizing fields use them for ring searches. */
 #include <math.h>
 
-#include "refine_internal.h"
+#include "sizing_internal.h"
 
 void cvm__cell_grid_fit(cvm__cell_grid *g, double xmin, double ymin, double xmax, double ymax, size_t n)
 {

@@ -2,7 +2,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "refine_internal.h"
+#include "sizing_internal.h"
 #include "geom/geom_internal.h"
 
 void cvm__background_free(cvm__background *bg, cvm__ctx *ctx)

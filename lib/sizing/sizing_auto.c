@@ -34,7 +34,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "refine_internal.h"
+#include "sizing_internal.h"
 #include "geom/measure.h"
 
 #define AUTO_CHAIN_TURN (CVM__PI / 3.0) /* 60 degrees */

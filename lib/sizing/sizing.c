@@ -3,7 +3,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "refine_internal.h"
+#include "sizing_internal.h"
 
 cvm_status cvm_sizing_create(cvm_sizing **out)
 {
