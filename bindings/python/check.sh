@@ -41,7 +41,7 @@ build_wheel() {  # build_wheel TAG DIST [pip options]: build, check and install 
     "$py" - "$whl" <<'PYEOF'
 import sys, zipfile
 names = zipfile.ZipFile(sys.argv[1]).namelist()
-need = ["cvmesh/__init__.py", "cvmesh/_errors.py", "cvmesh/capi.py"]
+need = ["cvmesh/__init__.py", "cvmesh/_errors.py", "cvmesh/capi.py", "cvmesh/py.typed"]
 missing = [n for n in need if n not in names]
 if missing or not any(n.startswith("cvmesh/_capi") for n in names):
     sys.exit("check-python: wheel %s lacks %s" % (sys.argv[1], missing or "the extension"))
