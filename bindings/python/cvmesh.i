@@ -148,6 +148,8 @@ CVMPY_LONG_CALL(cvm_mesh_refine)
 CVMPY_LONG_CALL(cvm_mesh_optimise_dual)
 CVMPY_LONG_CALL(cvm_mesh_read)
 CVMPY_LONG_CALL(cvm_mesh_write)
+CVMPY_LONG_CALL(cvm_mesh_stage_write)
+CVMPY_LONG_CALL(cvm_mesh_stage_write_dual)
 CVMPY_LONG_CALL(cvm_mesh_check)
 CVMPY_NOGIL(cvm_mesh_set_weights)
 

@@ -22,6 +22,7 @@ import dataclasses
 import enum
 import math
 import os
+import signal
 import threading
 import warnings
 from collections import namedtuple
@@ -486,16 +487,23 @@ class Mesh:
         self._progress_every = int(every) if callback is not None else 0
 
     @contextlib.contextmanager
-    def _progress_installed(self, m, callback, every):
+    def _progress_installed(self, m: Any, callback: Optional[ProgressCallback],
+                            every: Optional[int],
+                            stop: Optional[Callable[[], bool]] = None) -> Iterator[None]:
         """Install the progress callback of one long call: the given one, else
-        the one of set_progress(), else a check for Ctrl-C alone. It stays
-        installed after the call (uninstalling would clear the handle's error
-        message) and is replaced by the next long call."""
+        the one of set_progress(), else a check for Ctrl-C alone; stop() true
+        also stops the call. It stays installed after the call (uninstalling
+        would clear the handle's error message) and is replaced by the next
+        long call."""
         if callback is None:
             callback, every = self._progress, every or self._progress_every
-        if callback is not None:
-            def target(stage, fraction, _cb=callback):
-                return _cb(_stage(stage), fraction)
+        if callback is not None or stop is not None:
+            def target(stage: int, fraction: float, _cb: Any = callback) -> Any:
+                if stop is not None and stop():
+                    return True
+                return _cb is not None and _cb(_stage(stage), fraction)
+            if callback is None:
+                every = self.interrupt_every or 4096
             capi.cvm_mesh_set_progress(m, target, int(every or 1000))
         else:
             capi.cvm_mesh_set_progress(m, None, int(self.interrupt_every or 0))
@@ -899,9 +907,33 @@ class Mesh:
 
     def write(self, path: PathLike) -> None:
         """Write the mesh; the format follows the extension: .vtu, .msh,
-        .node (with .ele and .edge), .svg."""
-        with self._handle() as m, self._progress_installed(m, None, None):
-            self._finish(capi.cvm_mesh_write(m, os.fspath(path)))
+        .node (with .ele and .edge), .svg.
+
+        The files are written under temporary names and renamed over their
+        targets at the end (cvm_mesh_stage_write, cvm_mesh_commit_writes).
+        Ctrl-C (SIGINT, in the main thread with Python's default handler)
+        stops the write: every target stays as it was, no temporary file is
+        left, and KeyboardInterrupt is raised. A write that completed is never
+        reported as interrupted: a Ctrl-C that lands during the final renames
+        (microseconds) is ignored. A progress callback that cancels leaves the
+        targets as they were too (last_status INCOMPLETE_CANCELLED)."""
+        with self._handle() as m, _sigint_held() as interrupted, \
+                self._progress_installed(m, None, None, stop=interrupted):
+            try:
+                code = capi.cvm_mesh_stage_write(m, os.fspath(path))
+            except BaseException:
+                capi.cvm_mesh_discard_writes(m)
+                raise
+            if code != Status.OK or interrupted():
+                # the library removed its files on a cancellation; a Ctrl-C
+                # after the last progress check lands here with the files staged
+                capi.cvm_mesh_discard_writes(m)
+                if interrupted():
+                    raise KeyboardInterrupt
+                self._finish(code)
+                return
+            capi.cvm_mesh_commit_writes(m)
+            self._finish(code)
 
     # ---- interoperability --------------------------------------------------
 
@@ -960,6 +992,28 @@ class Mesh:
             ax.figure.colorbar(coll, ax=ax, label=label)
         ax.set_aspect("equal")
         return ax
+
+
+@contextlib.contextmanager
+def _sigint_held() -> Iterator[Callable[[], bool]]:
+    """Hold Ctrl-C while the block runs: yields interrupted(), true once a
+    SIGINT has arrived. Only in the main thread and only over Python's default
+    handler; otherwise SIGINT keeps its handler and interrupted() stays false
+    (the progress callback then raises what the handler raises)."""
+    hits: list = []
+    if (threading.current_thread() is not threading.main_thread()
+            or signal.getsignal(signal.SIGINT) is not signal.default_int_handler):
+        yield lambda: False
+        return
+
+    def hold(signum: int, frame: Any) -> None:
+        hits.append(signum)
+
+    old = signal.signal(signal.SIGINT, hold)
+    try:
+        yield lambda: bool(hits)
+    finally:
+        signal.signal(signal.SIGINT, old)
 
 
 def _algorithm(name: Union[str, int]) -> int:
