@@ -4,7 +4,9 @@
 #     (a header change without regenerating fails here);
 #  2. the module compiles warning-free (-Werror) and its tests pass;
 #  3. examples/fortran/channel_poisson.f90 and the Fortran blocks of
-#     bindings/README.md and README.md compile, link against the static library and run.
+#     bindings/README.md and README.md compile, link against the static library and run;
+#  4. `make install-c install-fortran` into $BUILD/fortran/stage, then the example
+#     once more, built with nothing but `pkg-config --cflags --libs cvmesh-fortran`.
 # Usage: sh bindings/fortran/check.sh [--build-only]
 # Environment: CVM_BUILD or BUILD (build directory, default build, relative to the top), FC (gfortran),
 #   FFLAGS, CVMESH_LIB (static library; default: built with make), LIBS.
@@ -57,3 +59,18 @@ echo "check-fortran: examples/fortran/channel_poisson"
 "$out/channel_poisson"
 echo "check-fortran: module tests"
 "$out/test_cvmesh"
+
+echo "check-fortran: examples/fortran against an installed copy, through cvmesh-fortran.pc"
+stage=$out/stage
+rm -rf "$stage"
+make -s -C "$root" BUILD="$build" FC="$FC" PREFIX="$stage" install-c install-fortran >/dev/null
+flags=$(PKG_CONFIG_PATH=$stage/lib/pkgconfig pkg-config --cflags --libs cvmesh-fortran)
+case $flags in *"$stage/include/cvmesh/"*) ;;
+    *) echo "check-fortran: cvmesh-fortran.pc has no compiler-specific module directory: $flags"
+       exit 1 ;;
+esac
+echo "$FC channel_poisson.f90 $flags"
+(cd "$out" && $FC $FFLAGS "$root/examples/fortran/channel_poisson.f90" $flags \
+    -Wl,-rpath,"$stage/lib" -o channel_poisson_installed)
+(cd "$out" && ./channel_poisson_installed >/dev/null)
+echo "check-fortran: installed example ok"
