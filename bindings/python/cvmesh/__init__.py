@@ -938,8 +938,12 @@ class Mesh:
     # ---- interoperability --------------------------------------------------
 
     def to_meshio(self) -> Any:
-        """A meshio.Mesh of the triangles (z = 0), with point markers and
-        triangle attributes as data. Needs the meshio package."""
+        """A meshio.Mesh of the mesh (z = 0), in the layout of write() to .vtu:
+        cell blocks "triangle" and, when there are segments, "line" (the
+        constrained edges); point data "marker" and "weight" (the power weights,
+        0 without them) and "attribute" (point attributes, when set); cell data
+        "marker" (segment marker on a line, 0 on a triangle) and "attribute"
+        (regional attribute of a triangle, 0 on a line). Needs meshio."""
         try:
             import meshio  # type: ignore
         except ImportError:
@@ -947,9 +951,99 @@ class Mesh:
         pts = self.points
         pts3 = np.zeros((len(pts), 3))
         pts3[:, :2] = pts
-        return meshio.Mesh(pts3, [("triangle", self.triangles)],
-                           point_data={"marker": self.point_markers},
-                           cell_data={"attribute": [self.triangle_attributes]})
+        tris, segs = self.triangles, self.segments
+        cells = [("triangle", tris)]
+        markers = [np.zeros(len(tris), dtype=np.int32)]
+        attributes = [self.triangle_attributes]
+        if len(segs):
+            cells.append(("line", segs))
+            markers.append(self.segment_markers)
+            attributes.append(np.zeros(len(segs)))
+        point_data = {"marker": self.point_markers, "weight": self.weights}
+        pattr = self.point_attributes
+        if pattr.shape[1]:
+            point_data["attribute"] = pattr if pattr.shape[1] > 1 else pattr[:, 0]
+        return meshio.Mesh(pts3, cells, point_data=point_data,
+                           cell_data={"marker": markers, "attribute": attributes})
+
+    #: cell data names from_meshio() takes segment markers from, in this order.
+    MESHIO_MARKER_KEYS = ("marker", "gmsh:physical", "medit:ref", "cell_tags")
+
+    @classmethod
+    def from_meshio(cls, mesh: Any, marker: Optional[str] = None, **options: float) -> Mesh:
+        """A cvmesh Mesh from a meshio.Mesh of triangles in the plane.
+
+        mesh.points: (n, 2), or (n, 3) with every z = 0. Its "triangle" cells
+        give the domain, its "line" cells the segments, with their markers from
+        the cell data `marker` (default: the first of MESHIO_MARKER_KEYS that
+        is there). Without line cells, the boundary edges of the triangles
+        become the segments (marker 1). Holes (bounded regions the triangles do
+        not cover) become hole seeds. Point data "marker" and "weight" are
+        used when present. Other cell types (vertex cells aside) raise
+        ArgumentError.
+
+        The result is triangulated: the constrained Delaunay (with weights:
+        regular) triangulation of the points and segments, carved to the
+        triangles' domain. Its vertices are the points in order; its triangles
+        are the given ones when those were (constrained) Delaunay, and
+        otherwise a re-triangulation of the same points and boundary."""
+        pts = np.asarray(mesh.points, dtype=np.float64)
+        if pts.ndim != 2 or pts.shape[1] not in (2, 3):
+            raise ArgumentError("from_meshio: points of shape %s; need (n, 2) or (n, 3)"
+                                % (pts.shape,), Status.E_ARGUMENT)
+        if pts.shape[1] == 3:
+            off = np.flatnonzero(pts[:, 2] != 0)
+            if off.size:
+                raise InputError("from_meshio: point %d has z = %.17g; cvmesh meshes the plane "
+                                 "z = 0" % (off[0], pts[off[0], 2]), Status.E_ARGUMENT,
+                                 Entity.INPUT_POINT, int(off[0]))
+            pts = np.ascontiguousarray(pts[:, :2])
+        key = marker
+        if key is None:
+            key = next((k for k in cls.MESHIO_MARKER_KEYS if k in mesh.cell_data), None)
+        tris, segs, seg_markers = [], [], []
+        for k, block in enumerate(mesh.cells):
+            data = np.asarray(block.data)
+            if block.type == "triangle":
+                tris.append(data)
+            elif block.type == "line":
+                segs.append(data)
+                if key is not None and key in mesh.cell_data:
+                    seg_markers.append(np.asarray(mesh.cell_data[key][k]).reshape(-1))
+                else:
+                    seg_markers.append(np.ones(len(data), dtype=np.int64))
+            elif block.type != "vertex":
+                raise ArgumentError("from_meshio: cell block %d has type %s; cvmesh takes "
+                                    "triangle and line cells" % (k, block.type), Status.E_ARGUMENT)
+        tri = np.concatenate(tris).astype(np.int64) if tris else np.zeros((0, 3), np.int64)
+        if segs:
+            seg = np.concatenate(segs).astype(np.int64)
+            seg_mark = np.concatenate(seg_markers)
+        else:
+            seg = _boundary_edges(tri)
+            seg_mark = np.ones(len(seg), dtype=np.int64)
+        point_markers = mesh.point_data.get("marker")
+        weights = mesh.point_data.get("weight")
+
+        def build(holes: Optional[npt.NDArray[np.float64]]) -> Mesh:
+            m = cls.from_pslg(pts, seg.astype(np.int32) if len(seg) else None,
+                              holes=holes if holes is not None and len(holes) else None,
+                              markers=None if point_markers is None
+                              else np.asarray(point_markers).astype(np.int32).reshape(-1),
+                              segment_markers=seg_mark.astype(np.int32) if len(seg) else None,
+                              **options)
+            m.triangulate()
+            return m
+
+        result = build(None)
+        if len(tri):
+            holes = _hole_seeds(result, tri)
+            if len(holes):
+                result.close()
+                result = build(holes)
+        if weights is not None:
+            result.set_weights(np.asarray(weights, dtype=np.float64).reshape(-1))
+        return result
 
     def triangle_min_angles(self) -> npt.NDArray[np.float64]:
         """(m,) float64 smallest angle of each triangle, degrees."""
@@ -992,6 +1086,60 @@ class Mesh:
             ax.figure.colorbar(coll, ax=ax, label=label)
         ax.set_aspect("equal")
         return ax
+
+
+def _boundary_edges(tri: npt.NDArray[np.int64]) -> npt.NDArray[np.int64]:
+    """(k, 2) edges used by one triangle of tri, directed as in their
+    triangle (so the triangle lies on their left when tri is counter-clockwise)."""
+    if not len(tri):
+        return np.zeros((0, 2), dtype=np.int64)
+    directed = np.concatenate([tri[:, [0, 1]], tri[:, [1, 2]], tri[:, [2, 0]]])
+    key = np.sort(directed, axis=1)
+    _, inverse, counts = np.unique(key, axis=0, return_inverse=True, return_counts=True)
+    return directed[counts[inverse.reshape(-1)] == 1]
+
+
+def _hole_seeds(mesh: Mesh, tri: npt.NDArray[np.int64]) -> npt.NDArray[np.float64]:
+    """Hole seeds for the triangles tri (vertex ids of mesh's points): one
+    point inside each region of mesh's triangulation, bounded by its
+    segments, that tri does not cover. A region is covered when it holds the
+    triangle on the inner side of a boundary edge of tri: the side of the
+    edge's triangle, found from the edge's direction in that triangle
+    (topology), with the triangle's orientation from the sign of its area."""
+    pts = mesh.points
+    tri = mesh.input_map[tri].astype(np.int64)
+    p = pts[tri]
+    area2 = ((p[:, 1, 0] - p[:, 0, 0]) * (p[:, 2, 1] - p[:, 0, 1])
+             - (p[:, 1, 1] - p[:, 0, 1]) * (p[:, 2, 0] - p[:, 0, 0]))
+    cw = area2 < 0
+    tri = tri.copy()
+    tri[cw] = tri[cw][:, [0, 2, 1]]
+    inner = {(int(a), int(b)) for a, b in _boundary_edges(tri)}   # domain on the left
+    T, nb = mesh.triangles, mesh.neighbors
+    segs = {tuple(sorted(map(int, s))) for s in mesh.segments}
+    nt = len(T)
+    region = np.full(nt, -1)
+    covered = []
+    for start in range(nt):
+        if region[start] >= 0:
+            continue
+        r = len(covered)
+        covered.append(False)
+        stack = [start]
+        region[start] = r
+        while stack:
+            t = stack.pop()
+            for j in range(3):
+                a, b = int(T[t, (j + 1) % 3]), int(T[t, (j + 2) % 3])
+                if (a, b) in inner:            # t is left of a domain edge (a, b)
+                    covered[r] = True
+                u = nb[t, j]
+                if u >= 0 and region[u] < 0 and (min(a, b), max(a, b)) not in segs:
+                    region[u] = r
+                    stack.append(u)
+    seeds = [pts[T[np.flatnonzero(region == r)[0]]].mean(axis=0)
+             for r in range(len(covered)) if not covered[r]]
+    return np.array(seeds).reshape(-1, 2)
 
 
 @contextlib.contextmanager
