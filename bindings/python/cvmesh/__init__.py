@@ -1185,12 +1185,16 @@ class Sizing:
         mesh.refine(sizing=sizing, min_angle=28)
 
     A callback size(x, y) -> float is called with the GIL taken from inside
-    the refinement (slow for large meshes; prefer sources). An exception it
-    raises stops the refinement and propagates.
+    the refinement (slow for large meshes; prefer sources). A batch callback
+    (set_batch_callback, or Sizing(batch=...)) takes an (n, 2) array of
+    points and returns n sizes: numpy code runs once per batch instead of
+    once per point. An exception either raises stops the refinement and
+    propagates.
     """
 
     def __init__(self, uniform: Optional[float] = None,
-                 callback: Optional[SizeCallback] = None) -> None:
+                 callback: Optional[SizeCallback] = None,
+                 batch: Optional[BatchSizeCallback] = None) -> None:
         self._s = None
         self._lock = threading.Lock()
         self._owner = None
@@ -1199,8 +1203,12 @@ class Sizing:
         self._s = capi.cvm_sizing_create()
         if uniform is not None:
             self.set_uniform(uniform)
+        if callback is not None and batch is not None:
+            raise ValueError("give callback or batch, not both (one user function per sizing)")
         if callback is not None:
             self.set_callback(callback)
+        if batch is not None:
+            self.set_batch_callback(batch)
 
     def close(self) -> None:
         """Free the C handle now (also done when the object is collected).
@@ -1270,6 +1278,21 @@ class Sizing:
         """Use callback(x, y) -> size as one more source (None removes it)."""
         with self._handle() as s:
             capi.cvm_sizing_set_callback(s, callback)
+            self._callback = callback
+
+    def set_batch_callback(self, callback: Optional[BatchSizeCallback]) -> None:
+        """Use callback(xy) -> sizes as one more source, asked for many points
+        at once: xy an (n, 2) float64 array, the result n positive sizes (e.g.
+        lambda xy: 0.01 + 0.1 * xy[:, 0]). Mesh.refine() asks for all the
+        vertices it starts from in batches of up to 1024 points and for each
+        point it inserts on its own (n = 1), so the mesh is the one a
+        callback(x, y) of the same sizes gives. Replaces a callback(x, y) or
+        callback(x); None removes it (cvm_sizing_set_batch_callback)."""
+        if not hasattr(capi, "cvm_sizing_set_batch_callback"):
+            raise _unsupported("batch sizing callbacks need cvm_sizing_set_batch_callback(), "
+                               "not in this version of the cvmesh library (%s)" % version())
+        with self._handle() as s:
+            capi.cvm_sizing_set_batch_callback(s, callback)
             self._callback = callback
 
     def add_point_source_nd(self, x: npt.ArrayLike, h: float, growth: float = 0.0) -> None:
