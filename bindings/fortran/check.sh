@@ -16,6 +16,10 @@ root=$(cd "$here/../.." && pwd)
 build=${CVM_BUILD:-${BUILD:-build}}
 case $build in /*) ;; *) build=$root/$build ;; esac
 out=$build/fortran
+# make is given the build directory as the top Makefile names it (relative to
+# the top when inside it): its dependency files record object paths as given,
+# so one build directory named two ways would not see header changes.
+mkbuild=${build#"$root"/}
 FC=${FC:-gfortran}
 [ "$FC" = f77 ] && FC=gfortran   # make's default FC
 FFLAGS=${FFLAGS:--O2 -g -std=f2008 -Wall -Wextra -pedantic -Werror -fimplicit-none}
@@ -26,7 +30,7 @@ PYTHON=${PYTHON:-python3}
 
 lib=${CVMESH_LIB:-}
 if [ -z "$lib" ]; then
-    make -s -C "$root" BUILD="$build" "$build/lib/libcvmesh.a"
+    make -s -C "$root" BUILD="$mkbuild" "$mkbuild/lib/libcvmesh.a"
     lib=$build/lib/libcvmesh.a
 fi
 
@@ -63,7 +67,7 @@ echo "check-fortran: module tests"
 echo "check-fortran: examples/fortran against an installed copy, through cvmesh-fortran.pc"
 stage=$out/stage
 rm -rf "$stage"
-make -s -C "$root" BUILD="$build" FC="$FC" PREFIX="$stage" install-c install-fortran >/dev/null
+make -s -C "$root" BUILD="$mkbuild" FC="$FC" PREFIX="$stage" install-c install-fortran >/dev/null
 flags=$(PKG_CONFIG_PATH=$stage/lib/pkgconfig pkg-config --cflags --libs cvmesh-fortran)
 case $flags in *"$stage/include/cvmesh/"*) ;;
     *) echo "check-fortran: cvmesh-fortran.pc has no compiler-specific module directory: $flags"
