@@ -1206,6 +1206,44 @@ typedef double (*cvm_sizing_nd_fn)(void *payload, const double *x, int dim);
 CVM_API cvm_status cvm_sizing_set_callback_nd(cvm_sizing *s, cvm_sizing_nd_fn fn, void *payload);
 
 /**
+ * User sizing function asked for many points in one call: write the target
+ * edge length at each of the @p n points @p xy (x0, y0, x1, y1, ...; 2n
+ * doubles) into @p h_out[0 .. n-1], positive and finite. The size at a point
+ * must depend on that point alone (deterministic, whatever the batch), so the
+ * mesh is the one a cvm_sizing_fn of the same sizes gives. Return 0; any other
+ * value stops the run that asked. It must not call any function on the mesh
+ * being refined.
+ */
+typedef int (*cvm_sizing_batch_fn)(void *payload, const double *xy, size_t n, double *h_out);
+
+/**
+ * Set (or, with fn NULL, remove) a user sizing function that is asked for a
+ * batch of points per call, for callers where one call costs much more than
+ * one point (an interpreted language). cvm_mesh_refine() asks for the sizes at
+ * every vertex of the mesh it starts from in batches of up to 1024 points, and
+ * for each Steiner point it inserts one at a time (n = 1: each decides where
+ * the next goes); every other evaluation (cvm_sizing_eval(), segment marching,
+ * cvm_mesh_optimise_dual()) asks one point at a time. A handle has one user
+ * function: this replaces one set by cvm_sizing_set_callback() or
+ * cvm_sizing_set_callback_nd(), and they replace this one.
+ *
+ * @param s        sizing handle; not NULL.
+ * @param fn       as cvm_sizing_batch_fn; NULL removes the user function.
+ * @param payload  passed unchanged to fn; may be NULL.
+ * Ownership: fn and payload must stay valid while the handle is used; @p xy
+ *            is valid during the call only.
+ * Errors of fn: a non-zero return stops the run with CVM_E_ARGUMENT naming "the
+ *               sizing callback", the batch size and its first point; a size <= 0
+ *               with CVM_E_ARGUMENT, NaN or infinite with CVM_E_INPUT_NONFINITE,
+ *               naming "the sizing callback" and the position.
+ * Thread-safety: one call at a time on @p s.
+ * @return CVM_OK, CVM_E_NULL_ARG (s is NULL)
+ * @since 0.2
+ */
+CVM_API cvm_status cvm_sizing_set_batch_callback(cvm_sizing *s, cvm_sizing_batch_fn fn,
+                                                 void *payload);
+
+/**
  * Metric (tensor) function: at the point @p x (@p dim coordinates) write the
  * symmetric positive definite metric g into @p g as its dim*(dim+1)/2
  * upper-triangle entries, row by row (2D: g11, g12, g22; 3D: g11, g12, g13, g22,

@@ -4,7 +4,9 @@
 #     (a header change without regenerating fails here);
 #  2. the module compiles warning-free (-Werror) and its tests pass;
 #  3. examples/fortran/channel_poisson.f90 and the Fortran blocks of
-#     bindings/README.md and README.md compile, link against the static library and run.
+#     bindings/README.md and README.md compile, link against the static library and run;
+#  4. `make install-c install-fortran` into $BUILD/fortran/stage, then the example
+#     once more, built with nothing but `pkg-config --cflags --libs cvmesh-fortran`.
 # Usage: sh bindings/fortran/check.sh [--build-only]
 # Environment: CVM_BUILD or BUILD (build directory, default build, relative to the top), FC (gfortran),
 #   FFLAGS, CVMESH_LIB (static library; default: built with make), LIBS.
@@ -14,6 +16,10 @@ root=$(cd "$here/../.." && pwd)
 build=${CVM_BUILD:-${BUILD:-build}}
 case $build in /*) ;; *) build=$root/$build ;; esac
 out=$build/fortran
+# make is given the build directory as the top Makefile names it (relative to
+# the top when inside it): its dependency files record object paths as given,
+# so one build directory named two ways would not see header changes.
+mkbuild=${build#"$root"/}
 FC=${FC:-gfortran}
 [ "$FC" = f77 ] && FC=gfortran   # make's default FC
 FFLAGS=${FFLAGS:--O2 -g -std=f2008 -Wall -Wextra -pedantic -Werror -fimplicit-none}
@@ -24,7 +30,7 @@ PYTHON=${PYTHON:-python3}
 
 lib=${CVMESH_LIB:-}
 if [ -z "$lib" ]; then
-    make -s -C "$root" BUILD="$build" "$build/lib/libcvmesh.a"
+    make -s -C "$root" BUILD="$mkbuild" "$mkbuild/lib/libcvmesh.a"
     lib=$build/lib/libcvmesh.a
 fi
 
@@ -57,3 +63,18 @@ echo "check-fortran: examples/fortran/channel_poisson"
 "$out/channel_poisson"
 echo "check-fortran: module tests"
 "$out/test_cvmesh"
+
+echo "check-fortran: examples/fortran against an installed copy, through cvmesh-fortran.pc"
+stage=$out/stage
+rm -rf "$stage"
+make -s -C "$root" BUILD="$mkbuild" FC="$FC" PREFIX="$stage" install-c install-fortran >/dev/null
+flags=$(PKG_CONFIG_PATH=$stage/lib/pkgconfig pkg-config --cflags --libs cvmesh-fortran)
+case $flags in *"$stage/include/cvmesh/"*) ;;
+    *) echo "check-fortran: cvmesh-fortran.pc has no compiler-specific module directory: $flags"
+       exit 1 ;;
+esac
+echo "$FC channel_poisson.f90 $flags"
+(cd "$out" && $FC $FFLAGS "$root/examples/fortran/channel_poisson.f90" $flags \
+    -Wl,-rpath,"$stage/lib" -o channel_poisson_installed)
+(cd "$out" && ./channel_poisson_installed >/dev/null)
+echo "check-fortran: installed example ok"

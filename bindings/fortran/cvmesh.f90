@@ -45,6 +45,7 @@ module cvmesh
         procedure :: set_point_markers => cvmf_set_point_markers
         procedure :: set_segments => cvmf_set_segments
         procedure :: set_segment_markers => cvmf_set_segment_markers
+        procedure :: set_point_attributes => cvmf_set_point_attributes
         procedure :: set_holes => cvmf_set_holes
         procedure :: set_regions => cvmf_set_regions
         procedure :: read => cvmf_read
@@ -62,8 +63,13 @@ module cvmesh
         procedure :: get_segments => cvmf_get_segments
         procedure :: get_neighbors => cvmf_get_neighbors
         procedure :: get_point_markers => cvmf_get_point_markers
+        procedure :: get_segment_markers => cvmf_get_segment_markers
+        procedure :: get_triangle_attributes => cvmf_get_triangle_attributes
+        procedure :: get_point_attributes => cvmf_get_point_attributes
         procedure :: get_measure => cvmf_get_measure
         procedure :: set_weights => cvmf_set_weights
+        procedure :: get_weights => cvmf_get_weights
+        procedure :: get_dual_cells => cvmf_get_dual_cells
         procedure :: get_dual_areas => cvmf_get_dual_areas
         procedure :: get_dual_edge_lengths => cvmf_get_dual_edge_lengths
         procedure :: get_dual_vertices => cvmf_get_dual_vertices
@@ -94,6 +100,8 @@ module cvmesh
     private :: cvmf_get_point_markers, cvmf_get_measure, cvmf_write, cvmf_refine
     private :: cvmf_set_weights, cvmf_get_dual_areas, cvmf_get_dual_edge_lengths
     private :: cvmf_get_dual_vertices, cvmf_doubles, cvmf_optimise_dual
+    private :: cvmf_set_point_attributes, cvmf_get_segment_markers, cvmf_get_triangle_attributes
+    private :: cvmf_get_point_attributes, cvmf_get_weights, cvmf_get_dual_cells, cvmf_markers
     private :: cvmfs_create, cvmfs_destroy, cvmfs_final, cvmfs_errmsg, cvmfs_set_uniform
     private :: cvmfs_add_point_source, cvmfs_add_line_source, cvmfs_report
     private :: cvmfs_set_boundary_grading
@@ -242,6 +250,18 @@ contains
         s = cvm_mesh_set_segment_markers(self%ptr, markers, size(markers, 1, c_size_t))
         call cvmf_report(self, s, status, 'set_segment_markers')
     end subroutine cvmf_set_segment_markers
+
+    !> Point attributes, attrs(1:a, i) = the a attributes of input point i
+    !> (a >= 1; the same a for every point).
+    subroutine cvmf_set_point_attributes(self, attrs, status)
+        class(cvm_mesh_t), intent(inout) :: self
+        real(c_double), intent(in) :: attrs(:, :)
+        integer, intent(out), optional :: status
+        integer(c_int) :: s
+        s = cvm_mesh_set_point_attributes(self%ptr, attrs, size(attrs, 2, c_size_t), &
+                                          size(attrs, 1, c_size_t))
+        call cvmf_report(self, s, status, 'set_point_attributes')
+    end subroutine cvmf_set_point_attributes
 
     !> Hole seed points, xy(1:2, k).
     subroutine cvmf_set_holes(self, xy, status)
@@ -514,20 +534,78 @@ contains
         call cvmf_report(self, s, status, 'get_neighbors')
     end subroutine cvmf_get_neighbors
 
+    ! Markers of every entity of kind, allocated here.
+    subroutine cvmf_markers(self, kind, markers, s)
+        class(cvm_mesh_t), intent(in) :: self
+        integer(c_int), intent(in) :: kind
+        integer(c_int32_t), allocatable, intent(out) :: markers(:)
+        integer(c_int), intent(out) :: s
+        integer(c_size_t) :: n
+        n = 0
+        s = cvm_mesh_count(n, self%ptr, kind)
+        if (s /= CVM_OK) n = 0
+        allocate (markers(n))
+        if (s == CVM_OK) s = cvm_mesh_copy_markers(markers, n, self%ptr, kind)
+    end subroutine cvmf_markers
+
     !> Marker of each vertex (allocated here).
     subroutine cvmf_get_point_markers(self, markers, status)
         class(cvm_mesh_t), intent(in) :: self
         integer(c_int32_t), allocatable, intent(out) :: markers(:)
         integer, intent(out), optional :: status
         integer(c_int) :: s
-        integer(c_size_t) :: n
-        n = 0
-        s = cvm_mesh_count(n, self%ptr, CVM_ENT_VERTEX)
-        if (s /= CVM_OK) n = 0
-        allocate (markers(n))
-        if (s == CVM_OK) s = cvm_mesh_copy_markers(markers, n, self%ptr, CVM_ENT_VERTEX)
+        call cvmf_markers(self, CVM_ENT_VERTEX, markers, s)
         call cvmf_report(self, s, status, 'get_point_markers')
     end subroutine cvmf_get_point_markers
+
+    !> Marker of each output segment, in the order of get_segments() (allocated
+    !> here); a piece of a split input segment keeps that segment's marker.
+    subroutine cvmf_get_segment_markers(self, markers, status)
+        class(cvm_mesh_t), intent(in) :: self
+        integer(c_int32_t), allocatable, intent(out) :: markers(:)
+        integer, intent(out), optional :: status
+        integer(c_int) :: s
+        call cvmf_markers(self, CVM_ENT_SEGMENT, markers, s)
+        call cvmf_report(self, s, status, 'get_segment_markers')
+    end subroutine cvmf_get_segment_markers
+
+    !> Regional attribute of each triangle, in the order of get_triangles()
+    !> (allocated here; 0 without regions).
+    subroutine cvmf_get_triangle_attributes(self, attr, status)
+        class(cvm_mesh_t), intent(in) :: self
+        real(c_double), allocatable, intent(out) :: attr(:)
+        integer, intent(out), optional :: status
+        integer(c_int) :: s
+        call cvmf_doubles(self, CVM_ENT_TRIANGLE, 1, 4, attr, s)
+        call cvmf_report(self, s, status, 'get_triangle_attributes')
+    end subroutine cvmf_get_triangle_attributes
+
+    !> Point attributes of each vertex, attrs(1:a, i) (allocated here; a = 0
+    !> without attributes; a vertex added by refinement gets interpolated values).
+    subroutine cvmf_get_point_attributes(self, attrs, status)
+        class(cvm_mesh_t), intent(in) :: self
+        real(c_double), allocatable, intent(out) :: attrs(:, :)
+        integer, intent(out), optional :: status
+        integer(c_int) :: s
+        integer(c_size_t) :: n, na, got
+        real(c_double), allocatable :: buf(:)
+        n = 0
+        s = cvm_mesh_count(n, self%ptr, CVM_ENT_VERTEX)
+        na = 0
+        got = 0
+        ! the attribute count is reported by a call that succeeds: grow until one does
+        do while (s == CVM_OK .or. s == CVM_E_BUFFER_TOO_SMALL)
+            if (allocated(buf)) deallocate (buf)
+            allocate (buf(max(na*n, 1_c_size_t)))
+            s = cvm_mesh_copy_point_attributes(buf, na*n, got, self%ptr)
+            if (s /= CVM_E_BUFFER_TOO_SMALL .or. na > 4096) exit
+            na = max(1_c_size_t, 2*na)
+        end do
+        if (s /= CVM_OK) got = 0
+        allocate (attrs(got, n))
+        if (got > 0) attrs(:, :) = reshape(buf(1:got*n), [got, n])
+        call cvmf_report(self, s, status, 'get_point_attributes')
+    end subroutine cvmf_get_point_attributes
 
     !> A quality measure (a CVM_MEASURE_* parameter).
     subroutine cvmf_get_measure(self, which, value, status)
@@ -560,8 +638,46 @@ contains
         call cvmf_report(self, s, status, 'set_weights')
     end subroutine cvmf_set_weights
 
+    !> Power weight of each vertex (allocated here; 0 when none were set).
+    subroutine cvmf_get_weights(self, w, status)
+        class(cvm_mesh_t), intent(in) :: self
+        real(c_double), allocatable, intent(out) :: w(:)
+        integer, intent(out), optional :: status
+        integer(c_int) :: s
+        call cvmf_doubles(self, CVM_ENT_VERTEX, 1, 5, w, s)
+        call cvmf_report(self, s, status, 'get_weights')
+    end subroutine cvmf_get_weights
+
+    !> Dual (power/Voronoi) cell polygon of every vertex, restricted to the
+    !> domain, counter-clockwise (cvm_mesh_copy_dual_cells): vertex v's cell
+    !> has the corners xy(1:2, first(v) : first(v+1)-1), first(1:nv+1)
+    !> 1-based (0-based with base = 0: corners first(v)+1 .. first(v+1) of
+    !> xy). Each cell has its own copy of its corners. Allocated here.
+    subroutine cvmf_get_dual_cells(self, first, xy, status, base)
+        class(cvm_mesh_t), intent(in) :: self
+        integer(c_int32_t), allocatable, intent(out) :: first(:)
+        real(c_double), allocatable, intent(out) :: xy(:, :)
+        integer, intent(out), optional :: status
+        integer, intent(in), optional :: base
+        integer(c_int) :: s
+        integer(c_size_t) :: n, k
+        n = 0
+        k = 0
+        s = cvm_mesh_count(n, self%ptr, CVM_ENT_VERTEX)
+        if (s /= CVM_OK) n = 0
+        allocate (first(n + 1))
+        first = 0
+        if (s == CVM_OK) s = cvm_mesh_copy_dual_cell_offsets(first, n + 1, self%ptr)
+        if (s == CVM_OK) k = int(first(n + 1), c_size_t)
+        allocate (xy(2, k))
+        if (s == CVM_OK .and. k > 0) s = cvm_mesh_copy_dual_cells(xy, 2*k, self%ptr)
+        if (s == CVM_OK) first = first + cvmf_base(base)
+        call cvmf_report(self, s, status, 'get_dual_cells')
+    end subroutine cvmf_get_dual_cells
+
     ! width doubles per entity of kind, allocated here, filled by which:
-    ! 1 dual areas, 2 dual edge lengths, 3 dual vertices.
+    ! 1 dual areas, 2 dual edge lengths, 3 dual vertices, 4 triangle
+    ! attributes, 5 weights.
     subroutine cvmf_doubles(self, kind, width, which, v, s)
         class(cvm_mesh_t), intent(in) :: self
         integer(c_int), intent(in) :: kind
@@ -580,6 +696,10 @@ contains
             s = cvm_mesh_copy_dual_areas(v, n, self%ptr)
         case (2)
             s = cvm_mesh_copy_dual_edge_lengths(v, n, self%ptr)
+        case (4)
+            s = cvm_mesh_copy_triangle_attributes(v, n, self%ptr)
+        case (5)
+            s = cvm_mesh_copy_weights(v, n, self%ptr)
         case default
             s = cvm_mesh_copy_dual_vertices(v, n, self%ptr)
         end select

@@ -18,6 +18,10 @@ program test_cvmesh
     call test_status_text()
     call test_raw_interfaces()
     call test_refine_and_dual()
+    call test_segment_markers_follow_their_segments()
+    call test_triangle_attributes_of_two_regions()
+    call test_weights_and_point_attributes_round_trip()
+    call test_dual_cells_tile_the_areas()
 
     print '(a, i0, a, i0, a)', 'fortran: ', passed, ' passed, ', failed, ' failed'
     if (failed > 0) error stop 1
@@ -36,7 +40,7 @@ contains
     end subroutine expect
 
     ! Bitwise equality of two doubles (exact comparisons are intended here).
-    logical function same(a, b)
+    elemental logical function same(a, b)
         real(c_double), intent(in) :: a, b
         same = transfer(a, 1_c_int64_t) == transfer(b, 1_c_int64_t)
     end function same
@@ -227,5 +231,132 @@ contains
         call expect(status == CVM_OK, 'optimised mesh checks')
         call sizing%destroy()
     end subroutine test_refine_and_dual
+
+    subroutine test_segment_markers_follow_their_segments()
+        type(cvm_mesh_t) :: mesh
+        integer(c_int32_t), allocatable :: seg(:, :), mark(:)
+        real(c_double), allocatable :: p(:, :)
+        integer :: status, k
+        logical :: on_side
+        call square(mesh)
+        call mesh%set_segment_markers([11, 12, 13, 14])
+        call mesh%refine(status, max_area=0.01d0)
+        call expect(status == CVM_OK, 'refine with segment markers')
+        call mesh%get_segments(seg)
+        call mesh%get_segment_markers(mark, status)
+        call expect(status == CVM_OK .and. size(mark) == size(seg, 2) .and. size(mark) > 4, &
+                    'one marker per output segment')
+        call mesh%get_points(p)
+        on_side = .true.
+        do k = 1, size(mark)
+            ! segment 11 is y = 0, 12 is x = 1, 13 is y = 1, 14 is x = 0: exact
+            select case (mark(k))
+            case (11)
+                on_side = on_side .and. same(p(2, seg(1, k)), 0d0) .and. same(p(2, seg(2, k)), 0d0)
+            case (12)
+                on_side = on_side .and. same(p(1, seg(1, k)), 1d0) .and. same(p(1, seg(2, k)), 1d0)
+            case (13)
+                on_side = on_side .and. same(p(2, seg(1, k)), 1d0) .and. same(p(2, seg(2, k)), 1d0)
+            case (14)
+                on_side = on_side .and. same(p(1, seg(1, k)), 0d0) .and. same(p(1, seg(2, k)), 0d0)
+            case default
+                on_side = .false.
+            end select
+        end do
+        call expect(on_side, 'each piece lies on the input segment whose marker it carries')
+        call mesh%destroy()
+    end subroutine test_segment_markers_follow_their_segments
+
+    subroutine test_triangle_attributes_of_two_regions()
+        type(cvm_mesh_t) :: mesh
+        real(c_double) :: xy(2, 6), r(4, 2)
+        integer(c_int32_t) :: segs(2, 7)
+        integer(c_int32_t), allocatable :: tri(:, :)
+        real(c_double), allocatable :: attr(:), p(:, :)
+        integer :: status, k
+        logical :: ok
+        xy = reshape([0d0, 0d0, 0.5d0, 0d0, 1d0, 0d0, 1d0, 1d0, 0.5d0, 1d0, 0d0, 1d0], [2, 6])
+        segs = reshape([1, 2, 2, 3, 3, 4, 4, 5, 5, 6, 6, 1, 2, 5], [2, 7])
+        r = reshape([0.25d0, 0.5d0, 1d0, -1d0, 0.75d0, 0.5d0, 2d0, -1d0], [4, 2])
+        call mesh%create()
+        call mesh%set_points(xy)
+        call mesh%set_segments(segs)
+        call mesh%set_regions(r)
+        call mesh%refine(status, max_area=0.02d0)
+        call expect(status == CVM_OK, 'two regions refine')
+        call mesh%get_triangles(tri)
+        call mesh%get_points(p)
+        call mesh%get_triangle_attributes(attr, status)
+        call expect(status == CVM_OK .and. size(attr) == size(tri, 2), 'one attribute per triangle')
+        ok = .true.
+        do k = 1, size(attr)
+            if (all(p(1, tri(:, k)) <= 0.5d0)) then
+                ok = ok .and. same(attr(k), 1d0)
+            else
+                ok = ok .and. same(attr(k), 2d0) .and. all(p(1, tri(:, k)) >= 0.5d0)
+            end if
+        end do
+        call expect(ok, 'attribute 1 left of x = 0.5, 2 right of it')
+        call mesh%destroy()
+    end subroutine test_triangle_attributes_of_two_regions
+
+    subroutine test_weights_and_point_attributes_round_trip()
+        type(cvm_mesh_t) :: mesh
+        real(c_double) :: a(2, 4)
+        real(c_double), allocatable :: w(:), back(:, :), none(:, :)
+        integer :: status, k
+        logical :: ok
+        a = reshape([1d0, -1d0, 2d0, -2d0, 3d0, -3d0, 4d0, -4d0], [2, 4])
+        call square(mesh)
+        call mesh%get_point_attributes(none, status)
+        call expect(status == CVM_OK .and. size(none, 1) == 0, 'no point attributes before any')
+        call mesh%set_point_attributes(a, status)
+        call expect(status == CVM_OK, 'set_point_attributes')
+        call mesh%triangulate()
+        call mesh%get_point_attributes(back, status)
+        ok = status == CVM_OK .and. all(shape(back) == [2, 4])
+        if (ok) ok = all(same(back, a))
+        call expect(ok, 'point attributes come back (2, n) as set')
+        call mesh%get_weights(w, status)
+        call expect(status == CVM_OK .and. size(w) == 4 .and. all(same(w, 0d0)), 'weights 0 before any')
+        call mesh%set_weights([0.01d0, 0.02d0, 0.03d0, 0.04d0])
+        call mesh%get_weights(w)
+        ok = size(w) == 4
+        do k = 1, min(4, size(w))
+            ok = ok .and. same(w(k), 0.01d0*k)
+        end do
+        call expect(ok, 'weights come back bit for bit')
+        call mesh%destroy()
+    end subroutine test_weights_and_point_attributes_round_trip
+
+    subroutine test_dual_cells_tile_the_areas()
+        type(cvm_mesh_t) :: mesh
+        integer(c_int32_t), allocatable :: first(:), first0(:)
+        real(c_double), allocatable :: c(:, :), c0(:, :), area(:)
+        real(c_double) :: shoelace, worst
+        integer :: status, v, i, j
+        call square(mesh)
+        call mesh%refine(status, min_angle=25d0, max_area=0.01d0)
+        call mesh%get_dual_cells(first, c, status)
+        call expect(status == CVM_OK, 'get_dual_cells')
+        call mesh%get_dual_areas(area)
+        call expect(size(first) == size(area) + 1 .and. first(1) == 1 .and. &
+                    first(size(first)) == size(c, 2) + 1, 'cell offsets 1-based, nv + 1 of them')
+        worst = 0
+        do v = 1, size(area)
+            shoelace = 0
+            do i = first(v), first(v + 1) - 1
+                j = i + 1
+                if (j == first(v + 1)) j = first(v)
+                shoelace = shoelace + c(1, i)*c(2, j) - c(1, j)*c(2, i)
+            end do
+            worst = max(worst, abs(shoelace/2 - area(v)))
+        end do
+        call expect(worst <= 1d-14, 'shoelace area of each cell = its dual area')
+        call expect(abs(sum(area) - 1d0) <= 1d-12, 'the cells tile the unit square')
+        call mesh%get_dual_cells(first0, c0, base=0)
+        call expect(all(first0 == first - 1) .and. all(same(c0, c)), 'base = 0 gives the C offsets')
+        call mesh%destroy()
+    end subroutine test_dual_cells_tile_the_areas
 
 end program test_cvmesh

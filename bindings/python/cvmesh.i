@@ -148,6 +148,8 @@ CVMPY_LONG_CALL(cvm_mesh_refine)
 CVMPY_LONG_CALL(cvm_mesh_optimise_dual)
 CVMPY_LONG_CALL(cvm_mesh_read)
 CVMPY_LONG_CALL(cvm_mesh_write)
+CVMPY_LONG_CALL(cvm_mesh_stage_write)
+CVMPY_LONG_CALL(cvm_mesh_stage_write_dual)
 CVMPY_LONG_CALL(cvm_mesh_check)
 CVMPY_NOGIL(cvm_mesh_set_weights)
 
@@ -212,6 +214,7 @@ CVMPY_HANDLE_OUT(cvm_sizing)
 %ignore cvm_mesh_insert_points_nd;
 %ignore cvm_sizing_set_callback_nd;
 %ignore cvm_sizing_set_metric_fn;
+%ignore cvm_sizing_set_batch_callback;
 %rename(cvm_mesh_free) cvmpy_mesh_free;
 %rename(cvm_mesh_errmsg) cvmpy_mesh_errmsg;
 %rename(cvm_mesh_set_progress) cvmpy_set_progress;
@@ -222,6 +225,7 @@ CVMPY_HANDLE_OUT(cvm_sizing)
 %rename(cvm_mesh_insert_points_nd) cvmpy_insert_points_nd;
 %rename(cvm_sizing_set_callback_nd) cvmpy_sizing_set_callback_nd;
 %rename(cvm_sizing_set_metric_fn) cvmpy_sizing_set_metric_fn;
+%rename(cvm_sizing_set_batch_callback) cvmpy_sizing_set_batch_callback;
 /* Allocation hooks are C function pointers; there is nothing to pass from Python. */
 %ignore cvm_mesh_create_with_allocator;
 %ignore cvm_malloc_fn;
@@ -310,6 +314,46 @@ static double cvmpy_sizing_trampoline(void *payload, double x, double y)
     }
     PyGILState_Release(g);
     return h;
+}
+
+/*
+ * The C batch sizing function behind a Python callback(xy) -> sizes: xy a new
+ * (n, 2) float64 array (a copy: the callable may keep it), the result n
+ * sizes (anything numpy turns into n float64 values). It returns non-zero,
+ * which stops the refinement, when the callable raised or returned another
+ * count; the wrapper then re-raises the exception.
+ */
+static int cvmpy_sizing_batch_trampoline(void *payload, const double *xy, size_t n,
+                                         double *h_out)
+{
+    PyGILState_STATE g = PyGILState_Ensure();
+    int rc = 1;
+    if (!PyErr_Occurred()) {
+        npy_intp dims[2];
+        PyArrayObject *p, *a = NULL;
+        PyObject *r = NULL;
+        dims[0] = (npy_intp)n;
+        dims[1] = 2;
+        p = (PyArrayObject *)PyArray_SimpleNew(2, dims, NPY_DOUBLE);
+        if (p) {
+            memcpy(PyArray_DATA(p), xy, 2 * n * sizeof(double));
+            r = PyObject_CallFunctionObjArgs((PyObject *)payload, (PyObject *)p, NULL);
+            Py_DECREF(p);
+        }
+        if (r)
+            a = (PyArrayObject *)PyArray_FROMANY(r, NPY_DOUBLE, 0, 2, NPY_ARRAY_IN_ARRAY);
+        if (a && PyArray_SIZE(a) == (npy_intp)n) {
+            memcpy(h_out, PyArray_DATA(a), n * sizeof(double));
+            rc = 0;
+        } else if (a) {
+            PyErr_Format(PyExc_ValueError, "the batch sizing callback must return one size "
+                         "per point: %ld points, %ld values", (long)n, (long)PyArray_SIZE(a));
+        }
+        Py_XDECREF(a);
+        Py_XDECREF(r);
+    }
+    PyGILState_Release(g);
+    return rc;
 }
 
 /* A new float64 array holding the dim coordinates of x, or NULL with an exception. */
@@ -471,6 +515,24 @@ cvm_status cvmpy_sizing_set_callback_nd(cvm_sizing *s, PyObject *callback)
         return CVM_E_ARGUMENT;
     }
     st = cvm_sizing_set_callback_nd(s, fn ? cvmpy_sizing_nd_trampoline : NULL, (void *)fn);
+    if (st == CVM_OK && cvmpy_keep(&cvmpy_sizing_fns, s, fn) < 0)
+        return CVM_E_NOMEM;
+    return st;
+}
+
+/*
+ * Set callback(xy) -> sizes, xy an (n, 2) float64 array, as the batch sizing
+ * function of s (None removes it); it replaces a callback(x, y) or callback(x).
+ */
+cvm_status cvmpy_sizing_set_batch_callback(cvm_sizing *s, PyObject *callback)
+{
+    cvm_status st;
+    PyObject *fn = callback != Py_None ? callback : NULL;
+    if (fn && !PyCallable_Check(fn)) {
+        PyErr_SetString(PyExc_TypeError, "sizing callback must be callable or None");
+        return CVM_E_ARGUMENT;
+    }
+    st = cvm_sizing_set_batch_callback(s, fn ? cvmpy_sizing_batch_trampoline : NULL, (void *)fn);
     if (st == CVM_OK && cvmpy_keep(&cvmpy_sizing_fns, s, fn) < 0)
         return CVM_E_NOMEM;
     return st;

@@ -11,12 +11,15 @@ wheel. Environment:
                      default: ./csrc (in an sdist) or ../.. (in the repository).
   CVMESH_WERROR=1    turn compiler warnings into errors (used by check.sh).
   CVMESH_BUILD_DIR   setuptools' build directory (default ./build).
+  CVMESH_OPENMP=0    build without OpenMP (default: with it when the compiler
+                     links an OpenMP program, as the Makefile's OPENMP=1).
 """
 
 import os
 import re
 import shutil
 import subprocess
+import tempfile
 from pathlib import Path
 
 from setuptools import Extension, setup
@@ -77,12 +80,32 @@ def swig_command():
 
 ROOT = source_root()
 WERROR = ["-Werror"] if os.environ.get("CVMESH_WERROR") == "1" else []
-# The library keeps its own strict flags (those of the Makefile, without OpenMP;
-# -UNDEBUG undoes Python's -DNDEBUG so assertions are as in `make`); the
-# generated wrapper is compiled with the usual warnings.
+# The library keeps its own strict flags (those of the Makefile; -UNDEBUG undoes
+# Python's -DNDEBUG so assertions are as in `make`), plus -fopenmp when the
+# compiler has OpenMP (openmp_flags()); the generated wrapper is compiled with
+# the usual warnings.
 LIB_CFLAGS = ["-std=c99", "-Wall", "-Wextra", "-Wpedantic", "-fvisibility=hidden",
               "-D_POSIX_C_SOURCE=200809L", "-UNDEBUG"] + WERROR
 WRAP_CFLAGS = ["-Wall", "-Wextra", "-Wno-unused-parameter"] + WERROR
+
+
+OPENMP_FLAGS = ["-fopenmp"]
+
+
+def openmp_flags(compiler, tmp):
+    """["-fopenmp"] when `compiler` compiles and links an OpenMP program with
+    it (gcc; clang with libomp), else [] (CVMESH_OPENMP=0 forces [])."""
+    if os.environ.get("CVMESH_OPENMP") == "0" or compiler.compiler_type != "unix":
+        return []
+    src = Path(tmp) / "omp_probe.c"
+    src.write_text("#include <omp.h>\nint main(void) { return omp_get_max_threads() < 1; }\n")
+    try:
+        objs = compiler.compile([str(src)], output_dir=str(tmp), extra_postargs=OPENMP_FLAGS)
+        compiler.link_executable(objs, "omp_probe", output_dir=str(tmp),
+                                 extra_postargs=OPENMP_FLAGS)
+    except Exception:  # CompileError / LinkError: build serial, as OPENMP=0
+        return []
+    return OPENMP_FLAGS
 
 
 class BuildExt(build_ext):
@@ -117,10 +140,13 @@ class BuildExt(build_ext):
             self.announce("skipping %s (up to date)" % ext.name, level=2)
             return
         unix = self.compiler.compiler_type == "unix"
+        with tempfile.TemporaryDirectory() as tmp:
+            omp = openmp_flags(self.compiler, tmp)
+        self.announce("cvmesh: OpenMP %s" % ("on: " + " ".join(omp) if omp else "off"), level=2)
         objects = self.compiler.compile(
             library_sources(ROOT), output_dir=self.build_temp,
             include_dirs=[str(ROOT / "include"), str(ROOT / "lib")],
-            extra_postargs=LIB_CFLAGS if unix else [], debug=self.debug)
+            extra_postargs=LIB_CFLAGS + omp if unix else [], debug=self.debug)
         ext.extra_objects = list(ext.extra_objects or []) + objects
         import numpy
         ext.include_dirs = list(ext.include_dirs or []) + [str(ROOT / "include"),
@@ -128,6 +154,7 @@ class BuildExt(build_ext):
         ext.extra_compile_args = WRAP_CFLAGS if unix else []
         if unix:
             ext.libraries = list(ext.libraries or []) + ["m"]
+            ext.extra_link_args = list(ext.extra_link_args or []) + omp
         super().build_extension(ext)
 
 

@@ -69,12 +69,11 @@ static cvm_status rf_setup(cvm__refiner *R, cvm__tri2 *T, const cvm__refine_para
         return s;
     if (cvm__rf_reserve_vertices(R, T->nv + 1))
         return cvm__nomem(R->ctx);
-    for (v = 0; v < T->nv; v++) {
-        const double *q = T->xy + 2 * v;
+    for (v = 0; v < T->nv; v++)
         R->vseg[v] = -1;
-        if ((s = cvm__sizing_at(p->sizing, q[0], q[1], &R->vls[v], R->ctx)))
-            return s;
-    }
+    /* all at once: a batch sizing callback gets them in few calls */
+    if ((s = cvm__sizing_at_many(p->sizing, T->xy, T->nv, R->vls, R->ctx)))
+        return s;
     for (t = 0; t < T->nt; t++) {
         int j;
         if (!cvm__tri2_in_domain(T, (int32_t)t))

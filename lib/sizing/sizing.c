@@ -149,6 +149,19 @@ cvm_status cvm_sizing_set_callback(cvm_sizing *s, cvm_sizing_fn fn, void *payloa
     cvm__clear_error(&s->ctx);
     s->fn = fn;
     s->fn_nd = NULL;
+    s->fn_batch = NULL;
+    s->fn_payload = fn ? payload : NULL;
+    return CVM_OK;
+}
+
+cvm_status cvm_sizing_set_batch_callback(cvm_sizing *s, cvm_sizing_batch_fn fn, void *payload)
+{
+    if (!s)
+        return CVM_E_NULL_ARG;
+    cvm__clear_error(&s->ctx);
+    s->fn = NULL;
+    s->fn_nd = NULL;
+    s->fn_batch = fn;
     s->fn_payload = fn ? payload : NULL;
     return CVM_OK;
 }
@@ -195,7 +208,7 @@ cvm_status cvm_sizing_set_boundary_grading(cvm_sizing *s, double g)
 int cvm__sizing_is_empty(const cvm_sizing *s)
 {
     return !s || (!s->has_uniform && s->npts == 0 && s->nlines == 0 && !s->fn && !s->fn_nd &&
-                  !s->has_auto &&
+                  !s->fn_batch && !s->has_auto &&
                   !s->bg && !(s->bgrad > 0));
 }
 
@@ -214,14 +227,48 @@ static double dist_segment(double px, double py, const cvm__line_source *l)
     return sqrt(qx * qx + qy * qy);
 }
 
-cvm_status cvm__sizing_at(const cvm_sizing *s, double x, double y, double *h, cvm__ctx *err)
+/* The user function's size d at (x, y) must be positive and finite. */
+static cvm_status check_user_size(double d, double x, double y, cvm__ctx *err)
+{
+    if (!isfinite(d))
+        return cvm__error(err, CVM_E_INPUT_NONFINITE, CVM_ENT_NONE, -1,
+                          "the sizing callback returned a non-finite size at (%.17g, %.17g)", x, y);
+    if (!(d > 0))
+        return cvm__error(err, CVM_E_ARGUMENT, CVM_ENT_NONE, -1,
+                          "the sizing callback returned size %.17g at (%.17g, %.17g) (must "
+                          "be positive and finite)",
+                          d, x, y);
+    return CVM_OK;
+}
+
+/* Ask the batch callback for the n <= CVM__SIZING_BATCH points xy and lower
+ * h[0..n-1] to its sizes. */
+static cvm_status batch_below(const cvm_sizing *s, const double *xy, size_t n, double *h,
+                              cvm__ctx *err)
+{
+    double d[CVM__SIZING_BATCH];
+    size_t i;
+    cvm_status st;
+    int rc = s->fn_batch(s->fn_payload, xy, n, d);
+    if (rc)
+        return cvm__error(err, CVM_E_ARGUMENT, CVM_ENT_NONE, -1,
+                          "the sizing callback failed (returned %d) for a batch of %lu points "
+                          "from (%.17g, %.17g)",
+                          rc, (unsigned long)n, xy[0], xy[1]);
+    for (i = 0; i < n; i++) {
+        if ((st = check_user_size(d[i], xy[2 * i], xy[2 * i + 1], err)))
+            return st;
+        if (d[i] < h[i])
+            h[i] = d[i];
+    }
+    return CVM_OK;
+}
+
+/* The size of every source but the user function at (x, y). */
+static double sources_at(const cvm_sizing *s, double x, double y)
 {
     double best = HUGE_VAL;
     size_t i;
-    if (!s) {
-        *h = best;
-        return CVM_OK;
-    }
     if (s->has_uniform)
         best = s->uniform;
     for (i = 0; i < s->npts; i++) {
@@ -245,25 +292,52 @@ cvm_status cvm__sizing_at(const cvm_sizing *s, double x, double y, double *h, cv
         best = cvm__auto_field_below(s->autof, x, y, best);
     if (s->spacingf)
         best = cvm__auto_field_below(s->spacingf, x, y, best);
-    if (s->fn || s->fn_nd) {
-        double p[2];
-        double d;
-        p[0] = x;
-        p[1] = y;
+    return best;
+}
+
+cvm_status cvm__sizing_at(const cvm_sizing *s, double x, double y, double *h, cvm__ctx *err)
+{
+    double p[2], best, d;
+    cvm_status st;
+    if (!s) {
+        *h = HUGE_VAL;
+        return CVM_OK;
+    }
+    best = sources_at(s, x, y);
+    p[0] = x;
+    p[1] = y;
+    if (s->fn_batch) {
+        if ((st = batch_below(s, p, 1, &best, err)))
+            return st;
+    } else if (s->fn || s->fn_nd) {
         d = s->fn ? s->fn(s->fn_payload, x, y) : s->fn_nd(s->fn_payload, p, 2);
-        if (!isfinite(d))
-            return cvm__error(err, CVM_E_INPUT_NONFINITE, CVM_ENT_NONE, -1,
-                              "the sizing callback returned a non-finite size at (%.17g, %.17g)",
-                              x, y);
-        if (!(d > 0))
-            return cvm__error(err, CVM_E_ARGUMENT, CVM_ENT_NONE, -1,
-                              "the sizing callback returned size %.17g at (%.17g, %.17g) (must "
-                              "be positive and finite)",
-                              d, x, y);
+        if ((st = check_user_size(d, x, y, err)))
+            return st;
         if (d < best)
             best = d;
     }
     *h = best;
+    return CVM_OK;
+}
+
+cvm_status cvm__sizing_at_many(const cvm_sizing *s, const double *xy, size_t n, double *h,
+                               cvm__ctx *err)
+{
+    size_t i, k, m;
+    cvm_status st;
+    if (!s || !s->fn_batch) {
+        for (i = 0; i < n; i++)
+            if ((st = cvm__sizing_at(s, xy[2 * i], xy[2 * i + 1], h + i, err)))
+                return st;
+        return CVM_OK;
+    }
+    for (i = 0; i < n; i++)
+        h[i] = sources_at(s, xy[2 * i], xy[2 * i + 1]);
+    for (k = 0; k < n; k += m) {
+        m = n - k < CVM__SIZING_BATCH ? n - k : CVM__SIZING_BATCH;
+        if ((st = batch_below(s, xy + 2 * k, m, h + k, err)))
+            return st;
+    }
     return CVM_OK;
 }
 

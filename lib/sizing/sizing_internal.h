@@ -69,8 +69,9 @@ struct cvm_sizing {
     size_t npts, cap_pts;
     cvm__line_source *lines;
     size_t nlines, cap_lines;
-    cvm_sizing_fn fn;     /* the user function: fn or fn_nd, never both */
+    cvm_sizing_fn fn;     /* the user function: at most one of fn, fn_nd, fn_batch */
     cvm_sizing_nd_fn fn_nd;
+    cvm_sizing_batch_fn fn_batch;
     void *fn_payload;
     cvm_metric_fn metric; /* cvm_sizing_set_metric_fn(); no refiner reads it yet */
     void *metric_payload;
@@ -114,6 +115,13 @@ int cvm__sizing_has_metric(const cvm_sizing *s);
  * records an error naming the callback and the position on err and returns
  * CVM_E_INPUT_NONFINITE or CVM_E_ARGUMENT. */
 cvm_status cvm__sizing_at(const cvm_sizing *s, double x, double y, double *h, cvm__ctx *err);
+
+/* Sizes at the n points xy (2n doubles) into h[0..n-1]: cvm__sizing_at point
+ * by point, but a batch callback is asked for CVM__SIZING_BATCH points per
+ * call. Same values and errors as n calls of cvm__sizing_at. */
+#define CVM__SIZING_BATCH 1024
+cvm_status cvm__sizing_at_many(const cvm_sizing *s, const double *xy, size_t n, double *h,
+                               cvm__ctx *err);
 
 /* A cvm_sizing's domain-dependent parts (automatic length scale, boundary
  * spacing), built from a triangulation for one refinement or optimisation

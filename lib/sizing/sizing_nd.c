@@ -36,6 +36,7 @@ cvm_status cvm_sizing_set_callback_nd(cvm_sizing *s, cvm_sizing_nd_fn fn, void *
         return CVM_E_NULL_ARG;
     cvm__clear_error(&s->ctx);
     s->fn = NULL; /* one user function per handle */
+    s->fn_batch = NULL;
     s->fn_nd = fn;
     s->fn_payload = fn ? payload : NULL;
     return CVM_OK;

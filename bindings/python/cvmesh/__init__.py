@@ -15,16 +15,22 @@ raises a subclass of cvmesh.Error carrying the library's message, which names
 the offending input. The flat C API is available as cvmesh.capi.
 """
 
+from __future__ import annotations
+
 import contextlib
 import dataclasses
 import enum
 import math
 import os
+import signal
 import threading
 import warnings
 from collections import namedtuple
+from typing import (TYPE_CHECKING, Any, Callable, Dict, Iterator, NamedTuple, Optional,
+                    Tuple, TypeVar, Union)
 
 import numpy as np
+import numpy.typing as npt
 
 from . import capi
 from ._errors import (ArgumentError, Error, FileError, IncompleteWarning,
@@ -33,12 +39,25 @@ from ._errors import (ArgumentError, Error, FileError, IncompleteWarning,
 
 __all__ = [
     "Mesh", "Sizing", "Quality", "Bounds", "Status", "Option", "Entity", "Measure",
-    "Report", "CellType", "Histogram", "Stage", "Algorithm", "option_bounds", "version", "Error", "ArgumentError",
+    "Report", "CellType", "Histogram", "Stage", "Algorithm", "option_bounds", "version",
+    "OptionKey", "PathLike", "ProgressCallback", "SizeCallback", "BatchSizeCallback", "Error",
+    "ArgumentError",
     "OptionError", "InputError", "StateError", "UnsupportedError", "FileError",
     "NoMemoryError", "InternalError", "IncompleteWarning", "error_class",
 ]
 
 __version__ = capi.cvm_version_string()
+
+#: An option: an Option, its int value, or its name in lower case ("min_angle_deg").
+OptionKey = Union[str, int]
+#: A file name.
+PathLike = Union[str, "os.PathLike[str]"]
+#: progress(stage, fraction) -> stop?; called during long calls.
+ProgressCallback = Callable[[Any, float], Any]
+#: size(x, y) -> target edge length.
+SizeCallback = Callable[[float, float], float]
+#: size(xy) -> sizes: xy an (n, 2) float64 array, the result n sizes.
+BatchSizeCallback = Callable[["npt.NDArray[np.float64]"], "npt.ArrayLike"]
 
 
 def _constants(prefixes, strip):
@@ -52,47 +71,89 @@ def _constants(prefixes, strip):
     return dict(sorted(found.items(), key=lambda kv: (kv[1], kv[0])))
 
 
-# Enumerations, built from the header's constants so new values appear
-# without a change here.
-Status = enum.IntEnum("Status", _constants(("CVM_OK", "CVM_E_", "CVM_INCOMPLETE_"), 4),
-                      module=__name__)
+class _CodeEnum(enum.IntEnum):
+    """An IntEnum of the header's constants that prints as its name
+    (Status.E_INPUT_INDEX), not as its number; comparisons and arithmetic
+    stay those of int."""
+
+    def __str__(self) -> str:
+        return "%s.%s" % (type(self).__name__, self.name)
+
+    def __format__(self, spec: str) -> str:
+        return str(self) if not spec else int.__format__(int(self), spec)
+
+
+if TYPE_CHECKING:
+    # The members come from the compiled header at import time; a type
+    # checker sees each enum as a class whose every attribute is a member.
+    _E = TypeVar("_E")
+
+    class _MemberMeta(enum.EnumMeta):
+        def __getattr__(cls: type[_E], name: str) -> _E: ...
+
+    class Status(_CodeEnum, metaclass=_MemberMeta):
+        @property
+        def is_error(self) -> bool: ...
+        @property
+        def incomplete(self) -> bool: ...
+
+    class Option(_CodeEnum, metaclass=_MemberMeta): ...
+    class Entity(_CodeEnum, metaclass=_MemberMeta): ...
+    class Measure(_CodeEnum, metaclass=_MemberMeta): ...
+    class Report(_CodeEnum, metaclass=_MemberMeta): ...
+    class CellType(_CodeEnum, metaclass=_MemberMeta): ...
+    class Histogram(_CodeEnum, metaclass=_MemberMeta): ...
+    class Stage(_CodeEnum, metaclass=_MemberMeta): ...
+    class Algorithm(_CodeEnum, metaclass=_MemberMeta): ...
+else:
+    # Enumerations, built from the header's constants so new values appear
+    # without a change here.
+    Status = _CodeEnum("Status", _constants(("CVM_OK", "CVM_E_", "CVM_INCOMPLETE_"), 4),
+                       module=__name__)
+    Status.is_error = property(lambda self: 1 <= self.value < 100)
+    Status.incomplete = property(lambda self: self.value >= 100)
+    Option = _CodeEnum("Option", _constants(("CVM_OPT_",), 8), module=__name__)
+    Entity = _CodeEnum("Entity", _constants(("CVM_ENT_",), 8), module=__name__)
+    Measure = _CodeEnum("Measure", _constants(("CVM_MEASURE_",), 12), module=__name__)
+    Report = _CodeEnum("Report", _constants(("CVM_REPORT_",), 11), module=__name__)
+    CellType = _CodeEnum("CellType", _constants(("CVM_CELL_",), 9), module=__name__)
+    Histogram = _CodeEnum("Histogram", _constants(("CVM_HIST_",), 9), module=__name__)
+    Stage = _CodeEnum("Stage", _constants(("CVM_STAGE_",), 10), module=__name__)
+    Algorithm = _CodeEnum("Algorithm", _constants(("CVM_ALGO_",), 9), module=__name__)
 Status.__doc__ = "cvm_status codes: OK, errors E_* (1..99), INCOMPLETE_* (>= 100)."
-Status.is_error = property(lambda self: 1 <= self.value < 100)
-Status.incomplete = property(lambda self: self.value >= 100)
-Option = enum.IntEnum("Option", _constants(("CVM_OPT_",), 8), module=__name__)
 Option.__doc__ = "Option keys (cvm_option); also usable as lower-case strings."
-Entity = enum.IntEnum("Entity", _constants(("CVM_ENT_",), 8), module=__name__)
 Entity.__doc__ = "Kinds of mesh entities (cvm_entity)."
-Measure = enum.IntEnum("Measure", _constants(("CVM_MEASURE_",), 12), module=__name__)
 Measure.__doc__ = "Scalar quality measures (cvm_measure)."
-Report = enum.IntEnum("Report", _constants(("CVM_REPORT_",), 11), module=__name__)
 Report.__doc__ = "Reports of the last run of a meshing call (cvm_report; Mesh.report())."
-CellType = enum.IntEnum("CellType", _constants(("CVM_CELL_",), 9), module=__name__)
 CellType.__doc__ = ("Cell type codes of Mesh.cells_mixed() (cvm_cell_type); the values "
                     "are VTK's cell types.")
-Histogram = enum.IntEnum("Histogram", _constants(("CVM_HIST_",), 9), module=__name__)
 Histogram.__doc__ = "Quality histograms (cvm_histogram)."
-Stage = enum.IntEnum("Stage", _constants(("CVM_STAGE_",), 10), module=__name__)
 Stage.__doc__ = "Stages reported to a progress callback (cvm_stage)."
-Algorithm = enum.IntEnum("Algorithm", _constants(("CVM_ALGO_",), 9), module=__name__)
 Algorithm.__doc__ = "Refinement algorithms of Mesh.refine() (cvm_algorithm)."
 
 REJECTED = -1
 """Id that insert_points() gives a point it rejected (CVM_REJECTED)."""
 
-Bounds = namedtuple("Bounds", "lo hi default is_integer")
-Bounds.__doc__ = "Bounds and default of an option (cvm_bounds)."
+
+
+class Bounds(NamedTuple):
+    """Bounds and default of an option (cvm_bounds)."""
+    lo: float
+    hi: float
+    default: float
+    is_integer: bool
+
 
 # Histogram lengths (cvmesh.h: 18 angle bins, 16 degree bins, q1 12, q2..q5 20).
 _HIST_BINS = {"ANGLE_DEG": 18, "DEGREE": 16, "Q1": 12, "Q2": 20, "Q3": 20, "Q4": 20, "Q5": 20}
 
 
-def version():
+def version() -> str:
     """Version string of the compiled library, e.g. '0.1.0'."""
     return capi.cvm_version_string()
 
 
-def _option_key(key):
+def _option_key(key: OptionKey) -> int:
     """Option from an Option, an int, or a name like 'min_angle_deg'."""
     if isinstance(key, str):
         try:
@@ -104,10 +165,10 @@ def _option_key(key):
     return int(key)
 
 
-def option_bounds(key):
+def option_bounds(key: OptionKey) -> Bounds:
     """Bounds(lo, hi, default, is_integer) of an option key."""
     lo, hi, default, is_integer = capi.cvm_option_bounds(_option_key(key))
-    return Bounds(lo, hi, default, bool(is_integer))
+    return Bounds(float(lo), float(hi), float(default), bool(is_integer))
 
 
 def _status(code):
@@ -134,16 +195,63 @@ def _quality_fields():
     return fields
 
 
-Quality = dataclasses.make_dataclass("Quality", _quality_fields(), frozen=True, eq=False)
-Quality.__module__ = __name__
-Quality.__doc__ = (
-    "Quality of a mesh (Mesh.quality()): one float per cvmesh.Measure, named\n"
-    "in lower case (min_angle_deg, max_angle_deg, regular_pct, obtuse_pct,\n"
-    "degree6_pct, min_dual_edge_ratio, min_edge, max_edge, area, min_area),\n"
-    "and one array of counts per cvmesh.Histogram (hist_angle_deg: 18 bins\n"
-    "of 10 degrees; hist_degree: interior vertex degree 0..14 and >= 15).\n"
-    "NaN marks a measure this build cannot compute.")
-Quality.as_dict = lambda self: dataclasses.asdict(self)
+# The headline of Quality.__str__: (format, fields); a line is left out when
+# one of its fields is NaN (not computed by this build).
+_QUALITY_HEADLINE = (
+    ("angles %.4g..%.4g deg, %.3g%% obtuse", ("min_angle_deg", "max_angle_deg", "obtuse_pct")),
+    ("regular %.3g%%, degree 6 %.3g%%", ("regular_pct", "degree6_pct")),
+    ("edges %.4g..%.4g, area %.6g (smallest triangle %.4g)",
+     ("min_edge", "max_edge", "area", "min_area")),
+    ("dual: power vertex outside %.3g%% (boundary %.3g%%), dual edge/edge >= %.3g",
+     ("dual_outside_pct", "dual_outside_boundary_pct", "min_dual_edge_ratio")),
+)
+
+
+def _quality_str(self: Any) -> str:
+    """A few lines: the headline measures, then every other measure that is
+    neither 0 nor NaN as "name value", then the angle histogram."""
+    lines = ["Quality:"]
+    shown: set = set()
+    for fmt, names in _QUALITY_HEADLINE:
+        values = [getattr(self, n, math.nan) for n in names]
+        shown.update(names)
+        if not any(math.isnan(v) for v in values):
+            lines.append("  " + fmt % tuple(values))
+    line = " "
+    for f in dataclasses.fields(self):
+        value = getattr(self, f.name)
+        if (f.name in shown or f.name.startswith("hist_") or not isinstance(value, float)
+                or math.isnan(value) or value == 0):
+            continue
+        item = " %s %.4g" % (f.name, value)
+        if len(line) + len(item) > 78:
+            lines.append(line)
+            line = " "
+        line += item
+    if line.strip():
+        lines.append(line)
+    hist = getattr(self, "hist_angle_deg", None)
+    if hist is not None and len(hist):
+        lines.append("  angles per 10 degrees: " + " ".join(str(int(c)) for c in hist))
+    return "\n".join(lines)
+
+
+if TYPE_CHECKING:
+    class Quality:
+        def __getattr__(self, name: str) -> Any: ...
+        def as_dict(self) -> Dict[str, Any]: ...
+else:
+    Quality = dataclasses.make_dataclass("Quality", _quality_fields(), frozen=True, eq=False,
+                                         namespace={"__str__": _quality_str})
+    Quality.__module__ = __name__
+    Quality.__doc__ = (
+        "Quality of a mesh (Mesh.quality()): one float per cvmesh.Measure, named\n"
+        "in lower case (min_angle_deg, max_angle_deg, regular_pct, obtuse_pct,\n"
+        "degree6_pct, min_dual_edge_ratio, min_edge, max_edge, area, min_area),\n"
+        "and one array of counts per cvmesh.Histogram (hist_angle_deg: 18 bins\n"
+        "of 10 degrees; hist_degree: interior vertex degree 0..14 and >= 15).\n"
+        "NaN marks a measure this build cannot compute.")
+    Quality.as_dict = lambda self: dataclasses.asdict(self)
 
 
 class Mesh:
@@ -165,11 +273,11 @@ class Mesh:
     #: (keeps Ctrl-C working); None turns the checks off.
     interrupt_every = 4096
 
-    def __init__(self, **options):
+    def __init__(self, **options: float) -> None:
         self._m = None
         self._lock = threading.Lock()
         self._owner = None
-        self._progress = None
+        self._progress: Optional[ProgressCallback] = None
         self._progress_every = 0
         self.last_status = Status.OK
         self._m = capi.cvm_mesh_create()
@@ -178,7 +286,8 @@ class Mesh:
     # ---- construction ------------------------------------------------------
 
     @classmethod
-    def from_points(cls, points, markers=None, attributes=None, **options):
+    def from_points(cls, points: npt.ArrayLike, markers: Optional[npt.ArrayLike] = None,
+                    attributes: Optional[npt.ArrayLike] = None, **options: float) -> Mesh:
         """A mesh whose input is a point set; triangulate() gives its Delaunay
         triangulation."""
         mesh = cls(**options)
@@ -186,8 +295,11 @@ class Mesh:
         return mesh
 
     @classmethod
-    def from_pslg(cls, points, segments=None, holes=None, markers=None, regions=None,
-                  segment_markers=None, attributes=None, **options):
+    def from_pslg(cls, points: npt.ArrayLike, segments: Optional[npt.ArrayLike] = None,
+                  holes: Optional[npt.ArrayLike] = None, markers: Optional[npt.ArrayLike] = None,
+                  regions: Optional[npt.ArrayLike] = None,
+                  segment_markers: Optional[npt.ArrayLike] = None,
+                  attributes: Optional[npt.ArrayLike] = None, **options: float) -> Mesh:
         """A mesh whose input is a planar straight-line graph.
 
         points: (n, 2) coordinates; segments: (m, 2) 0-based point indices;
@@ -205,7 +317,7 @@ class Mesh:
         return mesh
 
     @classmethod
-    def read(cls, path, **options):
+    def read(cls, path: PathLike, **options: float) -> Mesh:
         """A mesh whose input is read from a Triangle .poly or .node file, or
         a triangulated mesh (with its weights) read from a .vtu file."""
         mesh = cls(**options)
@@ -214,7 +326,7 @@ class Mesh:
 
     # ---- lifetime ----------------------------------------------------------
 
-    def close(self):
+    def close(self) -> None:
         """Free the C handle now (also done when the object is collected).
 
         A call running on this mesh in another thread is waited for: the
@@ -228,7 +340,7 @@ class Mesh:
             if m is not None and capi is not None:
                 capi.cvm_mesh_free(m)
 
-    def __del__(self):
+    def __del__(self) -> None:
         # No call can hold the lock of an unreachable mesh; should one still
         # do (a thread frozen at interpreter exit), leak rather than free
         # under it or block the finaliser.
@@ -242,17 +354,37 @@ class Mesh:
         finally:
             lock.release()
 
-    def __enter__(self):
+    def __enter__(self) -> Mesh:
         return self
 
-    def __exit__(self, *exc):
+    def __exit__(self, *exc: object) -> None:
         self.close()
 
-    def __repr__(self):
+    def __repr__(self) -> str:
+        # Never raises and never waits: a repr from a debugger or a progress
+        # callback must not block on a call running on this mesh.
         if self._m is None:
             return "<cvmesh.Mesh (closed)>"
-        return "<cvmesh.Mesh: %d vertices, %d triangles>" % (
-            self.count(Entity.VERTEX), self.count(Entity.TRIANGLE))
+        if self._owner is not None or not self._lock.acquire(False):
+            return "<cvmesh.Mesh (busy)>"
+        try:
+            m = self._m
+            if m is None:
+                return "<cvmesh.Mesh (closed)>"
+            n = {e: capi.cvm_mesh_count(m, e) for e in
+                 (Entity.VERTEX, Entity.TRIANGLE, Entity.SEGMENT, Entity.INPUT_POINT,
+                  Entity.INPUT_SEGMENT)}
+        except Error:
+            return "<cvmesh.Mesh>"
+        finally:
+            self._lock.release()
+        if n[Entity.TRIANGLE]:
+            return "<cvmesh.Mesh: %d vertices, %d triangles, %d segments>" % (
+                n[Entity.VERTEX], n[Entity.TRIANGLE], n[Entity.SEGMENT])
+        if n[Entity.INPUT_POINT]:
+            return "<cvmesh.Mesh: input of %d points, %d segments; not triangulated>" % (
+                n[Entity.INPUT_POINT], n[Entity.INPUT_SEGMENT])
+        return "<cvmesh.Mesh: empty>"
 
     @contextlib.contextmanager
     def _handle(self):
@@ -272,7 +404,8 @@ class Mesh:
 
     # ---- input -------------------------------------------------------------
 
-    def set_points(self, points, markers=None, attributes=None):
+    def set_points(self, points: npt.ArrayLike, markers: Optional[npt.ArrayLike] = None,
+                   attributes: Optional[npt.ArrayLike] = None) -> None:
         """Set the input points ((n, 2) array-like); clears any triangulation."""
         with self._handle() as m:
             capi.cvm_mesh_set_points(m, points)
@@ -284,36 +417,37 @@ class Mesh:
                     attributes = attributes.reshape(-1, 1)
                 capi.cvm_mesh_set_point_attributes(m, attributes)
 
-    def set_segments(self, segments, markers=None):
+    def set_segments(self, segments: npt.ArrayLike,
+                     markers: Optional[npt.ArrayLike] = None) -> None:
         """Set the constraint segments ((m, 2) 0-based point indices)."""
         with self._handle() as m:
             capi.cvm_mesh_set_segments(m, segments)
             if markers is not None:
                 capi.cvm_mesh_set_segment_markers(m, markers)
 
-    def set_holes(self, holes):
+    def set_holes(self, holes: npt.ArrayLike) -> None:
         """Set hole seed points ((k, 2))."""
         with self._handle() as m:
             capi.cvm_mesh_set_holes(m, holes)
 
-    def set_regions(self, regions):
+    def set_regions(self, regions: npt.ArrayLike) -> None:
         """Set regions: (r, 4) rows (x, y, attribute, max_area)."""
         with self._handle() as m:
             capi.cvm_mesh_set_regions(m, regions)
 
-    def set_holes_nd(self, holes):
+    def set_holes_nd(self, holes: npt.ArrayLike) -> None:
         """Set hole seed points in the mesh's dimension ((k, dim) array-like;
         dim 2 in this version, 3 raises UnsupportedError)."""
         with self._handle() as m:
             capi.cvm_mesh_set_holes_nd(m, holes)
 
-    def set_regions_nd(self, regions):
+    def set_regions_nd(self, regions: npt.ArrayLike) -> None:
         """Set regions in the mesh's dimension: (r, dim + 2) rows (point,
         attribute, largest cell measure; <= 0 no bound)."""
         with self._handle() as m:
             capi.cvm_mesh_set_regions_nd(m, regions)
 
-    def load(self, path):
+    def load(self, path: PathLike) -> Status:
         """Replace the input by a Triangle .poly or .node file; a .vtu file
         replaces the mesh too (triangulated, with its weights)."""
         with self._handle() as m, self._progress_installed(m, None, None):
@@ -321,31 +455,31 @@ class Mesh:
 
     # ---- options -----------------------------------------------------------
 
-    def set_option(self, key, value):
+    def set_option(self, key: OptionKey, value: float) -> None:
         """Set an option (an Option, or its name such as 'min_angle_deg')."""
         key = _option_key(key)
         with self._handle() as m:
             capi.cvm_mesh_set_option(m, key, float(value))
 
-    def get_option(self, key):
+    def get_option(self, key: OptionKey) -> float:
         """Value of an option (a float)."""
         key = _option_key(key)
         with self._handle() as m:
             return capi.cvm_mesh_get_option(m, key)
 
-    def set_options(self, **options):
+    def set_options(self, **options: float) -> None:
         """Set several options by name: mesh.set_options(seed=3, time_limit_s=2)."""
         for key, value in options.items():
             self.set_option(key, value)
 
     @property
-    def options(self):
+    def options(self) -> Dict[str, float]:
         """{name: value} of every option of this mesh."""
         return {o.name.lower(): self.get_option(o) for o in Option}
 
     # ---- progress ----------------------------------------------------------
 
-    def set_progress(self, callback, every=1000):
+    def set_progress(self, callback: Optional[ProgressCallback], every: int = 1000) -> None:
         """Call callback(stage, fraction) about every `every` operations of long
         calls; a true result stops the call (Status.INCOMPLETE_CANCELLED) and an
         exception stops it and propagates. None removes the callback."""
@@ -353,16 +487,23 @@ class Mesh:
         self._progress_every = int(every) if callback is not None else 0
 
     @contextlib.contextmanager
-    def _progress_installed(self, m, callback, every):
+    def _progress_installed(self, m: Any, callback: Optional[ProgressCallback],
+                            every: Optional[int],
+                            stop: Optional[Callable[[], bool]] = None) -> Iterator[None]:
         """Install the progress callback of one long call: the given one, else
-        the one of set_progress(), else a check for Ctrl-C alone. It stays
-        installed after the call (uninstalling would clear the handle's error
-        message) and is replaced by the next long call."""
+        the one of set_progress(), else a check for Ctrl-C alone; stop() true
+        also stops the call. It stays installed after the call (uninstalling
+        would clear the handle's error message) and is replaced by the next
+        long call."""
         if callback is None:
             callback, every = self._progress, every or self._progress_every
-        if callback is not None:
-            def target(stage, fraction, _cb=callback):
-                return _cb(_stage(stage), fraction)
+        if callback is not None or stop is not None:
+            def target(stage: int, fraction: float, _cb: Any = callback) -> Any:
+                if stop is not None and stop():
+                    return True
+                return _cb is not None and _cb(_stage(stage), fraction)
+            if callback is None:
+                every = self.interrupt_every or 4096
             capi.cvm_mesh_set_progress(m, target, int(every or 1000))
         else:
             capi.cvm_mesh_set_progress(m, None, int(self.interrupt_every or 0))
@@ -381,7 +522,8 @@ class Mesh:
 
     # ---- meshing -----------------------------------------------------------
 
-    def triangulate(self, progress=None, every=None, **options):
+    def triangulate(self, progress: Optional[ProgressCallback] = None, every: Optional[int] = None,
+                    **options: float) -> Status:
         """(Constrained) Delaunay triangulation of the input.
 
         progress: callback(stage, fraction) -> bool for this call (see
@@ -392,7 +534,9 @@ class Mesh:
         with self._handle() as m, self._progress_installed(m, progress, every):
             return self._finish(capi.cvm_mesh_triangulate(m))
 
-    def insert_points(self, xy, min_dist=0.0, progress=None, every=None):
+    def insert_points(self, xy: npt.ArrayLike, min_dist: float = 0.0,
+                      progress: Optional[ProgressCallback] = None,
+                      every: Optional[int] = None) -> npt.NDArray[np.int32]:
         """Insert (k, 2) points into the triangulation; returns the int32 vertex
         id of each point, or REJECTED (-1) for a point outside the domain or
         closer than min_dist to an existing vertex."""
@@ -401,15 +545,20 @@ class Mesh:
             self._finish(code)
             return ids
 
-    def insert_points_nd(self, points, min_dist=0.0, progress=None, every=None):
+    def insert_points_nd(self, points: npt.ArrayLike, min_dist: float = 0.0,
+                         progress: Optional[ProgressCallback] = None,
+                         every: Optional[int] = None) -> npt.NDArray[np.int32]:
         """insert_points() with (k, dim) points in the mesh's dimension."""
         with self._handle() as m, self._progress_installed(m, progress, every):
             code, ids = capi.cvm_mesh_insert_points_nd(m, points, float(min_dist))
             self._finish(code)
             return ids
 
-    def refine(self, algorithm="frontal", size=None, min_angle=None, max_area=None,
-               sizing=None, max_steiner=None, progress=None, every=None, **options):
+    def refine(self, algorithm: Union[str, int] = "frontal",
+               size: Union[float, SizeCallback, None] = None, min_angle: Optional[float] = None,
+               max_area: Optional[float] = None, sizing: Optional[Sizing] = None,
+               max_steiner: Optional[int] = None, progress: Optional[ProgressCallback] = None,
+               every: Optional[int] = None, **options: float) -> Status:
         """Refine the triangulation with Steiner points until every triangle
         meets the minimum angle, the maximum area and the sizing.
 
@@ -453,7 +602,10 @@ class Mesh:
             if own is not None:
                 own.close()
 
-    def optimise_dual(self, size=None, sizing=None, progress=None, every=None, **options):
+    def optimise_dual(self, size: Union[float, SizeCallback, None] = None,
+                      sizing: Optional[Sizing] = None,
+                      progress: Optional[ProgressCallback] = None, every: Optional[int] = None,
+                      **options: float) -> Status:
         """Move the vertices and set their power weights so that every triangle
         contains its power vertex or is merged, and dual edges are not tiny
         (cvm_mesh_optimise_dual()). size / sizing: local size for the solver's
@@ -480,7 +632,7 @@ class Mesh:
             if own is not None:
                 own.close()
 
-    def check(self):
+    def check(self) -> bool:
         """Re-verify the mesh with exact predicates; raises InternalError
         naming the failed check, else returns True."""
         with self._handle() as m, self._progress_installed(m, None, None):
@@ -489,7 +641,7 @@ class Mesh:
 
     # ---- output ------------------------------------------------------------
 
-    def count(self, kind):
+    def count(self, kind: Union[str, int]) -> int:
         """Number of entities of a kind (an Entity or its name, e.g. 'triangle')."""
         if isinstance(kind, str):
             kind = Entity[kind.upper()]
@@ -497,18 +649,18 @@ class Mesh:
             return capi.cvm_mesh_count(m, int(kind))
 
     @property
-    def dim(self):
+    def dim(self) -> int:
         """Dimension of the mesh: coordinates per point (2 in this version)."""
         with self._handle() as m:
             return capi.cvm_mesh_dim(m)
 
     @property
-    def points_nd(self):
+    def points_nd(self) -> npt.NDArray[np.float64]:
         """(n, dim) float64 vertex coordinates in the mesh's dimension (a copy)."""
         with self._handle() as m:
             return capi.cvm_mesh_view_points_nd(m)
 
-    def cells_mixed(self, kind=None):
+    def cells_mixed(self, kind: Optional[int] = None) -> Tuple[npt.NDArray[np.int32], ...]:
         """Cells of several types as (offsets, types, conn) int32 arrays: cell c
         has type types[c] (a CellType, VTK's numbering) and the vertex ids
         conn[offsets[c]:offsets[c + 1]]. kind: Entity.CELL (the default)."""
@@ -517,7 +669,7 @@ class Mesh:
             nc, nconn = capi.cvm_mesh_count_cells_mixed(m, int(kind))
             return tuple(capi.cvm_mesh_copy_cells_mixed(nc + 1, nc, nconn, m, int(kind)))
 
-    def cell_neighbors(self, kind=None):
+    def cell_neighbors(self, kind: Optional[int] = None) -> npt.NDArray[np.int32]:
         """Neighbour of each cell across each face, -1 on the boundary, in the
         layout of cells_mixed() (kind Entity.CELL, the default: a flat int32
         array) or, for Entity.TRIANGLE, as the (m, 3) array of neighbors."""
@@ -527,21 +679,21 @@ class Mesh:
             nb = capi.cvm_mesh_copy_cell_neighbors(nconn, m, int(kind))
         return nb.reshape(-1, 3) if kind == Entity.TRIANGLE else nb
 
-    def cell_attributes(self, kind=None):
+    def cell_attributes(self, kind: Optional[int] = None) -> npt.NDArray[np.float64]:
         """(cells,) float64 regional attribute of each cell (kind as cell_neighbors)."""
         kind = Entity.CELL if kind is None else kind
         with self._handle() as m:
             nc, _ = capi.cvm_mesh_count_cells_mixed(m, Entity.CELL)
             return capi.cvm_mesh_copy_cell_attributes(nc, m, int(kind))
 
-    def report(self, which):
+    def report(self, which: Union[str, int]) -> float:
         """Report of the last run (a Report or its name, e.g. 'refine_steiner')."""
         if isinstance(which, str):
             which = Report[which.upper()]
         with self._handle() as m:
             return capi.cvm_mesh_get_report(m, int(which))
 
-    def reports(self):
+    def reports(self) -> Dict[str, float]:
         """{name: value} of every Report of the last runs."""
         return {r.name.lower(): self.report(r) for r in Report}
 
@@ -551,29 +703,29 @@ class Mesh:
             return capi.cvm_mesh_copy_cells(width * n, m, kind).reshape(n, width)
 
     @property
-    def points(self):
+    def points(self) -> npt.NDArray[np.float64]:
         """(n, 2) float64 vertex coordinates (a copy)."""
         with self._handle() as m:
             n = capi.cvm_mesh_count(m, Entity.VERTEX)
             return capi.cvm_mesh_copy_points(2 * n, m).reshape(n, 2)
 
     @property
-    def triangles(self):
+    def triangles(self) -> npt.NDArray[np.int32]:
         """(m, 3) int32 vertex ids of the triangles, counter-clockwise."""
         return self._cells(Entity.TRIANGLE, 3)
 
     @property
-    def edges(self):
+    def edges(self) -> npt.NDArray[np.int32]:
         """(e, 2) int32 vertex ids of the edges, sorted."""
         return self._cells(Entity.EDGE, 2)
 
     @property
-    def segments(self):
+    def segments(self) -> npt.NDArray[np.int32]:
         """(s, 2) int32 vertex ids of the constrained edges of the output."""
         return self._cells(Entity.SEGMENT, 2)
 
     @property
-    def neighbors(self):
+    def neighbors(self) -> npt.NDArray[np.int32]:
         """(m, 3) int32: neighbour of each triangle across the edge opposite
         vertex k, -1 on the boundary."""
         with self._handle() as m:
@@ -586,24 +738,24 @@ class Mesh:
             return capi.cvm_mesh_copy_markers(n, m, kind)
 
     @property
-    def point_markers(self):
+    def point_markers(self) -> npt.NDArray[np.int32]:
         """(n,) int32 marker of each vertex."""
         return self._markers(Entity.VERTEX)
 
     @property
-    def segment_markers(self):
+    def segment_markers(self) -> npt.NDArray[np.int32]:
         """(s,) int32 marker of each output segment."""
         return self._markers(Entity.SEGMENT)
 
     @property
-    def triangle_attributes(self):
+    def triangle_attributes(self) -> npt.NDArray[np.float64]:
         """(m,) float64 regional attribute of each triangle."""
         with self._handle() as m:
             n = capi.cvm_mesh_count(m, Entity.TRIANGLE)
             return capi.cvm_mesh_copy_triangle_attributes(n, m)
 
     @property
-    def layer_index(self):
+    def layer_index(self) -> npt.NDArray[np.float64]:
         """(m,) float64 advancing-front layer index of each triangle after an
         "aflr" refinement (max + 0.1 x min of its edges' layers; -1 where no
         front reached, and everywhere after another algorithm)."""
@@ -612,7 +764,7 @@ class Mesh:
             return capi.cvm_mesh_copy_layer_index(n, m)
 
     @property
-    def point_attributes(self):
+    def point_attributes(self) -> npt.NDArray[np.float64]:
         """(n, a) float64 point attributes of each vertex."""
         with self._handle() as m:
             n = capi.cvm_mesh_count(m, Entity.VERTEX)
@@ -629,7 +781,7 @@ class Mesh:
                     nattr = max(1, 2 * nattr)
 
     @property
-    def input_map(self):
+    def input_map(self) -> npt.NDArray[np.int32]:
         """(n_input,) int32: the vertex each input point became (-1: an inner vertex
         of a chain re-discretised with the option keep_segment_vertices = 0)."""
         with self._handle() as m:
@@ -639,7 +791,7 @@ class Mesh:
     # ---- weights and the power (Voronoi) dual -------------------------------
 
     @property
-    def weights(self):
+    def weights(self) -> npt.NDArray[np.float64]:
         """(n,) float64 power weight of each vertex (0 when none were set).
         Setting it (an (n,) array, or None to remove) makes the triangulation
         regular for those weights; see cvm_mesh_set_weights()."""
@@ -648,23 +800,23 @@ class Mesh:
             return capi.cvm_mesh_copy_weights(n, m)
 
     @weights.setter
-    def weights(self, w):
+    def weights(self, w: Optional[npt.ArrayLike]) -> None:
         self.set_weights(w)
 
-    def set_weights(self, w):
+    def set_weights(self, w: Optional[npt.ArrayLike]) -> None:
         """Set the power weight of every vertex (None removes them)."""
         with self._handle() as m:
             capi.cvm_mesh_set_weights(m, np.zeros(0) if w is None else w)
 
     @property
-    def dual_vertices(self):
+    def dual_vertices(self) -> npt.NDArray[np.float64]:
         """(m, 2) float64 power vertex (circumcentre without weights) of each triangle."""
         with self._handle() as m:
             n = capi.cvm_mesh_count(m, Entity.TRIANGLE)
             return capi.cvm_mesh_copy_dual_vertices(2 * n, m).reshape(n, 2)
 
     @property
-    def dual_vertices_nd(self):
+    def dual_vertices_nd(self) -> npt.NDArray[np.float64]:
         """(m, dim) float64 power vertex of each cell, in the mesh's dimension."""
         with self._handle() as m:
             d = capi.cvm_mesh_dim(m)
@@ -672,27 +824,27 @@ class Mesh:
             return capi.cvm_mesh_copy_dual_vertices_nd(d * n, d, m).reshape(n, d)
 
     @property
-    def dual_inside(self):
+    def dual_inside(self) -> npt.NDArray[np.bool_]:
         """(m,) bool: whether each triangle contains its power vertex (exact)."""
         with self._handle() as m:
             n = capi.cvm_mesh_count(m, Entity.TRIANGLE)
             return capi.cvm_mesh_copy_dual_inside(n, m).astype(bool)
 
     @property
-    def dual_areas(self):
+    def dual_areas(self) -> npt.NDArray[np.float64]:
         """(n,) float64 dual (power/Voronoi) cell area of each vertex, within the domain."""
         with self._handle() as m:
             n = capi.cvm_mesh_count(m, Entity.VERTEX)
             return capi.cvm_mesh_copy_dual_areas(n, m)
 
     @property
-    def dual_edge_lengths(self):
+    def dual_edge_lengths(self) -> npt.NDArray[np.float64]:
         """(e,) float64 dual edge length of each edge, in the order of `edges`."""
         with self._handle() as m:
             n = capi.cvm_mesh_count(m, Entity.EDGE)
             return capi.cvm_mesh_copy_dual_edge_lengths(n, m)
 
-    def dual_quality(self, which):
+    def dual_quality(self, which: Union[str, int]) -> npt.NDArray[np.float64]:
         """Per-element dual quality values (see cvm_histogram in cvmesh.h):
         which is a Histogram Q1..Q5 or its name ("q1".."q5"). q1 (min angle,
         degrees) and q2 (|centroid - power vertex| / inradius) give one value
@@ -707,7 +859,7 @@ class Mesh:
             return capi.cvm_mesh_copy_dual_quality(n, m, which)
 
     @property
-    def dual_cells(self):
+    def dual_cells(self) -> Tuple[npt.NDArray[np.int32], npt.NDArray[np.float64]]:
         """The power (Voronoi) cell polygon of each vertex, restricted to the
         domain, as CSR arrays (offsets, corners): offsets (n + 1,) int32, and
         corners (k, 2) float64; vertex v's polygon is
@@ -718,13 +870,13 @@ class Mesh:
             k = int(offsets[-1])
             return offsets, capi.cvm_mesh_copy_dual_cells(2 * k, m).reshape(k, 2)
 
-    def write_dual(self, path):
+    def write_dual(self, path: PathLike) -> None:
         """Write the power cells as .vtu polygons (cell data vertex, area, weight)."""
         with self._handle() as m:
             capi.cvm_mesh_write_dual(m, os.fspath(path))
 
     @property
-    def dual_merge_groups(self):
+    def dual_merge_groups(self) -> npt.NDArray[np.int32]:
         """(m,) int32: per triangle, the smallest triangle index of its merged dual
         cell (its own index when not merged); see cvm_mesh_copy_dual_merge_groups()."""
         with self._handle() as m:
@@ -732,12 +884,12 @@ class Mesh:
             return capi.cvm_mesh_copy_dual_merge_groups(n, m)
 
     @property
-    def last_error(self):
+    def last_error(self) -> str:
         """Message of the last failing call on this mesh ('' after success)."""
         with self._handle() as m:
             return capi.cvm_mesh_errmsg(m)
 
-    def quality(self):
+    def quality(self) -> Quality:
         """Quality measures and histograms of the current mesh (a Quality)."""
         values = {}
         with self._handle() as m:
@@ -753,29 +905,147 @@ class Mesh:
                 values["hist_" + hist.name.lower()] = capi.cvm_mesh_copy_histogram(bins, m, hist)
         return Quality(**values)
 
-    def write(self, path):
+    def write(self, path: PathLike) -> None:
         """Write the mesh; the format follows the extension: .vtu, .msh,
-        .node (with .ele and .edge), .svg."""
-        with self._handle() as m, self._progress_installed(m, None, None):
-            self._finish(capi.cvm_mesh_write(m, os.fspath(path)))
+        .node (with .ele and .edge), .svg.
+
+        The files are written under temporary names and renamed over their
+        targets at the end (cvm_mesh_stage_write, cvm_mesh_commit_writes).
+        Ctrl-C (SIGINT, in the main thread with Python's default handler)
+        stops the write: every target stays as it was, no temporary file is
+        left, and KeyboardInterrupt is raised. A write that completed is never
+        reported as interrupted: a Ctrl-C that lands during the final renames
+        (microseconds) is ignored. A progress callback that cancels leaves the
+        targets as they were too (last_status INCOMPLETE_CANCELLED)."""
+        with self._handle() as m, _sigint_held() as interrupted, \
+                self._progress_installed(m, None, None, stop=interrupted):
+            try:
+                code = capi.cvm_mesh_stage_write(m, os.fspath(path))
+            except BaseException:
+                capi.cvm_mesh_discard_writes(m)
+                raise
+            if code != Status.OK or interrupted():
+                # the library removed its files on a cancellation; a Ctrl-C
+                # after the last progress check lands here with the files staged
+                capi.cvm_mesh_discard_writes(m)
+                if interrupted():
+                    raise KeyboardInterrupt
+                self._finish(code)
+                return
+            capi.cvm_mesh_commit_writes(m)
+            self._finish(code)
 
     # ---- interoperability --------------------------------------------------
 
-    def to_meshio(self):
-        """A meshio.Mesh of the triangles (z = 0), with point markers and
-        triangle attributes as data. Needs the meshio package."""
+    def to_meshio(self) -> Any:
+        """A meshio.Mesh of the mesh (z = 0), in the layout of write() to .vtu:
+        cell blocks "triangle" and, when there are segments, "line" (the
+        constrained edges); point data "marker" and "weight" (the power weights,
+        0 without them) and "attribute" (point attributes, when set); cell data
+        "marker" (segment marker on a line, 0 on a triangle) and "attribute"
+        (regional attribute of a triangle, 0 on a line). Needs meshio."""
         try:
-            import meshio
+            import meshio  # type: ignore
         except ImportError:
             raise ImportError("Mesh.to_meshio() needs meshio: pip install meshio") from None
         pts = self.points
         pts3 = np.zeros((len(pts), 3))
         pts3[:, :2] = pts
-        return meshio.Mesh(pts3, [("triangle", self.triangles)],
-                           point_data={"marker": self.point_markers},
-                           cell_data={"attribute": [self.triangle_attributes]})
+        tris, segs = self.triangles, self.segments
+        cells = [("triangle", tris)]
+        markers = [np.zeros(len(tris), dtype=np.int32)]
+        attributes = [self.triangle_attributes]
+        if len(segs):
+            cells.append(("line", segs))
+            markers.append(self.segment_markers)
+            attributes.append(np.zeros(len(segs)))
+        point_data = {"marker": self.point_markers, "weight": self.weights}
+        pattr = self.point_attributes
+        if pattr.shape[1]:
+            point_data["attribute"] = pattr if pattr.shape[1] > 1 else pattr[:, 0]
+        return meshio.Mesh(pts3, cells, point_data=point_data,
+                           cell_data={"marker": markers, "attribute": attributes})
 
-    def triangle_min_angles(self):
+    #: cell data names from_meshio() takes segment markers from, in this order.
+    MESHIO_MARKER_KEYS = ("marker", "gmsh:physical", "medit:ref", "cell_tags")
+
+    @classmethod
+    def from_meshio(cls, mesh: Any, marker: Optional[str] = None, **options: float) -> Mesh:
+        """A cvmesh Mesh from a meshio.Mesh of triangles in the plane.
+
+        mesh.points: (n, 2), or (n, 3) with every z = 0. Its "triangle" cells
+        give the domain, its "line" cells the segments, with their markers from
+        the cell data `marker` (default: the first of MESHIO_MARKER_KEYS that
+        is there). Without line cells, the boundary edges of the triangles
+        become the segments (marker 1). Holes (bounded regions the triangles do
+        not cover) become hole seeds. Point data "marker" and "weight" are
+        used when present. Other cell types (vertex cells aside) raise
+        ArgumentError.
+
+        The result is triangulated: the constrained Delaunay (with weights:
+        regular) triangulation of the points and segments, carved to the
+        triangles' domain. Its vertices are the points in order; its triangles
+        are the given ones when those were (constrained) Delaunay, and
+        otherwise a re-triangulation of the same points and boundary."""
+        pts = np.asarray(mesh.points, dtype=np.float64)
+        if pts.ndim != 2 or pts.shape[1] not in (2, 3):
+            raise ArgumentError("from_meshio: points of shape %s; need (n, 2) or (n, 3)"
+                                % (pts.shape,), Status.E_ARGUMENT)
+        if pts.shape[1] == 3:
+            off = np.flatnonzero(pts[:, 2] != 0)
+            if off.size:
+                raise InputError("from_meshio: point %d has z = %.17g; cvmesh meshes the plane "
+                                 "z = 0" % (off[0], pts[off[0], 2]), Status.E_ARGUMENT,
+                                 Entity.INPUT_POINT, int(off[0]))
+            pts = np.ascontiguousarray(pts[:, :2])
+        key = marker
+        if key is None:
+            key = next((k for k in cls.MESHIO_MARKER_KEYS if k in mesh.cell_data), None)
+        tris, segs, seg_markers = [], [], []
+        for k, block in enumerate(mesh.cells):
+            data = np.asarray(block.data)
+            if block.type == "triangle":
+                tris.append(data)
+            elif block.type == "line":
+                segs.append(data)
+                if key is not None and key in mesh.cell_data:
+                    seg_markers.append(np.asarray(mesh.cell_data[key][k]).reshape(-1))
+                else:
+                    seg_markers.append(np.ones(len(data), dtype=np.int64))
+            elif block.type != "vertex":
+                raise ArgumentError("from_meshio: cell block %d has type %s; cvmesh takes "
+                                    "triangle and line cells" % (k, block.type), Status.E_ARGUMENT)
+        tri = np.concatenate(tris).astype(np.int64) if tris else np.zeros((0, 3), np.int64)
+        if segs:
+            seg = np.concatenate(segs).astype(np.int64)
+            seg_mark = np.concatenate(seg_markers)
+        else:
+            seg = _boundary_edges(tri)
+            seg_mark = np.ones(len(seg), dtype=np.int64)
+        point_markers = mesh.point_data.get("marker")
+        weights = mesh.point_data.get("weight")
+
+        def build(holes: Optional[npt.NDArray[np.float64]]) -> Mesh:
+            m = cls.from_pslg(pts, seg.astype(np.int32) if len(seg) else None,
+                              holes=holes if holes is not None and len(holes) else None,
+                              markers=None if point_markers is None
+                              else np.asarray(point_markers).astype(np.int32).reshape(-1),
+                              segment_markers=seg_mark.astype(np.int32) if len(seg) else None,
+                              **options)
+            m.triangulate()
+            return m
+
+        result = build(None)
+        if len(tri):
+            holes = _hole_seeds(result, tri)
+            if len(holes):
+                result.close()
+                result = build(holes)
+        if weights is not None:
+            result.set_weights(np.asarray(weights, dtype=np.float64).reshape(-1))
+        return result
+
+    def triangle_min_angles(self) -> npt.NDArray[np.float64]:
         """(m,) float64 smallest angle of each triangle, degrees."""
         p = self.points[self.triangles]  # (m, 3, 2)
         angles = []
@@ -786,15 +1056,15 @@ class Mesh:
             angles.append(np.degrees(np.arctan2(cross, np.einsum("ij,ij->i", a, b))))
         return np.min(angles, axis=0) if angles[0].size else np.zeros(0)
 
-    def plot(self, ax=None, color_by="quality", **kwargs):
+    def plot(self, ax: Any = None, color_by: Optional[str] = "quality", **kwargs: Any) -> Any:
         """Draw the mesh with matplotlib (needs matplotlib); returns the Axes.
 
         color_by: "quality" (smallest angle of each triangle, degrees),
         "attribute" (regional attribute), or None (edges only).
         """
         try:
-            import matplotlib.pyplot as plt
-            import matplotlib.tri as mtri
+            import matplotlib.pyplot as plt  # type: ignore
+            import matplotlib.tri as mtri  # type: ignore
         except ImportError:
             raise ImportError("Mesh.plot() needs matplotlib: pip install matplotlib") from None
         if ax is None:
@@ -818,7 +1088,83 @@ class Mesh:
         return ax
 
 
-def _algorithm(name):
+def _boundary_edges(tri: npt.NDArray[np.int64]) -> npt.NDArray[np.int64]:
+    """(k, 2) edges used by one triangle of tri, directed as in their
+    triangle (so the triangle lies on their left when tri is counter-clockwise)."""
+    if not len(tri):
+        return np.zeros((0, 2), dtype=np.int64)
+    directed = np.concatenate([tri[:, [0, 1]], tri[:, [1, 2]], tri[:, [2, 0]]])
+    key = np.sort(directed, axis=1)
+    _, inverse, counts = np.unique(key, axis=0, return_inverse=True, return_counts=True)
+    return directed[counts[inverse.reshape(-1)] == 1]
+
+
+def _hole_seeds(mesh: Mesh, tri: npt.NDArray[np.int64]) -> npt.NDArray[np.float64]:
+    """Hole seeds for the triangles tri (vertex ids of mesh's points): one
+    point inside each region of mesh's triangulation, bounded by its
+    segments, that tri does not cover. A region is covered when it holds the
+    triangle on the inner side of a boundary edge of tri: the side of the
+    edge's triangle, found from the edge's direction in that triangle
+    (topology), with the triangle's orientation from the sign of its area."""
+    pts = mesh.points
+    tri = mesh.input_map[tri].astype(np.int64)
+    p = pts[tri]
+    area2 = ((p[:, 1, 0] - p[:, 0, 0]) * (p[:, 2, 1] - p[:, 0, 1])
+             - (p[:, 1, 1] - p[:, 0, 1]) * (p[:, 2, 0] - p[:, 0, 0]))
+    cw = area2 < 0
+    tri = tri.copy()
+    tri[cw] = tri[cw][:, [0, 2, 1]]
+    inner = {(int(a), int(b)) for a, b in _boundary_edges(tri)}   # domain on the left
+    T, nb = mesh.triangles, mesh.neighbors
+    segs = {tuple(sorted(map(int, s))) for s in mesh.segments}
+    nt = len(T)
+    region = np.full(nt, -1)
+    covered = []
+    for start in range(nt):
+        if region[start] >= 0:
+            continue
+        r = len(covered)
+        covered.append(False)
+        stack = [start]
+        region[start] = r
+        while stack:
+            t = stack.pop()
+            for j in range(3):
+                a, b = int(T[t, (j + 1) % 3]), int(T[t, (j + 2) % 3])
+                if (a, b) in inner:            # t is left of a domain edge (a, b)
+                    covered[r] = True
+                u = nb[t, j]
+                if u >= 0 and region[u] < 0 and (min(a, b), max(a, b)) not in segs:
+                    region[u] = r
+                    stack.append(u)
+    seeds = [pts[T[np.flatnonzero(region == r)[0]]].mean(axis=0)
+             for r in range(len(covered)) if not covered[r]]
+    return np.array(seeds).reshape(-1, 2)
+
+
+@contextlib.contextmanager
+def _sigint_held() -> Iterator[Callable[[], bool]]:
+    """Hold Ctrl-C while the block runs: yields interrupted(), true once a
+    SIGINT has arrived. Only in the main thread and only over Python's default
+    handler; otherwise SIGINT keeps its handler and interrupted() stays false
+    (the progress callback then raises what the handler raises)."""
+    hits: list = []
+    if (threading.current_thread() is not threading.main_thread()
+            or signal.getsignal(signal.SIGINT) is not signal.default_int_handler):
+        yield lambda: False
+        return
+
+    def hold(signum: int, frame: Any) -> None:
+        hits.append(signum)
+
+    old = signal.signal(signal.SIGINT, hold)
+    try:
+        yield lambda: bool(hits)
+    finally:
+        signal.signal(signal.SIGINT, old)
+
+
+def _algorithm(name: Union[str, int]) -> int:
     """Algorithm from an Algorithm, an int, or a name like 'frontal'."""
     if isinstance(name, str):
         try:
@@ -839,23 +1185,32 @@ class Sizing:
         mesh.refine(sizing=sizing, min_angle=28)
 
     A callback size(x, y) -> float is called with the GIL taken from inside
-    the refinement (slow for large meshes; prefer sources). An exception it
-    raises stops the refinement and propagates.
+    the refinement (slow for large meshes; prefer sources). A batch callback
+    (set_batch_callback, or Sizing(batch=...)) takes an (n, 2) array of
+    points and returns n sizes: numpy code runs once per batch instead of
+    once per point. An exception either raises stops the refinement and
+    propagates.
     """
 
-    def __init__(self, uniform=None, callback=None):
+    def __init__(self, uniform: Optional[float] = None,
+                 callback: Optional[SizeCallback] = None,
+                 batch: Optional[BatchSizeCallback] = None) -> None:
         self._s = None
         self._lock = threading.Lock()
         self._owner = None
-        self._callback = None
-        self._metric = None
+        self._callback: Any = None
+        self._metric: Any = None
         self._s = capi.cvm_sizing_create()
         if uniform is not None:
             self.set_uniform(uniform)
+        if callback is not None and batch is not None:
+            raise ValueError("give callback or batch, not both (one user function per sizing)")
         if callback is not None:
             self.set_callback(callback)
+        if batch is not None:
+            self.set_batch_callback(batch)
 
-    def close(self):
+    def close(self) -> None:
         """Free the C handle now (also done when the object is collected).
 
         A call using this sizing in another thread (a Mesh.refine() or
@@ -869,7 +1224,7 @@ class Sizing:
             if s is not None and capi is not None:
                 capi.cvm_sizing_free(s)
 
-    def __del__(self):
+    def __del__(self) -> None:
         # As Mesh.__del__: never free under a call, never block a finaliser.
         lock = getattr(self, "_lock", None)
         if getattr(self, "_s", None) is None or lock is None or not lock.acquire(False):
@@ -881,10 +1236,10 @@ class Sizing:
         finally:
             lock.release()
 
-    def __enter__(self):
+    def __enter__(self) -> Sizing:
         return self
 
-    def __exit__(self, *exc):
+    def __exit__(self, *exc: object) -> None:
         self.close()
 
     @contextlib.contextmanager
@@ -902,46 +1257,63 @@ class Sizing:
             finally:
                 self._owner = None
 
-    def set_uniform(self, h):
+    def set_uniform(self, h: float) -> None:
         """Uniform target edge length h > 0 (replaces an earlier one)."""
         with self._handle() as s:
             capi.cvm_sizing_set_uniform(s, float(h))
 
-    def add_point_source(self, x, y, h, growth=0.0):
+    def add_point_source(self, x: float, y: float, h: float, growth: float = 0.0) -> None:
         """h(p) = h + growth * |p - (x, y)|."""
         with self._handle() as s:
             capi.cvm_sizing_add_point_source(s, float(x), float(y), float(h), float(growth))
 
-    def add_line_source(self, x0, y0, x1, y1, h, growth=0.0):
+    def add_line_source(self, x0: float, y0: float, x1: float, y1: float, h: float,
+                        growth: float = 0.0) -> None:
         """h(p) = h + growth * distance(p, segment (x0, y0)-(x1, y1))."""
         with self._handle() as s:
             capi.cvm_sizing_add_line_source(s, float(x0), float(y0), float(x1), float(y1),
                                             float(h), float(growth))
 
-    def set_callback(self, callback):
+    def set_callback(self, callback: Optional[SizeCallback]) -> None:
         """Use callback(x, y) -> size as one more source (None removes it)."""
         with self._handle() as s:
             capi.cvm_sizing_set_callback(s, callback)
             self._callback = callback
 
-    def add_point_source_nd(self, x, h, growth=0.0):
+    def set_batch_callback(self, callback: Optional[BatchSizeCallback]) -> None:
+        """Use callback(xy) -> sizes as one more source, asked for many points
+        at once: xy an (n, 2) float64 array, the result n positive sizes (e.g.
+        lambda xy: 0.01 + 0.1 * xy[:, 0]). Mesh.refine() asks for all the
+        vertices it starts from in batches of up to 1024 points and for each
+        point it inserts on its own (n = 1), so the mesh is the one a
+        callback(x, y) of the same sizes gives. Replaces a callback(x, y) or
+        callback(x); None removes it (cvm_sizing_set_batch_callback)."""
+        if not hasattr(capi, "cvm_sizing_set_batch_callback"):
+            raise _unsupported("batch sizing callbacks need cvm_sizing_set_batch_callback(), "
+                               "not in this version of the cvmesh library (%s)" % version())
+        with self._handle() as s:
+            capi.cvm_sizing_set_batch_callback(s, callback)
+            self._callback = callback
+
+    def add_point_source_nd(self, x: npt.ArrayLike, h: float, growth: float = 0.0) -> None:
         """h(p) = h + growth * |p - x|, x of the mesh's dimension (2 values)."""
         with self._handle() as s:
             capi.cvm_sizing_add_point_source_nd(s, x, float(h), float(growth))
 
-    def add_line_source_nd(self, ends, h, growth=0.0):
+    def add_line_source_nd(self, ends: npt.ArrayLike, h: float, growth: float = 0.0) -> None:
         """h(p) = h + growth * distance(p, segment); ends: (2, dim)."""
         with self._handle() as s:
             capi.cvm_sizing_add_line_source_nd(s, ends, float(h), float(growth))
 
-    def set_callback_nd(self, callback):
+    def set_callback_nd(self, callback: Optional[Callable[[npt.NDArray[np.float64]], float]]
+                        ) -> None:
         """Use callback(x) -> size, x a float64 array of the mesh's dimension,
         as one more source (replaces a callback(x, y); None removes it)."""
         with self._handle() as s:
             capi.cvm_sizing_set_callback_nd(s, callback)
             self._callback = callback
 
-    def set_metric(self, callback):
+    def set_metric(self, callback: Optional[Callable[[npt.NDArray[np.float64]], Any]]) -> None:
         """Metric (tensor) source: callback(x) -> (g11, g12, g22), or None to
         refuse the point (None removes the source). No refiner of this version
         uses a metric: Mesh.refine() and optimise_dual() raise UnsupportedError
@@ -950,17 +1322,17 @@ class Sizing:
             capi.cvm_sizing_set_metric_fn(s, callback)
             self._metric = callback
 
-    def eval_nd(self, x):
+    def eval_nd(self, x: npt.ArrayLike) -> float:
         """The target size at the point x (inf when there is no scalar source)."""
         with self._handle() as s:
             return capi.cvm_sizing_eval_nd(s, x)
 
-    def metric_at(self, x):
+    def metric_at(self, x: npt.ArrayLike) -> Tuple[float, float, float]:
         """The metric at x as (g11, g12, g22), checked finite and positive definite."""
         with self._handle() as s:
             return capi.cvm_sizing_eval_metric(3, s, x)
 
-    def set_automatic(self, R, G=4.0):
+    def set_automatic(self, R: float, G: float = 4.0) -> None:
         """Size from the geometry being refined: local feature size / R (R edges
         per feature, curvature-aware), growing by at most 1/G per unit of
         distance. Built by each Mesh.refine() from its domain; __call__ does
@@ -968,7 +1340,7 @@ class Sizing:
         with self._handle() as s:
             capi.cvm_sizing_set_automatic(s, float(R), float(G))
 
-    def set_boundary_grading(self, g):
+    def set_boundary_grading(self, g: float) -> None:
         """Also cap the size by l(e) + g * distance from every boundary or
         constrained edge e of length l(e) of the mesh being refined or
         optimised, so a finely spaced wall grows into the interior at slope g
@@ -977,7 +1349,8 @@ class Sizing:
         with self._handle() as s:
             capi.cvm_sizing_set_boundary_grading(s, float(g))
 
-    def set_background(self, points, triangles, sizes):
+    def set_background(self, points: npt.ArrayLike, triangles: npt.ArrayLike,
+                       sizes: npt.ArrayLike) -> None:
         """Sizes at the nodes of a background triangulation, interpolated
         linearly inside its triangles (no bound outside them): points (n, 2),
         triangles (m, 3) 0-based node indices (integers; floats raise
@@ -995,7 +1368,7 @@ class Sizing:
         with self._handle() as s:
             capi.cvm_sizing_set_background(s, xyh, tri)
 
-    def __call__(self, x, y):
+    def __call__(self, x: float, y: float) -> float:
         """The target size at (x, y) (inf when there is no source)."""
         with self._handle() as s:
             return capi.cvm_sizing_eval(s, float(x), float(y))

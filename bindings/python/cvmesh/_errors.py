@@ -5,6 +5,10 @@ _from_status(), carrying the library's message (cvm_mesh_errmsg), the status
 code and the input item the message names.
 """
 
+from __future__ import annotations
+
+from typing import Type
+
 
 class Error(Exception):
     """Base class of every error reported by the cvmesh library.
@@ -17,7 +21,8 @@ class Error(Exception):
         item_index: its 0-based index (a file line is 1-based), -1 when none.
     """
 
-    def __init__(self, message, status=0, item_kind=0, item_index=-1):
+    def __init__(self, message: str, status: int = 0, item_kind: int = 0,
+                 item_index: int = -1) -> None:
         super().__init__(message)
         self.message = message
         self.status = status
@@ -25,7 +30,7 @@ class Error(Exception):
         self.item_index = item_index
 
     @property
-    def status_name(self):
+    def status_name(self) -> str:
         """Name of the status code, e.g. 'E_INPUT_INDEX'."""
         from . import Status  # late: the enum is built from the compiled module
         try:
@@ -33,7 +38,7 @@ class Error(Exception):
         except ValueError:
             return str(self.status)
 
-    def __str__(self):
+    def __str__(self) -> str:
         return self.message
 
 
@@ -96,7 +101,7 @@ for _cls in (Error, ArgumentError, OptionError, InputError, StateError, Unsuppor
 del _cls
 
 
-def error_class(status):
+def error_class(status: int) -> Type[Error]:
     """The exception class for an error status code."""
     for lo, hi, cls in _FAMILIES:
         if lo <= status <= hi:
@@ -104,6 +109,6 @@ def error_class(status):
     return Error
 
 
-def _from_status(status, message, item_kind, item_index):
+def _from_status(status: int, message: str, item_kind: int, item_index: int) -> Error:
     """Called from C: the exception instance for an error status."""
     return error_class(status)(message, status, item_kind, item_index)

@@ -6,6 +6,7 @@
 #include "cvmesh.h"
 
 TCase *refine_sizing_tcase(void);
+TCase *refine_sizing_batch_tcase(void);
 TCase *refine_bad_queue_tcase(void);
 TCase *refine_delaunay_tcase(void);
 TCase *refine_frontal_tcase(void);

@@ -6,6 +6,7 @@ Suite *refine_suite(void)
 {
     Suite *s = suite_create("refine");
     suite_add_tcase(s, refine_sizing_tcase());
+    suite_add_tcase(s, refine_sizing_batch_tcase());
     suite_add_tcase(s, refine_bad_queue_tcase());
     suite_add_tcase(s, refine_delaunay_tcase());
     suite_add_tcase(s, refine_frontal_tcase());
