@@ -376,7 +376,8 @@ check-python: venv
 
 check-fortran: venv
 	@if [ -f bindings/fortran/check.sh ]; then \
-	  CVM_BUILD=$(abspath $(BUILD)) CC=$(CC) PYTHON=$(VENV_PY) bash bindings/fortran/check.sh; \
+	  CVM_BUILD=$(abspath $(BUILD)) CC=$(CC) PYTHON=$(VENV_PY) LIBS="$(strip $(LDLIBS_LIB))" \
+	    bash bindings/fortran/check.sh; \
 	else echo "check-fortran: skipped (bindings/fortran/check.sh not present yet)"; fi
 
 bench: all

@@ -17,7 +17,7 @@ FMODDIR := $(PREFIX)/include/cvmesh/$(FC_ID)
 
 fortran: $(STATIC) venv
 	CVM_BUILD=$(abspath $(BUILD)) FC=$(FC) PYTHON=$(VENV_PY) CVMESH_LIB=$(abspath $(STATIC)) \
-	  LIBS="-lm $(OMPFLAGS)" sh bindings/fortran/check.sh --build-only
+	  LIBS="$(strip $(LDLIBS_LIB))" sh bindings/fortran/check.sh --build-only
 
 install-fortran: fortran
 	install -d $(DESTDIR)$(FMODDIR) $(DESTDIR)$(PREFIX)/lib/pkgconfig
