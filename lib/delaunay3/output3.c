@@ -43,7 +43,7 @@ static int cmp_tet(const void *pa, const void *pb)
     return 0;
 }
 
-/* The canonical form of the finite tetrahedron in slot t, or 0 for a ghost or free slot. */
+/* The canonical form of the finite tetrahedron in slot t into o, or 0 for a ghost or free slot. */
 static int canonical_tet(const cvm__tet3 *T, size_t t, int32_t *o)
 {
     const int32_t *v = T->tt + 8 * t;
@@ -55,41 +55,74 @@ static int canonical_tet(const cvm__tet3 *T, size_t t, int32_t *o)
     return 1;
 }
 
+#define DIGIT_BITS 11
+
+/* Stable LSD radix sort of the tetrahedra by their first vertex, `passes`
+ * passes of DIGIT_BITS bits from src to dst and back, ending in `out`
+ * (which is src or dst by the parity of passes). Streaming writes into 2048
+ * buckets: far cheaper than scattering by a random-looking index. */
+static void radix_by_first(int32_t *src, int32_t *dst, size_t nt, int passes, size_t *count)
+{
+    int pass;
+    size_t i;
+    for (pass = 0; pass < passes; pass++) {
+        int shift = pass * DIGIT_BITS;
+        size_t sum = 0, mask = ((size_t)1 << DIGIT_BITS) - 1;
+        int32_t *t;
+        memset(count, 0, ((size_t)1 << DIGIT_BITS) * sizeof *count);
+        for (i = 0; i < nt; i++)
+            count[((size_t)src[4 * i] >> shift) & mask]++;
+        for (i = 0; i <= mask; i++) {
+            size_t c = count[i];
+            count[i] = sum;
+            sum += c;
+        }
+        for (i = 0; i < nt; i++)
+            memcpy(dst + 4 * count[((size_t)src[4 * i] >> shift) & mask]++, src + 4 * i,
+                   4 * sizeof *src);
+        t = src, src = dst, dst = t;
+    }
+}
+
 cvm_status cvm__tet3_copy_tets(cvm__tet3 *T, int32_t *dst)
 {
-    size_t n = T->np, i, *start, sum = 0;
-    int32_t o[4];
-    start = cvm__calloc(T->ctx, n + 1, sizeof *start);
-    if (!start)
+    size_t nt = T->n_finite, i, m = 0, lo, *count;
+    int32_t *tmp, *first;
+    int passes = 1;
+    while (passes * DIGIT_BITS < 31 && ((size_t)1 << (passes * DIGIT_BITS)) < T->np)
+        passes++;
+    count = cvm__malloc(T->ctx, ((size_t)1 << DIGIT_BITS) * sizeof *count);
+    tmp = cvm__malloc(T->ctx, 4 * nt * sizeof *tmp + 1);
+    if (!count || !tmp) {
+        cvm__free(T->ctx, count);
+        cvm__free(T->ctx, tmp);
         return cvm__nomem(T->ctx);
-    /* counting sort on the first vertex (two passes over the store), then an
-     * insertion sort of each bucket (about 6 tetrahedra on average) */
-    for (i = 0; i < T->nslot; i++)
-        if (canonical_tet(T, i, o))
-            start[o[0]]++;
-    for (i = 0; i <= n; i++) {
-        size_t c = start[i];
-        start[i] = sum;
-        sum += c;
     }
+    /* write so that the last radix pass lands in dst */
+    first = passes % 2 ? tmp : dst;
     for (i = 0; i < T->nslot; i++)
-        if (canonical_tet(T, i, o))
-            memcpy(dst + 4 * start[o[0]]++, o, sizeof o);
-    for (i = 0, sum = 0; i < n; i++) {
-        size_t lo = sum, hi = start[i], j, k;
-        sum = hi;
+        if (canonical_tet(T, i, first + 4 * m))
+            m++;
+    radix_by_first(first, first == tmp ? dst : tmp, nt, passes, count);
+    /* each run of equal first vertices (about 6 on average): sort by the rest */
+    for (lo = 0; lo < nt;) {
+        size_t hi = lo + 1, j, k;
+        while (hi < nt && dst[4 * hi] == dst[4 * lo])
+            hi++;
         if (hi - lo > 64) { /* a vertex of very high degree (the centre of a sphere) */
             qsort(dst + 4 * lo, hi - lo, 4 * sizeof *dst, cmp_tet);
-            continue;
+        } else {
+            for (j = lo + 1; j < hi; j++) {
+                int32_t key[4];
+                memcpy(key, dst + 4 * j, sizeof key);
+                for (k = j; k > lo && tail_less(key, dst + 4 * (k - 1)); k--)
+                    memcpy(dst + 4 * k, dst + 4 * (k - 1), sizeof key);
+                memcpy(dst + 4 * k, key, sizeof key);
+            }
         }
-        for (j = lo + 1; j < hi; j++) {
-            int32_t key[4];
-            memcpy(key, dst + 4 * j, sizeof key);
-            for (k = j; k > lo && tail_less(key, dst + 4 * (k - 1)); k--)
-                memcpy(dst + 4 * k, dst + 4 * (k - 1), sizeof key);
-            memcpy(dst + 4 * k, key, sizeof key);
-        }
+        lo = hi;
     }
-    cvm__free(T->ctx, start);
+    cvm__free(T->ctx, count);
+    cvm__free(T->ctx, tmp);
     return CVM_OK;
 }

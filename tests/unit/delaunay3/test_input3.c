@@ -86,6 +86,9 @@ START_TEST(degenerate_input_is_refused_with_a_message)
     d3test_random(p, 3, 1);
     expect_refused(p, 3, CVM_E_INPUT_DEGENERATE, "3 points");
     expect_refused(p, 0, CVM_E_INPUT_DEGENERATE, "0 points");
+    d3test_random(p, 64, 3);
+    p[3 * 40 + 2] = 1e-40; /* 2^-132 of the largest coordinate */
+    expect_refused(p, 64, CVM_E_INPUT_DEGENERATE, "point 40");
 }
 END_TEST
 
@@ -144,14 +147,14 @@ START_TEST(check_names_a_corrupted_tetrahedron)
         int k, j;
         for (k = 0; k < 4; k++)
             for (j = 0; j < 3; j++)
-                c[j] += 0.25 * T.xyz[3 * q[k] + j];
+                c[j] += 0.25 * T.pt[q[k]].x[j];
         for (k = 0; k < (int)T.np; k++) {
             if (k == q[0] || k == q[1] || k == q[2] || k == q[3] || T.fate[k] != CVM__T3_VERTEX)
                 continue;
-            memcpy(keep, T.xyz + 3 * k, sizeof keep);
-            memcpy(T.xyz + 3 * k, c, sizeof c); /* vertex k now sits at the centroid of t */
+            memcpy(keep, T.pt[k].x, sizeof keep);
+            memcpy(T.pt[k].x, c, sizeof c); /* vertex k now sits at the centroid of t */
             ck_assert_int_eq(cvm__tet3_check(&T), CVM_E_INTERNAL);
-            memcpy(T.xyz + 3 * k, keep, sizeof keep);
+            memcpy(T.pt[k].x, keep, sizeof keep);
             break;
         }
         (void)v;
