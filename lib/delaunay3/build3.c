@@ -196,6 +196,9 @@ static cvm_status alloc_points(cvm__tet3 *T, const double *xyz, const double *w,
         if (!T->w || !T->vseen || !T->vkeep)
             return CVM_E_NOMEM;
     }
+    T->small_int = w == NULL;
+    for (i = 0; i < 3 * n && T->small_int; i++)
+        T->small_int = fabs(xyz[i]) <= 256.0 && xyz[i] == (double)(int)xyz[i];
     s = cvm__tet3_brio_order(ctx, xyz, n, seed, T->orig);
     if (s != CVM_OK)
         return s;

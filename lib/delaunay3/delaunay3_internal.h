@@ -108,6 +108,8 @@ typedef struct cvm__tet3 {
     uint32_t *vkeep;  /* ... and of the last cavity boundary it was on */
     uint32_t vstamp;  /* the stamp of the current cavity for vseen / vkeep */
 
+    int small_int;    /* unweighted and every coordinate an integer in [-256, 256]: the plain
+                       * floating-point insphere / orient3d are exact (geom_internal.h) */
     int32_t last;     /* a finite tetrahedron made by the last insertion: next walk's start */
     uint64_t walk;    /* xorshift state of the walk's face order (deterministic) */
 
@@ -117,6 +119,7 @@ typedef struct cvm__tet3 {
     size_t n_redundant;    /* weighted: points whose power cell vanished */
     int64_t redundant_first; /* the smallest such index, or -1 */
     size_t n_finite;       /* finite tetrahedra */
+    size_t n_big_cavities; /* cavities with more than 63 boundary vertices (hash-linked) */
 } cvm__tet3;
 
 /* An empty store on ctx (not owned). */

@@ -191,6 +191,7 @@ void cvm__tet3_link_around(cvm__tet3 *T)
     uint32_t stamp;
     if (T->etab && link_small(T))
         return;
+    T->n_big_cavities++;
     if (++T->stamp == 0) { /* wrapped: forget every old entry */
         memset(T->hash, 0, T->hashcap * sizeof *T->hash);
         T->stamp = 1;

@@ -9,7 +9,8 @@ Rows: uniform random points in the unit cube (1e5 and CVM_BENCH3_N, default
 Each timing is the median of CVM_BENCH3_REPS runs (default 3) of the build
 and its output arrays; both wall and process CPU seconds are given, because on
 a shared machine CPU time is the fairer of the two. ratio = cvmesh / TetGen
-(< 1: cvmesh faster). qhull runs only up to CVM_BENCH3_QHULL_MAX points
+(< 1: cvmesh faster); build / b_ratio: cvmesh's build alone, without the
+canonical sorted output (TetGen's time always includes its output arrays). qhull runs only up to CVM_BENCH3_QHULL_MAX points
 (default 2e5; it took 93 s for 1e6 here). B/tet: cvmesh's peak heap through a
 counting allocator (points, store, workspace and output); TetGen's growth of
 the peak RSS during its run. Every cvmesh row passes cvm__tet3_check().
@@ -74,9 +75,9 @@ def main():
     print("# load average at start: %s" % " ".join(open("/proc/loadavg").read().split()[:3]))
     if not have_tetgen:
         print("# TetGen driver not built (no /usr/include/tetgen.h or no C++ compiler): its columns are -")
-    print("%-20s %8s %8s %8s %8s %8s %8s %8s %8s %9s %9s %7s %7s" % (
-        "case", "n", "cpu_cvm", "cpu_tg", "ratio", "wall_cvm", "wall_tg", "w_ratio", "cpu_qh",
-        "tets_cvm", "tets_tg", "B/t_cvm", "B/t_tg"))
+    print("%-20s %8s %8s %8s %8s %8s %8s %8s %8s %8s %9s %9s %7s %7s" % (
+        "case", "n", "cpu_cvm", "cpu_tg", "ratio", "build", "b_ratio", "wall_cvm", "wall_tg",
+        "cpu_qh", "tets_cvm", "tets_tg", "B/t_cvm", "B/t_tg"))
     for name, pts in cases():
         pts = np.ascontiguousarray(pts, dtype=np.float64)
         path = os.path.join(tmp, "pts.bin")
@@ -85,10 +86,11 @@ def main():
         t = run(TETGEN, path) if have_tetgen else None
         q = qhull_time(pts) if len(pts) <= QHULL_MAX else None
         fmt = lambda x, f="%8.3f": (f % x) if x is not None else "%8s" % "-"
-        print("%-20s %8d %s %s %s %s %s %s %s %9d %9s %7.0f %7s" % (
+        print("%-20s %8d %s %s %s %s %s %s %s %s %9d %9s %7.0f %7s" % (
             name, len(pts), fmt(c["cpu"]), fmt(t and t["cpu"]),
-            fmt(t and c["cpu"] / t["cpu"]), fmt(c["wall"]), fmt(t and t["wall"]),
-            fmt(t and c["wall"] / t["wall"]), fmt(q and q[0]), c["tets"],
+            fmt(t and c["cpu"] / t["cpu"]), fmt(c["cpu_build"]),
+            fmt(t and c["cpu_build"] / t["cpu"]), fmt(c["wall"]), fmt(t and t["wall"]),
+            fmt(q and q[0]), c["tets"],
             t["tets"] if t else "-", c["peak_bytes"] / c["tets"],
             ("%7.0f" % (t["peak_bytes"] / t["tets"])) if t else "-"), flush=True)
 
