@@ -126,6 +126,41 @@ START_TEST(weighted_twins_follow_the_power_rule)
 }
 END_TEST
 
+/* Integer grid with weights in {0, 1, 2}: power ties everywhere, decided by
+ * power3d_sos; regular by the exact check and the same bytes for any seed. */
+START_TEST(weighted_lattice_ties_are_consistent)
+{
+    int g = 8, x, y, z;
+    size_t n = 0, nt1, nt2, red;
+    double xyz[3 * 512], w[512];
+    uint64_t seed;
+    int32_t *a, *b;
+    cvm__ctx ctx;
+    cvm__tet3 T;
+    cvm__ctx_init_default(&ctx);
+    for (x = 0; x < g; x++)
+        for (y = 0; y < g; y++)
+            for (z = 0; z < g; z++) {
+                xyz[3 * n] = x, xyz[3 * n + 1] = y, xyz[3 * n + 2] = z;
+                w[n] = (double)((x + 2 * y + 3 * z) % 3);
+                n++;
+            }
+    a = d3test_build(&T, &ctx, xyz, w, n, 1, &nt1);
+    red = T.n_redundant;
+    cvm__tet3_free(&T);
+    for (seed = 2; seed < 6; seed++) {
+        b = d3test_build(&T, &ctx, xyz, w, n, seed, &nt2);
+        ck_assert_uint_eq(T.n_redundant, red);
+        ck_assert_uint_eq(nt1, nt2);
+        ck_assert(memcmp(a, b, 4 * nt1 * sizeof *a) == 0);
+        cvm__tet3_free(&T);
+        free(b);
+    }
+    ck_assert_int_eq(d3test_euler(a, nt1), 1);
+    free(a);
+}
+END_TEST
+
 TCase *delaunay3_weighted_tcase(void)
 {
     TCase *tc = tcase_create("weighted3");
@@ -133,5 +168,6 @@ TCase *delaunay3_weighted_tcase(void)
     tcase_add_test(tc, swallowed_vertex_is_reported_for_every_order);
     tcase_add_test(tc, random_weights_are_regular_and_seed_independent);
     tcase_add_test(tc, weighted_twins_follow_the_power_rule);
+    tcase_add_test(tc, weighted_lattice_ties_are_consistent);
     return tc;
 }
