@@ -55,74 +55,89 @@ static int canonical_tet(const cvm__tet3 *T, size_t t, int32_t *o)
     return 1;
 }
 
-#define DIGIT_BITS 11
+#define LOW_BITS 11
 
-/* Stable LSD radix sort of the tetrahedra by their first vertex, `passes`
- * passes of DIGIT_BITS bits from src to dst and back, ending in `out`
- * (which is src or dst by the parity of passes). Streaming writes into 2048
- * buckets: far cheaper than scattering by a random-looking index. */
-static void radix_by_first(int32_t *src, int32_t *dst, size_t nt, int passes, size_t *count)
+/* Stable counting sort of the n tetrahedra src[lo..) of one high bucket by
+ * the low LOW_BITS bits of their first vertex into dst (in cache: a bucket
+ * holds about 6.75 * 2^LOW_BITS tetrahedra). */
+static void sort_low(const int32_t *src, int32_t *dst, size_t n, size_t *count)
 {
-    int pass;
-    size_t i;
-    for (pass = 0; pass < passes; pass++) {
-        int shift = pass * DIGIT_BITS;
-        size_t sum = 0, mask = ((size_t)1 << DIGIT_BITS) - 1;
-        int32_t *t;
-        memset(count, 0, ((size_t)1 << DIGIT_BITS) * sizeof *count);
-        for (i = 0; i < nt; i++)
-            count[((size_t)src[4 * i] >> shift) & mask]++;
-        for (i = 0; i <= mask; i++) {
-            size_t c = count[i];
-            count[i] = sum;
-            sum += c;
+    size_t i, sum = 0, mask = ((size_t)1 << LOW_BITS) - 1;
+    memset(count, 0, ((size_t)1 << LOW_BITS) * sizeof *count);
+    for (i = 0; i < n; i++)
+        count[(size_t)src[4 * i] & mask]++;
+    for (i = 0; i <= mask; i++) {
+        size_t c = count[i];
+        count[i] = sum;
+        sum += c;
+    }
+    for (i = 0; i < n; i++)
+        memcpy(dst + 4 * count[(size_t)src[4 * i] & mask]++, src + 4 * i, 4 * sizeof *src);
+}
+
+/* Sort each run of equal first vertices (about 6 on average) by the rest. */
+static void sort_runs(int32_t *dst, size_t nt)
+{
+    size_t lo, hi, j, k;
+    for (lo = 0; lo < nt; lo = hi) {
+        for (hi = lo + 1; hi < nt && dst[4 * hi] == dst[4 * lo]; hi++)
+            ;
+        if (hi - lo > 64) { /* a vertex of very high degree (the centre of a sphere) */
+            qsort(dst + 4 * lo, hi - lo, 4 * sizeof *dst, cmp_tet);
+            continue;
         }
-        for (i = 0; i < nt; i++)
-            memcpy(dst + 4 * count[((size_t)src[4 * i] >> shift) & mask]++, src + 4 * i,
-                   4 * sizeof *src);
-        t = src, src = dst, dst = t;
+        for (j = lo + 1; j < hi; j++) {
+            int32_t key[4];
+            memcpy(key, dst + 4 * j, sizeof key);
+            for (k = j; k > lo && tail_less(key, dst + 4 * (k - 1)); k--)
+                memcpy(dst + 4 * k, dst + 4 * (k - 1), sizeof key);
+            memcpy(dst + 4 * k, key, sizeof key);
+        }
     }
 }
 
+/* Two-level sort on the first vertex: one streaming scatter by its high bits
+ * (counted while the canonical forms are written), then a counting sort of
+ * each bucket by the low bits in cache, then the runs. */
 cvm_status cvm__tet3_copy_tets(cvm__tet3 *T, int32_t *dst)
 {
-    size_t nt = T->n_finite, i, m = 0, lo, *count;
-    int32_t *tmp, *first;
-    int passes = 1;
-    while (passes * DIGIT_BITS < 31 && ((size_t)1 << (passes * DIGIT_BITS)) < T->np)
-        passes++;
-    count = cvm__malloc(T->ctx, ((size_t)1 << DIGIT_BITS) * sizeof *count);
+    size_t nt = T->n_finite, nhigh = (T->np >> LOW_BITS) + 1, i, m = 0, sum = 0;
+    size_t *start, *low;
+    int32_t *tmp;
+    start = cvm__calloc(T->ctx, nhigh + 1, sizeof *start);
+    low = cvm__malloc(T->ctx, ((size_t)1 << LOW_BITS) * sizeof *low);
     tmp = cvm__malloc(T->ctx, 4 * nt * sizeof *tmp + 1);
-    if (!count || !tmp) {
-        cvm__free(T->ctx, count);
+    if (!start || !low || !tmp) {
+        cvm__free(T->ctx, start);
+        cvm__free(T->ctx, low);
         cvm__free(T->ctx, tmp);
         return cvm__nomem(T->ctx);
     }
-    /* write so that the last radix pass lands in dst */
-    first = passes % 2 ? tmp : dst;
     for (i = 0; i < T->nslot; i++)
-        if (canonical_tet(T, i, first + 4 * m))
+        if (canonical_tet(T, i, tmp + 4 * m)) {
+            start[(size_t)tmp[4 * m] >> LOW_BITS]++;
             m++;
-    radix_by_first(first, first == tmp ? dst : tmp, nt, passes, count);
-    /* each run of equal first vertices (about 6 on average): sort by the rest */
-    for (lo = 0; lo < nt;) {
-        size_t hi = lo + 1, j, k;
-        while (hi < nt && dst[4 * hi] == dst[4 * lo])
-            hi++;
-        if (hi - lo > 64) { /* a vertex of very high degree (the centre of a sphere) */
-            qsort(dst + 4 * lo, hi - lo, 4 * sizeof *dst, cmp_tet);
-        } else {
-            for (j = lo + 1; j < hi; j++) {
-                int32_t key[4];
-                memcpy(key, dst + 4 * j, sizeof key);
-                for (k = j; k > lo && tail_less(key, dst + 4 * (k - 1)); k--)
-                    memcpy(dst + 4 * k, dst + 4 * (k - 1), sizeof key);
-                memcpy(dst + 4 * k, key, sizeof key);
-            }
         }
-        lo = hi;
+    for (i = 0; i <= nhigh; i++) {
+        size_t c = start[i];
+        start[i] = sum;
+        sum += c;
     }
-    cvm__free(T->ctx, count);
+    for (i = 0; i < nt; i++) { /* after this, bucket h spans [start[h - 1], start[h]) */
+        size_t h = (size_t)tmp[4 * i] >> LOW_BITS;
+        memcpy(dst + 4 * start[h]++, tmp + 4 * i, 4 * sizeof *tmp);
+    }
+    for (i = 0, sum = 0; i < nhigh; i++) {
+        size_t lo = sum, hi = start[i];
+        sum = hi;
+        if (hi - lo < 2)
+            continue;
+        sort_low(dst + 4 * lo, tmp + 4 * lo, hi - lo, low);
+        memcpy(dst + 4 * lo, tmp + 4 * lo, 4 * (hi - lo) * sizeof *tmp);
+    }
+    sort_runs(dst, nt);
+    cvm__free(T->ctx, start);
+    cvm__free(T->ctx, low);
     cvm__free(T->ctx, tmp);
     return CVM_OK;
 }
