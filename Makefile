@@ -3,7 +3,7 @@
 #   make demo         install missing packages, build, mesh the NACA 0012 of examples/data (.vtu + .svg + .png)
 #   make check        install missing packages, build, run every test (see CHECK_STEPS below)
 #   make fuzz         run each libFuzzer target for FUZZ_LONG_TIME seconds (clang)
-#   make bench        benchmarks side by side with Triangle / scipy (tests/bench)
+#   make bench        benchmarks side by side with Triangle / TetGen / scipy (tests/bench)
 #   make install PREFIX=/usr/local [DESTDIR=...]
 #   make amalgamation one-file build/amalgamation/cvmesh.c + cvmesh.h
 #   make clean

@@ -5,11 +5,16 @@
 #include "delaunay3/delaunay3_internal.h"
 #include "geom/geom_internal.h"
 
-#define PT(T, v) ((T)->xyz + 3 * (size_t)(v))
+#define PT(T, v) ((T)->pt[v].x)
 
-static cvm_status check_finite(cvm__tet3 *T, const double *xyz, const double *w, size_t n)
+/* Finite input, within the range where the predicates' exact stages cannot
+ * underflow (lib/geom/geom_internal.h): every nonzero coordinate (and square
+ * root of a weight) at least 2^-100 times the largest. */
+static cvm_status check_input(cvm__tet3 *T, const double *xyz, const double *w, size_t n)
 {
+    double big = 0.0;
     size_t i;
+    int k;
     for (i = 0; i < n; i++) {
         const double *p = xyz + 3 * i;
         if (!isfinite(p[0]) || !isfinite(p[1]) || !isfinite(p[2]))
@@ -19,6 +24,22 @@ static cvm_status check_finite(cvm__tet3 *T, const double *xyz, const double *w,
         if (w && !isfinite(w[i]))
             return cvm__error(T->ctx, CVM_E_INPUT_NONFINITE, CVM_ENT_INPUT_POINT, (int64_t)i,
                               "point %zu has a non-finite weight %g", i, w[i]);
+        for (k = 0; k < 3; k++)
+            big = fabs(p[k]) > big ? fabs(p[k]) : big;
+        if (w && sqrt(fabs(w[i])) > big)
+            big = sqrt(fabs(w[i]));
+    }
+    for (i = 0; i < n; i++) {
+        const double *p = xyz + 3 * i;
+        for (k = 0; k < 4; k++) {
+            double c = k < 3 ? fabs(p[k]) : w ? sqrt(fabs(w[i])) : 0.0;
+            if (c != 0.0 && c < ldexp(big, -100))
+                return cvm__error(T->ctx, CVM_E_INPUT_DEGENERATE, CVM_ENT_INPUT_POINT,
+                                  (int64_t)i,
+                                  "point %zu has a %s of magnitude %g, more than 2^100 below the "
+                                  "largest magnitude %g: outside the range of exact arithmetic",
+                                  i, k < 3 ? "coordinate" : "weight root", c, big);
+        }
     }
     return CVM_OK;
 }
@@ -160,14 +181,13 @@ static cvm_status alloc_points(cvm__tet3 *T, const double *xyz, const double *w,
     size_t i;
     cvm_status s;
     T->np = n;
-    T->xyz = cvm__malloc(ctx, 3 * n * sizeof *T->xyz);
+    T->pt = cvm__calloc(ctx, n, sizeof *T->pt);
     T->orig = cvm__malloc(ctx, n * sizeof *T->orig);
     T->merged = cvm__malloc(ctx, n * sizeof *T->merged);
     T->outid = cvm__malloc(ctx, n * sizeof *T->outid);
     T->fate = cvm__calloc(ctx, n, 1);
-    T->vloc = cvm__calloc(ctx, n, sizeof *T->vloc);
     T->etab = cvm__calloc(ctx, CVM__T3_ETAB * CVM__T3_ETAB, sizeof *T->etab);
-    if (!T->xyz || !T->orig || !T->merged || !T->outid || !T->fate || !T->vloc || !T->etab)
+    if (!T->pt || !T->orig || !T->merged || !T->outid || !T->fate || !T->etab)
         return CVM_E_NOMEM;
     if (w) {
         T->w = cvm__malloc(ctx, n * sizeof *T->w);
@@ -176,12 +196,15 @@ static cvm_status alloc_points(cvm__tet3 *T, const double *xyz, const double *w,
         if (!T->w || !T->vseen || !T->vkeep)
             return CVM_E_NOMEM;
     }
+    T->small_int = w == NULL;
+    for (i = 0; i < 3 * n && T->small_int; i++)
+        T->small_int = fabs(xyz[i]) <= 256.0 && xyz[i] == (double)(int)xyz[i];
     s = cvm__tet3_brio_order(ctx, xyz, n, seed, T->orig);
     if (s != CVM_OK)
         return s;
     for (i = 0; i < n; i++) {
         const double *p = xyz + 3 * (size_t)T->orig[i];
-        T->xyz[3 * i] = p[0], T->xyz[3 * i + 1] = p[1], T->xyz[3 * i + 2] = p[2];
+        T->pt[i].x[0] = p[0], T->pt[i].x[1] = p[1], T->pt[i].x[2] = p[2];
         if (w)
             T->w[i] = w[T->orig[i]];
         T->merged[i] = -1;
@@ -200,7 +223,7 @@ cvm_status cvm__tet3_build(cvm__tet3 *T, const double *xyz, const double *w, siz
     if (n > CVM__T3_MAX_POINTS)
         return cvm__error(T->ctx, CVM_E_TOO_LARGE, CVM_ENT_NONE, -1,
                           "%zu points: the 3D kernel takes at most %zu", n, CVM__T3_MAX_POINTS);
-    s = check_finite(T, xyz, w, n);
+    s = check_input(T, xyz, w, n);
     if (s != CVM_OK)
         return s;
     if (n < 4)

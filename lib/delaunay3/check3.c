@@ -4,7 +4,7 @@
 #include "delaunay3/delaunay3_internal.h"
 #include "geom/geom_internal.h"
 
-#define PT(T, v) ((T)->xyz + 3 * (size_t)(v))
+#define PT(T, v) ((T)->pt[v].x)
 
 static int vname(const cvm__tet3 *T, int32_t v)
 {

@@ -58,6 +58,14 @@ typedef struct cvm__t3_bface {
     uint8_t lid[4]; /* small local ids of the vertices, for the edge table */
 } cvm__t3_bface;
 
+/* A point, with the scratch word of the edge table next to its coordinates
+ * (read anyway by the predicates, so it is in cache when needed). */
+typedef struct cvm__t3_point {
+    double x[3];
+    uint32_t loc; /* (stamp << 7) | local id in the current cavity boundary */
+    uint32_t pad;
+} cvm__t3_point;
+
 /* Entry of the edge table that pairs the new tetrahedra around the point. */
 typedef struct cvm__t3_hent {
     uint64_t key;
@@ -68,7 +76,7 @@ typedef struct cvm__t3_hent {
 typedef struct cvm__tet3 {
     cvm__ctx *ctx;
     size_t np;        /* input points */
-    double *xyz;      /* 3 np: the points in insertion order (internal ids) */
+    cvm__t3_point *pt; /* np: the points in insertion order (internal ids) */
     double *w;        /* np weights in insertion order; NULL for Delaunay */
     int32_t *orig;    /* internal id -> input index (the SoS index) */
     int32_t *merged;  /* internal id -> internal id of the vertex a duplicate merged into, or -1 */
@@ -94,13 +102,14 @@ typedef struct cvm__tet3 {
     cvm__t3_hent *hash;
     size_t hashcap;   /* a power of two */
     uint32_t stamp;
-    uint32_t *vloc;   /* per internal vertex: (stamp << 7) | local id in the current cavity */
     uint32_t lstamp;
-    int32_t *etab;    /* CVM__T3_ETAB^2 edge table of local ids: slot + 1 waiting for its pair */
+    int32_t *etab;    /* CVM__T3_ETAB^2 table of directed edges (local ids) -> face slot */
     uint32_t *vseen;  /* weighted only: per internal vertex, stamp of the last cavity it was in */
     uint32_t *vkeep;  /* ... and of the last cavity boundary it was on */
     uint32_t vstamp;  /* the stamp of the current cavity for vseen / vkeep */
 
+    int small_int;    /* unweighted and every coordinate an integer in [-256, 256]: the plain
+                       * floating-point insphere / orient3d are exact (geom_internal.h) */
     int32_t last;     /* a finite tetrahedron made by the last insertion: next walk's start */
     uint64_t walk;    /* xorshift state of the walk's face order (deterministic) */
 
@@ -110,6 +119,7 @@ typedef struct cvm__tet3 {
     size_t n_redundant;    /* weighted: points whose power cell vanished */
     int64_t redundant_first; /* the smallest such index, or -1 */
     size_t n_finite;       /* finite tetrahedra */
+    size_t n_big_cavities; /* cavities with more than 63 boundary vertices (hash-linked) */
 } cvm__tet3;
 
 /* An empty store on ctx (not owned). */
@@ -126,7 +136,9 @@ void cvm__tet3_free(cvm__tet3 *T);
  * whose power cell is empty are left out and counted in n_redundant.
  * @return CVM_OK
  *         CVM_E_INPUT_NONFINITE  a coordinate or weight is NaN or infinite (message names the point)
- *         CVM_E_INPUT_DEGENERATE fewer than 4 distinct points, or all collinear or coplanar
+ *         CVM_E_INPUT_DEGENERATE fewer than 4 distinct points, or all collinear or coplanar,
+ *                                or a nonzero coordinate (square root of |weight|) more than
+ *                                2^100 below the largest: beyond the exact predicates' range
  *         CVM_E_TOO_LARGE        n above CVM__T3_MAX_POINTS
  *         CVM_E_NOMEM            (the store stays freeable)
  */
@@ -145,7 +157,7 @@ void cvm__tet3_point_fates(const cvm__tet3 *T, uint8_t *fate_out, int32_t *into_
  * (orientation kept) so that its smallest index comes first and the smallest
  * of the other three second; the list is then sorted lexicographically.
  * Identical input gives identical bytes whatever the seed or insertion order.
- * @return CVM_OK or CVM_E_NOMEM (a temporary array of n + 1 counters). */
+ * @return CVM_OK or CVM_E_NOMEM (a temporary copy of the output and n / 2048 + 2048 counters). */
 cvm_status cvm__tet3_copy_tets(cvm__tet3 *T, int32_t *dst);
 
 /* Re-verify the store with exact predicates: live slots, symmetric adjacency

@@ -4,7 +4,7 @@
 #include "delaunay3/delaunay3_internal.h"
 #include "geom/geom_internal.h"
 
-#define PT(T, v) ((T)->xyz + 3 * (size_t)(v))
+#define PT(T, v) ((T)->pt[v].x)
 #if defined(__GNUC__)
 #define CVM__PREFETCH(p) __builtin_prefetch(p)
 #else
@@ -18,6 +18,12 @@ static inline int finite_conflict(const cvm__tet3 *T, const int32_t *v, int32_t 
     const double *a = PT(T, v[0]), *b = PT(T, v[1]), *c = PT(T, v[2]), *d = PT(T, v[3]);
     const double *e = PT(T, p);
     const int32_t *o = T->orig;
+    if (T->small_int) { /* lattices: exact in doubles, ties straight to the perturbation */
+        double perm, det = cvm__insphere_fp(a, b, c, d, e, &perm);
+        if (det != 0.0)
+            return det > 0.0;
+        return cvm__sos3d_tie(a, b, c, d, e, o[v[0]], o[v[1]], o[v[2]], o[v[3]], o[p], 1) > 0;
+    }
     if (!T->w) {
         double det = cvm__insphere_inline(a, b, c, d, e);
         if (det != 0.0)
@@ -39,7 +45,8 @@ static inline int in_conflict(const cvm__tet3 *T, int32_t t, int32_t p)
     double o;
     if (v[3] != CVM__T3_GHOST)
         return finite_conflict(T, v, p);
-    o = cvm__orient3d_inline(PT(T, v[0]), PT(T, v[1]), PT(T, v[2]), PT(T, p));
+    o = T->small_int ? cvm__orient3d_fp(PT(T, v[0]), PT(T, v[1]), PT(T, v[2]), PT(T, p))
+                     : cvm__orient3d_inline(PT(T, v[0]), PT(T, v[1]), PT(T, v[2]), PT(T, p));
     if (o != 0.0)
         return o > 0.0;
     n = CVM__T3_TN(T, 4 * (size_t)t + 3) >> 2;
@@ -74,7 +81,8 @@ static int32_t locate(cvm__tet3 *T, int32_t p)
             if (slot == came)
                 continue;
             keep = q[f], q[f] = pp;
-            o = cvm__orient3d_inline(q[0], q[1], q[2], q[3]);
+            o = T->small_int ? cvm__orient3d_fp(q[0], q[1], q[2], q[3])
+                             : cvm__orient3d_inline(q[0], q[1], q[2], q[3]);
             q[f] = keep;
             if (o < 0.0) {
                 came = CVM__T3_TN(T, slot);

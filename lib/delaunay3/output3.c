@@ -43,7 +43,7 @@ static int cmp_tet(const void *pa, const void *pb)
     return 0;
 }
 
-/* The canonical form of the finite tetrahedron in slot t, or 0 for a ghost or free slot. */
+/* The canonical form of the finite tetrahedron in slot t into o, or 0 for a ghost or free slot. */
 static int canonical_tet(const cvm__tet3 *T, size_t t, int32_t *o)
 {
     const int32_t *v = T->tt + 8 * t;
@@ -55,29 +55,33 @@ static int canonical_tet(const cvm__tet3 *T, size_t t, int32_t *o)
     return 1;
 }
 
-cvm_status cvm__tet3_copy_tets(cvm__tet3 *T, int32_t *dst)
+#define LOW_BITS 11
+
+/* Stable counting sort of the n tetrahedra src[lo..) of one high bucket by
+ * the low LOW_BITS bits of their first vertex into dst (in cache: a bucket
+ * holds about 6.75 * 2^LOW_BITS tetrahedra). */
+static void sort_low(const int32_t *src, int32_t *dst, size_t n, size_t *count)
 {
-    size_t n = T->np, i, *start, sum = 0;
-    int32_t o[4];
-    start = cvm__calloc(T->ctx, n + 1, sizeof *start);
-    if (!start)
-        return cvm__nomem(T->ctx);
-    /* counting sort on the first vertex (two passes over the store), then an
-     * insertion sort of each bucket (about 6 tetrahedra on average) */
-    for (i = 0; i < T->nslot; i++)
-        if (canonical_tet(T, i, o))
-            start[o[0]]++;
-    for (i = 0; i <= n; i++) {
-        size_t c = start[i];
-        start[i] = sum;
+    size_t i, sum = 0, mask = ((size_t)1 << LOW_BITS) - 1;
+    memset(count, 0, ((size_t)1 << LOW_BITS) * sizeof *count);
+    for (i = 0; i < n; i++)
+        count[(size_t)src[4 * i] & mask]++;
+    for (i = 0; i <= mask; i++) {
+        size_t c = count[i];
+        count[i] = sum;
         sum += c;
     }
-    for (i = 0; i < T->nslot; i++)
-        if (canonical_tet(T, i, o))
-            memcpy(dst + 4 * start[o[0]]++, o, sizeof o);
-    for (i = 0, sum = 0; i < n; i++) {
-        size_t lo = sum, hi = start[i], j, k;
-        sum = hi;
+    for (i = 0; i < n; i++)
+        memcpy(dst + 4 * count[(size_t)src[4 * i] & mask]++, src + 4 * i, 4 * sizeof *src);
+}
+
+/* Sort each run of equal first vertices (about 6 on average) by the rest. */
+static void sort_runs(int32_t *dst, size_t nt)
+{
+    size_t lo, hi, j, k;
+    for (lo = 0; lo < nt; lo = hi) {
+        for (hi = lo + 1; hi < nt && dst[4 * hi] == dst[4 * lo]; hi++)
+            ;
         if (hi - lo > 64) { /* a vertex of very high degree (the centre of a sphere) */
             qsort(dst + 4 * lo, hi - lo, 4 * sizeof *dst, cmp_tet);
             continue;
@@ -90,6 +94,50 @@ cvm_status cvm__tet3_copy_tets(cvm__tet3 *T, int32_t *dst)
             memcpy(dst + 4 * k, key, sizeof key);
         }
     }
+}
+
+/* Two-level sort on the first vertex: one streaming scatter by its high bits
+ * (counted while the canonical forms are written), then a counting sort of
+ * each bucket by the low bits in cache, then the runs. */
+cvm_status cvm__tet3_copy_tets(cvm__tet3 *T, int32_t *dst)
+{
+    size_t nt = T->n_finite, nhigh = (T->np >> LOW_BITS) + 1, i, m = 0, sum = 0;
+    size_t *start, *low;
+    int32_t *tmp;
+    start = cvm__calloc(T->ctx, nhigh + 1, sizeof *start);
+    low = cvm__malloc(T->ctx, ((size_t)1 << LOW_BITS) * sizeof *low);
+    tmp = cvm__malloc(T->ctx, 4 * nt * sizeof *tmp + 1);
+    if (!start || !low || !tmp) {
+        cvm__free(T->ctx, start);
+        cvm__free(T->ctx, low);
+        cvm__free(T->ctx, tmp);
+        return cvm__nomem(T->ctx);
+    }
+    for (i = 0; i < T->nslot; i++)
+        if (canonical_tet(T, i, tmp + 4 * m)) {
+            start[(size_t)tmp[4 * m] >> LOW_BITS]++;
+            m++;
+        }
+    for (i = 0; i <= nhigh; i++) {
+        size_t c = start[i];
+        start[i] = sum;
+        sum += c;
+    }
+    for (i = 0; i < nt; i++) { /* after this, bucket h spans [start[h - 1], start[h]) */
+        size_t h = (size_t)tmp[4 * i] >> LOW_BITS;
+        memcpy(dst + 4 * start[h]++, tmp + 4 * i, 4 * sizeof *tmp);
+    }
+    for (i = 0, sum = 0; i < nhigh; i++) {
+        size_t lo = sum, hi = start[i];
+        sum = hi;
+        if (hi - lo < 2)
+            continue;
+        sort_low(dst + 4 * lo, tmp + 4 * lo, hi - lo, low);
+        memcpy(dst + 4 * lo, tmp + 4 * lo, 4 * (hi - lo) * sizeof *tmp);
+    }
+    sort_runs(dst, nt);
     cvm__free(T->ctx, start);
+    cvm__free(T->ctx, low);
+    cvm__free(T->ctx, tmp);
     return CVM_OK;
 }

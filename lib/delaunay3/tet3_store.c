@@ -15,7 +15,7 @@ void cvm__tet3_init(cvm__tet3 *T, cvm__ctx *ctx)
 void cvm__tet3_free(cvm__tet3 *T)
 {
     cvm__ctx *ctx = T->ctx;
-    cvm__free(ctx, T->xyz);
+    cvm__free(ctx, T->pt);
     cvm__free(ctx, T->w);
     cvm__free(ctx, T->orig);
     cvm__free(ctx, T->merged);
@@ -28,7 +28,6 @@ void cvm__tet3_free(cvm__tet3 *T)
     cvm__free(ctx, T->dead);
     cvm__free(ctx, T->bf);
     cvm__free(ctx, T->hash);
-    cvm__free(ctx, T->vloc);
     cvm__free(ctx, T->etab);
     cvm__free(ctx, T->vseen);
     cvm__free(ctx, T->vkeep);
@@ -118,25 +117,33 @@ static uint64_t edge_key(int32_t a, int32_t b)
     return x < y ? ((uint64_t)x << 32) | y : ((uint64_t)y << 32) | x;
 }
 
-/* Positions of a tetrahedron other than k and f (k != f). */
-static const int8_t other2[4][4][2] = {
-    { { -1, -1 }, { 2, 3 }, { 1, 3 }, { 1, 2 } },
-    { { 2, 3 }, { -1, -1 }, { 0, 3 }, { 0, 2 } },
-    { { 1, 3 }, { 0, 3 }, { -1, -1 }, { 0, 1 } },
-    { { 1, 2 }, { 0, 2 }, { 0, 1 }, { -1, -1 } },
+/* The boundary of a tetrahedron (0 1 2 3) is the sum of its faces f with sign
+ * (-1)^f: face 0 = (1 2 3), 1 = (2 0 3), 2 = (0 1 3), 3 = (1 0 2). The new
+ * tetrahedra around a point are positively oriented (ghosts included), so the
+ * cavity boundary is a closed surface on which every edge appears once in each
+ * direction. dir[f][k]: the positions (from, to) of the edge of face f that
+ * does not hold position k, directed as in face f. */
+static const int8_t dir[4][4][2] = {
+    { { -1, -1 }, { 2, 3 }, { 3, 1 }, { 1, 2 } },
+    { { 3, 2 }, { -1, -1 }, { 0, 3 }, { 2, 0 } },
+    { { 1, 3 }, { 3, 0 }, { -1, -1 }, { 0, 1 } },
+    { { 2, 1 }, { 0, 2 }, { 1, 0 }, { -1, -1 } },
 };
 
 /* The usual cavity: at most CVM__T3_ETAB - 1 vertices on its boundary. Each
- * gets a local id (the ghost 0), so an edge indexes a small table directly;
- * every edge is met exactly twice, so the table is all zero again afterwards.
- * Returns 0 (nothing changed) when the boundary has too many vertices. */
+ * gets a local id (the ghost 0), a directed edge indexes a small table
+ * directly: the first pass files each side face under its edge, the second
+ * reads the face filed under the reversed edge (no branch on which came
+ * first). Returns 0 (nothing linked) when the boundary has too many vertices. */
 static int link_small(cvm__tet3 *T)
 {
     uint32_t stamp;
     size_t i;
     int nv = 1;
     if (++T->lstamp >= (UINT32_C(1) << 25)) { /* wrapped: forget every old id */
-        memset(T->vloc, 0, T->np * sizeof *T->vloc);
+        size_t v;
+        for (v = 0; v < T->np; v++)
+            T->pt[v].loc = 0;
         T->lstamp = 1;
     }
     stamp = T->lstamp;
@@ -151,33 +158,29 @@ static int link_small(cvm__tet3 *T)
                 b->lid[j] = 0;
                 continue;
             }
-            if (T->vloc[x] >> 7 != stamp) {
+            if (T->pt[x].loc >> 7 != stamp) {
                 if (nv == CVM__T3_ETAB)
                     return 0;
-                T->vloc[x] = (stamp << 7) | (uint32_t)nv++;
+                T->pt[x].loc = (stamp << 7) | (uint32_t)nv++;
             }
-            b->lid[j] = (uint8_t)(T->vloc[x] & 127u);
+            b->lid[j] = (uint8_t)(T->pt[x].loc & 127u);
         }
     }
     for (i = 0; i < T->nbf; i++) {
         const cvm__t3_bface *b = &T->bf[i];
         int k;
-        for (k = 0; k < 4; k++) {
-            int x, y;
-            int32_t *e, slot;
-            if (k == b->f)
-                continue;
-            x = b->lid[other2[k][b->f][0]], y = b->lid[other2[k][b->f][1]];
-            e = &T->etab[x < y ? x * CVM__T3_ETAB + y : y * CVM__T3_ETAB + x];
-            slot = 4 * b->tet + k;
-            if (*e) {
-                CVM__T3_TN(T, slot) = *e - 1;
-                CVM__T3_TN(T, *e - 1) = slot;
-                *e = 0;
-            } else {
-                *e = slot + 1;
-            }
-        }
+        for (k = 0; k < 4; k++)
+            if (k != b->f)
+                T->etab[b->lid[dir[b->f][k][0]] * CVM__T3_ETAB + b->lid[dir[b->f][k][1]]] =
+                    4 * b->tet + k;
+    }
+    for (i = 0; i < T->nbf; i++) {
+        const cvm__t3_bface *b = &T->bf[i];
+        int k;
+        for (k = 0; k < 4; k++)
+            if (k != b->f)
+                CVM__T3_TN(T, 4 * b->tet + k) =
+                    T->etab[b->lid[dir[b->f][k][1]] * CVM__T3_ETAB + b->lid[dir[b->f][k][0]]];
     }
     return 1;
 }
@@ -188,6 +191,7 @@ void cvm__tet3_link_around(cvm__tet3 *T)
     uint32_t stamp;
     if (T->etab && link_small(T))
         return;
+    T->n_big_cavities++;
     if (++T->stamp == 0) { /* wrapped: forget every old entry */
         memset(T->hash, 0, T->hashcap * sizeof *T->hash);
         T->stamp = 1;

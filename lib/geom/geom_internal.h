@@ -186,9 +186,13 @@ static inline double cvm__orient3d_inline(const double *a, const double *b, cons
     return cvm__orient3d_adapt(a, b, c, d);
 }
 
-/* cvm__insphere with its filter inlined into the caller (hot loops). */
-static inline double cvm__insphere_inline(const double *a, const double *b, const double *c,
-                                          const double *d, const double *e)
+/* The insphere determinant in plain floating point, and the permanent that
+ * bounds its rounding error (the filter of cvm__insphere_inline). When every
+ * coordinate is an integer of magnitude at most 256, every difference is at
+ * most D = 512 and every intermediate value an integer of magnitude at most
+ * 72 D^5 < 2^53, so the result is exact. */
+static inline double cvm__insphere_fp(const double *a, const double *b, const double *c,
+                                      const double *d, const double *e, double *permanent)
 {
     double aex = a[0] - e[0], bex = b[0] - e[0], cex = c[0] - e[0], dex = d[0] - e[0];
     double aey = a[1] - e[1], bey = b[1] - e[1], cey = c[1] - e[1], dey = d[1] - e[1];
@@ -206,20 +210,47 @@ static inline double cvm__insphere_inline(const double *a, const double *b, cons
     double blift = bex * bex + bey * bey + bez * bez;
     double clift = cex * cex + cey * cey + cez * cez;
     double dlift = dex * dex + dey * dey + dez * dez;
-    double det = (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
     double aezp = fabs(aez), bezp = fabs(bez), cezp = fabs(cez), dezp = fabs(dez);
     double abp = fabs(aexbey) + fabs(bexaey), bcp = fabs(bexcey) + fabs(cexbey);
     double cdp = fabs(cexdey) + fabs(dexcey), dap = fabs(dexaey) + fabs(aexdey);
     double acp = fabs(aexcey) + fabs(cexaey), bdp = fabs(bexdey) + fabs(dexbey);
-    double permanent = (aezp * bcp + bezp * acp + cezp * abp) * dlift
-                       + (dezp * abp + aezp * bdp + bezp * dap) * clift
-                       + (cezp * dap + dezp * acp + aezp * cdp) * blift
-                       + (bezp * cdp + cezp * bdp + dezp * bcp) * alift;
+    *permanent = (aezp * bcp + bezp * acp + cezp * abp) * dlift
+                 + (dezp * abp + aezp * bdp + bezp * dap) * clift
+                 + (cezp * dap + dezp * acp + aezp * cdp) * blift
+                 + (bezp * cdp + cezp * bdp + dezp * bcp) * alift;
+    return (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
+}
+
+/* cvm__insphere with its filter inlined into the caller (hot loops). */
+static inline double cvm__insphere_inline(const double *a, const double *b, const double *c,
+                                          const double *d, const double *e)
+{
+    double permanent, det = cvm__insphere_fp(a, b, c, d, e, &permanent);
     double errbound = cvm__isp_errbound_a * permanent + cvm__filter_floor;
     if (fabs(det) > errbound)
         return det;
     return cvm__insphere_adapt(a, b, c, d, e);
 }
+
+/* The orient3d determinant in plain floating point: exact when every
+ * coordinate is an integer of magnitude at most 256 (6 * 512^3 < 2^53). */
+static inline double cvm__orient3d_fp(const double *a, const double *b, const double *c,
+                                      const double *d)
+{
+    double adx = a[0] - d[0], bdx = b[0] - d[0], cdx = c[0] - d[0];
+    double ady = a[1] - d[1], bdy = b[1] - d[1], cdy = c[1] - d[1];
+    double adz = a[2] - d[2], bdz = b[2] - d[2], cdz = c[2] - d[2];
+    return adz * (bdx * cdy - cdx * bdy) + bdz * (cdx * ady - adx * cdy)
+           + cdz * (adx * bdy - bdx * ady);
+}
+
+/* The tie-breaking stage of cvm__insphere_sos / cvm__power3d_sos alone, for
+ * a caller that already knows the determinant is exactly 0: the sign of the
+ * first nonzero lift derivative. fp_exact != 0 promises coordinates that make
+ * cvm__orient3d_fp exact (integers of magnitude <= 256). */
+int cvm__sos3d_tie(const double *a, const double *b, const double *c, const double *d,
+                   const double *e, int64_t ia, int64_t ib, int64_t ic, int64_t id, int64_t ie,
+                   int fp_exact);
 
 /* Constructions: plain doubles, possibly inexact; every later decision about
  * their result is taken by the exact predicates above. */

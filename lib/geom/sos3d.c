@@ -15,9 +15,9 @@
  * by e. tests/unit/geom/test_sos3d.c checks them against exactly evaluated
  * determinants with hierarchically small weights.
  */
-static int sos3d_lift_sign(const double *a, const double *b, const double *c, const double *d,
-                           const double *e, int64_t ia, int64_t ib, int64_t ic, int64_t id,
-                           int64_t ie)
+int cvm__sos3d_tie(const double *a, const double *b, const double *c, const double *d,
+                   const double *e, int64_t ia, int64_t ib, int64_t ic, int64_t id, int64_t ie,
+                   int fp_exact)
 {
     int64_t idx[5];
     int order[5], i, j, tmp;
@@ -31,14 +31,14 @@ static int sos3d_lift_sign(const double *a, const double *b, const double *c, co
     for (i = 0; i < 5; i++) {
         int k = order[i];
         double deriv;
-        if (k == 4) {
-            deriv = -cvm__orient3d_inline(a, b, c, d);
-        } else {
-            const double *q[4];
-            q[0] = a, q[1] = b, q[2] = c, q[3] = d;
+        const double *q[4];
+        q[0] = a, q[1] = b, q[2] = c, q[3] = d;
+        if (k != 4)
             q[k] = e;
-            deriv = cvm__orient3d_inline(q[0], q[1], q[2], q[3]);
-        }
+        deriv = fp_exact ? cvm__orient3d_fp(q[0], q[1], q[2], q[3])
+                         : cvm__orient3d_inline(q[0], q[1], q[2], q[3]);
+        if (k == 4)
+            deriv = -deriv;
         if (deriv > 0.0)
             return 1;
         if (deriv < 0.0)
@@ -56,7 +56,7 @@ int cvm__insphere_sos(const double *a, const double *b, const double *c, const d
         return 1;
     if (det < 0.0)
         return -1;
-    return sos3d_lift_sign(a, b, c, d, e, ia, ib, ic, id, ie);
+    return cvm__sos3d_tie(a, b, c, d, e, ia, ib, ic, id, ie, 0);
 }
 
 int cvm__power3d_sos(const double *a, const double *b, const double *c, const double *d,
@@ -68,5 +68,5 @@ int cvm__power3d_sos(const double *a, const double *b, const double *c, const do
         return 1;
     if (det < 0.0)
         return -1;
-    return sos3d_lift_sign(a, b, c, d, e, ia, ib, ic, id, ie);
+    return cvm__sos3d_tie(a, b, c, d, e, ia, ib, ic, id, ie, 0);
 }

@@ -1,7 +1,7 @@
 #!/bin/sh
 # run.sh BUILD DOMAINS - build the benchmark drivers and run every benchmark on
 # the example domains (DOMAINS/*.poly) beside its peer (Triangle, scipy and Gmsh
-# from PyPI, in the venv under BUILD).
+# from PyPI, in the venv under BUILD; TetGen 1.5 from Debian for the 3D engine).
 set -eu
 BUILD=$1
 DOMAINS=$2
@@ -9,6 +9,16 @@ CC=${CC:-cc}
 mkdir -p "$BUILD/bench"
 $CC -std=c99 -O2 -Iinclude -o "$BUILD/bench/bench_delaunay" tests/bench/bench_delaunay.c \
     "$BUILD/lib/libcvmesh.a" -lm -fopenmp
+# The 3D engine has no public handle yet: its driver includes lib/ and links the static library.
+$CC -std=c99 -O2 -Iinclude -Ilib -D_POSIX_C_SOURCE=200809L -o "$BUILD/bench/bench_delaunay3" \
+    tests/bench/bench_delaunay3.c "$BUILD/lib/libcvmesh.a" -lm -fopenmp
+# TetGen (AGPL, Debian libtet1.5-dev) is linked only into this test-only C++ driver.
+CXX=${CXX:-c++}
+if [ -f /usr/include/tetgen.h ] && command -v "$CXX" >/dev/null 2>&1; then
+    "$CXX" -O2 -o "$BUILD/bench/bench_tetgen3" tests/bench/bench_tetgen3.cxx -ltet
+else
+    echo "# run.sh: no tetgen.h or C++ compiler: bench_delaunay3.py runs without TetGen"
+fi
 VENV="$BUILD/venv"
 if [ ! -x "$VENV/bin/python" ]; then
     python3 -m venv "$VENV"
@@ -37,7 +47,7 @@ if command -v dpkg-query >/dev/null 2>&1; then
     fi
 fi
 OMP_NUM_THREADS=1 "$VENV/bin/python" tests/bench/bench_delaunay.py "$BUILD" "$DOMAINS"
-for extra in tests/bench/bench_refine.py tests/bench/bench_dual.py; do
+for extra in tests/bench/bench_refine.py tests/bench/bench_dual.py tests/bench/bench_delaunay3.py; do
     if [ -f "$extra" ]; then
         OMP_NUM_THREADS=1 "$VENV/bin/python" "$extra" "$BUILD" "$DOMAINS"
     fi

@@ -140,6 +140,48 @@ START_TEST(points_on_a_sphere)
 }
 END_TEST
 
+/* Point 0 at the centre of 600 points on a sphere: inserted late, its
+ * cavity is the whole ball (a boundary of 600 vertices, linked through the
+ * hash table), and all its tetrahedra share the first vertex 0 (the sort's
+ * long-run path). Every seed gives the same bytes. */
+START_TEST(centre_of_a_sphere_has_the_whole_ball_as_cavity)
+{
+    size_t n = 601, i, nt, nt0 = 0, big = 0;
+    double *xyz = malloc(3 * n * sizeof *xyz);
+    int32_t *first = NULL, *tets;
+    uint64_t seed;
+    cvm__ctx ctx;
+    cvm__tet3 T;
+    cvm__ctx_init_default(&ctx);
+    d3test_random(xyz, n, 61);
+    xyz[0] = xyz[1] = xyz[2] = 0.0;
+    for (i = 1; i < n; i++) {
+        double *p = xyz + 3 * i, r;
+        p[0] -= 0.5, p[1] -= 0.5, p[2] -= 0.5;
+        r = sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+        p[0] /= r, p[1] /= r, p[2] /= r;
+    }
+    for (seed = 1; seed <= 8; seed++) {
+        tets = d3test_build(&T, &ctx, xyz, NULL, n, seed, &nt);
+        big += T.n_big_cavities;
+        for (i = 0; i < nt; i++)
+            ck_assert_int_eq(tets[4 * i], 0); /* every tetrahedron is a cone from the centre */
+        if (!first) {
+            first = tets, nt0 = nt;
+        } else {
+            ck_assert_uint_eq(nt, nt0);
+            ck_assert(memcmp(first, tets, 4 * nt * sizeof *tets) == 0);
+            free(tets);
+        }
+        cvm__tet3_free(&T);
+    }
+    ck_assert_uint_gt(big, 0);
+    ck_assert_int_eq(d3test_euler(first, nt0), 1);
+    free(first);
+    free(xyz);
+}
+END_TEST
+
 /* Different seeds insert in different orders; the canonical output is the
  * same bytes (the perturbed tetrahedralisation is unique), on random input
  * and on the fully degenerate lattice. Scaling by 2^-900 or 2^900 changes nothing either. */
@@ -183,6 +225,7 @@ TCase *delaunay3_build_tcase(void)
     tcase_add_test(tc, perturbed_bcc_lattice_is_delaunay);
     tcase_add_test(tc, integer_grid_volume_is_exact);
     tcase_add_test(tc, points_on_a_sphere);
+    tcase_add_test(tc, centre_of_a_sphere_has_the_whole_ball_as_cavity);
     tcase_add_test(tc, same_bytes_for_any_seed_and_scale);
     return tc;
 }

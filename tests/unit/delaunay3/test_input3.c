@@ -86,6 +86,9 @@ START_TEST(degenerate_input_is_refused_with_a_message)
     d3test_random(p, 3, 1);
     expect_refused(p, 3, CVM_E_INPUT_DEGENERATE, "3 points");
     expect_refused(p, 0, CVM_E_INPUT_DEGENERATE, "0 points");
+    d3test_random(p, 64, 3);
+    p[3 * 40 + 2] = 1e-40; /* 2^-132 of the largest coordinate */
+    expect_refused(p, 64, CVM_E_INPUT_DEGENERATE, "point 40");
 }
 END_TEST
 
@@ -144,14 +147,14 @@ START_TEST(check_names_a_corrupted_tetrahedron)
         int k, j;
         for (k = 0; k < 4; k++)
             for (j = 0; j < 3; j++)
-                c[j] += 0.25 * T.xyz[3 * q[k] + j];
+                c[j] += 0.25 * T.pt[q[k]].x[j];
         for (k = 0; k < (int)T.np; k++) {
             if (k == q[0] || k == q[1] || k == q[2] || k == q[3] || T.fate[k] != CVM__T3_VERTEX)
                 continue;
-            memcpy(keep, T.xyz + 3 * k, sizeof keep);
-            memcpy(T.xyz + 3 * k, c, sizeof c); /* vertex k now sits at the centroid of t */
+            memcpy(keep, T.pt[k].x, sizeof keep);
+            memcpy(T.pt[k].x, c, sizeof c); /* vertex k now sits at the centroid of t */
             ck_assert_int_eq(cvm__tet3_check(&T), CVM_E_INTERNAL);
-            memcpy(T.xyz + 3 * k, keep, sizeof keep);
+            memcpy(T.pt[k].x, keep, sizeof keep);
             break;
         }
         (void)v;
@@ -159,6 +162,59 @@ START_TEST(check_names_a_corrupted_tetrahedron)
     ck_assert_int_eq(cvm__tet3_check(&T), CVM_OK);
     cvm__tet3_free(&T);
     free(tets);
+}
+END_TEST
+
+/* Hundreds of tiny inputs on a 4x4x4 grid (duplicates, coplanar and
+ * cospherical subsets, flat hulls): each is refused as degenerate or passes
+ * the exact check, and the small-integer path, a second seed and the input
+ * scaled by 2^-3 (generic predicates) all give the same bytes. */
+START_TEST(tiny_degenerate_inputs_agree_across_paths)
+{
+    uint64_t r = 12345;
+    int trial;
+    for (trial = 0; trial < 400; trial++) {
+        double xyz[3 * 64], sc[3 * 64];
+        size_t n, i, nt[3];
+        int32_t *out[3];
+        int k, ok = 1;
+        r = r * 6364136223846793005u + 1442695040888963407u;
+        n = 4 + (size_t)((r >> 33) % 50);
+        for (i = 0; i < 3 * n; i++) {
+            r = r * 6364136223846793005u + 1442695040888963407u;
+            xyz[i] = (double)((r >> 40) % 4);
+            sc[i] = xyz[i] * 0.125;
+        }
+        for (k = 0; k < 3 && ok; k++) {
+            cvm__ctx ctx;
+            cvm__tet3 T;
+            cvm_status s;
+            cvm__ctx_init_default(&ctx);
+            cvm__tet3_init(&T, &ctx);
+            s = cvm__tet3_build(&T, k == 2 ? sc : xyz, NULL, n, k == 1 ? 7 : 1);
+            if (s == CVM_E_INPUT_DEGENERATE) {
+                ck_assert_int_eq(k, 0);
+                ok = 0;
+            } else {
+                ck_assert_msg(s == CVM_OK, "trial %d: %s", trial, ctx.errmsg);
+                ck_assert_msg(cvm__tet3_check(&T) == CVM_OK, "trial %d path %d: %s", trial, k,
+                              ctx.errmsg);
+                out[k] = malloc(4 * T.n_finite * sizeof(int32_t) + 16);
+                ck_assert_int_eq(cvm__tet3_copy_tets(&T, out[k]), CVM_OK);
+                nt[k] = T.n_finite;
+            }
+            cvm__tet3_free(&T);
+        }
+        if (!ok)
+            continue;
+        for (k = 1; k < 3; k++) {
+            ck_assert_uint_eq(nt[k], nt[0]);
+            ck_assert_msg(memcmp(out[0], out[k], 4 * nt[0] * sizeof(int32_t)) == 0,
+                          "trial %d: path %d differs", trial, k);
+        }
+        for (k = 0; k < 3; k++)
+            free(out[k]);
+    }
 }
 END_TEST
 
@@ -170,5 +226,6 @@ TCase *delaunay3_input_tcase(void)
     tcase_add_test(tc, degenerate_input_is_refused_with_a_message);
     tcase_add_test(tc, non_finite_input_names_the_point);
     tcase_add_test(tc, check_names_a_corrupted_tetrahedron);
+    tcase_add_test(tc, tiny_degenerate_inputs_agree_across_paths);
     return tc;
 }

@@ -126,6 +126,100 @@ START_TEST(weighted_twins_follow_the_power_rule)
 }
 END_TEST
 
+/* Integer grid with weights in {0, 1, 2}: power ties everywhere, decided by
+ * power3d_sos; regular by the exact check and the same bytes for any seed. */
+START_TEST(weighted_lattice_ties_are_consistent)
+{
+    int g = 8, x, y, z;
+    size_t n = 0, nt1, nt2, red;
+    double xyz[3 * 512], w[512];
+    uint64_t seed;
+    int32_t *a, *b;
+    cvm__ctx ctx;
+    cvm__tet3 T;
+    cvm__ctx_init_default(&ctx);
+    for (x = 0; x < g; x++)
+        for (y = 0; y < g; y++)
+            for (z = 0; z < g; z++) {
+                xyz[3 * n] = x, xyz[3 * n + 1] = y, xyz[3 * n + 2] = z;
+                w[n] = (double)((x + 2 * y + 3 * z) % 3);
+                n++;
+            }
+    a = d3test_build(&T, &ctx, xyz, w, n, 1, &nt1);
+    red = T.n_redundant;
+    cvm__tet3_free(&T);
+    for (seed = 2; seed < 6; seed++) {
+        b = d3test_build(&T, &ctx, xyz, w, n, seed, &nt2);
+        ck_assert_uint_eq(T.n_redundant, red);
+        ck_assert_uint_eq(nt1, nt2);
+        ck_assert(memcmp(a, b, 4 * nt1 * sizeof *a) == 0);
+        cvm__tet3_free(&T);
+        free(b);
+    }
+    ck_assert_int_eq(d3test_euler(a, nt1), 1);
+    free(a);
+}
+END_TEST
+
+/* Tiny weighted inputs on a 4x4x4 grid with weights in {0, 1, 2}: the exact
+ * check passes and two seeds and the input scaled by 2^-3 (weights 2^-6)
+ * agree byte for byte, redundant counts included. */
+START_TEST(tiny_weighted_inputs_agree_across_seeds_and_scales)
+{
+    uint64_t r = 777;
+    int trial;
+    for (trial = 0; trial < 300; trial++) {
+        double xyz[3 * 64], sc[3 * 64], w[64], ws[64];
+        size_t n, i, nt[3], red[3];
+        int32_t *out[3];
+        int k, ok = 1;
+        r = r * 6364136223846793005u + 1442695040888963407u;
+        n = 5 + (size_t)((r >> 33) % 50);
+        for (i = 0; i < 3 * n; i++) {
+            r = r * 6364136223846793005u + 1442695040888963407u;
+            xyz[i] = (double)((r >> 40) % 4);
+            sc[i] = xyz[i] * 0.125;
+        }
+        for (i = 0; i < n; i++) {
+            r = r * 6364136223846793005u + 1442695040888963407u;
+            w[i] = (double)((r >> 40) % 3);
+            ws[i] = w[i] / 64.0;
+        }
+        for (k = 0; k < 3 && ok; k++) {
+            cvm__ctx ctx;
+            cvm__tet3 T;
+            cvm_status s;
+            cvm__ctx_init_default(&ctx);
+            cvm__tet3_init(&T, &ctx);
+            s = cvm__tet3_build(&T, k == 2 ? sc : xyz, k == 2 ? ws : w, n, k == 1 ? 7 : 1);
+            if (s == CVM_E_INPUT_DEGENERATE) {
+                ck_assert_int_eq(k, 0);
+                ok = 0;
+            } else {
+                ck_assert_msg(s == CVM_OK, "trial %d: %s", trial, ctx.errmsg);
+                ck_assert_msg(cvm__tet3_check(&T) == CVM_OK, "trial %d path %d: %s", trial, k,
+                              ctx.errmsg);
+                out[k] = malloc(4 * T.n_finite * sizeof(int32_t) + 16);
+                ck_assert_int_eq(cvm__tet3_copy_tets(&T, out[k]), CVM_OK);
+                nt[k] = T.n_finite;
+                red[k] = T.n_redundant;
+            }
+            cvm__tet3_free(&T);
+        }
+        if (!ok)
+            continue;
+        for (k = 1; k < 3; k++) {
+            ck_assert_uint_eq(nt[k], nt[0]);
+            ck_assert_uint_eq(red[k], red[0]);
+            ck_assert_msg(memcmp(out[0], out[k], 4 * nt[0] * sizeof(int32_t)) == 0,
+                          "trial %d: path %d differs", trial, k);
+        }
+        for (k = 0; k < 3; k++)
+            free(out[k]);
+    }
+}
+END_TEST
+
 TCase *delaunay3_weighted_tcase(void)
 {
     TCase *tc = tcase_create("weighted3");
@@ -133,5 +227,7 @@ TCase *delaunay3_weighted_tcase(void)
     tcase_add_test(tc, swallowed_vertex_is_reported_for_every_order);
     tcase_add_test(tc, random_weights_are_regular_and_seed_independent);
     tcase_add_test(tc, weighted_twins_follow_the_power_rule);
+    tcase_add_test(tc, weighted_lattice_ties_are_consistent);
+    tcase_add_test(tc, tiny_weighted_inputs_agree_across_seeds_and_scales);
     return tc;
 }

@@ -8,6 +8,7 @@ int32_t *d3test_build(cvm__tet3 *T, cvm__ctx *ctx, const double *xyz, const doub
                       uint64_t seed, size_t *nt)
 {
     int32_t *tets;
+    size_t i;
     cvm_status s;
     cvm__tet3_init(T, ctx);
     s = cvm__tet3_build(T, xyz, w, n, seed);
@@ -18,6 +19,19 @@ int32_t *d3test_build(cvm__tet3 *T, cvm__ctx *ctx, const double *xyz, const doub
     ck_assert_ptr_nonnull(tets);
     ck_assert_int_eq(cvm__tet3_copy_tets(T, tets), CVM_OK);
     *nt = T->n_finite;
+    /* the canonical form: smallest index first, smallest of the rest second,
+     * and the list strictly increasing lexicographically */
+    for (i = 0; i < *nt; i++) {
+        const int32_t *t = tets + 4 * i;
+        ck_assert(t[0] < t[1] && t[0] < t[2] && t[0] < t[3] && t[1] < t[2] && t[1] < t[3]);
+        if (i > 0) {
+            const int32_t *u = t - 4;
+            ck_assert(u[0] < t[0]
+                      || (u[0] == t[0]
+                          && (u[1] < t[1]
+                              || (u[1] == t[1] && (u[2] < t[2] || (u[2] == t[2] && u[3] < t[3]))))));
+        }
+    }
     return tets;
 }
 

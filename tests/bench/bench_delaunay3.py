@@ -1,0 +1,99 @@
+#!/usr/bin/env python3
+"""3D Delaunay benchmark: cvmesh's engine (lib/delaunay3) side by side with
+TetGen 1.5 (linked directly, tests/bench/bench_tetgen3.cxx) and scipy's qhull,
+on the same points, in the same run, on one core.
+
+Rows: uniform random points in the unit cube (1e5 and CVM_BENCH3_N, default
+1e6), and an exact and a 1e-9-perturbed BCC lattice of CVM_BENCH3_BCC^3 cells
+(default 40: about 1.3e5 points; the issue's 100^3 takes minutes per peer).
+Each timing is the median of CVM_BENCH3_REPS runs (default 3) of the build
+and its output arrays; both wall and process CPU seconds are given, because on
+a shared machine CPU time is the fairer of the two. ratio = cvmesh / TetGen
+(< 1: cvmesh faster); build / b_ratio: cvmesh's build alone, without the
+canonical sorted output (TetGen's time always includes its output arrays). qhull runs only up to CVM_BENCH3_QHULL_MAX points
+(default 2e5; it took 93 s for 1e6 here). B/tet: cvmesh's peak heap through a
+counting allocator (points, store, workspace and output); TetGen's growth of
+the peak RSS during its run. Every cvmesh row passes cvm__tet3_check().
+"""
+import json, os, subprocess, sys, tempfile, time
+import numpy as np
+
+BUILD = sys.argv[1]
+N = int(float(os.environ.get("CVM_BENCH3_N", "1e6")))
+BCC = int(os.environ.get("CVM_BENCH3_BCC", "40"))
+REPS = int(os.environ.get("CVM_BENCH3_REPS", "3"))
+QHULL_MAX = int(float(os.environ.get("CVM_BENCH3_QHULL_MAX", "2e5")))
+CVM = os.path.join(BUILD, "bench", "bench_delaunay3")
+TETGEN = os.path.join(BUILD, "bench", "bench_tetgen3")
+
+
+def bcc(k):
+    r = np.arange(k, dtype=float)
+    c = np.stack(np.meshgrid(r, r, r, indexing="ij"), -1).reshape(-1, 3) * 2.0
+    rc = np.arange(k - 1, dtype=float)
+    m = np.stack(np.meshgrid(rc, rc, rc, indexing="ij"), -1).reshape(-1, 3) * 2.0 + 1.0
+    return np.concatenate([c, m])
+
+
+def cases():
+    rng = np.random.default_rng(12345)
+    yield "uniform", rng.random((100000, 3))
+    if N != 100000:
+        yield "uniform", rng.random((N, 3))
+    lat = bcc(BCC)
+    yield "bcc_exact_%d^3" % BCC, lat
+    yield "bcc_perturbed_1e-9", lat + 1e-9 * (rng.random(lat.shape) - 0.5)
+
+
+def run(binary, path):
+    r = subprocess.run([binary, path, str(REPS)], capture_output=True, text=True)
+    if r.returncode != 0:
+        raise SystemExit("%s failed on %s: %s %s" % (binary, path, r.stdout, r.stderr))
+    return json.loads(r.stdout)
+
+
+def qhull_time(pts):
+    from scipy.spatial import Delaunay
+    best = []
+    for _ in range(max(1, min(REPS, 3))):
+        t0 = time.perf_counter()
+        c0 = time.process_time()
+        d = Delaunay(pts)
+        best.append((time.process_time() - c0, time.perf_counter() - t0, len(d.simplices)))
+    best.sort()
+    return best[len(best) // 2]
+
+
+def main():
+    os.environ.setdefault("OMP_NUM_THREADS", "1")
+    have_tetgen = os.path.exists(TETGEN)
+    tmp = tempfile.mkdtemp()
+    print("# cvmesh 3D Delaunay benchmark: medians of %d runs, one core; ratio = cvmesh / TetGen"
+          " (< 1: cvmesh faster)" % REPS)
+    print("# cpu: %s" % next((l.split(":", 1)[1].strip() for l in open("/proc/cpuinfo")
+                              if l.startswith("model name")), "?"))
+    print("# load average at start: %s" % " ".join(open("/proc/loadavg").read().split()[:3]))
+    if not have_tetgen:
+        print("# TetGen driver not built (no /usr/include/tetgen.h or no C++ compiler): its columns are -")
+    print("%-20s %8s %8s %8s %8s %8s %8s %8s %8s %8s %9s %9s %7s %7s" % (
+        "case", "n", "cpu_cvm", "cpu_tg", "ratio", "build", "b_ratio", "wall_cvm", "wall_tg",
+        "cpu_qh", "tets_cvm", "tets_tg", "B/t_cvm", "B/t_tg"))
+    for name, pts in cases():
+        pts = np.ascontiguousarray(pts, dtype=np.float64)
+        path = os.path.join(tmp, "pts.bin")
+        pts.tofile(path)
+        c = run(CVM, path)
+        t = run(TETGEN, path) if have_tetgen else None
+        q = qhull_time(pts) if len(pts) <= QHULL_MAX else None
+        fmt = lambda x, f="%8.3f": (f % x) if x is not None else "%8s" % "-"
+        print("%-20s %8d %s %s %s %s %s %s %s %s %9d %9s %7.0f %7s" % (
+            name, len(pts), fmt(c["cpu"]), fmt(t and t["cpu"]),
+            fmt(t and c["cpu"] / t["cpu"]), fmt(c["cpu_build"]),
+            fmt(t and c["cpu_build"] / t["cpu"]), fmt(c["wall"]), fmt(t and t["wall"]),
+            fmt(q and q[0]), c["tets"],
+            t["tets"] if t else "-", c["peak_bytes"] / c["tets"],
+            ("%7.0f" % (t["peak_bytes"] / t["tets"])) if t else "-"), flush=True)
+
+
+if __name__ == "__main__":
+    main()
