@@ -22,6 +22,7 @@ allowed() {
     delaunay) echo "common geom" ;;
     refine | dual) echo "common geom delaunay" ;;
     io) echo "common" ;;
+    quad) echo "common geom delaunay refine" ;;
     api) echo "common geom delaunay refine dual io" ;;
     cli) echo "" ;;
     *) echo "?" ;;
