@@ -31,97 +31,7 @@
  */
 #include <stdlib.h>
 #include <string.h>
-#include "quad/matching.h"
-
-#define NONE (-1)
-enum { FREE = 0, LAB_S = 1, LAB_T = 2 };
-enum { Q_ZERO = 0, Q_GROW = 1, Q_SS = 2, Q_EXPAND = 3, NQ = 4 };
-#define T_INF INT64_MAX
-
-typedef struct heap_ent { int64_t key; int64_t id; } heap_ent;
-typedef struct heap { heap_ent *a; size_t n, cap; } heap;
-typedef struct tl_ent { cvm_index node, next; } tl_ent;
-
-typedef struct solver {
-    cvm__ctx *ctx;
-    cvm_index n;
-    size_t m;
-    const cvm_index *ends;
-    const int64_t *w;
-    int64_t yfloor;            /* an S vertex at this dual ends its tree (0, or -2C) */
-    int64_t t;                 /* the clock: total dual step so far */
-    size_t *adj_off;           /* vertex -> its edges (CSR) */
-    cvm_index *adj;
-    cvm_index *mate;           /* vertex -> matched vertex or NONE */
-    cvm_index *top;            /* vertex -> its top-level blossom (or itself) */
-    cvm_index *next_leaf;      /* vertex -> next vertex of the same blossom */
-    /* per node (vertices 0..n-1, blossoms n..2n-1) */
-    cvm_index *parent, *nxt, *prv;   /* blossom cycle; nxt/prv among siblings */
-    cvm_index *lfrom, *lto;          /* edge to nxt: lfrom in node, lto in nxt */
-    cvm_index *base, *base_child, *first, *last;
-    cvm_index *labfrom, *labto, *tree;  /* label edge: labfrom outside, labto inside */
-    unsigned char *label, *alive;
-    int64_t *d0, *dt;          /* dual d0 at clock dt; the rate follows the label */
-    cvm_index *mark;
-    cvm_index stamp;
-    cvm_index *free_ids;
-    cvm_index nfree;
-    cvm_index *work;           /* 2n scratch: augmentation tasks, blossom paths */
-    heap q[NQ];
-    cvm_index *tl_head;        /* tree (root vertex) -> list of its top nodes */
-    tl_ent *tl;
-    size_t tl_n, tl_cap;
-    cvm_index tl_free;
-} solver;
-
-static cvm_index other_end(const solver *s, size_t e, cvm_index v)
-{
-    return s->ends[2 * e] == v ? s->ends[2 * e + 1] : s->ends[2 * e];
-}
-
-/* The node's dual now: vertices follow the label of their top blossom, a
- * blossom its own label while it is top-level (constant below). */
-static int64_t dual(const solver *s, cvm_index x)
-{
-    int64_t dt = s->t - s->dt[x];
-    if (x < s->n) {
-        int lab = s->label[s->top[x]];
-        return s->d0[x] + (lab == LAB_S ? -dt : lab == LAB_T ? dt : 0);
-    }
-    if (s->parent[x] != NONE)
-        return s->d0[x];
-    return s->d0[x] + (s->label[x] == LAB_S ? 2 * dt : s->label[x] == LAB_T ? -2 * dt : 0);
-}
-
-static void flush(solver *s, cvm_index x)
-{
-    s->d0[x] = dual(s, x);
-    s->dt[x] = s->t;
-}
-
-static void flush_leaves(solver *s, cvm_index x)
-{
-    cvm_index v;
-    for (v = s->first[x];; v = s->next_leaf[v]) {
-        flush(s, v);
-        if (v == s->last[x])
-            break;
-    }
-}
-
-/* Relabel the top-level node x, fixing its duals at the old rate first. */
-static void set_label(solver *s, cvm_index x, int lab)
-{
-    flush_leaves(s, x);
-    if (x >= s->n)
-        flush(s, x);
-    s->label[x] = (unsigned char)lab;
-}
-
-static int64_t slack(const solver *s, size_t e)
-{
-    return dual(s, s->ends[2 * e]) + dual(s, s->ends[2 * e + 1]) - 4 * s->w[e];
-}
+#include "quad/matching_solver.h"
 
 /* ---- lazy heaps ---- */
 
@@ -130,7 +40,7 @@ static int ent_less(const heap_ent *a, const heap_ent *b)
     return a->key < b->key || (a->key == b->key && a->id < b->id);
 }
 
-static cvm_status heap_push(solver *s, int k, int64_t key, int64_t id)
+cvm_status cvm__mt_heap_push(solver *s, int k, int64_t key, int64_t id)
 {
     heap *h = &s->q[k];
     size_t i;
@@ -209,7 +119,7 @@ static int64_t heap_peek(solver *s, int k)
 
 /* ---- tree lists: the top-level nodes labelled in each tree ---- */
 
-static cvm_status tree_add(solver *s, cvm_index tree, cvm_index node)
+cvm_status cvm__mt_tree_add(solver *s, cvm_index tree, cvm_index node)
 {
     cvm_index i = s->tl_free;
     if (i != NONE) {
@@ -229,12 +139,12 @@ static cvm_status tree_add(solver *s, cvm_index tree, cvm_index node)
 
 /* Push the events that the vertices of x make relevant now that x is S: its
  * own zero crossing, and its edges to S (S-S) and free (grow) nodes. */
-static cvm_status become_s(solver *s, cvm_index x)
+cvm_status cvm__mt_become_s(solver *s, cvm_index x)
 {
     cvm_index v;
     for (v = s->first[x];; v = s->next_leaf[v]) {
         size_t k;
-        if (heap_push(s, Q_ZERO, s->t + dual(s, v) - s->yfloor, v))
+        if (cvm__mt_heap_push(s, Q_ZERO, s->t + dual(s, v) - s->yfloor, v))
             return CVM_E_NOMEM;
         for (k = s->adj_off[v]; k < s->adj_off[v + 1]; k++) {
             size_t e = (size_t)s->adj[k];
@@ -247,9 +157,9 @@ static cvm_status become_s(solver *s, cvm_index x)
                 if (sl & 1)
                     return cvm__error(s->ctx, CVM_E_INTERNAL, CVM_ENT_NONE, (int64_t)e,
                                       "matching: odd slack on S-S edge %zu", e);
-                if (heap_push(s, Q_SS, s->t + sl / 2, (int64_t)e))
+                if (cvm__mt_heap_push(s, Q_SS, s->t + sl / 2, (int64_t)e))
                     return CVM_E_NOMEM;
-            } else if (heap_push(s, Q_GROW, s->t + sl, (int64_t)e)) {
+            } else if (cvm__mt_heap_push(s, Q_GROW, s->t + sl, (int64_t)e)) {
                 return CVM_E_NOMEM;
             }
         }
@@ -260,7 +170,7 @@ static cvm_status become_s(solver *s, cvm_index x)
 }
 
 /* The vertices of x became free: their edges to S nodes may grow trees. */
-static cvm_status become_free(solver *s, cvm_index x)
+cvm_status cvm__mt_become_free(solver *s, cvm_index x)
 {
     cvm_index v;
     for (v = s->first[x];; v = s->next_leaf[v]) {
@@ -268,7 +178,7 @@ static cvm_status become_free(solver *s, cvm_index x)
         for (k = s->adj_off[v]; k < s->adj_off[v + 1]; k++) {
             size_t e = (size_t)s->adj[k];
             if (s->label[s->top[other_end(s, e, v)]] == LAB_S &&
-                heap_push(s, Q_GROW, s->t + slack(s, e), (int64_t)e))
+                cvm__mt_heap_push(s, Q_GROW, s->t + slack(s, e), (int64_t)e))
                 return CVM_E_NOMEM;
         }
         if (v == s->last[x])
@@ -278,7 +188,7 @@ static cvm_status become_free(solver *s, cvm_index x)
 }
 
 /* Unlabel every node of tree (after an augmentation or a flip through it). */
-static cvm_status dissolve(solver *s, cvm_index tree)
+cvm_status cvm__mt_dissolve(solver *s, cvm_index tree)
 {
     cvm_index i, last = NONE;
     for (i = s->tl_head[tree]; i != NONE; i = s->tl[i].next) {
@@ -292,287 +202,13 @@ static cvm_status dissolve(solver *s, cvm_index tree)
     }
     for (i = s->tl_head[tree]; i != NONE; i = s->tl[i].next)
         if (s->tl[i].node != NONE && s->label[s->tl[i].node] == FREE &&
-            become_free(s, s->tl[i].node))
+            cvm__mt_become_free(s, s->tl[i].node))
             return CVM_E_NOMEM;
     if (last != NONE) {
         s->tl[last].next = s->tl_free;
         s->tl_free = s->tl_head[tree];
     }
     s->tl_head[tree] = NONE;
-    return CVM_OK;
-}
-
-/* ---- augmentation ---- */
-
-/* Position of child c in the cycle of b, counted from the base child. */
-static size_t cycle_pos(const solver *s, cvm_index b, cvm_index c)
-{
-    size_t i = 0;
-    cvm_index x;
-    for (x = s->base_child[b]; x != c; x = s->nxt[x])
-        i++;
-    return i;
-}
-
-static cvm_index child_holding(const solver *s, cvm_index b, cvm_index v)
-{
-    cvm_index c = v;
-    while (s->parent[c] != b)
-        c = s->parent[c];
-    return c;
-}
-
-/* Make vertex v the base of blossom b: rematch the even path from v's child
- * to the base child, then each sub-blossom on it, with an explicit task stack
- * (the tasks touch disjoint sub-blossoms, so their order is free). The mate
- * of v itself is the caller's to set. */
-static void augment_blossom(solver *s, cvm_index b0, cvm_index v0)
-{
-    cvm_index *task = s->work;
-    size_t nt = 0;
-    task[nt++] = b0;
-    task[nt++] = v0;
-    while (nt > 0) {
-        cvm_index v = task[--nt], b = task[--nt];
-        cvm_index c = child_holding(s, b, v), x = c, c0 = s->base_child[b];
-        int forward = (cycle_pos(s, b, c) & 1) != 0;
-        if (c >= s->n) {
-            task[nt++] = c;
-            task[nt++] = v;
-        }
-        while (x != c0) {
-            cvm_index x1 = forward ? s->nxt[x] : s->prv[x];
-            cvm_index x2 = forward ? s->nxt[x1] : s->prv[x1];
-            /* the edge x1-x2 becomes matched; a in x1, q in x2 */
-            cvm_index a = forward ? s->lfrom[x1] : s->lto[x2];
-            cvm_index q = forward ? s->lto[x1] : s->lfrom[x2];
-            if (x1 >= s->n) {
-                task[nt++] = x1;
-                task[nt++] = a;
-            }
-            if (x2 >= s->n) {
-                task[nt++] = x2;
-                task[nt++] = q;
-            }
-            s->mate[a] = q;
-            s->mate[q] = a;
-            x = x2;
-        }
-        s->base_child[b] = c;
-        s->base[b] = v;
-    }
-}
-
-/* Rematch from S vertex v up to its tree's root; v gets mate u (NONE: v is
- * left exposed). */
-static void augment_to_root(solver *s, cvm_index v, cvm_index u)
-{
-    for (;;) {
-        cvm_index b = s->top[v], tb, sv, tv;
-        if (b >= s->n)
-            augment_blossom(s, b, v);
-        s->mate[v] = u;
-        if (s->labfrom[b] == NONE)
-            return;
-        tb = s->top[s->labfrom[b]];
-        sv = s->labfrom[tb];
-        tv = s->labto[tb];
-        if (tb >= s->n)
-            augment_blossom(s, tb, tv);
-        s->mate[tv] = sv;
-        v = sv;
-        u = tv;
-    }
-}
-
-/* ---- tree growth, blossoms ---- */
-
-static cvm_status grow(solver *s, cvm_index v, cvm_index u)
-{
-    cvm_index tb = s->top[u], tree = s->tree[s->top[v]], x, sb;
-    if (s->mate[s->base[tb]] == NONE) {
-        /* a free exposed blossom has y = 0 at its base: augment into it */
-        augment_to_root(s, v, u);
-        if (tb >= s->n)
-            augment_blossom(s, tb, u);
-        s->mate[u] = v;
-        return dissolve(s, tree);
-    }
-    set_label(s, tb, LAB_T);
-    s->labfrom[tb] = v;
-    s->labto[tb] = u;
-    if (tree_add(s, tree, tb))
-        return CVM_E_NOMEM;
-    if (tb >= s->n && heap_push(s, Q_EXPAND, s->t + dual(s, tb) / 2, tb))
-        return CVM_E_NOMEM;
-    x = s->mate[s->base[tb]];
-    sb = s->top[x];
-    set_label(s, sb, LAB_S);
-    s->labfrom[sb] = s->base[tb];
-    s->labto[sb] = x;
-    if (tree_add(s, tree, sb))
-        return CVM_E_NOMEM;
-    return become_s(s, sb);
-}
-
-/* The S node above S node x in its tree, or NONE at the root. */
-static cvm_index s_parent(const solver *s, cvm_index x)
-{
-    if (s->labfrom[x] == NONE)
-        return NONE;
-    return s->top[s->labfrom[s->top[s->labfrom[x]]]];
-}
-
-/* Tight edge v-u between two S nodes of one tree: shrink the odd cycle they
- * close into a new S blossom. */
-static cvm_status make_blossom(solver *s, cvm_index v, cvm_index u)
-{
-    cvm_index a = s->top[v], c = s->top[u], lca = NONE, b, i, k, pv = 0, *L = s->work;
-    cvm_index x, nc;
-    if (++s->stamp == INT32_MAX) {
-        for (i = 0; i < 2 * s->n; i++)
-            s->mark[i] = 0;
-        s->stamp = 1;
-    }
-    while (lca == NONE) {
-        if (a != NONE) {
-            if (s->mark[a] == s->stamp)
-                lca = a;
-            s->mark[a] = s->stamp;
-            a = s_parent(s, a);
-        }
-        x = a;
-        a = c;
-        c = x;
-    }
-    /* L = lca, the v side downwards, then the u side upwards */
-    L[0] = lca;
-    for (x = s->top[v]; x != lca; x = s_parent(s, x))
-        pv += 2;
-    k = pv;
-    for (x = s->top[v]; x != lca; x = s_parent(s, x)) {
-        L[k--] = x;
-        L[k--] = s->top[s->labfrom[x]];
-    }
-    nc = pv + 1;
-    for (x = s->top[u]; x != lca; x = s_parent(s, x)) {
-        L[nc++] = x;
-        L[nc++] = s->top[s->labfrom[x]];
-    }
-    if (s->nfree == 0)
-        return cvm__error(s->ctx, CVM_E_INTERNAL, CVM_ENT_NONE, -1, "matching: no blossom id left");
-    b = s->free_ids[--s->nfree];
-    for (i = 0; i < nc; i++) {
-        cvm_index y = L[i], z = L[(i + 1) % nc];
-        if (i < pv) {
-            s->lfrom[y] = s->labfrom[z];
-            s->lto[y] = s->labto[z];
-        } else if (i == pv) {
-            s->lfrom[y] = v;
-            s->lto[y] = u;
-        } else {
-            s->lfrom[y] = s->labto[y];
-            s->lto[y] = s->labfrom[y];
-        }
-        s->nxt[y] = z;
-        s->prv[z] = y;
-        if (y >= s->n)
-            flush(s, y); /* its z stops changing */
-        if (s->label[y] == LAB_T)
-            flush_leaves(s, y); /* T -> S */
-    }
-    for (i = 0; i < nc; i++) {
-        s->parent[L[i]] = b;
-        s->next_leaf[s->last[L[i]]] = s->first[L[(i + 1) % nc]];
-    }
-    s->alive[b] = 1;
-    s->parent[b] = NONE;
-    s->base_child[b] = lca;
-    s->base[b] = s->base[lca];
-    s->first[b] = s->first[lca];
-    s->last[b] = s->last[L[nc - 1]];
-    s->label[b] = LAB_S;
-    s->labfrom[b] = s->labfrom[lca];
-    s->labto[b] = s->labto[lca];
-    s->d0[b] = 0;
-    s->dt[b] = s->t;
-    for (x = s->first[b];; x = s->next_leaf[x]) {
-        s->top[x] = b;
-        if (x == s->last[b])
-            break;
-    }
-    if (tree_add(s, s->tree[lca], b))
-        return CVM_E_NOMEM;
-    for (i = 0; i < nc; i++) /* the former T children (labels below the top stay put) */
-        if (s->label[L[i]] == LAB_T && become_s(s, L[i]))
-            return CVM_E_NOMEM;
-    return CVM_OK;
-}
-
-static cvm_status label_child(solver *s, cvm_index c, int lab, cvm_index from, cvm_index to,
-                              cvm_index tree)
-{
-    s->label[c] = (unsigned char)lab;
-    s->labfrom[c] = from;
-    s->labto[c] = to;
-    if (tree_add(s, tree, c))
-        return CVM_E_NOMEM;
-    if (lab == LAB_T && c >= s->n && heap_push(s, Q_EXPAND, s->t + dual(s, c) / 2, c))
-        return CVM_E_NOMEM;
-    return CVM_OK;
-}
-
-/* T blossom b reached z = 0: its children become top-level; the even path
- * from the child it was entered by to its base child stays in the tree
- * (T, S, ..., T), the other children become free. */
-static cvm_status expand(solver *s, cvm_index b)
-{
-    cvm_index c0 = s->base_child[b], ce = child_holding(s, b, s->labto[b]), x, v;
-    int forward = (cycle_pos(s, b, ce) & 1) != 0;
-    cvm_index tree = s->tree[b];
-    flush_leaves(s, b);
-    x = c0;
-    do {
-        s->parent[x] = NONE;
-        s->label[x] = FREE;
-        if (x >= s->n)
-            s->dt[x] = s->t;
-        for (v = s->first[x];; v = s->next_leaf[v]) {
-            s->top[v] = x;
-            if (v == s->last[x])
-                break;
-        }
-        x = s->nxt[x];
-    } while (x != c0);
-    if (label_child(s, ce, LAB_T, s->labfrom[b], s->labto[b], tree))
-        return CVM_E_NOMEM;
-    for (x = ce; x != c0;) {
-        cvm_index x1 = forward ? s->nxt[x] : s->prv[x];
-        cvm_index x2 = forward ? s->nxt[x1] : s->prv[x1];
-        cvm_status st;
-        if (forward)
-            st = label_child(s, x1, LAB_S, s->lfrom[x], s->lto[x], tree);
-        else
-            st = label_child(s, x1, LAB_S, s->lto[x1], s->lfrom[x1], tree);
-        if (!st && forward)
-            st = label_child(s, x2, LAB_T, s->lfrom[x1], s->lto[x1], tree);
-        else if (!st)
-            st = label_child(s, x2, LAB_T, s->lto[x2], s->lfrom[x2], tree);
-        if (st)
-            return st;
-        x = x2;
-    }
-    s->alive[b] = 0;
-    s->label[b] = FREE;
-    s->free_ids[s->nfree++] = b;
-    x = c0;
-    do {
-        if (s->label[x] == LAB_S && become_s(s, x))
-            return CVM_E_NOMEM;
-        if (s->label[x] == FREE && become_free(s, x))
-            return CVM_E_NOMEM;
-        x = s->nxt[x];
-    } while (x != c0);
     return CVM_OK;
 }
 
@@ -714,11 +350,11 @@ static cvm_status solver_init(solver *s)
     for (v = 0; v < s->n; v++)
         if (s->mate[v] == NONE && s->d0[v] > s->yfloor) {
             s->label[v] = LAB_S;
-            if (tree_add(s, v, v))
+            if (cvm__mt_tree_add(s, v, v))
                 return CVM_E_NOMEM;
         }
     for (v = 0; v < s->n; v++)
-        if (s->label[v] == LAB_S && become_s(s, v))
+        if (s->label[v] == LAB_S && cvm__mt_become_s(s, v))
             return CVM_E_NOMEM;
     return CVM_OK;
 }
@@ -747,23 +383,23 @@ static cvm_status run(solver *s)
         heap_pop(&s->q[which]);
         if (which == Q_ZERO) {
             cvm_index tree = s->tree[s->top[id]];
-            augment_to_root(s, (cvm_index)id, NONE);
-            st = dissolve(s, tree);
+            cvm__mt_augment_to_root(s, (cvm_index)id, NONE);
+            st = cvm__mt_dissolve(s, tree);
         } else if (which == Q_EXPAND) {
-            st = expand(s, (cvm_index)id);
+            st = cvm__mt_expand(s, (cvm_index)id);
         } else {
             cvm_index a = s->ends[2 * id], b = s->ends[2 * id + 1];
             if (which == Q_GROW) {
-                st = s->label[s->top[a]] == LAB_S ? grow(s, a, b) : grow(s, b, a);
+                st = s->label[s->top[a]] == LAB_S ? cvm__mt_grow(s, a, b) : cvm__mt_grow(s, b, a);
             } else if (s->tree[s->top[a]] != s->tree[s->top[b]]) {
                 cvm_index ta = s->tree[s->top[a]], tb = s->tree[s->top[b]];
-                augment_to_root(s, a, b);
-                augment_to_root(s, b, a);
-                st = dissolve(s, ta);
+                cvm__mt_augment_to_root(s, a, b);
+                cvm__mt_augment_to_root(s, b, a);
+                st = cvm__mt_dissolve(s, ta);
                 if (!st)
-                    st = dissolve(s, tb);
+                    st = cvm__mt_dissolve(s, tb);
             } else {
-                st = make_blossom(s, a, b);
+                st = cvm__mt_make_blossom(s, a, b);
             }
         }
         if (st)
