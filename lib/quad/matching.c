@@ -80,11 +80,11 @@ static void heap_pop(heap *h)
 
 /* The key entry (k, id) would have if it were pushed now, or -1 when the
  * entry names no event of its kind any more. */
-static int64_t current_key(const solver *s, int k, int64_t id)
+static int64_t current_key(solver *s, int k, int64_t id)
 {
     if (k == Q_ZERO) {
         cvm_index v = (cvm_index)id;
-        return s->label[s->top[v]] == LAB_S ? s->t + dual(s, v) - s->yfloor : -1;
+        return s->label[top_of(s, v)] == LAB_S ? s->t + dual(s, v) - s->yfloor : -1;
     }
     if (k == Q_EXPAND) {
         cvm_index b = (cvm_index)id;
@@ -93,7 +93,7 @@ static int64_t current_key(const solver *s, int k, int64_t id)
         return s->t + dual(s, b) / 2;
     } else {
         size_t e = (size_t)id;
-        cvm_index a = s->top[s->ends[2 * e]], b = s->top[s->ends[2 * e + 1]];
+        cvm_index a = top_of(s, s->ends[2 * e]), b = top_of(s, s->ends[2 * e + 1]);
         int la = s->label[a], lb = s->label[b];
         if (a == b)
             return -1;
@@ -148,9 +148,9 @@ cvm_status cvm__mt_become_s(solver *s, cvm_index x)
             return CVM_E_NOMEM;
         for (k = s->adj_off[v]; k < s->adj_off[v + 1]; k++) {
             size_t e = (size_t)s->adj[k];
-            cvm_index o = s->top[other_end(s, e, v)];
+            cvm_index o = top_of(s, other_end(s, e, v));
             int64_t sl;
-            if (o == s->top[v] || s->label[o] == LAB_T)
+            if (o == top_of(s, v) || s->label[o] == LAB_T)
                 continue;
             sl = slack(s, e);
             if (s->label[o] == LAB_S) {
@@ -177,7 +177,7 @@ cvm_status cvm__mt_become_free(solver *s, cvm_index x)
         size_t k;
         for (k = s->adj_off[v]; k < s->adj_off[v + 1]; k++) {
             size_t e = (size_t)s->adj[k];
-            if (s->label[s->top[other_end(s, e, v)]] == LAB_S &&
+            if (s->label[top_of(s, other_end(s, e, v))] == LAB_S &&
                 cvm__mt_heap_push(s, Q_GROW, s->t + slack(s, e), (int64_t)e))
                 return CVM_E_NOMEM;
         }
@@ -217,7 +217,8 @@ cvm_status cvm__mt_dissolve(solver *s, cvm_index tree)
 static void solver_free(solver *s)
 {
     int k;
-    void **p[] = {(void **)&s->adj_off, (void **)&s->adj, (void **)&s->mate, (void **)&s->top,
+    void **p[] = {(void **)&s->adj_off, (void **)&s->adj, (void **)&s->mate, (void **)&s->anc,
+                  (void **)&s->ancg, (void **)&s->gen,
                   (void **)&s->next_leaf, (void **)&s->parent, (void **)&s->nxt,
                   (void **)&s->prv, (void **)&s->lfrom, (void **)&s->lto, (void **)&s->base,
                   (void **)&s->base_child, (void **)&s->first, (void **)&s->last,
@@ -239,12 +240,12 @@ static void solver_free(solver *s)
 static cvm_status solver_alloc(solver *s)
 {
     size_t n = (size_t)s->n, n2 = 2 * n + 1, i;
-    cvm_index **ix[] = {&s->mate, &s->top, &s->next_leaf, &s->tl_head, &s->free_ids,
+    cvm_index **ix[] = {&s->mate, &s->next_leaf, &s->tl_head, &s->free_ids,
                         &s->parent, &s->nxt, &s->prv, &s->lfrom, &s->lto, &s->base,
                         &s->base_child, &s->first, &s->last, &s->labfrom, &s->labto,
-                        &s->tree, &s->mark, &s->work};
+                        &s->tree, &s->mark, &s->work, &s->anc};
     for (i = 0; i < sizeof ix / sizeof ix[0]; i++)
-        if (!(*ix[i] = cvm__malloc(s->ctx, (i < 5 ? n + 1 : n2) * sizeof(cvm_index))))
+        if (!(*ix[i] = cvm__malloc(s->ctx, (i < 4 ? n + 1 : n2) * sizeof(cvm_index))))
             return CVM_E_NOMEM;
     s->adj_off = cvm__calloc(s->ctx, n + 2, sizeof *s->adj_off);
     s->adj = cvm__malloc(s->ctx, (2 * s->m + 1) * sizeof *s->adj);
@@ -252,7 +253,10 @@ static cvm_status solver_alloc(solver *s)
     s->alive = cvm__calloc(s->ctx, n2, 1);
     s->d0 = cvm__calloc(s->ctx, n2, sizeof *s->d0);
     s->dt = cvm__calloc(s->ctx, n2, sizeof *s->dt);
-    if (!s->adj_off || !s->adj || !s->label || !s->alive || !s->d0 || !s->dt)
+    s->ancg = cvm__calloc(s->ctx, n2, sizeof *s->ancg);
+    s->gen = cvm__calloc(s->ctx, n2, sizeof *s->gen);
+    if (!s->adj_off || !s->adj || !s->label || !s->alive || !s->d0 || !s->dt || !s->ancg ||
+        !s->gen)
         return CVM_E_NOMEM;
     return CVM_OK;
 }
@@ -335,10 +339,11 @@ static cvm_status solver_init(solver *s)
     s->tl_free = NONE;
     for (v = 0; v < 2 * s->n; v++) {
         s->parent[v] = NONE;
+        s->anc[v] = NONE;
         s->labfrom[v] = s->labto[v] = s->tree[v] = NONE;
         s->mark[v] = 0;
         if (v < s->n) {
-            s->base[v] = s->first[v] = s->last[v] = s->top[v] = v;
+            s->base[v] = s->first[v] = s->last[v] = v;
             s->next_leaf[v] = NONE;
             s->tl_head[v] = NONE;
         }
@@ -382,7 +387,7 @@ static cvm_status run(solver *s)
         id = s->q[which].a[0].id;
         heap_pop(&s->q[which]);
         if (which == Q_ZERO) {
-            cvm_index tree = s->tree[s->top[id]];
+            cvm_index tree = s->tree[top_of(s, id)];
             cvm__mt_augment_to_root(s, (cvm_index)id, NONE);
             st = cvm__mt_dissolve(s, tree);
         } else if (which == Q_EXPAND) {
@@ -390,9 +395,9 @@ static cvm_status run(solver *s)
         } else {
             cvm_index a = s->ends[2 * id], b = s->ends[2 * id + 1];
             if (which == Q_GROW) {
-                st = s->label[s->top[a]] == LAB_S ? cvm__mt_grow(s, a, b) : cvm__mt_grow(s, b, a);
-            } else if (s->tree[s->top[a]] != s->tree[s->top[b]]) {
-                cvm_index ta = s->tree[s->top[a]], tb = s->tree[s->top[b]];
+                st = s->label[top_of(s, a)] == LAB_S ? cvm__mt_grow(s, a, b) : cvm__mt_grow(s, b, a);
+            } else if (s->tree[top_of(s, a)] != s->tree[top_of(s, b)]) {
+                cvm_index ta = s->tree[top_of(s, a)], tb = s->tree[top_of(s, b)];
                 cvm__mt_augment_to_root(s, a, b);
                 cvm__mt_augment_to_root(s, b, a);
                 st = cvm__mt_dissolve(s, ta);

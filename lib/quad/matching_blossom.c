@@ -71,13 +71,13 @@ static void augment_blossom(solver *s, cvm_index b0, cvm_index v0)
 void cvm__mt_augment_to_root(solver *s, cvm_index v, cvm_index u)
 {
     for (;;) {
-        cvm_index b = s->top[v], tb, sv, tv;
+        cvm_index b = top_of(s, v), tb, sv, tv;
         if (b >= s->n)
             augment_blossom(s, b, v);
         s->mate[v] = u;
         if (s->labfrom[b] == NONE)
             return;
-        tb = s->top[s->labfrom[b]];
+        tb = top_of(s, s->labfrom[b]);
         sv = s->labfrom[tb];
         tv = s->labto[tb];
         if (tb >= s->n)
@@ -92,7 +92,7 @@ void cvm__mt_augment_to_root(solver *s, cvm_index v, cvm_index u)
 
 cvm_status cvm__mt_grow(solver *s, cvm_index v, cvm_index u)
 {
-    cvm_index tb = s->top[u], tree = s->tree[s->top[v]], x, sb;
+    cvm_index tb = top_of(s, u), tree = s->tree[top_of(s, v)], x, sb;
     if (s->mate[s->base[tb]] == NONE) {
         /* a free exposed blossom has y = 0 at its base: augment into it */
         cvm__mt_augment_to_root(s, v, u);
@@ -109,7 +109,7 @@ cvm_status cvm__mt_grow(solver *s, cvm_index v, cvm_index u)
     if (tb >= s->n && cvm__mt_heap_push(s, Q_EXPAND, s->t + dual(s, tb) / 2, tb))
         return CVM_E_NOMEM;
     x = s->mate[s->base[tb]];
-    sb = s->top[x];
+    sb = top_of(s, x);
     set_label(s, sb, LAB_S);
     s->labfrom[sb] = s->base[tb];
     s->labto[sb] = x;
@@ -119,18 +119,18 @@ cvm_status cvm__mt_grow(solver *s, cvm_index v, cvm_index u)
 }
 
 /* The S node above S node x in its tree, or NONE at the root. */
-static cvm_index s_parent(const solver *s, cvm_index x)
+static cvm_index s_parent(solver *s, cvm_index x)
 {
     if (s->labfrom[x] == NONE)
         return NONE;
-    return s->top[s->labfrom[s->top[s->labfrom[x]]]];
+    return top_of(s, s->labfrom[top_of(s, s->labfrom[x])]);
 }
 
 /* Tight edge v-u between two S nodes of one tree: shrink the odd cycle they
  * close into a new S blossom. */
 cvm_status cvm__mt_make_blossom(solver *s, cvm_index v, cvm_index u)
 {
-    cvm_index a = s->top[v], c = s->top[u], lca = NONE, b, i, k, pv = 0, *L = s->work;
+    cvm_index a = top_of(s, v), c = top_of(s, u), lca = NONE, b, i, k, pv = 0, *L = s->work;
     cvm_index x, nc;
     if (++s->stamp == INT32_MAX) {
         for (i = 0; i < 2 * s->n; i++)
@@ -150,21 +150,22 @@ cvm_status cvm__mt_make_blossom(solver *s, cvm_index v, cvm_index u)
     }
     /* L = lca, the v side downwards, then the u side upwards */
     L[0] = lca;
-    for (x = s->top[v]; x != lca; x = s_parent(s, x))
+    for (x = top_of(s, v); x != lca; x = s_parent(s, x))
         pv += 2;
     k = pv;
-    for (x = s->top[v]; x != lca; x = s_parent(s, x)) {
+    for (x = top_of(s, v); x != lca; x = s_parent(s, x)) {
         L[k--] = x;
-        L[k--] = s->top[s->labfrom[x]];
+        L[k--] = top_of(s, s->labfrom[x]);
     }
     nc = pv + 1;
-    for (x = s->top[u]; x != lca; x = s_parent(s, x)) {
+    for (x = top_of(s, u); x != lca; x = s_parent(s, x)) {
         L[nc++] = x;
-        L[nc++] = s->top[s->labfrom[x]];
+        L[nc++] = top_of(s, s->labfrom[x]);
     }
     if (s->nfree == 0)
         return cvm__error(s->ctx, CVM_E_INTERNAL, CVM_ENT_NONE, -1, "matching: no blossom id left");
     b = s->free_ids[--s->nfree];
+    s->gen[b]++; /* ancestor links to an earlier blossom of this id are stale */
     for (i = 0; i < nc; i++) {
         cvm_index y = L[i], z = L[(i + 1) % nc];
         if (i < pv) {
@@ -199,11 +200,6 @@ cvm_status cvm__mt_make_blossom(solver *s, cvm_index v, cvm_index u)
     s->labto[b] = s->labto[lca];
     s->d0[b] = 0;
     s->dt[b] = s->t;
-    for (x = s->first[b];; x = s->next_leaf[x]) {
-        s->top[x] = b;
-        if (x == s->last[b])
-            break;
-    }
     if (cvm__mt_tree_add(s, s->tree[lca], b))
         return CVM_E_NOMEM;
     for (i = 0; i < nc; i++) /* the former T children (labels below the top stay put) */
@@ -230,7 +226,7 @@ static cvm_status label_child(solver *s, cvm_index c, int lab, cvm_index from, c
  * (T, S, ..., T), the other children become free. */
 cvm_status cvm__mt_expand(solver *s, cvm_index b)
 {
-    cvm_index c0 = s->base_child[b], ce = child_holding(s, b, s->labto[b]), x, v;
+    cvm_index c0 = s->base_child[b], ce = child_holding(s, b, s->labto[b]), x;
     int forward = (cycle_pos(s, b, ce) & 1) != 0;
     cvm_index tree = s->tree[b];
     flush_leaves(s, b);
@@ -240,11 +236,6 @@ cvm_status cvm__mt_expand(solver *s, cvm_index b)
         s->label[x] = FREE;
         if (x >= s->n)
             s->dt[x] = s->t;
-        for (v = s->first[x];; v = s->next_leaf[v]) {
-            s->top[v] = x;
-            if (v == s->last[x])
-                break;
-        }
         x = s->nxt[x];
     } while (x != c0);
     if (label_child(s, ce, LAB_T, s->labfrom[b], s->labto[b], tree))

@@ -28,7 +28,9 @@ typedef struct solver {
     size_t *adj_off;           /* vertex -> its edges (CSR) */
     cvm_index *adj;
     cvm_index *mate;           /* vertex -> matched vertex or NONE */
-    cvm_index *top;            /* vertex -> its top-level blossom (or itself) */
+    cvm_index *anc;            /* node -> an ancestor blossom (path-compressed), valid */
+    int32_t *ancg;             /* while that blossom lives with generation ancg */
+    int32_t *gen;              /* blossom id -> how often it was reused */
     cvm_index *next_leaf;      /* vertex -> next vertex of the same blossom */
     /* per node (vertices 0..n-1, blossoms n..2n-1) */
     cvm_index *parent, *nxt, *prv;   /* blossom cycle; nxt/prv among siblings */
@@ -54,13 +56,42 @@ static inline cvm_index other_end(const solver *s, size_t e, cvm_index v)
     return s->ends[2 * e] == v ? s->ends[2 * e + 1] : s->ends[2 * e];
 }
 
+/* The top-level blossom holding node v (v itself when none): follows ancestor
+ * links, falls back on parent links where a link names an expanded (or
+ * reused) blossom, and compresses the path. Blossoms are only ever added
+ * above a top-level node or removed from the top, so every live link is an
+ * ancestor; this keeps shrinking a blossom O(children) instead of O(size). */
+static inline cvm_index top_of(solver *s, cvm_index v)
+{
+    cvm_index x = v, r;
+    for (;;) {
+        cvm_index a = s->anc[x];
+        if (a == NONE || !s->alive[a] || s->gen[a] != s->ancg[x]) {
+            a = s->parent[x];
+            if (a == NONE)
+                break;
+            s->anc[x] = a;
+            s->ancg[x] = s->gen[a];
+        }
+        x = a;
+    }
+    r = x;
+    for (x = v; x != r;) {
+        cvm_index next = s->anc[x];
+        s->anc[x] = r;
+        s->ancg[x] = s->gen[r];
+        x = next;
+    }
+    return r;
+}
+
 /* The node's dual now: vertices follow the label of their top blossom, a
  * blossom its own label while it is top-level (constant below). */
-static inline int64_t dual(const solver *s, cvm_index x)
+static inline int64_t dual(solver *s, cvm_index x)
 {
     int64_t dt = s->t - s->dt[x];
     if (x < s->n) {
-        int lab = s->label[s->top[x]];
+        int lab = s->label[top_of(s, x)];
         return s->d0[x] + (lab == LAB_S ? -dt : lab == LAB_T ? dt : 0);
     }
     if (s->parent[x] != NONE)
@@ -93,7 +124,7 @@ static inline void set_label(solver *s, cvm_index x, int lab)
     s->label[x] = (unsigned char)lab;
 }
 
-static inline int64_t slack(const solver *s, size_t e)
+static inline int64_t slack(solver *s, size_t e)
 {
     return dual(s, s->ends[2 * e]) + dual(s, s->ends[2 * e + 1]) - 4 * s->w[e];
 }
