@@ -49,12 +49,20 @@ typedef struct cvm__recombine_in {
     cvm__recombine_method method;
     int perfect;                     /* blossom only: maximum number of quads first, then
                                         maximum quality (CVM__MATCH_MAX_CARDINALITY) */
+    int all_quad;                    /* split every cell of the result: a quad into 4, a
+                                        triangle into 3 quads, through its vertex centroid and
+                                        its edge midpoints (shared between neighbours) */
 } cvm__recombine_in;
 
 /* Mixed cells in the layout of cvm_mesh_copy_cells_mixed(): cell c has type
  * types[c] (CVM_CELL_QUAD = 9 or CVM_CELL_TRIANGLE = 5, VTK codes) and the
  * counter-clockwise point ids conn[offsets[c] .. offsets[c+1]-1]. Cells come
- * in the order of their lowest input triangle. */
+ * in the order of their lowest input triangle. With all_quad, every cell is
+ * a quad and the ids refer to xy: the input points, then one midpoint per
+ * edge, then one centroid per quad-dominant cell (constructed in doubles);
+ * a sub-quad's quality uses its parent cell's metric and is 0 when it is not
+ * strictly convex. nquad and ntri count the quad-dominant cells before the
+ * split. */
 typedef struct cvm__recombine_out {
     size_t ncell, nquad, ntri;
     cvm_index *offsets;   /* ncell + 1 */
@@ -63,6 +71,8 @@ typedef struct cvm__recombine_out {
     cvm_index *source;    /* 2 per cell: the input triangles (-1 second for a triangle) */
     double *quality;      /* per cell: q of a quad, 0 for a triangle */
     double total_quality; /* sum of q over the quads */
+    size_t npts;          /* all_quad: number of points of xy; else 0 */
+    double *xy;           /* all_quad: 2 * npts coordinates; else NULL */
 } cvm__recombine_out;
 
 /*
