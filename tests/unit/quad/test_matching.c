@@ -155,6 +155,35 @@ START_TEST(matching_certified_on_triangulation_dual_graphs)
 }
 END_TEST
 
+START_TEST(matching_certified_on_dense_random_graphs)
+{
+    int k, depth = 0;
+    for (k = 0; k < 12; k++) {
+        qtest_graph g;
+        size_t n = 60 + 20 * (size_t)k, i, j, cap = n * (n - 1) / 2 + 1, card;
+        uint64_t s = 977u * (uint64_t)k + 5u;
+        g.n = n;
+        g.m = 0;
+        g.ends = malloc(2 * cap * sizeof *g.ends);
+        g.w = malloc(cap * sizeof *g.w);
+        ck_assert(g.ends && g.w);
+        for (i = 0; i < n; i++)
+            for (j = i + 1; j < n; j++) {
+                s = s * 6364136223846793005ull + 1442695040888963407ull;
+                if ((s >> 33) % 100 < (uint64_t)(3 + 4 * (k % 4))) {
+                    g.ends[2 * g.m] = (cvm_index)i;
+                    g.ends[2 * g.m + 1] = (cvm_index)j;
+                    g.w[g.m++] = (int64_t)((s >> 12) % (k % 2 ? 7 : 100000));
+                }
+            }
+        solve_certified(&g, CVM__MATCH_MAX_WEIGHT, &card, &depth);
+        solve_certified(&g, CVM__MATCH_MAX_CARDINALITY, &card, &depth);
+        qtest_graph_free(&g);
+    }
+    ck_assert_int_ge(depth, 2);
+}
+END_TEST
+
 START_TEST(matching_nested_blossom_of_two_triangles_in_a_pentagon)
 {
     /* A triangle 0-1-2 inside the odd cycle it forms with 3, 4: the light spokes make
@@ -275,6 +304,7 @@ TCase *quad_matching_tcase(void)
     tcase_add_test(tc, matching_equals_brute_force_on_small_multigraphs);
     tcase_add_test(tc, matching_equals_networkx_on_200_random_graphs);
     tcase_add_test(tc, matching_certified_on_triangulation_dual_graphs);
+    tcase_add_test(tc, matching_certified_on_dense_random_graphs);
     tcase_add_test(tc, matching_nested_blossom_of_two_triangles_in_a_pentagon);
     tcase_add_test(tc, matching_of_empty_graph_and_isolated_vertices);
     tcase_add_test(tc, matching_rejects_bad_edges_naming_them);
