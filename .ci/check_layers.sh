@@ -31,6 +31,7 @@ allowed() {
     io) echo "common" ;;
     surface3) echo "common geom" ;;
     tetgen) echo "common geom" ;;
+    quad) echo "common geom delaunay sizing refine" ;;
     api) echo "common geom delaunay delaunay3 sizing boundary surface3 tetgen refine dual io" ;;
     cli) echo "" ;;
     *) echo "?" ;;
