@@ -21,6 +21,7 @@ allowed() {
     geom) echo "common" ;;
     delaunay) echo "common geom" ;;
     refine | dual) echo "common geom delaunay" ;;
+    quad) echo "common geom delaunay refine" ;;
     io) echo "common" ;;
     api) echo "common geom delaunay refine dual io" ;;
     cli) echo "" ;;
