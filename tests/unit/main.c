@@ -11,6 +11,7 @@ int main(void)
     srunner_add_suite(sr, api_suite());
     srunner_add_suite(sr, refine_suite());
     srunner_add_suite(sr, dual_suite());
+    srunner_add_suite(sr, quad_suite());
     srunner_add_suite(sr, support_suite());
     srunner_run_all(sr, CK_NORMAL);
     failed = srunner_ntests_failed(sr);

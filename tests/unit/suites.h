@@ -9,6 +9,7 @@ Suite *io_suite(void);       /* tests/unit/io/suite.c */
 Suite *api_suite(void);      /* tests/unit/api/suite.c */
 Suite *refine_suite(void);   /* tests/unit/refine/suite.c */
 Suite *dual_suite(void);     /* tests/unit/dual/suite.c */
+Suite *quad_suite(void);     /* tests/unit/quad/suite.c */
 Suite *support_suite(void);  /* tests/unit/support/test_support.c: the test helpers themselves */
 
 #endif
