@@ -9,7 +9,7 @@ endif
 
 fortran: $(STATIC) venv
 	CVM_BUILD=$(abspath $(BUILD)) FC=$(FC) PYTHON=$(VENV_PY) CVMESH_LIB=$(abspath $(STATIC)) \
-	  LIBS="-lm $(OMPFLAGS)" sh bindings/fortran/check.sh --build-only
+	  LIBS="-llbfgs -lm $(OMPFLAGS)" sh bindings/fortran/check.sh --build-only
 
 install-fortran: fortran
 	install -d $(DESTDIR)$(PREFIX)/include $(DESTDIR)$(PREFIX)/lib

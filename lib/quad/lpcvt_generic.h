@@ -6,8 +6,9 @@
  *   CVM__RE(z), CVM__IM(z)  real and imaginary parts (a double)
  *   CVM__MK(re, im)  the number re + i im (re when CVM__R is real)
  *   CVM__GRAD        1: also accumulate dE/d site into L->gsite and dE/d polygon vertex into L->gpv
- * The metric is evaluated at the real part of a point y and extended to first order,
- * M(y) = M(Re y) + i dM(Re y) Im y, which is all a complex step reads. */
+ * The metric is evaluated at the real part of a point y (each quadrature point, or the site when
+ * L->cellwise) and extended to first order, M(y) = M(Re y) + i dM(Re y) Im y, which is all a
+ * complex step reads. */
 
 static void CVM__G(circumcentre)(CVM__R *c, const CVM__R *u, const CVM__R *v, const CVM__R *w)
 {
@@ -51,25 +52,38 @@ static cvm_status CVM__G(fan)(CVM__R *e, cvm__lpcvt *L, const CVM__R *x, const C
 )
 {
     CVM__R area = 0.5 * ((a[0] - x[0]) * (b[1] - x[1]) - (a[1] - x[1]) * (b[0] - x[0])), sum = 0;
+    CVM__R Me[4] = {0, 0, 0, 0};
+    double M[4] = {0, 0, 0, 0}, dM[8] = {0, 0, 0, 0, 0, 0, 0, 0};
     size_t q;
-    int p = L->p;
+    int p = L->p, k;
 #if CVM__GRAD
     double fy[2] = {0, 0}, fyl0[2] = {0, 0}, fyl1[2] = {0, 0}, fx[2] = {0, 0};
 #endif
-    for (q = 0; q < L->nq; q++) {
-        const double *r = L->rule[q];
-        CVM__R y[2], d[2], Me[4], u0, u1;
-        double yr[2], M[4], dM[8];
-        int k;
+    if (L->cellwise) { /* M(x_i) for the whole cell */
+        double xr[2];
         cvm_status st;
-        y[0] = r[0] * x[0] + r[1] * a[0] + r[2] * b[0];
-        y[1] = r[0] * x[1] + r[1] * a[1] + r[2] * b[1];
-        yr[0] = CVM__RE(y[0]);
-        yr[1] = CVM__RE(y[1]);
-        if ((st = cvm__metric_eval_M(&L->metric, yr, M, dM, L->ctx)))
+        xr[0] = CVM__RE(x[0]);
+        xr[1] = CVM__RE(x[1]);
+        if ((st = cvm__metric_eval_M(&L->metric, xr, M, dM, L->ctx)))
             return st;
         for (k = 0; k < 4; k++)
-            Me[k] = CVM__MK(M[k], CVM__IM(y[0]) * dM[k] + CVM__IM(y[1]) * dM[4 + k]);
+            Me[k] = CVM__MK(M[k], CVM__IM(x[0]) * dM[k] + CVM__IM(x[1]) * dM[4 + k]);
+    }
+    for (q = 0; q < L->nq; q++) {
+        const double *r = L->rule[q];
+        CVM__R y[2], d[2], u0, u1;
+        y[0] = r[0] * x[0] + r[1] * a[0] + r[2] * b[0];
+        y[1] = r[0] * x[1] + r[1] * a[1] + r[2] * b[1];
+        if (!L->cellwise) { /* M(y) at every quadrature point */
+            double yr[2];
+            cvm_status st;
+            yr[0] = CVM__RE(y[0]);
+            yr[1] = CVM__RE(y[1]);
+            if ((st = cvm__metric_eval_M(&L->metric, yr, M, dM, L->ctx)))
+                return st;
+            for (k = 0; k < 4; k++)
+                Me[k] = CVM__MK(M[k], CVM__IM(y[0]) * dM[k] + CVM__IM(y[1]) * dM[4 + k]);
+        }
         d[0] = y[0] - x[0];
         d[1] = y[1] - x[1];
         u0 = Me[0] * d[0] + Me[1] * d[1];
@@ -80,13 +94,15 @@ static cvm_status CVM__G(fan)(CVM__R *e, cvm__lpcvt *L, const CVM__R *x, const C
             double r0 = r[3] * p * CVM__G(ipow)(u0, p - 1), r1 = r[3] * p * CVM__G(ipow)(u1, p - 1);
             int m;
             for (m = 0; m < 2; m++) {
-                /* d f / d y_m = sum_k r_k (M_km + sum_l dM_kl/dy_m d_l); the direct term -r^T M */
-                double dy = r0 * (M[m] + dM[4 * m] * d[0] + dM[4 * m + 1] * d[1]) +
-                            r1 * (M[2 + m] + dM[4 * m + 2] * d[0] + dM[4 * m + 3] * d[1]);
+                /* d f / d y_m = sum_k r_k (M_km + sum_l dM_kl/dy_m d_l) with M at y, and the direct
+                 * term -r^T M (plus that dM term when M is taken at the site) */
+                double dMd = r0 * (dM[4 * m] * d[0] + dM[4 * m + 1] * d[1]) +
+                             r1 * (dM[4 * m + 2] * d[0] + dM[4 * m + 3] * d[1]);
+                double dy = r0 * M[m] + r1 * M[2 + m] + (L->cellwise ? 0 : dMd);
                 fy[m] += r[0] * dy;
                 fyl0[m] += r[1] * dy;
                 fyl1[m] += r[2] * dy;
-                fx[m] -= r0 * M[m] + r1 * M[2 + m];
+                fx[m] += (L->cellwise ? dMd : 0) - r0 * M[m] - r1 * M[2 + m];
             }
         }
 #endif

@@ -56,7 +56,7 @@ static cvm_status make_ghosts(cvm__lpcvt *L, const double *bxy)
     size_t nb = L->nb, k, ng = 0;
     double *gx;
     cvm_status st;
-    gx = cvm__malloc(L->ctx, 6 * nb * sizeof *gx);
+    gx = cvm__malloc(L->ctx, (6 * nb + 8) * sizeof *gx);
     if (!gx)
         return cvm__nomem(L->ctx);
     for (k = 0; k < nb; k++) {
@@ -92,6 +92,26 @@ static cvm_status make_ghosts(cvm__lpcvt *L, const double *bxy)
         } else {
             gx[2 * ng] = b[0] + 0.5 * (oa[0] + ob[0]);
             gx[2 * ng + 1] = b[1] + 0.5 * (oa[1] + ob[1]);
+            ng++;
+        }
+    }
+    { /* a far frame, so that a moving site pushed past the ghosts still has a bounded (and
+       * costly) cell and the line search gets a value and a slope back, not a hole */
+        double lo[2], hi[2], c[2], R;
+        lo[0] = hi[0] = gx[0];
+        lo[1] = hi[1] = gx[1];
+        for (k = 1; k < ng; k++) {
+            lo[0] = fmin(lo[0], gx[2 * k]);
+            hi[0] = fmax(hi[0], gx[2 * k]);
+            lo[1] = fmin(lo[1], gx[2 * k + 1]);
+            hi[1] = fmax(hi[1], gx[2 * k + 1]);
+        }
+        c[0] = 0.5 * (lo[0] + hi[0]);
+        c[1] = 0.5 * (lo[1] + hi[1]);
+        R = 3 * fmax(hi[0] - lo[0], hi[1] - lo[1]);
+        for (k = 0; k < 4; k++) {
+            gx[2 * ng] = c[0] + (k == 1 || k == 2 ? R : -R);
+            gx[2 * ng + 1] = c[1] + (k >= 2 ? R : -R);
             ng++;
         }
     }
@@ -259,7 +279,9 @@ cvm_status cvm__lpcvt_topology(cvm__lpcvt *L, const double *xi)
     for (i = 0; i < 2 * (ns - L->nb); i++)
         if (!isfinite(xi[i]))
             return CVM_OK;
-    for (i = L->nb; i < ns; i++)
+    /* clipping needs the sites in the domain; with ghosts the energy is defined (and pushes them
+     * back) as long as every cell is bounded */
+    for (i = L->nb; i < ns && L->clip; i++)
         if (!cvm__lpcvt_inside(L, L->xy + 2 * i))
             return CVM_OK;
     memset(&in, 0, sizeof in);
@@ -296,11 +318,14 @@ cvm_status cvm__lpcvt_topology(cvm__lpcvt *L, const double *xi)
         if ((st = star_of(L, (int32_t)i, &n)))
             return st;
         for (k = 0; k < n; k++) {
-            if (!cvm__tri2_in_domain(&L->T, L->star[k]))
-                return cvm__error(L->ctx, CVM_E_INTERNAL, CVM_ENT_VERTEX, (int64_t)i,
-                                  "Lp-CVT: the cell of site %lu (%.17g, %.17g) is not bounded by "
-                                  "its neighbours and the ghost sites", (unsigned long)i,
-                                  L->xy[2 * i], L->xy[2 * i + 1]);
+            if (!cvm__tri2_in_domain(&L->T, L->star[k])) {
+                if (i < L->nb) /* fixed sites and ghosts only: the ghosts fail the boundary */
+                    return cvm__error(L->ctx, CVM_E_ARGUMENT, CVM_ENT_VERTEX, (int64_t)i,
+                                      "Lp-CVT: the ghost sites leave the cell of boundary site "
+                                      "%lu (%.17g, %.17g) unbounded", (unsigned long)i,
+                                      L->xy[2 * i], L->xy[2 * i + 1]);
+                return CVM_OK; /* a moving site beyond the ghosts: undefined */
+            }
             if ((st = push_pv(L, CVM__PV_CC, L->star[k], NULL)))
                 return st;
         }

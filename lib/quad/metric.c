@@ -12,9 +12,20 @@ static double ratio0(double num, double den)
 
 void cvm__eig2_of(cvm__eig2 *e, const double g[3], const double *dg)
 {
-    double c = g[0] - g[2], s = 2 * g[1], rho = hypot(c, s), m = 0.5 * (g[0] + g[2]);
+    double c = g[0] - g[2], s = 2 * g[1], rho = sqrt(c * c + s * s), m = 0.5 * (g[0] + g[2]);
     int k;
-    e->th = 0.5 * atan2(s, c);
+    /* cos th and sin th, th = atan2(s, c) / 2 in (-pi/2, pi/2], by the half-angle formulas,
+     * each from its better-conditioned side */
+    if (rho == 0) {
+        e->cs = 1;
+        e->sn = 0;
+    } else if (c >= 0) {
+        e->cs = sqrt(0.5 * (1 + c / rho));
+        e->sn = s / (2 * rho * e->cs);
+    } else {
+        e->sn = copysign(sqrt(0.5 * (1 - c / rho)), s);
+        e->cs = s / (2 * rho * e->sn);
+    }
     e->lam[0] = m + 0.5 * rho;
     e->lam[1] = m - 0.5 * rho;
     for (k = 0; k < 2; k++) {
@@ -27,10 +38,9 @@ void cvm__eig2_of(cvm__eig2 *e, const double g[3], const double *dg)
     }
 }
 
-void cvm__eig2_compose(double g[3], double *dg, double th, const double mu[2], const double *dmu,
-                       const double *dth)
+void cvm__eig2_compose(double g[3], double *dg, double cs, double sn, const double mu[2],
+                       const double *dmu, const double *dth)
 {
-    double cs = cos(th), sn = sin(th);
     int k;
     g[0] = mu[0] * cs * cs + mu[1] * sn * sn;
     g[1] = (mu[0] - mu[1]) * cs * sn;
@@ -51,8 +61,8 @@ void cvm__metric_factor(double M[4], double *dM, const double g[3], const double
     double cs, sn, r0, r1;
     int k;
     cvm__eig2_of(&e, g, dg);
-    cs = cos(e.th);
-    sn = sin(e.th);
+    cs = e.cs;
+    sn = e.sn;
     r0 = sqrt(e.lam[0]);
     r1 = sqrt(e.lam[1]);
     M[0] = r0 * cs;
@@ -100,7 +110,7 @@ void cvm__metric_hessian_abs(double g[3], double *dg, const double H[3], const d
         for (m = 0; m < 2; m++)
             dmu[2 * k + m] = -2 * dh[2 * k + m] / (h[k] * h[k] * h[k]);
     }
-    cvm__eig2_compose(g, dH ? dg : NULL, e.th, mu, dmu, e.dth);
+    cvm__eig2_compose(g, dH ? dg : NULL, e.cs, e.sn, mu, dmu, e.dth);
 }
 
 void cvm__metric_grad_outer(double g[3], double *dg, const double grad[2], const double *H)

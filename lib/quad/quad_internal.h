@@ -33,14 +33,14 @@
  * dlam[2k + m] = d lam_k / d x_m, dth[m] = d th / d x_m. Where an eigenvalue
  * gap closes (g isotropic) a derivative whose formula reads 0/0 is taken as 0. */
 typedef struct cvm__eig2 {
-    double lam[2], th;
+    double lam[2], cs, sn; /* q1 = (cs, sn) = (cos th, sin th) */
     double dlam[4], dth[2];
 } cvm__eig2;
 void cvm__eig2_of(cvm__eig2 *e, const double g[3], const double *dg);
-/* g = Q diag(mu) Q^T at angle th, and (dg not NULL) its derivatives from
- * dmu[2k + m] and dth[m]. */
-void cvm__eig2_compose(double g[3], double *dg, double th, const double mu[2], const double *dmu,
-                       const double *dth);
+/* g = Q diag(mu) Q^T, Q's first column (cs, sn) = (cos th, sin th), and (dg not NULL) its
+ * derivatives from dmu[2k + m] and dth[m]. */
+void cvm__eig2_compose(double g[3], double *dg, double cs, double sn, const double mu[2],
+                       const double *dmu, const double *dth);
 
 /* M = Lambda^(1/2) Q^T (row-major M[0..3]) of g, and when dM is not NULL its
  * derivatives dM[4m + k] = d M_k / d x_m from dg. g must be SPD. */
@@ -140,15 +140,22 @@ typedef struct cvm__pvert {
  * fan of triangles (site, two consecutive polygon vertices) integrated by the
  * Dunavant rule of degree p. Sites 0..nb-1 are the fixed boundary vertices,
  * a closed counter-clockwise convex polygon whose edges are the domain
- * boundary; sites nb..ns-1 move and must stay strictly inside it.
+ * boundary; sites nb..ns-1 move (with reconstruction they may cross the
+ * boundary during a line search: the energy stays defined and pushes them
+ * back; cvm__lpcvt_optimise() checks the result).
  * Boundary cells, reconstruction (clip = 0): each boundary site b gets fixed
  * ghost sites outside, A and B at unit metric length (metric at b) along the
  * outward normals of its two boundary edges and, at a corner turning left by
  * more than 1e-9 rad, C where the lines through A and B parallel to those
- * edges meet (one ghost at the mean of A and B on a straight boundary); the
- * cells are the Voronoi cells of sites and ghosts, the ghosts' own cells not
- * counted. So a boundary site of a unit lattice has a whole unit cell centred
+ * edges meet (one ghost at the mean of A and B on a straight boundary), and
+ * four far frame points at 3 times the ghosts' extent; the cells are the
+ * Voronoi cells of sites and ghosts, the ghosts' own cells not counted. So a boundary site of a unit lattice has a whole unit cell centred
  * on it, and E is the Voronoi energy of fixed and moving sites (C^1).
+ * The metric is M(y) at each quadrature point (the quadrature is then exact
+ * only where M is constant, and E has gradient kinks of the size of the
+ * quadrature error where the Delaunay topology flips), or, with cellwise
+ * set after init, M(x_i) over cell i: every integral exact for degree p,
+ * E is C^1 and L-BFGS converges to rounding.
  * Clipping (clip = 1): the Delaunay triangulation constrained by the boundary,
  * a boundary cell closed by its two edge midpoints and the site itself - the
  * cell clipped to the domain while every Voronoi vertex lies in it.
@@ -157,6 +164,7 @@ typedef struct cvm__lpcvt {
     cvm__ctx *ctx;
     cvm__metric metric;
     int p, clip;
+    int cellwise;       /* 0: M(y) at every quadrature point (default); 1: M(x_i) over cell i */
     const double (*rule)[4];
     size_t nq;
     size_t nb, ns, nall; /* boundary sites, sites, sites and ghosts */
@@ -177,8 +185,9 @@ typedef struct cvm__lpcvt {
     size_t cap_gpv;
     int32_t *star;
     size_t cap_star;
-    int valid;          /* the last topology: 1, or 0 when a moving site is not strictly inside
-                           the domain or lies on another (the energy is then not defined) */
+    int valid;          /* the last topology: 1, or 0 when the energy is not defined there: a
+                           moving site on another, beyond the ghosts (an unbounded cell) or, with
+                           clipping, not strictly inside the domain */
 } cvm__lpcvt;
 
 /* Prepare L for the boundary polygon bxy (nb >= 3 corners, counter-clockwise,
@@ -220,6 +229,8 @@ typedef struct cvm__lbfgs_opts {
     double delta;       /* stop when the relative decrease over past iterations is below delta */
     int past;           /* (default 1e-12 over 10) */
     int relocations;    /* cvm__lpcvt_optimise(): relocation attempts after convergence (default 8) */
+    double step0;       /* the length in x of the first trial step of each (re)start (default 1,
+                           liblbfgs's own); the variables are scaled by it */
 } cvm__lbfgs_opts;
 
 typedef enum cvm__lbfgs_stop {
@@ -234,6 +245,7 @@ typedef struct cvm__lbfgs_result {
     double f, gnorm_inf;
     long iterations, evaluations, restarts;
     cvm__lbfgs_stop stop;
+    int backend_code;   /* the last return of the backend (liblbfgs: lbfgs()), for diagnostics */
 } cvm__lbfgs_result;
 
 /* Defaults above (length 1, max_iter 10000). */
@@ -276,7 +288,9 @@ cvm_status cvm__metric_area(double *area, double *rho_max, const cvm__metric *mt
 cvm_status cvm__lpcvt_initial_sites(double **xi_out, size_t *ni_out, const cvm__metric *mt,
                                     const double *bxy, size_t nb, uint64_t seed, cvm__ctx *ctx);
 /* Minimise the energy of L over its moving sites xi (ni = L->ns - L->nb, 2 per site, overwritten)
- * with cvm__lbfgs_minimise(); o->length is set from the boundary's bounding box. Then up to
+ * with cvm__lbfgs_minimise(); o->length is set from the boundary's bounding box and o->step0 to
+ * a quarter of the shortest boundary edge (a first step that moves no site past its
+ * neighbours). Then up to
  * o->relocations times escape a local minimum: the moving site of least cell energy moves into
  * the cell of most energy (half-way from its site to its farthest polygon vertex) and the sites
  * are optimised again; the move is kept when E drops by more than 1e-9 E, else undone and the

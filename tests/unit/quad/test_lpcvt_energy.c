@@ -51,8 +51,9 @@ typedef struct gcase {
     int n, ni;
 } gcase;
 
-/* Random configurations of ni moving sites at least 0.4 box/n apart, for every built-in metric:
- * the gradient agrees with central differences and with the complex step to 1e-7 relative. */
+/* Random configurations of ni moving sites at least 0.4 box/n apart, for every built-in metric,
+ * both boundary treatments and both metric samplings: the gradient agrees with central
+ * differences and with the complex step to 1e-7 relative. */
 START_TEST(lpcvt_gradient_matches_differences_and_complex_step)
 {
     static const gcase cases[] = {
@@ -91,6 +92,7 @@ START_TEST(lpcvt_gradient_matches_differences_and_complex_step)
                 }
                 ck_assert_int_eq(cvm__lpcvt_init(&L, &ctx, s, bxy, (size_t)nb, (size_t)k->ni, p, clip),
                                  CVM_OK);
+                L.cellwise = trial >= 3; /* M(y) per quadrature point, then M(x_i) per cell */
                 ck_assert_int_eq(cvm__lpcvt_eval(&L, xi, &E, grad), CVM_OK);
                 ck_assert(L.valid);
                 for (i = 0; i < 2 * k->ni; i++)

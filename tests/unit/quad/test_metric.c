@@ -156,6 +156,61 @@ START_TEST(metric_bad_values_are_refused_naming_the_point)
 }
 END_TEST
 
+
+/* Log-Euclidean interpolation: the node tensors at the nodes, the geometric mean half-way
+ * (sqrt(1 * 4) = 2 between I and 4I), SPD everywhere, exact derivatives, refused outside. */
+START_TEST(metric_background_is_log_euclidean)
+{
+    static const double xy[8] = {0, 0, 1, 0, 1, 1, 0, 1};
+    static const int32_t tri[6] = {0, 1, 2, 0, 2, 3};
+    static const double gn[12] = {1, 0, 1, 4, 0, 4, 9, 2, 1, 2, -1, 3};
+    cvm__metric_bg bg;
+    cvm__ctx ctx;
+    double x[2], g[3], dg[6], gp[3], gm[3], bad[12];
+    unsigned long long st = 9;
+    int k, trial, m;
+    cvm__ctx_init_default(&ctx);
+    ck_assert_int_eq(cvm__metric_bg_build(&bg, &ctx, xy, 4, tri, 2, gn), CVM_OK);
+    for (k = 0; k < 4; k++) {
+        ck_assert_int_eq(cvm__metric_bg_fn(&bg, xy + 2 * k, 2, g, NULL), 0);
+        for (m = 0; m < 3; m++)
+            ck_assert(fabs(g[m] - gn[3 * k + m]) <= 1e-12 * (1 + fabs(gn[3 * k + m])));
+    }
+    x[0] = 0.5;
+    x[1] = 0;
+    ck_assert_int_eq(cvm__metric_bg_fn(&bg, x, 2, g, NULL), 0);
+    ck_assert(fabs(g[0] - 2) <= 1e-14 && fabs(g[1]) <= 1e-14 && fabs(g[2] - 2) <= 1e-14);
+    for (trial = 0; trial < 300; trial++) {
+        double h = 1e-6;
+        x[0] = 0.01 + 0.98 * qtest_uniform(&st);
+        x[1] = 0.01 + 0.98 * qtest_uniform(&st);
+        if (fabs(x[0] - x[1]) < 2e-6) /* the shared edge: the derivative jumps there */
+            continue;
+        ck_assert_int_eq(cvm__metric_bg_fn(&bg, x, 2, g, dg), 0);
+        ck_assert(g[0] > 0 && g[0] * g[2] - g[1] * g[1] > 0);
+        for (m = 0; m < 2; m++) {
+            double xp[2] = {x[0], x[1]}, xm[2] = {x[0], x[1]};
+            xp[m] += h;
+            xm[m] -= h;
+            cvm__metric_bg_fn(&bg, xp, 2, gp, NULL);
+            cvm__metric_bg_fn(&bg, xm, 2, gm, NULL);
+            for (k = 0; k < 3; k++)
+                ck_assert_msg(fabs((gp[k] - gm[k]) / (2 * h) - dg[3 * m + k]) <= 1e-6 * (1 + fabs(dg[3 * m + k])),
+                              "at (%g, %g): dg%d/dx%d %.10g vs %.10g", x[0], x[1], k, m,
+                              dg[3 * m + k], (gp[k] - gm[k]) / (2 * h));
+        }
+    }
+    x[0] = 1.5;
+    ck_assert_int_eq(cvm__metric_bg_fn(&bg, x, 2, g, dg), 1);
+    cvm__metric_bg_free(&bg);
+    memcpy(bad, gn, sizeof bad);
+    bad[10] = 5; /* node 3: g12 = 5 > sqrt(g11 g22) */
+    ck_assert_int_eq(cvm__metric_bg_build(&bg, &ctx, xy, 4, tri, 2, bad), CVM_E_ARGUMENT);
+    ck_assert_ptr_nonnull(strstr(ctx.errmsg, "background node 3"));
+    cvm__metric_bg_free(&bg);
+}
+END_TEST
+
 TCase *quad_metric_tcase(void)
 {
     TCase *tc = tcase_create("metric");
@@ -163,5 +218,6 @@ TCase *quad_metric_tcase(void)
     tcase_add_test(tc, metric_factor_reproduces_g_and_its_derivative);
     tcase_add_test(tc, metric_hessian_sizes_are_clamped);
     tcase_add_test(tc, metric_bad_values_are_refused_naming_the_point);
+    tcase_add_test(tc, metric_background_is_log_euclidean);
     return tc;
 }
