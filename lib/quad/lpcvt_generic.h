@@ -44,8 +44,8 @@ static void CVM__G(positions)(CVM__R *pos, const CVM__R *cc, const cvm__lpcvt *L
 }
 
 /* E of the fan triangle (x, a, b) into *e; with CVM__GRAD also its derivatives added to gx, ga, gb. */
-static cvm_status CVM__G(fan)(CVM__R *e, cvm__lpcvt *L, const CVM__R *x, const CVM__R *a,
-                              const CVM__R *b
+static cvm_status CVM__G(fan)(CVM__R *e, cvm__lpcvt *L, cvm__ctx *err, const CVM__R *x,
+                              const CVM__R *a, const CVM__R *b
 #if CVM__GRAD
                               , double *gx, double *ga, double *gb
 #endif
@@ -64,7 +64,7 @@ static cvm_status CVM__G(fan)(CVM__R *e, cvm__lpcvt *L, const CVM__R *x, const C
         cvm_status st;
         xr[0] = CVM__RE(x[0]);
         xr[1] = CVM__RE(x[1]);
-        if ((st = cvm__metric_eval_M(&L->metric, xr, M, dM, L->ctx)))
+        if ((st = cvm__metric_eval_M(&L->metric, xr, M, dM, err)))
             return st;
         for (k = 0; k < 4; k++)
             Me[k] = CVM__MK(M[k], CVM__IM(x[0]) * dM[k] + CVM__IM(x[1]) * dM[4 + k]);
@@ -79,7 +79,7 @@ static cvm_status CVM__G(fan)(CVM__R *e, cvm__lpcvt *L, const CVM__R *x, const C
             cvm_status st;
             yr[0] = CVM__RE(y[0]);
             yr[1] = CVM__RE(y[1]);
-            if ((st = cvm__metric_eval_M(&L->metric, yr, M, dM, L->ctx)))
+            if ((st = cvm__metric_eval_M(&L->metric, yr, M, dM, err)))
                 return st;
             for (k = 0; k < 4; k++)
                 Me[k] = CVM__MK(M[k], CVM__IM(y[0]) * dM[k] + CVM__IM(y[1]) * dM[4 + k]);
@@ -126,14 +126,42 @@ static cvm_status CVM__G(fan)(CVM__R *e, cvm__lpcvt *L, const CVM__R *x, const C
     return CVM_OK;
 }
 
+/* The energy of cell i into *e_out (with CVM__GRAD also L->ecell[i], and its derivatives added to
+ * L->gsite for site i and L->gpv for its polygon vertices: nothing another cell writes). */
+static cvm_status CVM__G(cell)(CVM__R *e_out, cvm__lpcvt *L, size_t i, const CVM__R *xy,
+                               const CVM__R *pos, cvm__ctx *err)
+{
+    size_t a = L->cstart[i], n = L->cstart[i + 1] - a, nf = L->copen[i] ? n - 1 : n, j;
+    CVM__R E = 0;
+    cvm_status st;
+    for (j = 0; j < nf; j++) {
+        size_t k0 = a + j, k1 = a + (j + 1) % n;
+        CVM__R e;
+        if ((st = CVM__G(fan)(&e, L, err, xy + 2 * i, pos + 2 * k0, pos + 2 * k1
+#if CVM__GRAD
+                              , L->gsite + 2 * i, L->gpv + 2 * k0, L->gpv + 2 * k1
+#endif
+                              )))
+            return st;
+        E += e;
+    }
+#if CVM__GRAD
+    L->ecell[i] = E;
+#endif
+    *e_out = E;
+    return CVM_OK;
+}
+
 /* E of the configuration xy (2 per site) on the topology of L; cc and pos are scratch of 2 per
- * triangle slot and 2 per polygon vertex. */
+ * triangle slot and 2 per polygon vertex. The cells are summed in their order whatever the
+ * number of threads (L->threads, the double instance only), so E and the gradient are the same
+ * bits for any count. */
 static cvm_status CVM__G(energy)(CVM__R *E_out, cvm__lpcvt *L, const CVM__R *xy, CVM__R *cc,
                                  CVM__R *pos)
 {
     const cvm__tri2 *T = &L->T;
-    CVM__R E = 0;
-    size_t t, i, j;
+    CVM__R E = 0, e;
+    size_t t, i;
     cvm_status st;
     for (t = 0; t < T->nt; t++)
         if (cvm__tri2_in_domain(T, (int32_t)t)) {
@@ -146,25 +174,29 @@ static cvm_status CVM__G(energy)(CVM__R *E_out, cvm__lpcvt *L, const CVM__R *xy,
         L->gsite[i] = 0;
     for (i = 0; i < 2 * L->npv; i++)
         L->gpv[i] = 0;
-    for (i = 0; i < L->ns; i++)
-        L->ecell[i] = 0;
+#if defined(_OPENMP)
+    if (L->threads > 1 && L->ns > 256) {
+        long il, nsl = (long)L->ns;
+#pragma omp parallel for schedule(dynamic, 64) num_threads(L->threads)
+        for (il = 0; il < nsl; il++) {
+            cvm__ctx local = *L->ctx; /* a failing cell's message stays with its thread */
+            CVM__R el;
+            L->cstat[il] = CVM__G(cell)(&el, L, (size_t)il, xy, pos, &local) != CVM_OK;
+        }
+        for (i = 0; i < L->ns; i++) {
+            if (L->cstat[i]) /* the first failing cell again, for its message on L->ctx */
+                return CVM__G(cell)(&e, L, i, xy, pos, L->ctx);
+            E += L->ecell[i];
+        }
+        *E_out = E;
+        return CVM_OK;
+    }
+#endif
 #endif
     for (i = 0; i < L->ns; i++) {
-        size_t a = L->cstart[i], n = L->cstart[i + 1] - a, nf = L->copen[i] ? n - 1 : n;
-        for (j = 0; j < nf; j++) {
-            size_t k0 = a + j, k1 = a + (j + 1) % n;
-            CVM__R e;
-            if ((st = CVM__G(fan)(&e, L, xy + 2 * i, pos + 2 * k0, pos + 2 * k1
-#if CVM__GRAD
-                                  , L->gsite + 2 * i, L->gpv + 2 * k0, L->gpv + 2 * k1
-#endif
-                                  )))
-                return st;
-            E += e;
-#if CVM__GRAD
-            L->ecell[i] += e;
-#endif
-        }
+        if ((st = CVM__G(cell)(&e, L, i, xy, pos, L->ctx)))
+            return st;
+        E += e;
     }
     *E_out = E;
     return CVM_OK;

@@ -221,8 +221,11 @@ cvm_status cvm__lpcvt_optimise(cvm__lpcvt *L, double *xi, const cvm__lbfgs_opts 
         opt.step0 = fmin(opt.step0, 0.25 * hypot(b[0] - a[0], b[1] - a[1]));
     }
     if ((st = cvm__lbfgs_minimise(xi, n, eval_fn, L, &opt, res, L->ctx)) || o->relocations <= 0 ||
-        n == 0)
+        n == 0) {
+        for (k = 0; k < n / 2 && !st; k++)
+            res->outside += !cvm__lpcvt_inside(L, xi + 2 * k);
         return st;
+    }
     keep = cvm__malloc(L->ctx, n * sizeof *keep);
     if (!keep)
         return cvm__nomem(L->ctx);
@@ -244,5 +247,7 @@ cvm_status cvm__lpcvt_optimise(cvm__lpcvt *L, double *xi, const cvm__lbfgs_opts 
         add_result(res, &r);
     }
     cvm__free(L->ctx, keep);
+    for (k = 0; k < n / 2; k++)
+        res->outside += !cvm__lpcvt_inside(L, xi + 2 * k);
     return st;
 }

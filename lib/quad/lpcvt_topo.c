@@ -26,6 +26,7 @@ void cvm__lpcvt_free(cvm__lpcvt *L)
     cvm__free(c, L->gpv);
     cvm__free(c, L->gsite);
     cvm__free(c, L->ecell);
+    cvm__free(c, L->cstat);
     cvm__free(c, L->star);
     memset(L, 0, sizeof *L);
 }
@@ -141,6 +142,7 @@ cvm_status cvm__lpcvt_init(cvm__lpcvt *L, cvm__ctx *ctx, const cvm_sizing *s, co
                           "the boundary needs 3 vertices or more, got %lu", (unsigned long)nb);
     L->p = p;
     L->clip = clip ? 1 : 0;
+    L->threads = 1;
     L->rule = cvm__dunavant_rule(p, &L->nq, &deg);
     L->nb = nb;
     L->ns = ns;
@@ -178,7 +180,9 @@ cvm_status cvm__lpcvt_init(cvm__lpcvt *L, cvm__ctx *ctx, const cvm_sizing *s, co
     L->copen = cvm__malloc(ctx, ns);
     L->gsite = cvm__malloc(ctx, 2 * L->nall * sizeof *L->gsite);
     L->ecell = cvm__malloc(ctx, ns * sizeof *L->ecell);
-    if (!L->xy || !L->bmid || !L->seg || !L->cstart || !L->copen || !L->gsite || !L->ecell)
+    L->cstat = cvm__malloc(ctx, ns);
+    if (!L->xy || !L->bmid || !L->seg || !L->cstart || !L->copen || !L->gsite || !L->ecell ||
+        !L->cstat)
         return cvm__nomem(ctx);
     memcpy(L->xy, bxy, 2 * nb * sizeof *L->xy);
     for (k = 0; k < nb; k++) {

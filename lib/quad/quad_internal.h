@@ -165,6 +165,9 @@ typedef struct cvm__lpcvt {
     cvm__metric metric;
     int p, clip;
     int cellwise;       /* 0: M(y) at every quadrature point (default); 1: M(x_i) over cell i */
+    int threads;        /* OpenMP threads of the energy and gradient (default 1; more only when the
+                           metric callback may be called concurrently); same bits for any count */
+    uint8_t *cstat;     /* per site: 1 when its cell failed (threaded evaluation) */
     const double (*rule)[4];
     size_t nq;
     size_t nb, ns, nall; /* boundary sites, sites, sites and ghosts */
@@ -246,6 +249,8 @@ typedef struct cvm__lbfgs_result {
     long iterations, evaluations, restarts;
     cvm__lbfgs_stop stop;
     int backend_code;   /* the last return of the backend (liblbfgs: lbfgs()), for diagnostics */
+    long outside;       /* cvm__lpcvt_optimise(): moving sites not strictly inside the domain at
+                           the end (0 expected: the energy pushes them in; the caller decides) */
 } cvm__lbfgs_result;
 
 /* Defaults above (length 1, max_iter 10000). */

@@ -131,11 +131,49 @@ START_TEST(lpcvt_gradient_matches_differences_and_complex_step)
 }
 END_TEST
 
+
+/* The energy and its gradient are the same bits with 1 and 2 threads (cells summed in order). */
+START_TEST(lpcvt_energy_is_identical_for_any_thread_count)
+{
+    cvm__metric_builtin b = {CVM__METRIC_SADDLE, 64, {0, 0, 0}};
+    double corners[8] = {-1.3, -1.3, 1.3, -1.3, 1.3, 1.3, -1.3, 1.3}, *bxy, *xi, *g1, *g2, E1, E2;
+    size_t nb, ni;
+    cvm_sizing *s;
+    cvm__ctx ctx;
+    cvm__metric mt;
+    cvm__lpcvt L;
+    cvm__ctx_init_default(&ctx);
+    ck_assert_int_eq(cvm_sizing_create(&s), CVM_OK);
+    cvm_sizing_set_metric_fn(s, cvm__metric_builtin_fn, 1, &b);
+    mt.s = s;
+    mt.bnd = corners;
+    mt.nbnd = 4;
+    ck_assert_int_eq(cvm__boundary_discretise(&bxy, &nb, &mt, corners, 4, &ctx), CVM_OK);
+    ck_assert_int_eq(cvm__lpcvt_initial_sites(&xi, &ni, &mt, bxy, nb, 3, &ctx), CVM_OK);
+    ck_assert(ni > 300);
+    g1 = malloc(2 * ni * sizeof *g1);
+    g2 = malloc(2 * ni * sizeof *g2);
+    ck_assert_int_eq(cvm__lpcvt_init(&L, &ctx, s, bxy, nb, ni, 6, 0), CVM_OK);
+    ck_assert_int_eq(cvm__lpcvt_eval(&L, xi, &E1, g1), CVM_OK);
+    L.threads = 2;
+    ck_assert_int_eq(cvm__lpcvt_eval(&L, xi, &E2, g2), CVM_OK);
+    ck_assert(memcmp(&E1, &E2, sizeof E1) == 0);
+    ck_assert(memcmp(g1, g2, 2 * ni * sizeof *g1) == 0);
+    cvm__lpcvt_free(&L);
+    free(g1);
+    free(g2);
+    cvm__free(&ctx, xi);
+    cvm__free(&ctx, bxy);
+    cvm_sizing_free(s);
+}
+END_TEST
+
 TCase *quad_lpcvt_energy_tcase(void)
 {
     TCase *tc = tcase_create("lpcvt_energy");
     tcase_set_timeout(tc, 60);
     tcase_add_test(tc, lpcvt_lattice_is_critical_table1);
     tcase_add_test(tc, lpcvt_gradient_matches_differences_and_complex_step);
+    tcase_add_test(tc, lpcvt_energy_is_identical_for_any_thread_count);
     return tc;
 }

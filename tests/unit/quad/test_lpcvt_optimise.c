@@ -92,6 +92,7 @@ START_TEST(lpcvt_recovers_the_lattice_from_random_starts)
         ck_assert_int_eq(cvm__lpcvt_init(&L, &ctx, s, bxy, nb, 9, 6, 0), CVM_OK);
         cvm__lbfgs_defaults(&o);
         ck_assert_int_eq(cvm__lpcvt_optimise(&L, xi, &o, &res), CVM_OK);
+        ck_assert_int_eq(res.outside, 0);
         for (i = 0; i < 9; i++) { /* the nearest lattice point of each site, each taken once */
             double px = 1 + i % 3, py = 1 + i / 3, best = INFINITY;
             for (found = 0, j = 0; j < 9; j++)
