@@ -54,7 +54,7 @@ ifeq ($(FUZZ),1)
   SANFLAGS += -fsanitize=fuzzer-no-link
 endif
 ALL_CFLAGS := $(CFLAGS_BASE) $(OMPFLAGS) $(SANFLAGS) $(CFLAGS)
-LDLIBS_LIB := -lm $(OMPFLAGS)
+LDLIBS_LIB := -llbfgs -lm $(OMPFLAGS)
 
 LIB_SRC := $(sort $(filter-out lib/cli/%,$(wildcard lib/*/*.c)))
 CLI_SRC := $(sort $(wildcard lib/cli/*.c))

@@ -7,6 +7,8 @@
 # each have a static parse()), so each file's static functions and variables are
 # renamed with #define for the span of that file, and its own macros are
 # #undef'd after it. A file's internal headers are emitted before those renames.
+# A header named *_generic.h is a source template (written once for several number
+# types, without an include guard): it is pasted at each of its #include lines.
 # Generated output, never edited.
 set -euo pipefail
 out=${1:?usage: amalgamate.sh OUT.c FILE.c...}
@@ -63,7 +65,7 @@ emit_source() {
     tag=$(printf '%s' "$f" | sed -e 's|^lib/||' -e 's|\.c$||' -e 's|[^A-Za-z0-9]|_|g')
     printf '/* ==== %s ==== */\n' "$f"
     while IFS= read -r line || [ -n "$line" ]; do
-        if [[ $line =~ $include_re ]]; then
+        if [[ $line =~ $include_re ]] && [[ ${BASH_REMATCH[1]} != *_generic.h ]]; then
             path=$(resolve "$f" "${BASH_REMATCH[1]}")
             [ -n "$path" ] && emit_header "$path"
         fi
@@ -72,7 +74,15 @@ emit_source() {
         printf '#define %s cvm__amalg_%s_%s\n' "$name" "$tag" "$name"
     done
     while IFS= read -r line || [ -n "$line" ]; do
-        [[ $line =~ $include_re ]] || printf '%s\n' "$line"
+        if [[ $line =~ $include_re ]]; then
+            if [[ ${BASH_REMATCH[1]} == *_generic.h ]]; then
+                path=$(resolve "$f" "${BASH_REMATCH[1]}")
+                printf '/* ---- %s ---- */\n' "$path"
+                cat "$path"
+            fi
+        else
+            printf '%s\n' "$line"
+        fi
     done < "$f"
     for name in $(static_names "$f") $(macro_names "$f"); do
         printf '#undef %s\n' "$name"

@@ -1,4 +1,5 @@
-/* quad_tests.h - the TCases of the quad recombination suite, and their helpers (util.c). */
+/* quad_tests.h - the TCases of the quad suites (matching and recombination; metric field,
+ * Lp-CVT energy and optimiser), and their helpers (util.c). */
 #ifndef CVMTEST_QUAD_TESTS_H
 #define CVMTEST_QUAD_TESTS_H
 #include <check.h>
@@ -41,5 +42,16 @@ int qtest_assert_certificate(const qtest_graph *g, const cvm_index *mate,
 
 /* A context whose allocations go through a (the failing allocator). */
 void qtest_ctx(cvm__ctx *ctx, cvmtest_alloc *a);
+
+TCase *quad_dunavant_tcase(void);
+TCase *quad_metric_tcase(void);
+TCase *quad_lpcvt_energy_tcase(void);
+TCase *quad_lpcvt_optimise_tcase(void);
+
+/* The boundary of the box [x0, x1] x [y0, y1] with n pieces a side, counter-clockwise from
+ * (x0, y0), into xy (8 n values). */
+void qtest_box(double *xy, double x0, double y0, double x1, double y1, int n);
+/* A deterministic uniform double in [0, 1) from *state (splitmix64). */
+double qtest_uniform(unsigned long long *state);
 
 #endif

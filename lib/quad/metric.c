@@ -1,0 +1,276 @@
+/* metric.c - the metric field of the quad mesher: 2x2 tensor eigen-algebra with derivatives, the
+ * factor M = Lambda^(1/2) Q^T, the built-in fields, and the checked evaluation through the sizing. */
+#include <math.h>
+
+#include "quad_internal.h"
+
+/* 0/0 and x/0 read as 0: the derivative of an eigen-direction where the gap closes (measure zero). */
+static double ratio0(double num, double den)
+{
+    return (num == 0 || den == 0) ? 0 : num / den;
+}
+
+void cvm__eig2_of(cvm__eig2 *e, const double g[3], const double *dg)
+{
+    double c = g[0] - g[2], s = 2 * g[1], rho = sqrt(c * c + s * s), m = 0.5 * (g[0] + g[2]);
+    int k;
+    /* cos th and sin th, th = atan2(s, c) / 2 in (-pi/2, pi/2], by the half-angle formulas,
+     * each from its better-conditioned side */
+    if (rho == 0) {
+        e->cs = 1;
+        e->sn = 0;
+    } else if (c >= 0) {
+        e->cs = sqrt(0.5 * (1 + c / rho));
+        e->sn = s / (2 * rho * e->cs);
+    } else {
+        e->sn = copysign(sqrt(0.5 * (1 - c / rho)), s);
+        e->cs = s / (2 * rho * e->sn);
+    }
+    e->lam[0] = m + 0.5 * rho;
+    e->lam[1] = m - 0.5 * rho;
+    for (k = 0; k < 2; k++) {
+        double dc = dg ? dg[3 * k] - dg[3 * k + 2] : 0, ds = dg ? 2 * dg[3 * k + 1] : 0;
+        double dm = dg ? 0.5 * (dg[3 * k] + dg[3 * k + 2]) : 0;
+        double dr = ratio0(c * dc + s * ds, 2 * rho); /* d(rho / 2) */
+        e->dth[k] = ratio0(0.5 * (c * ds - s * dc), rho * rho);
+        e->dlam[k] = dm + dr;     /* d lam0 / d x_k */
+        e->dlam[2 + k] = dm - dr; /* d lam1 / d x_k */
+    }
+}
+
+void cvm__eig2_compose(double g[3], double *dg, double cs, double sn, const double mu[2],
+                       const double *dmu, const double *dth)
+{
+    int k;
+    g[0] = mu[0] * cs * cs + mu[1] * sn * sn;
+    g[1] = (mu[0] - mu[1]) * cs * sn;
+    g[2] = mu[0] * sn * sn + mu[1] * cs * cs;
+    if (!dg)
+        return;
+    for (k = 0; k < 2; k++) {
+        double d0 = dmu[k], d1 = dmu[2 + k], t = dth[k];
+        dg[3 * k] = d0 * cs * cs + d1 * sn * sn + 2 * cs * sn * (mu[1] - mu[0]) * t;
+        dg[3 * k + 1] = (d0 - d1) * cs * sn + (mu[0] - mu[1]) * (cs * cs - sn * sn) * t;
+        dg[3 * k + 2] = d0 * sn * sn + d1 * cs * cs + 2 * cs * sn * (mu[0] - mu[1]) * t;
+    }
+}
+
+void cvm__metric_factor(double M[4], double *dM, const double g[3], const double *dg)
+{
+    cvm__eig2 e;
+    double cs, sn, r0, r1;
+    int k;
+    cvm__eig2_of(&e, g, dg);
+    cs = e.cs;
+    sn = e.sn;
+    r0 = sqrt(e.lam[0]);
+    r1 = sqrt(e.lam[1]);
+    M[0] = r0 * cs;
+    M[1] = r0 * sn;
+    M[2] = -r1 * sn;
+    M[3] = r1 * cs;
+    if (!dM)
+        return;
+    for (k = 0; k < 2; k++) {
+        double a0 = e.dlam[k] / (2 * r0), a1 = e.dlam[2 + k] / (2 * r1), t = e.dth[k];
+        dM[4 * k] = a0 * cs - r0 * sn * t;
+        dM[4 * k + 1] = a0 * sn + r0 * cs * t;
+        dM[4 * k + 2] = -a1 * sn - r1 * cs * t;
+        dM[4 * k + 3] = a1 * cs - r1 * sn * t;
+    }
+}
+
+void cvm__metric_hessian_abs(double g[3], double *dg, const double H[3], const double *dH,
+                             double hmin, double hmax, double aspect)
+{
+    cvm__eig2 e;
+    double h[2], dh[4] = {0, 0, 0, 0}, mu[2], dmu[4];
+    int k, m, big, small;
+    cvm__eig2_of(&e, H, dH);
+    for (k = 0; k < 2; k++) {
+        double a = fabs(e.lam[k]), sg = e.lam[k] < 0 ? -1 : 1;
+        h[k] = a > 0 ? 1 / sqrt(a) : hmax;
+        if (h[k] <= hmin)
+            h[k] = hmin;
+        else if (h[k] >= hmax)
+            h[k] = hmax;
+        else
+            for (m = 0; m < 2; m++)
+                dh[2 * k + m] = -0.5 * sg * e.dlam[2 * k + m] / (a * sqrt(a));
+    }
+    big = h[0] >= h[1] ? 0 : 1;
+    small = 1 - big;
+    if (h[big] > aspect * h[small]) {
+        h[big] = aspect * h[small];
+        for (m = 0; m < 2; m++)
+            dh[2 * big + m] = aspect * dh[2 * small + m];
+    }
+    for (k = 0; k < 2; k++) {
+        mu[k] = 1 / (h[k] * h[k]);
+        for (m = 0; m < 2; m++)
+            dmu[2 * k + m] = -2 * dh[2 * k + m] / (h[k] * h[k] * h[k]);
+    }
+    cvm__eig2_compose(g, dH ? dg : NULL, e.cs, e.sn, mu, dmu, e.dth);
+}
+
+void cvm__metric_grad_outer(double g[3], double *dg, const double grad[2], const double *H)
+{
+    double v0 = grad[0], v1 = grad[1];
+    int m;
+    g[0] = 1 + v0 * v0;
+    g[1] = v0 * v1;
+    g[2] = 1 + v1 * v1;
+    if (!dg || !H)
+        return;
+    for (m = 0; m < 2; m++) {
+        double h0 = H[m], h1 = H[m + 1]; /* column m of the Hessian: d grad / d x_m */
+        dg[3 * m] = 2 * v0 * h0;
+        dg[3 * m + 1] = h0 * v1 + v0 * h1;
+        dg[3 * m + 2] = 2 * v1 * h1;
+    }
+}
+
+/* The S-shock field: f = 3/4 tanh(z), z = 2 (sin 5y - 3x); its Hessian and third derivatives. */
+static void sshock(double g[3], double *dg, double x, double y)
+{
+    double z = 2 * (sin(5 * y) - 3 * x), t = tanh(z), u = 1 - t * t;
+    double F1 = 0.75 * u, F2 = -1.5 * t * u, F3 = 0.75 * u * (6 * t * t - 2);
+    double zx = -6, zy = 10 * cos(5 * y), zyy = -50 * sin(5 * y), zyyy = -250 * cos(5 * y);
+    double H[3], dH[6];
+    (void)x;
+    H[0] = F2 * zx * zx;
+    H[1] = F2 * zx * zy;
+    H[2] = F2 * zy * zy + F1 * zyy;
+    dH[0] = F3 * zx * zx * zx;                          /* f_xxx */
+    dH[1] = F3 * zx * zx * zy;                          /* f_xxy */
+    dH[2] = F3 * zx * zy * zy + F2 * zx * zyy;          /* f_xyy */
+    dH[3] = dH[1];                                      /* d/dy: f_xxy, f_xyy, f_yyy */
+    dH[4] = dH[2];
+    dH[5] = F3 * zy * zy * zy + 3 * F2 * zy * zyy + F1 * zyyy;
+    cvm__metric_hessian_abs(g, dg, H, dg ? dH : NULL, 0.005, 0.2, 50);
+}
+
+int cvm__metric_builtin_fn(void *payload, const double *x, int dim, double *g, double *dg)
+{
+    const cvm__metric_builtin *b = (const cvm__metric_builtin *)payload;
+    double d[6] = {0, 0, 0, 0, 0, 0};
+    int k;
+    if (dim != 2)
+        return 1;
+    switch (b->kind) {
+    case CVM__METRIC_CONSTANT:
+        g[0] = b->g[0];
+        g[1] = b->g[1];
+        g[2] = b->g[2];
+        break;
+    case CVM__METRIC_IDENTITY:
+        g[0] = g[2] = 1;
+        g[1] = 0;
+        break;
+    case CVM__METRIC_STRETCH:
+        g[0] = 1;
+        g[1] = 0;
+        g[2] = 1 + 4 * x[1] * x[1];
+        d[5] = 8 * x[1];
+        break;
+    case CVM__METRIC_SADDLE: {
+        double grad[2], H[3] = {2, 0, -2};
+        grad[0] = 2 * x[0];
+        grad[1] = -2 * x[1];
+        cvm__metric_grad_outer(g, d, grad, H);
+        break;
+    }
+    case CVM__METRIC_SSHOCK:
+        sshock(g, d, x[0], x[1]);
+        break;
+    default:
+        return 1;
+    }
+    for (k = 0; k < 3; k++)
+        g[k] *= b->scale;
+    if (dg)
+        for (k = 0; k < 6; k++)
+            dg[k] = b->scale * d[k];
+    return 0;
+}
+
+/* Nearest point of the closed polygon bnd to y: *P, and the unit tangent *t of its edge when the
+ * projection falls inside the edge (else t = 0: at a corner the point does not move with y). */
+static void nearest_on_boundary(const cvm__metric *mt, const double y[2], double P[2], double t[2])
+{
+    double best = INFINITY;
+    size_t k;
+    for (k = 0; k < mt->nbnd; k++) {
+        const double *a = mt->bnd + 2 * k, *b = mt->bnd + 2 * ((k + 1) % mt->nbnd);
+        double ex = b[0] - a[0], ey = b[1] - a[1], l2 = ex * ex + ey * ey;
+        double s = l2 > 0 ? ((y[0] - a[0]) * ex + (y[1] - a[1]) * ey) / l2 : 0, q[2], d2;
+        int inside = s > 0 && s < 1;
+        s = s < 0 ? 0 : s > 1 ? 1 : s;
+        q[0] = a[0] + s * ex;
+        q[1] = a[1] + s * ey;
+        d2 = (y[0] - q[0]) * (y[0] - q[0]) + (y[1] - q[1]) * (y[1] - q[1]);
+        if (d2 < best) {
+            double l = sqrt(l2);
+            best = d2;
+            P[0] = q[0];
+            P[1] = q[1];
+            t[0] = inside ? ex / l : 0;
+            t[1] = inside ? ey / l : 0;
+        }
+    }
+}
+
+cvm_status cvm__metric_eval(const cvm__metric *mt, const double y[2], double g[3], double *dg,
+                            cvm__ctx *err)
+{
+    const cvm_sizing *s = mt->s;
+    double d[6] = {0, 0, 0, 0, 0, 0}, P[2] = {0, 0}, t[2] = {0, 0};
+    int k;
+    if (!s || !s->metric)
+        return cvm__error(err, CVM_E_ARGUMENT, CVM_ENT_NONE, -1,
+                          "the sizing has no metric: set one with cvm_sizing_set_metric_fn()");
+    if (!s->metric_has_dg)
+        return cvm__error(err, CVM_E_ARGUMENT, CVM_ENT_NONE, -1,
+                          "the metric callback gives no derivatives: the Lp-CVT gradient needs "
+                          "them (cvm_sizing_set_metric_fn() with has_derivatives = 1)");
+    if (s->metric(s->metric_payload, y, 2, g, d) != 0) {
+        if (!mt->bnd || mt->nbnd < 2)
+            return cvm__error(err, CVM_E_ARGUMENT, CVM_ENT_NONE, -1,
+                              "the metric callback refused the point (%.17g, %.17g)", y[0], y[1]);
+        nearest_on_boundary(mt, y, P, t);
+        if (s->metric(s->metric_payload, P, 2, g, d) != 0)
+            return cvm__error(err, CVM_E_ARGUMENT, CVM_ENT_NONE, -1,
+                              "the metric callback refused the point (%.17g, %.17g) and its "
+                              "nearest boundary point (%.17g, %.17g)", y[0], y[1], P[0], P[1]);
+        for (k = 0; k < 3; k++) { /* chain rule through the projection P(y): dP/dy = t t^T */
+            double along = d[k] * t[0] + d[3 + k] * t[1];
+            d[k] = along * t[0];
+            d[3 + k] = along * t[1];
+        }
+    }
+    for (k = 0; k < 6; k++)
+        if (!isfinite(d[k]) || (k < 3 && !isfinite(g[k])))
+            return cvm__error(err, CVM_E_ARGUMENT, CVM_ENT_NONE, -1,
+                              "the metric at (%.17g, %.17g) has a non-finite %s %d", y[0], y[1],
+                              isfinite(g[k % 3]) ? "derivative" : "entry", k % 3);
+    /* Sylvester's criterion; a measure check on plain doubles, not a topological decision */
+    if (!(g[0] > 0) || !(g[0] * g[2] - g[1] * g[1] > 0))
+        return cvm__error(err, CVM_E_ARGUMENT, CVM_ENT_NONE, -1,
+                          "the metric at (%.17g, %.17g) is not positive definite: g11 = %.17g, "
+                          "g12 = %.17g, g22 = %.17g", y[0], y[1], g[0], g[1], g[2]);
+    if (dg)
+        for (k = 0; k < 6; k++)
+            dg[k] = d[k];
+    return CVM_OK;
+}
+
+cvm_status cvm__metric_eval_M(const cvm__metric *mt, const double y[2], double M[4], double *dM,
+                              cvm__ctx *err)
+{
+    double g[3], dg[6];
+    cvm_status st = cvm__metric_eval(mt, y, g, dg, err);
+    if (st)
+        return st;
+    cvm__metric_factor(M, dM, g, dg);
+    return CVM_OK;
+}

@@ -1,0 +1,252 @@
+/* test_lpcvt_optimise.c - the boundary at unit metric length, the initial sites, and the L-BFGS
+ * optimisation of the Lp-CVT energy (lattice recovery, bad metrics, out of memory). */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "quad/quad_tests.h"
+#include "quad/quad_internal.h"
+#include "support/failing_alloc.h"
+
+/* The stretch metric diag(1, 1 + 4y^2): the metric length of x = const from y0 to y1 is
+ * F(y1) - F(y0), F(y) = y sqrt(1 + 4y^2) / 2 + asinh(2y) / 4; Gauss-Kronrod gets it to 1e-12,
+ * and the pieces of an edge have equal metric length. */
+START_TEST(boundary_pieces_have_equal_metric_length)
+{
+    cvm__metric_builtin b = {CVM__METRIC_STRETCH, 9, {0, 0, 0}};
+    double corners[8] = {0, 0, 5, 0, 5, 1.3, 0, 1.3}, *xy, want, got, a[2] = {5, 0}, c[2] = {5, 1.3};
+    size_t n, k;
+    cvm_sizing *s;
+    cvm__ctx ctx;
+    cvm__metric mt;
+    cvm__ctx_init_default(&ctx);
+    ck_assert_int_eq(cvm_sizing_create(&s), CVM_OK);
+    cvm_sizing_set_metric_fn(s, cvm__metric_builtin_fn, 1, &b);
+    mt.s = s;
+    mt.bnd = corners;
+    mt.nbnd = 4;
+    want = 3 * (1.3 * sqrt(1 + 4 * 1.3 * 1.3) / 2 + asinh(2 * 1.3) / 4);
+    ck_assert_int_eq(cvm__metric_length(&got, &mt, a, c, 0, 1, &ctx), CVM_OK);
+    ck_assert_msg(fabs(got - want) <= 1e-12 * want, "length %.17g, exact %.17g", got, want);
+    ck_assert_int_eq(cvm__boundary_discretise(&xy, &n, &mt, corners, 4, &ctx), CVM_OK);
+    /* bottom and top: 15 pieces (length 3 * 5); sides: round(want) */
+    ck_assert_uint_eq(n, 30 + 2 * (size_t)floor(want + 0.5));
+    for (k = 0; k < n; k++) {
+        const double *p = xy + 2 * k, *q = xy + 2 * ((k + 1) % n);
+        double l, e[2] = {0, 0};
+        ck_assert_int_eq(cvm__metric_length(&l, &mt, p, q, 0, 1, &ctx), CVM_OK);
+        e[0] = k < 15 ? 1.0 : k < 15 + (n - 30) / 2 ? want / ((double)(n - 30) / 2) : 1.0;
+        if (k >= 15 + (n - 30) / 2 && k < 30 + (n - 30) / 2)
+            e[0] = 1.0;
+        else if (k >= 30 + (n - 30) / 2)
+            e[0] = want / ((double)(n - 30) / 2);
+        ck_assert_msg(fabs(l - e[0]) <= 1e-10, "piece %lu has metric length %.15g, want %.15g",
+                      (unsigned long)k, l, e[0]);
+    }
+    /* the same edges elsewhere (the metric does not depend on x) get the same points, bit for bit */
+    {
+        double moved[8] = {10, 0, 15, 0, 15, 1.3, 10, 1.3}, *xy2;
+        size_t n2;
+        mt.bnd = moved;
+        ck_assert_int_eq(cvm__boundary_discretise(&xy2, &n2, &mt, moved, 4, &ctx), CVM_OK);
+        ck_assert_uint_eq(n2, n);
+        for (k = 0; k < n; k++) {
+            ck_assert(xy2[2 * k + 1] == xy[2 * k + 1]);
+            ck_assert(fabs(xy2[2 * k] - 10 - xy[2 * k]) <= 1e-14);
+        }
+        cvm__free(&ctx, xy2);
+    }
+    cvm__free(&ctx, xy);
+    cvm_sizing_free(s);
+}
+END_TEST
+
+/* The lattice of paper Table 1 is recovered from random starts: 9 sites uniform in
+ * [0.2, 3.8]^2, L-BFGS with relocations, every site within 1e-6 of a lattice point (so every
+ * lattice edge has metric length 1 +- 2e-6), for at least 95 of 100 seeds. */
+START_TEST(lpcvt_recovers_the_lattice_from_random_starts)
+{
+    cvm__metric_builtin b = {CVM__METRIC_IDENTITY, 1, {0, 0, 0}};
+    double corners[8] = {0, 0, 4, 0, 4, 4, 0, 4}, *bxy;
+    size_t nb;
+    cvm_sizing *s;
+    cvm__ctx ctx;
+    cvm__metric mt;
+    int seed, ok = 0;
+    cvm__ctx_init_default(&ctx);
+    ck_assert_int_eq(cvm_sizing_create(&s), CVM_OK);
+    cvm_sizing_set_metric_fn(s, cvm__metric_builtin_fn, 1, &b);
+    mt.s = s;
+    mt.bnd = corners;
+    mt.nbnd = 4;
+    ck_assert_int_eq(cvm__boundary_discretise(&bxy, &nb, &mt, corners, 4, &ctx), CVM_OK);
+    ck_assert_uint_eq(nb, 16);
+    for (seed = 0; seed < 100; seed++) {
+        unsigned long long st = (unsigned long long)seed * 7919 + 1;
+        cvm__lpcvt L;
+        cvm__lbfgs_opts o;
+        cvm__lbfgs_result res;
+        double xi[18], err = 0;
+        int i, j, found;
+        for (i = 0; i < 18; i++)
+            xi[i] = 0.2 + 3.6 * qtest_uniform(&st);
+        ck_assert_int_eq(cvm__lpcvt_init(&L, &ctx, s, bxy, nb, 9, 6, 0), CVM_OK);
+        cvm__lbfgs_defaults(&o);
+        ck_assert_int_eq(cvm__lpcvt_optimise(&L, xi, &o, &res), CVM_OK);
+        ck_assert_int_eq(res.outside, 0);
+        for (i = 0; i < 9; i++) { /* the nearest lattice point of each site, each taken once */
+            double px = 1 + i % 3, py = 1 + i / 3, best = INFINITY;
+            for (found = 0, j = 0; j < 9; j++)
+                best = fmin(best, fmax(fabs(xi[2 * j] - px), fabs(xi[2 * j + 1] - py)));
+            err = fmax(err, best);
+        }
+        ok += err <= 1e-6;
+        (void)found;
+        cvm__lpcvt_free(&L);
+    }
+    ck_assert_msg(ok >= 95, "lattice recovered from %d of 100 seeds", ok);
+    cvm__free(&ctx, bxy);
+    cvm_sizing_free(s);
+}
+END_TEST
+
+/* The initial sites: the interior count of a unit grid (9 in [0,4]^2 under g = I), strictly
+ * inside, the same for the same seed. */
+START_TEST(lpcvt_initial_sites_follow_the_metric_area)
+{
+    cvm__metric_builtin b = {CVM__METRIC_IDENTITY, 1, {0, 0, 0}};
+    double corners[8] = {0, 0, 4, 0, 4, 4, 0, 4}, *bxy, *x1, *x2;
+    size_t nb, n1, n2, k;
+    cvm_sizing *s;
+    cvm__ctx ctx;
+    cvm__metric mt;
+    cvm__lpcvt L;
+    cvm__ctx_init_default(&ctx);
+    ck_assert_int_eq(cvm_sizing_create(&s), CVM_OK);
+    cvm_sizing_set_metric_fn(s, cvm__metric_builtin_fn, 1, &b);
+    mt.s = s;
+    mt.bnd = corners;
+    mt.nbnd = 4;
+    ck_assert_int_eq(cvm__boundary_discretise(&bxy, &nb, &mt, corners, 4, &ctx), CVM_OK);
+    ck_assert_int_eq(cvm__lpcvt_initial_sites(&x1, &n1, &mt, bxy, nb, 42, &ctx), CVM_OK);
+    ck_assert_int_eq(cvm__lpcvt_initial_sites(&x2, &n2, &mt, bxy, nb, 42, &ctx), CVM_OK);
+    ck_assert_uint_eq(n1, 9);
+    ck_assert_uint_eq(n2, 9);
+    ck_assert(memcmp(x1, x2, 18 * sizeof *x1) == 0);
+    ck_assert_int_eq(cvm__lpcvt_init(&L, &ctx, s, bxy, nb, n1, 6, 0), CVM_OK);
+    for (k = 0; k < n1; k++)
+        ck_assert(cvm__lpcvt_inside(&L, x1 + 2 * k));
+    cvm__lpcvt_free(&L);
+    cvm__free(&ctx, x1);
+    cvm__free(&ctx, x2);
+    cvm__free(&ctx, bxy);
+    cvm_sizing_free(s);
+}
+END_TEST
+
+static int nan_inside(void *payload, const double *x, int dim, double *g, double *dg)
+{
+    (void)payload;
+    (void)dim;
+    g[0] = x[0] > 1.5 && x[0] < 2.5 ? NAN : 1;
+    g[1] = 0;
+    g[2] = x[1] > 2.9 && x[1] < 3.1 ? -1 : 1;
+    if (dg)
+        memset(dg, 0, 6 * sizeof *dg);
+    return 0;
+}
+
+/* A metric that is NaN or indefinite somewhere in the domain stops the energy with
+ * CVM_E_ARGUMENT naming the point. */
+START_TEST(lpcvt_bad_metric_is_an_argument_error)
+{
+    double bxy[32], xi[18], E, grad[18];
+    cvm_sizing *s;
+    cvm__ctx ctx;
+    cvm__lpcvt L;
+    int i;
+    cvm__ctx_init_default(&ctx);
+    ck_assert_int_eq(cvm_sizing_create(&s), CVM_OK);
+    cvm_sizing_set_metric_fn(s, nan_inside, 1, NULL);
+    qtest_box(bxy, 0, 0, 4, 4, 4);
+    for (i = 0; i < 9; i++) {
+        xi[2 * i] = 1 + i % 3;
+        xi[2 * i + 1] = 1 + i / 3;
+    }
+    /* the boundary sites at x = 2 meet the NaN when their ghosts are made */
+    ck_assert_int_eq(cvm__lpcvt_init(&L, &ctx, s, bxy, 16, 9, 6, 0), CVM_E_ARGUMENT);
+    ck_assert_ptr_nonnull(strstr(ctx.errmsg, "non-finite"));
+    cvm__lpcvt_free(&L);
+    ck_assert_int_eq(cvm__lpcvt_init(&L, &ctx, s, bxy, 16, 9, 6, 1), CVM_OK);
+    ck_assert_int_eq(cvm__lpcvt_eval(&L, xi, &E, grad), CVM_E_ARGUMENT);
+    ck_assert_ptr_nonnull(strstr(ctx.errmsg, "the metric at ("));
+    cvm__lpcvt_free(&L);
+    cvm_sizing_free(s);
+}
+END_TEST
+
+/* Every allocation of boundary, initial sites, energy and optimisation may fail: CVM_E_NOMEM,
+ * nothing leaked, and a run that passes the last allocation succeeds. */
+START_TEST(lpcvt_out_of_memory_sweep)
+{
+    cvm__metric_builtin b = {CVM__METRIC_SADDLE, 4, {0, 0, 0}};
+    double corners[8] = {-1.3, -1.3, 1.3, -1.3, 1.3, 1.3, -1.3, 1.3};
+    cvm_sizing *s;
+    long k;
+    int done = 0;
+    ck_assert_int_eq(cvm_sizing_create(&s), CVM_OK);
+    cvm_sizing_set_metric_fn(s, cvm__metric_builtin_fn, 1, &b);
+    for (k = 1; k < 100000 && !done; k++) {
+        cvmtest_alloc a;
+        cvm__ctx ctx;
+        cvm__metric mt;
+        cvm__lpcvt L;
+        cvm__lbfgs_opts o;
+        cvm__lbfgs_result res;
+        double *bxy = NULL, *xi = NULL;
+        size_t nb = 0, ni = 0;
+        cvm_status st;
+        cvmtest_alloc_init(&a, k, 0);
+        cvm__ctx_init_default(&ctx);
+        ctx.alloc_fn = cvmtest_malloc;
+        ctx.realloc_fn = cvmtest_realloc;
+        ctx.free_fn = cvmtest_free;
+        ctx.payload = &a;
+        mt.s = s;
+        mt.bnd = corners;
+        mt.nbnd = 4;
+        memset(&L, 0, sizeof L);
+        st = cvm__boundary_discretise(&bxy, &nb, &mt, corners, 4, &ctx);
+        if (!st)
+            st = cvm__lpcvt_initial_sites(&xi, &ni, &mt, bxy, nb, 7, &ctx);
+        if (!st)
+            st = cvm__lpcvt_init(&L, &ctx, s, bxy, nb, ni, 4, 0);
+        if (!st) {
+            cvm__lbfgs_defaults(&o);
+            o.max_iter = 20;
+            o.relocations = 1;
+            st = cvm__lpcvt_optimise(&L, xi, &o, &res);
+        }
+        ck_assert_msg(st == CVM_OK || st == CVM_E_NOMEM, "allocation %ld: status %d (%s)", k,
+                      (int)st, ctx.errmsg);
+        done = st == CVM_OK && a.n_failed == 0;
+        cvm__lpcvt_free(&L);
+        cvm__free(&ctx, bxy);
+        cvm__free(&ctx, xi);
+        ck_assert_msg(a.live_blocks == 0, "allocation %ld: %ld blocks leaked", k, a.live_blocks);
+    }
+    ck_assert(done);
+    cvm_sizing_free(s);
+}
+END_TEST
+
+TCase *quad_lpcvt_optimise_tcase(void)
+{
+    TCase *tc = tcase_create("lpcvt_optimise");
+    tcase_set_timeout(tc, 300);
+    tcase_add_test(tc, boundary_pieces_have_equal_metric_length);
+    tcase_add_test(tc, lpcvt_initial_sites_follow_the_metric_area);
+    tcase_add_test(tc, lpcvt_bad_metric_is_an_argument_error);
+    tcase_add_test(tc, lpcvt_recovers_the_lattice_from_random_starts);
+    tcase_add_test(tc, lpcvt_out_of_memory_sweep);
+    return tc;
+}
