@@ -56,7 +56,7 @@ ifneq ($(TETGEN),0)
   $(error TETGEN=$(TETGEN): TetGen is for the future 3D work and is not linked yet; use TETGEN=0)
 endif
 ALL_CFLAGS := $(CFLAGS_BASE) $(OMPFLAGS) $(SANFLAGS) $(CFLAGS)
-LDLIBS_LIB := -lm $(OMPFLAGS)
+LDLIBS_LIB := -lz -lm $(OMPFLAGS)
 
 LIB_SRC := $(sort $(filter-out lib/cli/%,$(wildcard lib/*/*.c)))
 CLI_SRC := $(sort $(wildcard lib/cli/*.c))
@@ -378,7 +378,7 @@ install-c: all
 	ln -sf libcvmesh.so.$(VERSION) $(DESTDIR)$(PREFIX)/lib/$(SONAME)
 	ln -sf $(SONAME) $(DESTDIR)$(PREFIX)/lib/libcvmesh.so
 	install -m 755 $(CLI) $(DESTDIR)$(PREFIX)/bin/
-	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@VERSION@|$(VERSION)|' -e 's|@LIBS@|-lm $(OMPFLAGS)|' \
+	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@VERSION@|$(VERSION)|' -e 's|@LIBS@|-lz -lm $(OMPFLAGS)|' \
 	  .ci/cvmesh.pc.in > $(DESTDIR)$(PREFIX)/lib/pkgconfig/cvmesh.pc
 
 clean:

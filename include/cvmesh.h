@@ -398,9 +398,10 @@ CVM_API cvm_status cvm_mesh_set_regions_nd(cvm_mesh *m, const double *r, size_t 
  * the API makes later messages name those by their indices again.
  *
  *
- * A .vtu file (VTK XML unstructured grid with ASCII data arrays, as
- * cvm_mesh_write() writes it; other writers' files with triangle cells are
- * read too) gives a triangulated handle: the file's points become the input
+ * A .vtu file (VTK XML unstructured grid as cvm_mesh_write(), VTK and meshio
+ * write it: ASCII, inline base64 or appended raw/base64 data arrays, zlib
+ * compression, UInt32 or UInt64 headers, either byte order, any integer or
+ * float type; other writers' files with triangle cells are read too) gives a triangulated handle: the file's points become the input
  * points (point data "marker" and "attribute" their markers and attributes),
  * its line cells (VTK type 3, cell data "marker") and the boundary edges of its
  * triangles the segments, with a hole point in each hole; the handle is
@@ -427,8 +428,8 @@ CVM_API cvm_status cvm_mesh_set_regions_nd(cvm_mesh *m, const double *r, size_t 
  *                                value counts or offsets (message names the cell)
  *         CVM_E_INPUT_NONFINITE  a NaN/Inf coordinate or value (message gives file:line)
  *         CVM_E_TOO_LARGE        a count beyond INT32_MAX/4 (message gives file:line)
- *         CVM_E_UNSUPPORTED      unknown extension; in a .vtu binary, appended or compressed
- *                                data, more than one Piece, or a cell type other than 1, 3, 5
+ *         CVM_E_UNSUPPORTED      unknown extension; in a .vtu a compressor other than zlib,
+ *                                more than one Piece, or a cell type other than 1, 3, 5
  *         CVM_E_INPUT_EMPTY      .vtu without triangle cells
  *         CVM_E_INPUT_DEGENERATE .vtu whose mesh cannot be rebuilt: a triangle repeats a
  *                                point or has two corners at one position, a line cell

@@ -17,7 +17,7 @@ out=$build/fortran
 FC=${FC:-gfortran}
 [ "$FC" = f77 ] && FC=gfortran   # make's default FC
 FFLAGS=${FFLAGS:--O2 -g -std=f2008 -Wall -Wextra -pedantic -Werror -fimplicit-none}
-LIBS=${LIBS:--lm -fopenmp}
+LIBS=${LIBS:--lz -lm -fopenmp}
 PYTHON=${PYTHON:-python3}
 
 "$PYTHON" "$here/gen_interfaces.py" --check

@@ -127,7 +127,7 @@ class BuildExt(build_ext):
                                                            numpy.get_include()]
         ext.extra_compile_args = WRAP_CFLAGS if unix else []
         if unix:
-            ext.libraries = list(ext.libraries or []) + ["m"]
+            ext.libraries = list(ext.libraries or []) + ["z", "m"]
         super().build_extension(ext)
 
 

@@ -98,9 +98,10 @@ typedef struct cvm__vtu_mesh {
     int has_lines;    /* 1 when the file has line cells */
 } cvm__vtu_mesh;
 
-/* Parse .vtu text from r (name for messages "name:line: ..."). Returns CVM_OK,
+/* Parse a .vtu from r (name for messages "name:line: ..."; ASCII, base64,
+ * appended raw or base64, zlib-compressed data). Returns CVM_OK,
  * CVM_E_IO_READ, CVM_E_IO_FORMAT (malformed; an index out of range), CVM_E_UNSUPPORTED
- * (binary/appended/compressed data, other cell types), CVM_E_INPUT_NONFINITE,
+ * (another compressor, other cell types), CVM_E_INPUT_NONFINITE,
  * CVM_E_TOO_LARGE, CVM_E_NOMEM, CVM_INCOMPLETE_CANCELLED (as
  * cvm__read_triangle_format(), while the file is read); out is zeroed on error. */
 cvm_status cvm__read_vtu(cvm__ctx *ctx, cvm__reader *r, const char *name, cvm__vtu_mesh *out);

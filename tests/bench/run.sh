@@ -8,7 +8,7 @@ DOMAINS=$2
 CC=${CC:-cc}
 mkdir -p "$BUILD/bench"
 $CC -std=c99 -O2 -Iinclude -o "$BUILD/bench/bench_delaunay" tests/bench/bench_delaunay.c \
-    "$BUILD/lib/libcvmesh.a" -lm -fopenmp
+    "$BUILD/lib/libcvmesh.a" -lz -lm -fopenmp
 VENV="$BUILD/venv"
 if [ ! -x "$VENV/bin/python" ]; then
     python3 -m venv "$VENV"
