@@ -415,7 +415,18 @@ CVM_API cvm_status cvm_mesh_set_regions_nd(cvm_mesh *m, const double *r, size_t 
  * file repeats a point). Cell type 1 (vertex) is ignored; z must be 0. The
  * rebuild ignores CVM_OPT_TIME_LIMIT_S and uses the handle's other options.
  *
- * @param path  file name; the format follows the extension (.poly, .node or .vtu).
+ * A legacy .vtk file (ASCII or BINARY, UNSTRUCTURED_GRID or POLYDATA; cell
+ * layouts before and after version 5.1; POINT_DATA/CELL_DATA arrays of the
+ * same names as SCALARS or FIELD arrays) and a Gmsh .msh file (2.2 or 4.1,
+ * ASCII or binary) are read the same way as a .vtu. In a .msh, 2-node lines
+ * are the line cells with their physical tags as markers, point elements'
+ * physical tags are point markers, and 3-node triangles' physical tags are
+ * the triangles' attributes. A .vtk or .msh file without triangles is a
+ * domain instead: its points and line cells (with markers) become the input
+ * points and segments, and the handle is left untriangulated, as after
+ * reading a .poly.
+ *
+ * @param path  file name; the format follows the extension (.poly, .node, .vtu, .vtk or .msh).
  * Atomicity:   on error or cancellation the previous input (and, for .vtu, the
  *              previous mesh) is kept unchanged.
  * Stops:       the progress callback (stage CVM_STAGE_READ, fraction 0) is asked
@@ -429,7 +440,10 @@ CVM_API cvm_status cvm_mesh_set_regions_nd(cvm_mesh *m, const double *r, size_t 
  *         CVM_E_INPUT_NONFINITE  a NaN/Inf coordinate or value (message gives file:line)
  *         CVM_E_TOO_LARGE        a count beyond INT32_MAX/4 (message gives file:line)
  *         CVM_E_UNSUPPORTED      unknown extension; in a .vtu a compressor other than zlib,
- *                                more than one Piece, or a cell type other than 1, 3, 5
+ *                                more than one Piece, or a cell type other than 1, 3, 5;
+ *                                in a .vtk another DATASET or keyword, cells other than
+ *                                triangles, lines, polylines and vertices; in a .msh
+ *                                another version or element types other than 1, 2, 15
  *         CVM_E_INPUT_EMPTY      .vtu without triangle cells
  *         CVM_E_INPUT_DEGENERATE .vtu whose mesh cannot be rebuilt: a triangle repeats a
  *                                point or has two corners at one position, a line cell

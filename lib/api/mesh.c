@@ -336,7 +336,7 @@ cvm_status cvm_mesh_read(cvm_mesh *m, const char *path)
     CVM__BEGIN(m);
     if (!path)
         return cvm__error(&m->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "path is NULL");
-    if (cvm__format_of(path) == CVM__FMT_VTU)
+    if (cvm__is_mesh_file(path)) /* .vtu, .vtk, .msh */
         return cvm__mesh_read_vtu(m, path); /* lib/api/mesh_read_vtu.c */
     memset(&p, 0, sizeof p);
     s = cvm__read_file(&m->ctx, path, &p);

@@ -468,6 +468,7 @@ void cvm__vtu_mesh_free(cvm__ctx *ctx, cvm__vtu_mesh *vm)
     cvm__free(ctx, vm->tri);
     cvm__free(ctx, vm->w);
     cvm__free(ctx, vm->tattr);
+    cvm__free(ctx, vm->names);
     memset(vm, 0, sizeof *vm);
 }
 

@@ -25,7 +25,7 @@
 #include "io_text.h"
 #include "vtu_data.h"
 
-enum { K_SIGNED, K_UNSIGNED, K_FLOAT };
+enum { K_SIGNED = CVM__BIN_SIGNED, K_UNSIGNED = CVM__BIN_UNSIGNED, K_FLOAT = CVM__BIN_FLOAT };
 
 static const struct vtype {
     const char *name;
@@ -446,6 +446,50 @@ static cvm_status binary_bytes(const cvm__vtu_file *f, const cvm__vtu_array *a, 
     }
 }
 
+int cvm__bin_number(const unsigned char *p, int size, int kind, int big, int integer,
+                     long long *l, double *d)
+{
+    uint64_t u = load(p, size, big);
+    int bits = 8 * size;
+    if (kind == CVM__BIN_FLOAT) {
+        double x;
+        if (size == 4) {
+            uint32_t u32 = (uint32_t)u;
+            float g;
+            memcpy(&g, &u32, sizeof g);
+            x = g;
+        } else {
+            memcpy(&x, &u, sizeof x);
+        }
+        if (integer)
+            return 1;
+        *d = x;
+        return x - x == 0 ? 0 : 2;
+    }
+    if (kind == CVM__BIN_SIGNED) {
+        long long v;
+        if (bits < 64 && (u >> (bits - 1)) & 1)
+            u |= ~(uint64_t)0 << bits; /* sign-extend */
+        v = u > (uint64_t)INT64_MAX ? -(long long)(~u) - 1 : (long long)u;
+        if (!integer) {
+            *d = (double)v;
+            return 0;
+        }
+        if (v < -(long long)INT32_MAX || v > INT32_MAX)
+            return 1;
+        *l = v;
+        return 0;
+    }
+    if (!integer) {
+        *d = (double)u;
+        return 0;
+    }
+    if (u > INT32_MAX)
+        return 1;
+    *l = (long long)u;
+    return 0;
+}
+
 /* Binary bytes of type t into values. */
 static cvm_status convert(const cvm__vtu_file *f, const cvm__vtu_array *a, const struct vtype *t,
                           const unsigned char *bytes, size_t len, const char *what, int integer,
@@ -461,47 +505,22 @@ static cvm_status convert(const cvm__vtu_file *f, const cvm__vtu_array *a, const
                   !(d = cvm__malloc(f->ctx, (n + 1) * sizeof *d)))
         return cvm__nomem(f->ctx);
     for (k = 0; k < n; k++) {
-        uint64_t u = load(bytes + k * (size_t)t->size, t->size, f->big_endian);
-        int bits = 8 * t->size;
-        double x;
-        long long v = 0;
-        int ok = 1;
-        if (t->kind == K_FLOAT) {
-            if (t->size == 4) {
-                uint32_t u32 = (uint32_t)u;
-                float g;
-                memcpy(&g, &u32, sizeof g);
-                x = g;
-            } else {
-                memcpy(&x, &u, sizeof x);
-            }
-            ok = x - x == 0; /* finite */
-        } else if (t->kind == K_SIGNED) {
-            if (bits < 64 && (u >> (bits - 1)) & 1)
-                u |= ~(uint64_t)0 << bits; /* sign-extend */
-            v = u > (uint64_t)INT64_MAX ? -(long long)(~u) - 1 : (long long)u;
-            x = (double)v;
-            ok = v >= -(long long)INT32_MAX && v <= INT32_MAX;
-        } else {
-            x = (double)u;
-            v = u <= INT32_MAX ? (long long)u : 0;
-            ok = u <= INT32_MAX;
-        }
-        if (integer) {
-            if (!ok || t->kind == K_FLOAT) {
-                cvm__free(f->ctx, l);
-                return cvm__vtu_fail(f, a->ts, CVM_E_IO_FORMAT, "%s: entry %lu (from 0) of type %s "
-                                     "is not an integer in [%lld, %lld]", what, (unsigned long)k,
-                                     t->name, -(long long)INT32_MAX, (long long)INT32_MAX);
-            }
-            l[k] = v;
-        } else {
-            if (t->kind == K_FLOAT && !ok) {
-                cvm__free(f->ctx, d);
+        long long lv = 0;
+        double dv = 0;
+        int r = cvm__bin_number(bytes + k * (size_t)t->size, t->size, t->kind, f->big_endian,
+                                integer, &lv, &dv);
+        if (integer)
+            l[k] = lv;
+        else
+            d[k] = dv;
+        if (r) {
+            cvm__free(f->ctx, integer ? (void *)l : (void *)d);
+            if (r == 2)
                 return cvm__vtu_fail(f, a->ts, CVM_E_INPUT_NONFINITE, "%s: entry %lu (from 0) "
                                      "is not a finite number", what, (unsigned long)k);
-            }
-            d[k] = x;
+            return cvm__vtu_fail(f, a->ts, CVM_E_IO_FORMAT, "%s: entry %lu (from 0) of type %s "
+                                 "is not an integer in [%lld, %lld]", what, (unsigned long)k,
+                                 t->name, -(long long)INT32_MAX, (long long)INT32_MAX);
         }
     }
     *out = integer ? (void *)l : (void *)d;

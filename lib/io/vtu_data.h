@@ -39,6 +39,13 @@ typedef struct cvm__vtu_array {
 cvm_status cvm__vtu_decode(const cvm__vtu_file *f, const cvm__vtu_array *a, const char *what,
                            int integer, long long want, void **out, size_t *got);
 
+/* One binary number of size bytes at p (kind CVM__BIN_*, big-endian when
+ * big). integer: into *l, in [-INT32_MAX, INT32_MAX], else 1 (a float is
+ * 1 too); otherwise into *d, 2 when not finite. 0 on success. */
+enum { CVM__BIN_SIGNED, CVM__BIN_UNSIGNED, CVM__BIN_FLOAT };
+int cvm__bin_number(const unsigned char *p, int size, int kind, int big, int integer,
+                    long long *l, double *d);
+
 /* Set an error "name:line: message" about byte offset at of f. */
 cvm_status cvm__vtu_fail(const cvm__vtu_file *f, size_t at, cvm_status st, const char *fmt, ...)
     CVM__PRINTF(4, 5);

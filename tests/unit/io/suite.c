@@ -17,6 +17,8 @@ Suite *io_suite(void)
     suite_add_tcase(s, io_write_vtu_tcase());
     suite_add_tcase(s, io_read_vtu_tcase());
     suite_add_tcase(s, io_vtu_data_tcase());
+    suite_add_tcase(s, io_read_vtk_tcase());
+    suite_add_tcase(s, io_read_msh_tcase());
     suite_add_tcase(s, io_write_msh_tcase());
     suite_add_tcase(s, io_write_svg_tcase());
     return s;
