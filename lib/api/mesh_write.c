@@ -19,6 +19,9 @@ void cvm__mesh_out_free(cvm_mesh *m, cvm__mesh_out *mo)
     memset(mo, 0, sizeof *mo);
 }
 
+/* How many triangle slots ahead gather_triangles() asks for coordinates. */
+#define PREFETCH_AHEAD 16
+
 /* Triangles, their attributes and (want_quality) their smallest angles and
  * AFLR layer indices. */
 static cvm_status gather_triangles(cvm_mesh *m, cvm__mesh_out *mo, int want_quality)
@@ -38,6 +41,14 @@ static cvm_status gather_triangles(cvm_mesh *m, cvm__mesh_out *mo, int want_qual
         return CVM_E_NOMEM;
     for (t = 0; t < T->nt; t++) {
         const int32_t *v = T->tv + 3 * t;
+#if defined(__GNUC__)
+        if (q && t + PREFETCH_AHEAD < T->nt) { /* the corners' coordinates are scattered in memory */
+            const int32_t *f = v + 3 * PREFETCH_AHEAD;
+            __builtin_prefetch(T->xy + 2 * (size_t)f[0]);
+            __builtin_prefetch(T->xy + 2 * (size_t)f[1]);
+            __builtin_prefetch(T->xy + 2 * (size_t)f[2]);
+        }
+#endif
         if (!cvm__tri2_in_domain(T, (int32_t)t))
             continue;
         memcpy(tri + 3 * k, v, 3 * sizeof *tri);

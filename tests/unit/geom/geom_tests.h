@@ -14,6 +14,7 @@ TCase *geom_orient3d_tcase(void);  /* test_orient3d.c */
 TCase *geom_insphere_tcase(void);  /* test_insphere.c */
 TCase *geom_sos_tcase(void);       /* test_sos.c: symbolic perturbation of the lifted tests */
 TCase *geom_construct_tcase(void); /* test_construct.c: circumcentre, segment crossing */
+TCase *geom_measure_tcase(void);   /* test_measure.c: the smallest-angle shortcut */
 
 /* oracle.c: exact signs (-1, 0, 1) of the determinants for any finite doubles
  * of moderate exponent spread, by big-integer arithmetic. */

@@ -14,5 +14,6 @@ Suite *geom_suite(void)
     suite_add_tcase(s, geom_insphere_tcase());
     suite_add_tcase(s, geom_sos_tcase());
     suite_add_tcase(s, geom_construct_tcase());
+    suite_add_tcase(s, geom_measure_tcase());
     return s;
 }
