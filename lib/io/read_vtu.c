@@ -323,6 +323,12 @@ static cvm_status walk_tags(vparser *ps, size_t lim)
     }
     if (!seen_file)
         return fail_at(ps, ps->n, CVM_E_IO_FORMAT, "no <VTKFile type=\"UnstructuredGrid\">");
+    return CVM_OK;
+}
+
+/* After decoding: the arrays every file needs are there. */
+static cvm_status complete(vparser *ps)
+{
     if (!ps->have_piece || !ps->ncomp[R_XYZ] || !ps->ncomp[R_CONN] || !ps->ncomp[R_OFF] ||
         !ps->ncomp[R_TYPES])
         return fail_at(ps, ps->n, CVM_E_IO_FORMAT, "%s", !ps->have_piece ? "no <Piece>" :
@@ -362,11 +368,15 @@ static cvm_status decode_arrays(vparser *ps)
         int cells = r == R_OFF || r == R_TYPES || r == R_CMARK || r == R_CATTR;
         want[r] = r == R_CONN ? -1 : ps->ncomp[r] * (cells ? ps->nc : ps->np);
     }
-    for (r = 0; r < R_N; r++) {
-        if (!ps->ncomp[r])
-            continue;
-        if ((s = cvm__vtu_decode(&ps->f, &ps->arr[r], k_roles[r].what, k_roles[r].integer, want[r],
-                                 slot[r], r == R_CONN ? &got : NULL)))
+    for (;;) { /* in file order, so the first bad value in the file is the one named */
+        int next = -1;
+        for (r = 0; r < R_N; r++)
+            if (ps->ncomp[r] && !*slot[r] && (next < 0 || ps->arr[r].ts < ps->arr[next].ts))
+                next = r;
+        if (next < 0)
+            break;
+        if ((s = cvm__vtu_decode(&ps->f, &ps->arr[next], k_roles[next].what, k_roles[next].integer,
+                                 want[next], slot[next], next == R_CONN ? &got : NULL)))
             return s;
     }
     ps->nconn = got;
@@ -483,7 +493,7 @@ cvm_status cvm__read_vtu(cvm__ctx *ctx, cvm__reader *r, const char *name, cvm__v
     ps.f.ctx = ctx;
     ps.f.name = name;
     if (!(s = slurp(&ps, r)) && !(s = scan_tags(&ps)) && !(s = decode_arrays(&ps)) &&
-        !(s = build_cells(&ps, out)))
+        !(s = complete(&ps)) && !(s = build_cells(&ps, out)))
         s = build_points(&ps, out);
     cvm__free(ctx, ps.buf);
     cvm__free(ctx, ps.xyz);

@@ -42,6 +42,16 @@ def meshio_files():
         field_data={"bottom": np.array([1, 1]), "right": np.array([2, 1]),
                     "top": np.array([3, 1]), "left": np.array([4, 1]),
                     "inside": np.array([7, 2])})
+    # a domain: boundary lines with physical tags 1..4, a point with tag 9
+    dom = meshio.Mesh(np.array([[0, 0], [2, 0], [2, 1], [0, 1], [1, 0.5]], float),
+                      [("line", LIN), ("vertex", np.array([[4]]))],
+                      cell_data={"gmsh:physical": [np.array([1, 2, 3, 4]), np.array([9])],
+                                 "gmsh:geometrical": [np.array([1, 2, 3, 4]), np.array([1])]},
+                      field_data={"bottom": np.array([1, 1]), "right": np.array([2, 1]),
+                                  "top": np.array([3, 1]), "left": np.array([4, 1]),
+                                  "centre": np.array([9, 0])})
+    meshio.write(out("domain_meshio_22.msh"), dom, file_format="gmsh22", binary=False)
+    meshio.write(out("domain_meshio_22b.msh"), dom, file_format="gmsh22", binary=True)
     for ver, tag in (("gmsh22", "22"), ("gmsh", "41")):
         for binary in (False, True):
             meshio.write(out("square_meshio_%s%s.msh" % (tag, "b" if binary else "")), gmesh,
