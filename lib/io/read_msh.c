@@ -98,6 +98,7 @@ static cvm_status get_int(msh *m, int bin, const char *what, long long lo, long 
                           long long *out)
 {
     size_t at = m->pos;
+    *out = 0;
     if (bin) {
         long long v = 0;
         double unused;
@@ -131,6 +132,7 @@ static cvm_status get_double(msh *m, int bin, const char *what, double *out)
 {
     size_t at = m->pos;
     int r;
+    *out = 0;
     if (bin) {
         long long unused;
         if (m->f.n - m->pos < 8)

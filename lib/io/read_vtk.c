@@ -104,6 +104,7 @@ static cvm_status count(vtk *v, const char *what, long long *out)
     size_t at = v->pos;
     cvm_status s = need(v, w, what);
     int r;
+    *out = 0;
     if (s)
         return s;
     r = cvm__parse_long(w, 0, MAX_COUNT, out);
