@@ -1733,7 +1733,8 @@ CVM_API cvm_status cvm_mesh_view_points_nd(const double **ptr_out, size_t *count
  * .vtu (VTK XML unstructured grid: the triangles, then the segments as line
  * cells; point data "marker", "weight" when weights are set, "attribute";
  * cell data "marker" (segment marker of a line, 0 on a triangle), "attribute"
- * (regional, with regions) and "min_angle_deg" (0 on a line); cvm_mesh_read()
+ * (regional, with regions) and "min_angle_deg" (0 on a line); ASCII, or
+ * binary appended data as CVM_OPT_VTU_ENCODING says; cvm_mesh_read()
  * reads it back), .msh (Gmsh 4.1 ASCII, segments tagged by
  * marker as physical groups), .node (writes PREFIX.node, PREFIX.ele and
  * PREFIX.edge beside each other, 0-based), .svg (a picture).
