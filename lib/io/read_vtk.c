@@ -300,13 +300,15 @@ static cvm_status data_array(vtk *v, size_t at, const char *name, long long ncom
     void **slot = NULL;
     int integer = 0;
     char what[WORD + 16];
-    if (!v->data_of)
-        return fail(v, at, CVM_E_IO_FORMAT, "array '%s' before POINT_DATA or CELL_DATA", name);
+    if (ncomp < 1 || ncomp > 10000 || ncomp * ntuples > MAX_COUNT * 4)
+        return fail(v, at, CVM_E_IO_FORMAT, "array '%s': bad number of components %lld", name, ncomp);
+    if (!v->data_of) { /* field data of the whole data set (e.g. TIME): skipped */
+        void *junk;
+        return values(v, type, ncomp * ntuples, 0, 1, name, &junk);
+    }
     if (ntuples != items)
         return fail(v, at, CVM_E_IO_FORMAT, "array '%s' has %lld tuples, the %s have %lld", name,
                     ntuples, pt ? "points" : "cells", items);
-    if (ncomp < 1 || ncomp > 10000 || ncomp * ntuples > MAX_COUNT * 4)
-        return fail(v, at, CVM_E_IO_FORMAT, "array '%s': bad number of components %lld", name, ncomp);
     if (strcmp(name, "weight") == 0 && ncomp == 1)
         slot = pt ? (void **)&v->w : NULL;
     else if (strcmp(name, "marker") == 0 && ncomp == 1) {

@@ -90,6 +90,9 @@ static const char k_good[] =
     "hand made, old cell layout\n"
     "ASCII\n"
     "DATASET UNSTRUCTURED_GRID\n"
+    "FIELD FieldData 1\n"
+    "TIME 1 1 double\n"
+    "2.5\n"
     "POINTS 4 double\n"
     "0 0 0 1 0 0 1 1 0 0 1 0\n"
     "CELLS 3 12\n"
@@ -146,20 +149,20 @@ END_TEST
 
 START_TEST(vtk_malformed_files_are_named)
 {
-    expect_bad("0 0 0 1 0 0", "0 0 0 1 x 0", CVM_E_IO_FORMAT, "t.vtk:6: POINTS: entry 4 (from 0) is 'x', not a number");
-    expect_bad("0 0 0 1 0 0", "0 0 0 1 nan 0", CVM_E_INPUT_NONFINITE, "t.vtk:6: POINTS: entry 4 (from 0) is 'nan', not a finite number");
+    expect_bad("0 0 0 1 0 0", "0 0 0 1 x 0", CVM_E_IO_FORMAT, "t.vtk:9: POINTS: entry 4 (from 0) is 'x', not a number");
+    expect_bad("0 0 0 1 0 0", "0 0 0 1 nan 0", CVM_E_INPUT_NONFINITE, "t.vtk:9: POINTS: entry 4 (from 0) is 'nan', not a finite number");
     expect_bad("0 0 0 1 0 0", "0 0 0 1 0 2", CVM_E_IO_FORMAT, "point 1 has z = 2");
     expect_bad("3 0 2 3\n", "3 0 2 9\n", CVM_E_IO_FORMAT, "cell 1 names point 9, which does not exist");
-    expect_bad("3 0 2 3\n", "4 0 2 3\n", CVM_E_IO_FORMAT, "t.vtk:7: CELLS: 3 cells use 11 of the 12 values");
+    expect_bad("3 0 2 3\n", "4 0 2 3\n", CVM_E_IO_FORMAT, "t.vtk:10: CELLS: 3 cells use 11 of the 12 values");
     expect_bad("5 5 4", "5 9 4", CVM_E_UNSUPPORTED, "cell 1 has VTK type 9");
-    expect_bad("CELL_DATA 3", "CELL_DATA 4", CVM_E_IO_FORMAT, "t.vtk:13: CELL_DATA 4, but the file has 3");
+    expect_bad("CELL_DATA 3", "CELL_DATA 4", CVM_E_IO_FORMAT, "t.vtk:16: CELL_DATA 4, but the file has 3");
     expect_bad("POINTS 4 double", "POINTS 4 string", CVM_E_UNSUPPORTED, "POINTS: data type 'string' is not read");
     expect_bad("POINTS 4 double", "POINTS 99999999999 double", CVM_E_TOO_LARGE, "exceeds 536870911");
     expect_bad("POINTS 4 double", "POINTS 400000 double", CVM_E_IO_FORMAT, "values do not fit in the rest of the file");
     expect_bad("DATASET UNSTRUCTURED_GRID", "DATASET STRUCTURED_POINTS", CVM_E_UNSUPPORTED, "DATASET STRUCTURED_POINTS is not read");
     expect_bad("ASCII", "TEXT", CVM_E_IO_FORMAT, "t.vtk:3: line 3 must be ASCII or BINARY");
     expect_bad("# vtk", "# vtx", CVM_E_IO_FORMAT, "not a legacy VTK file");
-    expect_bad("VECTORS velocity float", "BLOB velocity float", CVM_E_UNSUPPORTED, "t.vtk:18: keyword 'BLOB' is not read");
+    expect_bad("VECTORS velocity float", "BLOB velocity float", CVM_E_UNSUPPORTED, "t.vtk:21: keyword 'BLOB' is not read");
     expect_bad("1 2 3 4 5 6 7 8\n", "1 2 3 4 5 6 7\n", CVM_E_IO_FORMAT, "the file ends after 7 of 8 values");
 }
 END_TEST
