@@ -418,9 +418,10 @@ CVM_API cvm_status cvm_mesh_set_regions_nd(cvm_mesh *m, const double *r, size_t 
  * the API makes later messages name those by their indices again.
  *
  *
- * A .vtu file (VTK XML unstructured grid with ASCII data arrays, as
- * cvm_mesh_write() writes it; other writers' files with triangle cells are
- * read too) gives a triangulated handle: the file's points become the input
+ * A .vtu file (VTK XML unstructured grid as cvm_mesh_write(), VTK and meshio
+ * write it: ASCII, inline base64 or appended raw/base64 data arrays, zlib
+ * compression, UInt32 or UInt64 headers, either byte order, any integer or
+ * float type; other writers' files with triangle cells are read too) gives a triangulated handle: the file's points become the input
  * points (point data "marker" and "attribute" their markers and attributes),
  * its line cells (VTK type 3, cell data "marker") and the boundary edges of its
  * triangles the segments, with a hole point in each hole; the handle is
@@ -434,6 +435,17 @@ CVM_API cvm_status cvm_mesh_set_regions_nd(cvm_mesh *m, const double *r, size_t 
  * file repeats a point). Cell type 1 (vertex) is ignored; z must be 0. The
  * rebuild ignores CVM_OPT_TIME_LIMIT_S and uses the handle's other options.
  *
+ * A legacy .vtk file (ASCII or BINARY, UNSTRUCTURED_GRID or POLYDATA; cell
+ * layouts before and after version 5.1; POINT_DATA/CELL_DATA arrays of the
+ * same names as SCALARS or FIELD arrays) and a Gmsh .msh file (2.2 or 4.1,
+ * ASCII or binary) are read the same way as a .vtu. In a .msh, 2-node lines
+ * are the line cells with their physical tags as markers, point elements'
+ * physical tags are point markers, and 3-node triangles' physical tags are
+ * the triangles' attributes. A .vtk or .msh file without triangles is a
+ * domain instead: its points and line cells (with markers) become the input
+ * points and segments, and the handle is left untriangulated, as after
+ * reading a .poly.
+ *
  * 3D input makes the handle 3D (see cvm_mesh_set_points()): a closed surface
  * in .off, .stl (ASCII, one marker per solid, or binary; vertices merged by
  * exact coordinates) or TetGen .poly/.smesh (facets of convex polygons with
@@ -442,7 +454,7 @@ CVM_API cvm_status cvm_mesh_set_regions_nd(cvm_mesh *m, const double *r, size_t 
  * by cvm_mesh_triangulate(), which meshes its inside.
  *
  * @param path  file name; the format follows the extension (.poly, .node, .vtu,
- *              .smesh, .off, .stl; case-insensitive).
+ *              .vtk, .msh, .smesh, .off, .stl; case-insensitive).
  * Atomicity:   on error or cancellation the previous input (and, for .vtu, the
  *              previous mesh) is kept unchanged.
  * Stops:       the progress callback (stage CVM_STAGE_READ, fraction 0) is asked
@@ -455,8 +467,11 @@ CVM_API cvm_status cvm_mesh_set_regions_nd(cvm_mesh *m, const double *r, size_t 
  *                                value counts or offsets (message names the cell)
  *         CVM_E_INPUT_NONFINITE  a NaN/Inf coordinate or value (message gives file:line)
  *         CVM_E_TOO_LARGE        a count beyond INT32_MAX/4 (message gives file:line)
- *         CVM_E_UNSUPPORTED      unknown extension; in a .vtu binary, appended or compressed
- *                                data, more than one Piece, or a cell type other than 1, 3, 5
+ *         CVM_E_UNSUPPORTED      unknown extension; in a .vtu a compressor other than zlib,
+ *                                more than one Piece, or a cell type other than 1, 3, 5;
+ *                                in a .vtk another DATASET or keyword, cells other than
+ *                                triangles, lines, polylines and vertices; in a .msh
+ *                                another version or element types other than 1, 2, 15
  *         CVM_E_INPUT_EMPTY      .vtu without triangle cells
  *         CVM_E_IO_FORMAT, CVM_E_INPUT_INDEX  a 3D file's malformed content or a face naming a
  *                                point that does not exist (message names file:line, or the
@@ -811,12 +826,28 @@ typedef enum cvm_option {
     CVM_OPT_SVG_WINDOW_XMIN = 600,
     CVM_OPT_SVG_WINDOW_YMIN = 601, /**< see CVM_OPT_SVG_WINDOW_XMIN */
     CVM_OPT_SVG_WINDOW_XMAX = 602, /**< see CVM_OPT_SVG_WINDOW_XMIN */
-    CVM_OPT_SVG_WINDOW_YMAX = 603  /**< see CVM_OPT_SVG_WINDOW_XMIN */
+    CVM_OPT_SVG_WINDOW_YMAX = 603, /**< see CVM_OPT_SVG_WINDOW_XMIN */
+    /** Data encoding of a .vtu written by cvm_mesh_write() and cvm_mesh_stage_write():
+     *  CVM_VTU_ASCII (0, the default: text, as before), CVM_VTU_BINARY (1: one raw
+     *  <AppendedData> block, little-endian, header_type UInt64; about 3x smaller
+     *  and written at disk speed) or CVM_VTU_ZLIB (2: the same, each array in
+     *  zlib-compressed 32 KiB blocks, level 1, vtkZLibDataCompressor). Integer, bounds
+     *  [0, 2]. The arrays, names and order are the same in every encoding; VTK,
+     *  ParaView, meshio and cvm_mesh_read() read all three. Other formats and the
+     *  dual (cvm_mesh_write_dual()) ignore it. @since 0.2 */
+    CVM_OPT_VTU_ENCODING = 604
 
     /* ---- 700-799: reserved for the 3D kernel ---- */
     /* ---- 800-899: reserved for quad-dominant meshing ---- */
     /* ---- 1000 and up: experimental (include/cvmesh_experimental.h) ---- */
 } cvm_option;
+
+/** Values of CVM_OPT_VTU_ENCODING. */
+typedef enum cvm_vtu_encoding {
+    CVM_VTU_ASCII = 0,  /**< text data arrays (the default) */
+    CVM_VTU_BINARY = 1, /**< raw appended binary data */
+    CVM_VTU_ZLIB = 2    /**< raw appended binary data in zlib-compressed blocks */
+} cvm_vtu_encoding;
 
 /** Bounds of an option; the one frozen struct of the ABI. */
 typedef struct cvm_bounds {
@@ -1807,7 +1838,8 @@ CVM_API cvm_status cvm_mesh_view_points_nd(const double **ptr_out, size_t *count
  * .vtu (VTK XML unstructured grid: the triangles, then the segments as line
  * cells; point data "marker", "weight" when weights are set, "attribute";
  * cell data "marker" (segment marker of a line, 0 on a triangle), "attribute"
- * (regional, with regions) and "min_angle_deg" (0 on a line); cvm_mesh_read()
+ * (regional, with regions) and "min_angle_deg" (0 on a line); ASCII, or
+ * binary appended data as CVM_OPT_VTU_ENCODING says; cvm_mesh_read()
  * reads it back), .msh (Gmsh 4.1 ASCII, segments tagged by
  * marker as physical groups), .node (writes PREFIX.node, PREFIX.ele and
  * PREFIX.edge beside each other, 0-based), .svg (a picture).

@@ -23,7 +23,7 @@ mkbuild=${build#"$root"/}
 FC=${FC:-gfortran}
 [ "$FC" = f77 ] && FC=gfortran   # make's default FC
 FFLAGS=${FFLAGS:--O2 -g -std=f2008 -Wall -Wextra -pedantic -Werror -fimplicit-none}
-LIBS=${LIBS:--llbfgs -lm -fopenmp}
+LIBS=${LIBS:--llbfgs -lz -lm -fopenmp}
 PYTHON=${PYTHON:-python3}
 
 "$PYTHON" "$here/gen_interfaces.py" --check

@@ -153,7 +153,7 @@ class BuildExt(build_ext):
                                                            numpy.get_include()]
         ext.extra_compile_args = WRAP_CFLAGS if unix else []
         if unix:
-            ext.libraries = list(ext.libraries or []) + ["lbfgs", "m"]
+            ext.libraries = list(ext.libraries or []) + ["lbfgs", "z", "m"]
             ext.extra_link_args = list(ext.extra_link_args or []) + omp
         super().build_extension(ext)
 

@@ -343,9 +343,11 @@ cvm_status cvm_mesh_read(cvm_mesh *m, const char *path)
         ((cvm__path_has_ext(path, ".poly") || cvm__path_has_ext(path, ".node")) &&
          cvm__file_dimension(path) == 3))
         return cvm__mesh3_read(m, path); /* lib/api/mesh3.c */
-    if (cvm__format_of(path) == CVM__FMT_VTU) {
-        cvm__mesh3_free(m);
-        return cvm__mesh_read_vtu(m, path); /* lib/api/mesh_read_vtu.c */
+    if (cvm__is_mesh_file(path)) { /* .vtu, .vtk, .msh */
+        cvm_status r = cvm__mesh_read_vtu(m, path); /* lib/api/mesh_read_vtu.c */
+        if (r == CVM_OK)
+            cvm__mesh3_free(m);
+        return r;
     }
     memset(&p, 0, sizeof p);
     s = cvm__read_file(&m->ctx, path, &p);

@@ -770,9 +770,17 @@ cvm_status cvm__mesh_read_vtu(cvm_mesh *m, const char *path)
 {
     cvm__vtu_mesh vm;
     rebuild rb;
-    cvm_status s = cvm__read_vtu_file(&m->ctx, path, &vm);
+    cvm_status s = cvm__read_mesh_file(&m->ctx, path, &vm);
     if (s)
         return s;
+    if (vm.nt == 0 && !cvm__path_has_ext(path, ".vtu")) { /* a domain: points and lines */
+        cvm__mesh_drop_output(m);
+        cvm__pslg_free(&m->ctx, &m->in);
+        m->in = vm.p;
+        memset(&vm.p, 0, sizeof vm.p);
+        cvm__vtu_mesh_free(&m->ctx, &vm);
+        return CVM_OK;
+    }
     rb_init(&rb, m, &vm);
     if (!(s = run(m, &rb, path, &vm)))
         adopt(m, &rb, &vm);

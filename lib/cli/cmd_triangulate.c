@@ -30,7 +30,9 @@ void cli_triangulate_help(FILE *f)
             "triangulation of the planar straight-line graph of a .poly file (Triangle's\n"
             "formats), with the exterior and holes removed and regional attributes assigned.\n"
             "A .vtu mesh (as cvmesh writes it, with its weights) is read as it is, to\n"
-            "convert it, draw it, write its dual or report its quality.\n"
+            "convert it, draw it, write its dual or report its quality; so are .vtk\n"
+            "(legacy VTK) and .msh (Gmsh 2.2/4.1) meshes, and a .vtk or .msh without\n"
+            "triangles is a domain (its lines are segments, physical tags markers).\n"
             "\n"
             "Outputs and reports (--timings: read, triangulate, recover segments from the\n"
             "first recovered segment with carving, write, quality):\n");

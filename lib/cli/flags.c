@@ -64,7 +64,30 @@ static const cli_option_flag k_flags[] = {
      "dual optimiser: removal-trial calls after the max-min rounds (default 0: none)"},
     {"--maxmin-rounds", "N", CVM_OPT_DUAL_MAXMIN_ROUNDS, 0, OPT,
      "rounds of the dual optimiser's final max-min-angle phase (0: none; default 5)"},
+    {"--vtu-encoding", "ascii|binary|zlib", CVM_OPT_VTU_ENCODING, 0, TRI | REF | OPT,
+     ".vtu data arrays: ascii text (default), binary (raw appended) or zlib (compressed)"},
 };
+
+/* Flags whose value is a word: the word -> the option value. */
+static const struct {
+    int key;
+    const char *word;
+    double value;
+} k_words[] = {{CVM_OPT_VTU_ENCODING, "ascii", CVM_VTU_ASCII},
+               {CVM_OPT_VTU_ENCODING, "binary", CVM_VTU_BINARY},
+               {CVM_OPT_VTU_ENCODING, "zlib", CVM_VTU_ZLIB}};
+
+/* 1 and *v when f takes words and val is one of them. */
+static int word_value(const cli_option_flag *f, const char *val, double *v)
+{
+    size_t k;
+    for (k = 0; k < sizeof k_words / sizeof k_words[0]; k++)
+        if ((int)f->key == k_words[k].key && strcmp(val, k_words[k].word) == 0) {
+            *v = k_words[k].value;
+            return 1;
+        }
+    return 0;
+}
 
 #define NFLAGS (sizeof k_flags / sizeof k_flags[0])
 
@@ -189,9 +212,18 @@ int cli_parse_option_flag(unsigned cmd, int argc, char **argv, int *i, cli_setti
             }
             val = argv[++*i];
         }
+        if (word_value(f, val, &v)) {
+            set[*nset].flag = f;
+            set[*nset].value = v;
+            (*nset)++;
+            return 1;
+        }
         v = strtod(val, &end);
         if (end == val || *end != '\0') {
-            fprintf(stderr, "cvmesh: %s expects a number, got '%s'\n", f->name, val);
+            if (f->key == CVM_OPT_VTU_ENCODING)
+                fprintf(stderr, "cvmesh: %s expects %s, got '%s'\n", f->name, f->arg, val);
+            else
+                fprintf(stderr, "cvmesh: %s expects a number, got '%s'\n", f->name, val);
             return -1;
         }
         if (!exact_integer(f, val, v))

@@ -166,10 +166,53 @@ double cvm__tri_area_safe(const double *a, const double *b, const double *c)
     return ldexp(0.5 * (u[0] * v[1] - u[1] * v[0]), e);
 }
 
+/* The corner (0, 1, 2 for a, b, c) whose angle is the smallest, decided
+ * from the very doubles whose atan2 gives each angle: corner k's angle is
+ * atan2(y[k], x[k]), so when x[k] > 0 and y[k] x[j] < y[j] x[k] by a
+ * relative margin of 2^-40 for every other acute corner j, the true atan2
+ * of corner k is smaller by far more than atan2's rounding (a relative gap
+ * of at least 0.4 * 2^-40 for angles up to 60 degrees, against 2^-52), and
+ * so is its computed value; an obtuse or right corner's value is never below
+ * an acute one's. -1 when no corner wins clearly (near-isosceles triangles)
+ * or an edge vector is outside the safe range. */
+static int smallest_corner(const double *const *p)
+{
+    double x[3], y[3];
+    int k, j;
+    for (k = 0; k < 3; k++) {
+        const double *o = p[k], *q = p[(k + 1) % 3], *r = p[(k + 2) % 3];
+        double ux = q[0] - o[0], uy = q[1] - o[1], vx = r[0] - o[0], vy = r[1] - o[1];
+        if (!in_safe_range(ux, uy) || !in_safe_range(vx, vy))
+            return -1;
+        y[k] = fabs(ux * vy - uy * vx);
+        x[k] = ux * vx + uy * vy;
+    }
+    for (k = 0; k < 3; k++) {
+        int wins = x[k] > 0;
+        for (j = 0; wins && j < 3; j++)
+            if (j != k && x[j] > 0 && !(y[k] * x[j] < y[j] * x[k] * (1 - 0x1p-40)))
+                wins = 0;
+        if (wins)
+            return k;
+    }
+    return -1;
+}
+
+/* The minimum of the three corner angles; one atan2 instead of three when
+ * smallest_corner() can tell which it is, with the same result bits. */
 double cvm__min_angle_deg(const double *a, const double *b, const double *c)
 {
-    double d, x = cvm__corner_angle_deg_safe(a, b, c, &d);
-    double y = cvm__corner_angle_deg_safe(b, c, a, &d), z = cvm__corner_angle_deg_safe(c, a, b, &d);
-    double mn = x < y ? x : y;
-    return mn < z ? mn : z;
+    const double *p[3];
+    double d, x, y, z;
+    int k;
+    p[0] = a;
+    p[1] = b;
+    p[2] = c;
+    if ((k = smallest_corner(p)) >= 0)
+        return cvm__corner_angle_deg_safe(p[k], p[(k + 1) % 3], p[(k + 2) % 3], &d);
+    x = cvm__corner_angle_deg_safe(a, b, c, &d);
+    y = cvm__corner_angle_deg_safe(b, c, a, &d);
+    z = cvm__corner_angle_deg_safe(c, a, b, &d);
+    x = x < y ? x : y;
+    return x < z ? x : z;
 }

@@ -9,8 +9,11 @@
 
 #include "io_internal.h"
 
-/* VTK XML UnstructuredGrid, ASCII (write_vtu.c). */
+/* VTK XML UnstructuredGrid, ASCII, or binary as mo->vtu_encoding says (write_vtu.c). */
 cvm_status cvm__write_vtu(cvm__writer *w, cvm__ctx *ctx, const cvm__mesh_out *mo);
+/* The same arrays in one raw <AppendedData> block, zlib-compressed when zlib
+ * (write_vtu_binary.c); CVM_E_NOMEM is its only failure. */
+cvm_status cvm__write_vtu_binary(cvm__writer *w, cvm__ctx *ctx, const cvm__mesh_out *mo, int zlib);
 /* The power cells as VTK polygons (write_vtu.c). */
 void cvm__write_dual_vtu(cvm__writer *w, const cvm__dual_out *d);
 /* Gmsh MSH 4.1, ASCII (write_msh.c). */

@@ -87,7 +87,15 @@ cvm_status cvm__read_triangle_format(cvm__ctx *ctx, cvm__reader *r, const char *
  * reads the points from the .node of the same stem. */
 cvm_status cvm__read_file(cvm__ctx *ctx, const char *path, cvm__pslg *p);
 
-/* A triangle mesh read from a VTK XML unstructured grid (read_vtu.c). */
+/* A Gmsh physical group's name (read_msh.c). */
+typedef struct cvm__phys_name {
+    int32_t dim, tag;
+    char name[128];      /* truncated to 127 bytes */
+} cvm__phys_name;
+
+/* A triangle mesh read from a VTK XML unstructured grid (read_vtu.c), a
+ * legacy .vtk (read_vtk.c) or a Gmsh .msh (read_msh.c: markers and
+ * attributes are the physical tags). */
 typedef struct cvm__vtu_mesh {
     cvm__pslg p;      /* points, point markers and attributes; seg/smark: the line cells
                          (VTK type 3) and their cell data "marker" (smark NULL without it) */
@@ -96,14 +104,39 @@ typedef struct cvm__vtu_mesh {
     double *w;        /* np or NULL: point data "weight" */
     double *tattr;    /* nt or NULL: cell data "attribute" of the triangles */
     int has_lines;    /* 1 when the file has line cells */
+    cvm__phys_name *names; /* nnames, or NULL: the physical names of a .msh */
+    size_t nnames;
 } cvm__vtu_mesh;
 
-/* Parse .vtu text from r (name for messages "name:line: ..."). Returns CVM_OK,
+/* Parse a .vtu from r (name for messages "name:line: ..."; ASCII, base64,
+ * appended raw or base64, zlib-compressed data). Returns CVM_OK,
  * CVM_E_IO_READ, CVM_E_IO_FORMAT (malformed; an index out of range), CVM_E_UNSUPPORTED
- * (binary/appended/compressed data, other cell types), CVM_E_INPUT_NONFINITE,
+ * (another compressor, other cell types), CVM_E_INPUT_NONFINITE,
  * CVM_E_TOO_LARGE, CVM_E_NOMEM, CVM_INCOMPLETE_CANCELLED (as
  * cvm__read_triangle_format(), while the file is read); out is zeroed on error. */
 cvm_status cvm__read_vtu(cvm__ctx *ctx, cvm__reader *r, const char *name, cvm__vtu_mesh *out);
+/* Parse a legacy VTK file (.vtk: ASCII or BINARY, UNSTRUCTURED_GRID or
+ * POLYDATA) from r into the same mesh as cvm__read_vtu(); the same statuses
+ * (messages give name:line, or the byte offset in a BINARY file). */
+cvm_status cvm__read_vtk(cvm__ctx *ctx, cvm__reader *r, const char *name, cvm__vtu_mesh *out);
+/* Parse a Gmsh .msh (2.2 or 4.1, ASCII or binary) from r into the same mesh
+ * as cvm__read_vtu(): nodes as points (point elements' physical tags as
+ * markers), 2-node lines as line cells (smark: physical tag, 0 without),
+ * 3-node triangles (tattr: physical tag, when some triangle has one), the
+ * physical names. The same statuses; CVM_E_UNSUPPORTED for other element
+ * types or versions. */
+cvm_status cvm__read_msh(cvm__ctx *ctx, cvm__reader *r, const char *name, cvm__vtu_mesh *out);
+/* 1 when path names a mesh file that cvm__read_mesh_file() reads (.vtu,
+ * .vtk, .msh, any case). */
+int cvm__is_mesh_file(const char *path);
+/* Open path and parse it by extension (.vtu, .vtk, .msh) into out: the
+ * statuses of the reader, CVM_E_IO_OPEN, CVM_E_UNSUPPORTED (another extension). */
+cvm_status cvm__read_mesh_file(cvm__ctx *ctx, const char *path, cvm__vtu_mesh *out);
+/* Everything r gives into a fresh NUL-terminated buffer *out of *n_out bytes
+ * (NULs inside are kept). CVM_OK, CVM_E_IO_READ ("name: read error"),
+ * CVM_E_NOMEM, CVM_INCOMPLETE_CANCELLED (the progress callback, asked every
+ * 64 KiB); *out is NULL on error. */
+cvm_status cvm__slurp(cvm__ctx *ctx, cvm__reader *r, const char *name, char **out, size_t *n_out);
 /* The same from the file at path (CVM_E_IO_OPEN too). */
 cvm_status cvm__read_vtu_file(cvm__ctx *ctx, const char *path, cvm__vtu_mesh *out);
 void cvm__vtu_mesh_free(cvm__ctx *ctx, cvm__vtu_mesh *vm);
@@ -129,6 +162,7 @@ typedef struct cvm__mesh_out {
                                holds them too (.node writes it; .vtu writes "weight" apart) */
     const double *tlayer;   /* nt or NULL: AFLR layer index per triangle (SVG colours by it) */
     double window[4];       /* SVG view xmin, ymin, xmax, ymax; unused unless xmax > xmin, ymax > ymin */
+    int vtu_encoding;       /* .vtu data: 0 ASCII, 1 raw appended binary, 2 zlib-compressed */
 } cvm__mesh_out;
 
 /* ---- output: the power cells of a mesh (polygons), borrowed arrays ---- */

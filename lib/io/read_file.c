@@ -65,7 +65,7 @@ cvm_status cvm__read_file(cvm__ctx *ctx, const char *path, cvm__pslg *p)
         return read_one(ctx, path, 0, NULL, p, NULL);
     if (!cvm__path_has_ext(path, ".poly"))
         return cvm__error(ctx, CVM_E_UNSUPPORTED, CVM_ENT_NONE, -1,
-                          "cannot read %s: unknown extension (expected .poly, .node or .vtu)", path);
+                          "cannot read %s: unknown extension (expected .poly, .node, .vtu, .vtk or .msh)", path);
     if ((s = read_one(ctx, path, 1, NULL, p, NULL)))
         return s;
     if (p->np > 0)

@@ -9,10 +9,12 @@
  * (triangle), 3 (line: a constrained edge) and 1 (vertex: ignored); point data
  * "weight", "marker" and "attribute" (any number of components); cell data
  * "marker" (of the lines) and "attribute" (of the triangles). Other arrays are
- * skipped. Only format="ascii" is read; binary, appended or compressed data is
- * CVM_E_UNSUPPORTED. This is a small tolerant tag scanner, not a general XML
- * parser: comments, processing instructions and any attribute order are
- * understood; entities and CDATA are not. Every error names file:line.
+ * skipped. Data arrays are ASCII, inline binary (base64) or appended (raw or
+ * base64), optionally zlib-compressed, of any integer or float type
+ * (vtu_data.c decodes them). This is a small tolerant tag scanner, not a
+ * general XML parser: comments, processing instructions and any attribute
+ * order are understood; entities and CDATA are not. Every error names
+ * file:line (or the byte offset in raw appended data).
  */
 #include <limits.h>
 #include <stdarg.h>
@@ -20,18 +22,32 @@
 #include <string.h>
 
 #include "io_text.h"
+#include "vtu_data.h"
 
 #define MAX_COUNT ((long long)INT32_MAX / 4)
 #define MAX_COMP 10000
-#define ATTR_LEN 64
+#define ATTR_LEN CVM__VTU_ATTR_LEN
 
 enum { SEC_NONE, SEC_POINTDATA, SEC_CELLDATA, SEC_POINTS, SEC_CELLS };
+
+/* The arrays read: found while the tags are scanned, decoded after (appended
+ * data follows every tag). */
+enum { R_XYZ, R_CONN, R_OFF, R_TYPES, R_W, R_PMARK, R_PATTR, R_CMARK, R_CATTR, R_N };
+static const struct role {
+    const char *what;
+    int integer;
+} k_roles[R_N] = {{"Points", 0},       {"connectivity", 1},    {"offsets", 1},
+                  {"types", 1},        {"weight", 0},          {"point marker", 1},
+                  {"point attribute", 0}, {"cell marker", 1}, {"cell attribute", 0}};
 
 typedef struct vparser {
     cvm__ctx *ctx;
     const char *name; /* file name for messages */
     char *buf;        /* the whole file, NUL-terminated */
     size_t n, pos;
+    cvm__vtu_file f;  /* buf and the file-wide encoding */
+    cvm__vtu_array arr[R_N];
+    long long ncomp[R_N]; /* 0: array not seen */
     int section, have_piece;
     long long np, nc;
     /* arrays read, NULL until seen */
@@ -44,16 +60,6 @@ typedef struct vparser {
        messages about an entry find its line from there */
     size_t at_xyz, at_conn, at_off, at_types;
 } vparser;
-
-/* 1-based line of byte offset at. */
-static long line_of(const vparser *ps, size_t at)
-{
-    long line = 1;
-    size_t i;
-    for (i = 0; i < at && i < ps->n; i++)
-        line += ps->buf[i] == '\n';
-    return line;
-}
 
 /* Byte offset of entry k (from 0) of the array whose content starts at start. */
 static size_t entry_at(const vparser *ps, size_t start, size_t k)
@@ -77,13 +83,11 @@ static cvm_status fail_at(vparser *ps, size_t at, cvm_status st, const char *fmt
 static cvm_status fail_at(vparser *ps, size_t at, cvm_status st, const char *fmt, ...)
 {
     char what[CVM__ERRMSG_LEN];
-    long line = line_of(ps, at);
     va_list ap;
     va_start(ap, fmt);
     vsnprintf(what, sizeof what, fmt, ap);
     va_end(ap);
-    return cvm__error(ps->ctx, st, CVM_ENT_FILE_LINE, (int64_t)line, "%s:%ld: %s", ps->name, line,
-                      what);
+    return cvm__vtu_fail(&ps->f, at, st, "%s", what);
 }
 
 /* Read all of r into ps->buf. */
@@ -107,34 +111,9 @@ static cvm_status slurp(vparser *ps, cvm__reader *r)
         ps->n += (size_t)got;
     }
     ps->buf[ps->n] = '\0';
-    if (memchr(ps->buf, '\0', ps->n))
-        return fail_at(ps, (size_t)((const char *)memchr(ps->buf, '\0', ps->n) - ps->buf),
-                       CVM_E_IO_FORMAT, "NUL byte (not a text file?)");
+    ps->f.buf = ps->buf;
+    ps->f.n = ps->n;
     return CVM_OK;
-}
-
-/* Value of attribute key in the tag [s, e) into out (cap ATTR_LEN); 0 if absent. */
-static int attr(const char *s, const char *e, const char *key, char *out)
-{
-    size_t k = strlen(key);
-    const char *p;
-    for (p = s + 1; p + k + 2 < e; p++) {
-        const char *q;
-        size_t n;
-        if ((p[-1] != ' ' && p[-1] != '\t' && p[-1] != '\n' && p[-1] != '\r') ||
-            strncmp(p, key, k) != 0 || p[k] != '=' || (p[k + 1] != '"' && p[k + 1] != '\''))
-            continue;
-        q = memchr(p + k + 2, p[k + 1], (size_t)(e - (p + k + 2)));
-        if (!q)
-            return 0;
-        n = (size_t)(q - (p + k + 2));
-        if (n >= ATTR_LEN)
-            n = ATTR_LEN - 1;
-        memcpy(out, p + k + 2, n);
-        out[n] = '\0';
-        return 1;
-    }
-    return 0;
 }
 
 /* A count attribute of the tag at [s, e). */
@@ -143,7 +122,7 @@ static cvm_status count_attr(vparser *ps, const char *s, const char *e, const ch
 {
     char v[ATTR_LEN];
     int r;
-    if (!attr(s, e, key, v))
+    if (!cvm__vtu_attr(s, e, key, v))
         return fail_at(ps, (size_t)(s - ps->buf), CVM_E_IO_FORMAT, "<Piece> has no %s", key);
     r = cvm__parse_long(v, LLONG_MIN, LLONG_MAX, out);
     if (r == 1)
@@ -157,87 +136,19 @@ static cvm_status count_attr(vparser *ps, const char *s, const char *e, const ch
     return CVM_OK;
 }
 
-/* Parse the whitespace-separated numbers of [s, e) into a fresh array of
- * exactly want values (want < 0: any count, *got receives it). */
-static cvm_status numbers(vparser *ps, const char *s, const char *e, const char *what, int integer,
-                          long long want, void **out, size_t *got)
+/* Note array [ts, te) [cs, ce) in role r, refusing a second one. */
+static cvm_status take(vparser *ps, const char *ts, const char *te, const char *cs, const char *ce,
+                       int r, long long nc)
 {
-    size_t cap = 0, n = 0;
-    double *d = NULL;
-    long long *l = NULL;
-    const char *p = s;
-    *out = NULL;
-    for (;;) {
-        char tok[CVM__DOUBLE_BUF + 24];
-        const char *t;
-        size_t len;
-        int r;
-        while (p < e && (*p == ' ' || *p == '\t' || *p == '\n' || *p == '\r'))
-            p++;
-        if (p >= e)
-            break;
-        t = p;
-        while (p < e && *p != ' ' && *p != '\t' && *p != '\n' && *p != '\r')
-            p++;
-        len = (size_t)(p - t);
-        if (want >= 0 && (long long)n >= want) {
-            cvm__free(ps->ctx, integer ? (void *)l : (void *)d);
-            return fail_at(ps, (size_t)(t - ps->buf), CVM_E_IO_FORMAT,
-                           "%s: more than the %lld values expected", what, want);
-        }
-        if (len >= sizeof tok)
-            len = sizeof tok - 1; /* too long for a number: fails below */
-        memcpy(tok, t, len);
-        tok[len] = '\0';
-        if (n + 1 > cap && cvm__grow(ps->ctx, integer ? (void **)&l : (void **)&d, &cap, n + 1,
-                                     integer ? sizeof *l : sizeof *d))
-            goto nomem;
-        if (integer) {
-            r = cvm__parse_long(tok, -(long long)INT32_MAX, INT32_MAX, &l[n]);
-            if (r) {
-                cvm__free(ps->ctx, l);
-                return fail_at(ps, (size_t)(t - ps->buf), CVM_E_IO_FORMAT,
-                               "%s: entry %lld (from 0) is '%s', not an integer in [%lld, %lld]",
-                               what, (long long)n, tok, -(long long)INT32_MAX, (long long)INT32_MAX);
-            }
-        } else {
-            r = cvm__parse_double(tok, &d[n]);
-            if (r) {
-                cvm__free(ps->ctx, d);
-                return fail_at(ps, (size_t)(t - ps->buf),
-                               r == 2 ? CVM_E_INPUT_NONFINITE : CVM_E_IO_FORMAT,
-                               "%s: entry %lld (from 0) is '%s', not a %snumber", what,
-                               (long long)n, tok, r == 2 ? "finite " : "");
-            }
-        }
-        n++;
-    }
-    if (want >= 0 && (long long)n != want) {
-        cvm__free(ps->ctx, integer ? (void *)l : (void *)d);
-        return fail_at(ps, (size_t)(e - ps->buf), CVM_E_IO_FORMAT, "%s: %lld values, expected %lld",
-                       what, (long long)n, want);
-    }
-    if (!(integer ? (void *)l : (void *)d)) { /* empty: still a valid array */
-        if (integer ? !(l = cvm__malloc(ps->ctx, sizeof *l)) : !(d = cvm__malloc(ps->ctx, sizeof *d)))
-            goto nomem;
-    }
-    *out = integer ? (void *)l : (void *)d;
-    if (got)
-        *got = n;
+    if (ps->ncomp[r])
+        return fail_at(ps, (size_t)(ts - ps->buf), CVM_E_IO_FORMAT, "a second %s array",
+                       k_roles[r].what);
+    ps->ncomp[r] = nc;
+    ps->arr[r].ts = (size_t)(ts - ps->buf);
+    ps->arr[r].te = (size_t)(te - ps->buf);
+    ps->arr[r].cs = (size_t)(cs - ps->buf);
+    ps->arr[r].ce = (size_t)(ce - ps->buf);
     return CVM_OK;
-nomem:
-    cvm__free(ps->ctx, l);
-    cvm__free(ps->ctx, d);
-    return cvm__nomem(ps->ctx);
-}
-
-/* Store one array into *slot, refusing a second one of the same role. */
-static cvm_status take(vparser *ps, const char *s, const char *e, const char *what, int integer,
-                       long long want, void **slot, size_t *got)
-{
-    if (*slot)
-        return fail_at(ps, (size_t)(s - ps->buf), CVM_E_IO_FORMAT, "a second %s array", what);
-    return numbers(ps, s, e, what, integer, want, slot, got);
 }
 
 /* A <DataArray> whose start tag is [ts, te) and content [cs, ce). */
@@ -247,13 +158,10 @@ static cvm_status data_array(vparser *ps, const char *ts, const char *te, const 
     char name[ATTR_LEN] = "", fmt[ATTR_LEN] = "", comp[ATTR_LEN] = "1";
     long long nc = 1;
     size_t at = (size_t)(ts - ps->buf);
-    attr(ts, te, "Name", name);
-    attr(ts, te, "NumberOfComponents", comp);
-    if (!attr(ts, te, "format", fmt))
+    cvm__vtu_attr(ts, te, "Name", name);
+    cvm__vtu_attr(ts, te, "NumberOfComponents", comp);
+    if (!cvm__vtu_attr(ts, te, "format", fmt))
         return fail_at(ps, at, CVM_E_IO_FORMAT, "DataArray '%s' has no format", name);
-    if (strcmp(fmt, "ascii") != 0)
-        return fail_at(ps, at, CVM_E_UNSUPPORTED, "DataArray '%s': only format=\"ascii\" is read",
-                       name);
     if (cvm__parse_long(comp, 1, MAX_COMP, &nc))
         return fail_at(ps, at, CVM_E_IO_FORMAT, "DataArray '%s': bad NumberOfComponents", name);
     if (!ps->have_piece)
@@ -262,42 +170,77 @@ static cvm_status data_array(vparser *ps, const char *ts, const char *te, const 
     case SEC_POINTS:
         if (nc != 3 && nc != 2)
             return fail_at(ps, at, CVM_E_IO_FORMAT, "Points have %lld components (need 3)", nc);
-        ps->ncomp_xyz = (size_t)nc;
-        ps->at_xyz = (size_t)(cs - ps->buf);
-        return take(ps, cs, ce, "Points", 0, nc * ps->np, (void **)&ps->xyz, NULL);
+        return take(ps, ts, te, cs, ce, R_XYZ, nc);
     case SEC_CELLS:
-        if (strcmp(name, "connectivity") == 0) {
-            ps->at_conn = (size_t)(cs - ps->buf);
-            return take(ps, cs, ce, "connectivity", 1, -1, (void **)&ps->conn, &ps->nconn);
-        }
-        if (strcmp(name, "offsets") == 0) {
-            ps->at_off = (size_t)(cs - ps->buf);
-            return take(ps, cs, ce, "offsets", 1, ps->nc, (void **)&ps->off, NULL);
-        }
-        if (strcmp(name, "types") == 0) {
-            ps->at_types = (size_t)(cs - ps->buf);
-            return take(ps, cs, ce, "types", 1, ps->nc, (void **)&ps->types, NULL);
-        }
+        if (strcmp(name, "connectivity") == 0)
+            return take(ps, ts, te, cs, ce, R_CONN, 1);
+        if (strcmp(name, "offsets") == 0)
+            return take(ps, ts, te, cs, ce, R_OFF, 1);
+        if (strcmp(name, "types") == 0)
+            return take(ps, ts, te, cs, ce, R_TYPES, 1);
         return CVM_OK;
     case SEC_POINTDATA:
         if (strcmp(name, "weight") == 0 && nc == 1)
-            return take(ps, cs, ce, "weight", 0, ps->np, (void **)&ps->w, NULL);
+            return take(ps, ts, te, cs, ce, R_W, 1);
         if (strcmp(name, "marker") == 0 && nc == 1)
-            return take(ps, cs, ce, "point marker", 1, ps->np, (void **)&ps->pmark, NULL);
-        if (strcmp(name, "attribute") == 0) {
-            ps->nattr = (size_t)nc;
-            return take(ps, cs, ce, "point attribute", 0, nc * ps->np, (void **)&ps->pattr, NULL);
-        }
+            return take(ps, ts, te, cs, ce, R_PMARK, 1);
+        if (strcmp(name, "attribute") == 0)
+            return take(ps, ts, te, cs, ce, R_PATTR, nc);
         return CVM_OK;
     case SEC_CELLDATA:
         if (strcmp(name, "marker") == 0 && nc == 1)
-            return take(ps, cs, ce, "cell marker", 1, ps->nc, (void **)&ps->cmark, NULL);
+            return take(ps, ts, te, cs, ce, R_CMARK, 1);
         if (strcmp(name, "attribute") == 0 && nc == 1)
-            return take(ps, cs, ce, "cell attribute", 0, ps->nc, (void **)&ps->cattr, NULL);
+            return take(ps, ts, te, cs, ce, R_CATTR, 1);
         return CVM_OK;
     default:
         return CVM_OK; /* e.g. FieldData */
     }
+}
+
+/* The attributes of <VTKFile> [p, te): type, byte order, header type, compressor. */
+static cvm_status file_tag(vparser *ps, const char *p, const char *te)
+{
+    char v[ATTR_LEN];
+    size_t at = (size_t)(p - ps->buf);
+    if (!cvm__vtu_attr(p, te, "type", v) || strcmp(v, "UnstructuredGrid") != 0)
+        return fail_at(ps, at, CVM_E_UNSUPPORTED, "not a VTK UnstructuredGrid file");
+    if (cvm__vtu_attr(p, te, "byte_order", v)) {
+        if (strcmp(v, "BigEndian") != 0 && strcmp(v, "LittleEndian") != 0)
+            return fail_at(ps, at, CVM_E_IO_FORMAT, "byte_order=\"%s\" (LittleEndian or BigEndian)", v);
+        ps->f.big_endian = v[0] == 'B';
+    }
+    if (cvm__vtu_attr(p, te, "header_type", v)) {
+        if (strcmp(v, "UInt32") != 0 && strcmp(v, "UInt64") != 0)
+            return fail_at(ps, at, CVM_E_UNSUPPORTED, "header_type=\"%s\" is not read (UInt32 or "
+                           "UInt64)", v);
+        ps->f.header64 = v[4] == '6';
+    }
+    if (cvm__vtu_attr(p, te, "compressor", v)) {
+        if (strcmp(v, "vtkZLibDataCompressor") != 0)
+            return fail_at(ps, at, CVM_E_UNSUPPORTED, "compressor=\"%s\" is not read (only "
+                           "vtkZLibDataCompressor)", v);
+        ps->f.zlib = 1;
+    }
+    return CVM_OK;
+}
+
+/* <AppendedData encoding=...> [p, te): its data starts after the '_'. */
+static cvm_status appended_tag(vparser *ps, const char *p, const char *te)
+{
+    char v[ATTR_LEN] = "";
+    const char *u = te + 1, *end = ps->buf + ps->n;
+    if (!cvm__vtu_attr(p, te, "encoding", v) || (strcmp(v, "raw") != 0 && strcmp(v, "base64") != 0))
+        return fail_at(ps, (size_t)(p - ps->buf), CVM_E_IO_FORMAT,
+                       "<AppendedData> needs encoding=\"raw\" or \"base64\"");
+    while (u < end && (*u == ' ' || *u == '\t' || *u == '\n' || *u == '\r'))
+        u++;
+    if (u >= end || *u != '_')
+        return fail_at(ps, (size_t)(u - ps->buf), CVM_E_IO_FORMAT,
+                       "<AppendedData> data must start with '_'");
+    ps->f.appended = (size_t)(u + 1 - ps->buf);
+    ps->f.appended_raw = v[0] == 'r';
+    return CVM_OK;
 }
 
 /* Tag name at p (after '<' and an optional '/') equals name. */
@@ -308,13 +251,13 @@ static int is_tag(const char *p, const char *name)
            (p[k] == ' ' || p[k] == '>' || p[k] == '/' || p[k] == '\t' || p[k] == '\n' || p[k] == '\r');
 }
 
-/* Walk every tag of the file. */
-static cvm_status scan_tags(vparser *ps)
+/* Walk every tag of the file up to byte lim (a NUL byte, or the end). */
+static cvm_status walk_tags(vparser *ps, size_t lim)
 {
     static const struct { const char *name; int sec; } secs[] = {
         {"PointData", SEC_POINTDATA}, {"CellData", SEC_CELLDATA}, {"Points", SEC_POINTS},
         {"Cells", SEC_CELLS}};
-    const char *b = ps->buf, *p = b, *end = b + ps->n;
+    const char *b = ps->buf, *p = b, *end = b + lim;
     int seen_file = 0;
     size_t k;
     cvm_status s;
@@ -338,13 +281,8 @@ static cvm_status scan_tags(vparser *ps)
             continue;
         }
         if (!closing && is_tag(q, "VTKFile")) {
-            char v[ATTR_LEN];
-            if (!attr(p, te, "type", v) || strcmp(v, "UnstructuredGrid") != 0)
-                return fail_at(ps, (size_t)(p - b), CVM_E_UNSUPPORTED,
-                               "not a VTK UnstructuredGrid file");
-            if (attr(p, te, "compressor", v))
-                return fail_at(ps, (size_t)(p - b), CVM_E_UNSUPPORTED,
-                               "compressed data (%s) is not read", v);
+            if ((s = file_tag(ps, p, te)))
+                return s;
             seen_file = 1;
         } else if (!closing && is_tag(q, "Piece")) {
             if (ps->have_piece)
@@ -355,8 +293,9 @@ static cvm_status scan_tags(vparser *ps)
                 return s;
             ps->have_piece = 1;
         } else if (!closing && is_tag(q, "AppendedData")) {
-            return fail_at(ps, (size_t)(p - b), CVM_E_UNSUPPORTED,
-                           "<AppendedData> is not read (write ASCII data arrays)");
+            if ((s = appended_tag(ps, p, te)))
+                return s;
+            break; /* the rest is data */
         } else if (is_tag(q, "DataArray")) {
             const char *ce;
             if (closing)
@@ -384,9 +323,69 @@ static cvm_status scan_tags(vparser *ps)
     }
     if (!seen_file)
         return fail_at(ps, ps->n, CVM_E_IO_FORMAT, "no <VTKFile type=\"UnstructuredGrid\">");
-    if (!ps->have_piece || !ps->xyz || !ps->conn || !ps->off || !ps->types)
+    return CVM_OK;
+}
+
+/* After decoding: the arrays every file needs are there. */
+static cvm_status complete(vparser *ps)
+{
+    if (!ps->have_piece || !ps->ncomp[R_XYZ] || !ps->ncomp[R_CONN] || !ps->ncomp[R_OFF] ||
+        !ps->ncomp[R_TYPES])
         return fail_at(ps, ps->n, CVM_E_IO_FORMAT, "%s", !ps->have_piece ? "no <Piece>" :
-                       !ps->xyz ? "no Points" : "Cells need connectivity, offsets and types");
+                       !ps->ncomp[R_XYZ] ? "no Points" : "Cells need connectivity, offsets and types");
+    return CVM_OK;
+}
+
+/* Walk the tags; a NUL byte may only appear in appended data. */
+static cvm_status scan_tags(vparser *ps)
+{
+    const char *nul = memchr(ps->buf, '\0', ps->n);
+    size_t lim = nul ? (size_t)(nul - ps->buf) : ps->n;
+    cvm_status s = walk_tags(ps, lim);
+    if (lim < ps->n && (s == CVM_E_IO_FORMAT || !s) && (!ps->f.appended || ps->f.appended > lim))
+        return fail_at(ps, lim, CVM_E_IO_FORMAT, "NUL byte (not a text file?)");
+    return s;
+}
+
+/* Decode every array noted by scan_tags(). */
+static cvm_status decode_arrays(vparser *ps)
+{
+    void **slot[R_N];
+    long long want[R_N];
+    size_t got = 0;
+    int r;
+    cvm_status s;
+    slot[R_XYZ] = (void **)&ps->xyz;
+    slot[R_CONN] = (void **)&ps->conn;
+    slot[R_OFF] = (void **)&ps->off;
+    slot[R_TYPES] = (void **)&ps->types;
+    slot[R_W] = (void **)&ps->w;
+    slot[R_PMARK] = (void **)&ps->pmark;
+    slot[R_PATTR] = (void **)&ps->pattr;
+    slot[R_CMARK] = (void **)&ps->cmark;
+    slot[R_CATTR] = (void **)&ps->cattr;
+    for (r = 0; r < R_N; r++) {
+        int cells = r == R_OFF || r == R_TYPES || r == R_CMARK || r == R_CATTR;
+        want[r] = r == R_CONN ? -1 : ps->ncomp[r] * (cells ? ps->nc : ps->np);
+    }
+    for (;;) { /* in file order, so the first bad value in the file is the one named */
+        int next = -1;
+        for (r = 0; r < R_N; r++)
+            if (ps->ncomp[r] && !*slot[r] && (next < 0 || ps->arr[r].ts < ps->arr[next].ts))
+                next = r;
+        if (next < 0)
+            break;
+        if ((s = cvm__vtu_decode(&ps->f, &ps->arr[next], k_roles[next].what, k_roles[next].integer,
+                                 want[next], slot[next], next == R_CONN ? &got : NULL)))
+            return s;
+    }
+    ps->nconn = got;
+    ps->ncomp_xyz = (size_t)ps->ncomp[R_XYZ];
+    ps->nattr = (size_t)ps->ncomp[R_PATTR];
+    ps->at_xyz = ps->arr[R_XYZ].cs;
+    ps->at_conn = ps->arr[R_CONN].cs;
+    ps->at_off = ps->arr[R_OFF].cs;
+    ps->at_types = ps->arr[R_TYPES].cs;
     return CVM_OK;
 }
 
@@ -479,6 +478,7 @@ void cvm__vtu_mesh_free(cvm__ctx *ctx, cvm__vtu_mesh *vm)
     cvm__free(ctx, vm->tri);
     cvm__free(ctx, vm->w);
     cvm__free(ctx, vm->tattr);
+    cvm__free(ctx, vm->names);
     memset(vm, 0, sizeof *vm);
 }
 
@@ -490,7 +490,10 @@ cvm_status cvm__read_vtu(cvm__ctx *ctx, cvm__reader *r, const char *name, cvm__v
     memset(out, 0, sizeof *out);
     ps.ctx = ctx;
     ps.name = name;
-    if (!(s = slurp(&ps, r)) && !(s = scan_tags(&ps)) && !(s = build_cells(&ps, out)))
+    ps.f.ctx = ctx;
+    ps.f.name = name;
+    if (!(s = slurp(&ps, r)) && !(s = scan_tags(&ps)) && !(s = decode_arrays(&ps)) &&
+        !(s = complete(&ps)) && !(s = build_cells(&ps, out)))
         s = build_points(&ps, out);
     cvm__free(ctx, ps.buf);
     cvm__free(ctx, ps.xyz);

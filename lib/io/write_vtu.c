@@ -137,7 +137,8 @@ static void cells(cvm__writer *w, const cvm__mesh_out *mo)
 cvm_status cvm__write_vtu(cvm__writer *w, cvm__ctx *ctx, const cvm__mesh_out *mo)
 {
     size_t v;
-    (void)ctx;
+    if (mo->vtu_encoding == 1 || mo->vtu_encoding == 2)
+        return cvm__write_vtu_binary(w, ctx, mo, mo->vtu_encoding == 2);
     cvm__writer_puts(w, "<?xml version=\"1.0\"?>\n"
                         "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
                         "  <UnstructuredGrid>\n");

@@ -1,6 +1,7 @@
 /*
  * fuzz_vtu_read.c - libFuzzer target: any bytes, parsed as a .vtu (VTK XML
- * unstructured grid) through an in-memory cvm__reader, give a status and
+ * unstructured grid, ASCII, base64, appended raw or zlib-compressed) through
+ * an in-memory cvm__reader, give a status and
  * never a crash, a leak or undefined behaviour. Fault injection as in
  * fuzz_poly_read.c (short reads, a read error, one failed allocation,
  * selected by the input size). A successful read must be consistent:

@@ -18,7 +18,11 @@ TCase *io_writer_tcase(void);        /* test_writer.c: writer.c */
 TCase *io_write_file_tcase(void);    /* test_write_file.c: write_file.c, OOM and failures */
 TCase *io_write_triangle_tcase(void);/* test_write_triangle.c: write_triangle.c round trip */
 TCase *io_write_vtu_tcase(void);     /* test_write_vtu.c */
+TCase *io_write_vtu_binary_tcase(void); /* test_write_vtu_binary.c: write_vtu_binary.c */
 TCase *io_read_vtu_tcase(void);      /* test_read_vtu.c: read_vtu.c */
+TCase *io_vtu_data_tcase(void);      /* test_vtu_data.c: vtu_data.c and files VTK and meshio wrote */
+TCase *io_read_vtk_tcase(void);      /* test_read_vtk.c: read_vtk.c */
+TCase *io_read_msh_tcase(void);      /* test_read_msh.c: read_msh.c, read_mesh_file.c */
 TCase *io_write_msh_tcase(void);     /* test_write_msh.c */
 TCase *io_write_svg_tcase(void);     /* test_write_svg.c */
 

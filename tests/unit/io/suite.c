@@ -15,7 +15,11 @@ Suite *io_suite(void)
     suite_add_tcase(s, io_write_file_tcase());
     suite_add_tcase(s, io_write_triangle_tcase());
     suite_add_tcase(s, io_write_vtu_tcase());
+    suite_add_tcase(s, io_write_vtu_binary_tcase());
     suite_add_tcase(s, io_read_vtu_tcase());
+    suite_add_tcase(s, io_vtu_data_tcase());
+    suite_add_tcase(s, io_read_vtk_tcase());
+    suite_add_tcase(s, io_read_msh_tcase());
     suite_add_tcase(s, io_write_msh_tcase());
     suite_add_tcase(s, io_write_svg_tcase());
     return s;

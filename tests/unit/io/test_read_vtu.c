@@ -125,8 +125,8 @@ START_TEST(vtu_malformed_files_are_named_by_line)
                "t.vtu:5: NumberOfPoints=\"-4\" is negative");
     expect_bad("NumberOfPoints=\"4\"", "NumberOfPoints=\"-99999999999999999999\"", CVM_E_IO_FORMAT,
                "t.vtu:5: NumberOfPoints=\"-99999999999999999999\" is negative");
-    expect_bad("format=\"ascii\" Name=\"weight\"", "format=\"binary\" Name=\"weight\"", CVM_E_UNSUPPORTED,
-               "t.vtu:7: DataArray 'weight': only format=\"ascii\"");
+    expect_bad("format=\"ascii\" Name=\"weight\"", "format=\"binary\" Name=\"weight\"", CVM_E_IO_FORMAT,
+               "t.vtu:7: weight: '.' is not a base64 character");
     expect_bad("type=\"UnstructuredGrid\"", "type=\"PolyData\"", CVM_E_UNSUPPORTED, "not a VTK UnstructuredGrid");
     expect_bad("5 5 3 1</DataArray>\n</Cells>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n", "5 5 3 1\n",
                CVM_E_IO_FORMAT, "t.vtu:25: DataArray without </DataArray>");
@@ -134,10 +134,11 @@ START_TEST(vtu_malformed_files_are_named_by_line)
     expect_bad("<!-- made by hand -->", "<!-- made by hand", CVM_E_IO_FORMAT, "t.vtu:2: unterminated comment");
     expect_bad("</Piece>", "</Piece><Piece NumberOfPoints=\"0\" NumberOfCells=\"0\">", CVM_E_UNSUPPORTED,
                "more than one <Piece>");
-    expect_bad("<Points>", "<AppendedData encoding=\"raw\">", CVM_E_UNSUPPORTED, "AppendedData");
+    expect_bad("<Points>", "<AppendedData encoding=\"raw\">", CVM_E_IO_FORMAT,
+               "t.vtu:17: <AppendedData> data must start with '_'");
     /* control bytes of an echoed field are escaped, never passed to a terminal */
     expect_bad("format=\"ascii\" Name=\"weight\"", "format=\"\033]0;x\007\" Name=\"weight\"",
-               CVM_E_UNSUPPORTED, "t.vtu:7: DataArray 'weight': only format=\"ascii\"");
+               CVM_E_UNSUPPORTED, "t.vtu:7: weight: format=\"\\x1b]0;x\\x07\" is not read");
     expect_bad("0 0 0  1 0 0", "0 0 0  1 \033]0;x\007 0", CVM_E_IO_FORMAT,
                "t.vtu:18: Points: entry 4 (from 0) is '\\x1b]0;x\\x07', not a number");
 }

@@ -1,0 +1,164 @@
+"""interop.py CLI TMPDIR - cvmesh against the real clients, both ways.
+
+cvmesh -> client: the cvmesh program writes a mesh as .vtu in each encoding
+(ascii, binary, zlib) and as .msh; meshio (and VTK, when the vtk wheel is
+installed) must read the same points, triangles and cell data.
+client -> cvmesh: meshio writes that mesh as .vtu (ascii, base64, zlib),
+legacy .vtk (ascii, binary) and Gmsh 2.2 / 4.1 (ascii, binary); VTK writes
+it with its XML writer in every data mode and with its legacy writers; cvmesh
+must read each back to exactly the same triangles. A Gmsh domain of lines
+and points from meshio is triangulated and refined with its physical tags as
+markers. Prints one line per check; exits 1 when any failed.
+"""
+import os
+import random
+import subprocess
+import sys
+
+import meshio
+import numpy as np
+
+CLI, TMP = sys.argv[1], sys.argv[2]
+os.makedirs(TMP, exist_ok=True)
+failed = []
+
+
+def check(ok, what):
+    print(("ok   " if ok else "FAIL ") + what)
+    if not ok:
+        failed.append(what)
+
+
+def run(*args):
+    r = subprocess.run([CLI] + list(args), capture_output=True, text=True)
+    return r.returncode, r.stderr.strip()
+
+
+def tri_set(cells):
+    return {tuple(sorted(int(v) for v in t)) for t in cells}
+
+
+def path(name):
+    return os.path.join(TMP, name)
+
+
+# ---- a mesh made by cvmesh: Delaunay triangulation of random points -------
+rng = random.Random(7)
+with open(path("pts.node"), "w") as f:
+    f.write("300 2 0 0\n")
+    for i in range(300):
+        f.write("%d %r %r\n" % (i, rng.random(), rng.random()))
+code, err = run("triangulate", path("pts.node"), "-o", path("ref.vtu"))
+check(code == 0, "cvmesh triangulate pts.node: " + err)
+ref = meshio.read(path("ref.vtu"))
+ref_pts = ref.points[:, :2]
+ref_tris = tri_set(ref.cells_dict["triangle"])
+
+# ---- cvmesh -> meshio / VTK -----------------------------------------------
+try:
+    import vtk
+    from vtk.util.numpy_support import vtk_to_numpy
+except ImportError:
+    vtk = None
+    print("note: the vtk wheel is not installed: VTK checks skipped")
+
+for enc in ("ascii", "binary", "zlib"):
+    out = path("cvm_%s.vtu" % enc)
+    code, err = run("triangulate", path("pts.node"), "-o", out, "--vtu-encoding", enc)
+    check(code == 0, "cvmesh writes .vtu %s: %s" % (enc, err))
+    m = meshio.read(out)
+    check(np.array_equal(m.points[:, :2], ref_pts), "meshio reads cvmesh .vtu %s: points" % enc)
+    check(tri_set(m.cells_dict["triangle"]) == ref_tris, "meshio reads cvmesh .vtu %s: triangles" % enc)
+    check(np.array_equal(m.cell_data["min_angle_deg"][0], ref.cell_data["min_angle_deg"][0]),
+          "meshio reads cvmesh .vtu %s: min_angle_deg" % enc)
+    if vtk:
+        rd = vtk.vtkXMLUnstructuredGridReader()
+        rd.SetFileName(out)
+        rd.Update()
+        g = rd.GetOutput()
+        pts = vtk_to_numpy(g.GetPoints().GetData())[:, :2]
+        conn = vtk_to_numpy(g.GetCells().GetConnectivityArray())
+        ntri = sum(1 for c in range(g.GetNumberOfCells()) if g.GetCellType(c) == 5)
+        check(rd.GetErrorCode() == 0 and np.array_equal(pts, ref_pts) and ntri == len(ref_tris)
+              and tri_set(conn[:3 * ntri].reshape(-1, 3)) == ref_tris,
+              "VTK %s reads cvmesh .vtu %s" % (vtk.vtkVersion.GetVTKVersion(), enc))
+code, err = run("triangulate", path("pts.node"), "-o", path("cvm.msh"))
+m = meshio.read(path("cvm.msh"))
+check(code == 0 and tri_set(m.cells_dict["triangle"]) == ref_tris, "meshio reads cvmesh .msh")
+
+# ---- meshio / VTK -> cvmesh ------------------------------------------------
+mesh = meshio.Mesh(ref.points, [("triangle", ref.cells_dict["triangle"])])
+written = []
+for name, kw in (("mio_ascii.vtu", dict(binary=False)),
+                 ("mio_base64.vtu", dict(binary=True, compression=None)),
+                 ("mio_zlib.vtu", dict(binary=True, compression="zlib")),
+                 ("mio_ascii.vtk", dict(binary=False)), ("mio_binary.vtk", dict(binary=True))):
+    meshio.write(path(name), mesh, **kw)
+    written.append(name)
+gmesh = meshio.Mesh(ref_pts, [("triangle", ref.cells_dict["triangle"])])
+for name, fmt, binary in (("mio22.msh", "gmsh22", False), ("mio22b.msh", "gmsh22", True),
+                          ("mio41.msh", "gmsh", False), ("mio41b.msh", "gmsh", True)):
+    meshio.write(path(name), gmesh, file_format=fmt, binary=binary)
+    written.append(name)
+if vtk:
+    rd = vtk.vtkXMLUnstructuredGridReader()
+    rd.SetFileName(path("ref.vtu"))
+    rd.Update()
+    g = rd.GetOutput()
+    modes = {"vtk_ascii.vtu": lambda w: w.SetDataModeToAscii(),
+             "vtk_binary.vtu": lambda w: (w.SetDataModeToBinary(), w.SetCompressorTypeToNone()),
+             "vtk_binary_zlib.vtu": lambda w: (w.SetDataModeToBinary(), w.SetCompressorTypeToZLib()),
+             "vtk_appended_raw.vtu": lambda w: (w.SetDataModeToAppended(), w.EncodeAppendedDataOff()),
+             "vtk_appended_b64.vtu": lambda w: (w.SetDataModeToAppended(), w.EncodeAppendedDataOn(),
+                                                w.SetCompressorTypeToNone()),
+             "vtk_lz4.vtu": lambda w: (w.SetDataModeToAppended(), w.SetCompressorTypeToLZ4())}
+    for name, setup in modes.items():
+        w = vtk.vtkXMLUnstructuredGridWriter()
+        w.SetInputData(g)
+        setup(w)
+        w.SetFileName(path(name))
+        w.Write()
+        written.append(name)
+    for name, binary in (("vtk_legacy_ascii.vtk", False), ("vtk_legacy_binary.vtk", True)):
+        w = vtk.vtkUnstructuredGridWriter()
+        w.SetInputData(g)
+        if binary:
+            w.SetFileTypeToBinary()
+        w.SetFileName(path(name))
+        w.Write()
+        written.append(name)
+for name in written:
+    out = path("back_" + name.replace(".", "_") + ".vtu")
+    code, err = run("triangulate", path(name), "-o", out)
+    if name == "vtk_lz4.vtu":  # a compressor cvmesh does not read: a clear refusal
+        check(code == 1 and "vtkLZ4DataCompressor" in err and not os.path.exists(out),
+              "cvmesh refuses %s with a message: %s" % (name, err))
+        continue
+    ok = code == 0
+    # meshio's ASCII .vtu and VTK's legacy ASCII writer print 12 and 11
+    # significant digits: the points move by up to 1e-11, the triangles stay
+    lossy = name in ("mio_ascii.vtu", "vtk_legacy_ascii.vtk")
+    if ok:
+        back = meshio.read(out)
+        same = np.abs(back.points[:, :2] - ref_pts).max() < 1e-10 if lossy else \
+            np.array_equal(back.points[:, :2], ref_pts)
+        ok = tri_set(back.cells_dict["triangle"]) == ref_tris and same
+    check(ok, "cvmesh reads %s: the same %spoints and triangles %s"
+          % (name, "(to 1e-10) " if lossy else "", err))
+
+# ---- a Gmsh domain (lines with physical tags, a point) --------------------
+dom = meshio.Mesh(np.array([[0, 0], [2, 0], [2, 1], [0, 1], [1, 0.5]], float),
+                  [("line", np.array([[0, 1], [1, 2], [2, 3], [3, 0]])), ("vertex", np.array([[4]]))],
+                  cell_data={"gmsh:physical": [np.array([1, 2, 3, 4]), np.array([9])],
+                             "gmsh:geometrical": [np.array([1, 2, 3, 4]), np.array([1])]})
+meshio.write(path("domain.msh"), dom, file_format="gmsh22", binary=True)
+code, err = run("refine", path("domain.msh"), "--size", "0.2", "-o", path("domain_out.msh"))
+check(code == 0, "cvmesh refine domain.msh: " + err)
+if code == 0:
+    d = meshio.read(path("domain_out.msh"))
+    tags = set(int(t) for t in d.cell_data_dict["gmsh:physical"].get("line", []))
+    check(len(d.cells_dict["triangle"]) > 50 and tags <= {1, 2, 3, 4} and len(tags) == 4,
+          "refined Gmsh domain keeps its 4 boundary markers (%s)" % sorted(tags))
+
+print("%d failed" % len(failed))
+sys.exit(1 if failed else 0)

@@ -1,0 +1,103 @@
+/*
+ * fuzz_vtk_read.c - libFuzzer target: any bytes, parsed as a legacy .vtk (ASCII or BINARY, UNSTRUCTURED_GRID or POLYDATA)
+ * through an in-memory cvm__reader, give a status and
+ * never a crash, a leak or undefined behaviour. Fault injection as in
+ * fuzz_poly_read.c (short reads, a read error, one failed allocation,
+ * selected by the input size). A successful read must be consistent:
+ * finite coordinates, triangle and line indices in range, weights finite;
+ * when it is small, it is rebuilt through cvm_mesh_read() of a temporary
+ * file, which must give a mesh that passes cvm_mesh_check() or an error
+ * with a message.
+ */
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "fuzz_input.h"
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+
+#define FUZZ_NAME "fuzz_vtk_read"
+#include "fuzz_require.h"
+
+static void check_mesh(const cvm__vtu_mesh *vm)
+{
+    size_t i;
+    for (i = 0; i < 2 * vm->p.np; i++)
+        FUZZ_REQUIRE(isfinite(vm->p.xy[i]), "coordinate %zu is not finite", i);
+    for (i = 0; i < 3 * vm->nt; i++)
+        FUZZ_REQUIRE(vm->tri[i] >= 0 && (size_t)vm->tri[i] < vm->p.np, "triangle corner %zu", i);
+    for (i = 0; i < 2 * vm->p.nseg; i++)
+        FUZZ_REQUIRE(vm->p.seg[i] >= 0 && (size_t)vm->p.seg[i] < vm->p.np, "line end %zu", i);
+    for (i = 0; vm->w && i < vm->p.np; i++)
+        FUZZ_REQUIRE(isfinite(vm->w[i]), "weight %zu is not finite", i);
+}
+
+/* Rebuild a small mesh through the public API from a temporary file. */
+static void rebuild(const uint8_t *data, size_t size)
+{
+    char dir[] = "/tmp/fuzz_vtk_XXXXXX", path[64];
+    cvm_mesh *m = NULL;
+    cvm_status s;
+    FILE *f;
+    if (!mkdtemp(dir))
+        return;
+    snprintf(path, sizeof path, "%s/m.vtk", dir);
+    f = fopen(path, "wb");
+    if (!f || fwrite(data, 1, size, f) != size) {
+        if (f)
+            fclose(f);
+        remove(path);
+        rmdir(dir);
+        return;
+    }
+    fclose(f);
+    if (cvm_mesh_create(&m) != CVM_OK)
+        abort();
+    s = cvm_mesh_read(m, path);
+    remove(path);
+    rmdir(dir);
+    if (s == CVM_OK) { /* a file without triangles is a domain to triangulate */
+        size_t nt = 0;
+        FUZZ_REQUIRE(cvm_mesh_count(&nt, m, CVM_ENT_TRIANGLE) == CVM_OK, "count");
+        if (nt == 0)
+            s = cvm_mesh_triangulate(m);
+    }
+    if (!cvm_status_is_error(s)) {
+        cvm_status c = cvm_mesh_check(m);
+        FUZZ_REQUIRE(c == CVM_OK, "cvm_mesh_check: %s", cvm_mesh_errmsg(m));
+    } else {
+        FUZZ_REQUIRE(cvm_mesh_errmsg(m)[0] != '\0', "status %d without a message", (int)s);
+    }
+    cvm_mesh_free(m);
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    cvm__ctx ctx;
+    cvm__vtu_mesh vm;
+    cvm__reader r;
+    fuzz_input src;
+    cvmtest_alloc a;
+    cvm_status s;
+    fuzz_input_setup(data, size, &src, &r, &ctx, &a);
+
+    s = cvm__read_vtk(&ctx, &r, "fuzz.vtk", &vm);
+    if (s == CVM_OK) {
+        FUZZ_REQUIRE(!src.failed, "read error at byte %zu was ignored", src.fail_at);
+        check_mesh(&vm);
+        if (a.n_failed == 0 && vm.p.np <= 200 && vm.nt <= 400)
+            rebuild(data, size);
+    } else {
+        FUZZ_REQUIRE(cvm_status_is_error(s), "status %d", (int)s);
+        FUZZ_REQUIRE(ctx.errmsg[0] != '\0', "status %d without a message", (int)s);
+        FUZZ_REQUIRE(s != CVM_E_NOMEM || a.n_failed > 0, "NOMEM with no failed allocation");
+        FUZZ_REQUIRE(vm.tri == NULL && vm.p.xy == NULL, "mesh not left empty on error");
+    }
+    cvm__vtu_mesh_free(&ctx, &vm);
+    FUZZ_REQUIRE(a.live_blocks == 0, "%ld blocks leaked (status %d)", a.live_blocks, (int)s);
+    return 0;
+}
