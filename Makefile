@@ -7,8 +7,9 @@
 #   make install PREFIX=/usr/local [DESTDIR=...]
 #   make amalgamation one-file build/amalgamation/cvmesh.c + cvmesh.h
 #   make clean
-# Variables: CC=gcc|clang, OPENMP=1|0, BUILD=build, SAN=1 (ASan+UBSan), TETGEN=0
-# (TetGen is for the future 3D work and is not linked yet), FUZZ_TIME=20 (seconds
+# Variables: CC=gcc|clang, OPENMP=1|0, BUILD=build, SAN=1 (ASan+UBSan), TETGEN=1|0
+# (link TetGen 1.5, AGPL-3+, for 3D boundary recovery: 1 by default when
+# /usr/include/tetgen.h exists; 0 builds a BSD-only library), FUZZ_TIME=20 (seconds
 # per fuzz target in make check), JOBS=<cores>. Everything reads only files of this
 # repository: the example domains are examples/data (examples/data/make_domains.py).
 
@@ -27,7 +28,7 @@ BUILD ?= build
 OPENMP ?= 1
 SAN ?= 0
 FUZZ ?= 0
-TETGEN ?= 0
+TETGEN ?= $(if $(wildcard /usr/include/tetgen.h),1,0)
 PREFIX ?= /usr/local
 DATA_DIR := $(CURDIR)/examples/data
 # The interpreter that creates the venv; every Python a target runs is $(VENV_PY).
@@ -52,15 +53,40 @@ endif
 ifeq ($(FUZZ),1)
   SANFLAGS += -fsanitize=fuzzer-no-link
 endif
-ifneq ($(TETGEN),0)
-  $(error TETGEN=$(TETGEN): TetGen is for the future 3D work and is not linked yet; use TETGEN=0)
-endif
 ALL_CFLAGS := $(CFLAGS_BASE) $(OMPFLAGS) $(SANFLAGS) $(CFLAGS)
 LDLIBS_LIB := -lm $(OMPFLAGS)
 
 LIB_SRC := $(sort $(filter-out lib/cli/%,$(wildcard lib/*/*.c)))
 CLI_SRC := $(sort $(wildcard lib/cli/*.c))
 LIB_OBJ := $(LIB_SRC:%.c=$(BUILD)/obj/%.o)
+
+# TetGen (lib/tetgen): the C++ shim is the only C++ in the tree. The C sources
+# see CVM_WITH_TETGEN (lib objects only: the amalgamation stays C-only and
+# TetGen-free); a change of TETGEN rebuilds the files that read it.
+ifeq ($(TETGEN),1)
+  CXX := $(if $(findstring clang,$(CC)),clang++,g++)
+  ALL_CXXFLAGS := -std=c++11 $(OPT) -g -Wall -Wextra -Werror -fvisibility=hidden -fPIC -Iinclude -Ilib \
+                  $(SANFLAGS) $(CXXFLAGS)
+  TETGEN_OBJ := $(BUILD)/obj/lib/tetgen/tetgen_shim.o
+  LIB_OBJ += $(TETGEN_OBJ)
+  LDLIBS_LIB += -ltet -lstdc++
+  # Linking those libraries would also export _edata, _end and __bss_start.
+  SHARED_LDFLAGS := -Wl,--version-script=lib/tetgen/exports.map
+  $(LIB_OBJ): ALL_CFLAGS += -DCVM_WITH_TETGEN
+else ifneq ($(TETGEN),0)
+  $(error TETGEN=$(TETGEN): use TETGEN=1 (link TetGen) or TETGEN=0 (BSD-only))
+endif
+TETGEN_STAMP := $(BUILD)/tetgen.stamp
+$(TETGEN_STAMP): FORCE
+	@mkdir -p $(dir $@)
+	@echo $(TETGEN) | cmp -s - $@ || echo $(TETGEN) > $@
+$(BUILD)/obj/lib/tetgen/tet3_out.o: $(TETGEN_STAMP)
+.PHONY: FORCE
+FORCE:
+
+$(BUILD)/obj/%.o: %.cxx
+	@mkdir -p $(dir $@)
+	$(CXX) $(ALL_CXXFLAGS) -MMD -MP -c $< -o $@
 CLI_OBJ := $(CLI_SRC:%.c=$(BUILD)/obj/%.o)
 
 STATIC := $(BUILD)/lib/libcvmesh.a
@@ -73,15 +99,17 @@ TEST_OBJ := $(TEST_SRC:%.c=$(BUILD)/obj/%.o)
 TEST_BIN := $(BUILD)/tests/unit_tests
 CHECK_CFLAGS = $(shell pkg-config --cflags check 2>/dev/null)
 CHECK_LIBS = $(shell pkg-config --libs check 2>/dev/null || echo -lcheck -lsubunit -lrt -lpthread)
-TEST_ENV = CVM_DATA_DIR=$(DATA_DIR) CVM_TEST_DATA=$(CURDIR)/tests/data
+TEST_ENV = CVM_DATA_DIR=$(DATA_DIR) CVM_TEST_DATA=$(CURDIR)/tests/data CVM_DATA3D_DIR=$(abspath $(DATA3D))
+# The 3D example surfaces, written by examples/data3d/make_data3d.py (standard library only).
+DATA3D := $(BUILD)/data3d
 
 # Fuzz targets: tests/fuzz/fuzz_<name>.c, seeds in tests/fuzz/corpus/<name>/.
-FUZZ_TARGETS := poly_read node_read cdt vtu_read refine optimise
+FUZZ_TARGETS := poly_read node_read cdt vtu_read refine optimise off_read stl_read tetpoly_read
 # The targets make check runs for FUZZ_TIME seconds with a fixed seed. The
 # refinement and optimisation targets still have open findings
 # (tests/fuzz/open/): they run in make fuzz and their seeds are replayed by
 # check-asan, but a timed run in make check would fail on those known inputs.
-FUZZ_CHECK_TARGETS := poly_read node_read cdt vtu_read
+FUZZ_CHECK_TARGETS := poly_read node_read cdt vtu_read off_read stl_read tetpoly_read
 FUZZ_BINS := $(FUZZ_TARGETS:%=$(BUILD)/fuzz/fuzz_%)
 REPLAY_BINS := $(FUZZ_TARGETS:%=$(BUILD)/fuzz/replay_%)
 FUZZ_SUPPORT_OBJ := $(BUILD)/obj/tests/fuzz/mesh_oracle.o $(BUILD)/obj/tests/fuzz/fuzz_input.o \
@@ -96,6 +124,7 @@ EXAMPLES_C := $(sort $(wildcard examples/c/*.c))
 
 .PHONY: install-c python fortran install-python install-fortran
 .PHONY: venv check-standalone check-golden
+.PHONY: data3d
 .PHONY: all lib cli tests deps demo check check-unit check-asan check-symbols check-layers check-cli \
         check-examples check-python check-fortran check-clang check-noomp check-fuzz \
         check-replay check-valgrind check-amalgamation fuzz fuzz-bins replay-bins bench \
@@ -118,7 +147,7 @@ $(STATIC): $(LIB_OBJ)
 
 $(SHARED): $(LIB_OBJ)
 	@mkdir -p $(dir $@)
-	$(CC) -shared -Wl,-soname,$(SONAME) -Wl,--no-undefined $(SANFLAGS) -o $@ $^ $(LDLIBS_LIB)
+	$(CC) -shared -Wl,-soname,$(SONAME) -Wl,--no-undefined $(SHARED_LDFLAGS) $(SANFLAGS) -o $@ $^ $(LDLIBS_LIB)
 	ln -sf libcvmesh.so.$(VERSION) $(BUILD)/lib/$(SONAME)
 	ln -sf $(SONAME) $(BUILD)/lib/libcvmesh.so
 
@@ -162,7 +191,10 @@ replay-bins: $(REPLAY_BINS)
 # Seed corpus of a target: committed seeds, plus the example domains and test data for the readers.
 fuzz_seeds = $(wildcard tests/fuzz/corpus/$(1)/*) \
   $(if $(filter poly_read,$(1)),$(wildcard examples/data/*.poly tests/data/*.poly)) \
-  $(if $(filter node_read,$(1)),$(wildcard tests/data/*.node))
+  $(if $(filter node_read,$(1)),$(wildcard tests/data/*.node)) \
+  $(if $(filter off_read,$(1)),$(wildcard examples/data3d/*.off)) \
+  $(if $(filter stl_read,$(1)),$(wildcard examples/data3d/*.stl)) \
+  $(if $(filter tetpoly_read,$(1)),$(wildcard examples/data3d/*.poly examples/data3d/*.smesh))
 
 FUZZ_BUILD := $(BUILD)/fuzzer
 FUZZ_SEED ?= 1
@@ -174,7 +206,10 @@ FUZZ_RUNS_cdt ?= 15000
 FUZZ_RUNS_vtu_read ?= 100000
 FUZZ_RUNS_refine ?= 2000
 FUZZ_RUNS_optimise ?= 1000
-FUZZ_MAKE = $(MAKE) $(PAR) --no-print-directory BUILD=$(FUZZ_BUILD) CC=$(CLANG) SAN=1 FUZZ=1 OPENMP=0
+FUZZ_RUNS_off_read ?= 200000
+FUZZ_RUNS_stl_read ?= 200000
+FUZZ_RUNS_tetpoly_read ?= 200000
+FUZZ_MAKE = $(MAKE) $(PAR) --no-print-directory BUILD=$(FUZZ_BUILD) CC=$(CLANG) SAN=1 FUZZ=1 OPENMP=0 TETGEN=0
 
 # run_fuzz(target, seconds, seed, runs): fresh work corpus seeded from the committed one;
 # the log goes to a file and is shown only on failure. make check uses a fixed
@@ -210,6 +245,9 @@ check-replay: replay-bins
 	  case $$t in \
 	    poly_read) extra="$(wildcard examples/data/*.poly tests/data/*.poly)";; \
 	    node_read) extra="$(wildcard tests/data/*.node)";; \
+	    off_read) extra="$(wildcard examples/data3d/*.off)";; \
+	    stl_read) extra="$(wildcard examples/data3d/*.stl)";; \
+	    tetpoly_read) extra="$(wildcard examples/data3d/*.poly examples/data3d/*.smesh)";; \
 	    *) extra="";; \
 	  esac; \
 	  ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
@@ -256,25 +294,31 @@ check: deps
 	echo "check: all steps passed in $$(( $$(date +%s) - start )) s"; \
 	grep -h '^100%: Checks:' $(BUILD)/unit.log | tail -n 1
 
-check-unit: $(TEST_BIN)
+data3d: $(DATA3D)/.stamp
+$(DATA3D)/.stamp: examples/data3d/make_data3d.py
+	@mkdir -p $(DATA3D)
+	$(PYTHON) $< $(DATA3D)
+	@touch $@
+
+check-unit: $(TEST_BIN) data3d
 	set -o pipefail; $(TEST_ENV) $(TEST_BIN) 2>&1 | tee $(BUILD)/unit.log
 
-check-asan:
+check-asan: data3d
 	$(MAKE) $(PAR) --no-print-directory BUILD=$(BUILD)/asan SAN=1 OPENMP=0 tests replay-bins
 	$(TEST_ENV) ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 CK_TIMEOUT_MULTIPLIER=4 \
 	  $(BUILD)/asan/tests/unit_tests
 	$(MAKE) --no-print-directory BUILD=$(BUILD)/asan SAN=1 OPENMP=0 check-replay
 
-check-valgrind:
+check-valgrind: data3d
 	$(MAKE) $(PAR) --no-print-directory BUILD=$(BUILD)/valgrind OPENMP=0 tests
 	$(TEST_ENV) CK_FORK=no CK_TIMEOUT_MULTIPLIER=20 valgrind -q --error-exitcode=1 --leak-check=full \
 	  --errors-for-leak-kinds=definite,indirect $(BUILD)/valgrind/tests/unit_tests
 
-check-clang:
+check-clang: data3d
 	$(MAKE) $(PAR) --no-print-directory BUILD=$(BUILD)/clang CC=$(CLANG) all tests
 	$(TEST_ENV) $(BUILD)/clang/tests/unit_tests
 
-check-noomp:
+check-noomp: data3d
 	$(MAKE) $(PAR) --no-print-directory BUILD=$(BUILD)/noomp OPENMP=0 all tests
 	@if readelf -d $(BUILD)/noomp/lib/libcvmesh.so.$(VERSION) | grep -q -E 'gomp|omp\.so'; then \
 	  echo "check-noomp: OPENMP=0 library still links an OpenMP runtime"; exit 1; fi
@@ -358,7 +402,7 @@ $(AMALG)/cvmesh.c: $(LIB_SRC) $(wildcard lib/*/*.h) .ci/amalgamate.sh
 
 # The amalgamation compiles alone, warning-free, exports the same symbols, and
 # the unit tests pass against it.
-check-amalgamation: amalgamation $(TEST_OBJ)
+check-amalgamation: amalgamation $(TEST_OBJ) data3d
 	$(CC) $(ALL_CFLAGS) -I$(AMALG) -c $(AMALG)/cvmesh.c -o $(AMALG)/cvmesh.o
 	$(CC) -shared $(SANFLAGS) -o $(AMALG)/libcvmesh_amalg.so $(AMALG)/cvmesh.o $(LDLIBS_LIB)
 	sh .ci/check_symbols.sh $(AMALG)/libcvmesh_amalg.so .ci/exported_symbols.txt
@@ -380,7 +424,7 @@ install-c: all
 	ln -sf libcvmesh.so.$(VERSION) $(DESTDIR)$(PREFIX)/lib/$(SONAME)
 	ln -sf $(SONAME) $(DESTDIR)$(PREFIX)/lib/libcvmesh.so
 	install -m 755 $(CLI) $(DESTDIR)$(PREFIX)/bin/
-	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@VERSION@|$(VERSION)|' -e 's|@LIBS@|-lm $(OMPFLAGS)|' \
+	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@VERSION@|$(VERSION)|' -e 's|@LIBS@|$(strip $(LDLIBS_LIB))|' \
 	  .ci/cvmesh.pc.in > $(DESTDIR)$(PREFIX)/lib/pkgconfig/cvmesh.pc
 
 clean:

@@ -2,7 +2,8 @@
 # check_layers.sh - the library's folders keep their layering, and its files
 # stay small enough to read:
 #  1. a file under lib/ includes only its own folder and the layers below it:
-#       common <- geom <- delaunay <- sizing <- {boundary, refine, dual};
+#       common <- geom <- delaunay <- sizing <- {boundary, refine, dual};  geom <- delaunay3;
+#       common <- geom <- surface3 (3D surface checks);  common <- geom <- tetgen (TetGen shim, C++);
 #       io <- common;
 #       api sees every engine (not cli);  cli sees only include/ (and itself).
 #     The public headers (include/cvmesh*.h) are open to every layer.
@@ -24,16 +25,20 @@ allowed() {
     common) echo "" ;;
     geom) echo "common" ;;
     delaunay) echo "common geom" ;;
+    delaunay3) echo "common geom" ;;
     sizing) echo "common geom delaunay" ;;
     boundary | refine | dual) echo "common geom delaunay sizing" ;;
     io) echo "common" ;;
-    api) echo "common geom delaunay sizing boundary refine dual io" ;;
+    surface3) echo "common geom" ;;
+    tetgen) echo "common geom" ;;
+    api) echo "common geom delaunay delaunay3 sizing boundary surface3 tetgen refine dual io" ;;
     cli) echo "" ;;
     *) echo "?" ;;
     esac
 }
 
-for f in lib/*/*.c lib/*/*.h; do
+for f in lib/*/*.c lib/*/*.cxx lib/*/*.h; do
+    [ -f "$f" ] || continue
     layer=$(echo "$f" | cut -d/ -f2)
     ok=$(allowed "$layer")
     if [ "$ok" = "?" ]; then
@@ -75,7 +80,8 @@ done
 bound_of() {
     sed -e 's/#.*//' "$allow" | awk -v f="$1" '$1 == f { print $2 }'
 }
-for f in lib/*/*.c lib/*/*.h; do
+for f in lib/*/*.c lib/*/*.cxx lib/*/*.h; do
+    [ -f "$f" ] || continue
     n=$(wc -l < "$f")
     b=$(bound_of "$f")
     if [ -n "$b" ]; then

@@ -2,7 +2,7 @@
 # Install the Debian 12 packages cvmesh's build and tests need, only those
 # dpkg says are missing. As root: non-interactive apt-get; otherwise print the line.
 set -e
-PKGS="build-essential pkg-config check libsubunit-dev clang libomp-dev libclang-rt-14-dev gfortran swig python3-venv librsvg2-bin"
+PKGS="build-essential pkg-config check libsubunit-dev clang libomp-dev libclang-rt-14-dev gfortran swig python3-venv librsvg2-bin libtet1.5-dev"
 missing=""
 for p in $PKGS; do
     dpkg -s "$p" >/dev/null 2>&1 || missing="$missing $p"

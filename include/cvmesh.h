@@ -72,6 +72,19 @@ CVM_API int32_t cvm_version_number(void);
  */
 CVM_API const char *cvm_version_string(void);
 
+/**
+ * How the linked library was built, as a static string: the version, then the
+ * optional components and the licence they put the build under, e.g.
+ * "cvmesh 0.1.0; TetGen 1.5 boundary recovery (AGPL-3+ build); OpenMP" or
+ * "cvmesh 0.1.0; no TetGen (BSD-3-Clause build); OpenMP". Without TetGen,
+ * cvm_mesh_triangulate() of a 3D surface recovers it only when every surface
+ * triangle is a Delaunay face (see there). cvm_version_string() keeps its
+ * "MAJOR.MINOR.PATCH" form for programs that parse it.
+ * Ownership: static; do not free. Thread-safety: callable from any thread.
+ * @since 0.2
+ */
+CVM_API const char *cvm_build_string(void);
+
 /* ------------------------------------------------------------------------ */
 /* Types                                                                     */
 /* ------------------------------------------------------------------------ */
@@ -149,8 +162,8 @@ typedef enum cvm_entity {
     CVM_ENT_DUPLICATE = 9,    /**< input points merged into an earlier identical point */
     CVM_ENT_FILE_LINE = 10,   /**< a line of an input file (error reports only) */
     CVM_ENT_OPTION = 11,      /**< an option key (error reports only) */
-    CVM_ENT_TETRAHEDRON = 12, /**< reserved for the 3D kernel */
-    CVM_ENT_FACET = 13,       /**< reserved for the 3D kernel */
+    CVM_ENT_TETRAHEDRON = 12, /**< tetrahedra of a 3D mesh, 4 vertex ids, positively oriented */
+    CVM_ENT_FACET = 13,       /**< facets of a 3D input surface (polygons with a marker) */
     CVM_ENT_REFINE_UNMET = 20, /**< triangles the last cvm_mesh_refine() left below the angle or
                                    above the size (cvm_mesh_copy_refine_unmet()) */
     CVM_ENT_CELL = 21,        /**< the cells of the mesh's dimension, of any type (triangles
@@ -237,10 +250,18 @@ CVM_API cvm_status cvm_mesh_error_item(cvm_entity *kind_out, int64_t *index_out,
  * Set the input points. Clears any triangulation and the point markers and
  * attributes; segments, holes and regions are kept.
  *
+ * With dim 3 the handle becomes a 3D mesh (cvm_mesh_dim() 3; 2D input and
+ * output are forgotten, 3D holes and regions kept): cvm_mesh_triangulate()
+ * then builds the Delaunay tetrahedralisation of the points, and the calls
+ * that have a 3D meaning follow (counts, points and cells, check, weights,
+ * measures, files; each documents it). The 2D-only calls (segments, refine,
+ * optimise, insert, dual, histograms) return CVM_E_UNSUPPORTED on a 3D mesh.
+ * Points of dim 2 make a 3D handle 2D again.
+ *
  * @param m      mesh handle; not NULL.
  * @param coords dim*count coordinates, point i at coords[dim*i ..].
  * @param count  number of points; may be 0.
- * @param dim    2. (3 is reserved for the 3D kernel and returns CVM_E_UNSUPPORTED.)
+ * @param dim    2 or 3.
  * Ownership:    copied; the caller keeps @p coords.
  * Units:        any consistent length unit.
  * Thread-safety: one call at a time on @p m.
@@ -248,11 +269,10 @@ CVM_API cvm_status cvm_mesh_error_item(cvm_entity *kind_out, int64_t *index_out,
  * @return CVM_OK
  *         CVM_E_NULL_ARG          m is NULL, or coords is NULL while count > 0
  *         CVM_E_ARGUMENT          dim is not 2 or 3
- *         CVM_E_UNSUPPORTED       dim is 3
  *         CVM_E_INPUT_NONFINITE   a coordinate is NaN or infinite (message gives the point)
- *         CVM_E_TOO_LARGE         count exceeds INT32_MAX/4
+ *         CVM_E_TOO_LARGE         count exceeds INT32_MAX/4 (2D) or 60,000,000 (3D)
  *         CVM_E_NOMEM
- * @since 0.1
+ * @since 0.1 (dim 3 since 0.2; it returned CVM_E_UNSUPPORTED before)
  */
 CVM_API cvm_status cvm_mesh_set_points(cvm_mesh *m, const double *coords, size_t count, int dim);
 
@@ -261,9 +281,9 @@ CVM_API cvm_status cvm_mesh_set_points(cvm_mesh *m, const double *coords, size_t
  * output (points, holes, regions, inserted points, dual vertices) in the
  * dimension-generic calls (the *_nd functions, cvm_sizing_*_nd).
  *
- * @param out  receives 2 for every mesh of this version: a new handle is 2D, and
- *             only 2D input can be set. A handle given 3D points by the 3D kernel
- *             (planned) will report 3.
+ * @param out  receives 2 or 3: a new handle is 2D; one given 3D points
+ *             (cvm_mesh_set_points() with dim 3, or cvm_mesh_read() of a 3D file)
+ *             is 3D.
  * @param m    mesh handle; not NULL.
  * Thread-safety: may run concurrently with other read-only calls on @p m.
  * @return CVM_OK, CVM_E_NULL_ARG (out or m is NULL)
@@ -414,7 +434,15 @@ CVM_API cvm_status cvm_mesh_set_regions_nd(cvm_mesh *m, const double *r, size_t 
  * file repeats a point). Cell type 1 (vertex) is ignored; z must be 0. The
  * rebuild ignores CVM_OPT_TIME_LIMIT_S and uses the handle's other options.
  *
- * @param path  file name; the format follows the extension (.poly, .node or .vtu).
+ * 3D input makes the handle 3D (see cvm_mesh_set_points()): a closed surface
+ * in .off, .stl (ASCII, one marker per solid, or binary; vertices merged by
+ * exact coordinates) or TetGen .poly/.smesh (facets of convex polygons with
+ * markers, hole and region points; a .poly is 3D when its first line says
+ * dimension 3), or a 3D point set in a TetGen .node. The surface is checked
+ * by cvm_mesh_triangulate(), which meshes its inside.
+ *
+ * @param path  file name; the format follows the extension (.poly, .node, .vtu,
+ *              .smesh, .off, .stl; case-insensitive).
  * Atomicity:   on error or cancellation the previous input (and, for .vtu, the
  *              previous mesh) is kept unchanged.
  * Stops:       the progress callback (stage CVM_STAGE_READ, fraction 0) is asked
@@ -430,6 +458,9 @@ CVM_API cvm_status cvm_mesh_set_regions_nd(cvm_mesh *m, const double *r, size_t 
  *         CVM_E_UNSUPPORTED      unknown extension; in a .vtu binary, appended or compressed
  *                                data, more than one Piece, or a cell type other than 1, 3, 5
  *         CVM_E_INPUT_EMPTY      .vtu without triangle cells
+ *         CVM_E_IO_FORMAT, CVM_E_INPUT_INDEX  a 3D file's malformed content or a face naming a
+ *                                point that does not exist (message names file:line, or the
+ *                                byte offset of a binary .stl, and the face)
  *         CVM_E_INPUT_DEGENERATE .vtu whose mesh cannot be rebuilt: a triangle repeats a
  *                                point or has two corners at one position, a line cell
  *                                has zero length, a point is in no triangle, an edge has three
@@ -882,6 +913,23 @@ CVM_API cvm_status cvm_mesh_set_progress(cvm_mesh *m, cvm_progress_fn fn, int64_
  * segment is such a chain of constrained edges (verified before returning,
  * in linear time).
  *
+ * On a 3D handle (cvm_mesh_dim() 3): without facets, the Delaunay
+ * tetrahedralisation of the points (regular once weights are set), decided by
+ * exact predicates with symbolic perturbation by input index, so cospherical
+ * input (lattices) has one answer and the output is the same for every seed
+ * and thread count; vertices are the points less duplicates, in input order;
+ * tetrahedra are positively oriented and listed in a canonical order. With a
+ * surface (cvm_mesh_read() of .off/.stl/.poly/.smesh): the surface is
+ * validated (closed, manifold, consistently oriented, not self-intersecting;
+ * internal facets between regions allowed), then its inside is tetrahedralised
+ * with the surface's triangles as faces (CVM_ENT_TRIANGLE, with the facets'
+ * markers), hole points emptied and region points' attributes flooded. A build
+ * with TetGen (cvm_build_string()) recovers the boundary with it (inserting
+ * Steiner points inside only when it must: CVM_MEASURE_RECOVERY_STEINER); a
+ * build without it requires every surface triangle to be a face of the
+ * Delaunay tetrahedralisation of the surface's points and otherwise returns
+ * CVM_E_UNSUPPORTED naming the first that is not.
+ *
  * Stops: triangulation cannot stop half-way; on a time limit or cancellation
  * the mesh is left empty (count 0) and CVM_INCOMPLETE_* is returned.
  * @return CVM_OK
@@ -905,7 +953,13 @@ CVM_API cvm_status cvm_mesh_set_progress(cvm_mesh *m, cvm_progress_fn fn, int64_
  *                                  thinner than an ulp, with no piece end near the crossing
  *                                  (message names the vertex); the mesh is left empty
  *         CVM_INCOMPLETE_TIME_LIMIT, CVM_INCOMPLETE_CANCELLED
- * @since 0.1
+ *         3D: CVM_E_INPUT_DEGENERATE (fewer than 4 distinct points, all coplanar, a
+ *         degenerate or non-planar face), CVM_E_INPUT_NOT_CLOSED (an open edge or a
+ *         flipped face), CVM_E_INPUT_INTERSECTING (faces that cross, a non-manifold edge
+ *         or vertex), CVM_E_UNSUPPORTED (a non-convex facet polygon, a facet with holes;
+ *         without TetGen a surface triangle that is no Delaunay face); messages name the
+ *         faces in the file's numbering
+ * @since 0.1 (3D since 0.2)
  */
 CVM_API cvm_status cvm_mesh_triangulate(cvm_mesh *m);
 
@@ -963,6 +1017,11 @@ CVM_API cvm_status cvm_mesh_insert_points_nd(cvm_index *ids_out, cvm_mesh *m, co
  * are replaced by its new pieces, checked as constrained edges), every interior
  * non-constrained edge locally Delaunay (in-circle, or the power test with
  * weights), the domain bounded by constrained edges or the convex hull.
+ * On a 3D mesh: every tetrahedron positively oriented (exact orient3d), each
+ * face shared by at most two tetrahedra that see it from opposite sides, every
+ * listed boundary face a face of the mesh, and for a point set's
+ * tetrahedralisation every interior face locally Delaunay (insphere, or the
+ * power test with weights, with the symbolic perturbation of the kernel).
  * @return CVM_OK, CVM_E_NULL_ARG, CVM_E_STATE (nothing triangulated),
  *         CVM_E_INTERNAL (message names the failed check and the triangle or edge)
  * @since 0.1
@@ -1453,6 +1512,10 @@ CVM_API cvm_status cvm_mesh_set_front_markers(cvm_mesh *m, const int32_t *marker
 /**
  * Number of entities of a kind: vertices, triangles, edges, segments (of the
  * output), input points/segments, holes, regions, merged duplicates.
+ * On a 3D mesh: CVM_ENT_VERTEX, CVM_ENT_TETRAHEDRON (= CVM_ENT_CELL),
+ * CVM_ENT_TRIANGLE (boundary faces, and internal facets of a surface's mesh),
+ * CVM_ENT_INPUT_POINT, CVM_ENT_FACET (input facets), holes, regions and
+ * duplicates; edges and segments count 0.
  * @return CVM_OK, CVM_E_NULL_ARG, CVM_E_ARGUMENT (kind has no count)
  * @since 0.1
  */
@@ -1471,8 +1534,8 @@ CVM_API cvm_status cvm_mesh_copy_points(double *dst, size_t dst_len, const cvm_m
  *
  * @param dst      receives dim * vertex count doubles; NULL only with dst_len 0.
  * @param dst_len  capacity of dst in doubles.
- * @param dim      the dimension the caller expects; must equal cvm_mesh_dim() (2 in this
- *                 version), so code written for one dimension cannot misread another.
+ * @param dim      the dimension the caller expects; must equal cvm_mesh_dim() (2 or 3), so
+ *                 code written for one dimension cannot misread another.
  * @param m        mesh handle; not NULL.
  * Units: length. Thread-safety: may run concurrently with other read-only calls on @p m.
  * @return CVM_OK
@@ -1489,6 +1552,10 @@ CVM_API cvm_status cvm_mesh_copy_points_nd(double *dst, size_t dst_len, int dim,
 /**
  * Copy connectivity: CVM_ENT_TRIANGLE (3 ids each, counter-clockwise),
  * CVM_ENT_EDGE (2 ids, sorted by (lower, higher) id), CVM_ENT_SEGMENT (2 ids).
+ * On a 3D mesh: CVM_ENT_TETRAHEDRON or CVM_ENT_CELL (4 ids, positively
+ * oriented: cvm's orient3d of the four corners > 0) and CVM_ENT_TRIANGLE (the
+ * boundary faces, 3 ids, counter-clockwise seen from outside the tetrahedron
+ * they bound).
  * Order is deterministic for given input and options.
  * @param dst_len capacity in cvm_index entries.
  * @return CVM_OK, CVM_E_NULL_ARG, CVM_E_ARGUMENT (kind), CVM_E_BUFFER_TOO_SMALL, CVM_E_NOMEM
@@ -1505,7 +1572,7 @@ typedef enum cvm_cell_type {
     CVM_CELL_TRIANGLE = 5,     /**< 3 vertex ids, counter-clockwise */
     CVM_CELL_POLYGON = 7,      /**< n vertex ids, counter-clockwise (reserved: dual cells) */
     CVM_CELL_QUAD = 9,         /**< 4 vertex ids, counter-clockwise (reserved: quad meshing) */
-    CVM_CELL_TETRAHEDRON = 10, /**< 4 vertex ids, positively oriented (reserved: 3D kernel) */
+    CVM_CELL_TETRAHEDRON = 10, /**< 4 vertex ids, positively oriented (3D meshes) */
     CVM_CELL_POLYHEDRON = 42   /**< reserved: 3D dual cells; their connectivity will be
                                     documented with them */
 } cvm_cell_type;
@@ -1687,7 +1754,7 @@ CVM_API cvm_status cvm_mesh_view_points(const double **ptr_out, size_t *count_ou
  *
  * @param ptr_out    receives *dim_out doubles per vertex (NULL when there is none).
  * @param count_out  receives the vertex count.
- * @param dim_out    receives the mesh's dimension (cvm_mesh_dim(): 2 in this version).
+ * @param dim_out    receives the mesh's dimension (cvm_mesh_dim(): 2 or 3).
  * @param m          mesh handle; not NULL.
  * Ownership: owned by @p m; valid until the next call that modifies @p m, or cvm_mesh_free().
  * Thread-safety: may run concurrently with other read-only calls on @p m.
@@ -1706,6 +1773,10 @@ CVM_API cvm_status cvm_mesh_view_points_nd(const double **ptr_out, size_t *count
  * reads it back), .msh (Gmsh 4.1 ASCII, segments tagged by
  * marker as physical groups), .node (writes PREFIX.node, PREFIX.ele and
  * PREFIX.edge beside each other, 0-based), .svg (a picture).
+ * A 3D mesh: .vtu (VTK_TETRA cells, cell data "attribute" with regions), .msh
+ * (Gmsh 4.1: tetrahedra in one volume per regional attribute, boundary
+ * triangles in one surface per marker, physical group m "marker_m" for m > 0),
+ * .node (TetGen's PREFIX.node, PREFIX.ele and PREFIX.face, 0-based); not .svg.
  * Every file is written to a temporary name and renamed, so a failure never
  * leaves a partial file; the three files of .node replace their old versions
  * together (cvm_mesh_commit_writes()). A replaced file keeps its permissions
@@ -1760,6 +1831,11 @@ CVM_API cvm_status cvm_mesh_write(cvm_mesh *m, const char *path);
  *               cvm_mesh_insert_points() get weight 0 (a point whose power cell
  *               would be empty is rejected); set the weights after the last
  *               cvm_mesh_refine().
+ * 3D:           on the Delaunay tetrahedralisation of a point set, the regular
+ *               tetrahedralisation of its vertices with these weights (vertex ids
+ *               kept; a vertex whose power cell vanishes is in no tetrahedron and is
+ *               counted by CVM_MEASURE_VANISHED_VERTICES); on a surface's mesh
+ *               CVM_E_UNSUPPORTED.
  * Output:       cvm_mesh_write() to .node writes the weight as the first attribute
  *               of each vertex (before the point attributes).
  * Thread-safety: must not run concurrently with any other call on @p m.
@@ -2172,9 +2248,24 @@ typedef enum cvm_measure {
                                              power cell vanished (CVM_OPT_DUAL_TOPOLOGY) */
     CVM_MEASURE_DUAL_OPT_REMOVED_DEGREE = 48, /**< Steiner vertices removed by the degree
                                              repair (CVM_OPT_DUAL_TOPOLOGY) */
-    CVM_MEASURE_DUAL_OPT_REMOVED_MAXMIN = 49 /**< Steiner vertices removed by the kept removal
+    CVM_MEASURE_DUAL_OPT_REMOVED_MAXMIN = 49, /**< Steiner vertices removed by the kept removal
                                              trials of the max-min-angle phase
                                              (CVM_OPT_DUAL_MAXMIN_ROUNDS) */
+    /* ---- 700-799: 3D meshes (cvm_mesh_dim() 3); MIN_EDGE, MAX_EDGE and
+     * VANISHED_VERTICES apply to them too ---- */
+    CVM_MEASURE_VOLUME = 700,           /**< total volume of the tetrahedra */
+    CVM_MEASURE_MIN_DIHEDRAL_DEG = 701, /**< smallest dihedral angle, degrees */
+    CVM_MEASURE_MAX_DIHEDRAL_DEG = 702, /**< largest dihedral angle, degrees */
+    CVM_MEASURE_MAX_RADIUS_EDGE = 703,  /**< largest circumradius / shortest edge of a tetrahedron
+                                             (1/sqrt(2) ~ 0.612 for the regular one) */
+    CVM_MEASURE_CIRCUMCENTRE_OUTSIDE_PCT = 704, /**< % of tetrahedra whose circumcentre (power
+                                             vertex, with weights) lies outside them (computed in
+                                             floating point: a centre within rounding of a face
+                                             may count either way) */
+    CVM_MEASURE_CIRCUMCENTRE_OUTSIDE_BOUNDARY_PCT = 705, /**< the same over the tetrahedra with a
+                                             face on the boundary */
+    CVM_MEASURE_RECOVERY_STEINER = 706  /**< points the boundary recovery added (0 for a point
+                                             set's Delaunay tetrahedralisation) */
 } cvm_measure;
 
 /**

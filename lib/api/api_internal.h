@@ -41,9 +41,16 @@ typedef struct cvm__quality_cache {
     double pct_outside[2];         /* CVM_MEASURE_DUAL_OUTSIDE_PCT, _OUTSIDE_BOUNDARY_PCT */
 } cvm__quality_cache;
 
+/* The 3D input and mesh of a handle given points of dimension 3 (lib/api/mesh3*.c). */
+typedef struct cvm__mesh3 cvm__mesh3;
+
 struct cvm_mesh {
     cvm__ctx ctx;
     double opt[CVM__NOPTIONS];
+
+    /* NULL: a 2D handle (everything below). Else the handle is 3D: the 2D input
+     * and output below stay empty, and the calls dispatch to lib/api/mesh3.h. */
+    cvm__mesh3 *m3;
 
     /* input (owned copies) */
     cvm__pslg in;

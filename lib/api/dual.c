@@ -13,6 +13,7 @@
 #include "output_internal.h"
 #include "store.h"
 #include "dual/dual_internal.h"
+#include "api/mesh3.h"
 
 static cvm__ctx *alloc_ctx(const cvm_mesh *m)
 {
@@ -21,6 +22,12 @@ static cvm__ctx *alloc_ctx(const cvm_mesh *m)
 
 cvm_status cvm_mesh_set_weights(cvm_mesh *m, const double *w, size_t count)
 {
+    if (m && m->m3) {
+        CVM__BEGIN(m);
+        if (!w && count)
+            return cvm__error(&m->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "w is NULL");
+        return cvm__mesh3_set_weights(m, w, count);
+    }
     size_t v, nv;
     cvm_status s;
     if (!m)
@@ -48,6 +55,8 @@ cvm_status cvm_mesh_set_weights(cvm_mesh *m, const double *w, size_t count)
 
 cvm_status cvm_mesh_copy_weights(double *dst, size_t dst_len, const cvm_mesh *m)
 {
+    if (m && m->m3)
+        return CVM_E_UNSUPPORTED; /* a 2D call on a 3D mesh */
     size_t nv;
     cvm_status s;
     if (!m)
@@ -64,6 +73,8 @@ cvm_status cvm_mesh_copy_weights(double *dst, size_t dst_len, const cvm_mesh *m)
 
 cvm_status cvm_mesh_copy_dual_vertices(double *dst, size_t dst_len, const cvm_mesh *m)
 {
+    if (m && m->m3)
+        return CVM_E_UNSUPPORTED; /* a 2D call on a 3D mesh */
     int32_t t;
     size_t k = 0;
     cvm_status s;
@@ -78,6 +89,8 @@ cvm_status cvm_mesh_copy_dual_vertices(double *dst, size_t dst_len, const cvm_me
 
 cvm_status cvm_mesh_copy_dual_inside(int32_t *dst, size_t dst_len, const cvm_mesh *m)
 {
+    if (m && m->m3)
+        return CVM_E_UNSUPPORTED; /* a 2D call on a 3D mesh */
     int32_t t;
     size_t k = 0;
     cvm_status s;
@@ -92,6 +105,8 @@ cvm_status cvm_mesh_copy_dual_inside(int32_t *dst, size_t dst_len, const cvm_mes
 
 cvm_status cvm_mesh_copy_dual_areas(double *dst, size_t dst_len, const cvm_mesh *m)
 {
+    if (m && m->m3)
+        return CVM_E_UNSUPPORTED; /* a 2D call on a 3D mesh */
     size_t nv;
     cvm_status s;
     if (!m)
@@ -105,6 +120,8 @@ cvm_status cvm_mesh_copy_dual_areas(double *dst, size_t dst_len, const cvm_mesh 
 
 cvm_status cvm_mesh_copy_dual_edge_lengths(double *dst, size_t dst_len, const cvm_mesh *m)
 {
+    if (m && m->m3)
+        return CVM_E_UNSUPPORTED; /* a 2D call on a 3D mesh */
     size_t ne = 0, ns = 0;
     cvm__edges e;
     cvm_status s;

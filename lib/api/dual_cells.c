@@ -4,6 +4,7 @@
 
 #include "output_internal.h"
 #include "store.h"
+#include "api/mesh3.h"
 
 /* Fresh offsets of m's cells (nv + 1 entries). */
 static cvm_status offsets(cvm__ctx *ctx, const cvm_mesh *m, int32_t **out)
@@ -23,6 +24,8 @@ static cvm_status offsets(cvm__ctx *ctx, const cvm_mesh *m, int32_t **out)
 
 cvm_status cvm_mesh_copy_dual_cell_offsets(cvm_index *dst, size_t dst_len, const cvm_mesh *m)
 {
+    if (m && m->m3)
+        return CVM_E_UNSUPPORTED; /* a 2D call on a 3D mesh */
     cvm__ctx *ctx;
     int32_t *off;
     size_t nv;
@@ -46,6 +49,8 @@ cvm_status cvm_mesh_copy_dual_cell_offsets(cvm_index *dst, size_t dst_len, const
 
 cvm_status cvm_mesh_copy_dual_cells(double *dst, size_t dst_len, const cvm_mesh *m)
 {
+    if (m && m->m3)
+        return CVM_E_UNSUPPORTED; /* a 2D call on a 3D mesh */
     cvm__ctx *ctx;
     int32_t *off;
     cvm_status s;
@@ -145,11 +150,19 @@ static cvm_status write_dual_to_set(cvm_mesh *m, const char *path, cvm__write_se
 
 cvm_status cvm_mesh_write_dual(cvm_mesh *m, const char *path)
 {
+    if (m && m->m3) {
+        CVM__BEGIN(m);
+        return cvm__mesh3_unsupported(m, "cvm_mesh_write_dual");
+    }
     return cvm__mesh_write_now(m, path, write_dual_to_set);
 }
 
 cvm_status cvm_mesh_stage_write_dual(cvm_mesh *m, const char *path)
 {
+    if (m && m->m3) {
+        CVM__BEGIN(m);
+        return cvm__mesh3_unsupported(m, "cvm_mesh_stage_write_dual");
+    }
     if (!m)
         return CVM_E_NULL_ARG;
     CVM__BEGIN(m);

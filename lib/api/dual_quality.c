@@ -5,10 +5,13 @@
 
 #include "output_internal.h"
 #include "store.h"
+#include "api/mesh3.h"
 
 cvm_status cvm_mesh_copy_dual_quality(double *dst, size_t dst_len, const cvm_mesh *m,
                                       cvm_histogram which)
 {
+    if (m && m->m3)
+        return CVM_E_UNSUPPORTED; /* a 2D call on a 3D mesh */
     cvm__ctx *ctx;
     size_t nt = 0, ne = 0, ns = 0, need;
     int w = (int)which - (int)CVM_HIST_Q1 + 1;

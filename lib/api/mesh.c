@@ -3,6 +3,7 @@
 #include <string.h>
 
 #include "api_internal.h"
+#include "api/mesh3.h"
 #include "store.h"
 
 static cvm_status create(cvm_mesh **out, cvm__ctx *proto)
@@ -54,6 +55,7 @@ void cvm_mesh_free(cvm_mesh *m)
     if (!m)
         return;
     cvm__write_set_discard(&m->staged);
+    cvm__mesh3_free(m);
     cvm__pslg_free(&m->ctx, &m->in);
     cvm__store_destroy(m);
     cvm__free(&m->ctx, m->input_map);
@@ -140,16 +142,16 @@ cvm_status cvm_mesh_set_points(cvm_mesh *m, const double *coords, size_t count, 
         return s;
     if (dim != 2 && dim != 3)
         return cvm__error(&m->ctx, CVM_E_ARGUMENT, CVM_ENT_NONE, -1,
-                          "dim must be 2 (or 3 in a later version), got %d", dim);
+                          "dim must be 2 or 3, got %d", dim);
     if (dim == 3)
-        return cvm__error(&m->ctx, CVM_E_UNSUPPORTED, CVM_ENT_NONE, -1,
-                          "3D point sets are not supported yet: the 3D kernel is planned");
+        return cvm__mesh3_set_points(m, coords, count);
     if (count > (size_t)INT32_MAX / 4)
         return cvm__error(&m->ctx, CVM_E_TOO_LARGE, CVM_ENT_INPUT_POINT, -1,
                           "%lu points exceed the limit of %ld", (unsigned long)count,
                           (long)(INT32_MAX / 4));
     if ((s = copy_finite(m, &p, coords, count, 2, CVM_ENT_INPUT_POINT, "point")))
         return s;
+    cvm__mesh3_free(m); /* a 3D handle given 2D points is 2D again */
     cvm__free(&m->ctx, m->in.xy);
     cvm__free(&m->ctx, m->in.pmark);
     cvm__free(&m->ctx, m->in.pattr);
@@ -165,6 +167,10 @@ cvm_status cvm_mesh_set_points(cvm_mesh *m, const double *coords, size_t count, 
 
 cvm_status cvm_mesh_set_point_markers(cvm_mesh *m, const int32_t *markers, size_t count)
 {
+    if (m && m->m3) {
+        CVM__BEGIN(m);
+        return cvm__mesh3_unsupported(m, "cvm_mesh_set_point_markers");
+    }
     int32_t *p;
     if (!m)
         return CVM_E_NULL_ARG;
@@ -193,6 +199,10 @@ cvm_status cvm_mesh_set_point_markers(cvm_mesh *m, const int32_t *markers, size_
 cvm_status cvm_mesh_set_point_attributes(cvm_mesh *m, const double *attrs, size_t count,
                                          size_t nattr)
 {
+    if (m && m->m3) {
+        CVM__BEGIN(m);
+        return cvm__mesh3_unsupported(m, "cvm_mesh_set_point_attributes");
+    }
     double *p = NULL;
     cvm_status s;
     if (!m)
@@ -221,6 +231,10 @@ cvm_status cvm_mesh_set_point_attributes(cvm_mesh *m, const double *attrs, size_
 
 cvm_status cvm_mesh_set_segments(cvm_mesh *m, const cvm_index *segs, size_t count)
 {
+    if (m && m->m3) {
+        CVM__BEGIN(m);
+        return cvm__mesh3_unsupported(m, "cvm_mesh_set_segments");
+    }
     int32_t *p;
     cvm_status s;
     if ((s = cvm__mesh_begin_set(m, segs, count, "segs")))
@@ -246,6 +260,10 @@ cvm_status cvm_mesh_set_segments(cvm_mesh *m, const cvm_index *segs, size_t coun
 
 cvm_status cvm_mesh_set_segment_markers(cvm_mesh *m, const int32_t *markers, size_t count)
 {
+    if (m && m->m3) {
+        CVM__BEGIN(m);
+        return cvm__mesh3_unsupported(m, "cvm_mesh_set_segment_markers");
+    }
     int32_t *p;
     if (!m)
         return CVM_E_NULL_ARG;
@@ -273,6 +291,10 @@ cvm_status cvm_mesh_set_segment_markers(cvm_mesh *m, const int32_t *markers, siz
 
 cvm_status cvm_mesh_set_holes(cvm_mesh *m, const double *xy, size_t count)
 {
+    if (m && m->m3) {
+        CVM__BEGIN(m);
+        return cvm__mesh3_unsupported(m, "cvm_mesh_set_holes");
+    }
     double *p = NULL;
     cvm_status s;
     if ((s = cvm__mesh_begin_set(m, xy, count, "xy")))
@@ -289,6 +311,10 @@ cvm_status cvm_mesh_set_holes(cvm_mesh *m, const double *xy, size_t count)
 
 cvm_status cvm_mesh_set_regions(cvm_mesh *m, const double *r, size_t count)
 {
+    if (m && m->m3) {
+        CVM__BEGIN(m);
+        return cvm__mesh3_unsupported(m, "cvm_mesh_set_regions");
+    }
     double *p = NULL;
     cvm_status s;
     if ((s = cvm__mesh_begin_set(m, r, count, "r")))
@@ -312,12 +338,20 @@ cvm_status cvm_mesh_read(cvm_mesh *m, const char *path)
     CVM__BEGIN(m);
     if (!path)
         return cvm__error(&m->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "path is NULL");
-    if (cvm__format_of(path) == CVM__FMT_VTU)
+    if (cvm__path_has_ext(path, ".off") || cvm__path_has_ext(path, ".stl") ||
+        cvm__path_has_ext(path, ".smesh") ||
+        ((cvm__path_has_ext(path, ".poly") || cvm__path_has_ext(path, ".node")) &&
+         cvm__file_dimension(path) == 3))
+        return cvm__mesh3_read(m, path); /* lib/api/mesh3.c */
+    if (cvm__format_of(path) == CVM__FMT_VTU) {
+        cvm__mesh3_free(m);
         return cvm__mesh_read_vtu(m, path); /* lib/api/mesh_read_vtu.c */
+    }
     memset(&p, 0, sizeof p);
     s = cvm__read_file(&m->ctx, path, &p);
     if (s)
         return s;
+    cvm__mesh3_free(m);
     cvm__pslg_free(&m->ctx, &m->in);
     m->in = p;
     cvm__mesh_drop_output(m);

@@ -4,6 +4,7 @@
 #include "output_internal.h"
 #include "store.h"
 #include "geom/measure.h"
+#include "api/mesh3.h"
 
 void cvm__mesh_out_free(cvm_mesh *m, cvm__mesh_out *mo)
 {
@@ -118,6 +119,8 @@ static cvm_status write_to_set(cvm_mesh *m, const char *path, cvm__write_set *ws
     cvm_status s;
     if (!path)
         return cvm__error(&m->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "path is NULL");
+    if (m->m3)
+        return cvm__mesh3_write_to_set(m, path, ws); /* lib/api/mesh3_out.c */
     if (!m->triangulated)
         return cvm__error(&m->ctx, CVM_E_STATE, CVM_ENT_NONE, -1,
                           "nothing to write: call cvm_mesh_triangulate() first");

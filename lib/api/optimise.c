@@ -6,6 +6,7 @@
 #include "store.h"
 #include "dual/dual_internal.h"
 #include "sizing_fields.h"
+#include "api/mesh3.h"
 
 enum { REP_SWEEPS, REP_BEFORE, REP_AFTER, REP_MOVES, REP_FLIPS, REP_FIXES, REP_SECONDS,
        REP_REMOVED_VANISHED, REP_REMOVED_DEGREE, REP_REMOVED_MAXMIN };
@@ -77,6 +78,10 @@ static cvm_status new_vertex_data(cvm_mesh *m, const int32_t *vmap, size_t nv0)
 
 cvm_status cvm_mesh_optimise_dual(cvm_mesh *m, const cvm_sizing *sizing)
 {
+    if (m && m->m3) {
+        CVM__BEGIN(m);
+        return cvm__mesh3_unsupported(m, "cvm_mesh_optimise_dual");
+    }
     cvm__dual_opt_params p;
     cvm__dual_opt_report rep;
     size_payload sp;
@@ -196,6 +201,8 @@ static cvm_status merge_inputs(cvm__ctx *ctx, const cvm_mesh *m, double **vsize,
 
 cvm_status cvm_mesh_copy_dual_merge_groups(cvm_index *dst, size_t dst_len, const cvm_mesh *m)
 {
+    if (m && m->m3)
+        return CVM_E_UNSUPPORTED; /* a 2D call on a 3D mesh */
     cvm__ctx *ctx;
     const cvm__tri2 *T;
     double *vsize, *V;

@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "output_internal.h"
+#include "api/mesh3.h"
 #include "store.h"
 
 /* The allocator of a const handle: allocation does not change the handle. */
@@ -25,6 +26,8 @@ static size_t n_vertices(const cvm_mesh *m)
 
 cvm_status cvm_mesh_count(size_t *out, const cvm_mesh *m, cvm_entity kind)
 {
+    if (out && m && m->m3)
+        return cvm__mesh3_count(out, m, kind);
     size_t ne = 0, ns = 0;
     if (!out || !m)
         return CVM_E_NULL_ARG;
@@ -50,6 +53,8 @@ cvm_status cvm_mesh_count(size_t *out, const cvm_mesh *m, cvm_entity kind)
 
 cvm_status cvm_mesh_copy_points(double *dst, size_t dst_len, const cvm_mesh *m)
 {
+    if (m && m->m3)
+        return CVM_E_UNSUPPORTED; /* a 2D call on a 3D mesh */
     size_t nv;
     cvm_status s;
     if (!m)
@@ -95,6 +100,8 @@ static cvm_status copy_edges(cvm_index *dst, size_t dst_len, const cvm_mesh *m, 
 
 cvm_status cvm_mesh_copy_cells(cvm_index *dst, size_t dst_len, const cvm_mesh *m, cvm_entity kind)
 {
+    if (m && m->m3)
+        return cvm__mesh3_copy_cells(dst, dst_len, m, kind);
     if (!m)
         return CVM_E_NULL_ARG;
     switch (kind) {
@@ -107,6 +114,8 @@ cvm_status cvm_mesh_copy_cells(cvm_index *dst, size_t dst_len, const cvm_mesh *m
 
 cvm_status cvm_mesh_copy_neighbors(cvm_index *dst, size_t dst_len, const cvm_mesh *m)
 {
+    if (m && m->m3)
+        return CVM_E_UNSUPPORTED; /* a 2D call on a 3D mesh */
     int32_t *map;
     size_t t, k = 0;
     int j;
@@ -149,6 +158,8 @@ static cvm_status segment_markers(int32_t *dst, size_t dst_len, const cvm_mesh *
 
 cvm_status cvm_mesh_copy_markers(int32_t *dst, size_t dst_len, const cvm_mesh *m, cvm_entity kind)
 {
+    if (m && m->m3)
+        return CVM_E_UNSUPPORTED; /* a 2D call on a 3D mesh */
     size_t nv;
     cvm_status s;
     if (!m)
@@ -169,6 +180,8 @@ cvm_status cvm_mesh_copy_markers(int32_t *dst, size_t dst_len, const cvm_mesh *m
 
 cvm_status cvm_mesh_copy_triangle_attributes(double *dst, size_t dst_len, const cvm_mesh *m)
 {
+    if (m && m->m3)
+        return CVM_E_UNSUPPORTED; /* a 2D call on a 3D mesh */
     const double *ta;
     size_t k = 0;
     int32_t t;
@@ -186,6 +199,8 @@ cvm_status cvm_mesh_copy_triangle_attributes(double *dst, size_t dst_len, const 
 cvm_status cvm_mesh_copy_point_attributes(double *dst, size_t dst_len, size_t *nattr_out,
                                           const cvm_mesh *m)
 {
+    if (m && m->m3)
+        return CVM_E_UNSUPPORTED; /* a 2D call on a 3D mesh */
     size_t nv, na;
     cvm_status s;
     if (!m || !nattr_out)
@@ -202,6 +217,8 @@ cvm_status cvm_mesh_copy_point_attributes(double *dst, size_t dst_len, size_t *n
 
 cvm_status cvm_mesh_copy_input_map(cvm_index *dst, size_t dst_len, const cvm_mesh *m)
 {
+    if (m && m->m3)
+        return CVM_E_UNSUPPORTED; /* a 2D call on a 3D mesh */
     cvm_status s;
     if (!m)
         return CVM_E_NULL_ARG;
@@ -216,6 +233,8 @@ cvm_status cvm_mesh_copy_input_map(cvm_index *dst, size_t dst_len, const cvm_mes
 
 cvm_status cvm_mesh_view_points(const double **ptr_out, size_t *count_out, const cvm_mesh *m)
 {
+    if (m && m->m3)
+        return CVM_E_UNSUPPORTED; /* a 2D call on a 3D mesh */
     if (!ptr_out || !count_out || !m)
         return CVM_E_NULL_ARG;
     *count_out = n_vertices(m);

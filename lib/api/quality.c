@@ -12,6 +12,7 @@
 
 #include "output_internal.h"
 #include "store.h"
+#include "api/mesh3.h"
 
 #define NBIN_ANGLE CVM__NBIN_ANGLE
 #define NBIN_DEGREE CVM__NBIN_DEGREE
@@ -56,6 +57,10 @@ static cvm_status need_triangles(cvm_mesh *m)
 
 cvm_status cvm_mesh_get_measure(double *out, cvm_mesh *m, cvm_measure which)
 {
+    if (out && m && m->m3) {
+        CVM__BEGIN_READ(m);
+        return cvm__mesh3_measure(out, m, which);
+    }
     const cvm__tri_quality *q;
     const double *hist;
     size_t n_int;
@@ -111,6 +116,10 @@ cvm_status cvm_mesh_get_measure(double *out, cvm_mesh *m, cvm_measure which)
 
 cvm_status cvm_mesh_copy_histogram(double *dst, size_t dst_len, cvm_mesh *m, cvm_histogram which)
 {
+    if (m && m->m3) {
+        CVM__BEGIN(m);
+        return cvm__mesh3_unsupported(m, "cvm_mesh_copy_histogram");
+    }
     const double *hist;
     size_t need, n_int;
     cvm_status s;

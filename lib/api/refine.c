@@ -5,6 +5,7 @@
 #include "store.h"
 #include "refine/refine_internal.h"
 #include "sizing_fields.h"
+#include "api/mesh3.h"
 
 enum { REP_STEINER, REP_UNMET_ANGLE, REP_UNMET_SIZE, REP_SMALL_ANGLE, REP_REQUESTED, REP_MET };
 
@@ -214,6 +215,10 @@ static cvm_status refine_run(cvm_mesh *m, const cvm_sizing *sizing, cvm_algorith
 
 cvm_status cvm_mesh_refine(cvm_mesh *m, const cvm_sizing *sizing, cvm_algorithm algo)
 {
+    if (m && m->m3) {
+        CVM__BEGIN(m);
+        return cvm__mesh3_unsupported(m, "cvm_mesh_refine");
+    }
     if (!m)
         return CVM_E_NULL_ARG;
     CVM__BEGIN(m);
@@ -241,6 +246,10 @@ cvm_status cvm_mesh_refine(cvm_mesh *m, const cvm_sizing *sizing, cvm_algorithm 
 
 cvm_status cvm_mesh_set_front_markers(cvm_mesh *m, const int32_t *markers, size_t count)
 {
+    if (m && m->m3) {
+        CVM__BEGIN(m);
+        return cvm__mesh3_unsupported(m, "cvm_mesh_set_front_markers");
+    }
     int32_t *copy = NULL;
     if (!m)
         return CVM_E_NULL_ARG;
@@ -274,6 +283,8 @@ cvm_status cvm__refine_measure(double *out, const cvm_mesh *m, cvm_measure which
 
 cvm_status cvm_mesh_copy_refine_unmet(double *dst, size_t dst_len, const cvm_mesh *m)
 {
+    if (m && m->m3)
+        return CVM_E_UNSUPPORTED; /* a 2D call on a 3D mesh */
     if (!m || (!dst && dst_len > 0))
         return CVM_E_NULL_ARG;
     if (dst_len < 3 * m->n_refine_unmet)
@@ -285,6 +296,8 @@ cvm_status cvm_mesh_copy_refine_unmet(double *dst, size_t dst_len, const cvm_mes
 
 cvm_status cvm_mesh_copy_layer_index(double *dst, size_t dst_len, const cvm_mesh *m)
 {
+    if (m && m->m3)
+        return CVM_E_UNSUPPORTED; /* a 2D call on a 3D mesh */
     size_t k = 0, nt;
     int32_t t;
     int have;

@@ -14,6 +14,23 @@ const char *cvm_version_string(void)
     return CVM__STR(CVM_VERSION_MAJOR) "." CVM__STR(CVM_VERSION_MINOR) "." CVM__STR(CVM_VERSION_PATCH);
 }
 
+#ifdef CVM_WITH_TETGEN
+#define CVM__BUILD_TETGEN "; TetGen 1.5 boundary recovery (AGPL-3+ build)"
+#else
+#define CVM__BUILD_TETGEN "; no TetGen (BSD-3-Clause build)"
+#endif
+#ifdef _OPENMP
+#define CVM__BUILD_OPENMP "; OpenMP"
+#else
+#define CVM__BUILD_OPENMP "; no OpenMP"
+#endif
+
+const char *cvm_build_string(void)
+{
+    return "cvmesh " CVM__STR(CVM_VERSION_MAJOR) "." CVM__STR(CVM_VERSION_MINOR) "." CVM__STR(
+        CVM_VERSION_PATCH) CVM__BUILD_TETGEN CVM__BUILD_OPENMP;
+}
+
 const char *cvm_status_str(cvm_status s)
 {
     switch (s) {

@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "api_internal.h"
+#include "api/mesh3.h"
 #include "store.h"
 
 /* Number naming input point i in messages (the file's, or i; i may be out of range). */
@@ -74,6 +75,10 @@ static cvm_status triangulate(cvm_mesh *m)
 
 cvm_status cvm_mesh_triangulate(cvm_mesh *m)
 {
+    if (m && m->m3) {
+        CVM__BEGIN(m);
+        return cvm__mesh3_triangulate(m);
+    }
     cvm_status s;
     if (!m)
         return CVM_E_NULL_ARG;
@@ -95,6 +100,10 @@ cvm_status cvm_mesh_triangulate(cvm_mesh *m)
 cvm_status cvm_mesh_insert_points(cvm_index *ids_out, cvm_mesh *m, const double *xy, size_t count,
                                   double min_dist)
 {
+    if (m && m->m3) {
+        CVM__BEGIN(m);
+        return cvm__mesh3_unsupported(m, "cvm_mesh_insert_points");
+    }
     size_t i;
     cvm_status s = CVM_OK;
     if (!m)
@@ -158,6 +167,10 @@ cvm_status cvm_mesh_insert_points(cvm_index *ids_out, cvm_mesh *m, const double 
 
 cvm_status cvm_mesh_check(cvm_mesh *m)
 {
+    if (m && m->m3) {
+        CVM__BEGIN(m);
+        return cvm__mesh3_check(m);
+    }
     int32_t t;
     int j;
     cvm_status s;

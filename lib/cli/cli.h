@@ -18,7 +18,8 @@
 enum {
     CLI_CMD_TRIANGULATE = 1u << 0,
     CLI_CMD_REFINE = 1u << 1,
-    CLI_CMD_OPTIMISE = 1u << 2
+    CLI_CMD_OPTIMISE = 1u << 2,
+    CLI_CMD_TETRAHEDRALIZE = 1u << 3
 };
 
 /* One flag that sets a library option (flags.c holds the one table). */
@@ -39,6 +40,50 @@ typedef struct cli_setting {
 
 #define CLI_MAX_SETTINGS 32
 
+/* ---- args.c: the flags every subcommand shares ---- */
+
+/* "--name V" or "--name=V": when argv[*i] is flag name, *val is its value (the
+ * next argument, consumed, or the text after '=') and the result is 1; 0 when
+ * argv[*i] is another flag; -1 after printing why when the value is missing. */
+int cli_take_value(int argc, char **argv, int *i, const char *name, const char **val);
+
+/* What a command writes and prints: -o/--output (OUT or "-": standard output,
+ * in --format), --svg, --dual, --quality[=short|full], --timings. */
+typedef struct cli_outputs {
+    const char *command;  /* the subcommand's name, for messages */
+    const char *out, *svg, *dual;
+    const char *format;   /* --format EXT for -o - (default vtu) */
+    int quality;          /* 0 none, 1 short, 2 full */
+    int timings;
+    int with_svg, with_dual;      /* the command takes --svg / --dual */
+    /* -o -: where the mesh is staged before it is copied to standard output */
+    char stdout_dir[4096], stdout_path[4200];
+    double t0, t_last;    /* --timings: start of the command and of the phase */
+} cli_outputs;
+
+/* If argv[*i] is one of the flags above, take it (with its value) and return
+ * 1; 0 when it is not; -1 after printing a usage error. */
+int cli_parse_outputs(cli_outputs *o, int argc, char **argv, int *i);
+/* After the argument loop: the file names end in what their flag writes
+ * (case-insensitive), "-o -" names a format that fits one stream. CLI_EXIT_OK,
+ * or CLI_EXIT_USAGE after printing why (name: the subcommand). */
+int cli_check_outputs(const char *name, const cli_outputs *o);
+/* The stream of the reports: standard error when the mesh goes to standard
+ * output, else standard output. */
+FILE *cli_report_stream(const cli_outputs *o);
+/* --timings: start the clock (cli_timing_begin), then print "PHASE: SECONDS"
+ * for the time since the previous mark (nothing without --timings). */
+void cli_timing_begin(cli_outputs *o);
+void cli_timing_mark(cli_outputs *o, const char *phase);
+/* The help lines of these flags (for a command with or without --svg/--dual). */
+void cli_print_output_help(FILE *f, int with_svg, int with_dual);
+/* A note on standard error when the command was asked for nothing to write or
+ * print: its input was still read and checked. */
+void cli_note_nothing_to_do(const char *name, const char *in, const cli_outputs *o);
+/* "%.17g" shortened to the fewest digits that read back as v (0.15, not
+ * 0.14999999999999999), into buf. */
+const char *cli_fmt_number(char *buf, size_t len, double v);
+
 /* The shared start of refine and optimise: a new mesh with the option
  * settings applied, cli_progress installed, and a sizing, uniform size when
  * size > 0. Returns
@@ -47,12 +92,12 @@ int cli_start(cvm_mesh **m, cvm_sizing **sz, const cli_setting *set, int nset, d
 
 /* The shared end of refine and optimise: s is the status of their main call on
  * m (input file in). An error fails (message printed); an incomplete status
- * prints a note and goes on. Then write out, svg and dual (each when not
- * NULL) as one set, print the quality report and report(stdout, m) when
- * quality, and free m and sz. Returns CLI_EXIT_OK or the exit status of the
+ * prints a note and goes on. Then write o's outputs as one set, print the
+ * quality report and report(stream, m) when o asks for quality, the timings
+ * "write" and "quality", and free m and sz. Returns CLI_EXIT_OK or the exit status of the
  * first failure or of an interruption. */
-int cli_finish(cvm_mesh *m, cvm_sizing *sz, const char *in, cvm_status s, const char *out,
-               const char *svg, const char *dual, int quality, void (*report)(FILE *, cvm_mesh *));
+int cli_finish(cvm_mesh *m, cvm_sizing *sz, const char *in, cvm_status s, cli_outputs *o,
+               void (*report)(FILE *, cvm_mesh *));
 
 /* The shared tail of a subcommand's argument loop, after its own flags:
  * argv[*i] is an option flag of cmd (recorded in set), or else the one input
@@ -88,13 +133,14 @@ int cli_apply_settings(cvm_mesh *m, const cli_setting *set, int nset);
 /* Print the option flags of cmd, one per line, for --help. */
 void cli_print_option_flags(FILE *f, unsigned cmd);
 
-/* Print the quality report of m (after triangulation) to f. Returns
- * CLI_EXIT_OK, or CLI_EXIT_FAIL after printing the library's error. */
-int cli_print_quality(FILE *f, cvm_mesh *m);
+/* Print the quality report of m (after triangulation) to f: counts and
+ * measures, and with full also the angle, degree and q1-q5 histograms.
+ * Returns CLI_EXIT_OK, or CLI_EXIT_FAIL after printing the library's error. */
+int cli_print_quality(FILE *f, cvm_mesh *m, int full);
 /* The power-dual part of the report (also printed by cli_print_quality):
- * containment, smallest dual edge, time-step proxy, q1-q5 summaries and
- * histograms. Returns CLI_EXIT_OK or CLI_EXIT_FAIL (error printed). */
-int cli_print_dual_quality(FILE *f, cvm_mesh *m);
+ * containment, smallest dual edge, time-step proxy, q1-q5 summaries, and with
+ * full their histograms. Returns CLI_EXIT_OK or CLI_EXIT_FAIL (error printed). */
+int cli_print_dual_quality(FILE *f, cvm_mesh *m, int full);
 
 /* 1 when m already holds triangles after cvm_mesh_read() (a .vtu input):
  * the command then skips cvm_mesh_triangulate(). */
@@ -133,13 +179,23 @@ int cli_progress(void *payload, cvm_stage stage, double fraction);
  * print "cvmesh: interrupted by SIGINT while PHASE; ..." and return
  * 128 + the signal number. */
 int cli_stop(cvm_mesh *m, cvm_sizing *sz);
-/* Stage out, svg (as mesh writes) and dual (each when not NULL), then commit
- * them together. Returns CLI_EXIT_OK; CLI_EXIT_FAIL after printing why (no
+/* Stage o's out, svg (as mesh writes) and dual (each when not NULL), then
+ * commit them together; "-o -" stages in a temporary folder and copies the
+ * file to standard output once all are committed. Returns CLI_EXIT_OK; CLI_EXIT_FAIL after printing why (no
  * file changed; m's staged writes are gone); or -1 when a signal arrived (call
  * cli_stop()). */
-int cli_write_outputs(cvm_mesh *m, const char *out, const char *svg, const char *dual);
+int cli_write_outputs(cvm_mesh *m, cli_outputs *o);
 /* Called once the outputs are committed (the message then says so). */
 void cli_outputs_committed(void);
+
+/* ---- progress.c: the progress line on standard error ---- */
+
+/* --progress (1) or --quiet (0); without either, on when stderr is a terminal. */
+void cli_progress_mode(int on);
+/* Redraw the line for stage at fraction (0..1; outside: no percentage). */
+void cli_progress_show(cvm_stage stage, double fraction);
+/* Erase the line, if one is shown (before any other output to stderr). */
+void cli_progress_clear(void);
 
 /* Subcommands: argv[0] is the subcommand's name. */
 int cli_triangulate(int argc, char **argv);
@@ -148,5 +204,7 @@ int cli_refine(int argc, char **argv);
 void cli_refine_help(FILE *f);
 int cli_optimise(int argc, char **argv);
 void cli_optimise_help(FILE *f);
+int cli_tetrahedralize(int argc, char **argv);
+void cli_tetrahedralize_help(FILE *f);
 
 #endif

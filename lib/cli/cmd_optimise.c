@@ -14,8 +14,9 @@
 #define OPT_BGRAD_DEFAULT 0.3
 
 typedef struct oargs {
-    const char *in, *out, *dual;
-    int quality, refine;
+    const char *in;
+    cli_outputs o;
+    int refine;
     cvm_algorithm algo;
     double size; /* 0: none */
     double bgrad; /* --boundary-grading G (0: off; < 0: not given, OPT_BGRAD_DEFAULT) */
@@ -43,13 +44,10 @@ void cli_optimise_help(FILE *f)
             "                             from each boundary edge e of length l(e), so a finely\n"
             "                             spaced wall grows at slope G (default 0.3: larger\n"
             "                             smallest angles after the optimisation; 0: off)\n"
-            "  -o, --output OUT           write the mesh (.vtu, .msh, .svg, .node; .node files\n"
-            "                             carry each vertex's weight as its first attribute)\n"
-            "  --dual DUAL.vtu            write the power (Voronoi) cells as VTK polygons with\n"
-            "                             vertex id, area and weight\n"
-            "  --quality                  print the quality report (with the dual's q1-q5)\n"
-            "                             and the optimiser's report\n"
-            "  -h, --help                 print this help\n");
+            "Outputs and reports (.node files carry each vertex's weight as their first\n"
+            "attribute; --quality adds the optimiser's report; --timings: read, triangulate,\n"
+            "refine, optimise, write, quality):\n");
+    cli_print_output_help(f, 0, 1);
     cli_print_option_flags(f, CLI_CMD_OPTIMISE);
     fprintf(f, "\nStopped by --time-limit the mesh is still a valid regular triangulation and\n"
                "is written; the exit status is 0 and a note says so. --time-limit bounds the\n"
@@ -61,35 +59,32 @@ void cli_optimise_help(FILE *f)
                "and no file is written or changed unless the outputs were already complete.\n");
 }
 
+/* optimise's own flags that take a value: 1 taken, 0 not one, or
+ * CLI_EXIT_USAGE + 1 after printing why. */
 static int parse_value(oargs *a, int argc, char **argv, int *i)
 {
-    const char *s = argv[*i];
-    if (*i + 1 >= argc) {
-        fprintf(stderr, "cvmesh: %s needs a value\n", s);
-        return CLI_EXIT_USAGE;
-    }
-    ++*i;
-    if (strcmp(s, "--algo") == 0) {
+    const char *v;
+    int r;
+    if ((r = cli_take_value(argc, argv, i, "--algo", &v)) != 0) {
         a->refine = 1;
-        return cli_parse_algo("optimise", argv[*i], 0, &a->algo);
+        return r < 0 || cli_parse_algo("optimise", v, 0, &a->algo) ? CLI_EXIT_USAGE + 1 : 1;
     }
-    if (strcmp(s, "--size") == 0) {
+    if ((r = cli_take_value(argc, argv, i, "--size", &v)) != 0) {
         a->refine = 1;
-        return cli_parse_positive(s, argv[*i], &a->size);
+        return r < 0 || cli_parse_positive("--size", v, &a->size) ? CLI_EXIT_USAGE + 1 : 1;
     }
-    if (strcmp(s, "--boundary-grading") == 0)
-        return cli_parse_nonnegative(s, argv[*i], &a->bgrad);
-    if (strcmp(s, "--dual") == 0)
-        a->dual = argv[*i];
-    else
-        a->out = argv[*i];
-    return CLI_EXIT_OK;
+    if ((r = cli_take_value(argc, argv, i, "--boundary-grading", &v)) != 0)
+        return r < 0 || cli_parse_nonnegative("--boundary-grading", v, &a->bgrad)
+                   ? CLI_EXIT_USAGE + 1 : 1;
+    return 0;
 }
 
 static int parse(oargs *a, int argc, char **argv)
 {
     int i, r;
     memset(a, 0, sizeof *a);
+    a->o.command = "optimise";
+    a->o.with_dual = 1;
     a->algo = CVM_ALGO_FRONTAL;
     a->bgrad = -1;
     for (i = 1; i < argc; i++) {
@@ -98,15 +93,14 @@ static int parse(oargs *a, int argc, char **argv)
             cli_optimise_help(stdout);
             return -1;
         }
-        if (strcmp(s, "--algo") == 0 || strcmp(s, "--size") == 0 || strcmp(s, "-o") == 0 ||
-            strcmp(s, "--output") == 0 || strcmp(s, "--dual") == 0 ||
-            strcmp(s, "--boundary-grading") == 0) {
-            if ((r = parse_value(a, argc, argv, &i)))
-                return r;
+        if ((r = parse_value(a, argc, argv, &i)) != 0) {
+            if (r > 1)
+                return r - 1;
             continue;
         }
-        if (strcmp(s, "--quality") == 0) {
-            a->quality = 1;
+        if ((r = cli_parse_outputs(&a->o, argc, argv, &i)) != 0) {
+            if (r < 0)
+                return CLI_EXIT_USAGE;
             continue;
         }
         if ((r = cli_parse_tail("optimise", CLI_CMD_OPTIMISE, argc, argv, &i, a->set, &a->nset,
@@ -120,7 +114,9 @@ static int parse(oargs *a, int argc, char **argv)
     }
     if (a->bgrad < 0)
         a->bgrad = a->size > 0 ? OPT_BGRAD_DEFAULT : 0;
-    return cli_need_input("optimise", a->in);
+    if (cli_need_input("optimise", a->in))
+        return CLI_EXIT_USAGE;
+    return cli_check_outputs("optimise", &a->o);
 }
 
 /* The dual report: compliance, merging, the optimiser's run. */
@@ -155,7 +151,7 @@ static void print_dual_report(FILE *f, cvm_mesh *m)
     }
 }
 
-static int run(const oargs *a)
+static int run(oargs *a)
 {
     cvm_mesh *m;
     cvm_sizing *sz = NULL;
@@ -165,6 +161,7 @@ static int run(const oargs *a)
     if ((rc = cli_start(&m, &sz, a->set, a->nset, a->size)))
         return rc;
     cli_budget_begin(&budget, m);
+    cli_timing_begin(&a->o);
     if (cvm_sizing_set_boundary_grading(sz, a->bgrad) != CVM_OK) {
         fprintf(stderr, "cvmesh: --boundary-grading: %s\n", cvm_sizing_errmsg(sz));
         cvm_sizing_free(sz);
@@ -174,11 +171,13 @@ static int run(const oargs *a)
     cli_phase("reading", a->in);
     if (cvm_mesh_read(m, a->in) != CVM_OK)
         return cli_fail(m, sz, NULL);
+    cli_timing_mark(&a->o, "read");
     cli_budget_apply(&budget, m);
     cli_phase("triangulating", a->in);
     if ((!cli_is_triangulated(m) && cvm_mesh_triangulate(m) != CVM_OK) || /* a .vtu is a mesh */
         cli_interrupted())
         return cli_fail(m, sz, a->in);
+    cli_timing_mark(&a->o, "triangulate");
     if (a->refine) {
         cli_budget_apply(&budget, m);
         cli_phase("refining", a->in);
@@ -187,11 +186,13 @@ static int run(const oargs *a)
             return cli_fail(m, sz, a->in);
         if (s != CVM_OK)
             fprintf(stderr, "cvmesh: note: %s: %s\n", a->in, cvm_mesh_errmsg(m));
+        cli_timing_mark(&a->o, "refine");
     }
     cli_budget_apply(&budget, m);
     cli_phase("optimising the dual of", a->in);
     s = cvm_mesh_optimise_dual(m, NULL);
-    return cli_finish(m, sz, a->in, s, a->out, NULL, a->dual, a->quality, print_dual_report);
+    cli_timing_mark(&a->o, "optimise");
+    return cli_finish(m, sz, a->in, s, &a->o, print_dual_report);
 }
 
 int cli_optimise(int argc, char **argv)

@@ -10,8 +10,8 @@
 #include "cli.h"
 
 typedef struct rargs {
-    const char *in, *out, *svg, *dual;
-    int quality;
+    const char *in;
+    cli_outputs o;
     cvm_algorithm algo;
     double size; /* 0: none */
     double auto_r, grading; /* --auto R (0: off), --grading G */
@@ -47,14 +47,9 @@ void cli_refine_help(FILE *f)
             "  --boundary-grading G       also cap the size by l(e) + G x distance from each\n"
             "                             boundary edge e of length l(e): fine input spacing\n"
             "                             grows into the interior at slope G (e.g. 0.3)\n"
-            "  -o, --output OUT           write the mesh (.vtu, .msh, .svg, .node)\n"
-            "  --svg PIC.svg              also draw the mesh, coloured by smallest angle\n"
-            "                             (by layer index for aflr)\n"
-            "  --dual DUAL.vtu            write the power (Voronoi) cells as VTK polygons with\n"
-            "                             vertex id, area and weight\n"
-            "  --quality                  print the quality report (with the dual's q1-q5) and\n"
-            "                             the refinement report\n"
-            "  -h, --help                 print this help\n");
+            "Outputs and reports (--timings: read, triangulate, refine, write, quality;\n"
+            "--quality adds the refinement report; --svg colours aflr meshes by layer):\n");
+    cli_print_output_help(f, 1, 1);
     cli_print_option_flags(f, CLI_CMD_REFINE);
     fprintf(f, "\nStopped by --max-steiner or --time-limit the mesh is still valid and written;\n"
                "the exit status is 0 and a note says what was left unmet. --time-limit bounds\n"
@@ -87,46 +82,35 @@ static int parse_fronts(rargs *a, const char *s)
     }
 }
 
+/* The flags of refine's own that take a value: 1 taken, 0 not one, or an
+ * exit status + 1 (so 0 stays "not one"): CLI_EXIT_USAGE + 1 after printing why. */
 static int parse_value(rargs *a, int argc, char **argv, int *i)
 {
-    const char *s = argv[*i];
-    if (*i + 1 >= argc) {
-        fprintf(stderr, "cvmesh: %s needs a value\n", s);
-        return CLI_EXIT_USAGE;
-    }
-    ++*i;
-    if (strcmp(s, "--algo") == 0)
-        return cli_parse_algo("refine", argv[*i], 1, &a->algo);
-    if (strcmp(s, "--size") == 0 || strcmp(s, "--auto") == 0 || strcmp(s, "--grading") == 0 ||
-        strcmp(s, "--boundary-grading") == 0) {
-        double v;
-        if (cli_parse_positive(s, argv[*i], &v))
-            return CLI_EXIT_USAGE;
-        if (s[2] == 's')
-            a->size = v;
-        else if (s[2] == 'a')
-            a->auto_r = v;
-        else if (s[2] == 'b')
-            a->bgrad = v;
-        else
-            a->grading = v;
-        return CLI_EXIT_OK;
-    }
-    if (strcmp(s, "--fronts") == 0)
-        return parse_fronts(a, argv[*i]);
-    if (strcmp(s, "--svg") == 0)
-        a->svg = argv[*i];
-    else if (strcmp(s, "--dual") == 0)
-        a->dual = argv[*i];
-    else
-        a->out = argv[*i];
-    return CLI_EXIT_OK;
+    static const char *const sizes[] = {"--size", "--auto", "--grading", "--boundary-grading"};
+    double *dst[4];
+    const char *v;
+    size_t k;
+    int r;
+    dst[0] = &a->size;
+    dst[1] = &a->auto_r;
+    dst[2] = &a->grading;
+    dst[3] = &a->bgrad;
+    if ((r = cli_take_value(argc, argv, i, "--algo", &v)) != 0)
+        return r < 0 || cli_parse_algo("refine", v, 1, &a->algo) ? CLI_EXIT_USAGE + 1 : 1;
+    for (k = 0; k < 4; k++)
+        if ((r = cli_take_value(argc, argv, i, sizes[k], &v)) != 0)
+            return r < 0 || cli_parse_positive(sizes[k], v, dst[k]) ? CLI_EXIT_USAGE + 1 : 1;
+    if ((r = cli_take_value(argc, argv, i, "--fronts", &v)) != 0)
+        return r < 0 || parse_fronts(a, v) ? CLI_EXIT_USAGE + 1 : 1;
+    return 0;
 }
 
 static int parse(rargs *a, int argc, char **argv)
 {
     int i, r;
     memset(a, 0, sizeof *a);
+    a->o.command = "refine";
+    a->o.with_svg = a->o.with_dual = 1;
     a->algo = CVM_ALGO_DELAUNAY;
     a->grading = 0; /* 0: not given (4 with --auto) */
     for (i = 1; i < argc; i++) {
@@ -135,16 +119,14 @@ static int parse(rargs *a, int argc, char **argv)
             cli_refine_help(stdout);
             return -1;
         }
-        if (strcmp(s, "--algo") == 0 || strcmp(s, "--size") == 0 || strcmp(s, "--auto") == 0 ||
-            strcmp(s, "--grading") == 0 || strcmp(s, "--boundary-grading") == 0 ||
-            strcmp(s, "-o") == 0 || strcmp(s, "--output") == 0 ||
-            strcmp(s, "--svg") == 0 || strcmp(s, "--dual") == 0 || strcmp(s, "--fronts") == 0) {
-            if ((r = parse_value(a, argc, argv, &i)))
-                return r;
+        if ((r = parse_value(a, argc, argv, &i)) != 0) {
+            if (r > 1)
+                return r - 1;
             continue;
         }
-        if (strcmp(s, "--quality") == 0) {
-            a->quality = 1;
+        if ((r = cli_parse_outputs(&a->o, argc, argv, &i)) != 0) {
+            if (r < 0)
+                return CLI_EXIT_USAGE;
             continue;
         }
         if ((r = cli_parse_tail("refine", CLI_CMD_REFINE, argc, argv, &i, a->set, &a->nset, &a->in)))
@@ -156,7 +138,9 @@ static int parse(rargs *a, int argc, char **argv)
     }
     if (a->grading == 0)
         a->grading = 4;
-    return cli_need_input("refine", a->in);
+    if (cli_need_input("refine", a->in))
+        return CLI_EXIT_USAGE;
+    return cli_check_outputs("refine", &a->o);
 }
 
 /* The refinement report: Steiner points and what was left unmet. */
@@ -192,7 +176,7 @@ static void print_report(FILE *f, cvm_mesh *m)
     free(all);
 }
 
-static int run(const rargs *a)
+static int run(rargs *a)
 {
     cvm_mesh *m;
     cvm_sizing *sz = NULL;
@@ -202,6 +186,7 @@ static int run(const rargs *a)
     if ((rc = cli_start(&m, &sz, a->set, a->nset, a->size)))
         return rc;
     cli_budget_begin(&budget, m);
+    cli_timing_begin(&a->o);
     if ((a->auto_r > 0 && cvm_sizing_set_automatic(sz, a->auto_r, a->grading) != CVM_OK) ||
         cvm_sizing_set_boundary_grading(sz, a->bgrad) != CVM_OK) {
         fprintf(stderr, "cvmesh: sizing: %s\n", cvm_sizing_errmsg(sz));
@@ -212,6 +197,7 @@ static int run(const rargs *a)
     cli_phase("reading", a->in);
     if (cvm_mesh_read(m, a->in) != CVM_OK)
         return cli_fail(m, sz, NULL);
+    cli_timing_mark(&a->o, "read");
     cli_budget_apply(&budget, m);
     cli_phase("triangulating", a->in);
     if ((!cli_is_triangulated(m) && cvm_mesh_triangulate(m) != CVM_OK) || /* a .vtu is a mesh */
@@ -219,10 +205,12 @@ static int run(const rargs *a)
         return cli_fail(m, sz, a->in);
     if (a->nfronts && cvm_mesh_set_front_markers(m, a->fronts, a->nfronts) != CVM_OK)
         return cli_fail(m, sz, NULL);
+    cli_timing_mark(&a->o, "triangulate");
     cli_budget_apply(&budget, m);
     cli_phase("refining", a->in);
     s = cvm_mesh_refine(m, sz, a->algo);
-    return cli_finish(m, sz, a->in, s, a->out, a->svg, a->dual, a->quality, print_report);
+    cli_timing_mark(&a->o, "refine");
+    return cli_finish(m, sz, a->in, s, &a->o, print_report);
 }
 
 int cli_refine(int argc, char **argv)

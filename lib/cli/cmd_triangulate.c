@@ -8,8 +8,8 @@
 #include "cli.h"
 
 typedef struct args {
-    const char *in, *out, *svg, *dual;
-    int quality, timings;
+    const char *in;
+    cli_outputs o;
     cli_setting set[CLI_MAX_SETTINGS];
     int nset;
 } args;
@@ -32,17 +32,9 @@ void cli_triangulate_help(FILE *f)
             "A .vtu mesh (as cvmesh writes it, with its weights) is read as it is, to\n"
             "convert it, draw it, write its dual or report its quality.\n"
             "\n"
-            "  -o, --output OUT           write the mesh; the extension chooses the format:\n"
-            "                             .vtu (VTK XML), .msh (Gmsh 4.1), .svg (picture),\n"
-            "                             .node (OUT.node + .ele + .edge beside each other)\n"
-            "  --svg PIC.svg              also draw the mesh, coloured by smallest angle\n"
-            "  --dual DUAL.vtu            write the power (Voronoi) cells as VTK polygons with\n"
-            "                             vertex id, area and weight\n"
-            "  --quality                  print the quality report (with the dual's q1-q5)\n"
-            "  --timings                  print 'phase: seconds' for read, triangulate,\n"
-            "                             recover segments (from the first recovered segment,\n"
-            "                             with carving), write\n"
-            "  -h, --help                 print this help\n");
+            "Outputs and reports (--timings: read, triangulate, recover segments from the\n"
+            "first recovered segment with carving, write, quality):\n");
+    cli_print_output_help(f, 1, 1);
     cli_print_option_flags(f, CLI_CMD_TRIANGULATE);
     fprintf(f, "\nOn bad input the exit status is 1, one line names the file, line or item,\n"
                "and no output file is written. Command-line errors exit with 2.\n"
@@ -55,16 +47,12 @@ void cli_triangulate_help(FILE *f)
                "and no file is written or changed unless the outputs were already complete.\n");
 }
 
-static int has_ext(const char *path, const char *ext)
-{
-    size_t n = strlen(path), k = strlen(ext);
-    return n > k && strcmp(path + n - k, ext) == 0;
-}
-
 static int parse(args *a, int argc, char **argv)
 {
     int i;
     memset(a, 0, sizeof *a);
+    a->o.command = "triangulate";
+    a->o.with_svg = a->o.with_dual = 1;
     for (i = 1; i < argc; i++) {
         const char *s = argv[i];
         int r;
@@ -72,26 +60,9 @@ static int parse(args *a, int argc, char **argv)
             cli_triangulate_help(stdout);
             return -1;
         }
-        if (strcmp(s, "-o") == 0 || strcmp(s, "--output") == 0 || strcmp(s, "--svg") == 0 ||
-            strcmp(s, "--dual") == 0) {
-            if (i + 1 >= argc) {
-                fprintf(stderr, "cvmesh: %s needs a file name\n", s);
+        if ((r = cli_parse_outputs(&a->o, argc, argv, &i)) != 0) {
+            if (r < 0)
                 return CLI_EXIT_USAGE;
-            }
-            if (strcmp(s, "--svg") == 0)
-                a->svg = argv[++i];
-            else if (strcmp(s, "--dual") == 0)
-                a->dual = argv[++i];
-            else
-                a->out = argv[++i];
-            continue;
-        }
-        if (strcmp(s, "--quality") == 0) {
-            a->quality = 1;
-            continue;
-        }
-        if (strcmp(s, "--timings") == 0) {
-            a->timings = 1;
             continue;
         }
         if ((r = cli_parse_tail("triangulate", CLI_CMD_TRIANGULATE, argc, argv, &i, a->set,
@@ -100,20 +71,7 @@ static int parse(args *a, int argc, char **argv)
     }
     if (cli_need_input("triangulate", a->in))
         return CLI_EXIT_USAGE;
-    if (a->out && !has_ext(a->out, ".vtu") && !has_ext(a->out, ".msh") &&
-        !has_ext(a->out, ".node") && !has_ext(a->out, ".svg")) {
-        fprintf(stderr, "cvmesh: %s: unknown output format (use .vtu, .msh, .node or .svg)\n", a->out);
-        return CLI_EXIT_USAGE;
-    }
-    if (a->svg && !has_ext(a->svg, ".svg")) {
-        fprintf(stderr, "cvmesh: --svg %s: the file name must end in .svg\n", a->svg);
-        return CLI_EXIT_USAGE;
-    }
-    if (a->dual && !has_ext(a->dual, ".vtu")) {
-        fprintf(stderr, "cvmesh: --dual %s: the file name must end in .vtu\n", a->dual);
-        return CLI_EXIT_USAGE;
-    }
-    return CLI_EXIT_OK;
+    return cli_check_outputs("triangulate", &a->o);
 }
 
 static int on_progress(void *payload, cvm_stage stage, double fraction)
@@ -124,7 +82,7 @@ static int on_progress(void *payload, cvm_stage stage, double fraction)
     return cli_progress(NULL, stage, fraction);
 }
 
-static int run(const args *a)
+static int run(args *a)
 {
     cvm_mesh *m;
     cli_budget budget;
@@ -142,7 +100,7 @@ static int run(const args *a)
         return rc;
     }
     /* every 1 for --timings: the first recovery report splits the phases */
-    cvm_mesh_set_progress(m, on_progress, a->timings ? 1 : 256, &ph);
+    cvm_mesh_set_progress(m, on_progress, a->o.timings ? 1 : 256, &ph);
     t0 = cli_now();
     cli_budget_begin(&budget, m);
     cli_phase("reading", a->in);
@@ -157,27 +115,33 @@ static int run(const args *a)
     t_tri = cli_now();
     if (cvm_mesh_count(&ndup, m, CVM_ENT_DUPLICATE) == CVM_OK && ndup)
         fprintf(stderr, "cvmesh: note: %s: %lu duplicate points merged\n", a->in, (unsigned long)ndup);
-    if ((rc = cli_write_outputs(m, a->out, a->svg, a->dual)) < 0)
+    if ((rc = cli_write_outputs(m, &a->o)) < 0)
         return cli_stop(m, NULL);
     if (rc) {
         cvm_mesh_free(m);
         return rc;
     }
     t_write = cli_now();
+    if (a->o.timings) {
+        double split = ph.recover_start > 0 ? ph.recover_start : t_tri;
+        FILE *rep = cli_report_stream(&a->o);
+        fprintf(rep, "read: %.6f\n", t_read - t0);
+        fprintf(rep, "triangulate: %.6f\n", split - t_read);
+        fprintf(rep, "recover segments: %.6f\n", t_tri - split);
+        fprintf(rep, "write: %.6f\n", t_write - t_tri);
+    }
+    cli_timing_begin(&a->o);
     cli_phase("computing the quality report", NULL);
-    if (a->quality && (rc = cli_print_quality(stdout, m))) {
-        cvm_mesh_free(m);
-        return rc;
+    if (a->o.quality) {
+        if ((rc = cli_print_quality(cli_report_stream(&a->o), m, a->o.quality == 2))) {
+            cvm_mesh_free(m);
+            return rc;
+        }
+        cli_timing_mark(&a->o, "quality");
     }
     if (cli_interrupted())
         return cli_stop(m, NULL);
-    if (a->timings) {
-        double split = ph.recover_start > 0 ? ph.recover_start : t_tri;
-        printf("read: %.6f\n", t_read - t0);
-        printf("triangulate: %.6f\n", split - t_read);
-        printf("recover segments: %.6f\n", t_tri - split);
-        printf("write: %.6f\n", t_write - t_tri);
-    }
+    cli_note_nothing_to_do("triangulate", a->in, &a->o);
     cvm_mesh_free(m);
     return CLI_EXIT_OK;
 }

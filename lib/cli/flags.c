@@ -13,17 +13,18 @@
 #define TRI CLI_CMD_TRIANGULATE
 #define REF CLI_CMD_REFINE
 #define OPT CLI_CMD_OPTIMISE
+#define TET CLI_CMD_TETRAHEDRALIZE
 
 static const cli_option_flag k_flags[] = {
     {"--keep-hull", NULL, CVM_OPT_KEEP_CONVEX_HULL, 1, TRI | REF | OPT,
      "keep every triangle of the convex hull (holes are still removed)"},
     {"--no-split-intersections", NULL, CVM_OPT_SPLIT_INTERSECTIONS, 0, TRI | REF | OPT,
      "fail on crossing segments instead of splitting them"},
-    {"--reject-duplicates", NULL, CVM_OPT_REJECT_DUPLICATES, 1, TRI | REF | OPT,
+    {"--reject-duplicates", NULL, CVM_OPT_REJECT_DUPLICATES, 1, TRI | REF | OPT | TET,
      "fail on duplicate points instead of merging them"},
-    {"--seed", "S", CVM_OPT_SEED, 0, TRI | REF | OPT, "seed of the random insertion order"},
-    {"--threads", "N", CVM_OPT_THREADS, 0, TRI | REF | OPT, "threads for parallel stages (0: OpenMP default; only optimise is parallel in 0.1)"},
-    {"--time-limit", "SECONDS", CVM_OPT_TIME_LIMIT_S, 0, TRI | REF | OPT, "stop the whole command after this time (0: none)"},
+    {"--seed", "S", CVM_OPT_SEED, 0, TRI | REF | OPT | TET, "seed of the random insertion order"},
+    {"--threads", "N", CVM_OPT_THREADS, 0, TRI | REF | OPT | TET, "threads for parallel stages (0: OpenMP default; only optimise is parallel in 0.1)"},
+    {"--time-limit", "SECONDS", CVM_OPT_TIME_LIMIT_S, 0, TRI | REF | OPT | TET, "stop the whole command after this time (0: none)"},
     {"--min-angle", "DEG", CVM_OPT_MIN_ANGLE_DEG, 0, REF | OPT, "smallest angle wanted (default 30)"},
     {"--max-area", "A", CVM_OPT_MAX_AREA, 0, REF | OPT, "largest triangle area (0 or negative: none, as in a .poly region)"},
     {"--max-steiner", "N", CVM_OPT_MAX_STEINER, 0, REF | OPT, "stop after adding N points (0: no limit)"},
@@ -207,8 +208,9 @@ int cli_apply_settings(cvm_mesh *m, const cli_setting *set, int nset)
     int k;
     for (k = 0; k < nset; k++) {
         if (cvm_mesh_set_option(m, set[k].flag->key, set[k].value) != CVM_OK) {
-            fprintf(stderr, "cvmesh: %s %.17g: %s\n", set[k].flag->name, set[k].value,
-                    cvm_mesh_errmsg(m));
+            char v[32];
+            fprintf(stderr, "cvmesh: %s %s: %s\n", set[k].flag->name,
+                    cli_fmt_number(v, sizeof v, set[k].value), cvm_mesh_errmsg(m));
             return CLI_EXIT_USAGE;
         }
     }
@@ -226,8 +228,11 @@ void cli_print_option_flags(FILE *f, unsigned cmd)
         snprintf(left, sizeof left, "%s%s%s", k_flags[i].name, k_flags[i].arg ? " " : "",
                  k_flags[i].arg ? k_flags[i].arg : "");
         fprintf(f, "  %-26s %s", left, k_flags[i].help);
-        if (k_flags[i].arg && cvm_option_bounds(&b, k_flags[i].key) == CVM_OK)
-            fprintf(f, " [default %.17g, range %.17g..%.17g]", b.def, b.lo, b.hi);
+        if (k_flags[i].arg && cvm_option_bounds(&b, k_flags[i].key) == CVM_OK) {
+            char d[32], lo[32], hi[32];
+            fprintf(f, " [default %s, range %s..%s]", cli_fmt_number(d, sizeof d, b.def),
+                    cli_fmt_number(lo, sizeof lo, b.lo), cli_fmt_number(hi, sizeof hi, b.hi));
+        }
         fputc('\n', f);
     }
     fprintf(f, "  %-26s %s\n", WINDOW_FLAG " X0,Y0,X1,Y1",
@@ -308,6 +313,7 @@ int cli_fail(cvm_mesh *m, cvm_sizing *sz, const char *prefix)
     const char *msg;
     if (cli_interrupted())
         return cli_stop(m, sz);
+    cli_progress_clear();
     msg = cvm_mesh_errmsg(m);
     /* a message about an item read from the file starts with "FILE:LINE: " already */
     if (prefix && strncmp(msg, prefix, strlen(prefix)) == 0 && msg[strlen(prefix)] == ':')

@@ -20,6 +20,8 @@ static const cli_command k_commands[] = {
      cli_refine, cli_refine_help},
     {"optimise", "optimise a mesh's power (weighted Voronoi) dual: every triangle holds its dual vertex",
      cli_optimise, cli_optimise_help},
+    {"tetrahedralize", "Delaunay tetrahedralisation of 3D points, or the tetrahedral mesh of a closed surface",
+     cli_tetrahedralize, cli_tetrahedralize_help},
 };
 
 #define NCOMMANDS (sizeof k_commands / sizeof k_commands[0])
@@ -54,13 +56,16 @@ int main(int argc, char **argv)
         return CLI_EXIT_OK;
     }
     if (strcmp(argv[1], "--version") == 0 || strcmp(argv[1], "-V") == 0) {
-        printf("cvmesh %s\n", cvm_version_string());
+        printf("cvmesh %s\n%s\n", cvm_version_string(), cvm_build_string());
         return CLI_EXIT_OK;
     }
     for (i = 0; i < NCOMMANDS; i++)
         if (strcmp(argv[1], k_commands[i].name) == 0) {
+            int rc;
             cli_signals_install();
-            return k_commands[i].run(argc - 1, argv + 1);
+            rc = k_commands[i].run(argc - 1, argv + 1);
+            cli_progress_clear();
+            return rc;
         }
     fprintf(stderr, "cvmesh: unknown command '%s' (see cvmesh --help)\n", argv[1]);
     return CLI_EXIT_USAGE;

@@ -25,7 +25,7 @@ static void bars(FILE *f, const double *h, size_t n, const char *const *labels)
     }
 }
 
-int cli_print_quality(FILE *f, cvm_mesh *m)
+int cli_print_quality(FILE *f, cvm_mesh *m, int full)
 {
     static const char *const angle_labels[18] = {
         "0-10",    "10-20",   "20-30",   "30-40",   "40-50",   "50-60",
@@ -87,13 +87,15 @@ int cli_print_quality(FILE *f, cvm_mesh *m)
             fprintf(f, rows[i].fmt, v);
         fputc('\n', f);
     }
-    fprintf(f, "angle histogram (degrees: angles)\n");
-    bars(f, angle, 18, angle_labels);
-    fprintf(f, "degree histogram (degree: interior vertices)\n");
-    if (n_interior == 0)
-        fprintf(f, "  (no interior vertices)\n");
-    bars(f, degree, 16, degree_labels);
-    return cli_print_dual_quality(f, m);
+    if (full) {
+        fprintf(f, "angle histogram (degrees: angles)\n");
+        bars(f, angle, 18, angle_labels);
+        fprintf(f, "degree histogram (degree: interior vertices)\n");
+        if (n_interior == 0)
+            fprintf(f, "  (no interior vertices)\n");
+        bars(f, degree, 16, degree_labels);
+    }
+    return cli_print_dual_quality(f, m, full);
 }
 
 /* Labels "lo-hi" of nb bins of width w (the last open: "lo+"), into lab[nb][32]. */
@@ -108,7 +110,7 @@ static void bin_labels(char (*lab)[32], size_t nb, double w)
     }
 }
 
-int cli_print_dual_quality(FILE *f, cvm_mesh *m)
+int cli_print_dual_quality(FILE *f, cvm_mesh *m, int full)
 {
     static const struct {
         cvm_measure which;
@@ -156,7 +158,7 @@ int cli_print_dual_quality(FILE *f, cvm_mesh *m)
         fprintf(f, rows[i].fmt, v);
         fputc('\n', f);
     }
-    for (i = 0; i < sizeof hists / sizeof hists[0]; i++) {
+    for (i = 0; full && i < sizeof hists / sizeof hists[0]; i++) {
         if (cvm_mesh_copy_histogram(h, 20, m, hists[i].which) != CVM_OK) {
             fprintf(stderr, "cvmesh: quality: %s\n", cvm_mesh_errmsg(m));
             return CLI_EXIT_FAIL;
@@ -176,23 +178,29 @@ int cli_is_triangulated(const cvm_mesh *m)
     return cvm_mesh_count(&n, m, CVM_ENT_TRIANGLE) == CVM_OK && n > 0;
 }
 
-int cli_finish(cvm_mesh *m, cvm_sizing *sz, const char *in, cvm_status s, const char *out,
-               const char *svg, const char *dual, int quality, void (*report)(FILE *, cvm_mesh *))
+int cli_finish(cvm_mesh *m, cvm_sizing *sz, const char *in, cvm_status s, cli_outputs *o,
+               void (*report)(FILE *, cvm_mesh *))
 {
+    FILE *rep = cli_report_stream(o);
     int rc;
     if (cli_interrupted() || cvm_status_is_error(s))
         return cli_fail(m, sz, in);
+    cli_progress_clear();
     if (s != CVM_OK)
         fprintf(stderr, "cvmesh: note: %s: %s\n", in, cvm_mesh_errmsg(m));
-    if ((rc = cli_write_outputs(m, out, svg, dual)) < 0)
+    if ((rc = cli_write_outputs(m, o)) < 0)
         return cli_stop(m, sz);
-    if (!rc && quality) {
+    if (!rc && (o->out || o->svg || o->dual))
+        cli_timing_mark(o, "write");
+    if (!rc && o->quality) {
         cli_phase("computing the quality report", NULL);
-        if (!(rc = cli_print_quality(stdout, m)) && report)
-            report(stdout, m);
+        if (!(rc = cli_print_quality(rep, m, o->quality == 2)) && report)
+            report(rep, m);
+        cli_timing_mark(o, "quality");
     }
     if (cli_interrupted())
         return cli_stop(m, sz);
+    cli_note_nothing_to_do(o->command, in, o);
     cvm_sizing_free(sz);
     cvm_mesh_free(m);
     return rc;

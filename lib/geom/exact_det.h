@@ -30,5 +30,7 @@ double cvm__power2d_exact(const double *a, const double *b, const double *c, con
 double cvm__orient3d_exact(const double *a, const double *b, const double *c, const double *d);
 double cvm__insphere_exact(const double *a, const double *b, const double *c, const double *d,
                            const double *e);
+double cvm__power3d_exact(const double *a, const double *b, const double *c, const double *d,
+                          const double *e, double wa, double wb, double wc, double wd, double we);
 
 #endif

@@ -72,6 +72,39 @@ double cvm__orient3d(const double *a, const double *b, const double *c, const do
 double cvm__insphere(const double *a, const double *b, const double *c, const double *d,
                      const double *e);
 
+/* insphere with symbolic perturbation, the 3D twin of cvm__incircle_sos: when
+ * the exact determinant is 0, every point's lifted coordinate |x|^2 is raised
+ * by eps_i, eps_i >> eps_j whenever i > j (the LARGEST index is lifted most),
+ * and the sign is that of the first nonzero derivative in order of decreasing
+ * index:
+ *   dDet/dz_a = orient3d(e, b, c, d)   dDet/dz_b = orient3d(a, e, c, d)
+ *   dDet/dz_c = orient3d(a, b, e, d)   dDet/dz_d = orient3d(a, b, c, e)
+ *   dDet/dz_e = -orient3d(a, b, c, d)
+ * So among exactly cospherical points the one of largest index counts as
+ * outside the sphere of the others. Precondition: orient3d(a, b, c, d) > 0
+ * (for the "+1 means inside" reading), the five points pairwise distinct; then
+ * some derivative is nonzero. Returns +1 (e inside) or -1 (outside), never 0
+ * (-1 when all five are coplanar, outside the precondition). ia..ie are the
+ * points' indices, pairwise distinct. */
+int cvm__insphere_sos(const double *a, const double *b, const double *c, const double *d,
+                      const double *e, int64_t ia, int64_t ib, int64_t ic, int64_t id,
+                      int64_t ie);
+
+/* Power (weighted insphere) test, the lifted orient4d: weights in squared
+ * length units, power distance |x - p|^2 - w. > 0 when the weighted point
+ * (e, we) is in conflict with the orthosphere of (a,wa) .. (d,wd), provided
+ * orient3d(a, b, c, d) > 0, i.e. the lifted e' = (e, |e|^2 - we) lies below the
+ * hyperplane through the lifted a' .. d'. With all weights 0 it equals
+ * insphere's sign; 0 exactly on a tie. */
+double cvm__power3d(const double *a, const double *b, const double *c, const double *d,
+                    const double *e, double wa, double wb, double wc, double wd, double we);
+
+/* power3d with the perturbation of insphere_sos applied to the lifted
+ * coordinate z = |x|^2 - w (same derivatives, same order, same result). */
+int cvm__power3d_sos(const double *a, const double *b, const double *c, const double *d,
+                     const double *e, double wa, double wb, double wc, double wd, double we,
+                     int64_t ia, int64_t ib, int64_t ic, int64_t id, int64_t ie);
+
 /*
  * Exactness range: the sign is exact for all finite inputs as long as, within
  * one call, every nonzero coordinate is at least 2^-100 times the largest
@@ -87,11 +120,17 @@ double cvm__insphere(const double *a, const double *b, const double *c, const do
  * results, no filter): for the inline versions below. */
 double cvm__orient2d_adapt(const double *a, const double *b, const double *c);
 double cvm__incircle_adapt(const double *a, const double *b, const double *c, const double *d);
+/* The same for cvm__orient3d and cvm__insphere. */
+double cvm__orient3d_adapt(const double *a, const double *b, const double *c, const double *d);
+double cvm__insphere_adapt(const double *a, const double *b, const double *c, const double *d,
+                           const double *e);
 
 /* Filter bounds (Shewchuk 1997, epsilon = 2^-53). The floor added to each bound
  * sends results small enough to have underflowed to the exact stages. */
 static const double cvm__o2d_errbound_a = (3.0 + 16.0 * 0x1p-53) * 0x1p-53;
 static const double cvm__icc_errbound_a = (10.0 + 96.0 * 0x1p-53) * 0x1p-53;
+static const double cvm__o3d_errbound_a = (7.0 + 56.0 * 0x1p-53) * 0x1p-53;
+static const double cvm__isp_errbound_a = (16.0 + 224.0 * 0x1p-53) * 0x1p-53;
 static const double cvm__filter_floor = 0x1p-1020;
 
 /* cvm__orient2d with its filter inlined into the caller (hot loops). */
@@ -125,6 +164,61 @@ static inline double cvm__incircle_inline(const double *a, const double *b, cons
     if (fabs(det) > errbound)
         return det;
     return cvm__incircle_adapt(a, b, c, d);
+}
+
+/* cvm__orient3d with its filter inlined into the caller (hot loops). */
+static inline double cvm__orient3d_inline(const double *a, const double *b, const double *c,
+                                          const double *d)
+{
+    double adx = a[0] - d[0], bdx = b[0] - d[0], cdx = c[0] - d[0];
+    double ady = a[1] - d[1], bdy = b[1] - d[1], cdy = c[1] - d[1];
+    double adz = a[2] - d[2], bdz = b[2] - d[2], cdz = c[2] - d[2];
+    double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
+    double cdxady = cdx * ady, adxcdy = adx * cdy;
+    double adxbdy = adx * bdy, bdxady = bdx * ady;
+    double det = adz * (bdxcdy - cdxbdy) + bdz * (cdxady - adxcdy) + cdz * (adxbdy - bdxady);
+    double permanent = (fabs(bdxcdy) + fabs(cdxbdy)) * fabs(adz)
+                       + (fabs(cdxady) + fabs(adxcdy)) * fabs(bdz)
+                       + (fabs(adxbdy) + fabs(bdxady)) * fabs(cdz);
+    double errbound = cvm__o3d_errbound_a * permanent + cvm__filter_floor;
+    if (fabs(det) > errbound)
+        return det;
+    return cvm__orient3d_adapt(a, b, c, d);
+}
+
+/* cvm__insphere with its filter inlined into the caller (hot loops). */
+static inline double cvm__insphere_inline(const double *a, const double *b, const double *c,
+                                          const double *d, const double *e)
+{
+    double aex = a[0] - e[0], bex = b[0] - e[0], cex = c[0] - e[0], dex = d[0] - e[0];
+    double aey = a[1] - e[1], bey = b[1] - e[1], cey = c[1] - e[1], dey = d[1] - e[1];
+    double aez = a[2] - e[2], bez = b[2] - e[2], cez = c[2] - e[2], dez = d[2] - e[2];
+    double aexbey = aex * bey, bexaey = bex * aey, bexcey = bex * cey, cexbey = cex * bey;
+    double cexdey = cex * dey, dexcey = dex * cey, dexaey = dex * aey, aexdey = aex * dey;
+    double aexcey = aex * cey, cexaey = cex * aey, bexdey = bex * dey, dexbey = dex * bey;
+    double ab = aexbey - bexaey, bc = bexcey - cexbey, cd = cexdey - dexcey;
+    double da = dexaey - aexdey, ac = aexcey - cexaey, bd = bexdey - dexbey;
+    double abc = aez * bc - bez * ac + cez * ab;
+    double bcd = bez * cd - cez * bd + dez * bc;
+    double cda = cez * da + dez * ac + aez * cd;
+    double dab = dez * ab + aez * bd + bez * da;
+    double alift = aex * aex + aey * aey + aez * aez;
+    double blift = bex * bex + bey * bey + bez * bez;
+    double clift = cex * cex + cey * cey + cez * cez;
+    double dlift = dex * dex + dey * dey + dez * dez;
+    double det = (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
+    double aezp = fabs(aez), bezp = fabs(bez), cezp = fabs(cez), dezp = fabs(dez);
+    double abp = fabs(aexbey) + fabs(bexaey), bcp = fabs(bexcey) + fabs(cexbey);
+    double cdp = fabs(cexdey) + fabs(dexcey), dap = fabs(dexaey) + fabs(aexdey);
+    double acp = fabs(aexcey) + fabs(cexaey), bdp = fabs(bexdey) + fabs(dexbey);
+    double permanent = (aezp * bcp + bezp * acp + cezp * abp) * dlift
+                       + (dezp * abp + aezp * bdp + bezp * dap) * clift
+                       + (cezp * dap + dezp * acp + aezp * cdp) * blift
+                       + (bezp * cdp + cezp * bdp + dezp * bcp) * alift;
+    double errbound = cvm__isp_errbound_a * permanent + cvm__filter_floor;
+    if (fabs(det) > errbound)
+        return det;
+    return cvm__insphere_adapt(a, b, c, d, e);
 }
 
 /* Constructions: plain doubles, possibly inexact; every later decision about

@@ -5,8 +5,7 @@
 #include "geom/expansion.h"
 #include "geom/geom_internal.h"
 
-/* Shewchuk's isperrboundA and isperrboundB. */
-static const double isp_errbound_a = (16.0 + 224.0 * CVM__EPS) * CVM__EPS;
+/* Shewchuk's isperrboundB (A is cvm__isp_errbound_a in geom_internal.h). */
 static const double isp_errbound_b = (5.0 + 72.0 * CVM__EPS) * CVM__EPS;
 
 /*
@@ -102,8 +101,8 @@ static double insphere_stages(const double *pa, const double *pb, const double *
     return det; /* every difference was exact, so B was the exact value */
 }
 
-static CVM__NOINLINE double insphere_adapt(const double *a, const double *b, const double *c,
-                                           const double *d, const double *e)
+CVM__NOINLINE double cvm__insphere_adapt(const double *a, const double *b, const double *c,
+                                         const double *d, const double *e)
 {
     const double *p[5];
     double s[5][3], m = 0.0;
@@ -124,35 +123,7 @@ static CVM__NOINLINE double insphere_adapt(const double *a, const double *b, con
 double cvm__insphere(const double *a, const double *b, const double *c, const double *d,
                      const double *e)
 {
-    double aex = a[0] - e[0], bex = b[0] - e[0], cex = c[0] - e[0], dex = d[0] - e[0];
-    double aey = a[1] - e[1], bey = b[1] - e[1], cey = c[1] - e[1], dey = d[1] - e[1];
-    double aez = a[2] - e[2], bez = b[2] - e[2], cez = c[2] - e[2], dez = d[2] - e[2];
-    double aexbey = aex * bey, bexaey = bex * aey, bexcey = bex * cey, cexbey = cex * bey;
-    double cexdey = cex * dey, dexcey = dex * cey, dexaey = dex * aey, aexdey = aex * dey;
-    double aexcey = aex * cey, cexaey = cex * aey, bexdey = bex * dey, dexbey = dex * bey;
-    double ab = aexbey - bexaey, bc = bexcey - cexbey, cd = cexdey - dexcey;
-    double da = dexaey - aexdey, ac = aexcey - cexaey, bd = bexdey - dexbey;
-    double abc = aez * bc - bez * ac + cez * ab;
-    double bcd = bez * cd - cez * bd + dez * bc;
-    double cda = cez * da + dez * ac + aez * cd;
-    double dab = dez * ab + aez * bd + bez * da;
-    double alift = aex * aex + aey * aey + aez * aez;
-    double blift = bex * bex + bey * bey + bez * bez;
-    double clift = cex * cex + cey * cey + cez * cez;
-    double dlift = dex * dex + dey * dey + dez * dez;
-    double det = (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
-    double aezp = fabs(aez), bezp = fabs(bez), cezp = fabs(cez), dezp = fabs(dez);
-    double abp = fabs(aexbey) + fabs(bexaey), bcp = fabs(bexcey) + fabs(cexbey);
-    double cdp = fabs(cexdey) + fabs(dexcey), dap = fabs(dexaey) + fabs(aexdey);
-    double acp = fabs(aexcey) + fabs(cexaey), bdp = fabs(bexdey) + fabs(dexbey);
-    double permanent = (aezp * bcp + bezp * acp + cezp * abp) * dlift
-                       + (dezp * abp + aezp * bdp + bezp * dap) * clift
-                       + (cezp * dap + dezp * acp + aezp * cdp) * blift
-                       + (bezp * cdp + cezp * bdp + dezp * bcp) * alift;
-    double errbound = isp_errbound_a * permanent + cvm__filter_floor;
-    if (fabs(det) > errbound)
-        return det;
-    return insphere_adapt(a, b, c, d, e);
+    return cvm__insphere_inline(a, b, c, d, e);
 }
 
 /* The 5x5 determinant [x y z |x|^2 1] expanded along the lifted column:

@@ -5,8 +5,7 @@
 #include "geom/expansion.h"
 #include "geom/geom_internal.h"
 
-/* Shewchuk's o3derrboundA and o3derrboundB. */
-static const double o3d_errbound_a = (7.0 + 56.0 * CVM__EPS) * CVM__EPS;
+/* Shewchuk's o3derrboundB (A is cvm__o3d_errbound_a in geom_internal.h). */
 static const double o3d_errbound_b = (3.0 + 28.0 * CVM__EPS) * CVM__EPS;
 
 /* Stage B (det [a-d; b-d; c-d] of the rounded differences), then the exact
@@ -43,8 +42,8 @@ static double orient3d_stages(const double *a, const double *b, const double *c,
     return det; /* every difference was exact, so B was the exact value */
 }
 
-static CVM__NOINLINE double orient3d_adapt(const double *a, const double *b, const double *c,
-                                           const double *d)
+CVM__NOINLINE double cvm__orient3d_adapt(const double *a, const double *b, const double *c,
+                                         const double *d)
 {
     const double *p[4];
     double s[4][3], m = 0.0;
@@ -64,20 +63,7 @@ static CVM__NOINLINE double orient3d_adapt(const double *a, const double *b, con
 
 double cvm__orient3d(const double *a, const double *b, const double *c, const double *d)
 {
-    double adx = a[0] - d[0], bdx = b[0] - d[0], cdx = c[0] - d[0];
-    double ady = a[1] - d[1], bdy = b[1] - d[1], cdy = c[1] - d[1];
-    double adz = a[2] - d[2], bdz = b[2] - d[2], cdz = c[2] - d[2];
-    double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
-    double cdxady = cdx * ady, adxcdy = adx * cdy;
-    double adxbdy = adx * bdy, bdxady = bdx * ady;
-    double det = adz * (bdxcdy - cdxbdy) + bdz * (cdxady - adxcdy) + cdz * (adxbdy - bdxady);
-    double permanent = (fabs(bdxcdy) + fabs(cdxbdy)) * fabs(adz)
-                       + (fabs(cdxady) + fabs(adxcdy)) * fabs(bdz)
-                       + (fabs(adxbdy) + fabs(bdxady)) * fabs(cdz);
-    double errbound = o3d_errbound_a * permanent + cvm__filter_floor;
-    if (fabs(det) > errbound)
-        return det;
-    return orient3d_adapt(a, b, c, d);
+    return cvm__orient3d_inline(a, b, c, d);
 }
 
 CVM__NOINLINE double cvm__orient3d_exact(const double *a, const double *b, const double *c,

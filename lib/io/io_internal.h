@@ -231,6 +231,29 @@ cvm_status cvm__write_file(cvm__ctx *ctx, const char *path, const cvm__mesh_out 
  * and ws is unchanged. */
 cvm_status cvm__write_file_to_set(cvm__write_set *ws, const char *path, const cvm__mesh_out *mo);
 
+/* ---- output: a tetrahedral mesh, arrays borrowed ---- */
+typedef struct cvm__mesh3_out {
+    const double *xyz;    /* 3*nv */
+    size_t nv;
+    const int32_t *tet;   /* 4*ntet, positively oriented */
+    size_t ntet;
+    const double *tattr;  /* ntet or NULL: regional attribute */
+    const int32_t *face;  /* 3*nface boundary triangles */
+    const int32_t *fmark; /* nface or NULL: their markers */
+    size_t nface;
+} cvm__mesh3_out;
+
+/* Write a tetrahedral mesh to path as its extension names (.vtu, .msh,
+ * .node -> PREFIX.node/.ele/.face), the files joining ws as
+ * cvm__write_file_to_set() does. CVM_OK, CVM_E_UNSUPPORTED (another
+ * extension), CVM_E_IO_OPEN, CVM_E_IO_WRITE, CVM_E_NOMEM,
+ * CVM_INCOMPLETE_CANCELLED (write_mesh3.c). */
+cvm_status cvm__write_file3_to_set(cvm__write_set *ws, const char *path, const cvm__mesh3_out *mo);
+/* 3 when the first line of a Triangle/TetGen .node or .poly file at path
+ * says dimension 3, else 2 (also when it cannot be read: the reader then
+ * reports why). */
+int cvm__file_dimension(const char *path);
+
 /* Write the cells as VTK polygons to path (.vtu; the caller checks the
  * extension). CVM_OK, CVM_E_IO_OPEN, CVM_E_IO_WRITE, CVM_E_NOMEM; on error no
  * file is left. */

@@ -201,7 +201,7 @@ static cvm_status read_point(parser *ps, size_t i, long long np, long long nattr
                              const char *layout)
 {
     cvm__pslg *p = ps->p;
-    long long num, k;
+    long long num = 0, k; /* set by int_field(); the 0 quiets gcc -O3 in the amalgamation */
     cvm_status s;
     if ((s = need_item_line(ps, "point", i, np, (size_t)(3 + nattr + nmark), 0, layout)))
         return s;

@@ -153,7 +153,7 @@ expect_grep "--svg-window" "$OUT/win.svg" '<clipPath id="window">'
 if [ "$(grep -c '<polygon' "$OUT/win.svg")" -lt "$(grep -c '<polygon' "$OUT/whole.svg")" ]; then pass
 else fail "--svg-window: the framed picture draws as many triangles as the whole one"; fi
 expect_exit 0 "--quality --timings --svg" "$CLI" triangulate "$DOMAINS/annulus.poly" \
-    -o "$OUT/a.vtu" --svg "$OUT/a.svg" --quality --timings --seed 3 --threads 1
+    -o "$OUT/a.vtu" --svg "$OUT/a.svg" --quality=full --timings --seed 3 --threads 1
 for want in "vertices" "triangles" "min angle" "max angle" "angles in [55, 65] deg" \
             "obtuse (not well-centred)" "interior degree 6" "min dual edge ratio" \
             "angle histogram" "degree histogram"; do
@@ -169,7 +169,7 @@ expect_exit 0 "write with no -o" "$CLI" triangulate "$DOMAINS/square.poly" --qua
 
 # A right triangle at the largest doubles: angles and dual ratios are exact,
 # lengths and the area overflow to inf, and nothing is NaN.
-expect_exit 0 "--quality near the largest doubles" "$CLI" triangulate "$DATA/huge_right_triangle.node" --quality
+expect_exit 0 "--quality near the largest doubles" "$CLI" triangulate "$DATA/huge_right_triangle.node" --quality=full
 for want in "min angle|45 deg" "max angle|90 deg" "area|inf" "max edge|inf" "q2 max|0.8047" \
             "q1 mean min angle|45 deg"; do
     expect_grep "--quality near the largest doubles" "$TMP/out" \
@@ -177,6 +177,58 @@ for want in "min angle|45 deg" "max angle|90 deg" "area|inf" "max edge|inf" "q2 
 done
 expect_grep "--quality near the largest doubles: 45-degree angles" "$TMP/out" "  40-50              2 "
 if grep -i -q nan "$TMP/out"; then fail "--quality near the largest doubles prints NaN: $(grep -i nan "$TMP/out" | head -3)"; else pass; fi
+
+# The short report has the measures and no histogram; --quality=full adds them.
+expect_exit 0 "--quality short" "$CLI" triangulate "$DOMAINS/square.poly" --quality
+expect_grep "--quality short" "$TMP/out" "min angle"
+if grep -q "histogram" "$TMP/out"; then fail "--quality (short) prints histograms"; else pass; fi
+expect_exit 2 "--quality=bad" "$CLI" triangulate "$DOMAINS/square.poly" --quality=long
+expect_one_line "--quality=bad"
+# Nothing asked for: a note says so, exit 0.
+expect_exit 0 "nothing to do" "$CLI" triangulate "$DOMAINS/square.poly"
+expect_grep "nothing to do: a note" "$TMP/err" "nothing to write or print"
+# --flag=value beside --flag value, for the commands' own flags and the outputs.
+expect_exit 0 "--flag=value" "$CLI" refine "$DOMAINS/square.poly" --size=0.2 --algo=frontal \
+    --output="$OUT/eq.vtu" --svg="$OUT/eq.svg" --seed=4
+expect_exit 0 "--flag value" "$CLI" refine "$DOMAINS/square.poly" --size 0.2 --algo frontal \
+    --output "$OUT/sp.vtu" --svg "$OUT/sp.svg" --seed 4
+if cmp -s "$OUT/eq.vtu" "$OUT/sp.vtu"; then pass; else fail "--flag=value and --flag value gave different meshes"; fi
+expect_exit 2 "--timings=1" "$CLI" refine "$DOMAINS/square.poly" --timings=1
+expect_exit 2 "--size= (empty)" "$CLI" refine "$DOMAINS/square.poly" --size=
+# Extensions are case-insensitive.
+expect_exit 0 "upper-case extension" "$CLI" triangulate "$DOMAINS/square.poly" -o "$OUT/UP.VTU" --svg "$OUT/UP.SVG"
+expect_grep "upper-case extension" "$OUT/UP.VTU" "<VTKFile"
+# -o -: the mesh on standard output (reports on standard error), no temporary left.
+mkdir "$OUT/tmpdir"
+expect_exit 0 "-o -" env TMPDIR="$OUT/tmpdir" "$CLI" refine "$DOMAINS/square.poly" --size 0.2 -o - \
+    --quality --timings --seed 4
+expect_grep "-o -: the mesh on stdout" "$TMP/out" "<VTKFile"
+expect_grep "-o -: reports on stderr" "$TMP/err" "min angle"
+expect_grep "-o -: timings on stderr" "$TMP/err" "refine: "
+expect_empty_dir "-o -: temporary folder" "$OUT/tmpdir"
+expect_exit 0 "-o - --format msh" "$CLI" optimise "$DOMAINS/square.poly" --size 0.3 -o - --format msh
+expect_grep "-o - --format msh" "$TMP/out" "\$MeshFormat"
+expect_exit 2 "-o - --format node" "$CLI" triangulate "$DOMAINS/square.poly" -o - --format node
+expect_exit 2 "--format without -o -" "$CLI" triangulate "$DOMAINS/square.poly" -o "$OUT/f.vtu" --format msh
+# --timings on every subcommand.
+expect_exit 0 "refine --timings" "$CLI" refine "$DOMAINS/square.poly" --size 0.2 --timings
+for phase in read triangulate refine; do
+    if grep -E -q "^$phase: [0-9]+\.[0-9]+$" "$TMP/out"; then pass; else fail "refine --timings: no '$phase: seconds' line"; fi
+done
+expect_exit 0 "optimise --timings" "$CLI" optimise "$DOMAINS/square.poly" --size 0.3 --timings -o "$OUT/t.vtu"
+for phase in read triangulate refine optimise write; do
+    if grep -E -q "^$phase: [0-9]+\.[0-9]+$" "$TMP/out"; then pass; else fail "optimise --timings: no '$phase: seconds' line"; fi
+done
+# The progress line: --progress forces it (stderr is not a terminal here), --quiet hides it.
+expect_exit 0 "--progress" "$CLI" refine "$DOMAINS/square.poly" --size 0.05 --progress -o "$OUT/p.vtu"
+expect_grep "--progress" "$TMP/err" "cvmesh: refining"
+expect_exit 0 "--quiet" "$CLI" refine "$DOMAINS/square.poly" --size 0.05 --quiet -o "$OUT/q.vtu"
+if [ -s "$TMP/err" ]; then fail "--quiet: stderr not empty: $(head -c 200 "$TMP/err")"; else pass; fi
+# Help prints defaults as they are typed.
+expect_exit 0 "optimise --help" "$CLI" optimise --help
+expect_grep "help: default as typed" "$TMP/out" "[default 0.15, range 0..0.25]"
+expect_grep "help: integer default" "$TMP/out" "[default 300, range 30..1000000]"
+if grep -q "0.1499999" "$TMP/out"; then fail "help prints 0.1499999..."; else pass; fi
 
 # ---- other inputs -----------------------------------------------------------
 OUT=$TMP/inputs
@@ -187,9 +239,52 @@ expect_exit 0 ".poly with points in .node" "$CLI" triangulate "$DATA/points_in_n
 expect_exit 0 "0-based poly with comments" "$CLI" triangulate "$DATA/zero_based_with_comments.poly" -o "$OUT/z.vtu" --keep-hull
 expect_exit 0 "regions and attributes" "$CLI" triangulate "$DATA/one_based_attributes_regions.poly" -o "$OUT/r.vtu"
 expect_grep "regions give cell data" "$OUT/r.vtu" 'Name="attribute"'
+# .msh: one physical surface per region, nodes classified on the curves (meshio reads both).
+expect_exit 0 "regions to .msh" "$CLI" refine "$DATA/one_based_attributes_regions.poly" --size 0.3 -o "$OUT/r.msh"
+if "$PY" -c '
+import sys, meshio
+m = meshio.read(sys.argv[1])
+assert {"region_7", "region_9", "marker_1"} <= set(m.cell_sets), m.cell_sets.keys()
+dims = set(int(d) for d in m.point_data["gmsh:dim_tags"][:, 0])
+assert dims == {0, 1, 2}, dims
+' "$OUT/r.msh" > "$OUT/meshio_regions.log" 2>&1; then pass; else fail "regions .msh with meshio: $(tail -c 300 "$OUT/meshio_regions.log")"; fi
 # crossings rounded at the scale of 1e6: success, 13 points plus 17 crossing vertices
 expect_exit 0 "crossings near a large offset" "$CLI" triangulate "$DATA/crossings_near_large_offset.poly" -o "$OUT/c.node"
 expect_grep "crossings near a large offset: 17 crossing vertices" "$OUT/c.node" "30 2 0 1"
+
+# ---- tetrahedralize: 3D points and closed surfaces ----------------------------
+OUT=$TMP/tet
+mkdir "$OUT"
+D3=$DOMAINS/../data3d
+expect_exit 0 "tetrahedralize a BCC .node" "$CLI" tetrahedralize "$DATA/bcc_2x2x2.node" -o "$OUT/bcc.vtu" --quality --timings
+for want in "tetrahedra                   96" "volume                       8" "read: " "tetrahedralize: "; do
+    expect_grep "tetrahedralize --quality" "$TMP/out" "$want"
+done
+expect_exit 0 "tetrahedralize two cubes" "$CLI" tetrahedralize "$D3/two_cubes.poly" -o "$OUT/two.vtu"
+expect_exit 0 "tetrahedralize a cube .off to .msh" "$CLI" tetrahedralize "$D3/cube.off" -o "$OUT/cube.msh"
+expect_exit 0 "tetrahedralize a binary .stl to .node" "$CLI" tetrahedralize "$D3/cube_binary.stl" -o "$OUT/cube.node"
+for f in cube.node cube.ele cube.face; do
+    if [ -s "$OUT/$f" ]; then pass; else fail "tetrahedralize .node: $f missing"; fi
+done
+# meshio reads the tetrahedra; their volumes sum to the domain's
+if "$PY" -c '
+import sys, meshio, numpy as np
+for path, want in ((sys.argv[1], 8.0), (sys.argv[2], 2.0), (sys.argv[3], 1.0)):
+    m = meshio.read(path)
+    t = np.vstack([c.data for c in m.cells if c.type == "tetra"])
+    p = m.points[t]
+    v = np.einsum("ij,ij->i", p[:, 0] - p[:, 3], np.cross(p[:, 1] - p[:, 3], p[:, 2] - p[:, 3])) / 6
+    assert (v > 0).all(), path
+    assert abs(v.sum() - want) < 1e-12 * want, (path, v.sum())
+' "$OUT/bcc.vtu" "$OUT/two.vtu" "$OUT/cube.msh" > "$OUT/meshio.log" 2>&1; then pass; else fail "tetrahedralize outputs with meshio: $(tail -c 300 "$OUT/meshio.log")"; fi
+expect_exit 1 "tetrahedralize an open surface" "$CLI" tetrahedralize "$DATA/open_tetra.off" -o "$OUT/open.vtu"
+expect_one_line "tetrahedralize an open surface"
+expect_grep "tetrahedralize an open surface" "$TMP/err" "open"
+if [ ! -e "$OUT/open.vtu" ]; then pass; else fail "tetrahedralize an open surface wrote a file"; fi
+expect_exit 1 "tetrahedralize a 2D input" "$CLI" tetrahedralize "$DOMAINS/square.poly"
+expect_one_line "tetrahedralize a 2D input"
+expect_exit 2 "tetrahedralize to .svg" "$CLI" tetrahedralize "$D3/cube.off" -o "$OUT/c.svg"
+expect_exit 1 "tetrahedralize a missing file" "$CLI" tetrahedralize "$OUT/none.off"
 
 # ---- optimise: the power dual -------------------------------------------------
 OUT=$TMP/optimise
@@ -319,7 +414,7 @@ expect_empty_dir "bad inputs" "$OUT"
 OUT=$TMP/dual
 mkdir "$OUT"
 expect_exit 0 "refine --dual --quality" "$CLI" refine "$DOMAINS/annulus.poly" --algo frontal \
-    --size 0.2 -o "$OUT/m.vtu" --dual "$OUT/d.vtu" --quality
+    --size 0.2 -o "$OUT/m.vtu" --dual "$OUT/d.vtu" --quality=full
 for want in "power vertex outside" "time-step proxy" "q1 mean min angle" "q2 max" "q3 max" \
             "q4 max" "q5 min" "q5 min at the boundary" "q5 histogram"; do
     expect_grep "refine --quality" "$TMP/out" "$want"

@@ -7,10 +7,12 @@ int main(void)
     SRunner *sr = srunner_create(geom_suite());
     int failed;
     srunner_add_suite(sr, delaunay_suite());
+    srunner_add_suite(sr, delaunay3_suite());
     srunner_add_suite(sr, io_suite());
     srunner_add_suite(sr, api_suite());
     srunner_add_suite(sr, refine_suite());
     srunner_add_suite(sr, dual_suite());
+    srunner_add_suite(sr, surface3_suite());
     srunner_add_suite(sr, support_suite());
     srunner_run_all(sr, CK_NORMAL);
     failed = srunner_ntests_failed(sr);

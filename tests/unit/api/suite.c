@@ -17,5 +17,6 @@ Suite *api_suite(void)
     suite_add_tcase(s, api_read_names_tcase());
     suite_add_tcase(s, api_nd_tcase());
     suite_add_tcase(s, api_sizing_nd_tcase());
+    suite_add_tcase(s, api_mesh3_tcase());
     return s;
 }

@@ -196,8 +196,8 @@ START_TEST(set_points_checks_dim_and_finiteness)
     size_t n = 99;
     ck_assert_int_eq(cvm_mesh_set_points(m, xy, 4, 1), CVM_E_ARGUMENT);
     ck_assert_int_eq(cvm_mesh_set_points(m, xy, 4, 4), CVM_E_ARGUMENT);
-    ck_assert_int_eq(cvm_mesh_set_points(m, xy, 2, 3), CVM_E_UNSUPPORTED);
-    ck_assert_int_eq(cvm_mesh_set_points(m, xy, 4, 2), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_points(m, xy, 2, 3), CVM_OK); /* 3D now (test_mesh3.c) */
+    ck_assert_int_eq(cvm_mesh_set_points(m, xy, 4, 2), CVM_OK);   /* and 2D again */
     xy[5] = NAN;
     ck_assert_int_eq(cvm_mesh_set_points(m, xy, 4, 2), CVM_E_INPUT_NONFINITE);
     ck_assert_msg(strstr(cvm_mesh_errmsg(m), "point 2") != NULL, "message \"%s\" lacks point 2",

@@ -23,6 +23,11 @@ START_TEST(version_macro_equals_linked_library)
     snprintf(buf, sizeof buf, "%d.%d.%d", CVM_VERSION_MAJOR, CVM_VERSION_MINOR, CVM_VERSION_PATCH);
     ck_assert_ptr_nonnull(cvm_version_string());
     ck_assert_str_eq(cvm_version_string(), buf);
+    /* the build string starts with the version and names the licence of the build */
+    ck_assert_ptr_nonnull(cvm_build_string());
+    ck_assert(strncmp(cvm_build_string(), "cvmesh ", 7) == 0);
+    ck_assert(strncmp(cvm_build_string() + 7, buf, strlen(buf)) == 0);
+    ck_assert(strstr(cvm_build_string(), "AGPL-3+ build") || strstr(cvm_build_string(), "BSD-3-Clause build"));
 }
 END_TEST
 

@@ -123,6 +123,47 @@ START_TEST(write_runs_out_of_memory_and_the_handle_goes_on)
 }
 END_TEST
 
+/* The .msh writer's regions (one surface per attribute) and node classes under
+ * every failed allocation. */
+START_TEST(msh_with_regions_runs_out_of_memory_and_the_handle_goes_on)
+{
+    /* two unit squares side by side, split by the segment 4-5 */
+    static const double xy[] = {0, 0, 1, 0, 2, 0, 2, 1, 1, 1, 0, 1};
+    static const cvm_index seg[] = {0, 1, 1, 2, 2, 3, 3, 4, 4, 5, 5, 0, 1, 4};
+    static const double regions[] = {0.5, 0.5, 1, 0, 1.5, 0.5, 2, 0};
+    cvmtest_alloc a;
+    cvm_mesh *m;
+    char path[4096], *text;
+    long k, live;
+    cvmtest_alloc_init(&a, 0, 0);
+    ck_assert_int_eq(cvmtest_mesh_create(&m, &a), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_points(m, xy, 6, 2), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_segments(m, seg, 7), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_regions(m, regions, 2), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+    live = a.live_blocks;
+    in_dir(path, sizeof path, "r.msh");
+    for (k = 1;; k++) {
+        cvm_status s;
+        cvmtest_alloc_arm(&a, k, 0);
+        s = cvm_mesh_write(m, path);
+        ck_assert_int_eq((int)a.live_blocks, (int)live);
+        if (s == CVM_OK)
+            break;
+        ck_assert_msg(s == CVM_E_NOMEM, "k=%ld: %s", k, cvm_mesh_errmsg(m));
+        ck_assert(k < 200);
+    }
+    text = iotest_slurp(path, NULL);
+    ck_assert_ptr_nonnull(text);
+    ck_assert_ptr_nonnull(strstr(text, "2 1 \"region_1\"\n2 2 \"region_2\"\n"));
+    /* corners 1 and 4 join three segments: point entities; every node is classified */
+    ck_assert_ptr_nonnull(strstr(text, "$Entities\n2 1 2 0\n"));
+    free(text);
+    cvm_mesh_free(m);
+    ck_assert_int_eq((int)a.live_blocks, 0);
+}
+END_TEST
+
 /* Write text to dir/name (a plain file standing for an older output). */
 static void put_file(const char *name, const char *text)
 {
@@ -418,6 +459,7 @@ TCase *api_write_tcase(void)
     tcase_add_test(tc, write_needs_a_triangulation_and_a_known_extension);
     tcase_add_test(tc, node_output_reads_back_and_matches_the_triangles);
     tcase_add_test(tc, write_runs_out_of_memory_and_the_handle_goes_on);
+    tcase_add_test(tc, msh_with_regions_runs_out_of_memory_and_the_handle_goes_on);
     tcase_add_test(tc, staged_files_replace_their_targets_only_at_commit);
     tcase_add_test(tc, a_failed_stage_discards_every_staged_file);
     tcase_add_test(tc, discard_and_free_remove_staged_files);

@@ -13,6 +13,8 @@ TCase *geom_power2d_tcase(void);   /* test_power2d.c */
 TCase *geom_orient3d_tcase(void);  /* test_orient3d.c */
 TCase *geom_insphere_tcase(void);  /* test_insphere.c */
 TCase *geom_sos_tcase(void);       /* test_sos.c: symbolic perturbation of the lifted tests */
+TCase *geom_power3d_tcase(void);   /* test_power3d.c */
+TCase *geom_sos3d_tcase(void);     /* test_sos3d.c: symbolic perturbation of insphere/power3d */
 TCase *geom_construct_tcase(void); /* test_construct.c: circumcentre, segment crossing */
 
 /* oracle.c: exact signs (-1, 0, 1) of the determinants for any finite doubles
@@ -24,6 +26,8 @@ int oracle_power2d(const double *a, const double *b, const double *c, const doub
 int oracle_orient3d(const double *a, const double *b, const double *c, const double *d);
 int oracle_insphere(const double *a, const double *b, const double *c, const double *d,
                     const double *e);
+int oracle_power3d(const double *a, const double *b, const double *c, const double *d,
+                   const double *e, double wa, double wb, double wc, double wd, double we);
 /* 1 when sum(e) == sum(terms) + sum(prod_a[i] * prod_b[i]) exactly. */
 int oracle_expansion_equals(const double *e, int elen, const double *terms, int nterms,
                             const double *prod_a, const double *prod_b, int nprod);

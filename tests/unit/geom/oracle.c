@@ -317,6 +317,24 @@ int oracle_insphere(const double *a, const double *b, const double *c, const dou
     return big_sign(&r);
 }
 
+int oracle_power3d(const double *a, const double *b, const double *c, const double *d,
+                   const double *e, double wa, double wb, double wc, double wd, double we)
+{
+    double v[15], w[5];
+    int base, i;
+    big m[16], r;
+    for (i = 0; i < 3; i++)
+        v[i] = a[i], v[3 + i] = b[i], v[6 + i] = c[i], v[9 + i] = d[i], v[12 + i] = e[i];
+    w[0] = wa, w[1] = wb, w[2] = wc, w[3] = wd, w[4] = we;
+    base = common_base(v, 15, w, 5);
+    fill_row(&m[0], a, e, 3, 1, wa, we, base);
+    fill_row(&m[4], b, e, 3, 1, wb, we, base);
+    fill_row(&m[8], c, e, 3, 1, wc, we, base);
+    fill_row(&m[12], d, e, 3, 1, wd, we, base);
+    detn(&r, m, 4);
+    return big_sign(&r);
+}
+
 int oracle_expansion_equals(const double *e, int elen, const double *terms, int nterms,
                             const double *prod_a, const double *prod_b, int nprod)
 {

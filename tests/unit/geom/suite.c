@@ -13,6 +13,8 @@ Suite *geom_suite(void)
     suite_add_tcase(s, geom_orient3d_tcase());
     suite_add_tcase(s, geom_insphere_tcase());
     suite_add_tcase(s, geom_sos_tcase());
+    suite_add_tcase(s, geom_power3d_tcase());
+    suite_add_tcase(s, geom_sos3d_tcase());
     suite_add_tcase(s, geom_construct_tcase());
     return s;
 }

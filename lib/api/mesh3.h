@@ -1,0 +1,35 @@
+/*
+ * mesh3.h - the 3D side of the cvm_mesh handle (lib/api/mesh3*.c): a handle
+ * given points of dimension 3 keeps its input and its tetrahedral mesh here
+ * (m->m3), and the public calls that have a 3D meaning dispatch to these.
+ * The engines: lib/delaunay3 (Delaunay / regular tetrahedralisation),
+ * lib/surface3 (surface validation), lib/tetgen (boundary recovery, optional).
+ */
+#ifndef CVM_API_MESH3_H
+#define CVM_API_MESH3_H
+
+#include "api_internal.h"
+
+/* Free m->m3 (NULL afterwards): the handle is 2D again. */
+void cvm__mesh3_free(cvm_mesh *m);
+/* The calls below set the message on error. */
+cvm_status cvm__mesh3_set_points(cvm_mesh *m, const double *xyz, size_t n);
+cvm_status cvm__mesh3_set_holes(cvm_mesh *m, const double *xyz, size_t n);
+cvm_status cvm__mesh3_set_regions(cvm_mesh *m, const double *r, size_t n); /* 5 per region */
+/* .off, .stl, .smesh, and .poly / .node of dimension 3. */
+cvm_status cvm__mesh3_read(cvm_mesh *m, const char *path);
+cvm_status cvm__mesh3_triangulate(cvm_mesh *m);
+cvm_status cvm__mesh3_check(cvm_mesh *m);
+cvm_status cvm__mesh3_set_weights(cvm_mesh *m, const double *w, size_t n);
+cvm_status cvm__mesh3_write_to_set(cvm_mesh *m, const char *path, cvm__write_set *ws);
+cvm_status cvm__mesh3_measure(double *out, cvm_mesh *m, cvm_measure which);
+/* Const readers: statuses only, no message. */
+cvm_status cvm__mesh3_count(size_t *out, const cvm_mesh *m, cvm_entity kind);
+cvm_status cvm__mesh3_copy_points(double *dst, size_t dst_len, const cvm_mesh *m);
+const double *cvm__mesh3_points(const cvm_mesh *m, size_t *nv);
+cvm_status cvm__mesh3_copy_cells(cvm_index *dst, size_t dst_len, const cvm_mesh *m,
+                                 cvm_entity kind);
+/* The message of a 2D-only call made on a 3D handle: CVM_E_UNSUPPORTED. */
+cvm_status cvm__mesh3_unsupported(cvm_mesh *m, const char *call);
+
+#endif

@@ -1,0 +1,46 @@
+/*
+ * mesh3_internal.h - the state behind m->m3, shared by lib/api/mesh3*.c.
+ */
+#ifndef CVM_API_MESH3_INTERNAL_H
+#define CVM_API_MESH3_INTERNAL_H
+
+#include "api/mesh3.h"
+#include "common/surf3.h"
+#include "delaunay3/delaunay3_internal.h"
+
+struct cvm__mesh3 {
+    cvm__surf3 in;           /* the input: points, and facets when a surface was read */
+    /* output (valid when have) */
+    int have;
+    int delaunay;            /* 1: tets are the Delaunay (regular with w) tetrahedralisation of xyz */
+    double *xyz;             /* 3*nv vertices: input points less duplicates, then Steiner points */
+    size_t nv;
+    int32_t *tet;            /* 4*ntet, positively oriented */
+    size_t ntet;
+    double *tattr;           /* ntet or NULL */
+    int32_t *face;           /* 3*nface: boundary faces (and internal facets of a recovered mesh) */
+    int32_t *fmark;          /* nface or NULL */
+    size_t nface;
+    int32_t *input_map;      /* in.np: input point -> vertex */
+    double *w;               /* nv weights (regular), or NULL */
+    size_t n_dup, n_redundant, n_steiner_boundary, n_steiner_interior;
+};
+
+/* Face adjacency of a tetrahedron list: nbr[4 t + f] = 4 u + g when face f of
+ * t (opposite corner f) is face g of u, -1 on the boundary; CVM_E_INPUT_DEGENERATE
+ * (with a message) when a face is shared by three or more tetrahedra. */
+cvm_status cvm__mesh3_adjacency(cvm__ctx *ctx, const int32_t *tet, size_t ntet, int32_t **nbr_out);
+/* The faces of a tetrahedron list, sorted by their corners, for lookups. */
+typedef struct cvm__face_key {
+    int32_t v[3]; /* sorted corners */
+    int32_t slot; /* 4 t + f */
+} cvm__face_key;
+cvm_status cvm__mesh3_face_index(cvm__ctx *ctx, const int32_t *tet, size_t ntet,
+                                 cvm__face_key **out);
+/* A slot 4 t + f whose face has the corners a, b, c (any order), or -1. */
+int32_t cvm__mesh3_find_face(const cvm__face_key *index, size_t n, int32_t a, int32_t b, int32_t c);
+/* The corners of face f of tet t, oriented outwards (seen from outside
+ * counter-clockwise): for f = 0..3. */
+void cvm__mesh3_face_corners(const int32_t *t, int f, int32_t out[3]);
+
+#endif

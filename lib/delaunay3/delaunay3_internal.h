@@ -1,0 +1,174 @@
+/*
+ * delaunay3_internal.h - the 3D Delaunay / regular tetrahedralisation engine:
+ * a flat tetrahedral store closed by a ghost vertex, BRIO + Hilbert insertion
+ * order, visibility-walk location and Bowyer-Watson cavities decided by the
+ * exact predicates of lib/geom (insphere_sos, power3d_sos).
+ *
+ * Techniques after Marot, Pellerin and Remacle, "One machine, one minute,
+ * three billion tetrahedra" (IJNME 2019, HXT): 4 vertex ids and 4 neighbour
+ * slots per tetrahedron in flat arrays, a neighbour slot encoded 4 * tet + face
+ * (face f is opposite vertex f), every hull face closed by a ghost tetrahedron
+ * whose vertex 3 is the ghost, slots of deleted tetrahedra reused, cavity
+ * boundaries kept in a flat array. BRIO is Amenta, Choi and Rote (2003); the
+ * Hilbert index is Skilling's transpose form (AIP Conf. Proc. 707, 2004).
+ *
+ * Orientation: a finite tetrahedron (a, b, c, d) has cvm__orient3d(a, b, c, d)
+ * > 0. A ghost tetrahedron (a, b, c, G) has its hull face (a, b, c) oriented
+ * so that a point q outside the hull beyond it has orient3d(a, b, c, q) > 0
+ * (the ghost stands for a point at infinity on that side).
+ *
+ * Ties: every in-sphere / power decision is symbolically perturbed by INPUT
+ * index (cvm__insphere_sos), so the result does not depend on the insertion
+ * order: with distinct points the tetrahedralisation is unique, and
+ * cvm__tet3_copy_tets() numbers it canonically.
+ *
+ * Memory: every allocation goes through the context's allocator; an
+ * allocation failure returns CVM_E_NOMEM and leaves a store that
+ * cvm__tet3_free() releases. Thread-safety: one store per thread; pure C99.
+ */
+#ifndef CVM_DELAUNAY3_INTERNAL_H
+#define CVM_DELAUNAY3_INTERNAL_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "common/common_internal.h"
+
+#define CVM__T3_GHOST INT32_C(-1) /* the vertex at infinity (always vertex 3 of its tet) */
+#define CVM__T3_DEAD INT32_C(-2)  /* tt[8 t] of a free slot */
+/* The neighbour across face s & 3 of tetrahedron s >> 2, as an lvalue. */
+#define CVM__T3_TN(T, s) ((T)->tt[(size_t)(s) + ((size_t)(s) & ~(size_t)3) + 4])
+
+/* Fate of an input point after cvm__tet3_build(). */
+enum {
+    CVM__T3_PENDING = 0,   /* not inserted (build stopped early) */
+    CVM__T3_VERTEX = 1,    /* a vertex of the tetrahedralisation */
+    CVM__T3_DUPLICATE = 2, /* same coordinates (and weight) as a vertex: merged into it */
+    CVM__T3_REDUNDANT = 3  /* weighted only: its power cell is empty, it is in no tetrahedron */
+};
+
+/* One face of the cavity boundary: the new tetrahedron's vertices (the
+ * inserted point at position f), the slot of the outside neighbour and the
+ * new tetrahedron made on it. */
+typedef struct cvm__t3_bface {
+    int32_t v[4];
+    int32_t f;
+    int32_t out;
+    int32_t tet;
+    uint8_t lid[4]; /* small local ids of the vertices, for the edge table */
+} cvm__t3_bface;
+
+/* Entry of the edge table that pairs the new tetrahedra around the point. */
+typedef struct cvm__t3_hent {
+    uint64_t key;
+    int32_t slot;
+    uint32_t stamp;
+} cvm__t3_hent;
+
+typedef struct cvm__tet3 {
+    cvm__ctx *ctx;
+    size_t np;        /* input points */
+    double *xyz;      /* 3 np: the points in insertion order (internal ids) */
+    double *w;        /* np weights in insertion order; NULL for Delaunay */
+    int32_t *orig;    /* internal id -> input index (the SoS index) */
+    int32_t *merged;  /* internal id -> internal id of the vertex a duplicate merged into, or -1 */
+    uint8_t *fate;    /* internal id -> CVM__T3_* */
+    int32_t *outid;   /* internal id of a vertex -> input index naming it in the output:
+                       * the lowest of it and the duplicates merged into it */
+
+    int32_t *tt;      /* 8 per slot (one half cache line): 4 vertex ids (internal, ghost last;
+                       * DEAD in the first when free), then 4 neighbour slots 4 * tet + face */
+    uint8_t *tmark;   /* per slot: 1 in the current cavity, 2 tested outside it, else 0 */
+    size_t nslot;     /* slots in use or free, below cap */
+    size_t cap;
+    int32_t *freeslot;
+    size_t nfree, freecap;
+
+    /* insertion workspace, reused from point to point */
+    int32_t *stack;
+    size_t stackcap;
+    int32_t *dead;
+    size_t ndead, deadcap;
+    cvm__t3_bface *bf;
+    size_t nbf, bfcap;
+    cvm__t3_hent *hash;
+    size_t hashcap;   /* a power of two */
+    uint32_t stamp;
+    uint32_t *vloc;   /* per internal vertex: (stamp << 7) | local id in the current cavity */
+    uint32_t lstamp;
+    int32_t *etab;    /* CVM__T3_ETAB^2 edge table of local ids: slot + 1 waiting for its pair */
+    uint32_t *vseen;  /* weighted only: per internal vertex, stamp of the last cavity it was in */
+    uint32_t *vkeep;  /* ... and of the last cavity boundary it was on */
+    uint32_t vstamp;  /* the stamp of the current cavity for vseen / vkeep */
+
+    int32_t last;     /* a finite tetrahedron made by the last insertion: next walk's start */
+    uint64_t walk;    /* xorshift state of the walk's face order (deterministic) */
+
+    /* report of the last build, in input indices */
+    size_t n_dup;          /* points merged into an identical vertex */
+    int64_t dup_first[2];  /* (kept, merged) pair with the smallest merged index, or -1 */
+    size_t n_redundant;    /* weighted: points whose power cell vanished */
+    int64_t redundant_first; /* the smallest such index, or -1 */
+    size_t n_finite;       /* finite tetrahedra */
+} cvm__tet3;
+
+/* An empty store on ctx (not owned). */
+void cvm__tet3_init(cvm__tet3 *T, cvm__ctx *ctx);
+/* Release everything; the store is empty and reusable afterwards. */
+void cvm__tet3_free(cvm__tet3 *T);
+
+/*
+ * Delaunay (w == NULL) or regular (weights w, power distance |x - p|^2 - w)
+ * tetrahedralisation of the n points xyz[3 n] (copied). seed fixes the BRIO
+ * rounds; the result (as cvm__tet3_copy_tets() writes it) does not depend on
+ * it. Points with the same coordinates (and, weighted, the same weight) are
+ * merged into the one of lowest index and counted in n_dup; weighted points
+ * whose power cell is empty are left out and counted in n_redundant.
+ * @return CVM_OK
+ *         CVM_E_INPUT_NONFINITE  a coordinate or weight is NaN or infinite (message names the point)
+ *         CVM_E_INPUT_DEGENERATE fewer than 4 distinct points, or all collinear or coplanar
+ *         CVM_E_TOO_LARGE        n above CVM__T3_MAX_POINTS
+ *         CVM_E_NOMEM            (the store stays freeable)
+ */
+#define CVM__T3_ETAB 64
+#define CVM__T3_MAX_POINTS ((size_t)60000000)
+cvm_status cvm__tet3_build(cvm__tet3 *T, const double *xyz, const double *w, size_t n,
+                           uint64_t seed);
+
+/* Input index of each point's fate: fate_out[i] = CVM__T3_*, and for a
+ * duplicate into_out[i] = input index of the vertex it merged into (else -1).
+ * Either output may be NULL. */
+void cvm__tet3_point_fates(const cvm__tet3 *T, uint8_t *fate_out, int32_t *into_out);
+
+/* Write the T->n_finite finite tetrahedra as 4 input indices each into dst, in
+ * the canonical order: each tetrahedron is turned by an even permutation
+ * (orientation kept) so that its smallest index comes first and the smallest
+ * of the other three second; the list is then sorted lexicographically.
+ * Identical input gives identical bytes whatever the seed or insertion order.
+ * @return CVM_OK or CVM_E_NOMEM (a temporary array of n + 1 counters). */
+cvm_status cvm__tet3_copy_tets(cvm__tet3 *T, int32_t *dst);
+
+/* Re-verify the store with exact predicates: live slots, symmetric adjacency
+ * whose shared faces match, every finite tetrahedron positively oriented,
+ * every interior face locally Delaunay (regular) by insphere_sos (power3d_sos),
+ * the hull convex, every vertex in a tetrahedron. Returns CVM_OK or
+ * CVM_E_INTERNAL with a message naming the first offending tetrahedron/face. */
+cvm_status cvm__tet3_check(cvm__tet3 *T);
+
+/* Store internals shared by the engine's files. */
+cvm_status cvm__tet3_reserve(cvm__tet3 *T, size_t need_new);
+int32_t cvm__tet3_take_slot(cvm__tet3 *T);
+void cvm__tet3_release_slot(cvm__tet3 *T, int32_t t);
+/* Pair the faces of the new tetrahedra bf[i].tet (i < nbf) around their
+ * common apex at position bf[i].f: face k != f of one meets the face of
+ * another along the edge of the two vertices at neither k nor f. The hash
+ * holds at least 4 nbf entries (cvm__tet3_reserve_hash). */
+void cvm__tet3_link_around(cvm__tet3 *T);
+cvm_status cvm__tet3_reserve_hash(cvm__tet3 *T, size_t nfaces);
+/* BRIO rounds, Hilbert order inside each: order[0..n) a permutation of 0..n-1. */
+cvm_status cvm__tet3_brio_order(cvm__ctx *ctx, const double *xyz, size_t n, uint64_t seed,
+                                int32_t *order);
+/* Insert internal point p into a store that already has a first tetrahedron. */
+cvm_status cvm__tet3_insert(cvm__tet3 *T, int32_t p);
+
+#endif

@@ -1,0 +1,250 @@
+/* insert3.c - insertion of one point: visibility walk, Bowyer-Watson cavity by the exact in-sphere/power test, re-triangulation of its boundary. */
+#include <string.h>
+
+#include "delaunay3/delaunay3_internal.h"
+#include "geom/geom_internal.h"
+
+#define PT(T, v) ((T)->xyz + 3 * (size_t)(v))
+#if defined(__GNUC__)
+#define CVM__PREFETCH(p) __builtin_prefetch(p)
+#else
+#define CVM__PREFETCH(p) ((void)(p))
+#endif
+
+/* Is p in conflict with the finite tetrahedron of vertices v (circumsphere /
+ * orthosphere strictly containing p after symbolic perturbation)? */
+static inline int finite_conflict(const cvm__tet3 *T, const int32_t *v, int32_t p)
+{
+    const double *a = PT(T, v[0]), *b = PT(T, v[1]), *c = PT(T, v[2]), *d = PT(T, v[3]);
+    const double *e = PT(T, p);
+    const int32_t *o = T->orig;
+    if (!T->w) {
+        double det = cvm__insphere_inline(a, b, c, d, e);
+        if (det != 0.0)
+            return det > 0.0;
+        return cvm__insphere_sos(a, b, c, d, e, o[v[0]], o[v[1]], o[v[2]], o[v[3]], o[p]) > 0;
+    }
+    return cvm__power3d_sos(a, b, c, d, e, T->w[v[0]], T->w[v[1]], T->w[v[2]], T->w[v[3]],
+                            T->w[p], o[v[0]], o[v[1]], o[v[2]], o[v[3]], o[p])
+           > 0;
+}
+
+/* Conflict of p with slot t. A ghost tetrahedron conflicts when p lies
+ * strictly beyond its hull face, or in the face's plane and in conflict with
+ * the finite tetrahedron behind the face (the limit of a far-away apex). */
+static inline int in_conflict(const cvm__tet3 *T, int32_t t, int32_t p)
+{
+    const int32_t *v = T->tt + 8 * (size_t)t;
+    int32_t n;
+    double o;
+    if (v[3] != CVM__T3_GHOST)
+        return finite_conflict(T, v, p);
+    o = cvm__orient3d_inline(PT(T, v[0]), PT(T, v[1]), PT(T, v[2]), PT(T, p));
+    if (o != 0.0)
+        return o > 0.0;
+    n = CVM__T3_TN(T, 4 * (size_t)t + 3) >> 2;
+    if (T->tmark[n])
+        return T->tmark[n] == 1;
+    return finite_conflict(T, T->tt + 8 * (size_t)n, p);
+}
+
+/* Visibility walk from T->last to a tetrahedron whose closure holds p, or to
+ * a ghost tetrahedron whose hull face p lies strictly beyond. Faces are tried
+ * from a pseudo-random first one (xorshift in the store: deterministic, no
+ * global state), which makes the walk terminate. */
+static int32_t locate(cvm__tet3 *T, int32_t p)
+{
+    const double *pp = PT(T, p);
+    int32_t t = T->last, came = -1;
+    uint64_t r = T->walk;
+    for (;;) {
+        const int32_t *v = T->tt + 8 * (size_t)t;
+        const double *q[4];
+        int i, f0;
+        if (v[3] == CVM__T3_GHOST)
+            break;
+        q[0] = PT(T, v[0]), q[1] = PT(T, v[1]), q[2] = PT(T, v[2]), q[3] = PT(T, v[3]);
+        r ^= r << 13, r ^= r >> 7, r ^= r << 17;
+        f0 = (int)(r >> 62);
+        for (i = 0; i < 4; i++) {
+            int f = (f0 + i) & 3;
+            int32_t slot = 4 * t + f;
+            const double *keep;
+            double o;
+            if (slot == came)
+                continue;
+            keep = q[f], q[f] = pp;
+            o = cvm__orient3d_inline(q[0], q[1], q[2], q[3]);
+            q[f] = keep;
+            if (o < 0.0) {
+                came = CVM__T3_TN(T, slot);
+                t = came >> 2;
+                goto next;
+            }
+        }
+        break;
+    next:;
+    }
+    T->walk = r;
+    return t;
+}
+
+/* Undo the marks of a cavity that will not be committed. */
+static void unmark(cvm__tet3 *T)
+{
+    size_t i;
+    for (i = 0; i < T->ndead; i++)
+        T->tmark[T->dead[i]] = 0;
+    for (i = 0; i < T->nbf; i++)
+        T->tmark[T->bf[i].out >> 2] = 0;
+}
+
+/* Grow-on-demand pushes of the cavity search; CVM_E_NOMEM on failure. */
+#define PUSH(arr, cnt, capv, val)                                                              \
+    do {                                                                                       \
+        if ((cnt) == (capv)                                                                    \
+            && cvm__grow(T->ctx, (void **)&(arr), &(capv), (cnt) + 1, sizeof *(arr)) != CVM_OK) \
+            goto nomem;                                                                        \
+        (arr)[(cnt)++] = (val);                                                                \
+    } while (0)
+
+/* The tetrahedra in conflict with p, grown from t0 across faces: dead[] (and
+ * marked 1); the faces where the growth stopped: bf[] (outside marked 2). */
+static cvm_status dig_cavity(cvm__tet3 *T, int32_t t0, int32_t p)
+{
+    size_t nstack = 0;
+    T->ndead = 0;
+    T->nbf = 0;
+    T->tmark[t0] = 1;
+    PUSH(T->dead, T->ndead, T->deadcap, t0);
+    PUSH(T->stack, nstack, T->stackcap, t0);
+    while (nstack > 0) {
+        int32_t c = T->stack[--nstack];
+        int f;
+        /* the neighbours are mostly cold: start all four loads before using one */
+        for (f = 0; f < 4; f++) {
+            int32_t u = CVM__T3_TN(T, 4 * c + f) >> 2;
+            CVM__PREFETCH(T->tt + 8 * (size_t)u);
+            CVM__PREFETCH(T->tmark + u);
+        }
+        for (f = 0; f < 4; f++) {
+            int32_t s = CVM__T3_TN(T, 4 * (size_t)c + f), u = s >> 2;
+            if (T->tmark[u] == 1)
+                continue;
+            if (T->tmark[u] == 0 && in_conflict(T, u, p)) {
+                T->tmark[u] = 1;
+                PUSH(T->dead, T->ndead, T->deadcap, u);
+                PUSH(T->stack, nstack, T->stackcap, u);
+            } else {
+                cvm__t3_bface *b;
+                if (T->nbf == T->bfcap
+                    && cvm__grow(T->ctx, (void **)&T->bf, &T->bfcap, T->nbf + 1, sizeof *T->bf)
+                           != CVM_OK)
+                    goto nomem;
+                T->tmark[u] = 2;
+                b = &T->bf[T->nbf++];
+                b->v[0] = T->tt[8 * (size_t)c], b->v[1] = T->tt[8 * (size_t)c + 1];
+                b->v[2] = T->tt[8 * (size_t)c + 2], b->v[3] = T->tt[8 * (size_t)c + 3];
+                b->v[f] = p;
+                b->f = f;
+                b->out = s;
+            }
+        }
+    }
+    return CVM_OK;
+nomem:
+    unmark(T);
+    return CVM_E_NOMEM;
+}
+
+/* Weighted only: vertices of the cavity that are on no boundary face lose
+ * their power cell to p. */
+static void mark_vanished(cvm__tet3 *T, int32_t p)
+{
+    uint32_t cur;
+    size_t i;
+    int k;
+    if (++T->vstamp == 0) { /* wrapped: forget every old mark */
+        memset(T->vseen, 0, T->np * sizeof *T->vseen);
+        memset(T->vkeep, 0, T->np * sizeof *T->vkeep);
+        T->vstamp = 1;
+    }
+    cur = T->vstamp;
+    for (i = 0; i < T->ndead; i++)
+        for (k = 0; k < 4; k++) {
+            int32_t v = T->tt[8 * (size_t)T->dead[i] + k];
+            if (v >= 0)
+                T->vseen[v] = cur;
+        }
+    for (i = 0; i < T->nbf; i++)
+        for (k = 0; k < 4; k++)
+            if (T->bf[i].v[k] >= 0)
+                T->vkeep[T->bf[i].v[k]] = cur;
+    for (i = 0; i < T->ndead; i++)
+        for (k = 0; k < 4; k++) {
+            int32_t v = T->tt[8 * (size_t)T->dead[i] + k];
+            if (v >= 0 && v != p && T->vkeep[v] != cur && T->fate[v] == CVM__T3_VERTEX)
+                T->fate[v] = CVM__T3_REDUNDANT;
+        }
+}
+
+/* Replace the cavity by the tetrahedra joining p to its boundary faces. */
+static void fill_cavity(cvm__tet3 *T)
+{
+    size_t i;
+    for (i = 0; i < T->nbf; i++) {
+        cvm__t3_bface *b = &T->bf[i];
+        int32_t nt = cvm__tet3_take_slot(T);
+        int32_t *v = T->tt + 8 * (size_t)nt;
+        v[0] = b->v[0], v[1] = b->v[1], v[2] = b->v[2], v[3] = b->v[3];
+        CVM__T3_TN(T, 4 * (size_t)nt + b->f) = b->out;
+        CVM__T3_TN(T, b->out) = 4 * nt + b->f;
+        T->tmark[b->out >> 2] = 0;
+        b->tet = nt;
+        if (v[3] != CVM__T3_GHOST)
+            T->last = nt;
+    }
+    while (T->ndead > 0)
+        cvm__tet3_release_slot(T, T->dead[--T->ndead]);
+    cvm__tet3_link_around(T);
+}
+
+cvm_status cvm__tet3_insert(cvm__tet3 *T, int32_t p)
+{
+    int32_t t = locate(T, p);
+    const int32_t *v = T->tt + 8 * (size_t)t;
+    cvm_status s;
+    if (v[3] != CVM__T3_GHOST) {
+        const double *pp = PT(T, p);
+        int k;
+        for (k = 0; k < 4; k++) {
+            const double *q = PT(T, v[k]);
+            if (q[0] == pp[0] && q[1] == pp[1] && q[2] == pp[2]
+                && (!T->w || T->w[v[k]] == T->w[p])) {
+                T->merged[p] = v[k];
+                T->fate[p] = CVM__T3_DUPLICATE;
+                return CVM_OK;
+            }
+        }
+        if (T->w && !finite_conflict(T, v, p)) {
+            T->fate[p] = CVM__T3_REDUNDANT;
+            return CVM_OK;
+        }
+    }
+    s = dig_cavity(T, t, p);
+    if (s != CVM_OK)
+        return s;
+    s = cvm__tet3_reserve(T, T->nbf);
+    if (s == CVM_OK)
+        s = cvm__tet3_reserve_hash(T, T->nbf);
+    if (s != CVM_OK) {
+        unmark(T);
+        T->ndead = 0;
+        return s;
+    }
+    if (T->w)
+        mark_vanished(T, p);
+    fill_cavity(T);
+    T->fate[p] = CVM__T3_VERTEX;
+    return CVM_OK;
+}

@@ -1,0 +1,232 @@
+/* tet3_store.c - the flat tetrahedral store: slots, free-slot reuse, workspace growth and face pairing around a new point. */
+#include <string.h>
+
+#include "delaunay3/delaunay3_internal.h"
+
+void cvm__tet3_init(cvm__tet3 *T, cvm__ctx *ctx)
+{
+    memset(T, 0, sizeof *T);
+    T->ctx = ctx;
+    T->last = -1;
+    T->dup_first[0] = T->dup_first[1] = -1;
+    T->redundant_first = -1;
+}
+
+void cvm__tet3_free(cvm__tet3 *T)
+{
+    cvm__ctx *ctx = T->ctx;
+    cvm__free(ctx, T->xyz);
+    cvm__free(ctx, T->w);
+    cvm__free(ctx, T->orig);
+    cvm__free(ctx, T->merged);
+    cvm__free(ctx, T->outid);
+    cvm__free(ctx, T->fate);
+    cvm__free(ctx, T->tt);
+    cvm__free(ctx, T->tmark);
+    cvm__free(ctx, T->freeslot);
+    cvm__free(ctx, T->stack);
+    cvm__free(ctx, T->dead);
+    cvm__free(ctx, T->bf);
+    cvm__free(ctx, T->hash);
+    cvm__free(ctx, T->vloc);
+    cvm__free(ctx, T->etab);
+    cvm__free(ctx, T->vseen);
+    cvm__free(ctx, T->vkeep);
+    cvm__tet3_init(T, ctx);
+}
+
+/* Grow the two per-slot arrays together to ncap slots. */
+static cvm_status grow_slots(cvm__tet3 *T, size_t ncap)
+{
+    size_t bytes;
+    void *p;
+    if (ncap > (size_t)INT32_MAX / 4 || !cvm__mul_ok(ncap, 8 * sizeof(int32_t), &bytes))
+        return CVM_E_NOMEM;
+    p = cvm__realloc(T->ctx, T->tt, bytes);
+    if (!p)
+        return CVM_E_NOMEM;
+    T->tt = p;
+    p = cvm__realloc(T->ctx, T->tmark, ncap);
+    if (!p)
+        return CVM_E_NOMEM;
+    T->tmark = p;
+    /* both hold at least T->cap slots now; only then publish the new size */
+    T->cap = ncap;
+    return CVM_OK;
+}
+
+cvm_status cvm__tet3_reserve(cvm__tet3 *T, size_t need_new)
+{
+    size_t have = T->ndead + T->nfree + (T->cap - T->nslot), ncap;
+    if (need_new <= have && T->tt)
+        return CVM_OK;
+    ncap = T->cap < 64 ? 64 : T->cap;
+    while (ncap - T->nslot + T->ndead + T->nfree < need_new)
+        ncap += ncap / 2;
+    return grow_slots(T, ncap);
+}
+
+/* A slot for a new tetrahedron: a dead one of this cavity, else a free one,
+ * else a fresh one (cvm__tet3_reserve made room). */
+int32_t cvm__tet3_take_slot(cvm__tet3 *T)
+{
+    int32_t t;
+    if (T->ndead > 0)
+        t = T->dead[--T->ndead];
+    else if (T->nfree > 0)
+        t = T->freeslot[--T->nfree];
+    else
+        t = (int32_t)T->nslot++;
+    T->tmark[t] = 0;
+    return t;
+}
+
+/* Free list capacity is reserved ahead (cvm__tet3_reserve_hash), so this
+ * never allocates. */
+void cvm__tet3_release_slot(cvm__tet3 *T, int32_t t)
+{
+    T->tt[8 * (size_t)t] = CVM__T3_DEAD;
+    T->tmark[t] = 0;
+    T->freeslot[T->nfree++] = t;
+}
+
+cvm_status cvm__tet3_reserve_hash(cvm__tet3 *T, size_t nfaces)
+{
+    size_t need = 4 * nfaces, ncap;
+    cvm_status s;
+    s = cvm__grow(T->ctx, (void **)&T->freeslot, &T->freecap, T->nfree + T->ndead, sizeof(int32_t));
+    if (s != CVM_OK)
+        return s;
+    if (need <= T->hashcap)
+        return CVM_OK;
+    ncap = T->hashcap < 256 ? 256 : T->hashcap;
+    while (ncap < need)
+        ncap *= 2;
+    cvm__free(T->ctx, T->hash);
+    T->hash = cvm__calloc(T->ctx, ncap, sizeof *T->hash);
+    T->hashcap = 0;
+    if (!T->hash)
+        return CVM_E_NOMEM;
+    T->hashcap = ncap;
+    T->stamp = 0;
+    return CVM_OK;
+}
+
+static uint64_t edge_key(int32_t a, int32_t b)
+{
+    uint32_t x = (uint32_t)a, y = (uint32_t)b;
+    return x < y ? ((uint64_t)x << 32) | y : ((uint64_t)y << 32) | x;
+}
+
+/* Positions of a tetrahedron other than k and f (k != f). */
+static const int8_t other2[4][4][2] = {
+    { { -1, -1 }, { 2, 3 }, { 1, 3 }, { 1, 2 } },
+    { { 2, 3 }, { -1, -1 }, { 0, 3 }, { 0, 2 } },
+    { { 1, 3 }, { 0, 3 }, { -1, -1 }, { 0, 1 } },
+    { { 1, 2 }, { 0, 2 }, { 0, 1 }, { -1, -1 } },
+};
+
+/* The usual cavity: at most CVM__T3_ETAB - 1 vertices on its boundary. Each
+ * gets a local id (the ghost 0), so an edge indexes a small table directly;
+ * every edge is met exactly twice, so the table is all zero again afterwards.
+ * Returns 0 (nothing changed) when the boundary has too many vertices. */
+static int link_small(cvm__tet3 *T)
+{
+    uint32_t stamp;
+    size_t i;
+    int nv = 1;
+    if (++T->lstamp >= (UINT32_C(1) << 25)) { /* wrapped: forget every old id */
+        memset(T->vloc, 0, T->np * sizeof *T->vloc);
+        T->lstamp = 1;
+    }
+    stamp = T->lstamp;
+    for (i = 0; i < T->nbf; i++) {
+        cvm__t3_bface *b = &T->bf[i];
+        int j;
+        for (j = 0; j < 4; j++) {
+            int32_t x = b->v[j];
+            if (j == b->f)
+                continue;
+            if (x < 0) {
+                b->lid[j] = 0;
+                continue;
+            }
+            if (T->vloc[x] >> 7 != stamp) {
+                if (nv == CVM__T3_ETAB)
+                    return 0;
+                T->vloc[x] = (stamp << 7) | (uint32_t)nv++;
+            }
+            b->lid[j] = (uint8_t)(T->vloc[x] & 127u);
+        }
+    }
+    for (i = 0; i < T->nbf; i++) {
+        const cvm__t3_bface *b = &T->bf[i];
+        int k;
+        for (k = 0; k < 4; k++) {
+            int x, y;
+            int32_t *e, slot;
+            if (k == b->f)
+                continue;
+            x = b->lid[other2[k][b->f][0]], y = b->lid[other2[k][b->f][1]];
+            e = &T->etab[x < y ? x * CVM__T3_ETAB + y : y * CVM__T3_ETAB + x];
+            slot = 4 * b->tet + k;
+            if (*e) {
+                CVM__T3_TN(T, slot) = *e - 1;
+                CVM__T3_TN(T, *e - 1) = slot;
+                *e = 0;
+            } else {
+                *e = slot + 1;
+            }
+        }
+    }
+    return 1;
+}
+
+void cvm__tet3_link_around(cvm__tet3 *T)
+{
+    size_t i, mask = T->hashcap - 1;
+    uint32_t stamp;
+    if (T->etab && link_small(T))
+        return;
+    if (++T->stamp == 0) { /* wrapped: forget every old entry */
+        memset(T->hash, 0, T->hashcap * sizeof *T->hash);
+        T->stamp = 1;
+    }
+    stamp = T->stamp;
+    for (i = 0; i < T->nbf; i++) {
+        const cvm__t3_bface *b = &T->bf[i];
+        int k;
+        for (k = 0; k < 4; k++) {
+            int32_t x = -3, y = -3, slot;
+            uint64_t key;
+            size_t h;
+            int j;
+            if (k == b->f)
+                continue;
+            for (j = 0; j < 4; j++)
+                if (j != k && j != b->f) {
+                    if (x == -3)
+                        x = b->v[j];
+                    else
+                        y = b->v[j];
+                }
+            key = edge_key(x, y);
+            slot = 4 * b->tet + k;
+            h = (size_t)((key * UINT64_C(0x9E3779B97F4A7C15)) >> 40) & mask;
+            for (;;) {
+                cvm__t3_hent *e = &T->hash[h];
+                if (e->stamp != stamp) {
+                    e->stamp = stamp, e->key = key, e->slot = slot;
+                    break;
+                }
+                if (e->key == key) {
+                    CVM__T3_TN(T, slot) = e->slot;
+                    CVM__T3_TN(T, e->slot) = slot;
+                    e->key = ~(uint64_t)0; /* paired: no third face has this edge */
+                    break;
+                }
+                h = (h + 1) & mask;
+            }
+        }
+    }
+}
