@@ -184,7 +184,8 @@ static cvm_status hull_faces(cvm__ctx *ctx, cvm__mesh3 *g, const int32_t *nbr)
 
 /* Delaunay (w NULL) or regular tetrahedralisation of the n points xyz into g:
  * vertices are the points less duplicates, in input order. */
-static cvm_status delaunay(cvm_mesh *m, const double *xyz, const double *w, size_t n, int32_t **nbr_out)
+static cvm_status tetrahedralise(cvm_mesh *m, const double *xyz, const double *w, size_t n,
+                                 int32_t **nbr_out)
 {
     cvm__mesh3 *g = m->m3;
     cvm__tet3 T;
@@ -265,7 +266,7 @@ static cvm_status carve_delaunay(cvm_mesh *m, const cvm__surf3_tris *st)
     double *attr = NULL;
     cvm__face_key *index = NULL;
     size_t i, nst = 0, k, nkeep;
-    cvm_status s = delaunay(m, in->xyz, NULL, in->np, &nbr);
+    cvm_status s = tetrahedralise(m, in->xyz, NULL, in->np, &nbr);
     if (s)
         return s;
     wall = cvm__calloc(&m->ctx, 4 * g->ntet + 1, 1);
@@ -437,7 +438,7 @@ cvm_status cvm__mesh3_triangulate(cvm_mesh *m)
     if (g->in.npoly) {
         s = recover(m);
     } else {
-        s = delaunay(m, g->in.xyz, NULL, g->in.np, &nbr);
+        s = tetrahedralise(m, g->in.xyz, NULL, g->in.np, &nbr);
         if (!s) {
             g->delaunay = 1;
             s = hull_faces(&m->ctx, g, nbr);
@@ -479,7 +480,7 @@ cvm_status cvm__mesh3_set_weights(cvm_mesh *m, const double *w, size_t n)
         g->xyz = NULL;
         g->input_map = NULL;
         drop_output(&m->ctx, g);
-        s = delaunay(m, xyz, w, nv, &nbr);
+        s = tetrahedralise(m, xyz, w, nv, &nbr);
         if (!s) {
             cvm__free(&m->ctx, g->input_map);
             g->input_map = map;
