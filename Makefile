@@ -337,9 +337,11 @@ check-symbols: $(SHARED)
 	sh .ci/check_symbols.sh $(SHARED) .ci/exported_symbols.txt
 
 # lib/ keeps its layers (a lower folder never includes a higher one) and its
-# files within 800 lines, bar the few in .ci/layers_allow.txt.
-check-layers:
+# files within 800 lines, bar the few in .ci/layers_allow.txt; no two of its
+# files depend on each other in a circle (symbols of the objects, nm).
+check-layers: $(LIB_OBJ)
 	sh .ci/check_layers.sh
+	python3 .ci/check_cycles.py $(BUILD)/obj/lib
 
 # The venv of every Python that a target runs (the CLI tests' checker, the
 # binding tests, the benchmarks), from tests/requirements.txt.

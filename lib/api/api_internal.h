@@ -7,26 +7,15 @@
 
 #include "common/common_internal.h"
 #include "delaunay/delaunay_internal.h"
+#include "delaunay/domain.h"
 #include "io/io_internal.h"
 
 /* Options live in one table; index with cvm__option_slot(). */
 #define CVM__NOPTIONS 48
 
-#define CVM__NBIN_ANGLE 18  /* CVM_HIST_ANGLE_DEG */
-#define CVM__NBIN_DEGREE 16 /* CVM_HIST_DEGREE */
 #define CVM__NBIN_Q 20      /* the most bins of CVM_HIST_Q1 .. CVM_HIST_Q5 */
 /* CVM_MEASURE_Q1_MEAN_DEG .. CVM_MEASURE_Q5_MIN_BOUNDARY */
 #define CVM__NQ_MEASURES ((int)CVM_MEASURE_Q5_MIN_BOUNDARY - (int)CVM_MEASURE_Q1_MEAN_DEG + 1)
-
-/* Angles, edges and area of the domain triangles (lib/api/quality.c). */
-typedef struct cvm__tri_quality {
-    size_t nt;
-    double min_angle, max_angle;
-    size_t n_regular, n_obtuse;
-    double min_edge, max_edge;     /* lengths */
-    double area, area_c, min_area; /* Neumaier sum and its compensation */
-    double angle_hist[CVM__NBIN_ANGLE];
-} cvm__tri_quality;
 
 /* Whole-mesh summaries of the power dual (lib/api/dual_quality.c). */
 typedef struct cvm__dual_summary {

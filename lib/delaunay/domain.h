@@ -31,4 +31,28 @@ cvm_status cvm__domain_edges(cvm__ctx *ctx, const cvm__tri2 *T, int constrained_
                              cvm__edges *out);
 void cvm__edges_free(cvm__ctx *ctx, cvm__edges *e);
 
+/* ---- measures of the domain triangles (domain_quality.c) ---- */
+
+#define CVM__NBIN_ANGLE 18  /* CVM_HIST_ANGLE_DEG */
+#define CVM__NBIN_DEGREE 16 /* CVM_HIST_DEGREE */
+
+/* Angles, edges and area of the domain triangles. */
+typedef struct cvm__tri_quality {
+    size_t nt;
+    double min_angle, max_angle;   /* degrees */
+    size_t n_regular, n_obtuse;    /* angles in [55, 65] degrees; triangles with a dot < 0 */
+    double min_edge, max_edge;     /* lengths */
+    double area, area_c, min_area; /* Neumaier sum and its compensation */
+    double angle_hist[CVM__NBIN_ANGLE]; /* 10-degree bins, the last one open */
+} cvm__tri_quality;
+
+/* The measures of the domain triangles of T into q (a domain without
+ * triangles gives nt 0 and the extremes +-HUGE_VAL/0). */
+void cvm__domain_triangle_stats(const cvm__tri2 *T, cvm__tri_quality *q);
+/* Degrees of the interior vertices of the domain of T: hist
+ * (CVM__NBIN_DEGREE bins, by degree, the last one open) and *n_interior.
+ * CVM_OK or CVM_E_NOMEM (no message). */
+cvm_status cvm__domain_degree_stats(cvm__ctx *ctx, const cvm__tri2 *T, double *hist,
+                                    size_t *n_interior);
+
 #endif

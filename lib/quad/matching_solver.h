@@ -143,4 +143,10 @@ cvm_status cvm__mt_grow(solver *s, cvm_index v, cvm_index u);
 cvm_status cvm__mt_make_blossom(solver *s, cvm_index v, cvm_index u);
 cvm_status cvm__mt_expand(solver *s, cvm_index b);
 
+/* Heap order: by key, ties by id (deterministic). */
+static inline int ent_less(const heap_ent *a, const heap_ent *b)
+{
+    return a->key < b->key || (a->key == b->key && a->id < b->id);
+}
+
 #endif
