@@ -1357,7 +1357,9 @@ typedef enum cvm_algorithm {
  * pass, so all three algorithms meet the same bounds; after the frontal and the AFLR
  * passes the clean-ups, swaps and smoothing also keep frontal's acceptance bound, so
  * their triangles end with a circumradius of at most 0.707 x the mean size (unless a
- * Steiner or time limit stopped the run). Segments are split
+ * Steiner or time limit stopped the run, or a segment split was refused: see the
+ * limitation below; the report lists every triangle over 0.707 x the size as
+ * CVM_UNMET_SIZE). Segments are split
  * where encroached (concentric shells near small input angles, as Triangle does), so
  * every input segment stays a union of mesh edges; with no segments, or with
  * CVM_OPT_KEEP_CONVEX_HULL, the convex hull edges become segments (with marker 0).
@@ -1411,7 +1413,9 @@ CVM_API cvm_status cvm_mesh_refine(cvm_mesh *m, const cvm_sizing *sizing, cvm_al
 
 /** Reasons of cvm_mesh_copy_refine_unmet(), combined as bits. */
 #define CVM_UNMET_ANGLE 1             /**< an angle below CVM_OPT_MIN_ANGLE_DEG */
-#define CVM_UNMET_SIZE 2              /**< too big for the sizing or CVM_OPT_MAX_AREA */
+#define CVM_UNMET_SIZE 2              /**< too big for the sizing (after CVM_ALGO_FRONTAL and
+                                           CVM_ALGO_AFLR: circumradius over 0.707 x the mean
+                                           size) or CVM_OPT_MAX_AREA */
 #define CVM_UNMET_SMALL_INPUT_ANGLE 4 /**< subtended by a small input angle (left alone on
                                            purpose, counted in CVM_MEASURE_REFINE_SMALL_INPUT_ANGLE) */
 
