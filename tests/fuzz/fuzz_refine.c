@@ -22,8 +22,7 @@
  *
  * Option bytes (then the PSLG of fuzz_pslg.h; missing bytes read as 0):
  *   byte 0  bits 0-1 algorithm (0, 1 Delaunay, 2 frontal, 3 AFLR); 2 diametral
- *           lens; 3 march segments; 4 KEEP_SEGMENT_VERTICES = 0 (with a size,
- *           without holes and free segments);
+ *           lens; 3 march segments; 4 KEEP_SEGMENT_VERTICES = 0 (with a size);
  *           5 keep the convex hull; 6 a uniform size; 7 a maximum area
  *   byte 1  minimum angle 20 + 13 b / 255 degrees
  *   byte 2  size 1 + (b & 31) / 4 (box units)
@@ -98,10 +97,7 @@ static void decode(options *o, fuzz_pslg *g, const uint8_t *data, size_t size)
         o->h = g->scale * (1.0 + (b2 & 31) / 4.0);
     if (b0 & 128)
         o->max_area = g->scale * g->scale * (0.5 + b3 / 16.0);
-    /* Not with holes or free segments yet: after the re-discretisation a
-     * hole polygon or a segment outside the domain loses its constrained
-     * edges (cvm_mesh_check fails). */
-    o->keep_seg = o->h > 0 && ((b0 >> 4) & 1) && g->nhole == 0 && g->ninner == 0;
+    o->keep_seg = o->h > 0 && ((b0 >> 4) & 1);
     o->smooth_sweeps = (b4 & 7) - 1;
     o->smooth_method = (b4 >> 3) & 3;
     o->relax_sweeps = ((b4 >> 5) & 7) - 1;
