@@ -115,17 +115,18 @@ static double rs_turn(const double *a, const double *b, const double *c)
     return cvm__turn_angle(a, b, c) * 180.0 / CVM__PI;
 }
 
-/* Every constrained edge (those outside the domain too: a segment in a hole
- * or beyond the outer boundary stays in the rebuilt triangulation), incidences,
- * and which vertices may be inner chain vertices: exactly two such edges, both
- * with a domain side, of segments with the same marker, turning by less than
- * RS_TURN_DEG. A vertex with an edge outside the domain is never inner, so
- * such edges form chains of one edge, which are kept as they are. */
+/* Every constrained edge (those outside the domain too, which the rebuild
+ * keeps), incidences, and which vertices may be inner chain vertices: exactly
+ * two such edges, both with a domain side, of segments with the same marker,
+ * turning by less than RS_TURN_DEG. A vertex with an edge outside the domain,
+ * or on the kept convex hull, is never inner (a new point on a hull edge rounds
+ * a few ulps off it, and the rebuilt hull would span slivers over the reflex
+ * ones; the march splits hull edges on the mesh, where the hull just turns). */
 static cvm_status rs_graph(rs_state *S)
 {
     const cvm__tri2 *T = &S->m->tri;
     size_t t, k, v;
-    int j;
+    int j, keep_hull = cvm__opt(S->m, CVM_OPT_KEEP_CONVEX_HULL) != 0;
     unsigned char *outside = cvm__calloc(S->ctx, S->nv + 1, 1);
     if (!outside)
         return CVM_E_NOMEM;
@@ -153,7 +154,7 @@ static cvm_status rs_graph(rs_state *S)
             S->e[S->ne].b = b;
             S->e[S->ne].seg = T->te[h];
             S->ne++;
-            if (!in && !nb_in)
+            if ((!in && !nb_in) || (keep_hull && cvm__tri2_is_ghost(T, nb)))
                 outside[a] = outside[b] = 1;
         }
     }
