@@ -80,7 +80,7 @@ FUZZ_TARGETS := poly_read node_read cdt vtu_read refine optimise
 # The targets make check runs for FUZZ_TIME seconds with a fixed seed. A
 # target with open findings it can reach (tests/fuzz/open/<target>/) leaves
 # this list until they are fixed: a timed run would fail on those known inputs.
-FUZZ_CHECK_TARGETS := poly_read node_read cdt vtu_read refine
+FUZZ_CHECK_TARGETS := poly_read node_read cdt vtu_read refine optimise
 FUZZ_BINS := $(FUZZ_TARGETS:%=$(BUILD)/fuzz/fuzz_%)
 REPLAY_BINS := $(FUZZ_TARGETS:%=$(BUILD)/fuzz/replay_%)
 FUZZ_SUPPORT_OBJ := $(BUILD)/obj/tests/fuzz/mesh_oracle.o $(BUILD)/obj/tests/fuzz/fuzz_input.o \
