@@ -2,24 +2,21 @@
  * mesh_read_vtu.c - cvm_mesh_read of a .vtu: rebuilds the triangulated,
  * weighted mesh the file holds and proves it is the same mesh.
  *
- * The file's points become the input points (with their markers and
- * attributes); its line cells, and the boundary edges of its triangle set,
- * become segments (a file without line cells is first tried as the plain
- * Delaunay triangulation of its points). The handle triangulates that PSLG;
- * triangles that fill a hole of the file's domain seed hole points (one per
- * connected region) and the PSLG is triangulated again; the weights of the
- * point data "weight" are set (regular triangulation). When that does not
- * give the file's triangles (weights under which some vertex has an empty
- * power cell make the result depend on the starting triangulation), every
- * inner edge of the file is inserted as a temporary constraint, so the
- * triangulation is the file's, the constraints are dropped, the weights set,
- * and the Lawson flips of cvm_mesh_set_weights() run: the file is accepted
- * when they leave its triangles alone, i.e. when it is what
- * cvm_mesh_set_weights() keeps. The result must have exactly the file's
- * triangles (as vertex sets); then the kernel's triangle slots are reordered
- * and rotated to the file's order and first vertices, so that writing the
- * mesh again reproduces the file. Everything is built in engine structures
- * of its own (struct rebuild) that replace the handle's mesh only on success.
+ * The file's points become the input points (markers, attributes; a point in
+ * no triangle must lie outside its domain); its line cells and the boundary
+ * edges of its triangles become segments (a file without line cells is first
+ * tried as the Delaunay triangulation of its points). The handle triangulates
+ * that PSLG; regions with no file triangle seed hole points (one each) and it
+ * is triangulated again; the point data "weight" is set. When that does not
+ * give the file's triangles (weights under which a power cell is empty make
+ * the result depend on the start), every inner edge of the file becomes a
+ * temporary constraint, the constraints are dropped, the weights set and the
+ * Lawson flips of cvm_mesh_set_weights() run: the file is accepted when they
+ * leave its triangles alone. The result must have exactly the file's
+ * triangles (as vertex sets); the kernel's slots are then reordered and
+ * rotated to the file's order, so writing the mesh again reproduces the file.
+ * All is built in engine structures (struct rebuild) that replace the
+ * handle's mesh only on success.
  */
 #include <math.h>
 #include <stdint.h>
@@ -112,170 +109,6 @@ static int32_t find_slot(const tkey *keys, size_t n, const tkey *key)
             hi = mid;
     }
     return -1;
-}
-
-/* Check the file's triangles: distinct corners, every point used; collect
- * the edges used by one triangle only (boundary) into *bnd and those used by
- * two (inner) into *inner (2 ids per edge). */
-static cvm_status file_checks(cvm_mesh *m, const char *path, const cvm__vtu_mesh *vm,
-                              int32_t **bnd, size_t *nbnd, int32_t **inner, size_t *ninner)
-{
-    size_t k, n = 0, ni = 0, i, ne = 3 * vm->nt;
-    uint8_t *used = cvm__calloc(&m->ctx, vm->p.np + 1, 1);
-    tkey *e = cvm__malloc(&m->ctx, (ne + 1) * sizeof *e);
-    int32_t *b = cvm__malloc(&m->ctx, (2 * ne + 1) * sizeof *b);
-    int32_t *in = cvm__malloc(&m->ctx, (ne + 1) * sizeof *in);
-    cvm_status s = CVM_OK;
-    *bnd = NULL;
-    *inner = NULL;
-    if (!used || !e || !b || !in) {
-        s = cvm__nomem(&m->ctx);
-        goto out;
-    }
-    if (vm->nt == 0) {
-        s = cvm__error(&m->ctx, CVM_E_INPUT_EMPTY, CVM_ENT_NONE, -1, "%s has no triangle cells", path);
-        goto out;
-    }
-    for (k = 0; k < vm->nt; k++) {
-        const int32_t *t = vm->tri + 3 * k;
-        if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) {
-            s = cvm__error(&m->ctx, CVM_E_INPUT_DEGENERATE, CVM_ENT_TRIANGLE, (int64_t)k,
-                           "%s: triangle %lu (points %ld %ld %ld) repeats a point", path,
-                           (unsigned long)k, (long)t[0], (long)t[1], (long)t[2]);
-            goto out;
-        }
-        for (i = 0; i < 3; i++) {
-            int32_t a = t[i], c = t[(i + 1) % 3];
-            const double *pa = vm->p.xy + 2 * (size_t)a, *pc = vm->p.xy + 2 * (size_t)c;
-            /* said here in the file's terms: the rebuild would only see a
-               zero-length boundary segment the file does not have */
-            if (pa[0] == pc[0] && pa[1] == pc[1]) {
-                s = cvm__error(&m->ctx, CVM_E_INPUT_DEGENERATE, CVM_ENT_TRIANGLE, (int64_t)k,
-                               "%s: triangle %lu (points %ld %ld %ld) is degenerate: points %ld "
-                               "and %ld are both at (%.17g, %.17g)", path, (unsigned long)k,
-                               (long)t[0], (long)t[1], (long)t[2], (long)a, (long)c, pa[0], pa[1]);
-                goto out;
-            }
-            used[a] = 1;
-            /* edge key: (lo, hi, -1) with src = triangle */
-            make_key(&e[3 * k + i], a < c ? a : c, a < c ? c : a, INT32_MAX, (int32_t)k);
-        }
-    }
-    for (k = 0; k < vm->p.nseg; k++) {
-        const int32_t *l = vm->p.seg + 2 * k;
-        const double *pa = vm->p.xy + 2 * (size_t)l[0], *pb = vm->p.xy + 2 * (size_t)l[1];
-        if (pa[0] == pb[0] && pa[1] == pb[1]) {
-            s = cvm__error(&m->ctx, CVM_E_INPUT_DEGENERATE, CVM_ENT_NONE, -1,
-                           "%s: line cell %lu (points %ld-%ld) has zero length: both ends are at "
-                           "(%.17g, %.17g)", path, (unsigned long)k, (long)l[0], (long)l[1],
-                           pa[0], pa[1]);
-            goto out;
-        }
-    }
-    for (i = 0; i < vm->p.np; i++)
-        if (!used[i]) {
-            s = cvm__error(&m->ctx, CVM_E_INPUT_DEGENERATE, CVM_ENT_INPUT_POINT, (int64_t)i,
-                           "%s: point %lu lies in no triangle", path, (unsigned long)i);
-            goto out;
-        }
-    qsort(e, ne, sizeof *e, cmp_key);
-    for (k = 0; k < ne; k = i) {
-        for (i = k + 1; i < ne && e[i].v[0] == e[k].v[0] && e[i].v[1] == e[k].v[1]; i++)
-            ;
-        if (i - k > 2) {
-            s = cvm__error(&m->ctx, CVM_E_INPUT_DEGENERATE, CVM_ENT_TRIANGLE, (int64_t)e[k + 2].src,
-                           "%s: edge %ld-%ld has more than two triangles (triangle %ld is one)",
-                           path, (long)e[k].v[0], (long)e[k].v[1], (long)e[k + 2].src);
-            goto out;
-        }
-        if (i - k == 1) {
-            b[2 * n] = e[k].v[0];
-            b[2 * n + 1] = e[k].v[1];
-            n++;
-        } else {
-            in[2 * ni] = e[k].v[0];
-            in[2 * ni + 1] = e[k].v[1];
-            ni++;
-        }
-    }
-    *bnd = b;
-    b = NULL;
-    *nbnd = n;
-    *inner = in;
-    in = NULL;
-    *ninner = ni;
-out:
-    cvm__free(&m->ctx, used);
-    cvm__free(&m->ctx, e);
-    cvm__free(&m->ctx, b);
-    cvm__free(&m->ctx, in);
-    return s;
-}
-
-/* Segments: the file's lines, then each boundary edge that is not a line
- * (*nreal_out of them), then each inner edge that is not a line (the
- * temporary constraints of a forced rebuild, marker 0). */
-static cvm_status segments(cvm_mesh *m, const cvm__vtu_mesh *vm, const int32_t *bnd, size_t nbnd,
-                           const int32_t *inner, size_t ninner, int32_t **seg_out,
-                           int32_t **mark_out, size_t *n_out, size_t *nreal_out)
-{
-    size_t nl = vm->p.nseg, n = 0, k;
-    int32_t *seg = cvm__malloc(&m->ctx, (2 * (nl + nbnd + ninner) + 1) * sizeof *seg);
-    int32_t *mark = cvm__malloc(&m->ctx, (nl + nbnd + ninner + 1) * sizeof *mark);
-    tkey *lines = cvm__malloc(&m->ctx, (nl + 1) * sizeof *lines);
-    if (!seg || !mark || !lines) {
-        cvm__free(&m->ctx, seg);
-        cvm__free(&m->ctx, mark);
-        cvm__free(&m->ctx, lines);
-        return cvm__nomem(&m->ctx);
-    }
-    for (k = 0; k < nl; k++) {
-        int32_t a = vm->p.seg[2 * k], b = vm->p.seg[2 * k + 1];
-        seg[2 * n] = a;
-        seg[2 * n + 1] = b;
-        mark[n++] = vm->p.smark ? vm->p.smark[k] : 1;
-        make_key(&lines[k], a < b ? a : b, a < b ? b : a, INT32_MAX, 0);
-    }
-    qsort(lines, nl, sizeof *lines, cmp_key);
-    for (k = 0; k < nbnd; k++) {
-        tkey key;
-        make_key(&key, bnd[2 * k], bnd[2 * k + 1], INT32_MAX, 0);
-        if (find_slot(lines, nl, &key) >= 0)
-            continue;
-        seg[2 * n] = bnd[2 * k];
-        seg[2 * n + 1] = bnd[2 * k + 1];
-        mark[n++] = 1;
-    }
-    *nreal_out = n;
-    for (k = 0; k < ninner; k++) { /* temporary constraints (forced rebuild) */
-        tkey key;
-        make_key(&key, inner[2 * k], inner[2 * k + 1], INT32_MAX, 0);
-        if (find_slot(lines, nl, &key) >= 0)
-            continue;
-        seg[2 * n] = inner[2 * k];
-        seg[2 * n + 1] = inner[2 * k + 1];
-        mark[n++] = 0;
-    }
-    cvm__free(&m->ctx, lines);
-    *seg_out = seg;
-    *mark_out = mark;
-    *n_out = n;
-    return CVM_OK;
-}
-
-/* File triangle keys in vertex ids (through rb's input map), sorted. */
-static tkey *file_keys(rebuild *rb, const cvm__vtu_mesh *vm)
-{
-    tkey *k = cvm__malloc(&rb->ctx, (vm->nt + 1) * sizeof *k);
-    size_t i;
-    const int32_t *map = rb->out.input_map;
-    if (!k)
-        return NULL;
-    for (i = 0; i < vm->nt; i++)
-        make_key(&k[i], map[vm->tri[3 * i]], map[vm->tri[3 * i + 1]], map[vm->tri[3 * i + 2]],
-                 (int32_t)i);
-    qsort(k, vm->nt, sizeof *k, cmp_key);
-    return k;
 }
 
 /* The file's triangles bucketed by a uniform grid over the points, each
@@ -412,6 +245,191 @@ static int in_file_domain(const cvm__vtu_mesh *vm, const tri_grid *g, const doub
         if (in_file_triangle(vm, (size_t)g->idx[e], p))
             return 1;
     return 0;
+}
+
+/* A point that is no triangle's corner must lie outside the file's domain
+ * (exact test): cvm_mesh_triangulate() leaves such vertices (ends of segments
+ * bounding no region) where it carved, and the rebuild carves them again. */
+static cvm_status unused_points(cvm_mesh *m, const char *path, const cvm__vtu_mesh *vm,
+                                const uint8_t *used)
+{
+    tri_grid g;
+    size_t i;
+    cvm_status s = CVM_OK;
+    memset(&g, 0, sizeof g);
+    for (i = 0; i < vm->p.np && used[i]; i++)
+        ;
+    if (i < vm->p.np && grid_build(&m->ctx, vm, &g))
+        return cvm__nomem(&m->ctx);
+    for (; i < vm->p.np && !s; i++) {
+        const double *p = vm->p.xy + 2 * i;
+        if (!used[i] && in_file_domain(vm, &g, p))
+            s = cvm__error(&m->ctx, CVM_E_INPUT_DEGENERATE, CVM_ENT_INPUT_POINT, (int64_t)i,
+                           "%s: point %lu at (%.17g, %.17g) lies in the mesh but is a corner of "
+                           "no triangle", path, (unsigned long)i, p[0], p[1]);
+    }
+    grid_free(&m->ctx, &g);
+    return s;
+}
+
+/* Check the file's triangles: distinct corners, no unused point inside; collect
+ * the edges used by one triangle only (boundary) into *bnd and those used by
+ * two (inner) into *inner (2 ids per edge). */
+static cvm_status file_checks(cvm_mesh *m, const char *path, const cvm__vtu_mesh *vm,
+                              int32_t **bnd, size_t *nbnd, int32_t **inner, size_t *ninner)
+{
+    size_t k, n = 0, ni = 0, i, ne = 3 * vm->nt;
+    uint8_t *used = cvm__calloc(&m->ctx, vm->p.np + 1, 1);
+    tkey *e = cvm__malloc(&m->ctx, (ne + 1) * sizeof *e);
+    int32_t *b = cvm__malloc(&m->ctx, (2 * ne + 1) * sizeof *b);
+    int32_t *in = cvm__malloc(&m->ctx, (ne + 1) * sizeof *in);
+    cvm_status s = CVM_OK;
+    *bnd = NULL;
+    *inner = NULL;
+    if (!used || !e || !b || !in) {
+        s = cvm__nomem(&m->ctx);
+        goto out;
+    }
+    if (vm->nt == 0) {
+        s = cvm__error(&m->ctx, CVM_E_INPUT_EMPTY, CVM_ENT_NONE, -1, "%s has no triangle cells", path);
+        goto out;
+    }
+    for (k = 0; k < vm->nt; k++) {
+        const int32_t *t = vm->tri + 3 * k;
+        if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) {
+            s = cvm__error(&m->ctx, CVM_E_INPUT_DEGENERATE, CVM_ENT_TRIANGLE, (int64_t)k,
+                           "%s: triangle %lu (points %ld %ld %ld) repeats a point", path,
+                           (unsigned long)k, (long)t[0], (long)t[1], (long)t[2]);
+            goto out;
+        }
+        for (i = 0; i < 3; i++) {
+            int32_t a = t[i], c = t[(i + 1) % 3];
+            const double *pa = vm->p.xy + 2 * (size_t)a, *pc = vm->p.xy + 2 * (size_t)c;
+            /* said here in the file's terms: the rebuild would only see a
+               zero-length boundary segment the file does not have */
+            if (pa[0] == pc[0] && pa[1] == pc[1]) {
+                s = cvm__error(&m->ctx, CVM_E_INPUT_DEGENERATE, CVM_ENT_TRIANGLE, (int64_t)k,
+                               "%s: triangle %lu (points %ld %ld %ld) is degenerate: points %ld "
+                               "and %ld are both at (%.17g, %.17g)", path, (unsigned long)k,
+                               (long)t[0], (long)t[1], (long)t[2], (long)a, (long)c, pa[0], pa[1]);
+                goto out;
+            }
+            used[a] = 1;
+            /* edge key: (lo, hi, -1) with src = triangle */
+            make_key(&e[3 * k + i], a < c ? a : c, a < c ? c : a, INT32_MAX, (int32_t)k);
+        }
+    }
+    for (k = 0; k < vm->p.nseg; k++) {
+        const int32_t *l = vm->p.seg + 2 * k;
+        const double *pa = vm->p.xy + 2 * (size_t)l[0], *pb = vm->p.xy + 2 * (size_t)l[1];
+        if (pa[0] == pb[0] && pa[1] == pb[1]) {
+            s = cvm__error(&m->ctx, CVM_E_INPUT_DEGENERATE, CVM_ENT_NONE, -1,
+                           "%s: line cell %lu (points %ld-%ld) has zero length: both ends are at "
+                           "(%.17g, %.17g)", path, (unsigned long)k, (long)l[0], (long)l[1],
+                           pa[0], pa[1]);
+            goto out;
+        }
+    }
+    if ((s = unused_points(m, path, vm, used)))
+        goto out;
+    qsort(e, ne, sizeof *e, cmp_key);
+    for (k = 0; k < ne; k = i) {
+        for (i = k + 1; i < ne && e[i].v[0] == e[k].v[0] && e[i].v[1] == e[k].v[1]; i++)
+            ;
+        if (i - k > 2) {
+            s = cvm__error(&m->ctx, CVM_E_INPUT_DEGENERATE, CVM_ENT_TRIANGLE, (int64_t)e[k + 2].src,
+                           "%s: edge %ld-%ld has more than two triangles (triangle %ld is one)",
+                           path, (long)e[k].v[0], (long)e[k].v[1], (long)e[k + 2].src);
+            goto out;
+        }
+        if (i - k == 1) {
+            b[2 * n] = e[k].v[0];
+            b[2 * n + 1] = e[k].v[1];
+            n++;
+        } else {
+            in[2 * ni] = e[k].v[0];
+            in[2 * ni + 1] = e[k].v[1];
+            ni++;
+        }
+    }
+    *bnd = b;
+    b = NULL;
+    *nbnd = n;
+    *inner = in;
+    in = NULL;
+    *ninner = ni;
+out:
+    cvm__free(&m->ctx, used);
+    cvm__free(&m->ctx, e);
+    cvm__free(&m->ctx, b);
+    cvm__free(&m->ctx, in);
+    return s;
+}
+
+/* Segments: the file's lines, then each boundary edge that is not a line
+ * (*nreal_out of them), then each inner edge that is not a line (the
+ * temporary constraints of a forced rebuild, marker 0). */
+static cvm_status segments(cvm_mesh *m, const cvm__vtu_mesh *vm, const int32_t *bnd, size_t nbnd,
+                           const int32_t *inner, size_t ninner, int32_t **seg_out,
+                           int32_t **mark_out, size_t *n_out, size_t *nreal_out)
+{
+    size_t nl = vm->p.nseg, n = 0, k;
+    int32_t *seg = cvm__malloc(&m->ctx, (2 * (nl + nbnd + ninner) + 1) * sizeof *seg);
+    int32_t *mark = cvm__malloc(&m->ctx, (nl + nbnd + ninner + 1) * sizeof *mark);
+    tkey *lines = cvm__malloc(&m->ctx, (nl + 1) * sizeof *lines);
+    if (!seg || !mark || !lines) {
+        cvm__free(&m->ctx, seg);
+        cvm__free(&m->ctx, mark);
+        cvm__free(&m->ctx, lines);
+        return cvm__nomem(&m->ctx);
+    }
+    for (k = 0; k < nl; k++) {
+        int32_t a = vm->p.seg[2 * k], b = vm->p.seg[2 * k + 1];
+        seg[2 * n] = a;
+        seg[2 * n + 1] = b;
+        mark[n++] = vm->p.smark ? vm->p.smark[k] : 1;
+        make_key(&lines[k], a < b ? a : b, a < b ? b : a, INT32_MAX, 0);
+    }
+    qsort(lines, nl, sizeof *lines, cmp_key);
+    for (k = 0; k < nbnd; k++) {
+        tkey key;
+        make_key(&key, bnd[2 * k], bnd[2 * k + 1], INT32_MAX, 0);
+        if (find_slot(lines, nl, &key) >= 0)
+            continue;
+        seg[2 * n] = bnd[2 * k];
+        seg[2 * n + 1] = bnd[2 * k + 1];
+        mark[n++] = 1;
+    }
+    *nreal_out = n;
+    for (k = 0; k < ninner; k++) { /* temporary constraints (forced rebuild) */
+        tkey key;
+        make_key(&key, inner[2 * k], inner[2 * k + 1], INT32_MAX, 0);
+        if (find_slot(lines, nl, &key) >= 0)
+            continue;
+        seg[2 * n] = inner[2 * k];
+        seg[2 * n + 1] = inner[2 * k + 1];
+        mark[n++] = 0;
+    }
+    cvm__free(&m->ctx, lines);
+    *seg_out = seg;
+    *mark_out = mark;
+    *n_out = n;
+    return CVM_OK;
+}
+
+/* File triangle keys in vertex ids (through rb's input map), sorted. */
+static tkey *file_keys(rebuild *rb, const cvm__vtu_mesh *vm)
+{
+    tkey *k = cvm__malloc(&rb->ctx, (vm->nt + 1) * sizeof *k);
+    size_t i;
+    const int32_t *map = rb->out.input_map;
+    if (!k)
+        return NULL;
+    for (i = 0; i < vm->nt; i++)
+        make_key(&k[i], map[vm->tri[3 * i]], map[vm->tri[3 * i + 1]], map[vm->tri[3 * i + 2]],
+                 (int32_t)i);
+    qsort(k, vm->nt, sizeof *k, cmp_key);
+    return k;
 }
 
 /* Hole seeds: the centroid of one triangle of each connected set of domain
