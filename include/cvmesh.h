@@ -1353,7 +1353,8 @@ typedef enum cvm_algorithm {
  * by default), one point per front edge on its bisector (the nearest to the edge of
  * the equilateral point at the local size, the circumcentre and two off-centres; a
  * point closer than 0.7 x the edge to a vertex is skipped), and records a layer index
- * per triangle (cvm_mesh_copy_layer_index()). Both finish with a Delaunay-refinement
+ * per triangle (cvm_mesh_copy_layer_index()); with neither a sizing nor CVM_OPT_MAX_AREA
+ * its pass stops after 4 points per vertex it started with. Both finish with a Delaunay-refinement
  * pass, so all three algorithms meet the same bounds; after the frontal and the AFLR
  * passes the clean-ups, swaps and smoothing also keep frontal's acceptance bound, so
  * their triangles end with a circumradius of at most 0.707 x the mean size (unless a
@@ -1385,8 +1386,9 @@ typedef enum cvm_algorithm {
  *           CVM_OPT_SMOOTH_SWEEPS (smoothing moves Steiner points), then
  *           CVM_OPT_RESTORE_DELAUNAY. CVM_ALGO_AFLR: CVM_OPT_AFLR_SMOOTH_LAYERS
  *           also smooths during the pass.
- * Stops:    on the Steiner limit, the time limit or cancellation the mesh is valid
- *           (conforming, constrained Delaunay) with the points inserted so far.
+ * Stops:    on the Steiner limit, the time limit or cancellation (checked during the
+ *           smoothing too) the mesh is valid (conforming, constrained Delaunay) with the
+ *           points inserted so far.
  * Determinism: same input, options and sizing give bit-identical output (except
  *           where the time limit stops the run).
  * @return CVM_OK

@@ -510,6 +510,17 @@ static void sm_more_candidates(const sm_ring *r, const double *x, double l2, dou
     }
 }
 
+/* The status of a smoothing stopped by the time limit or the progress
+ * callback (cvm__tick, polled per vertex visit): every move made keeps the
+ * mesh valid, so it stops where it is. */
+static cvm_status sm_stopped(cvm__ctx *ctx, cvm_status s)
+{
+    return cvm__error(ctx, s, CVM_ENT_NONE, -1,
+                      "refinement %s while smoothing; the mesh is valid but some triangles may "
+                      "not meet the bounds",
+                      s == CVM_INCOMPLETE_CANCELLED ? "was cancelled" : "reached the time limit");
+}
+
 cvm_status cvm__rf_smooth(cvm__refiner *R, size_t first, const uint8_t *only, int relax, int sweeps,
                          size_t *moves_out)
 {
@@ -519,6 +530,7 @@ cvm_status cvm__rf_smooth(cvm__refiner *R, size_t first, const uint8_t *only, in
     uint8_t *cur = NULL, *next = NULL;
     size_t cap = 0, v, moves = 0;
     int sweep, err = 0;
+    cvm_status stop = CVM_OK;
     if (moves_out)
         *moves_out = 0;
     if (relax < 0)
@@ -561,6 +573,8 @@ cvm_status cvm__rf_smooth(cvm__refiner *R, size_t first, const uint8_t *only, in
             int big0, big1;
             if (!cur[v] || (only && !only[v]))
                 continue;
+            if ((stop = cvm__tick(T->ctx, 1, CVM_STAGE_REFINE, 1.0)))
+                break;
             n = sm_star(T, (int32_t)v, &star, &cap, &err);
             /* a smart sweep leaves a star whose angles are all in [55, 65]
              * degrees alone (below): tested before gathering its ring */
@@ -639,7 +653,7 @@ cvm_status cvm__rf_smooth(cvm__refiner *R, size_t first, const uint8_t *only, in
             sm_moved(T, v, star, n, cur, next);
             moves++;
         }
-        if (moves == moved_before && !relaxing)
+        if (stop || (moves == moved_before && !relaxing))
             break;
         {
             uint8_t *sw = cur;
@@ -653,7 +667,7 @@ cvm_status cvm__rf_smooth(cvm__refiner *R, size_t first, const uint8_t *only, in
     cvm__free(T->ctx, next);
     if (moves_out)
         *moves_out = moves;
-    return CVM_OK;
+    return stop ? sm_stopped(T->ctx, stop) : CVM_OK;
 }
 
 /* ---- Freitag-Ollivier max-min smoothing ---- */
@@ -772,6 +786,10 @@ cvm_status cvm__rf_smooth_maxmin(cvm__refiner *R, size_t first, const uint8_t *o
             int big0, bigm, big1, moved = 0;
             if (!cur[v] || (only && !only[v]))
                 continue;
+            if ((s = cvm__tick(T->ctx, 1, CVM_STAGE_REFINE, 1.0))) {
+                s = sm_stopped(T->ctx, s);
+                goto done;
+            }
             n = sm_star(T, (int32_t)v, &star, &cap, &err);
             if (err)
                 break;
