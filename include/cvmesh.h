@@ -488,8 +488,10 @@ typedef enum cvm_option {
      *  Combined with the sizing of cvm_mesh_refine(): a triangle must meet both. */
     CVM_OPT_MAX_AREA = 201,
     /** Encroachment test of segments: 0 (default) diametral circle (a point p encroaches
-     *  segment ab when angle apb > 90 degrees); 1 diametral lens (angle apb >= 180 - 2 x
-     *  CVM_OPT_MIN_ANGLE_DEG, Shewchuk's lens): fewer segment splits, guarantee 25.7
+     *  segment ab when angle apb > 90 degrees; boundary circumcentres stay in the domain,
+     *  as Triangle's -D); 1 diametral lens (angle apb >= 180 - 2 x
+     *  CVM_OPT_MIN_ANGLE_DEG, Shewchuk's lens, Triangle's default): fewer segment splits,
+     *  about half the vertices between nearly coincident segments, guarantee 25.7
      *  degrees. Integer, [0, 1]. */
     CVM_OPT_ENCROACH_LENS = 202,
     /** 1 (default): every input vertex of a segment stays where it is; segments are
