@@ -178,7 +178,7 @@ static cvm_status af_store(af_state *A, cvm__refiner *R, int32_t t, const int32_
     size_t need = 3 * (size_t)t + 3;
     int k;
     if ((need > A->cap_sl && cvm__grow(R->ctx, (void **)&A->sl, &A->cap_sl, need, sizeof *A->sl)) ||
-        (need > A->cap_sv && cvm__grow(R->ctx, (void **)&A->sv, &A->cap_sv, need, sizeof *A->sv)) ||
+        af_grow_fill(R->ctx, &A->sv, &A->cap_sv, need, -1) || /* new slots hold no record */
         ((size_t)t >= A->cap_sq &&
          cvm__grow(R->ctx, (void **)&A->sq, &A->cap_sq, (size_t)t + 1, sizeof *A->sq)))
         return CVM_E_NOMEM;
