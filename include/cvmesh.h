@@ -1374,8 +1374,10 @@ typedef enum cvm_algorithm {
  * of the segment they lie on (else 0) and attributes interpolated along it (else 0).
  * The report (CVM_MEASURE_REFINE_*) says what was asked and what was met.
  * Limitation (0.1): a segment on the convex hull that is not axis-parallel is
- * left unsplit where no rounded split point keeps the hull exactly convex; the
- * triangles this leaves below the bounds are counted in the report.
+ * left unsplit where no rounded split point keeps the hull exactly convex; and a
+ * triangle whose three corners lie on one input segment (a rounded crossing or
+ * split point a few ulps off its line, see cvm_mesh_triangulate()) cannot be split
+ * away; the triangles these leave below the bounds are counted in the report.
  *
  * @param m       mesh handle, triangulated (cvm_mesh_triangulate()); not NULL.
  * @param sizing  target sizes; may be NULL (angle and area bounds only). Read only
