@@ -78,8 +78,8 @@ TEST_ENV = CVM_DATA_DIR=$(DATA_DIR) CVM_TEST_DATA=$(CURDIR)/tests/data
 # Fuzz targets: tests/fuzz/fuzz_<name>.c, seeds in tests/fuzz/corpus/<name>/.
 FUZZ_TARGETS := poly_read node_read cdt vtu_read refine optimise
 # The targets make check runs for FUZZ_TIME seconds with a fixed seed. A
-# target with open findings it can reach (tests/fuzz/open/<target>/) leaves
-# this list until they are fixed: a timed run would fail on those known inputs.
+# target leaves this list while its fixed-seed run reaches one of its open
+# findings (tests/fuzz/open/<target>/): it would fail on those known inputs.
 FUZZ_CHECK_TARGETS := poly_read node_read cdt vtu_read refine optimise
 FUZZ_BINS := $(FUZZ_TARGETS:%=$(BUILD)/fuzz/fuzz_%)
 REPLAY_BINS := $(FUZZ_TARGETS:%=$(BUILD)/fuzz/replay_%)
