@@ -534,8 +534,10 @@ typedef enum cvm_option {
      *  Combined with the sizing of cvm_mesh_refine(): a triangle must meet both. */
     CVM_OPT_MAX_AREA = 201,
     /** Encroachment test of segments: 0 (default) diametral circle (a point p encroaches
-     *  segment ab when angle apb > 90 degrees); 1 diametral lens (angle apb >= 180 - 2 x
-     *  CVM_OPT_MIN_ANGLE_DEG, Shewchuk's lens): fewer segment splits, guarantee 25.7
+     *  segment ab when angle apb > 90 degrees; boundary circumcentres stay in the domain,
+     *  as Triangle's -D); 1 diametral lens (angle apb >= 180 - 2 x
+     *  CVM_OPT_MIN_ANGLE_DEG, Shewchuk's lens, Triangle's default): fewer segment splits,
+     *  about half the vertices between nearly coincident segments, guarantee 25.7
      *  degrees. Integer, [0, 1]. */
     CVM_OPT_ENCROACH_LENS = 202,
     /** 1 (default): every input vertex of a segment stays where it is; segments are
@@ -1481,11 +1483,14 @@ typedef enum cvm_algorithm {
  * by default), one point per front edge on its bisector (the nearest to the edge of
  * the equilateral point at the local size, the circumcentre and two off-centres; a
  * point closer than 0.7 x the edge to a vertex is skipped), and records a layer index
- * per triangle (cvm_mesh_copy_layer_index()). Both finish with a Delaunay-refinement
+ * per triangle (cvm_mesh_copy_layer_index()); with neither a sizing nor CVM_OPT_MAX_AREA
+ * its pass stops after 4 points per vertex it started with. Both finish with a Delaunay-refinement
  * pass, so all three algorithms meet the same bounds; after the frontal and the AFLR
  * passes the clean-ups, swaps and smoothing also keep frontal's acceptance bound, so
  * their triangles end with a circumradius of at most 0.707 x the mean size (unless a
- * Steiner or time limit stopped the run). Segments are split
+ * Steiner or time limit stopped the run, or a segment split was refused: see the
+ * limitation below; the report lists every triangle over 0.707 x the size as
+ * CVM_UNMET_SIZE). Segments are split
  * where encroached (concentric shells near small input angles, as Triangle does), so
  * every input segment stays a union of mesh edges; with no segments, or with
  * CVM_OPT_KEEP_CONVEX_HULL, the convex hull edges become segments (with marker 0).
@@ -1497,8 +1502,10 @@ typedef enum cvm_algorithm {
  * of the segment they lie on (else 0) and attributes interpolated along it (else 0).
  * The report (CVM_MEASURE_REFINE_*) says what was asked and what was met.
  * Limitation (0.1): a segment on the convex hull that is not axis-parallel is
- * left unsplit where no rounded split point keeps the hull exactly convex; the
- * triangles this leaves below the bounds are counted in the report.
+ * left unsplit where no rounded split point keeps the hull exactly convex; and a
+ * triangle whose three corners lie on one input segment (a rounded crossing or
+ * split point a few ulps off its line, see cvm_mesh_triangulate()) cannot be split
+ * away; the triangles these leave below the bounds are counted in the report.
  *
  * @param m       mesh handle, triangulated (cvm_mesh_triangulate()); not NULL.
  * @param sizing  target sizes; may be NULL (angle and area bounds only). Read only
@@ -1511,8 +1518,9 @@ typedef enum cvm_algorithm {
  *           CVM_OPT_SMOOTH_SWEEPS (smoothing moves Steiner points), then
  *           CVM_OPT_RESTORE_DELAUNAY. CVM_ALGO_AFLR: CVM_OPT_AFLR_SMOOTH_LAYERS
  *           also smooths during the pass.
- * Stops:    on the Steiner limit, the time limit or cancellation the mesh is valid
- *           (conforming, constrained Delaunay) with the points inserted so far.
+ * Stops:    on the Steiner limit, the time limit or cancellation (checked during the
+ *           smoothing too) the mesh is valid (conforming, constrained Delaunay) with the
+ *           points inserted so far.
  * Determinism: same input, options and sizing give bit-identical output (except
  *           where the time limit stops the run).
  * @return CVM_OK
@@ -1539,7 +1547,9 @@ CVM_API cvm_status cvm_mesh_refine(cvm_mesh *m, const cvm_sizing *sizing, cvm_al
 
 /** Reasons of cvm_mesh_copy_refine_unmet(), combined as bits. */
 #define CVM_UNMET_ANGLE 1             /**< an angle below CVM_OPT_MIN_ANGLE_DEG */
-#define CVM_UNMET_SIZE 2              /**< too big for the sizing or CVM_OPT_MAX_AREA */
+#define CVM_UNMET_SIZE 2              /**< too big for the sizing (after CVM_ALGO_FRONTAL and
+                                           CVM_ALGO_AFLR: circumradius over 0.707 x the mean
+                                           size) or CVM_OPT_MAX_AREA */
 #define CVM_UNMET_SMALL_INPUT_ANGLE 4 /**< subtended by a small input angle (left alone on
                                            purpose, counted in CVM_MEASURE_REFINE_SMALL_INPUT_ANGLE) */
 

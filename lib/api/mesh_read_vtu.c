@@ -1,25 +1,17 @@
 /*
- * mesh_read_vtu.c - cvm_mesh_read of a .vtu: rebuilds the triangulated,
- * weighted mesh the file holds and proves it is the same mesh.
- *
- * The file's points become the input points (with their markers and
- * attributes); its line cells, and the boundary edges of its triangle set,
- * become segments (a file without line cells is first tried as the plain
- * Delaunay triangulation of its points). The handle triangulates that PSLG;
- * triangles that fill a hole of the file's domain seed hole points (one per
- * connected region) and the PSLG is triangulated again; the weights of the
- * point data "weight" are set (regular triangulation). When that does not
- * give the file's triangles (weights under which some vertex has an empty
- * power cell make the result depend on the starting triangulation), every
- * inner edge of the file is inserted as a temporary constraint, so the
- * triangulation is the file's, the constraints are dropped, the weights set,
- * and the Lawson flips of cvm_mesh_set_weights() run: the file is accepted
- * when they leave its triangles alone, i.e. when it is what
- * cvm_mesh_set_weights() keeps. The result must have exactly the file's
- * triangles (as vertex sets); then the kernel's triangle slots are reordered
- * and rotated to the file's order and first vertices, so that writing the
- * mesh again reproduces the file. Everything is built in engine structures
- * of its own (struct rebuild) that replace the handle's mesh only on success.
+ * mesh_read_vtu.c - cvm_mesh_read of a mesh file (.vtu, .vtk, .msh): rebuilds
+ * the triangulated, weighted mesh it holds and proves it is the same mesh.
+ * Points become input points (a point in no triangle must lie outside the
+ * domain, located through mesh_read_grid.c); line cells and boundary edges of
+ * triangles become segments (no line cells: first tried as the Delaunay
+ * triangulation of the points). The PSLG is triangulated, regions without a
+ * file triangle get hole points, weights are set. When that misses the file's
+ * triangles (empty power cells make the result depend on the start), the
+ * file's inner edges become temporary constraints, are dropped, and the Lawson
+ * flips of cvm_mesh_set_weights() must leave its triangles alone. Slots are
+ * then reordered to the file's order, so writing reproduces the file. All is
+ * built in engine structures (struct rebuild) that replace the handle's mesh
+ * only on success.
  */
 #include <math.h>
 #include <stdint.h>
@@ -27,6 +19,7 @@
 #include <string.h>
 
 #include "output_internal.h"
+#include "mesh_read_grid.h"
 #include "geom/geom_internal.h"
 
 /* The mesh being rebuilt: the parts of a cvm_mesh that a read replaces, built
@@ -114,7 +107,32 @@ static int32_t find_slot(const tkey *keys, size_t n, const tkey *key)
     return -1;
 }
 
-/* Check the file's triangles: distinct corners, every point used; collect
+/* A point that is no triangle's corner must lie outside the file's domain
+ * (exact test): cvm_mesh_triangulate() leaves such vertices (ends of segments
+ * bounding no region) where it carved, and the rebuild carves them again. */
+static cvm_status unused_points(cvm_mesh *m, const char *path, const cvm__vtu_mesh *vm,
+                                const uint8_t *used)
+{
+    cvm__file_grid g;
+    size_t i;
+    cvm_status s = CVM_OK;
+    memset(&g, 0, sizeof g);
+    for (i = 0; i < vm->p.np && used[i]; i++)
+        ;
+    if (i < vm->p.np && cvm__file_grid_build(&m->ctx, vm, &g))
+        return cvm__nomem(&m->ctx);
+    for (; i < vm->p.np && !s; i++) {
+        const double *p = vm->p.xy + 2 * i;
+        if (!used[i] && cvm__file_grid_in_domain(vm, &g, p))
+            s = cvm__error(&m->ctx, CVM_E_INPUT_DEGENERATE, CVM_ENT_INPUT_POINT, (int64_t)i,
+                           "%s: point %lu at (%.17g, %.17g) lies in the mesh but is a corner of "
+                           "no triangle", path, (unsigned long)i, p[0], p[1]);
+    }
+    cvm__file_grid_free(&m->ctx, &g);
+    return s;
+}
+
+/* Check the file's triangles: distinct corners, no unused point inside; collect
  * the edges used by one triangle only (boundary) into *bnd and those used by
  * two (inner) into *inner (2 ids per edge). */
 static cvm_status file_checks(cvm_mesh *m, const char *path, const cvm__vtu_mesh *vm,
@@ -172,12 +190,8 @@ static cvm_status file_checks(cvm_mesh *m, const char *path, const cvm__vtu_mesh
             goto out;
         }
     }
-    for (i = 0; i < vm->p.np; i++)
-        if (!used[i]) {
-            s = cvm__error(&m->ctx, CVM_E_INPUT_DEGENERATE, CVM_ENT_INPUT_POINT, (int64_t)i,
-                           "%s: point %lu lies in no triangle", path, (unsigned long)i);
-            goto out;
-        }
+    if ((s = unused_points(m, path, vm, used)))
+        goto out;
     qsort(e, ne, sizeof *e, cmp_key);
     for (k = 0; k < ne; k = i) {
         for (i = k + 1; i < ne && e[i].v[0] == e[k].v[0] && e[i].v[1] == e[k].v[1]; i++)
@@ -278,142 +292,6 @@ static tkey *file_keys(rebuild *rb, const cvm__vtu_mesh *vm)
     return k;
 }
 
-/* The file's triangles bucketed by a uniform grid over the points, each
- * listed in every cell its bounding box meets, so a point is tested against
- * the triangles of its own cell only: the cell of a coordinate is a
- * monotone function of it, so a triangle containing p always meets p's cell. */
-typedef struct tri_grid {
-    double x0, y0, sx, sy; /* lower corner, cells per unit length */
-    size_t side, n;        /* cells per axis, listings */
-    size_t *start;         /* side^2 + 1: cell c lists idx[start[c]..start[c+1]) */
-    int32_t *idx;
-} tri_grid;
-
-/* Cell of (v - lo) * s among n; monotone in v, NaN (0 * inf) to cell 0. */
-static size_t grid_cell(double v, double lo, double s, size_t n)
-{
-    double c = (v - lo) * s;
-    if (!(c > 0))
-        return 0;
-    return c < (double)n ? (size_t)c : n - 1;
-}
-
-static void grid_box(const tri_grid *g, const cvm__vtu_mesh *vm, size_t k, size_t *box)
-{
-    const int32_t *t = vm->tri + 3 * k;
-    double lo[2], hi[2];
-    int i, d;
-    for (d = 0; d < 2; d++) {
-        lo[d] = hi[d] = vm->p.xy[2 * (size_t)t[0] + (size_t)d];
-        for (i = 1; i < 3; i++) {
-            double v = vm->p.xy[2 * (size_t)t[i] + (size_t)d];
-            lo[d] = v < lo[d] ? v : lo[d];
-            hi[d] = v > hi[d] ? v : hi[d];
-        }
-    }
-    box[0] = grid_cell(lo[0], g->x0, g->sx, g->side);
-    box[1] = grid_cell(hi[0], g->x0, g->sx, g->side);
-    box[2] = grid_cell(lo[1], g->y0, g->sy, g->side);
-    box[3] = grid_cell(hi[1], g->y0, g->sy, g->side);
-}
-
-static void grid_free(cvm__ctx *ctx, tri_grid *g)
-{
-    cvm__free(ctx, g->start);
-    cvm__free(ctx, g->idx);
-    memset(g, 0, sizeof *g);
-}
-
-/* The number of listings with side cells per axis, or 0 when it would exceed
- * limit. */
-static size_t grid_count(tri_grid *g, const cvm__vtu_mesh *vm, const double *hi, size_t side,
-                         size_t limit)
-{
-    size_t k, n = 0, box[4];
-    g->side = side;
-    g->sx = hi[0] > g->x0 ? (double)side / (hi[0] - g->x0) : 0;
-    g->sy = hi[1] > g->y0 ? (double)side / (hi[1] - g->y0) : 0;
-    for (k = 0; k < vm->nt; k++) {
-        size_t c;
-        grid_box(g, vm, k, box);
-        c = (box[1] - box[0] + 1) * (box[3] - box[2] + 1);
-        if (c > limit - n)
-            return 0;
-        n += c;
-    }
-    return n;
-}
-
-/* Build g with about one cell per triangle, or fewer cells when the bounding
- * boxes (long thin triangles across the domain) would list the triangles more
- * than 16 times over; one cell lists each triangle once. CVM_OK or
- * CVM_E_NOMEM. */
-static cvm_status grid_build(cvm__ctx *ctx, const cvm__vtu_mesh *vm, tri_grid *g)
-{
-    size_t k, c, i, j, box[4], limit = 16 * vm->nt + 1024, side = 1;
-    double hi[2];
-    memset(g, 0, sizeof *g);
-    g->x0 = hi[0] = vm->p.np ? vm->p.xy[0] : 0;
-    g->y0 = hi[1] = vm->p.np ? vm->p.xy[1] : 0;
-    for (k = 1; k < vm->p.np; k++) {
-        double x = vm->p.xy[2 * k], y = vm->p.xy[2 * k + 1];
-        g->x0 = x < g->x0 ? x : g->x0;
-        g->y0 = y < g->y0 ? y : g->y0;
-        hi[0] = x > hi[0] ? x : hi[0];
-        hi[1] = y > hi[1] ? y : hi[1];
-    }
-    while (side * side < vm->nt && side < 65536)
-        side++;
-    while ((g->n = grid_count(g, vm, hi, side, limit)) == 0 && side > 1)
-        side /= 2;
-    g->start = cvm__calloc(ctx, side * side + 1, sizeof *g->start);
-    g->idx = cvm__malloc(ctx, (g->n + 1) * sizeof *g->idx);
-    if (!g->start || !g->idx) {
-        grid_free(ctx, g);
-        return CVM_E_NOMEM;
-    }
-    for (k = 0; k < vm->nt; k++) {
-        grid_box(g, vm, k, box);
-        for (j = box[2]; j <= box[3]; j++)
-            for (i = box[0]; i <= box[1]; i++)
-                g->start[j * side + i + 1]++;
-    }
-    for (c = 0; c < side * side; c++) /* start[c]: where cell c begins */
-        g->start[c + 1] += g->start[c];
-    for (k = 0; k < vm->nt; k++) { /* start[c] advances to the end of cell c ... */
-        grid_box(g, vm, k, box);
-        for (j = box[2]; j <= box[3]; j++)
-            for (i = box[0]; i <= box[1]; i++)
-                g->idx[g->start[j * side + i]++] = (int32_t)k;
-    }
-    for (c = side * side; c > 0; c--) /* ... which is where cell c + 1 begins */
-        g->start[c] = g->start[c - 1];
-    g->start[0] = 0;
-    return CVM_OK;
-}
-
-/* 1 when p lies in (or on) file triangle k (exact orientation tests). */
-static int in_file_triangle(const cvm__vtu_mesh *vm, size_t k, const double *p)
-{
-    const int32_t *t = vm->tri + 3 * k;
-    const double *a = vm->p.xy + 2 * (size_t)t[0], *b = vm->p.xy + 2 * (size_t)t[1],
-                 *c = vm->p.xy + 2 * (size_t)t[2];
-    double o1 = cvm__orient2d(a, b, p), o2 = cvm__orient2d(b, c, p), o3 = cvm__orient2d(c, a, p);
-    /* either orientation of the file's triangle */
-    return (o1 >= 0 && o2 >= 0 && o3 >= 0) || (o1 <= 0 && o2 <= 0 && o3 <= 0);
-}
-
-/* 1 when p lies in (or on) a triangle of the file. */
-static int in_file_domain(const cvm__vtu_mesh *vm, const tri_grid *g, const double *p)
-{
-    size_t c = grid_cell(p[1], g->y0, g->sy, g->side) * g->side +
-               grid_cell(p[0], g->x0, g->sx, g->side), e;
-    for (e = g->start[c]; e < g->start[c + 1]; e++)
-        if (in_file_triangle(vm, (size_t)g->idx[e], p))
-            return 1;
-    return 0;
-}
-
 /* Hole seeds: the centroid of one triangle of each connected set of domain
  * triangles (across unconstrained edges) none of which is a file triangle
  * and whose seed lies in no file triangle. After the weights are set, a set
@@ -428,7 +306,7 @@ static cvm_status hole_seeds(rebuild *rb, const cvm__vtu_mesh *vm, double **out,
     uint8_t *member = cvm__calloc(&rb->ctx, T->nt + 1, 1);
     int32_t *stack = cvm__malloc(&rb->ctx, (T->nt + 1) * sizeof *stack);
     double *h = cvm__malloc(&rb->ctx, (2 * T->nt + 2) * sizeof *h);
-    tri_grid g;
+    cvm__file_grid g;
     int have_grid = 0;
     size_t s, n = 0;
     int j;
@@ -469,7 +347,7 @@ static cvm_status hole_seeds(rebuild *rb, const cvm__vtu_mesh *vm, double **out,
         if (!any) {
             const int32_t *v = T->tv + 3 * s;
             if (!have_grid) {
-                if (grid_build(&rb->ctx, vm, &g)) {
+                if (cvm__file_grid_build(&rb->ctx, vm, &g)) {
                     st = cvm__nomem(&rb->ctx);
                     goto out;
                 }
@@ -481,14 +359,14 @@ static cvm_status hole_seeds(rebuild *rb, const cvm__vtu_mesh *vm, double **out,
                                         T->xy[2 * (size_t)v[2] + (size_t)j]) / 3.0;
             /* a region inside the file's domain triangulated differently is
                not a hole: leave it for match() to report */
-            n += !in_file_domain(vm, &g, h + 2 * n);
+            n += !cvm__file_grid_in_domain(vm, &g, h + 2 * n);
         }
     }
     *out = h;
     h = NULL;
     *n_out = n;
 out:
-    grid_free(&rb->ctx, &g);
+    cvm__file_grid_free(&rb->ctx, &g);
     cvm__free(&rb->ctx, fk);
     cvm__free(&rb->ctx, state);
     cvm__free(&rb->ctx, member);

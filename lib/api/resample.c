@@ -55,6 +55,7 @@ cvm_status cvm__mesh_resample_boundary(cvm_mesh *m, const cvm_sizing *sizing, si
     in.regions = m->in.regions;
     in.nregions = m->in.nregions;
     in.seed = (uint64_t)cvm__opt(m, CVM_OPT_SEED);
+    in.keep_hull = cvm__opt(m, CVM_OPT_KEEP_CONVEX_HULL) != 0;
     if ((s = cvm__resample_boundary(&R, &in, &m->ctx)) || !R.n_chains)
         goto done;
     nv2 = R.T.nv;

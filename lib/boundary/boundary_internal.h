@@ -29,6 +29,7 @@ typedef struct cvm__resample_input {
     const double *regions;     /* 4 per region (x, y, ...): no chord may swallow a seed */
     size_t nregions;
     uint64_t seed;             /* point-order seed of the rebuilt triangulation */
+    int keep_hull;             /* CVM_OPT_KEEP_CONVEX_HULL: hull edges are kept, never resampled */
 } cvm__resample_input;
 
 /* What it produces when n_chains > 0 (else everything is empty). */

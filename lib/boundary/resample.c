@@ -58,28 +58,47 @@ static double rs_turn(const double *a, const double *b, const double *c)
     return cvm__turn_angle(a, b, c) * 180.0 / CVM__PI;
 }
 
-/* Constrained edges with a domain side, incidences, and which vertices may
- * be inner chain vertices: exactly two such edges, of segments with the same
- * marker, turning by less than RS_TURN_DEG. */
+/* Every constrained edge (those outside the domain too, which the rebuild
+ * keeps), incidences, and which vertices may be inner chain vertices: exactly
+ * two such edges, both with a domain side, of segments with the same marker,
+ * turning by less than RS_TURN_DEG. A vertex with an edge outside the domain,
+ * or on the kept convex hull, is never inner (a new point on a hull edge rounds
+ * a few ulps off it, and the rebuilt hull would span slivers over the reflex
+ * ones; the march splits hull edges on the mesh, where the hull just turns). */
 static cvm_status rs_graph(rs_state *S)
 {
     const cvm__tri2 *T = S->T;
     size_t t, k, v;
-    int j;
-    for (t = 0; t < T->nt; t++) {
-        if (!cvm__tri2_in_domain(T, (int32_t)t))
+    int j, keep_hull = S->in->keep_hull;
+    unsigned char *outside = cvm__calloc(S->ctx, S->nv + 1, 1);
+    if (!outside)
+        return CVM_E_NOMEM;
+    for (t = 0; t < T->nt && T->te; t++) {
+        int in = cvm__tri2_in_domain(T, (int32_t)t);
+        if (!in && (!cvm__tri2_is_live(T, (int32_t)t) || cvm__tri2_is_ghost(T, (int32_t)t)))
             continue;
         for (j = 0; j < 3; j++) {
             size_t h = 3 * t + (size_t)j;
             int32_t a = T->tv[3 * t + (size_t)(j + 1) % 3], b = T->tv[3 * t + (size_t)(j + 2) % 3];
-            if (!T->te || T->te[h] < 0 || (cvm__tri2_in_domain(T, T->tn[h] / 3) && a > b))
+            int32_t nb = T->tn[h] / 3;
+            int nb_in = cvm__tri2_in_domain(T, nb);
+            if (T->te[h] < 0)
                 continue;
-            if (cvm__grow(S->ctx, (void **)&S->e, &S->cap_e, S->ne + 1, sizeof *S->e))
+            /* once per edge: from a domain side (the lower a when both are),
+             * else from the live side (the lower a when both are live) */
+            if (in ? nb_in && a > b
+                   : nb_in || (!cvm__tri2_is_ghost(T, nb) && a > b))
+                continue;
+            if (cvm__grow(S->ctx, (void **)&S->e, &S->cap_e, S->ne + 1, sizeof *S->e)) {
+                cvm__free(S->ctx, outside);
                 return CVM_E_NOMEM;
+            }
             S->e[S->ne].a = a;
             S->e[S->ne].b = b;
             S->e[S->ne].seg = T->te[h];
             S->ne++;
+            if ((!in && !nb_in) || (keep_hull && cvm__tri2_is_ghost(T, nb)))
+                outside[a] = outside[b] = 1;
         }
     }
     S->first = cvm__calloc(S->ctx, S->nv + 2, sizeof *S->first);
@@ -92,8 +111,10 @@ static cvm_status rs_graph(rs_state *S)
     S->cmark = cvm__malloc(S->ctx, (S->nv + 1) * sizeof *S->cmark);
     S->byx = cvm__malloc(S->ctx, (S->nv + 1) * sizeof *S->byx);
     if (!S->first || !S->inc || !S->inner || !S->removed || !S->used || !S->replaced || !S->stamp ||
-        !S->cmark || !S->byx)
+        !S->cmark || !S->byx) {
+        cvm__free(S->ctx, outside);
         return CVM_E_NOMEM;
+    }
     for (k = 0; k < S->ne; k++) {
         S->first[S->e[k].a + 2]++;
         S->first[S->e[k].b + 2]++;
@@ -109,7 +130,7 @@ static cvm_status rs_graph(rs_state *S)
         S->cmark[v] = -1;
         S->byx[v].x = T->xy[2 * v];
         S->byx[v].v = (int32_t)v;
-        if (S->first[v + 1] - S->first[v] == 2) {
+        if (S->first[v + 1] - S->first[v] == 2 && !outside[v]) {
             size_t k0 = (size_t)S->inc[S->first[v]], k1 = (size_t)S->inc[S->first[v] + 1];
             int32_t u = rs_other(S, k0, (int32_t)v), w = rs_other(S, k1, (int32_t)v);
             S->inner[v] = cvm__cdt_segment_marker(S->in->smark, S->in->nseg, S->e[k0].seg) ==
@@ -117,6 +138,7 @@ static cvm_status rs_graph(rs_state *S)
                           rs_turn(rs_pt(S, u), rs_pt(S, (int32_t)v), rs_pt(S, w)) < RS_TURN_DEG;
         }
     }
+    cvm__free(S->ctx, outside);
     qsort(S->byx, S->nv, sizeof *S->byx, cmp_xv);
     return CVM_OK;
 }

@@ -469,6 +469,7 @@ cvm_status cvm__tri2_insert_segment(cvm__tri2 *T, int32_t a, int32_t b, int32_t 
 {
     seg_work w = {0};
     cvm_status s = CVM_OK;
+    size_t pieces = 0;
     *other_seg_out = -1;
     if ((s = cvm__tri2_enable_constraints(T)))
         return s;
@@ -477,6 +478,18 @@ cvm_status cvm__tri2_insert_segment(cvm__tri2 *T, int32_t a, int32_t b, int32_t 
         goto done;
     while (w.npairs) {
         int32_t bb = w.pairs[--w.npairs], aa = w.pairs[--w.npairs];
+        /* each piece ends at a vertex on the segment that none before ended
+         * at, so there are fewer pieces than vertices; more means the
+         * collinearity tests disagree (coordinates whose products underflow
+         * are not decided exactly) and the walk would cycle between them */
+        if (++pieces > 2 * (size_t)T->nv + 2) {
+            s = cvm__error(T->ctx, CVM_E_INTERNAL, CVM_ENT_INPUT_SEGMENT, seg,
+                           "segment %ld (points %ld-%ld): recovery made no progress at the piece "
+                           "%ld-%ld: the collinearity tests along it disagree (coordinates too "
+                           "small to decide exactly?)", (long)seg, (long)a, (long)b, (long)aa,
+                           (long)bb);
+            break;
+        }
         s = recover(T, &w, aa, bb, seg, split, other_seg_out);
         if (s)
             break;

@@ -228,7 +228,7 @@ cvm_status cvm__dual_optimise(cvm__tri2 *T, const cvm__dual_opt_params *p, cvm__
         s = CVM_E_NOMEM;
     else
         s = run(&D);
-    if (D.V && D.st && D.weak && D.layer && D.F && D.vsize && D.vbnd) {
+    if (D.V && D.st && D.weak && D.layer && D.F && D.vsize && D.vbnd && D.save) {
         cvm__dopt_score_all(&D);
         rep->nc_after_pct = cvm__dopt_pct(&D);
         if (!rep->sweeps && !D.nc0)

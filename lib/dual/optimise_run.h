@@ -137,7 +137,7 @@ void cvm__dopt_save_state(dopt *D);
 void cvm__dopt_load_state(dopt *D);
 
 /* Percentage of the domain triangles that are non-compliant. */
-double cvm__dopt_pct(const dopt *D);
+double cvm__dopt_pct(dopt *D);
 
 /* One sweep; *moved_out receives the number of accepted moves. The visiting
  * order is cut into batches of at most BATCH vertices, no two of them equal or

@@ -430,12 +430,20 @@ static double progress(const dopt *D)
     return D->nc0 ? 1.0 - (double)D->nc / (double)D->nc0 : 1.0;
 }
 
-double cvm__dopt_pct(const dopt *D)
+/* The report's non-compliant %, as CVM_MEASURE_DUAL_NONCOMPLIANT_PCT measures
+ * it: with the mesh's own sizes, where the sweeps may score with the sizing.
+ * D->V must be current; D->save (free at both calls) holds the sizes. */
+double cvm__dopt_pct(dopt *D)
 {
-    size_t t, n = 0;
+    size_t t, n = 0, nc = 0;
+    cvm__dual_mesh_sizes(D->T, D->save);
     for (t = 0; t < D->T->nt; t++)
-        n += cvm__tri2_in_domain(D->T, (int32_t)t);
-    return n ? 100.0 * (double)D->nc / (double)n : 0.0;
+        if (cvm__tri2_in_domain(D->T, (int32_t)t)) {
+            n++;
+            nc += cvm__dual_tri_compliance(D->T, D->save, D->p->merge_tol, D->V, (int32_t)t) ==
+                  CVM__DUAL_NONCOMPLIANT;
+        }
+    return n ? 100.0 * (double)nc / (double)n : 0.0;
 }
 
 /* Add v to the batch being formed when no vertex of the batch is v or one of

@@ -56,6 +56,7 @@
  * the points carry frontal.c's 1e-9 jitter off the lattice.
  */
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "refine_internal.h"
@@ -79,10 +80,15 @@
 #define AF_MIN_BASE 0.5
 /* Triangle qualities. */
 enum { AF_OK = 0, AF_BIG = 1, AF_SKINNY = 2 };
+/* With neither a sizing nor CVM_OPT_MAX_AREA nothing bounds the pass but the
+ * shortest input edge, and above about 30 degrees its points cascade down to
+ * that scale over the whole domain (millions on the cylinder at 34 degrees,
+ * where Delaunay refinement needs 557): the pass then stops after this many
+ * points per vertex it started with (about what Delaunay refinement needs on
+ * the example domains), and the Delaunay clean-up finishes. */
+#define AF_SIZELESS_CAP 4
 /* Layer "infinite". */
 #define AF_INF INT32_MAX
-/* Sweeps that pass layers on to edges made after the fronts stopped. */
-#define AF_SWEEPS 64
 /* Interleaved smoothing (CVM_OPT_AFLR_SMOOTH_LAYERS): relaxation and smart
  * (or max-min) sweeps per completed group of layers. */
 #define AF_SM_RELAX 2
@@ -172,7 +178,7 @@ static cvm_status af_store(af_state *A, cvm__refiner *R, int32_t t, const int32_
     size_t need = 3 * (size_t)t + 3;
     int k;
     if ((need > A->cap_sl && cvm__grow(R->ctx, (void **)&A->sl, &A->cap_sl, need, sizeof *A->sl)) ||
-        (need > A->cap_sv && cvm__grow(R->ctx, (void **)&A->sv, &A->cap_sv, need, sizeof *A->sv)) ||
+        af_grow_fill(R->ctx, &A->sv, &A->cap_sv, need, -1) || /* new slots hold no record */
         ((size_t)t >= A->cap_sq &&
          cvm__grow(R->ctx, (void **)&A->sq, &A->cap_sq, (size_t)t + 1, sizeof *A->sq)))
         return CVM_E_NOMEM;
@@ -231,6 +237,24 @@ static inline int af_quality_cached(cvm__refiner *R, int32_t t)
     return af_quality_any(R, t);
 }
 
+/* 1 when t is only skinny and no size bounds it (no sizing at its corners):
+ * queued in class 1 by its shortest edge (af_front_edge). */
+static int af_sizeless_skinny(const cvm__refiner *R, int32_t t, int q)
+{
+    const int32_t *tv = R->T->tv + 3 * (size_t)t;
+    return q == AF_SKINNY && !isfinite(R->vls[tv[0]]) && !isfinite(R->vls[tv[1]]) &&
+           !isfinite(R->vls[tv[2]]);
+}
+
+/* Squared shortest edge of the triangle with vertices tv. */
+static double af_shortest2(const cvm__refiner *R, const int32_t *tv)
+{
+    double l0 = cvm__dist2(af_pt(R, tv[1]), af_pt(R, tv[2]));
+    double l1 = cvm__dist2(af_pt(R, tv[2]), af_pt(R, tv[0]));
+    double l2 = cvm__dist2(af_pt(R, tv[0]), af_pt(R, tv[1]));
+    return l0 < l1 ? (l0 < l2 ? l0 : l2) : (l1 < l2 ? l1 : l2);
+}
+
 /* Best front edge of bad triangle t of quality q (lowest layer, then shortest relative to
  * the size): *j_out, *layer_out, *key_out (the queue key). When t is only
  * skinny, edges shorter than AF_MIN_BASE x the size at them (without a size:
@@ -244,7 +268,7 @@ static int af_front_edge(cvm__refiner *R, int32_t t, int q, int *j_out, int32_t 
     const cvm__tri2 *T = R->T;
     const int32_t *tv = T->tv + 3 * (size_t)t;
     int j, found = 0, skinny = q == AF_SKINNY, tvalid = af_slot_valid(A, T, t);
-    double best = 0, sin2;
+    double best = 0, sin2, tie;
     for (j = 0; j < 3; j++) {
         int32_t a = tv[af_n1[j]], b = tv[af_n2[j]], h = T->tn[3 * (size_t)t + (size_t)j];
         int32_t layer;
@@ -293,14 +317,20 @@ static int af_front_edge(cvm__refiner *R, int32_t t, int q, int *j_out, int32_t 
     }
     if (!found)
         return 0;
-    best = sqrt(best);
+    tie = (*layer_out == AF_INF ? 1.0 : 1.0 - 1.0 / (2.0 + *layer_out)) + (sqrt(best) / (1.0 + sqrt(best)));
+    if (af_sizeless_skinny(R, t, q)) {
+        /* no size: the shortest edge first, as Delaunay refinement orders its
+         * skinny triangles; with the worst shape first the points cascade
+         * into ever smaller clusters at 34 degrees (millions of points on the
+         * cylinder) */
+        *key_out = af_shortest2(R, tv) * (1.0 + AF_TIE * tie);
+        return 1;
+    }
     cvm__rf_classify(R, t, &sin2);
     /* the Delaunay-refinement key: -(circumradius / size)^2 when too big (the
      * largest first), else sin^2 of the smallest angle (the worst first); then
      * lower layer, then shorter edge (tiny terms) */
-    *key_out = (isfinite(sin2) ? sin2 : 0) +
-               AF_TIE * ((*layer_out == AF_INF ? 1.0 : 1.0 - 1.0 / (2.0 + *layer_out)) +
-                         best / (1.0 + best));
+    *key_out = (isfinite(sin2) ? sin2 : 0) + AF_TIE * tie;
     return 1;
 }
 
@@ -320,7 +350,7 @@ static cvm_status af_queue_triangle(cvm__refiner *R, int32_t t, int *q_out)
         return CVM_OK;
     /* with interleaved smoothing, the layers beyond the current group wait */
     if (cvm__bq_push(A->nsm && layer != AF_INF && layer >= A->done + A->nsm ? &A->later : &R->q,
-                     R->T, t, 0, key))
+                     R->T, t, af_sizeless_skinny(R, t, q), key))
         return cvm__nomem(R->ctx);
     return CVM_OK;
 }
@@ -704,10 +734,12 @@ cvm_status cvm__rf_aflr(cvm__refiner *R)
 {
     cvm__bad_entry e;
     cvm_status s;
-    size_t t;
+    size_t t, cap = (size_t)-1;
     int q;
     if ((s = af_setup(R)))
         return s;
+    if (cvm__sizing_is_empty(R->p->sizing) && !(R->p->max_area > 0))
+        cap = R->steiner + AF_SIZELESS_CAP * R->T->nv;
     R->queue_star = af_queue_star;
     cvm__bq_clear(&R->q);
     for (t = 0; t < R->T->nt; t++)
@@ -731,6 +763,8 @@ cvm_status cvm__rf_aflr(cvm__refiner *R)
             continue;
         if (!af_point(R, e.t, j, x))
             continue; /* every candidate too close: left to the clean-up */
+        if (R->steiner >= cap)
+            break;
         r = cvm__rf_insert_free(R, e.t, x, &v, &s);
         if (s)
             return s;
@@ -749,14 +783,77 @@ cvm_status cvm__rf_aflr(cvm__refiner *R)
 
 /* ---- output: the layer index of each cell ---- */
 
+/* Pass layers on along the ne layerless edges ie (2 vertices each): the
+ * fixed point of vl[b] = min(vl[b], vl[a] + 1) over them, i.e. the distance
+ * in edges from the layered vertices, each starting at its own layer: one
+ * breadth-first search that takes its sources in order of their layer (ties
+ * by index), linear in the edges apart from that sort. CVM_OK or CVM_E_NOMEM. */
+static int cmp_pair32(const void *pa, const void *pb)
+{
+    const int32_t *a = pa, *b = pb;
+    if (a[0] != b[0])
+        return a[0] < b[0] ? -1 : 1;
+    return (a[1] > b[1]) - (a[1] < b[1]);
+}
+
+static cvm_status af_pass_layers(cvm__refiner *R, int32_t *vl, const int32_t *ie, size_t ne)
+{
+    size_t nv = R->T->nv, k, ns = 0, head = 0, tail = 0, si = 0;
+    size_t *first = cvm__calloc(R->ctx, nv + 2, sizeof *first);
+    int32_t *adj = cvm__malloc(R->ctx, (2 * ne + 1) * sizeof *adj);
+    int32_t *fifo = cvm__malloc(R->ctx, (nv + 1) * sizeof *fifo);
+    int32_t *src = cvm__malloc(R->ctx, (2 * nv + 1) * sizeof *src);
+    cvm_status s = CVM_OK;
+    if (!first || !adj || !fifo || !src) {
+        s = cvm__nomem(R->ctx);
+        goto out;
+    }
+    for (k = 0; k < 2 * ne; k++)
+        first[ie[k] + 2]++;
+    for (k = 2; k < nv + 2; k++)
+        first[k] += first[k - 1];
+    for (k = 0; k < ne; k++) {
+        adj[first[ie[2 * k] + 1]++] = ie[2 * k + 1];
+        adj[first[ie[2 * k + 1] + 1]++] = ie[2 * k];
+    }
+    for (k = 0; k < nv; k++)
+        if (vl[k] != AF_INF && first[k + 1] > first[k]) {
+            src[2 * ns] = vl[k];
+            src[2 * ns++ + 1] = (int32_t)k;
+        }
+    qsort(src, ns, 2 * sizeof *src, cmp_pair32);
+    /* the FIFO's layers never decrease; the next vertex is the lower of its
+     * head and the next source (a source lowered since was queued then) */
+    while (head < tail || si < ns) {
+        int32_t u, w;
+        size_t e;
+        if (si < ns && (head == tail || src[2 * si] <= vl[fifo[head]])) {
+            u = src[2 * si + 1];
+            if (src[2 * si++] != vl[u])
+                continue;
+        } else {
+            u = fifo[head++];
+        }
+        for (e = first[u]; e < first[u + 1]; e++)
+            if (vl[u] + 1 < vl[w = adj[e]]) {
+                vl[w] = vl[u] + 1;
+                fifo[tail++] = w;
+            }
+    }
+out:
+    cvm__free(R->ctx, first);
+    cvm__free(R->ctx, adj);
+    cvm__free(R->ctx, fifo);
+    cvm__free(R->ctx, src);
+    return s;
+}
+
 cvm_status cvm__rf_aflr_cell_layers(cvm__refiner *R, double **out)
 {
     const cvm__tri2 *T = R->T;
-    int32_t *vl, *el, *ie; /* ie: the layerless edges, 2 vertices each, in slot order */
-    size_t *tb;            /* tb[g] .. tb[g + 1]: the edges of the g-th slot that has any */
+    int32_t *vl, *el, *ie; /* ie: the layerless edges, 2 vertices each */
     double *cl;
-    size_t t, k, ne = 0, ng = 0;
-    int changed, sweep;
+    size_t t, ne = 0;
     *out = NULL;
     if (!R->aflr)
         return CVM_OK;
@@ -764,13 +861,11 @@ cvm_status cvm__rf_aflr_cell_layers(cvm__refiner *R, double **out)
     el = cvm__malloc(R->ctx, (3 * T->nt + 1) * sizeof *el);
     cl = cvm__malloc(R->ctx, (T->nt + 1) * sizeof *cl);
     ie = cvm__malloc(R->ctx, (6 * T->nt + 1) * sizeof *ie);
-    tb = cvm__malloc(R->ctx, (T->nt + 2) * sizeof *tb);
-    if (!vl || !el || !cl || !ie || !tb) {
+    if (!vl || !el || !cl || !ie) {
         cvm__free(R->ctx, vl);
         cvm__free(R->ctx, el);
         cvm__free(R->ctx, cl);
         cvm__free(R->ctx, ie);
-        cvm__free(R->ctx, tb);
         return cvm__nomem(R->ctx);
     }
     for (t = 0; t < T->nv; t++)
@@ -786,41 +881,21 @@ cvm_status cvm__rf_aflr_cell_layers(cvm__refiner *R, double **out)
             el[3 * t + (size_t)j] = l;
             vl[a] = l < vl[a] ? l : vl[a];
             vl[b] = l < vl[b] ? l : vl[b];
-        }
-    }
-    /* the sweeps below only visit these, in the same order as a scan of all slots */
-    tb[0] = 0;
-    for (t = 0; t < T->nt; t++) {
-        int j;
-        size_t ne0 = ne;
-        if (!cvm__tri2_in_domain(T, (int32_t)t))
-            continue;
-        for (j = 0; j < 3; j++)
-            if (el[3 * t + (size_t)j] == AF_INF) {
-                ie[2 * ne] = T->tv[3 * t + (size_t)af_n1[j]];
-                ie[2 * ne + 1] = T->tv[3 * t + (size_t)af_n2[j]];
+            if (l == AF_INF) {
+                ie[2 * ne] = a;
+                ie[2 * ne + 1] = b;
                 ne++;
             }
-        if (ne > ne0)
-            tb[++ng] = ne;
-    }
-    /* edges without a layer pass one more than the lower end's on: sweeps in
-     * alternating slot order to a fixed point, at most AF_SWEEPS of them */
-    for (changed = 1, sweep = 0; changed && sweep < AF_SWEEPS; sweep++) {
-        changed = 0;
-        for (k = 0; k < ng; k++) {
-            size_t g = sweep % 2 ? ng - 1 - k : k, e;
-            for (e = tb[g]; e < tb[g + 1]; e++) {
-                int32_t a = ie[2 * e], b = ie[2 * e + 1];
-                if (vl[a] != AF_INF && vl[a] + 1 < vl[b]) {
-                    vl[b] = vl[a] + 1;
-                    changed = 1;
-                } else if (vl[b] != AF_INF && vl[b] + 1 < vl[a]) {
-                    vl[a] = vl[b] + 1;
-                    changed = 1;
-                }
-            }
         }
+    }
+    /* edges without a layer (made after the fronts stopped) pass one more
+     * than the lower end's on */
+    if (af_pass_layers(R, vl, ie, ne)) {
+        cvm__free(R->ctx, vl);
+        cvm__free(R->ctx, el);
+        cvm__free(R->ctx, cl);
+        cvm__free(R->ctx, ie);
+        return CVM_E_NOMEM;
     }
     for (t = 0; t < T->nt; t++) {
         int32_t lo = AF_INF, hi = -1;
@@ -845,7 +920,6 @@ cvm_status cvm__rf_aflr_cell_layers(cvm__refiner *R, double **out)
     cvm__free(R->ctx, vl);
     cvm__free(R->ctx, el);
     cvm__free(R->ctx, ie);
-    cvm__free(R->ctx, tb);
     *out = cl;
     return CVM_OK;
 }

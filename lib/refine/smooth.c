@@ -206,6 +206,7 @@ cvm_status cvm__rf_smooth(cvm__refiner *R, size_t first, const uint8_t *only, in
     uint8_t *cur = NULL, *next = NULL;
     size_t cap = 0, v, moves = 0;
     int sweep, err = 0;
+    cvm_status stop = CVM_OK;
     if (moves_out)
         *moves_out = 0;
     if (relax < 0)
@@ -248,6 +249,8 @@ cvm_status cvm__rf_smooth(cvm__refiner *R, size_t first, const uint8_t *only, in
             int big0, big1;
             if (!cur[v] || (only && !only[v]))
                 continue;
+            if ((stop = cvm__tick(T->ctx, 1, CVM_STAGE_REFINE, 1.0)))
+                break;
             n = cvm__sm_star(T, (int32_t)v, &star, &cap, &err);
             /* a smart sweep leaves a star whose angles are all in [55, 65]
              * degrees alone (below): tested before gathering its ring */
@@ -327,7 +330,7 @@ cvm_status cvm__rf_smooth(cvm__refiner *R, size_t first, const uint8_t *only, in
             cvm__sm_moved(T, v, star, n, cur, next);
             moves++;
         }
-        if (moves == moved_before && !relaxing)
+        if (stop || (moves == moved_before && !relaxing))
             break;
         {
             uint8_t *sw = cur;
@@ -341,5 +344,5 @@ cvm_status cvm__rf_smooth(cvm__refiner *R, size_t first, const uint8_t *only, in
     cvm__free(T->ctx, next);
     if (moves_out)
         *moves_out = moves;
-    return CVM_OK;
+    return stop ? cvm__sm_stopped(T->ctx, stop) : CVM_OK;
 }

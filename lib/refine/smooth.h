@@ -30,6 +30,10 @@ typedef struct cvm__sm_ring {
  * when v may not move: a star triangle outside the domain or a constrained
  * spoke edge. *err is set on NOMEM. */
 size_t cvm__sm_star(const cvm__tri2 *T, int32_t v, int32_t **star, size_t *cap, int *err);
+/* The status of a smoothing stopped by the time limit or the progress
+ * callback (cvm__tick, polled per vertex visit), with its message: every move
+ * made keeps the mesh valid, so it stops where it is. */
+cvm_status cvm__sm_stopped(cvm__ctx *ctx, cvm_status s);
 
 void cvm__sm_ring_free(cvm__ctx *ctx, cvm__sm_ring *r);
 

@@ -121,6 +121,10 @@ cvm_status cvm__rf_smooth_maxmin(cvm__refiner *R, size_t first, const uint8_t *o
             int big0, bigm, big1, moved = 0;
             if (!cur[v] || (only && !only[v]))
                 continue;
+            if ((s = cvm__tick(T->ctx, 1, CVM_STAGE_REFINE, 1.0))) {
+                s = cvm__sm_stopped(T->ctx, s);
+                goto done;
+            }
             n = cvm__sm_star(T, (int32_t)v, &star, &cap, &err);
             if (err)
                 break;

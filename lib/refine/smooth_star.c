@@ -305,3 +305,11 @@ void cvm__sm_dilate(const cvm__tri2 *T, uint8_t *cur, uint8_t *tmp)
             cur[tv[0]] = cur[tv[1]] = cur[tv[2]] = 1;
     }
 }
+
+cvm_status cvm__sm_stopped(cvm__ctx *ctx, cvm_status s)
+{
+    return cvm__error(ctx, s, CVM_ENT_NONE, -1,
+                      "refinement %s while smoothing; the mesh is valid but some triangles may "
+                      "not meet the bounds",
+                      s == CVM_INCOMPLETE_CANCELLED ? "was cancelled" : "reached the time limit");
+}

@@ -7,8 +7,7 @@
  *   - input points are never removed, and keep their place with
  *     CVM_OPT_DUAL_KEEP_INPUT_POINTS; without vertex removal or insertion
  *     (CVM_OPT_DUAL_TOPOLOGY 0) the vertex count is unchanged and the run ends
- *     no worse than it started (CVM_MEASURE_DUAL_OPT_NONCOMPLIANT_*; with
- *     -DFUZZ_OPTIMISE_REPORT only, see there);
+ *     no worse than it started (CVM_MEASURE_DUAL_OPT_NONCOMPLIANT_*);
  *   - the library's containment (cvm_mesh_copy_dual_inside() and
  *     CVM_MEASURE_DUAL_OUTSIDE_PCT, _OUTSIDE_BOUNDARY_PCT) equals an exact
  *     recomputation here from the points, weights and triangles (the sign of
@@ -17,8 +16,7 @@
  *     _NONCOMPLIANT_BOUNDARY_PCT) equal a recomputation of the merge rule of
  *     CVM_OPT_DUAL_MERGE_TOL, up to the triangles whose merge distance lies
  *     within 1e-6 of its threshold (constructions: plain doubles);
- *     CVM_MEASURE_DUAL_OPT_NONCOMPLIANT_AFTER_PCT equals the measure (with
- *     -DFUZZ_OPTIMISE_REPORT);
+ *     CVM_MEASURE_DUAL_OPT_NONCOMPLIANT_AFTER_PCT equals the measure;
  *   - a second run on a fresh handle gives identical points, triangles, weights.
  *
  * Option bytes (then the PSLG of fuzz_pslg.h; missing bytes read as 0):
@@ -347,16 +345,12 @@ static void check_dual(const fuzz_pslg *g, const options *op, const output *o)
                          "input point %zu moved to (%.17g, %.17g) with KEEP_INPUT_POINTS", v, o->xy[2 * k],
                          o->xy[2 * k + 1]);
     }
-#ifdef FUZZ_OPTIMISE_REPORT
-    /* Off until the optimiser's report follows the measure: its end score
-     * can differ from CVM_MEASURE_DUAL_NONCOMPLIANT_PCT, and with vertex
-     * removal it can end above its start. */
-    if (op->topology != 2)
+    /* a percentage of the triangles: comparable only while no vertex goes */
+    if (op->topology == 0)
         FUZZ_REQUIRE(o->after <= o->before + PCT_TOL, "non-compliant %.17g%% after, %.17g%% before", o->after,
                      o->before);
     FUZZ_REQUIRE(fabs(o->after - o->noncompliant) <= PCT_TOL, "report says %.17g%% non-compliant after, "
                  "the measure %.17g%%", o->after, o->noncompliant);
-#endif
     /* boundary vertices and the mean length of each vertex's domain edges */
     memset(bnd, 0, o->nv);
     for (v = 0; v < o->nv; v++)

@@ -8,23 +8,24 @@
  *   - cvm_mesh_check() and the independent oracle accept the mesh;
  *   - the report is true, measured here from the coordinates: every triangle
  *     with an angle below the requested minimum, an area above CVM_OPT_MAX_AREA
- *     or a circumradius above the uniform size is in the unmet list with that
+ *     or a circumradius above the uniform size (0.707 x the size after
+ *     CVM_ALGO_FRONTAL and CVM_ALGO_AFLR) is in the unmet list with that
  *     reason; every listed triangle has a reason that holds; the counts and
  *     CVM_MEASURE_REFINE_MET_ANGLE agree with the list; a triangle exempt as
  *     subtended by a small input angle has two corners on one shell (within
  *     0.2%) around an input point or a crossing of input segments, seen from
  *     there under less than 60 degrees;
- *   - with CVM_OK, what is promised: after CVM_ALGO_FRONTAL and CVM_ALGO_AFLR
- *     every unlisted triangle has a circumradius of at most 0.707 x the size;
- *     with -DFUZZ_REFINE_STRICT also: every unmet triangle is an exempt one
- *     or lies on a boundary edge that is not axis-parallel (the documented
- *     hull limitation);
+ *   - with CVM_OK, what is promised: every unmet triangle is an exempt one,
+ *     lies on a boundary edge that is not axis-parallel (the documented
+ *     hull limitation), or has its three corners on one input segment (a
+ *     rounded crossing or split point a few ulps off it: the documented
+ *     rounding limitation);
  *   - a second run on a fresh handle gives identical points and triangles.
  *
  * Option bytes (then the PSLG of fuzz_pslg.h; missing bytes read as 0):
  *   byte 0  bits 0-1 algorithm (0, 1 Delaunay, 2 frontal, 3 AFLR); 2 diametral
  *           lens; 3 march segments; 4 KEEP_SEGMENT_VERTICES = 0 (with a size,
- *           without holes and free segments);
+ *           without free segments);
  *           5 keep the convex hull; 6 a uniform size; 7 a maximum area
  *   byte 1  minimum angle 20 + 13 b / 255 degrees
  *   byte 2  size 1 + (b & 31) / 4 (box units)
@@ -99,10 +100,10 @@ static void decode(options *o, fuzz_pslg *g, const uint8_t *data, size_t size)
         o->h = g->scale * (1.0 + (b2 & 31) / 4.0);
     if (b0 & 128)
         o->max_area = g->scale * g->scale * (0.5 + b3 / 16.0);
-    /* Not with holes or free segments yet: after the re-discretisation a
-     * hole polygon or a segment outside the domain loses its constrained
-     * edges (cvm_mesh_check fails). */
-    o->keep_seg = o->h > 0 && ((b0 >> 4) & 1) && g->nhole == 0 && g->ninner == 0;
+    /* Not with free segments yet: re-discretised chains crossed by them can
+     * leave a tiny unexempt triangle at the crossing on CVM_OK
+     * (tests/fuzz/open/refine/keep_seg_free_segments_crossing_cluster). */
+    o->keep_seg = o->h > 0 && ((b0 >> 4) & 1) && g->ninner == 0;
     o->smooth_sweeps = (b4 & 7) - 1;
     o->smooth_method = (b4 >> 3) & 3;
     o->relax_sweeps = ((b4 >> 5) & 7) - 1;
@@ -262,7 +263,6 @@ static int exempt_plausible(const fuzz_pslg *g, const double *const *p)
     return 0;
 }
 
-#ifdef FUZZ_REFINE_STRICT
 /* Triangle t has an edge on the domain boundary that is not axis-parallel:
  * where the documented hull limitation can leave triangles unmet (a
  * floating-point hull test misjudges the slivers along nearly collinear hull
@@ -278,7 +278,32 @@ static int on_slanted_hull(const output *o, size_t t)
     }
     return 0;
 }
-#endif
+
+/* 1 when the three corners of a triangle lie within 1e-9 x (M + L) of one
+ * input segment (M the largest coordinate, L its length): the triangle lies
+ * between a chain and a rounded crossing or split point a few ulps off it,
+ * which no Steiner point can remove (the documented rounding limitation). */
+static int on_one_segment(const fuzz_pslg *g, const double *const *p)
+{
+    size_t i;
+    int k;
+    for (i = 0; i < g->nseg; i++) {
+        const double *a = g->xy + 2 * g->seg[2 * i], *b = g->xy + 2 * g->seg[2 * i + 1];
+        double dx = b[0] - a[0], dy = b[1] - a[1], L = hypot(dx, dy), M = 0, tol;
+        int near = 1;
+        for (k = 0; k < 2; k++)
+            M = fmax(M, fmax(fabs(a[k]), fabs(b[k])));
+        tol = 1e-9 * (M + L);
+        for (k = 0; k < 3 && near; k++) {
+            double t = ((p[k][0] - a[0]) * dx + (p[k][1] - a[1]) * dy) / (L * L);
+            t = t < 0 ? 0 : t > 1 ? 1 : t;
+            near = hypot(a[0] + t * dx - p[k][0], a[1] + t * dy - p[k][1]) <= tol;
+        }
+        if (near)
+            return 1;
+    }
+    return 0;
+}
 
 /* 1 when some edge is shorter than 1e-9 x the coordinates around it: such
  * triangles are too small to tell apart by their centroids or to measure. */
@@ -316,6 +341,8 @@ static void check_report(const fuzz_pslg *g, const options *op, const output *o)
 {
     size_t t, u = 0, n_angle = 0, n_size = 0, n_small = 0;
     double met = 180.0;
+    /* the circumradius bound: the size, 0.707 x the size after frontal and AFLR */
+    double hb = op->algo == CVM_ALGO_FRONTAL || op->algo == CVM_ALGO_AFLR ? sqrt(0.5) * op->h : op->h;
     check_list_counts(o);
     FUZZ_REQUIRE(o->steiner <= op->max_steiner, "%g Steiner points over the budget %g", o->steiner,
                  op->max_steiner);
@@ -368,14 +395,14 @@ static void check_report(const fuzz_pslg *g, const options *op, const output *o)
             /* too thin to measure in floating point (area2 <= 0): the refiner
              * classes it as the worst shape, the angle reason */
             int big = area2 > 0 && ((op->max_area > 0 && area2 / 2 > op->max_area * (1 + REL_TOL)) ||
-                                    (op->h > 0 && R > op->h * (1 + REL_TOL)));
+                                    (op->h > 0 && R > hb * (1 + REL_TOL)));
             if (big)
                 FUZZ_REQUIRE(bits & CVM_UNMET_SIZE, "triangle %zu (%.17g, %.17g): area %.17g (max %g), "
-                             "circumradius %.17g (size %g), not listed (bits %d)", t, cx, cy, area2 / 2,
-                             op->max_area, R, op->h, bits);
+                             "circumradius %.17g (bound %g), not listed (bits %d)", t, cx, cy, area2 / 2,
+                             op->max_area, R, hb, bits);
             if (bits & CVM_UNMET_SIZE)
                 FUZZ_REQUIRE((op->max_area > 0 && area2 / 2 > op->max_area * (1 - REL_TOL)) ||
-                             (op->h > 0 && R > op->h * (1 - REL_TOL)),
+                             (op->h > 0 && R > hb * (1 - REL_TOL)),
                              "triangle %zu listed too big: area %.17g, circumradius %.17g", t, area2 / 2, R);
         }
         if (bits & CVM_UNMET_SMALL_INPUT_ANGLE) {
@@ -388,18 +415,11 @@ static void check_report(const fuzz_pslg *g, const options *op, const output *o)
         }
         n_angle += (bits & CVM_UNMET_ANGLE) != 0;
         n_size += (bits & CVM_UNMET_SIZE) != 0;
-        if (o->status == CVM_OK) {
-#ifdef FUZZ_REFINE_STRICT
-            /* Off until fixed: CVM_OK can leave an interior sliver (angle
-             * 1e-14 degrees) that is neither exempt nor on the boundary. */
-            FUZZ_REQUIRE(!listed || (bits & CVM_UNMET_SMALL_INPUT_ANGLE) || on_slanted_hull(o, t),
+        if (o->status == CVM_OK)
+            FUZZ_REQUIRE(!listed || (bits & CVM_UNMET_SMALL_INPUT_ANGLE) || on_slanted_hull(o, t) ||
+                         on_one_segment(g, p),
                          "refinement succeeded but left triangle %zu (%.17g, %.17g) unmet (bits %d, "
                          "angle %.17g, area %.17g, circumradius %.17g)", t, cx, cy, bits, ang, area2 / 2, R);
-#endif
-            if (op->h > 0 && (op->algo == CVM_ALGO_FRONTAL || op->algo == CVM_ALGO_AFLR) && !listed)
-                FUZZ_REQUIRE(R <= sqrt(0.5) * op->h * (1 + REL_TOL), "triangle %zu (%.17g, %.17g): "
-                             "circumradius %.17g over 0.707 x size %g", t, cx, cy, R, op->h);
-        }
     }
     FUZZ_REQUIRE(u == o->nunmet, "%zu of %zu unmet entries matched no triangle in order", u, o->nunmet);
     FUZZ_REQUIRE((double)n_angle == o->unmet_angle && (double)n_size == o->unmet_size &&

@@ -185,6 +185,56 @@ START_TEST(vtu_round_trip_of_a_hole_grid)
 }
 END_TEST
 
+/* Segments crossing near (1e6, 1e6) (tests/data/crossings_near_large_offset.poly):
+ * carving keeps only the regions they enclose, so the written file holds
+ * points of no triangle (ends of segments outside every region). They lie
+ * outside the file's domain: the file reads back ("point 0 lies in no
+ * triangle" before) to the same points and triangles, passes the check and
+ * rewrites to the same bytes. */
+START_TEST(vtu_points_outside_the_domain_read_back)
+{
+    char poly[4096], a[4096], b[4096];
+    char *ta, *tb;
+    size_t la, lb, nv, nt, nv2, nt2;
+    cvm_index *c1, *c2;
+    cvm_mesh *m, *r;
+    iotest_path(poly, sizeof poly, iotest_data_dir(), "crossings_near_large_offset.poly");
+    in_dir(a, sizeof a, "cross.vtu");
+    in_dir(b, sizeof b, "cross2.vtu");
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_msg(cvm_mesh_read(m, poly) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_write(m, a), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_create(&r), CVM_OK);
+    ck_assert_msg(cvm_mesh_read(r, a) == CVM_OK, "%s", cvm_mesh_errmsg(r));
+    ck_assert_msg(cvm_mesh_check(r) == CVM_OK, "%s", cvm_mesh_errmsg(r));
+    ck_assert_int_eq(cvm_mesh_count(&nv, m, CVM_ENT_VERTEX), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_count(&nv2, r, CVM_ENT_VERTEX), CVM_OK);
+    ck_assert_uint_eq(nv, nv2);
+    ck_assert_int_eq(cvm_mesh_count(&nt, m, CVM_ENT_TRIANGLE), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_count(&nt2, r, CVM_ENT_TRIANGLE), CVM_OK);
+    ck_assert_uint_eq(nt, nt2);
+    c1 = malloc((3 * nt + 1) * sizeof *c1);
+    c2 = malloc((3 * nt + 1) * sizeof *c2);
+    ck_assert(c1 && c2);
+    ck_assert_int_eq(cvm_mesh_copy_cells(c1, 3 * nt, m, CVM_ENT_TRIANGLE), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_copy_cells(c2, 3 * nt, r, CVM_ENT_TRIANGLE), CVM_OK);
+    ck_assert(memcmp(c1, c2, 3 * nt * sizeof *c1) == 0);
+    ck_assert_int_eq(cvm_mesh_write(r, b), CVM_OK);
+    ta = iotest_slurp(a, &la);
+    tb = iotest_slurp(b, &lb);
+    ck_assert(ta && tb);
+    ck_assert_uint_eq(la, lb);
+    ck_assert_msg(memcmp(ta, tb, la) == 0, "the rewritten .vtu differs");
+    free(ta);
+    free(tb);
+    free(c1);
+    free(c2);
+    cvm_mesh_free(m);
+    cvm_mesh_free(r);
+}
+END_TEST
+
 START_TEST(vtu_round_trip_keeps_weights)
 {
     round_trip(1);
@@ -265,11 +315,14 @@ START_TEST(vtu_unused_point_and_bad_cells_are_named)
     ck_assert_ptr_nonnull(t);
     ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
     in_dir(path, sizeof path, "x.vtu");
+    /* point 3 moved onto the side 0-1 of the one triangle left: inside the
+     * domain, yet no triangle's corner (outside, a point may be unused) */
     strcpy(t, k_bad_diagonal);
     memcpy(strstr(t, "0 1 2 0 2 3"), "0 1 2 0 2 1", 11);
+    memcpy(strstr(t, "1 1 0</DataArray>"), "2 0 0", 5);
     write_text(path, t);
     ck_assert_int_eq(cvm_mesh_read(m, path), CVM_E_INPUT_DEGENERATE);
-    ck_assert_ptr_nonnull(strstr(cvm_mesh_errmsg(m), "point 3 lies in no triangle"));
+    ck_assert_ptr_nonnull(strstr(cvm_mesh_errmsg(m), "point 3 at (2, 0) lies in the mesh but is a corner of no triangle"));
     strcpy(t, k_bad_diagonal);
     memcpy(strstr(t, "0 1 2 0 2 3"), "0 1 3 1 1 3", 11);
     write_text(path, t);
@@ -370,7 +423,7 @@ START_TEST(vtu_failed_read_keeps_the_previous_mesh)
     static const struct { const char *from, *to; cvm_status want; const char *msg; } bad[] = {
         {NULL, NULL, CVM_E_IO_OPEN, "cannot open"},
         {"0 1 2 0 2 3", "0 1 3 1 2 7", CVM_E_IO_FORMAT, "cell 1 names point 7"},
-        {"0 1 2 0 2 3", "0 1 2 0 2 1", CVM_E_INPUT_DEGENERATE, "point 3 lies in no triangle"},
+        {"0 1 2 0 2 3", "0 1 2 0 2 1", CVM_E_INPUT_DEGENERATE, "triangle 1 (points 0 2 1) is not reproduced"},
         {"0 1 2 0 2 3", "0 1 2 0 2 3", CVM_E_INPUT_DEGENERATE, "is not reproduced"},
         {"", "", CVM_E_INPUT_INTERSECTING,
          "rebuilding the mesh: segment 1 (points 1-3) crosses segment 0 (points 0-2)"},
@@ -453,6 +506,7 @@ TCase *api_read_vtu_tcase(void)
     tcase_add_checked_fixture(tc, setup, teardown);
     tcase_add_test(tc, vtu_round_trip_is_byte_identical);
     tcase_add_test(tc, vtu_round_trip_keeps_weights);
+    tcase_add_test(tc, vtu_points_outside_the_domain_read_back);
     tcase_add_test(tc, vtu_round_trip_of_a_hole_grid);
     tcase_add_test(tc, vtu_round_trip_with_vanished_vertices);
     tcase_add_test(tc, vtu_not_reproduced_is_an_error_and_keeps_the_mesh);

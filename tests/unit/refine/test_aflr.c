@@ -44,6 +44,49 @@ START_TEST(naca0012_meets_angle_and_size)
 }
 END_TEST
 
+/* No size and 34 degrees on the cylinder and the NACA 0012: nothing but the
+ * shortest input edge bounded the AFLR pass, whose points cascaded to that
+ * scale (5.9 million on the cylinder, and a run past its time limit). Now
+ * it finishes (CVM_OK) within a Steiner budget a few times what Delaunay
+ * refinement needs (557 and 1582 points), valid and at 34 degrees. */
+static void sizeless_34(const char *name)
+{
+    char path[1024];
+    cvm_mesh *m;
+    cvm_index *segs;
+    size_t nseg;
+    rtest_quality q;
+    double steiner;
+    cvm_status s;
+    cvmtest_expect e;
+    rtest_data_path(path, sizeof path, name);
+    segs = rtest_poly_segments(path, &nseg);
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_msg(cvm_mesh_read(m, path) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_MIN_ANGLE_DEG, 34), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_MAX_STEINER, 100000), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+    s = cvm_mesh_refine(m, NULL, CVM_ALGO_AFLR);
+    ck_assert_msg(s == CVM_OK, "%s: %s: %s", name, cvm_status_str(s), cvm_mesh_errmsg(m));
+    ck_assert_int_eq(cvm_mesh_get_measure(&steiner, m, CVM_MEASURE_REFINE_STEINER), CVM_OK);
+    ck_assert_msg(steiner <= 10000, "%s: %g Steiner points", name, steiner);
+    cvmtest_expect_init(&e);
+    e.segs = segs;
+    e.nseg = nseg;
+    cvmtest_assert_valid_ex(m, &e);
+    rtest_measure(m, &q);
+    ck_assert_msg(q.min_angle >= 34.0 - 1e-9, "%s: min angle %.17g", name, q.min_angle);
+    free(segs);
+    cvm_mesh_free(m);
+}
+
+START_TEST(sizeless_34_degrees_terminates)
+{
+    sizeless_34("cylinder.poly");
+    sizeless_34("naca0012.poly");
+}
+END_TEST
+
 START_TEST(three_degree_wedge_terminates)
 {
     rtest_small_angle_terminates(CVM_ALGO_AFLR, 3.0, 0.01);
@@ -592,6 +635,7 @@ TCase *refine_aflr_tcase(void)
     tcase_add_test(tc, channel_meets_angle_and_size);
     tcase_add_test(tc, annulus_meets_angle_and_size);
     tcase_add_test(tc, cylinder_meets_angle_and_size);
+    tcase_add_test(tc, sizeless_34_degrees_terminates);
     tcase_add_test(tc, naca0012_meets_angle_and_size);
     tcase_add_test(tc, three_degree_wedge_terminates);
     tcase_add_test(tc, jagged_star_terminates);

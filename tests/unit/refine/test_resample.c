@@ -623,6 +623,59 @@ START_TEST(removed_chain_ends_are_no_small_input_angle)
 }
 END_TEST
 
+/* Segments outside the domain: a free segment in a square hole of a 16-gon
+ * (a smooth chain) and a triangle beyond it (its own hole seed). The
+ * re-discretisation rebuilt the triangulation from the constrained edges with
+ * a domain side only, so these lost their edges (cvm_mesh_check: "input
+ * segment ... is not joined end to end"). They must stay, and the 16-gon is
+ * still re-discretised (its inner input vertices gone). */
+START_TEST(segments_outside_the_domain_are_kept)
+{
+    double xy[2 * 25], holes[4] = {8, 8, 12.4, 8.2}, a16 = 0, area;
+    cvm_index seg[2 * 25];
+    cvm_mesh *m;
+    size_t k, gone;
+    static const double sq[] = {7.5, 7.5, 8.5, 7.5, 8.5, 8.5, 7.5, 8.5, 7.75, 8, 8.25, 8,
+                                12, 8, 13, 8, 12.5, 8.5};
+    for (k = 0; k < 16; k++) {
+        xy[2 * k] = floor((8 + 2 * cos(2 * PI * (double)k / 16)) * 8 + 0.5) / 8;
+        xy[2 * k + 1] = floor((8 + 2 * sin(2 * PI * (double)k / 16)) * 8 + 0.5) / 8;
+        seg[2 * k] = (cvm_index)k;
+        seg[2 * k + 1] = (cvm_index)((k + 1) % 16);
+    }
+    for (k = 0; k < 16; k++)
+        a16 += (xy[2 * k] * xy[2 * ((k + 1) % 16) + 1] - xy[2 * ((k + 1) % 16)] * xy[2 * k + 1]) / 2;
+    memcpy(xy + 32, sq, sizeof sq);
+    for (k = 0; k < 4; k++) { /* the square hole: points 16..19 */
+        seg[2 * (16 + k)] = (cvm_index)(16 + k);
+        seg[2 * (16 + k) + 1] = (cvm_index)(16 + (k + 1) % 4);
+    }
+    seg[40] = 20; /* the free segment in the hole */
+    seg[41] = 21;
+    for (k = 0; k < 3; k++) { /* the triangle beyond the 16-gon: points 22..24 */
+        seg[2 * (21 + k)] = (cvm_index)(22 + k);
+        seg[2 * (21 + k) + 1] = (cvm_index)(22 + (k + 1) % 3);
+    }
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_points(m, xy, 25, 2), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_segments(m, seg, 24), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_holes(m, holes, 2), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_KEEP_SEGMENT_VERTICES, 0), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+    ck_assert_int_eq(refine_with(m, 0.5, CVM_ALGO_DELAUNAY), CVM_OK);
+    /* the chords cut the 16-gon: less area than the input, by less than 2 % */
+    ck_assert_int_eq(cvm_mesh_get_measure(&area, m, CVM_MEASURE_AREA), CVM_OK);
+    ck_assert_double_lt(area, a16 - 1.0);
+    ck_assert_double_gt(area, 0.98 * (a16 - 1.0));
+    assert_valid_resampled(m, 0, area);
+    for (k = 1, gone = 0; k < 16; k++)
+        gone += !has_point(m, xy[2 * k], xy[2 * k + 1]);
+    ck_assert_uint_gt(gone, 0);
+    ck_assert(has_point(m, 7.75, 8) && has_point(m, 8.25, 8) && has_point(m, 13, 8));
+    cvm_mesh_free(m);
+}
+END_TEST
+
 /* Out of memory at every allocation of a re-discretising refinement: a
  * status, no leak, and a valid mesh (the rebuilt one or the old one). */
 static void oom_setup(cvm_mesh *m, void *arg)
@@ -656,6 +709,7 @@ TCase *refine_resample_tcase(void)
     tcase_add_test(tc, option_and_state_errors);
     tcase_add_test(tc, collapsing_chains_fall_back);
     tcase_add_test(tc, removed_chain_ends_are_no_small_input_angle);
+    tcase_add_test(tc, segments_outside_the_domain_are_kept);
     tcase_add_test(tc, markers_and_attributes_follow_the_chain);
     tcase_add_test(tc, sizing_error_during_resampling);
     tcase_add_test(tc, out_of_memory_is_a_status);
