@@ -106,38 +106,45 @@ cvm_status cvm__mesh3_set_points(cvm_mesh *m, const double *xyz, size_t n)
     return CVM_OK;
 }
 
-cvm_status cvm__mesh3_set_holes(cvm_mesh *m, const double *xyz, size_t n)
+/* Replace the holes (k = 3) or regions (k = 5: x, y, z, attribute, max
+ * volume) of the 3D input by a copy of the n items at src: all or nothing. */
+static cvm_status replace_seeds(cvm_mesh *m, const double *src, size_t n, size_t k)
 {
     cvm__surf3 *in;
-    size_t i;
+    double *p = NULL;
     cvm_status s;
-    if ((s = check_finite(m, xyz, n, 3, CVM_ENT_HOLE, "hole")) || (s = ensure(m)))
+    if ((s = check_finite(m, src, n, k, k == 3 ? CVM_ENT_HOLE : CVM_ENT_REGION,
+                          k == 3 ? "hole" : "region")) ||
+        (s = ensure(m)))
         return s;
+    if (n && !(p = cvm__malloc(&m->ctx, n * k * sizeof *p)))
+        return cvm__nomem(&m->ctx);
+    if (n)
+        memcpy(p, src, n * k * sizeof *p);
     in = &m->m3->in;
-    cvm__free(&m->ctx, in->holes);
-    in->holes = NULL;
-    in->nholes = in->cap_holes = 0;
-    for (i = 0; i < n && !s; i++)
-        s = cvm__surf3_add_hole(&m->ctx, in, xyz + 3 * i);
+    if (k == 3) {
+        cvm__free(&m->ctx, in->holes);
+        in->holes = p;
+        in->nholes = n;
+        in->cap_holes = 3 * n; /* in doubles, as cvm__surf3_add_hole() counts */
+    } else {
+        cvm__free(&m->ctx, in->regions);
+        in->regions = p;
+        in->nregions = n;
+        in->cap_regions = 5 * n;
+    }
     drop_output(&m->ctx, m->m3);
-    return s;
+    return CVM_OK;
+}
+
+cvm_status cvm__mesh3_set_holes(cvm_mesh *m, const double *xyz, size_t n)
+{
+    return replace_seeds(m, xyz, n, 3);
 }
 
 cvm_status cvm__mesh3_set_regions(cvm_mesh *m, const double *r, size_t n)
 {
-    cvm__surf3 *in;
-    size_t i;
-    cvm_status s;
-    if ((s = check_finite(m, r, n, 5, CVM_ENT_REGION, "region")) || (s = ensure(m)))
-        return s;
-    in = &m->m3->in;
-    cvm__free(&m->ctx, in->regions);
-    in->regions = NULL;
-    in->nregions = in->cap_regions = 0;
-    for (i = 0; i < n && !s; i++)
-        s = cvm__surf3_add_region(&m->ctx, in, r + 5 * i);
-    drop_output(&m->ctx, m->m3);
-    return s;
+    return replace_seeds(m, r, n, 5);
 }
 
 cvm_status cvm__mesh3_read(cvm_mesh *m, const char *path)

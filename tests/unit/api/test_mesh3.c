@@ -410,6 +410,35 @@ START_TEST(files_are_written_in_each_format)
 }
 END_TEST
 
+/* 3D holes and regions through the _nd setters: copied whole, or not at all. */
+START_TEST(holes_and_regions_of_dimension_3)
+{
+    static const double pts[] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 1};
+    double hole[3] = {0.2, 0.2, 0.2}, region[10] = {0.1, 0.1, 0.1, 7, 0, 0.3, 0.3, 0.3, 8, 0};
+    size_t n;
+    cvm_mesh *m;
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_holes_nd(m, hole, 1, 3), CVM_E_UNSUPPORTED); /* still 2D */
+    ck_assert_int_eq(cvm_mesh_set_points(m, pts, 5, 3), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_holes_nd(m, hole, 1, 3), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_regions_nd(m, region, 2, 3), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_count(&n, m, CVM_ENT_HOLE), CVM_OK);
+    ck_assert_int_eq(n, 1);
+    ck_assert_int_eq(cvm_mesh_count(&n, m, CVM_ENT_REGION), CVM_OK);
+    ck_assert_int_eq(n, 2);
+    region[8] = NAN;
+    ck_assert_int_eq(cvm_mesh_set_regions_nd(m, region, 2, 3), CVM_E_INPUT_NONFINITE);
+    ck_assert_ptr_nonnull(strstr(cvm_mesh_errmsg(m), "region 1"));
+    ck_assert_int_eq(cvm_mesh_count(&n, m, CVM_ENT_REGION), CVM_OK);
+    ck_assert_int_eq(n, 2); /* the previous regions stay */
+    ck_assert_int_eq(cvm_mesh_set_holes_nd(m, hole, 1, 2), CVM_E_ARGUMENT);
+    /* a point set ignores them: the tetrahedralisation of the 5 points */
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_check(m), CVM_OK);
+    cvm_mesh_free(m);
+}
+END_TEST
+
 TCase *api_mesh3_tcase(void)
 {
     TCase *tc = tcase_create("mesh3");
@@ -423,5 +452,6 @@ TCase *api_mesh3_tcase(void)
     tcase_add_test(tc, surfaces_are_tetrahedralised_or_refused_clearly);
     tcase_add_test(tc, every_failed_allocation_gives_nomem_and_the_handle_goes_on);
     tcase_add_test(tc, files_are_written_in_each_format);
+    tcase_add_test(tc, holes_and_regions_of_dimension_3);
     return tc;
 }
