@@ -107,6 +107,12 @@ def test_top_readme_command_line_runs(index, tmp_path):
         elif flag == "--dual":                      # one power cell per vertex of the mesh
             cells = re.search(r'NumberOfCells="(\d+)"', path.read_text())
             assert nverts is not None and cells and int(cells.group(1)) == nverts
+        elif name.endswith(".vtu") and argv[1] == "tetrahedralize":
+            text = path.read_text()                 # a tetrahedral mesh: VTK_TETRA cells only
+            cells = re.search(r'NumberOfCells="(\d+)"', text)
+            assert cells and int(cells.group(1)) > 0
+            types = text.split('Name="types"')[1].split(">", 1)[1].split("<", 1)[0].split()
+            assert len(types) == int(cells.group(1)) and set(types) == {"10"}
         elif name.endswith(".vtu"):
             mesh = cvmesh.Mesh.read(str(path))     # read back as the same mesh
             assert len(mesh.triangles) > 0
