@@ -200,3 +200,10 @@ const char *cli_fmt_number(char *buf, size_t len, double v)
     snprintf(buf, len, "%.17g", v);
     return buf;
 }
+
+void cli_note_duplicates(const cvm_mesh *m, const char *in)
+{
+    size_t ndup = 0;
+    if (cvm_mesh_count(&ndup, m, CVM_ENT_DUPLICATE) == CVM_OK && ndup)
+        fprintf(stderr, "cvmesh: note: %s: %lu duplicate points merged\n", in, (unsigned long)ndup);
+}

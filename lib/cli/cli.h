@@ -80,6 +80,8 @@ void cli_print_output_help(FILE *f, int with_svg, int with_dual);
 /* A note on standard error when the command was asked for nothing to write or
  * print: its input was still read and checked. */
 void cli_note_nothing_to_do(const char *name, const char *in, const cli_outputs *o);
+/* A note on standard error when the triangulation of in merged duplicate points. */
+void cli_note_duplicates(const cvm_mesh *m, const char *in);
 /* "%.17g" shortened to the fewest digits that read back as v (0.15, not
  * 0.14999999999999999), into buf. */
 const char *cli_fmt_number(char *buf, size_t len, double v);

@@ -139,12 +139,7 @@ static int run(targs *a)
     if (cvm_mesh_triangulate(m) != CVM_OK || cli_interrupted())
         return cli_fail(m, NULL, a->in);
     cli_timing_mark(&a->o, "tetrahedralize");
-    {
-        size_t ndup = 0;
-        if (cvm_mesh_count(&ndup, m, CVM_ENT_DUPLICATE) == CVM_OK && ndup)
-            fprintf(stderr, "cvmesh: note: %s: %lu duplicate points merged\n", a->in,
-                    (unsigned long)ndup);
-    }
+    cli_note_duplicates(m, a->in);
     if ((rc = cli_write_outputs(m, &a->o)) < 0)
         return cli_stop(m, NULL);
     if (rc) {

@@ -91,7 +91,6 @@ static int run(args *a)
     phases ph = {0};
     double t0, t_read, t_tri, t_write;
     cvm_status s;
-    size_t ndup = 0;
     int rc;
     if (cvm_mesh_create(&m) != CVM_OK) {
         fprintf(stderr, "cvmesh: out of memory\n");
@@ -115,8 +114,7 @@ static int run(args *a)
     if (s != CVM_OK || cli_interrupted())
         return cli_fail(m, NULL, a->in);
     t_tri = cli_now();
-    if (cvm_mesh_count(&ndup, m, CVM_ENT_DUPLICATE) == CVM_OK && ndup)
-        fprintf(stderr, "cvmesh: note: %s: %lu duplicate points merged\n", a->in, (unsigned long)ndup);
+    cli_note_duplicates(m, a->in);
     if ((rc = cli_write_outputs(m, &a->o)) < 0)
         return cli_stop(m, NULL);
     if (rc) {
