@@ -103,24 +103,11 @@ for f in $(sed -e 's/#.*//' "$allow" | awk 'NF { print $1 }'); do
 done
 
 # The store accessor (store.h, store2.c) is the only file of lib/api that
-# touches the store. STORE_PENDING: files still reaching in directly (the
-# .vtu reader rebuilds a triangulation of its own and adopts it; it is being
-# extended on another branch, and its rebuild is to move below the API with
-# the adoption through cvm__store_exchange_tri2). Remove an entry when its
-# file is converted; the check fails on a listed file that no longer needs it.
-STORE_PENDING="lib/api/mesh_read_vtu.c"
+# touches the store.
 store_re='#[[:space:]]*include[[:space:]]*"delaunay/tri2_store\.h"|\bm->tri\b|\bT->[a-z_]+|\bcvm__tri2_[a-z0-9_]+[[:space:]]*\('
 for f in lib/api/*.c lib/api/*.h; do
     case $f in lib/api/store.h | lib/api/store2.c) continue ;; esac
     hits=$(grep -nE "$store_re" "$f" | head -3 || true)
-    case " $STORE_PENDING " in
-    *" $f "*)
-        if [ -z "$hits" ]; then
-            echo "check-layers: $f no longer reaches into the store: remove it from STORE_PENDING"
-            fail=1
-        fi
-        continue ;;
-    esac
     if [ -n "$hits" ]; then
         echo "check-layers: $f reaches into the simplex store; use lib/api/store.h:"
         echo "$hits" | sed 's/^/    /'

@@ -130,6 +130,10 @@ void cvm__store_destroy(cvm_mesh *m);
 void cvm__store_clear(cvm_mesh *m);
 /* Exchange the store's triangulation with *T (same dimension and context). */
 void cvm__store_exchange_tri2(cvm_mesh *m, cvm__tri2 *T);
+/* Replace the store's triangulation by *T, built through another context of
+ * the same allocator (it now uses m's), and free the old one; *T is left
+ * empty. */
+void cvm__store_adopt_tri2(cvm_mesh *m, cvm__tri2 *T);
 
 /* The domain cell holding point p, or -1 outside the triangulation. */
 int32_t cvm__store_locate(cvm_mesh *m, const double *p);

@@ -26,6 +26,15 @@ void cvm__store_exchange_tri2(cvm_mesh *m, cvm__tri2 *T)
     *T = old;
 }
 
+void cvm__store_adopt_tri2(cvm_mesh *m, cvm__tri2 *T)
+{
+    cvm__ctx *ctx = T->ctx;
+    cvm__tri2_destroy(&m->tri);
+    m->tri = *T;
+    m->tri.ctx = &m->ctx;
+    cvm__tri2_init(T, ctx);
+}
+
 int32_t cvm__store_locate(cvm_mesh *m, const double *p)
 {
     int32_t t;

@@ -1,10 +1,10 @@
-/* mesh_read_grid.c - which file triangle holds a point: a uniform grid over a
- * mesh file's triangles, for cvm_mesh_read() of .vtu/.vtk/.msh. */
+/* cell_grid.c - which of a set of triangles holds a point: a uniform grid over
+ * them (a mesh file's cells, for the rebuild of rebuild.c). */
 #include <math.h>
 #include <stdint.h>
 #include <string.h>
 
-#include "mesh_read_grid.h"
+#include "cell_grid.h"
 #include "geom/geom_internal.h"
 
 /* Cell of (v - lo) * s among n; monotone in v, NaN (0 * inf) to cell 0. */
@@ -16,15 +16,15 @@ static size_t grid_cell(double v, double lo, double s, size_t n)
     return c < (double)n ? (size_t)c : n - 1;
 }
 
-static void grid_box(const cvm__file_grid *g, const cvm__vtu_mesh *vm, size_t k, size_t *box)
+static void grid_box(const cvm__cell_grid *g, size_t k, size_t *box)
 {
-    const int32_t *t = vm->tri + 3 * k;
+    const int32_t *t = g->tri + 3 * k;
     double lo[2], hi[2];
     int i, d;
     for (d = 0; d < 2; d++) {
-        lo[d] = hi[d] = vm->p.xy[2 * (size_t)t[0] + (size_t)d];
+        lo[d] = hi[d] = g->xy[2 * (size_t)t[0] + (size_t)d];
         for (i = 1; i < 3; i++) {
-            double v = vm->p.xy[2 * (size_t)t[i] + (size_t)d];
+            double v = g->xy[2 * (size_t)t[i] + (size_t)d];
             lo[d] = v < lo[d] ? v : lo[d];
             hi[d] = v > hi[d] ? v : hi[d];
         }
@@ -35,7 +35,7 @@ static void grid_box(const cvm__file_grid *g, const cvm__vtu_mesh *vm, size_t k,
     box[3] = grid_cell(hi[1], g->y0, g->sy, g->side);
 }
 
-void cvm__file_grid_free(cvm__ctx *ctx, cvm__file_grid *g)
+void cvm__cell_grid_free(cvm__ctx *ctx, cvm__cell_grid *g)
 {
     cvm__free(ctx, g->start);
     cvm__free(ctx, g->idx);
@@ -44,16 +44,15 @@ void cvm__file_grid_free(cvm__ctx *ctx, cvm__file_grid *g)
 
 /* The number of listings with side cells per axis, or 0 when it would exceed
  * limit. */
-static size_t grid_count(cvm__file_grid *g, const cvm__vtu_mesh *vm, const double *hi, size_t side,
-                         size_t limit)
+static size_t grid_count(cvm__cell_grid *g, const double *hi, size_t side, size_t limit)
 {
     size_t k, n = 0, box[4];
     g->side = side;
     g->sx = hi[0] > g->x0 ? (double)side / (hi[0] - g->x0) : 0;
     g->sy = hi[1] > g->y0 ? (double)side / (hi[1] - g->y0) : 0;
-    for (k = 0; k < vm->nt; k++) {
+    for (k = 0; k < g->nt; k++) {
         size_t c;
-        grid_box(g, vm, k, box);
+        grid_box(g, k, box);
         c = (box[1] - box[0] + 1) * (box[3] - box[2] + 1);
         if (c > limit - n)
             return 0;
@@ -66,40 +65,45 @@ static size_t grid_count(cvm__file_grid *g, const cvm__vtu_mesh *vm, const doubl
  * boxes (long thin triangles across the domain) would list the triangles more
  * than 16 times over; one cell lists each triangle once. CVM_OK or
  * CVM_E_NOMEM. */
-cvm_status cvm__file_grid_build(cvm__ctx *ctx, const cvm__vtu_mesh *vm, cvm__file_grid *g)
+cvm_status cvm__cell_grid_build(cvm__ctx *ctx, cvm__cell_grid *g, const double *xy, size_t np,
+                                const int32_t *tri, size_t nt)
 {
-    size_t k, c, i, j, box[4], limit = 16 * vm->nt + 1024, side = 1;
+    size_t k, c, i, j, box[4], limit = 16 * nt + 1024, side = 1;
     double hi[2];
     memset(g, 0, sizeof *g);
-    g->x0 = hi[0] = vm->p.np ? vm->p.xy[0] : 0;
-    g->y0 = hi[1] = vm->p.np ? vm->p.xy[1] : 0;
-    for (k = 1; k < vm->p.np; k++) {
-        double x = vm->p.xy[2 * k], y = vm->p.xy[2 * k + 1];
+    g->xy = xy;
+    g->np = np;
+    g->tri = tri;
+    g->nt = nt;
+    g->x0 = hi[0] = g->np ? g->xy[0] : 0;
+    g->y0 = hi[1] = g->np ? g->xy[1] : 0;
+    for (k = 1; k < g->np; k++) {
+        double x = g->xy[2 * k], y = g->xy[2 * k + 1];
         g->x0 = x < g->x0 ? x : g->x0;
         g->y0 = y < g->y0 ? y : g->y0;
         hi[0] = x > hi[0] ? x : hi[0];
         hi[1] = y > hi[1] ? y : hi[1];
     }
-    while (side * side < vm->nt && side < 65536)
+    while (side * side < g->nt && side < 65536)
         side++;
-    while ((g->n = grid_count(g, vm, hi, side, limit)) == 0 && side > 1)
+    while ((g->n = grid_count(g, hi, side, limit)) == 0 && side > 1)
         side /= 2;
     g->start = cvm__calloc(ctx, side * side + 1, sizeof *g->start);
     g->idx = cvm__malloc(ctx, (g->n + 1) * sizeof *g->idx);
     if (!g->start || !g->idx) {
-        cvm__file_grid_free(ctx, g);
+        cvm__cell_grid_free(ctx, g);
         return CVM_E_NOMEM;
     }
-    for (k = 0; k < vm->nt; k++) {
-        grid_box(g, vm, k, box);
+    for (k = 0; k < g->nt; k++) {
+        grid_box(g, k, box);
         for (j = box[2]; j <= box[3]; j++)
             for (i = box[0]; i <= box[1]; i++)
                 g->start[j * side + i + 1]++;
     }
     for (c = 0; c < side * side; c++) /* start[c]: where cell c begins */
         g->start[c + 1] += g->start[c];
-    for (k = 0; k < vm->nt; k++) { /* start[c] advances to the end of cell c ... */
-        grid_box(g, vm, k, box);
+    for (k = 0; k < g->nt; k++) { /* start[c] advances to the end of cell c ... */
+        grid_box(g, k, box);
         for (j = box[2]; j <= box[3]; j++)
             for (i = box[0]; i <= box[1]; i++)
                 g->idx[g->start[j * side + i]++] = (int32_t)k;
@@ -110,24 +114,23 @@ cvm_status cvm__file_grid_build(cvm__ctx *ctx, const cvm__vtu_mesh *vm, cvm__fil
     return CVM_OK;
 }
 
-/* 1 when p lies in (or on) file triangle k (exact orientation tests). */
-static int in_file_triangle(const cvm__vtu_mesh *vm, size_t k, const double *p)
+/* 1 when p lies in (or on) triangle k (exact orientation tests). */
+static int in_cell(const cvm__cell_grid *g, size_t k, const double *p)
 {
-    const int32_t *t = vm->tri + 3 * k;
-    const double *a = vm->p.xy + 2 * (size_t)t[0], *b = vm->p.xy + 2 * (size_t)t[1],
-                 *c = vm->p.xy + 2 * (size_t)t[2];
+    const int32_t *t = g->tri + 3 * k;
+    const double *a = g->xy + 2 * (size_t)t[0], *b = g->xy + 2 * (size_t)t[1],
+                 *c = g->xy + 2 * (size_t)t[2];
     double o1 = cvm__orient2d(a, b, p), o2 = cvm__orient2d(b, c, p), o3 = cvm__orient2d(c, a, p);
-    /* either orientation of the file's triangle */
+    /* either orientation */
     return (o1 >= 0 && o2 >= 0 && o3 >= 0) || (o1 <= 0 && o2 <= 0 && o3 <= 0);
 }
 
-/* 1 when p lies in (or on) a triangle of the file. */
-int cvm__file_grid_in_domain(const cvm__vtu_mesh *vm, const cvm__file_grid *g, const double *p)
+int cvm__cell_grid_contains(const cvm__cell_grid *g, const double *p)
 {
     size_t c = grid_cell(p[1], g->y0, g->sy, g->side) * g->side +
                grid_cell(p[0], g->x0, g->sx, g->side), e;
     for (e = g->start[c]; e < g->start[c + 1]; e++)
-        if (in_file_triangle(vm, (size_t)g->idx[e], p))
+        if (in_cell(g, (size_t)g->idx[e], p))
             return 1;
     return 0;
 }
