@@ -427,13 +427,23 @@ CVM_API cvm_status cvm_mesh_set_regions_nd(cvm_mesh *m, const double *r, size_t 
  * triangles the segments, with a hole point in each hole; the handle is
  * triangulated, point data "weight" is set as the weights
  * (cvm_mesh_set_weights()) and cell data "attribute" as the triangles'
- * regional attributes. The result must hold exactly the file's triangles; the
- * triangles then keep the file's order and first vertex, so cvm_mesh_write()
- * of a file cvm_mesh_write() wrote reproduces it byte for byte. A file
- * without line cells is first tried as the Delaunay triangulation of its
- * points (no segments). Vertex ids are the file's point numbers (unless the
- * file repeats a point). Cell type 1 (vertex) is ignored; z must be 0. The
- * rebuild ignores CVM_OPT_TIME_LIMIT_S and uses the handle's other options.
+ * regional attributes. When the result holds exactly the file's triangles
+ * they keep the file's order and first vertex, so cvm_mesh_write() of a file
+ * cvm_mesh_write() wrote reproduces it byte for byte. A file without line
+ * cells is first tried as the Delaunay triangulation of its points (no
+ * segments). Any other conforming triangulation (a structured grid split
+ * into triangles, a Gmsh mesh, a mesh that is not Delaunay) is made
+ * (constrained) Delaunay, or regular with weights, by Lawson flips under the
+ * exact in-circle (power) test: its boundary edges, line cells and the edges
+ * between triangles of different attributes are segments and never flipped;
+ * the connectivity then changes, the triangles keep the file's slots (the two
+ * a flip makes take the slots of the two it replaced), and
+ * CVM_REPORT_READ_FLIPS says how many flips it took (0: the file's own
+ * triangles). A vertex whose power cell is empty stays, as after
+ * cvm_mesh_set_weights() (CVM_MEASURE_VANISHED_VERTICES). Vertex ids are the
+ * file's point numbers (unless the file repeats a point). Cell type 1
+ * (vertex) is ignored; z must be 0. The rebuild ignores CVM_OPT_TIME_LIMIT_S
+ * and uses the handle's other options.
  *
  * A legacy .vtk file (ASCII or BINARY, UNSTRUCTURED_GRID or POLYDATA; cell
  * layouts before and after version 5.1; POINT_DATA/CELL_DATA arrays of the
@@ -476,12 +486,14 @@ CVM_API cvm_status cvm_mesh_set_regions_nd(cvm_mesh *m, const double *r, size_t 
  *         CVM_E_IO_FORMAT, CVM_E_INPUT_INDEX  a 3D file's malformed content or a face naming a
  *                                point that does not exist (message names file:line, or the
  *                                byte offset of a binary .stl, and the face)
- *         CVM_E_INPUT_DEGENERATE .vtu whose mesh cannot be rebuilt: a triangle repeats a
- *                                point or has two corners at one position, a line cell
- *                                has zero length, a point is in no triangle, an edge has three
- *                                triangles, or a triangle is not reproduced by the
- *                                constrained regular triangulation of the file's points,
- *                                segments and weights (message names the triangle and its
+ *         CVM_E_INPUT_DEGENERATE .vtu whose cells are not a conforming triangulation: a
+ *                                triangle repeats a point, has two corners at one position
+ *                                or all three on one line, a line cell has zero length, a
+ *                                point inside the mesh is in no triangle, an edge has three
+ *                                triangles, a triangle is inverted (on the same side of an
+ *                                edge as its neighbour), or a triangle is not one of the
+ *                                constrained triangulation of the file's points and edges
+ *                                (triangles overlap; message names the triangle and its
  *                                points; cvm_mesh_error_item() gives CVM_ENT_TRIANGLE, k)
  *         other CVM_E_INPUT_* of cvm_mesh_triangulate() for a .vtu (message prefixed
  *                                with the file name)
@@ -2245,7 +2257,7 @@ CVM_API cvm_status cvm_mesh_optimise_dual(cvm_mesh *m, const cvm_sizing *sizing)
 
 /**
  * Scalar quality measures of cvm_mesh_get_measure(). Values never change.
- * Most are measures of the current mesh; 11-16 and 40-49 are reports of the last
+ * Most are measures of the current mesh; 11-16, 40-49 and 60 are reports of the last
  * run (what it asked for and did), which cvm_mesh_get_report() reads under the
  * names of cvm_report. New measures of the mesh use the free numbers below 100;
  * 700-799 are reserved for 3D measures, 800-899 for quad measures.
@@ -2331,6 +2343,11 @@ typedef enum cvm_measure {
     CVM_MEASURE_DUAL_OPT_REMOVED_MAXMIN = 49, /**< Steiner vertices removed by the kept removal
                                              trials of the max-min-angle phase
                                              (CVM_OPT_DUAL_MAXMIN_ROUNDS) */
+    /* Report of the last cvm_mesh_read() of a mesh file (.vtu, .vtk, .msh) on the
+       handle (0 before any, and after cvm_mesh_triangulate()): */
+    CVM_MEASURE_READ_FLIPS = 60,        /**< edge flips that made the file's triangles (constrained)
+                                             Delaunay, or regular with weights; 0 when the mesh
+                                             holds exactly the file's triangles */
     /* ---- 700-799: 3D meshes (cvm_mesh_dim() 3); MIN_EDGE, MAX_EDGE and
      * VANISHED_VERTICES apply to them too ---- */
     CVM_MEASURE_VOLUME = 700,           /**< total volume of the tetrahedra */
@@ -2410,7 +2427,7 @@ CVM_API cvm_status cvm_mesh_get_measure(double *out, cvm_mesh *m, cvm_measure wh
  * cvm_mesh_get_report(): what a run asked for and did, as opposed to the
  * measures of the mesh (cvm_measure), which depend only on the current mesh.
  * The values equal those of the CVM_MEASURE_* of the same name, which
- * cvm_mesh_get_measure() keeps accepting. Blocks: 11-16 and 40-49 as below,
+ * cvm_mesh_get_measure() keeps accepting. Blocks: 11-16, 40-49 and 60-69 as below,
  * 700-799 reserved for the 3D kernel's runs, 800-899 for quad meshing.
  * Values never change.
  */
@@ -2433,7 +2450,9 @@ typedef enum cvm_report {
                                                    the one report that is not deterministic) */
     CVM_REPORT_DUAL_OPT_REMOVED_VANISHED = 47,/**< = CVM_MEASURE_DUAL_OPT_REMOVED_VANISHED */
     CVM_REPORT_DUAL_OPT_REMOVED_DEGREE = 48,  /**< = CVM_MEASURE_DUAL_OPT_REMOVED_DEGREE */
-    CVM_REPORT_DUAL_OPT_REMOVED_MAXMIN = 49   /**< = CVM_MEASURE_DUAL_OPT_REMOVED_MAXMIN */
+    CVM_REPORT_DUAL_OPT_REMOVED_MAXMIN = 49,  /**< = CVM_MEASURE_DUAL_OPT_REMOVED_MAXMIN */
+    /* the last cvm_mesh_read() of a mesh file (0 before any, and after cvm_mesh_triangulate()) */
+    CVM_REPORT_READ_FLIPS = 60                /**< = CVM_MEASURE_READ_FLIPS */
 } cvm_report;
 
 /**

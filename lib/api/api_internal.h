@@ -79,6 +79,9 @@ struct cvm_mesh {
     double *tlayer;          /* AFLR layer index per triangle slot of tri, or NULL */
     size_t n_tlayer;         /* tri.nt when tlayer was made (stale when it differs) */
 
+    /* the last cvm_mesh_read() of a mesh file: CVM_REPORT_READ_FLIPS */
+    double read_flips;
+
     /* cvm_mesh_stage_write(): files written, waiting for cvm_mesh_commit_writes() */
     cvm__write_set staged;
 

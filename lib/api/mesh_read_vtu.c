@@ -70,6 +70,7 @@ static void adopt(cvm_mesh *m, cvm__rebuild *rb, cvm__vtu_mesh *vm)
     memset(&rb->out, 0, sizeof rb->out);
     m->triangulated = 1;
     m->nv_triangulated = cvm__store_nv(m);
+    m->read_flips = (double)rb->nflips;
 }
 
 cvm_status cvm__mesh_read_vtu(cvm_mesh *m, const char *path)

@@ -25,6 +25,7 @@ void cvm__mesh_drop_output(cvm_mesh *m)
     m->refine_unmet = NULL;
     m->n_refine_unmet = 0;
     memset(m->dual_opt_report, 0, sizeof m->dual_opt_report);
+    m->read_flips = 0;
     cvm__free(&m->ctx, m->tlayer);
     m->tlayer = NULL;
     m->n_tlayer = 0;

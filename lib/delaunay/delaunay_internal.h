@@ -261,6 +261,9 @@ int cvm__tri2_conflict(const cvm__tri2 *T, int32_t t, int32_t p);
  * (cvm__tri2_count_unregular counts them). *nflips_out (may be NULL) receives
  * the number of flips. CVM_OK or CVM_E_NOMEM (nothing changed). */
 cvm_status cvm__tri2_make_regular(cvm__tri2 *T, size_t *nflips_out);
+/* The same, and *ndomain_out (may be NULL) receives how many of the flips
+ * were inside the domain (the rest are in its exterior or holes). */
+cvm_status cvm__tri2_make_regular_count(cvm__tri2 *T, size_t *nflips_out, size_t *ndomain_out);
 
 /* Number of vertices whose power cell is empty as far as the triangulation
  * shows: the blocking corner of each illegal, unflippable edge (see

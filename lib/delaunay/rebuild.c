@@ -184,8 +184,9 @@ void cvm__rebuild_free(cvm__rebuild *rb)
     cvm__free(rb->ctx, rb->seg);
     cvm__free(rb->ctx, rb->smark);
     cvm__free(rb->ctx, rb->holes);
+    cvm__free(rb->ctx, rb->segtri);
     memset(&rb->out, 0, sizeof rb->out);
-    rb->seg = rb->smark = NULL;
+    rb->seg = rb->smark = rb->segtri = NULL;
     rb->holes = NULL;
     rb->nseg = rb->nholes = 0;
 }
@@ -228,29 +229,23 @@ static cvm_status build(cvm__rebuild *rb, const cvm__rebuild_input *in, size_t n
     return cvm__cdt_build(&rb->tri, &cin, &rb->out, &rb->fault);
 }
 
-/* Weights of the file (per input point) onto rb's vertices. forced: rb holds
- * the file's triangles already; the weights are set without flips, then the
- * Lawson flips of cvm_mesh_set_weights() run, which change nothing in the
- * domain exactly when the file's mesh is what cvm_mesh_set_weights() keeps
- * (regular, or its illegal edges unflippable: vanished vertices). Not
- * forced: the flips of cvm_mesh_set_weights() from the (constrained)
- * Delaunay triangulation. */
-static cvm_status weights(cvm__rebuild *rb, const cvm__rebuild_input *in, int forced)
+/* Weights of the file (per input point) onto rb's vertices, then the
+ * Lawson flips of cvm_mesh_set_weights() from the (constrained) Delaunay
+ * triangulation. */
+static cvm_status weights(cvm__rebuild *rb, const cvm__rebuild_input *in)
 {
     cvm__tri2 *T = &rb->tri;
     size_t i, nv = T->nv;
     double *w;
-    if (!in->w && !forced)
+    if (!in->w)
         return CVM_OK;
     w = cvm__calloc(rb->ctx, (T->cap_v > nv ? T->cap_v : nv) + 1, sizeof *w);
     if (!w)
         return cvm__nomem(rb->ctx);
-    for (i = 0; in->w && i < in->cdt.np; i++)
+    for (i = 0; i < in->cdt.np; i++)
         w[rb->out.input_map[i]] = in->w[i];
     cvm__free(rb->ctx, T->w);
-    T->w = in->w ? w : NULL;
-    if (!in->w)
-        cvm__free(rb->ctx, w);
+    T->w = w;
     return cvm__tri2_make_regular(T, NULL) ? cvm__nomem(rb->ctx) : CVM_OK;
 }
 
@@ -267,82 +262,148 @@ static void drop_temporary(cvm__rebuild *rb, size_t nreal)
     rb->nseg = nreal;
 }
 
-/* One attempt with the first nseg segments of rb->seg, of which the first
- * nreal are kept (nseg > nreal: a forced rebuild, see weights()); nseg = 0
- * tries the plain triangulation of the points (files without lines). *bad as
- * in match(). */
+/* The regional attributes of the file onto rb's triangles, in the file's order. */
+static cvm_status rb_attributes(cvm__rebuild *rb, const cvm__rebuild_input *in)
+{
+    size_t k;
+    if (!in->tattr)
+        return CVM_OK;
+    if (cvm__tri2_enable_attributes(&rb->tri))
+        return cvm__nomem(rb->ctx);
+    for (k = 0; k < in->nt; k++)
+        rb->tri.ta[k] = in->tattr[k];
+    return CVM_OK;
+}
+
+/* One attempt with the first nseg segments of rb->seg; nseg = 0 tries the
+ * plain triangulation of the points (files without lines). *bad as in
+ * match(). */
 static cvm_status attempt(cvm__rebuild *rb, const cvm__rebuild_input *in, size_t nseg,
-                          size_t nreal, int64_t *bad)
+                          int64_t *bad)
 {
     double *holes = NULL;
     size_t nholes = 0;
-    int forced = nseg > nreal;
     cvm_status s = build(rb, in, nseg, NULL, 0);
     if (s)
         return s;
-    drop_temporary(rb, nreal);
-    if ((s = weights(rb, in, forced)))
+    if ((s = weights(rb, in)))
         return s;
     if (nseg) {
         if ((s = hole_seeds(rb, in, &holes, &nholes)))
             return s;
-        if (nholes && !(s = build(rb, in, nseg, holes, nholes))) {
-            drop_temporary(rb, nreal);
-            s = weights(rb, in, forced);
-        }
+        if (nholes && !(s = build(rb, in, nseg, holes, nholes)))
+            s = weights(rb, in);
         cvm__free(rb->ctx, holes);
         if (s)
             return s;
     }
     if ((s = match(rb, in, bad)) || *bad >= 0)
         return s;
-    if (in->tattr) {
-        size_t k;
-        if (cvm__tri2_enable_attributes(&rb->tri))
+    return rb_attributes(rb, in);
+}
+
+/* The last attempt: every file edge constrained, which reproduces the cells
+ * exactly when they are a conforming triangulation (the constrained
+ * triangulation of a triangulation's edges is that triangulation); *bad as
+ * in match() otherwise. Then the inner edges (but region borders) are
+ * released and flipped to the constrained Delaunay (regular, with weights)
+ * triangulation: rb->nflips counts the flips in the domain. The slots keep
+ * the file's order; two triangles a flip made take the slots of the two it
+ * replaced. */
+static cvm_status rb_forced(cvm__rebuild *rb, const cvm__rebuild_input *in, size_t nall,
+                         size_t nkeep, int64_t *bad)
+{
+    cvm__tri2 *T = &rb->tri;
+    double *holes = NULL, *w;
+    size_t nholes = 0, i;
+    cvm_status s = build(rb, in, nall, NULL, 0);
+    if (s)
+        return s;
+    if ((s = hole_seeds(rb, in, &holes, &nholes)))
+        return s;
+    if (nholes)
+        s = build(rb, in, nall, holes, nholes);
+    cvm__free(rb->ctx, holes);
+    if (s || (s = match(rb, in, bad)) || *bad >= 0)
+        return s;
+    drop_temporary(rb, nkeep);
+    if ((s = rb_attributes(rb, in)))
+        return s;
+    if (in->w) {
+        if (!(w = cvm__calloc(rb->ctx, (T->cap_v > T->nv ? T->cap_v : T->nv) + 1, sizeof *w)))
             return cvm__nomem(rb->ctx);
-        for (k = 0; k < in->nt; k++)
-            rb->tri.ta[k] = in->tattr[k];
+        for (i = 0; i < in->cdt.np; i++)
+            w[rb->out.input_map[i]] = in->w[i];
+        cvm__free(rb->ctx, T->w);
+        T->w = w;
     }
-    return CVM_OK;
+    return cvm__tri2_make_regular_count(T, NULL, &rb->nflips) ? cvm__nomem(rb->ctx) : CVM_OK;
+}
+
+/* Two file edges cross (rb->fault, in the rebuild with the first nseg
+ * segments): when both are triangles' edges, the triangles overlap; say so
+ * in the file's terms. Returns s otherwise. */
+static cvm_status rb_overlap(cvm__rebuild *rb, const cvm__rebuild_input *in, cvm_status s)
+{
+    const cvm__cdt_fault *f = &rb->fault;
+    int32_t t, u;
+    const int32_t *a, *b, *sa, *sb;
+    if (s != CVM_E_INPUT_INTERSECTING || f->kind != CVM__CDT_FAULT_CROSSING || f->item >= rb->nseg ||
+        f->other >= rb->nseg || (t = rb->segtri[f->item]) < 0 || (u = rb->segtri[f->other]) < 0)
+        return s;
+    a = in->tri + 3 * (size_t)t;
+    b = in->tri + 3 * (size_t)u;
+    sa = rb->seg + 2 * f->item;
+    sb = rb->seg + 2 * f->other;
+    memset(&rb->fault, 0, sizeof rb->fault);
+    rb->rebuilding = 0;
+    return cvm__error(rb->ctx, s, CVM_ENT_TRIANGLE, t,
+                      "triangle %ld (points %ld %ld %ld) overlaps triangle %ld (points %ld %ld "
+                      "%ld): their edges %ld-%ld and %ld-%ld cross", (long)t, (long)a[0],
+                      (long)a[1], (long)a[2], (long)u, (long)b[0], (long)b[1], (long)b[2],
+                      (long)sa[0], (long)sa[1], (long)sb[0], (long)sb[1]);
 }
 
 cvm_status cvm__rebuild_cells(cvm__rebuild *rb, const cvm__rebuild_input *in)
 {
-    size_t nseg = 0, nreal = 0;
+    size_t nseg = 0, nreal = 0, nkeep = 0;
     int64_t bad = -1;
     cvm_status s;
     rb->rebuilding = 0;
-    if ((s = cvm__rb_cells(rb, in, &nreal, &nseg)))
+    rb->nflips = 0;
+    if ((s = cvm__rb_cells(rb, in, &nreal, &nkeep, &nseg)))
         return s;
     rb->rebuilding = 1;
     /* 1. no lines: the Delaunay (regular) triangulation of the points */
     if (!in->has_lines)
-        s = attempt(rb, in, 0, 0, &bad);
+        s = attempt(rb, in, 0, &bad);
     /* 2. the constrained one, with the boundary as segments and hole seeds */
     if (!s && (in->has_lines || bad >= 0)) {
         bad = -1;
-        s = attempt(rb, in, nreal, nreal, &bad);
+        s = attempt(rb, in, nreal, &bad);
     }
-    /* 3. every file edge forced, then checked by the flips (weights the
-       regular triangulation does not reach from the CDT: vanished vertices) */
-    if (!s && bad >= 0 && nseg > nreal) {
+    /* 3. every file edge forced, then flipped (a mesh that is not
+       constrained Delaunay; weights the regular triangulation does not reach
+       from the CDT: vanished vertices) */
+    if (!s && bad >= 0) {
         bad = -1;
-        s = attempt(rb, in, nseg, nreal, &bad);
+        s = rb_forced(rb, in, nseg, nkeep, &bad);
     }
     if (s)
-        return s;
+        return rb_overlap(rb, in, s);
     rb->rebuilding = 0;
     if (bad >= 0) {
         const int32_t *f = in->tri + 3 * (bad < (int64_t)in->nt ? bad : 0);
         if (bad == (int64_t)in->nt)
             return cvm__error(rb->ctx, CVM_E_INPUT_DEGENERATE, CVM_ENT_NONE, -1,
-                              "the triangulation of its points and segments has more "
-                              "triangles than the file (%lu): the file's mesh is not a "
-                              "constrained regular triangulation", (unsigned long)in->nt);
+                              "the constrained triangulation of its points and edges has more "
+                              "triangles than the file (%lu): the cells are not a conforming "
+                              "triangulation (they leave a gap)", (unsigned long)in->nt);
         return cvm__error(rb->ctx, CVM_E_INPUT_DEGENERATE, CVM_ENT_TRIANGLE, bad,
-                          "triangle %ld (points %ld %ld %ld) is not reproduced by the "
-                          "constrained regular triangulation of the file's points, segments and "
-                          "weights", (long)bad, (long)f[0], (long)f[1], (long)f[2]);
+                          "triangle %ld (points %ld %ld %ld) is not a triangle of the constrained "
+                          "triangulation of the file's points and edges: the cells are not a "
+                          "conforming triangulation (they overlap, or a point or line cell lies "
+                          "inside a triangle)", (long)bad, (long)f[0], (long)f[1], (long)f[2]);
     }
     return CVM_OK;
 }

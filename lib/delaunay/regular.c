@@ -91,10 +91,17 @@ static void flip(cvm__tri2 *T, int32_t t, int j, const int32_t *q)
 
 cvm_status cvm__tri2_make_regular(cvm__tri2 *T, size_t *nflips_out)
 {
-    size_t nh = 3 * T->nt, n = 0, h, nflips = 0;
+    return cvm__tri2_make_regular_count(T, nflips_out, NULL);
+}
+
+cvm_status cvm__tri2_make_regular_count(cvm__tri2 *T, size_t *nflips_out, size_t *ndomain_out)
+{
+    size_t nh = 3 * T->nt, n = 0, h, nflips = 0, ndomain = 0;
     uint8_t *queued;
     if (nflips_out)
         *nflips_out = 0;
+    if (ndomain_out)
+        *ndomain_out = 0;
     if (nh > T->cap_stack && cvm__grow(T->ctx, (void **)&T->stack, &T->cap_stack, nh, sizeof(int32_t)))
         return CVM_E_NOMEM;
     queued = cvm__calloc(T->ctx, nh + 1, 1);
@@ -114,6 +121,7 @@ cvm_status cvm__tri2_make_regular(cvm__tri2 *T, size_t *nflips_out)
         {
             int32_t u = T->tn[he] / 3;
             int32_t outer[4];
+            ndomain += !(T->tf[t] & CVM__TF_OUT);
             flip(T, t, j, q);
             outer[0] = 3 * t;
             outer[1] = 3 * t + 2;
@@ -130,6 +138,8 @@ cvm_status cvm__tri2_make_regular(cvm__tri2 *T, size_t *nflips_out)
     cvm__free(T->ctx, queued);
     if (nflips_out)
         *nflips_out = nflips;
+    if (ndomain_out)
+        *ndomain_out = ndomain;
     return CVM_OK;
 }
 

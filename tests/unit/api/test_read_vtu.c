@@ -122,6 +122,11 @@ static void round_trip(int weighted)
     ck_assert_int_eq(cvm_mesh_write(m, a), CVM_OK);
     ck_assert_int_eq(cvm_mesh_create(&r), CVM_OK);
     ck_assert_msg(cvm_mesh_read(r, a) == CVM_OK, "%s", cvm_mesh_errmsg(r));
+    {
+        double flips = -1;
+        ck_assert_int_eq(cvm_mesh_get_report(&flips, r, CVM_REPORT_READ_FLIPS), CVM_OK);
+        ck_assert(flips == 0); /* the file's own triangles */
+    }
     if (weighted < 2) /* with vanished vertices the check reports their illegal edges */
         ck_assert_msg(cvm_mesh_check(r) == CVM_OK, "%s", cvm_mesh_errmsg(r));
     assert_same_mesh(m, r);
@@ -259,8 +264,7 @@ static void write_text(const char *path, const char *text)
 }
 
 /* A parallelogram split along its long diagonal 0-2, which is not
- * Delaunay (the angles at 1 and 3 are 135 degrees): the file's mesh cannot
- * be rebuilt. */
+ * Delaunay (the angles at 1 and 3 are 135 degrees). */
 static const char k_bad_diagonal[] =
     "<VTKFile type=\"UnstructuredGrid\"><UnstructuredGrid>"
     "<Piece NumberOfPoints=\"4\" NumberOfCells=\"2\"><Points>"
@@ -271,40 +275,185 @@ static const char k_bad_diagonal[] =
     "<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">5 5</DataArray>"
     "</Cells></Piece></UnstructuredGrid></VTKFile>\n";
 
-START_TEST(vtu_not_reproduced_is_an_error_and_keeps_the_mesh)
+static const char k_inverted[] =
+    "<VTKFile type=\"UnstructuredGrid\"><UnstructuredGrid>"
+    "<Piece NumberOfPoints=\"4\" NumberOfCells=\"2\"><Points>"
+    "<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">"
+    "0 0 0 3 0 0 4 1 0 2 -1 0</DataArray></Points><Cells>"
+    "<DataArray type=\"Int32\" Name=\"connectivity\" format=\"ascii\">0 1 2 0 2 3</DataArray>"
+    "<DataArray type=\"Int32\" Name=\"offsets\" format=\"ascii\">3 6</DataArray>"
+    "<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">5 5</DataArray>"
+    "</Cells></Piece></UnstructuredGrid></VTKFile>\n";
+
+static double read_flips(cvm_mesh *m)
+{
+    double f = -1;
+    ck_assert_int_eq(cvm_mesh_get_report(&f, m, CVM_REPORT_READ_FLIPS), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_get_measure(&f, m, CVM_MEASURE_READ_FLIPS), CVM_OK);
+    return f;
+}
+
+/* The non-Delaunay diagonal is flipped (one flip, its boundary kept as
+ * segments); the Delaunay one reads as it is (no flip, no segment); an
+ * inverted triangle is refused by name and keeps the mesh read before. */
+START_TEST(vtu_non_delaunay_diagonal_is_flipped)
 {
     char path[4096], good[4096];
     cvm_mesh *m = holed_mesh(0);
-    size_t nt0, nt1;
+    size_t n;
+    cvm_index tri[6];
     cvm_entity kind;
     int64_t idx;
+    char *t = malloc(sizeof k_bad_diagonal);
+    ck_assert_ptr_nonnull(t);
     in_dir(path, sizeof path, "bad.vtu");
     write_text(path, k_bad_diagonal);
-    ck_assert_int_eq(cvm_mesh_count(&nt0, m, CVM_ENT_TRIANGLE), CVM_OK);
+    ck_assert_msg(cvm_mesh_read(m, path) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    ck_assert(read_flips(m) == 1);
+    ck_assert_msg(cvm_mesh_check(m) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    ck_assert_int_eq(cvm_mesh_count(&n, m, CVM_ENT_TRIANGLE), CVM_OK);
+    ck_assert_uint_eq(n, 2);
+    ck_assert_int_eq(cvm_mesh_copy_cells(tri, 6, m, CVM_ENT_TRIANGLE), CVM_OK);
+    /* both triangles now use the diagonal 1-3, in the file's slots */
+    ck_assert((tri[0] == 1 || tri[1] == 1 || tri[2] == 1) && (tri[0] == 3 || tri[1] == 3 || tri[2] == 3));
+    ck_assert((tri[3] == 1 || tri[4] == 1 || tri[5] == 1) && (tri[3] == 3 || tri[4] == 3 || tri[5] == 3));
+    ck_assert_int_eq(cvm_mesh_count(&n, m, CVM_ENT_SEGMENT), CVM_OK);
+    ck_assert_uint_eq(n, 4); /* the boundary edges */
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+    ck_assert(read_flips(m) == 0); /* a report of the last read only */
+    /* the other diagonal is the Delaunay one: read as it is */
+    in_dir(good, sizeof good, "good.vtu");
+    strcpy(t, k_bad_diagonal);
+    memcpy(strstr(t, "0 1 2 0 2 3"), "0 1 3 1 2 3", 11);
+    write_text(good, t);
+    ck_assert_msg(cvm_mesh_read(m, good) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    ck_assert(read_flips(m) == 0);
+    ck_assert_int_eq(cvm_mesh_count(&n, m, CVM_ENT_TRIANGLE), CVM_OK);
+    ck_assert_uint_eq(n, 2);
+    ck_assert_int_eq(cvm_mesh_count(&n, m, CVM_ENT_SEGMENT), CVM_OK);
+    ck_assert_uint_eq(n, 0); /* convex: read as the Delaunay triangulation, no segments */
+    /* point 3 moved to (2, -1), below the diagonal 0-2: triangle 1 (0 2 3)
+       now lies on the same side of it as triangle 0, folded over it */
+    write_text(path, k_inverted);
     ck_assert_int_eq(cvm_mesh_read(m, path), CVM_E_INPUT_DEGENERATE);
-    ck_assert_ptr_nonnull(strstr(cvm_mesh_errmsg(m), "triangle 0 (points 0 1 2) is not reproduced"));
+    ck_assert_msg(strstr(cvm_mesh_errmsg(m), "triangle 1 (points 0 2 3) is inverted") != NULL, "%s",
+                  cvm_mesh_errmsg(m));
     ck_assert_int_eq(cvm_mesh_error_item(&kind, &idx, m), CVM_OK);
     ck_assert_int_eq(kind, CVM_ENT_TRIANGLE);
-    ck_assert_int_eq(idx, 0);
-    ck_assert_int_eq(cvm_mesh_count(&nt1, m, CVM_ENT_TRIANGLE), CVM_OK);
-    ck_assert_uint_eq(nt0, nt1); /* the previous mesh is kept */
+    ck_assert_int_eq(idx, 1);
+    ck_assert_int_eq(cvm_mesh_count(&n, m, CVM_ENT_TRIANGLE), CVM_OK);
+    ck_assert_uint_eq(n, 2); /* the previous mesh is kept */
     ck_assert_int_eq(cvm_mesh_check(m), CVM_OK);
-    /* the other diagonal is the Delaunay one: read fine */
-    in_dir(good, sizeof good, "good.vtu");
-    {
-        char *t = malloc(sizeof k_bad_diagonal);
-        ck_assert_ptr_nonnull(t);
-        strcpy(t, k_bad_diagonal);
-        memcpy(strstr(t, "0 1 2 0 2 3"), "0 1 3 1 2 3", 11);
-        write_text(good, t);
-        free(t);
-    }
-    ck_assert_msg(cvm_mesh_read(m, good) == CVM_OK, "%s", cvm_mesh_errmsg(m));
-    ck_assert_int_eq(cvm_mesh_count(&nt1, m, CVM_ENT_TRIANGLE), CVM_OK);
-    ck_assert_uint_eq(nt1, 2);
-    ck_assert_int_eq(cvm_mesh_count(&nt1, m, CVM_ENT_SEGMENT), CVM_OK);
-    ck_assert_uint_eq(nt1, 0); /* convex: read as the Delaunay triangulation, no segments */
+    free(t);
     cvm_mesh_free(m);
+}
+END_TEST
+
+/* An n x n structured grid as a legacy .vtk, each square split by its
+ * diagonal (i, j)-(i+1, j+1), sheared (x += 0.8 y) and squeezed (y *= 0.5):
+ * every diagonal is the long one of its square, not Delaunay. */
+static void write_sheared_grid(const char *path, int n)
+{
+    FILE *f = fopen(path, "w");
+    int i, j;
+    ck_assert_ptr_nonnull(f);
+    fprintf(f, "# vtk DataFile Version 3.0\nsheared grid\nASCII\nDATASET UNSTRUCTURED_GRID\n");
+    fprintf(f, "POINTS %d double\n", (n + 1) * (n + 1));
+    for (j = 0; j <= n; j++)
+        for (i = 0; i <= n; i++)
+            fprintf(f, "%.17g %.17g 0\n", i + 0.8 * j, 0.5 * j);
+    fprintf(f, "CELLS %d %d\n", 2 * n * n, 8 * n * n);
+    for (j = 0; j < n; j++)
+        for (i = 0; i < n; i++) {
+            int a = j * (n + 1) + i, b = a + 1, c = b + n + 1, d = a + n + 1;
+            fprintf(f, "3 %d %d %d\n3 %d %d %d\n", a, b, c, a, c, d);
+        }
+    fprintf(f, "CELL_TYPES %d\n", 2 * n * n);
+    for (i = 0; i < 2 * n * n; i++)
+        fprintf(f, "5\n");
+    fclose(f);
+}
+
+/* Bring your own mesh: the sheared grid is read, its boundary becomes
+ * segments and every diagonal is flipped (n^2 flips) to the Delaunay
+ * triangulation, which the exact check accepts; written and read again it
+ * needs no flip and rewrites to the same bytes. */
+START_TEST(vtk_sheared_grid_is_flipped_to_delaunay)
+{
+    enum { N = 6 };
+    char path[4096], a[4096], b[4096];
+    char *ta, *tb;
+    size_t la, lb, nt, nv, ne, ns;
+    cvm_mesh *m, *r;
+    in_dir(path, sizeof path, "grid.vtk");
+    in_dir(a, sizeof a, "grid.vtu");
+    in_dir(b, sizeof b, "grid2.vtu");
+    write_sheared_grid(path, N);
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_msg(cvm_mesh_read(m, path) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    ck_assert(read_flips(m) == N * N);
+    ck_assert_msg(cvm_mesh_check(m) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    ck_assert_int_eq(cvm_mesh_count(&nt, m, CVM_ENT_TRIANGLE), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_count(&nv, m, CVM_ENT_VERTEX), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_count(&ne, m, CVM_ENT_EDGE), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_count(&ns, m, CVM_ENT_SEGMENT), CVM_OK);
+    ck_assert_uint_eq(nt, 2 * N * N);
+    ck_assert_uint_eq(nv, (N + 1) * (N + 1));
+    ck_assert_int_eq((long)nv - (long)ne + (long)nt, 1);
+    ck_assert_uint_eq(ns, 4 * N);
+    ck_assert_int_eq(cvm_mesh_write(m, a), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_create(&r), CVM_OK);
+    ck_assert_msg(cvm_mesh_read(r, a) == CVM_OK, "%s", cvm_mesh_errmsg(r));
+    ck_assert(read_flips(r) == 0);
+    ck_assert_msg(cvm_mesh_check(r) == CVM_OK, "%s", cvm_mesh_errmsg(r));
+    ck_assert_int_eq(cvm_mesh_write(r, b), CVM_OK);
+    ta = iotest_slurp(a, &la);
+    tb = iotest_slurp(b, &lb);
+    ck_assert(ta && tb);
+    ck_assert_uint_eq(la, lb);
+    ck_assert_msg(memcmp(ta, tb, la) == 0, "the rewritten .vtu differs");
+    free(ta);
+    free(tb);
+    cvm_mesh_free(m);
+    cvm_mesh_free(r);
+}
+END_TEST
+
+/* Out of memory at each allocation of the read that flips: CVM_E_NOMEM, an
+ * empty handle and no leak, until the read succeeds with every flip. */
+START_TEST(vtk_sheared_grid_read_out_of_memory_at_every_allocation)
+{
+    enum { N = 4 };
+    char path[4096];
+    cvm_mesh *m;
+    cvmtest_alloc al;
+    long k;
+    size_t nt;
+    in_dir(path, sizeof path, "oom_grid.vtk");
+    write_sheared_grid(path, N);
+    for (k = 1;; k++) {
+        cvm_status s;
+        cvmtest_alloc_init(&al, k, 0);
+        if (cvmtest_mesh_create(&m, &al) != CVM_OK) {
+            ck_assert_int_eq((int)al.live_blocks, 0);
+            continue;
+        }
+        s = cvm_mesh_read(m, path);
+        if (s == CVM_OK) {
+            cvmtest_alloc_arm(&al, 0, 0);
+            ck_assert(read_flips(m) == N * N);
+            ck_assert_int_eq(cvm_mesh_check(m), CVM_OK);
+            cvm_mesh_free(m);
+            ck_assert_int_eq((int)al.live_blocks, 0);
+            break;
+        }
+        ck_assert_msg(s == CVM_E_NOMEM, "allocation %ld: status %d (%s)", k, s, cvm_mesh_errmsg(m));
+        ck_assert_int_eq(cvm_mesh_count(&nt, m, CVM_ENT_TRIANGLE), CVM_OK);
+        ck_assert_uint_eq(nt, 0);
+        cvm_mesh_free(m);
+        ck_assert_int_eq((int)al.live_blocks, 0);
+    }
+    ck_assert(k > 20);
 }
 END_TEST
 
@@ -423,8 +572,8 @@ START_TEST(vtu_failed_read_keeps_the_previous_mesh)
     static const struct { const char *from, *to; cvm_status want; const char *msg; } bad[] = {
         {NULL, NULL, CVM_E_IO_OPEN, "cannot open"},
         {"0 1 2 0 2 3", "0 1 3 1 2 7", CVM_E_IO_FORMAT, "cell 1 names point 7"},
-        {"0 1 2 0 2 3", "0 1 2 0 2 1", CVM_E_INPUT_DEGENERATE, "triangle 1 (points 0 2 1) is not reproduced"},
-        {"0 1 2 0 2 3", "0 1 2 0 2 3", CVM_E_INPUT_DEGENERATE, "is not reproduced"},
+        {"0 1 2 0 2 3", "0 1 2 0 2 1", CVM_E_INPUT_DEGENERATE, "triangle 1 (points 0 2 1) is inverted"},
+        {"0 1 2 0 2 3", "0 1 2 1 2 1", CVM_E_INPUT_DEGENERATE, "repeats a point"},
         {"", "", CVM_E_INPUT_INTERSECTING,
          "rebuilding the mesh: segment 1 (points 1-3) crosses segment 0 (points 0-2)"},
     };
@@ -509,7 +658,9 @@ TCase *api_read_vtu_tcase(void)
     tcase_add_test(tc, vtu_points_outside_the_domain_read_back);
     tcase_add_test(tc, vtu_round_trip_of_a_hole_grid);
     tcase_add_test(tc, vtu_round_trip_with_vanished_vertices);
-    tcase_add_test(tc, vtu_not_reproduced_is_an_error_and_keeps_the_mesh);
+    tcase_add_test(tc, vtu_non_delaunay_diagonal_is_flipped);
+    tcase_add_test(tc, vtk_sheared_grid_is_flipped_to_delaunay);
+    tcase_add_test(tc, vtk_sheared_grid_read_out_of_memory_at_every_allocation);
     tcase_add_test(tc, vtu_unused_point_and_bad_cells_are_named);
     tcase_add_test(tc, vtu_read_out_of_memory_at_every_allocation);
     tcase_add_test(tc, vtu_failed_read_keeps_the_previous_mesh);
