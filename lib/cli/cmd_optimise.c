@@ -171,6 +171,13 @@ static int run(oargs *a)
     cli_phase("reading", a->in);
     if (cvm_mesh_read(m, a->in) != CVM_OK)
         return cli_fail(m, sz, NULL);
+    {
+        double flips = 0;
+        if (cvm_mesh_get_report(&flips, m, CVM_REPORT_READ_FLIPS) == CVM_OK && flips > 0)
+            fprintf(stderr, "cvmesh: note: %s: the triangles were not constrained Delaunay "
+                    "(regular, with weights): %.0f edge flips changed the connectivity\n", a->in,
+                    flips);
+    }
     cli_timing_mark(&a->o, "read");
     cli_budget_apply(&budget, m);
     cli_phase("triangulating", a->in);
