@@ -457,6 +457,104 @@ START_TEST(vtk_sheared_grid_read_out_of_memory_at_every_allocation)
 }
 END_TEST
 
+/* The sheared grid as a Gmsh 2.2 file: bottom lines with physical tag 7,
+ * the other boundary lines 8, the triangles of the left half region 1 and
+ * of the right half region 2. */
+static void write_sheared_msh(const char *path, int n)
+{
+    FILE *f = fopen(path, "w");
+    int i, j, id = 1;
+    ck_assert_ptr_nonnull(f);
+    fprintf(f, "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n%d\n", (n + 1) * (n + 1));
+    for (j = 0; j <= n; j++)
+        for (i = 0; i <= n; i++)
+            fprintf(f, "%d %.17g %.17g 0\n", j * (n + 1) + i + 1, i + 0.8 * j, 0.5 * j);
+    fprintf(f, "$EndNodes\n$Elements\n%d\n", 4 * n + 2 * n * n);
+    for (i = 0; i < n; i++) {
+        int b = i + 1, t = n * (n + 1) + i + 1, l = i * (n + 1) + 1, r = l + n;
+        fprintf(f, "%d 1 2 7 1 %d %d\n", id++, b, b + 1);
+        fprintf(f, "%d 1 2 8 1 %d %d\n", id++, t, t + 1);
+        fprintf(f, "%d 1 2 8 1 %d %d\n", id++, l, l + n + 1);
+        fprintf(f, "%d 1 2 8 1 %d %d\n", id++, r, r + n + 1);
+    }
+    for (j = 0; j < n; j++)
+        for (i = 0; i < n; i++) {
+            int a = j * (n + 1) + i + 1, b = a + 1, c = b + n + 1, d = a + n + 1;
+            int reg = i < n / 2 ? 1 : 2;
+            fprintf(f, "%d 2 2 %d 1 %d %d %d\n", id++, reg, a, b, c);
+            fprintf(f, "%d 2 2 %d 1 %d %d %d\n", id++, reg, a, c, d);
+        }
+    fprintf(f, "$EndElements\n");
+    fclose(f);
+}
+
+/* A Gmsh mesh that is not Delaunay: its lines keep their physical tags as
+ * segment markers, the border between its two regions becomes segments
+ * (marker 0) that no flip crosses, and the rest is flipped to the
+ * constrained Delaunay triangulation that cvm_mesh_check() accepts. */
+START_TEST(msh_regions_keep_their_border_when_flipped)
+{
+    enum { N = 6 };
+    char path[4096];
+    size_t ns, k, count[3] = {0, 0, 0};
+    int32_t mk[8 * N];
+    cvm_mesh *m;
+    in_dir(path, sizeof path, "grid.msh");
+    write_sheared_msh(path, N);
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_msg(cvm_mesh_read(m, path) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    ck_assert(read_flips(m) == N * N); /* every square's diagonal: none is on the border */
+    ck_assert_msg(cvm_mesh_check(m) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    ck_assert_int_eq(cvm_mesh_count(&ns, m, CVM_ENT_SEGMENT), CVM_OK);
+    ck_assert_uint_eq(ns, 4 * N + N);
+    ck_assert_int_eq(cvm_mesh_copy_markers(mk, ns, m, CVM_ENT_SEGMENT), CVM_OK);
+    for (k = 0; k < ns; k++) {
+        ck_assert(mk[k] == 0 || mk[k] == 7 || mk[k] == 8);
+        count[mk[k] == 0 ? 0 : mk[k] == 7 ? 1 : 2]++;
+    }
+    ck_assert_uint_eq(count[0], N);
+    ck_assert_uint_eq(count[1], N);
+    ck_assert_uint_eq(count[2], 3 * N);
+    cvm_mesh_free(m);
+}
+END_TEST
+
+/* Two triangles that overlap without sharing an edge: with crossings split
+ * the rebuild cannot reproduce them, with crossings refused their crossing
+ * edges are named; both name a triangle. */
+START_TEST(vtu_overlapping_triangles_are_named)
+{
+    static const char k_overlap[] =
+        "<VTKFile type=\"UnstructuredGrid\"><UnstructuredGrid>"
+        "<Piece NumberOfPoints=\"6\" NumberOfCells=\"2\"><Points>"
+        "<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">"
+        "0 0 0 2 0 0 0 2 0 0.5 0.5 0 3 0.5 0 0.5 3 0</DataArray></Points><Cells>"
+        "<DataArray type=\"Int32\" Name=\"connectivity\" format=\"ascii\">0 1 2 3 4 5</DataArray>"
+        "<DataArray type=\"Int32\" Name=\"offsets\" format=\"ascii\">3 6</DataArray>"
+        "<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">5 5</DataArray>"
+        "</Cells></Piece></UnstructuredGrid></VTKFile>\n";
+    char path[4096];
+    cvm_mesh *m;
+    cvm_entity kind;
+    int64_t idx;
+    in_dir(path, sizeof path, "overlap.vtu");
+    write_text(path, k_overlap);
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_read(m, path), CVM_E_INPUT_DEGENERATE);
+    ck_assert_msg(strstr(cvm_mesh_errmsg(m), "is not a triangle of the constrained triangulation") &&
+                      strstr(cvm_mesh_errmsg(m), "not a conforming triangulation"),
+                  "%s", cvm_mesh_errmsg(m));
+    ck_assert_int_eq(cvm_mesh_error_item(&kind, &idx, m), CVM_OK);
+    ck_assert_int_eq(kind, CVM_ENT_TRIANGLE);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_SPLIT_INTERSECTIONS, 0), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_read(m, path), CVM_E_INPUT_INTERSECTING);
+    ck_assert_msg(strstr(cvm_mesh_errmsg(m), "overlaps triangle") != NULL, "%s", cvm_mesh_errmsg(m));
+    ck_assert_int_eq(cvm_mesh_error_item(&kind, &idx, m), CVM_OK);
+    ck_assert_int_eq(kind, CVM_ENT_TRIANGLE);
+    cvm_mesh_free(m);
+}
+END_TEST
+
 START_TEST(vtu_unused_point_and_bad_cells_are_named)
 {
     char path[4096], *t = malloc(sizeof k_bad_diagonal + 16);
@@ -661,6 +759,8 @@ TCase *api_read_vtu_tcase(void)
     tcase_add_test(tc, vtu_non_delaunay_diagonal_is_flipped);
     tcase_add_test(tc, vtk_sheared_grid_is_flipped_to_delaunay);
     tcase_add_test(tc, vtk_sheared_grid_read_out_of_memory_at_every_allocation);
+    tcase_add_test(tc, msh_regions_keep_their_border_when_flipped);
+    tcase_add_test(tc, vtu_overlapping_triangles_are_named);
     tcase_add_test(tc, vtu_unused_point_and_bad_cells_are_named);
     tcase_add_test(tc, vtu_read_out_of_memory_at_every_allocation);
     tcase_add_test(tc, vtu_failed_read_keeps_the_previous_mesh);
