@@ -9,7 +9,7 @@
 #include <string.h>
 
 #include "rebuild.h"
-#include "cell_grid.h"
+#include "tri_grid.h"
 #include "domain.h"
 
 /* Sorted keys of the domain slots of T. */
@@ -58,7 +58,7 @@ static cvm_status hole_seeds(cvm__rebuild *rb, const cvm__rebuild_input *in, dou
     uint8_t *member = cvm__calloc(rb->ctx, T->nt + 1, 1);
     int32_t *stack = cvm__malloc(rb->ctx, (T->nt + 1) * sizeof *stack);
     double *h = cvm__malloc(rb->ctx, (2 * T->nt + 2) * sizeof *h);
-    cvm__cell_grid g;
+    cvm__tri_grid g;
     int have_grid = 0;
     size_t s, n = 0;
     int j;
@@ -99,7 +99,7 @@ static cvm_status hole_seeds(cvm__rebuild *rb, const cvm__rebuild_input *in, dou
         if (!any) {
             const int32_t *v = T->tv + 3 * s;
             if (!have_grid) {
-                if (cvm__cell_grid_build(rb->ctx, &g, in->cdt.xy, in->cdt.np, in->tri, in->nt)) {
+                if (cvm__tri_grid_build(rb->ctx, &g, in->cdt.xy, in->cdt.np, in->tri, in->nt)) {
                     st = cvm__nomem(rb->ctx);
                     goto out;
                 }
@@ -111,14 +111,14 @@ static cvm_status hole_seeds(cvm__rebuild *rb, const cvm__rebuild_input *in, dou
                                         T->xy[2 * (size_t)v[2] + (size_t)j]) / 3.0;
             /* a region inside the file's domain triangulated differently is
                not a hole: leave it for match() to report */
-            n += !cvm__cell_grid_contains(&g, h + 2 * n);
+            n += !cvm__tri_grid_contains(&g, h + 2 * n);
         }
     }
     *out = h;
     h = NULL;
     *n_out = n;
 out:
-    cvm__cell_grid_free(rb->ctx, &g);
+    cvm__tri_grid_free(rb->ctx, &g);
     cvm__free(rb->ctx, fk);
     cvm__free(rb->ctx, state);
     cvm__free(rb->ctx, member);

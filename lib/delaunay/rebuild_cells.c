@@ -8,7 +8,7 @@
 #include <string.h>
 
 #include "rebuild.h"
-#include "cell_grid.h"
+#include "tri_grid.h"
 #include "geom/geom_internal.h"
 
 int cvm__rb_cmp_key(const void *pa, const void *pb)
@@ -63,22 +63,22 @@ int32_t cvm__rb_find(const cvm__rb_key *keys, size_t n, const cvm__rb_key *key)
  * bounding no region) where it carved, and the rebuild carves them again. */
 static cvm_status unused_points(cvm__rebuild *rb, const cvm__rebuild_input *in, const uint8_t *used)
 {
-    cvm__cell_grid g;
+    cvm__tri_grid g;
     size_t i, np = in->cdt.np;
     cvm_status s = CVM_OK;
     memset(&g, 0, sizeof g);
     for (i = 0; i < np && used[i]; i++)
         ;
-    if (i < np && cvm__cell_grid_build(rb->ctx, &g, in->cdt.xy, np, in->tri, in->nt))
+    if (i < np && cvm__tri_grid_build(rb->ctx, &g, in->cdt.xy, np, in->tri, in->nt))
         return cvm__nomem(rb->ctx);
     for (; i < np && !s; i++) {
         const double *p = in->cdt.xy + 2 * i;
-        if (!used[i] && cvm__cell_grid_contains(&g, p))
+        if (!used[i] && cvm__tri_grid_contains(&g, p))
             s = cvm__error(rb->ctx, CVM_E_INPUT_DEGENERATE, CVM_ENT_INPUT_POINT, (int64_t)i,
                            "point %lu at (%.17g, %.17g) lies in the mesh but is a corner of "
                            "no triangle", (unsigned long)i, p[0], p[1]);
     }
-    cvm__cell_grid_free(rb->ctx, &g);
+    cvm__tri_grid_free(rb->ctx, &g);
     return s;
 }
 

@@ -662,9 +662,9 @@ static const char k_crossing_lines[] =
     "</Cells></Piece></UnstructuredGrid></VTKFile>\n";
 
 /* Every way a read can fail - the file is missing, malformed, fails the
- * checks of its cells, cannot be rebuilt (crossing lines refused), or is
- * not reproduced - leaves the previous mesh of the handle as it was, to
- * the byte, with its input. */
+ * checks of its cells (an inverted triangle, a repeated point) or cannot be
+ * rebuilt (crossing lines refused) - leaves the previous mesh of the handle
+ * as it was, to the byte, with its input. */
 START_TEST(vtu_failed_read_keeps_the_previous_mesh)
 {
     static const struct { const char *from, *to; cvm_status want; const char *msg; } bad[] = {

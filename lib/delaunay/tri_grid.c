@@ -1,10 +1,10 @@
-/* cell_grid.c - which of a set of triangles holds a point: a uniform grid over
+/* tri_grid.c - which of a set of triangles holds a point: a uniform grid over
  * them (a mesh file's cells, for the rebuild of rebuild.c). */
 #include <math.h>
 #include <stdint.h>
 #include <string.h>
 
-#include "cell_grid.h"
+#include "tri_grid.h"
 #include "geom/geom_internal.h"
 
 /* Cell of (v - lo) * s among n; monotone in v, NaN (0 * inf) to cell 0. */
@@ -16,7 +16,7 @@ static size_t grid_cell(double v, double lo, double s, size_t n)
     return c < (double)n ? (size_t)c : n - 1;
 }
 
-static void grid_box(const cvm__cell_grid *g, size_t k, size_t *box)
+static void grid_box(const cvm__tri_grid *g, size_t k, size_t *box)
 {
     const int32_t *t = g->tri + 3 * k;
     double lo[2], hi[2];
@@ -35,7 +35,7 @@ static void grid_box(const cvm__cell_grid *g, size_t k, size_t *box)
     box[3] = grid_cell(hi[1], g->y0, g->sy, g->side);
 }
 
-void cvm__cell_grid_free(cvm__ctx *ctx, cvm__cell_grid *g)
+void cvm__tri_grid_free(cvm__ctx *ctx, cvm__tri_grid *g)
 {
     cvm__free(ctx, g->start);
     cvm__free(ctx, g->idx);
@@ -44,7 +44,7 @@ void cvm__cell_grid_free(cvm__ctx *ctx, cvm__cell_grid *g)
 
 /* The number of listings with side cells per axis, or 0 when it would exceed
  * limit. */
-static size_t grid_count(cvm__cell_grid *g, const double *hi, size_t side, size_t limit)
+static size_t grid_count(cvm__tri_grid *g, const double *hi, size_t side, size_t limit)
 {
     size_t k, n = 0, box[4];
     g->side = side;
@@ -65,7 +65,7 @@ static size_t grid_count(cvm__cell_grid *g, const double *hi, size_t side, size_
  * boxes (long thin triangles across the domain) would list the triangles more
  * than 16 times over; one cell lists each triangle once. CVM_OK or
  * CVM_E_NOMEM. */
-cvm_status cvm__cell_grid_build(cvm__ctx *ctx, cvm__cell_grid *g, const double *xy, size_t np,
+cvm_status cvm__tri_grid_build(cvm__ctx *ctx, cvm__tri_grid *g, const double *xy, size_t np,
                                 const int32_t *tri, size_t nt)
 {
     size_t k, c, i, j, box[4], limit = 16 * nt + 1024, side = 1;
@@ -91,7 +91,7 @@ cvm_status cvm__cell_grid_build(cvm__ctx *ctx, cvm__cell_grid *g, const double *
     g->start = cvm__calloc(ctx, side * side + 1, sizeof *g->start);
     g->idx = cvm__malloc(ctx, (g->n + 1) * sizeof *g->idx);
     if (!g->start || !g->idx) {
-        cvm__cell_grid_free(ctx, g);
+        cvm__tri_grid_free(ctx, g);
         return CVM_E_NOMEM;
     }
     for (k = 0; k < g->nt; k++) {
@@ -115,7 +115,7 @@ cvm_status cvm__cell_grid_build(cvm__ctx *ctx, cvm__cell_grid *g, const double *
 }
 
 /* 1 when p lies in (or on) triangle k (exact orientation tests). */
-static int in_cell(const cvm__cell_grid *g, size_t k, const double *p)
+static int in_cell(const cvm__tri_grid *g, size_t k, const double *p)
 {
     const int32_t *t = g->tri + 3 * k;
     const double *a = g->xy + 2 * (size_t)t[0], *b = g->xy + 2 * (size_t)t[1],
@@ -125,7 +125,7 @@ static int in_cell(const cvm__cell_grid *g, size_t k, const double *p)
     return (o1 >= 0 && o2 >= 0 && o3 >= 0) || (o1 <= 0 && o2 <= 0 && o3 <= 0);
 }
 
-int cvm__cell_grid_contains(const cvm__cell_grid *g, const double *p)
+int cvm__tri_grid_contains(const cvm__tri_grid *g, const double *p)
 {
     size_t c = grid_cell(p[1], g->y0, g->sy, g->side) * g->side +
                grid_cell(p[0], g->x0, g->sx, g->side), e;
