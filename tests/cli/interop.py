@@ -8,7 +8,8 @@ legacy .vtk (ascii, binary) and Gmsh 2.2 / 4.1 (ascii, binary); VTK writes
 it with its XML writer in every data mode and with its legacy writers; cvmesh
 must read each back to exactly the same triangles. A Gmsh domain of lines
 and points from meshio is triangulated and refined with its physical tags as
-markers. Prints one line per check; exits 1 when any failed.
+markers. A sheared grid that meshio writes (not Delaunay) is flipped and
+optimised. Prints one line per check; exits 1 when any failed.
 """
 import os
 import random
@@ -159,6 +160,26 @@ if code == 0:
     tags = set(int(t) for t in d.cell_data_dict["gmsh:physical"].get("line", []))
     check(len(d.cells_dict["triangle"]) > 50 and tags <= {1, 2, 3, 4} and len(tags) == 4,
           "refined Gmsh domain keeps its 4 boundary markers (%s)" % sorted(tags))
+
+# ---- bring your own mesh: a sheared structured grid, not Delaunay ----------
+n = 8
+gp = np.array([[i + 0.8 * j, 0.5 * j] for j in range(n + 1) for i in range(n + 1)], float)
+gt = []
+for j in range(n):
+    for i in range(n):
+        a = j * (n + 1) + i
+        gt += [[a, a + 1, a + n + 2], [a, a + n + 2, a + n + 1]]
+grid = meshio.Mesh(np.c_[gp, np.zeros(len(gp))], [("triangle", np.array(gt))])
+for name, fmt in (("grid.msh", "gmsh22"), ("grid.vtu", "vtu")):
+    meshio.write(path(name), grid, file_format=fmt)
+    out = path("grid_opt_" + name.replace(".", "_") + ".vtu")
+    code, err = run("optimise", path(name), "--max-sweeps", "1", "-o", out)
+    ok = code == 0 and "%d edge flips changed the connectivity" % (n * n) in err
+    if ok:
+        back = meshio.read(out)
+        ok = len(back.cells_dict["triangle"]) == 2 * n * n
+    check(ok, "cvmesh optimise flips the sheared grid %s written by meshio (%d flips): %s"
+          % (name, n * n, err))
 
 print("%d failed" % len(failed))
 sys.exit(1 if failed else 0)
