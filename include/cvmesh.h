@@ -2339,11 +2339,14 @@ typedef enum cvm_measure {
     CVM_MEASURE_MAX_RADIUS_EDGE = 703,  /**< largest circumradius / shortest edge of a tetrahedron
                                              (1/sqrt(2) ~ 0.612 for the regular one) */
     CVM_MEASURE_CIRCUMCENTRE_OUTSIDE_PCT = 704, /**< % of tetrahedra whose circumcentre (power
-                                             vertex, with weights) lies outside them (computed in
-                                             floating point: a centre within rounding of a face
-                                             may count either way) */
-    CVM_MEASURE_CIRCUMCENTRE_OUTSIDE_BOUNDARY_PCT = 705, /**< the same over the tetrahedra with a
-                                             face on the boundary */
+                                             vertex, with weights) lies outside them, decided
+                                             exactly from the coordinates and weights (the sign
+                                             of each barycentric coordinate of the centre); a
+                                             centre exactly on a face, edge or corner counts as
+                                             inside (the Kuhn tetrahedra of a cube: 0) */
+    CVM_MEASURE_CIRCUMCENTRE_OUTSIDE_BOUNDARY_PCT = 705, /**< the same (exact, on a face counts
+                                             as inside) over the tetrahedra with a face on the
+                                             boundary */
     CVM_MEASURE_RECOVERY_STEINER = 706  /**< points the boundary recovery added (0 for a point
                                              set's Delaunay tetrahedralisation) */
 } cvm_measure;
