@@ -407,7 +407,8 @@ class Mesh:
 
     def set_points(self, points: npt.ArrayLike, markers: Optional[npt.ArrayLike] = None,
                    attributes: Optional[npt.ArrayLike] = None) -> None:
-        """Set the input points ((n, 2) array-like); clears any triangulation."""
+        """Set the input points ((n, 2) array-like, or (n, 3): the mesh becomes 3D
+        and triangulate() tetrahedralises them); clears any triangulation."""
         with self._handle() as m:
             capi.cvm_mesh_set_points(m, points)
             if markers is not None:
@@ -651,7 +652,7 @@ class Mesh:
 
     @property
     def dim(self) -> int:
-        """Dimension of the mesh: coordinates per point (2 in this version)."""
+        """Dimension of the mesh: coordinates per point (2, or 3 after 3D points)."""
         with self._handle() as m:
             return capi.cvm_mesh_dim(m)
 
