@@ -11,13 +11,13 @@
 #include "geom/geom_internal.h"
 #include "geom/measure3.h"
 
-typedef struct edge_key {
+typedef struct dual3_edge_key {
     int32_t a, b, t;
-} edge_key;
+} dual3_edge_key;
 
 static int cmp_edge_key(const void *x, const void *y)
 {
-    const edge_key *p = (const edge_key *)x, *q = (const edge_key *)y;
+    const dual3_edge_key *p = (const dual3_edge_key *)x, *q = (const dual3_edge_key *)y;
     if (p->a != q->a)
         return (p->a > q->a) - (p->a < q->a);
     if (p->b != q->b)
@@ -99,7 +99,7 @@ static cvm_status build_edges(cvm__ctx *ctx, const cvm__mesh3 *g, cvm__dual3 *d)
 {
     static const int pair[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
     size_t n = 6 * d->ntet, i, k = 0;
-    edge_key *keys = cvm__malloc(ctx, (n ? n : 1) * sizeof *keys);
+    dual3_edge_key *keys = cvm__malloc(ctx, (n ? n : 1) * sizeof *keys);
     if (!keys)
         return cvm__nomem(ctx);
     for (i = 0; i < n; i++) {

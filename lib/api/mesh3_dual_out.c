@@ -151,12 +151,12 @@ cvm_status cvm_mesh_copy_dual3_edge_lengths(cvm_index *faces, size_t faces_len, 
 }
 
 /* Growable arrays of the polyhedron layout. */
-typedef struct grow {
+typedef struct dual3_grow {
     void *p;
     size_t n, cap, size;
-} grow;
+} dual3_grow;
 
-static int grow_room(cvm__ctx *ctx, grow *g, size_t extra)
+static int grow_room(cvm__ctx *ctx, dual3_grow *g, size_t extra)
 {
     if (g->n + extra > g->cap) {
         size_t cap = g->cap ? 2 * g->cap : 1024;
@@ -179,8 +179,8 @@ static int cmp_i32(const void *a, const void *b)
 
 /* The face stream and distinct corners of interior vertex v's cell appended;
  * -1 when out of memory. */
-static int add_cell(cvm__ctx *ctx, const cvm__mesh3 *g, cvm__dual3 *d, size_t v, grow *faces,
-                    grow *conn)
+static int add_cell(cvm__ctx *ctx, const cvm__mesh3 *g, cvm__dual3 *d, size_t v, dual3_grow *faces,
+                    dual3_grow *conn)
 {
     int32_t k;
     size_t head = faces->n, c0 = conn->n, i, j;
@@ -221,7 +221,7 @@ cvm_status cvm__mesh3_write_dual_to_set(cvm_mesh *m, const char *path, cvm__writ
     cvm__ctx *ctx = &m->ctx;
     cvm__dual3 d;
     cvm__dual3_out o;
-    grow faces = {NULL, 0, 0, sizeof(int64_t)}, conn = {NULL, 0, 0, sizeof(int32_t)};
+    dual3_grow faces = {NULL, 0, 0, sizeof(int64_t)}, conn = {NULL, 0, 0, sizeof(int32_t)};
     int64_t *conn_off = NULL, *face_off = NULL;
     int32_t *vertex = NULL, *edge = NULL, *face = NULL;
     double *volume = NULL, *weight = NULL, *pts = NULL, *area = NULL, *flen = NULL;
