@@ -478,6 +478,56 @@ START_TEST(dual3_calls_refuse_a_2d_mesh_and_bad_arguments)
 }
 END_TEST
 
+/* Weights on the BCC corners (the regular tetrahedralisation keeps the BCC
+ * connectivity for a small weight): the power bisectors move towards the
+ * centres, a corner's cell grows and a centre's shrinks, and one of each still
+ * fills the unit cube's volume. Equal weights everywhere change nothing. */
+START_TEST(weighted_bcc_cells_share_the_unit_volume)
+{
+    size_t n, nv, i;
+    double *p = lattice(5, 1, &n), *w, *vol, *vol0, corner = -1, centre = -1;
+    cvm_mesh *m = mesh_of(p, n);
+    ck_assert_int_eq(cvm_mesh_count(&nv, m, CVM_ENT_VERTEX), CVM_OK);
+    w = malloc(nv * sizeof *w);
+    vol = malloc(nv * sizeof *vol);
+    vol0 = malloc(nv * sizeof *vol0);
+    ck_assert_int_eq(cvm_mesh_copy_dual3_volumes(vol0, nv, m), CVM_OK);
+    for (i = 0; i < nv; i++)
+        w[i] = 0.25;
+    ck_assert_int_eq(cvm_mesh_set_weights(m, w, nv), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_copy_dual3_volumes(vol, nv, m), CVM_OK);
+    for (i = 0; i < nv; i++)
+        ck_assert(fabs(vol[i] - vol0[i]) < 1e-12);
+    for (i = 0; i < nv; i++)
+        w[i] = p[3 * i] == floor(p[3 * i]) ? 0.05 : 0.0;
+    ck_assert_int_eq(cvm_mesh_set_weights(m, w, nv), CVM_OK);
+    ck_assert_msg(cvm_mesh_check(m) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    ck_assert_int_eq(cvm_mesh_copy_dual3_volumes(vol, nv, m), CVM_OK);
+    for (i = 0; i < nv; i++) {
+        const double *x = p + 3 * i;
+        if (!(x[0] >= 1 && x[0] <= 4 && x[1] >= 1 && x[1] <= 4 && x[2] >= 1 && x[2] <= 4))
+            continue;
+        if (x[0] == floor(x[0])) {
+            if (corner >= 0)
+                ck_assert(fabs(vol[i] - corner) < 1e-12);
+            corner = vol[i];
+        } else {
+            if (centre >= 0)
+                ck_assert(fabs(vol[i] - centre) < 1e-12);
+            centre = vol[i];
+        }
+    }
+    ck_assert_double_gt(corner, 0.5);
+    ck_assert_double_lt(centre, 0.5);
+    ck_assert_double_eq_tol(corner + centre, 1.0, 1e-12);
+    free(w);
+    free(vol);
+    free(vol0);
+    cvm_mesh_free(m);
+    free(p);
+}
+END_TEST
+
 TCase *api_mesh3_dual_tcase(void)
 {
     TCase *tc = tcase_create("mesh3_dual");
@@ -485,6 +535,7 @@ TCase *api_mesh3_dual_tcase(void)
     tcase_add_test(tc, bcc_measures_agree_with_an_independent_computation);
     tcase_add_test(tc, dual_cells_of_lattices_have_the_exact_volumes);
     tcase_add_test(tc, dual_cells_are_written_as_polyhedra);
+    tcase_add_test(tc, weighted_bcc_cells_share_the_unit_volume);
     tcase_add_test(tc, dual_calls_fail_cleanly_at_every_allocation);
     tcase_add_test(tc, dual3_calls_refuse_a_2d_mesh_and_bad_arguments);
     return tc;
