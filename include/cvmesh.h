@@ -1958,12 +1958,12 @@ CVM_API cvm_status cvm_mesh_copy_dual_vertices(double *dst, size_t dst_len, cons
  * @param dim      must equal cvm_mesh_dim() (see cvm_mesh_copy_points_nd()).
  * @param m        mesh handle; not NULL.
  * Units: length. A construction: plain doubles.
+ * 3D:           on a 3D mesh with dim 3, the power vertex (circumcentre without
+ *               weights) of each tetrahedron, 3 doubles per tetrahedron in
+ *               CVM_ENT_TETRAHEDRON order (since 0.2).
  * Thread-safety: may run concurrently with other read-only calls on @p m.
  * @return CVM_OK
  *         CVM_E_NULL_ARG          m is NULL, or dst is NULL while dst_len > 0
- * 3D:           on a 3D mesh with dim 3, the power vertex (circumcentre without
- *               weights) of each tetrahedron, 3 doubles per tetrahedron in
- *               CVM_ENT_TETRAHEDRON order.
  *         CVM_E_UNSUPPORTED       dim is 3 on a 2D mesh
  *         CVM_E_ARGUMENT          dim is not the mesh's dimension
  *         CVM_E_BUFFER_TOO_SMALL  (nothing written)
