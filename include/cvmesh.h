@@ -254,8 +254,9 @@ CVM_API cvm_status cvm_mesh_error_item(cvm_entity *kind_out, int64_t *index_out,
  * output are forgotten, 3D holes and regions kept): cvm_mesh_triangulate()
  * then builds the Delaunay tetrahedralisation of the points, and the calls
  * that have a 3D meaning follow (counts, points and cells, check, weights,
- * measures, files; each documents it). The 2D-only calls (segments, refine,
- * optimise, insert, dual, histograms) return CVM_E_UNSUPPORTED on a 3D mesh.
+ * measures, histograms, files, the 3D dual; each documents it). The 2D-only
+ * calls (segments, refine, optimise, insert, the 2D dual copies) return
+ * CVM_E_UNSUPPORTED on a 3D mesh.
  * Points of dim 2 make a 3D handle 2D again.
  *
  * @param m      mesh handle; not NULL.
