@@ -254,8 +254,9 @@ CVM_API cvm_status cvm_mesh_error_item(cvm_entity *kind_out, int64_t *index_out,
  * output are forgotten, 3D holes and regions kept): cvm_mesh_triangulate()
  * then builds the Delaunay tetrahedralisation of the points, and the calls
  * that have a 3D meaning follow (counts, points and cells, check, weights,
- * measures, files; each documents it). The 2D-only calls (segments, refine,
- * optimise, insert, dual, histograms) return CVM_E_UNSUPPORTED on a 3D mesh.
+ * measures, histograms, files, the 3D dual; each documents it). The 2D-only
+ * calls (segments, refine, optimise, insert, the 2D dual copies) return
+ * CVM_E_UNSUPPORTED on a 3D mesh.
  * Points of dim 2 make a 3D handle 2D again.
  *
  * @param m      mesh handle; not NULL.
@@ -1970,11 +1971,14 @@ CVM_API cvm_status cvm_mesh_copy_dual_vertices(double *dst, size_t dst_len, cons
  * @param dim      must equal cvm_mesh_dim() (see cvm_mesh_copy_points_nd()).
  * @param m        mesh handle; not NULL.
  * Units: length. A construction: plain doubles.
+ * 3D:           on a 3D mesh with dim 3, the power vertex (circumcentre without
+ *               weights) of each tetrahedron, 3 doubles per tetrahedron in
+ *               CVM_ENT_TETRAHEDRON order (since 0.2).
  * Thread-safety: may run concurrently with other read-only calls on @p m.
  * @return CVM_OK
  *         CVM_E_NULL_ARG          m is NULL, or dst is NULL while dst_len > 0
- *         CVM_E_UNSUPPORTED       dim is 3 (no 3D meshes yet)
- *         CVM_E_ARGUMENT          dim is neither 2 nor 3
+ *         CVM_E_UNSUPPORTED       dim is 3 on a 2D mesh
+ *         CVM_E_ARGUMENT          dim is not the mesh's dimension
  *         CVM_E_BUFFER_TOO_SMALL  (nothing written)
  * @since 0.2
  */
@@ -2075,6 +2079,17 @@ CVM_API cvm_status cvm_mesh_copy_dual_cells(double *dst, size_t dst_len, const c
  * "weight" (Float64, the vertex weight). The file is written to a temporary
  * name and renamed, so a failure never leaves a partial file.
  * @param path  must end in .vtu.
+ * 3D:    on a 3D mesh, the bounded cells of the 3D power dual (see
+ *        cvm_mesh_count_dual3()): one VTK_POLYHEDRON (type 42) per interior
+ *        vertex, with VTK's "faces" and "faceoffsets" arrays; the points are
+ *        the dual vertices, each once and shared by the cells, with point data
+ *        "tetrahedron" (Int32, a tetrahedron whose power vertex it is); each
+ *        face is a dual face oriented outwards (a face that vanished in a tie
+ *        is left out); cell data "vertex", "volume"
+ *        (cvm_mesh_copy_dual3_volumes()) and "weight"; field data "edge"
+ *        (Int32 x 2) with "dual_face_area", and "face" (Int32 x 3) with
+ *        "dual_edge_length" (cvm_mesh_copy_dual3_face_areas(),
+ *        cvm_mesh_copy_dual3_edge_lengths()). Boundary vertices have no cell.
  * Thread-safety: must not run concurrently with any other call on @p m.
  * @return CVM_OK
  *         CVM_E_NULL_ARG      m or path is NULL
@@ -2085,6 +2100,78 @@ CVM_API cvm_status cvm_mesh_copy_dual_cells(double *dst, size_t dst_len, const c
  * @since 0.1
  */
 CVM_API cvm_status cvm_mesh_write_dual(cvm_mesh *m, const char *path);
+
+/*
+ * The 3D power dual (a 3D mesh only; since 0.2). Each tetrahedron has a dual
+ * vertex, its power vertex (circumcentre without weights); tetrahedra whose
+ * power vertices coincide exactly (the exact power test across their shared
+ * face ties, as in the tetrahedra of one cube of a cubic lattice) share one.
+ * An interior edge (its ring of tetrahedra closes) has a dual face, the polygon
+ * of the power vertices around it, on the power bisector plane of its ends; an
+ * interior face (shared by two tetrahedra) has a dual edge joining their power
+ * vertices. An interior vertex (on no boundary face) has a bounded cell; the
+ * cells of boundary vertices are unbounded for a point set (and would need
+ * clipping for a surface's mesh): these calls leave them out. Constructions
+ * and measures in plain doubles, the ties decided exactly. Each call computes
+ * the dual afresh: O(tetrahedra log tetrahedra).
+ * Thread-safety: may run concurrently with other read-only calls on @p m (a
+ * const handle: the last error and its message are left alone).
+ * Common statuses: CVM_E_NULL_ARG (m NULL, or an output NULL while its length
+ * is > 0), CVM_E_UNSUPPORTED (a 2D mesh), CVM_E_STATE (nothing triangulated),
+ * CVM_E_BUFFER_TOO_SMALL (nothing written), CVM_E_NOMEM.
+ */
+
+/**
+ * Count the interior edges (each with a dual face) and the interior faces
+ * (each with a dual edge) of a 3D mesh.
+ * @return CVM_OK or a common status of the 3D dual (above)
+ * @since 0.2
+ */
+CVM_API cvm_status cvm_mesh_count_dual3(size_t *edges_out, size_t *faces_out, const cvm_mesh *m);
+
+/**
+ * Copy the volume of the dual (power) cell of each vertex, in CVM_ENT_VERTEX
+ * order: for an interior vertex v, the sum over its edges vu of area(face of
+ * vu) x h / 3, h = (|u - v|^2 + w_v - w_u) / (2 |u - v|) the distance from v
+ * to the power bisector plane (the co-volume decomposition: the true volume
+ * when every tetrahedron contains its power vertex, a signed sum otherwise);
+ * -1 for a vertex on the boundary (or in no tetrahedron).
+ * @param dst_len  capacity in doubles; >= the vertex count.
+ * Units:  cubed length.
+ * @return CVM_OK or a common status of the 3D dual (above)
+ * @since 0.2
+ */
+CVM_API cvm_status cvm_mesh_copy_dual3_volumes(double *dst, size_t dst_len, const cvm_mesh *m);
+
+/**
+ * Copy the interior edges (2 vertex ids each, the smaller first, sorted) and
+ * the signed area of each one's dual face: the vector area of the polygon of
+ * power vertices, turning positively about the edge from its first to its
+ * second vertex, dotted with the unit edge (positive when the power vertices
+ * lie inside their tetrahedra).
+ * @param edges_len  capacity in entries; >= 2 x the interior edge count.
+ * @param areas_len  capacity in doubles; >= the interior edge count.
+ * Units:  squared length.
+ * @return CVM_OK or a common status of the 3D dual (above)
+ * @since 0.2
+ */
+CVM_API cvm_status cvm_mesh_copy_dual3_face_areas(cvm_index *edges, size_t edges_len,
+                                                  double *areas, size_t areas_len,
+                                                  const cvm_mesh *m);
+
+/**
+ * Copy the interior faces (3 vertex ids each, counter-clockwise seen from
+ * outside the tetrahedron of smaller index, in the order of that tetrahedron
+ * and its face) and the length of each one's dual edge (0 for a tie).
+ * @param faces_len    capacity in entries; >= 3 x the interior face count.
+ * @param lengths_len  capacity in doubles; >= the interior face count.
+ * Units:  length.
+ * @return CVM_OK or a common status of the 3D dual (above)
+ * @since 0.2
+ */
+CVM_API cvm_status cvm_mesh_copy_dual3_edge_lengths(cvm_index *faces, size_t faces_len,
+                                                    double *lengths, size_t lengths_len,
+                                                    const cvm_mesh *m);
 
 /* ------------------------------------------------------------------------ */
 /* Several output files as one                                               */
@@ -2356,13 +2443,35 @@ typedef enum cvm_measure {
     CVM_MEASURE_MAX_RADIUS_EDGE = 703,  /**< largest circumradius / shortest edge of a tetrahedron
                                              (1/sqrt(2) ~ 0.612 for the regular one) */
     CVM_MEASURE_CIRCUMCENTRE_OUTSIDE_PCT = 704, /**< % of tetrahedra whose circumcentre (power
-                                             vertex, with weights) lies outside them (computed in
-                                             floating point: a centre within rounding of a face
-                                             may count either way) */
-    CVM_MEASURE_CIRCUMCENTRE_OUTSIDE_BOUNDARY_PCT = 705, /**< the same over the tetrahedra with a
-                                             face on the boundary */
-    CVM_MEASURE_RECOVERY_STEINER = 706  /**< points the boundary recovery added (0 for a point
+                                             vertex, with weights) lies outside them, decided
+                                             exactly from the coordinates and weights (the sign
+                                             of each barycentric coordinate of the centre); a
+                                             centre exactly on a face, edge or corner counts as
+                                             inside (the Kuhn tetrahedra of a cube: 0) */
+    CVM_MEASURE_CIRCUMCENTRE_OUTSIDE_BOUNDARY_PCT = 705, /**< the same (exact, on a face counts
+                                             as inside) over the tetrahedra with a face on the
+                                             boundary */
+    CVM_MEASURE_RECOVERY_STEINER = 706, /**< points the boundary recovery added (0 for a point
                                              set's Delaunay tetrahedralisation) */
+    /* 3D dual and shape (since 0.2). "Interior" face: a face shared by two
+     * tetrahedra; its dual edge joins their power vertices, and a face whose two
+     * power vertices coincide exactly (the exact power test ties, as for the
+     * tetrahedra of one cube of a cubic lattice) has none and is skipped.
+     * "Interior" vertex: on no boundary face. */
+    CVM_MEASURE_MIN_DUAL_EDGE_RATIO_3D = 720, /**< smallest dual edge length over the mean edge
+                                             length of its face, over interior faces (0 without
+                                             any) */
+    CVM_MEASURE_TIME_STEP_PROXY_3D = 721, /**< smallest min(dual edge length, shortest edge of
+                                             its face) over interior faces: the explicit time
+                                             step scale of a co-volume scheme (length units; 0
+                                             without any) */
+    CVM_MEASURE_VALENCE14_PCT = 722,    /**< % of interior vertices with 14 edges (the BCC
+                                             lattice's valence; 0 without interior vertices) */
+    CVM_MEASURE_MEAN_RADIUS_EDGE = 723, /**< mean circumradius / shortest edge over the
+                                             tetrahedra (CVM_MEASURE_MAX_RADIUS_EDGE is the
+                                             largest) */
+    CVM_MEASURE_MIN_DUAL_EDGE_3D = 724  /**< smallest dual edge length over interior faces
+                                             (length units; 0 without any) */
 } cvm_measure;
 
 /**
@@ -2399,7 +2508,12 @@ typedef enum cvm_histogram {
     CVM_HIST_Q2 = 4,        /**< 20 bins of 0.25: [0,0.25), ..., [4.5,4.75), [4.75,inf) */
     CVM_HIST_Q3 = 5,        /**< 20 bins of 0.05: [0,0.05), ..., [0.9,0.95), [0.95,inf) */
     CVM_HIST_Q4 = 6,        /**< 20 bins of 0.05: [0,0.05), ..., [0.9,0.95), [0.95,inf) */
-    CVM_HIST_Q5 = 7         /**< 20 bins of 0.1: [0,0.1), ..., [1.8,1.9), [1.9,inf) */
+    CVM_HIST_Q5 = 7,        /**< 20 bins of 0.1: [0,0.1), ..., [1.8,1.9), [1.9,inf) */
+    /* 3D meshes (since 0.2) */
+    CVM_HIST_DIHEDRAL_DEG = 720, /**< 18 bins of 10 degrees over the six dihedral angles of
+                                      every tetrahedron: [0,10), ..., [170,180] */
+    CVM_HIST_VALENCE_3D = 721    /**< 32 bins: number of edges at an interior vertex (on no
+                                      boundary face) 0..30, and >= 31 */
 } cvm_histogram;
 
 /**
@@ -2476,7 +2590,11 @@ CVM_API cvm_status cvm_mesh_get_report(double *out, const cvm_mesh *m, cvm_repor
  * Computed and kept as cvm_mesh_get_measure() describes (same cost, same
  * thread-safety).
  * @param dst_len  capacity; CVM_HIST_ANGLE_DEG needs 18, CVM_HIST_DEGREE 16,
- *                 CVM_HIST_Q1 12, CVM_HIST_Q2 .. CVM_HIST_Q5 20.
+ *                 CVM_HIST_Q1 12, CVM_HIST_Q2 .. CVM_HIST_Q5 20; on a 3D mesh
+ *                 CVM_HIST_DIHEDRAL_DEG 18 and CVM_HIST_VALENCE_3D 32 (the 2D
+ *                 histograms are CVM_E_ARGUMENT there, the 3D ones on a 2D mesh).
+ * 3D:             computed afresh on each call (O(tetrahedra log tetrahedra)), as
+ *                 are the 3D measures 720-724.
  * @return CVM_OK, CVM_E_NULL_ARG, CVM_E_ARGUMENT, CVM_E_STATE, CVM_E_BUFFER_TOO_SMALL, CVM_E_NOMEM
  * @since 0.1
  */

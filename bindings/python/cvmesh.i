@@ -176,6 +176,8 @@ CVMPY_OUT_SCALAR(cvm_entity, kind_out, PyLong_FromLong)
 CVMPY_OUT_SCALAR(int32_t, out, PyLong_FromLong)
 CVMPY_OUT_SCALAR(size_t, ncells_out, PyLong_FromSize_t)
 CVMPY_OUT_SCALAR(size_t, nconn_out, PyLong_FromSize_t)
+CVMPY_OUT_SCALAR(size_t, edges_out, PyLong_FromSize_t)
+CVMPY_OUT_SCALAR(size_t, faces_out, PyLong_FromSize_t)
 
 %{
 /* (lo, hi, default, is_integer) */

@@ -150,10 +150,8 @@ static cvm_status write_dual_to_set(cvm_mesh *m, const char *path, cvm__write_se
 
 cvm_status cvm_mesh_write_dual(cvm_mesh *m, const char *path)
 {
-    if (m && m->m3) {
-        CVM__BEGIN(m);
-        return cvm__mesh3_unsupported(m, "cvm_mesh_write_dual");
-    }
+    if (m && m->m3)
+        return cvm__mesh_write_now(m, path, cvm__mesh3_write_dual_to_set);
     return cvm__mesh_write_now(m, path, write_dual_to_set);
 }
 
@@ -161,7 +159,7 @@ cvm_status cvm_mesh_stage_write_dual(cvm_mesh *m, const char *path)
 {
     if (m && m->m3) {
         CVM__BEGIN(m);
-        return cvm__mesh3_unsupported(m, "cvm_mesh_stage_write_dual");
+        return cvm__mesh_stage_settle(m, cvm__mesh3_write_dual_to_set(m, path, &m->staged));
     }
     if (!m)
         return CVM_E_NULL_ARG;

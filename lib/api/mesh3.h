@@ -23,12 +23,19 @@ cvm_status cvm__mesh3_check(cvm_mesh *m);
 cvm_status cvm__mesh3_set_weights(cvm_mesh *m, const double *w, size_t n);
 cvm_status cvm__mesh3_write_to_set(cvm_mesh *m, const char *path, cvm__write_set *ws);
 cvm_status cvm__mesh3_measure(double *out, cvm_mesh *m, cvm_measure which);
+/* Measures 720-724 and the 3D histograms (mesh3_quality.c). */
+cvm_status cvm__mesh3_quality(double *out, cvm_mesh *m, cvm_measure which);
+cvm_status cvm__mesh3_histogram(double *dst, size_t dst_len, cvm_mesh *m, cvm_histogram which);
 /* Const readers: statuses only, no message. */
 cvm_status cvm__mesh3_count(size_t *out, const cvm_mesh *m, cvm_entity kind);
 cvm_status cvm__mesh3_copy_points(double *dst, size_t dst_len, const cvm_mesh *m);
 const double *cvm__mesh3_points(const cvm_mesh *m, size_t *nv);
 cvm_status cvm__mesh3_copy_cells(cvm_index *dst, size_t dst_len, const cvm_mesh *m,
                                  cvm_entity kind);
+/* The power vertex of each tetrahedron (3 per tetrahedron; mesh3_dual_out.c). */
+cvm_status cvm__mesh3_copy_dual_vertices(double *dst, size_t dst_len, const cvm_mesh *m);
+/* The bounded dual cells as a .vtu of polyhedra into ws (message set on error). */
+cvm_status cvm__mesh3_write_dual_to_set(cvm_mesh *m, const char *path, cvm__write_set *ws);
 /* The message of a 2D-only call made on a 3D handle: CVM_E_UNSUPPORTED. */
 cvm_status cvm__mesh3_unsupported(cvm_mesh *m, const char *call);
 

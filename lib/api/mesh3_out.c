@@ -189,13 +189,6 @@ cvm_status cvm__mesh3_check(cvm_mesh *m)
     return s;
 }
 
-/* Whether o lies inside the tetrahedron of corners P (floating point). */
-static int centre_inside(const double *P[4], const double *o)
-{
-    return cvm__tet_volume(o, P[1], P[2], P[3]) >= 0 && cvm__tet_volume(P[0], o, P[2], P[3]) >= 0 &&
-           cvm__tet_volume(P[0], P[1], o, P[3]) >= 0 && cvm__tet_volume(P[0], P[1], P[2], o) >= 0;
-}
-
 cvm_status cvm__mesh3_measure(double *out, cvm_mesh *m, cvm_measure which)
 {
     cvm__mesh3 *g = m->m3;
@@ -207,6 +200,9 @@ cvm_status cvm__mesh3_measure(double *out, cvm_mesh *m, cvm_measure which)
         *out = g->have ? (double)(g->n_steiner_boundary + g->n_steiner_interior) : 0;
         return CVM_OK;
     }
+    if ((int)which >= (int)CVM_MEASURE_MIN_DUAL_EDGE_RATIO_3D &&
+        (int)which <= (int)CVM_MEASURE_MIN_DUAL_EDGE_3D)
+        return cvm__mesh3_quality(out, m, which);
     if (which == CVM_MEASURE_VANISHED_VERTICES) {
         *out = g->have ? (double)g->n_redundant : 0;
         return CVM_OK;
@@ -227,7 +223,7 @@ cvm_status cvm__mesh3_measure(double *out, cvm_mesh *m, cvm_measure which)
     for (t = 0; t < g->ntet; t++) {
         const int32_t *v = g->tet + 4 * t;
         const double *P[4];
-        double lo, hi, o[3], w4[4];
+        double lo, hi, w4[4];
         int i, j, bnd = 0;
         for (i = 0; i < 4; i++) {
             P[i] = g->xyz + 3 * v[i];
@@ -249,8 +245,8 @@ cvm_status cvm__mesh3_measure(double *out, cvm_mesh *m, cvm_measure which)
             }
         if (which == CVM_MEASURE_CIRCUMCENTRE_OUTSIDE_PCT ||
             which == CVM_MEASURE_CIRCUMCENTRE_OUTSIDE_BOUNDARY_PCT) {
-            int outside = cvm__tet_power_centre(P[0], P[1], P[2], P[3], w4, o) != 0 ||
-                          !centre_inside(P, o);
+            /* exact; on a face (edge, corner) counts as inside */
+            int outside = cvm__tet_centre_inside(P[0], P[1], P[2], P[3], g->w ? w4 : NULL) < 0;
             nout += outside;
             nbt += bnd;
             nbout += bnd && outside;

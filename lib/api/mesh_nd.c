@@ -99,7 +99,7 @@ cvm_status cvm_mesh_view_points_nd(const double **ptr_out, size_t *count_out, in
 cvm_status cvm_mesh_copy_dual_vertices_nd(double *dst, size_t dst_len, int dim, const cvm_mesh *m)
 {
     if (m && m->m3)
-        return CVM_E_UNSUPPORTED; /* a 2D call on a 3D mesh */
+        return dim == 3 ? cvm__mesh3_copy_dual_vertices(dst, dst_len, m) : CVM_E_ARGUMENT;
     cvm_status s;
     if (!m)
         return CVM_E_NULL_ARG;

@@ -121,8 +121,10 @@ cvm_status cvm_mesh_get_measure(double *out, cvm_mesh *m, cvm_measure which)
 cvm_status cvm_mesh_copy_histogram(double *dst, size_t dst_len, cvm_mesh *m, cvm_histogram which)
 {
     if (m && m->m3) {
-        CVM__BEGIN(m);
-        return cvm__mesh3_unsupported(m, "cvm_mesh_copy_histogram");
+        CVM__BEGIN_READ(m);
+        if (!dst)
+            return cvm__error(&m->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "dst is NULL");
+        return cvm__mesh3_histogram(dst, dst_len, m, which);
     }
     const double *hist;
     size_t need, n_int;

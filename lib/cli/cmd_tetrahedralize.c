@@ -1,6 +1,6 @@
 /*
  * cmd_tetrahedralize.c - `cvmesh tetrahedralize IN.node|IN.poly|IN.smesh|IN.off|IN.stl
- * [-o OUT] [--quality] [--timings] [option flags]`: the Delaunay tetrahedralisation of a
+ * [-o OUT] [--dual DUAL.vtu] [--quality] [--timings] [option flags]`: the Delaunay tetrahedralisation of a
  * 3D point set, or the tetrahedral mesh of the inside of a closed surface; write, report.
  */
 #include <string.h>
@@ -18,7 +18,8 @@ void cli_tetrahedralize_help(FILE *f)
 {
     fprintf(f,
             "usage: cvmesh tetrahedralize IN.node|IN.poly|IN.smesh|IN.off|IN.stl [-o OUT]\n"
-            "                             [--quality] [--timings] [option flags]\n"
+            "                             [--dual DUAL.vtu] [--quality] [--timings]\n"
+            "                             [option flags]\n"
             "\n"
             "The Delaunay tetrahedralisation of the points of a 3D .node file (TetGen's\n"
             "format), or the tetrahedral mesh of the inside of a closed surface (.off, .stl,\n"
@@ -30,9 +31,11 @@ void cli_tetrahedralize_help(FILE *f)
             "points, and the command says which one is not.\n"
             "\n"
             "Outputs and reports (--timings: read, tetrahedralize, write, quality):\n");
-    cli_print_output_help(f, 0, 0);
+    cli_print_output_help(f, 0, 1);
     fprintf(f, "  (3D meshes write .vtu (VTK_TETRA cells), .msh (Gmsh 4.1: volumes per region,\n"
-               "  surfaces per marker) or .node (OUT.node + .ele + .face); not .svg)\n");
+               "  surfaces per marker) or .node (OUT.node + .ele + .face); not .svg. --dual\n"
+               "  writes the bounded power cells, those of the interior vertices, as\n"
+               "  VTK_POLYHEDRON cells sharing their corners, with their volumes)\n");
     cli_print_option_flags(f, CLI_CMD_TETRAHEDRALIZE);
     fprintf(f, "\nOn bad input the exit status is 1 and one line names the file, line or face;\n"
                "no output file is written. Command-line errors exit with 2.\n");
@@ -43,6 +46,7 @@ static int parse(targs *a, int argc, char **argv)
     int i, r;
     memset(a, 0, sizeof *a);
     a->o.command = "tetrahedralize";
+    a->o.with_dual = 1;
     for (i = 1; i < argc; i++) {
         const char *s = argv[i];
         if (strcmp(s, "-h") == 0 || strcmp(s, "--help") == 0) {
@@ -87,10 +91,15 @@ static void report(FILE *f, cvm_mesh *m)
         {CVM_MEASURE_MIN_DIHEDRAL_DEG, "min dihedral angle", "%.4g deg"},
         {CVM_MEASURE_MAX_DIHEDRAL_DEG, "max dihedral angle", "%.4g deg"},
         {CVM_MEASURE_MAX_RADIUS_EDGE, "max radius-edge ratio", "%.4g"},
+        {CVM_MEASURE_MEAN_RADIUS_EDGE, "mean radius-edge ratio", "%.4g"},
         {CVM_MEASURE_MIN_EDGE, "min edge", "%.6g"},
         {CVM_MEASURE_MAX_EDGE, "max edge", "%.6g"},
         {CVM_MEASURE_CIRCUMCENTRE_OUTSIDE_PCT, "circumcentre outside", "%.3f %%"},
         {CVM_MEASURE_CIRCUMCENTRE_OUTSIDE_BOUNDARY_PCT, "  at the boundary", "%.3f %%"},
+        {CVM_MEASURE_MIN_DUAL_EDGE_3D, "min dual edge", "%.6g"},
+        {CVM_MEASURE_MIN_DUAL_EDGE_RATIO_3D, "min dual edge / face edge", "%.4g"},
+        {CVM_MEASURE_TIME_STEP_PROXY_3D, "time-step proxy", "%.6g"},
+        {CVM_MEASURE_VALENCE14_PCT, "interior valence 14", "%.3f %%"},
         {CVM_MEASURE_VANISHED_VERTICES, "vanished vertices", "%.0f"},
         {CVM_MEASURE_RECOVERY_STEINER, "recovery steiner points", "%.0f"},
     };
@@ -105,6 +114,16 @@ static void report(FILE *f, cvm_mesh *m)
         fprintf(f, "%-28s ", rows[i].label);
         fprintf(f, rows[i].fmt, v);
         fputc('\n', f);
+    }
+    {
+        double h[18];
+        int k;
+        if (cvm_mesh_copy_histogram(h, 18, m, CVM_HIST_DIHEDRAL_DEG) == CVM_OK) {
+            fprintf(f, "%-28s", "dihedral angles (10 deg)");
+            for (k = 0; k < 18; k++)
+                fprintf(f, " %.0f", h[k]);
+            fputc('\n', f);
+        }
     }
 }
 

@@ -105,6 +105,21 @@ int cvm__power3d_sos(const double *a, const double *b, const double *c, const do
                      const double *e, double wa, double wb, double wc, double wd, double we,
                      int64_t ia, int64_t ib, int64_t ic, int64_t id, int64_t ie);
 
+/* Where the power vertex (circumcentre when w is NULL) of the tetrahedron
+ * (a, b, c, d) lies, exactly: s[i] is the sign of its barycentric coordinate
+ * for corner i (a = 0 .. d = 3): +1 strictly on corner i's side of the
+ * opposite face, 0 on that face's plane, -1 beyond it. w: the four weights
+ * (power distance |x - p|^2 - w) or NULL. Any orientation. Returns 0, or -1
+ * when the tetrahedron is flat (orient3d exactly 0; s unset). Exactness range
+ * as below. */
+int cvm__tet_centre_side(const double *a, const double *b, const double *c, const double *d,
+                         const double *w, int s[4]);
+/* From cvm__tet_centre_side: 1 when the power vertex lies strictly inside, 0
+ * on the boundary (a face, edge or corner), -1 outside, -2 for a flat
+ * tetrahedron. */
+int cvm__tet_centre_inside(const double *a, const double *b, const double *c, const double *d,
+                           const double *w);
+
 /*
  * Exactness range: the sign is exact for all finite inputs as long as, within
  * one call, every nonzero coordinate is at least 2^-100 times the largest

@@ -53,8 +53,8 @@ static double dihedral(const double *p, const double *q, const double *r, const 
     return atan2(sn, c) * (180.0 / CVM__PI);
 }
 
-void cvm__tet_dihedral_range_deg(const double *a, const double *b, const double *c,
-                                 const double *d, double *lo, double *hi)
+void cvm__tet_dihedrals_deg(const double *a, const double *b, const double *c, const double *d,
+                            double out[6])
 {
     const double *P[4];
     static const int e[6][4] = {{0, 1, 2, 3}, {0, 2, 1, 3}, {0, 3, 1, 2},
@@ -64,14 +64,23 @@ void cvm__tet_dihedral_range_deg(const double *a, const double *b, const double 
     P[1] = b;
     P[2] = c;
     P[3] = d;
+    for (k = 0; k < 6; k++)
+        out[k] = dihedral(P[e[k][0]], P[e[k][1]], P[e[k][2]], P[e[k][3]]);
+}
+
+void cvm__tet_dihedral_range_deg(const double *a, const double *b, const double *c,
+                                 const double *d, double *lo, double *hi)
+{
+    double t[6];
+    int k;
+    cvm__tet_dihedrals_deg(a, b, c, d, t);
     *lo = 180;
     *hi = 0;
     for (k = 0; k < 6; k++) {
-        double t = dihedral(P[e[k][0]], P[e[k][1]], P[e[k][2]], P[e[k][3]]);
-        if (t < *lo)
-            *lo = t;
-        if (t > *hi)
-            *hi = t;
+        if (t[k] < *lo)
+            *lo = t[k];
+        if (t[k] > *hi)
+            *hi = t[k];
     }
 }
 

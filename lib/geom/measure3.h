@@ -19,6 +19,9 @@ double cvm__tet_volume(const double *a, const double *b, const double *c, const 
  * bc, bd, cd; min and max into lo, hi. A flat tetrahedron gives 0 and 180. */
 void cvm__tet_dihedral_range_deg(const double *a, const double *b, const double *c,
                                  const double *d, double *lo, double *hi);
+/* The six dihedral angles, degrees, at the edges ab, ac, ad, bc, bd, cd. */
+void cvm__tet_dihedrals_deg(const double *a, const double *b, const double *c, const double *d,
+                            double out[6]);
 /* The point whose power distance |x - p|^2 - w is the same to the four
  * weighted corners (the circumcentre when every weight is 0) into o; 0, or -1
  * when the tetrahedron is flat (o unset). w may be NULL (all 0). */

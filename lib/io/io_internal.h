@@ -295,4 +295,30 @@ cvm_status cvm__write_dual_file(cvm__ctx *ctx, const char *path, const cvm__dual
 /* The same into ws, as cvm__write_file_to_set(). */
 cvm_status cvm__write_dual_file_to_set(cvm__write_set *ws, const char *path, const cvm__dual_out *d);
 
+/* ---- output: the bounded power cells of a tetrahedral mesh (polyhedra) ---- */
+typedef struct cvm__dual3_out {
+    const double *pts;       /* 3*npts: the dual vertices, each once */
+    const int32_t *pt_tet;   /* npts: a tetrahedron whose power vertex it is */
+    size_t npts;
+    size_t ncell;
+    const int32_t *conn;     /* the distinct points of each cell: cell c has */
+    const int64_t *conn_off; /* conn[conn_off[c] .. conn_off[c+1]-1] (ncell+1 offsets) */
+    const int64_t *faces;    /* VTK face stream: per cell nfaces, then per face n, ids */
+    const int64_t *face_off; /* ncell+1: cell c's stream is faces[face_off[c] .. face_off[c+1]-1] */
+    const int32_t *vertex;   /* ncell: the mesh vertex of each cell */
+    const double *volume;    /* ncell */
+    const double *weight;    /* ncell */
+    const int32_t *edge;     /* 2*nedge: interior mesh edges */
+    const double *edge_area; /* nedge: their signed dual face areas */
+    size_t nedge;
+    const int32_t *face;     /* 3*nface: interior mesh faces */
+    const double *face_len;  /* nface: their dual edge lengths */
+    size_t nface;
+} cvm__dual3_out;
+
+/* Write the cells as VTK_POLYHEDRON (42) cells of a .vtu into ws, as
+ * cvm__write_file_to_set() (write_dual3.c; the caller checks the extension). */
+cvm_status cvm__write_dual3_file_to_set(cvm__write_set *ws, const char *path,
+                                        const cvm__dual3_out *d);
+
 #endif

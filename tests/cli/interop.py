@@ -9,7 +9,9 @@ it with its XML writer in every data mode and with its legacy writers; cvmesh
 must read each back to exactly the same triangles. A Gmsh domain of lines
 and points from meshio is triangulated and refined with its physical tags as
 markers. A sheared grid that meshio writes (not Delaunay) is flipped and
-optimised. Prints one line per check; exits 1 when any failed.
+optimised. The 3D power dual of a BCC lattice (--dual, VTK_POLYHEDRON cells) is
+read by meshio and VTK, and VTK's polyhedron volumes equal cvmesh's. Prints
+one line per check; exits 1 when any failed.
 """
 import os
 import random
@@ -180,6 +182,52 @@ for name, fmt in (("grid.msh", "gmsh22"), ("grid.vtu", "vtu")):
         ok = len(back.cells_dict["triangle"]) == 2 * n * n
     check(ok, "cvmesh optimise flips the sheared grid %s written by meshio (%d flips): %s"
           % (name, n * n, err))
+
+# ---- the 3D power dual: VTK_POLYHEDRON cells of a BCC lattice -------------
+K = 4
+with open(path("bcc.node"), "w") as f:
+    pts = []
+    for x in range(K + 1):
+        for y in range(K + 1):
+            for z in range(K + 1):
+                pts.append((x, y, z))
+                if x < K and y < K and z < K:
+                    pts.append((x + 0.5, y + 0.5, z + 0.5))
+    f.write("%d 3 0 0\n" % len(pts))
+    for i, q in enumerate(pts):
+        f.write("%d %r %r %r\n" % ((i,) + q))
+code, err = run("tetrahedralize", path("bcc.node"), "-o", path("bcc.vtu"), "--dual", path("bcc_dual.vtu"))
+check(code == 0, "cvmesh tetrahedralize --dual: " + err)
+if code == 0:
+    # interior vertices: (K-1)^3 corners and K^3 centres; those with all 14
+    # lattice neighbours have the truncated octahedron of volume 1/2
+    ncell = (K - 1) ** 3 + K ** 3
+    d = meshio.read(path("bcc_dual.vtu"))
+    n = sum(len(c.data) for c in d.cells)
+    vol = np.concatenate(d.cell_data["volume"])
+    verts = np.concatenate(d.cell_data["vertex"])
+    check(n == ncell and all(c.type.startswith("polyhedron") for c in d.cells),
+          "meshio reads the dual: %d polyhedra (want %d)" % (n, ncell))
+    full = [i for i, v in enumerate(verts) if all(1 <= c <= K - 1 for c in pts[v])]
+    check(len(full) > 0 and np.abs(vol[full] - 0.5).max() < 1e-12,
+          "dual cells with all BCC neighbours have volume 1/2 (%d cells)" % len(full))
+    check(len(d.points) == len(np.unique(d.points, axis=0)),
+          "dual vertices are written once (%d points)" % len(d.points))
+    if vtk:
+        rd = vtk.vtkXMLUnstructuredGridReader()
+        rd.SetFileName(path("bcc_dual.vtu"))
+        rd.Update()
+        g = rd.GetOutput()
+        sz = vtk.vtkCellSizeFilter()
+        sz.SetInputData(g)
+        sz.ComputeVolumeOn()
+        sz.Update()
+        vv = vtk_to_numpy(sz.GetOutput().GetCellData().GetArray("Volume"))
+        mine = vtk_to_numpy(g.GetCellData().GetArray("volume"))
+        types = {g.GetCellType(i) for i in range(g.GetNumberOfCells())}
+        check(g.GetNumberOfCells() == ncell and types == {42} and np.abs(vv - mine).max() < 1e-12,
+              "VTK reads the dual as %d polyhedra whose volumes equal cvmesh's (max diff %.1e)"
+              % (g.GetNumberOfCells(), np.abs(vv - mine).max() if len(vv) else 0))
 
 print("%d failed" % len(failed))
 sys.exit(1 if failed else 0)

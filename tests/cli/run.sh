@@ -257,7 +257,8 @@ OUT=$TMP/tet
 mkdir "$OUT"
 D3=$DOMAINS/../data3d
 expect_exit 0 "tetrahedralize a BCC .node" "$CLI" tetrahedralize "$DATA/bcc_2x2x2.node" -o "$OUT/bcc.vtu" --quality --timings
-for want in "tetrahedra                   96" "volume                       8" "read: " "tetrahedralize: "; do
+for want in "tetrahedra                   96" "volume                       8" "read: " "tetrahedralize: " \
+            "min dual edge                0.353553" "dihedral angles (10 deg)"; do
     expect_grep "tetrahedralize --quality" "$TMP/out" "$want"
 done
 expect_exit 0 "tetrahedralize two cubes" "$CLI" tetrahedralize "$D3/two_cubes.poly" -o "$OUT/two.vtu"

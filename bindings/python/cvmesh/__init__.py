@@ -145,7 +145,8 @@ class Bounds(NamedTuple):
 
 
 # Histogram lengths (cvmesh.h: 18 angle bins, 16 degree bins, q1 12, q2..q5 20).
-_HIST_BINS = {"ANGLE_DEG": 18, "DEGREE": 16, "Q1": 12, "Q2": 20, "Q3": 20, "Q4": 20, "Q5": 20}
+_HIST_BINS = {"ANGLE_DEG": 18, "DEGREE": 16, "Q1": 12, "Q2": 20, "Q3": 20, "Q4": 20, "Q5": 20,
+              "DIHEDRAL_DEG": 18, "VALENCE_3D": 32}
 
 
 def version() -> str:
@@ -406,7 +407,8 @@ class Mesh:
 
     def set_points(self, points: npt.ArrayLike, markers: Optional[npt.ArrayLike] = None,
                    attributes: Optional[npt.ArrayLike] = None) -> None:
-        """Set the input points ((n, 2) array-like); clears any triangulation."""
+        """Set the input points ((n, 2) array-like, or (n, 3): the mesh becomes 3D
+        and triangulate() tetrahedralises them); clears any triangulation."""
         with self._handle() as m:
             capi.cvm_mesh_set_points(m, points)
             if markers is not None:
@@ -650,7 +652,7 @@ class Mesh:
 
     @property
     def dim(self) -> int:
-        """Dimension of the mesh: coordinates per point (2 in this version)."""
+        """Dimension of the mesh: coordinates per point (2, or 3 after 3D points)."""
         with self._handle() as m:
             return capi.cvm_mesh_dim(m)
 
@@ -704,10 +706,28 @@ class Mesh:
 
     @property
     def points(self) -> npt.NDArray[np.float64]:
-        """(n, 2) float64 vertex coordinates (a copy)."""
+        """(n, 2) float64 vertex coordinates (a copy); (n, 3) for a 3D mesh."""
         with self._handle() as m:
+            if capi.cvm_mesh_dim(m) == 3:
+                return capi.cvm_mesh_view_points_nd(m)
             n = capi.cvm_mesh_count(m, Entity.VERTEX)
             return capi.cvm_mesh_copy_points(2 * n, m).reshape(n, 2)
+
+    @property
+    def tetrahedra(self) -> npt.NDArray[np.int32]:
+        """(m, 4) int32 vertex ids of the tetrahedra of a 3D mesh, positively
+        oriented ((0, 4) for a 2D mesh)."""
+        if self.dim != 3:
+            return np.zeros((0, 4), dtype=np.int32)
+        return self._cells(Entity.TETRAHEDRON, 4)
+
+    @property
+    def dual3_volumes(self) -> npt.NDArray[np.float64]:
+        """(n,) float64 dual (power) cell volume of each vertex of a 3D mesh, -1
+        for a vertex on the boundary (cvm_mesh_copy_dual3_volumes)."""
+        with self._handle() as m:
+            n = capi.cvm_mesh_count(m, Entity.VERTEX)
+            return capi.cvm_mesh_copy_dual3_volumes(n, m)
 
     @property
     def triangles(self) -> npt.NDArray[np.int32]:
@@ -820,7 +840,7 @@ class Mesh:
         """(m, dim) float64 power vertex of each cell, in the mesh's dimension."""
         with self._handle() as m:
             d = capi.cvm_mesh_dim(m)
-            n = capi.cvm_mesh_count(m, Entity.TRIANGLE)
+            n = capi.cvm_mesh_count(m, Entity.TETRAHEDRON if d == 3 else Entity.TRIANGLE)
             return capi.cvm_mesh_copy_dual_vertices_nd(d * n, d, m).reshape(n, d)
 
     @property
@@ -902,7 +922,14 @@ class Mesh:
                     values[meas.name.lower()] = math.nan  # not in this build
             for hist in Histogram:
                 bins = _HIST_BINS.get(hist.name, 64)
-                values["hist_" + hist.name.lower()] = capi.cvm_mesh_copy_histogram(bins, m, hist)
+                try:
+                    values["hist_" + hist.name.lower()] = capi.cvm_mesh_copy_histogram(bins, m,
+                                                                                       hist)
+                except (UnsupportedError, ArgumentError) as e:
+                    if e.status not in (Status.E_UNSUPPORTED, Status.E_ARGUMENT):
+                        raise
+                    # a 2D histogram of a 3D mesh, or a 3D one of a 2D mesh
+                    values["hist_" + hist.name.lower()] = np.zeros(0)
         return Quality(**values)
 
     def write(self, path: PathLike) -> None:

@@ -16,6 +16,7 @@ TCase *api_read_foreign_tcase(void); /* test_read_foreign.c: cvm_mesh_read of VT
 TCase *api_read_names_tcase(void); /* test_read_names.c: later errors in the file's terms */
 TCase *api_nd_tcase(void);        /* test_nd.c: dimension-generic calls, mixed cells, reports */
 TCase *api_sizing_nd_tcase(void);
+TCase *api_mesh3_dual_tcase(void); /* test_mesh3_dual.c: the 3D dual and quality measures */
 TCase *api_mesh3_tcase(void);     /* test_mesh3.c: a handle given 3D points */ /* test_sizing_nd.c: dimension-generic sizing, metric source */
 
 #endif

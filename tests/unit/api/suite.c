@@ -19,5 +19,6 @@ Suite *api_suite(void)
     suite_add_tcase(s, api_nd_tcase());
     suite_add_tcase(s, api_sizing_nd_tcase());
     suite_add_tcase(s, api_mesh3_tcase());
+    suite_add_tcase(s, api_mesh3_dual_tcase());
     return s;
 }

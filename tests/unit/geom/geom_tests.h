@@ -17,6 +17,7 @@ TCase *geom_power3d_tcase(void);   /* test_power3d.c */
 TCase *geom_sos3d_tcase(void);     /* test_sos3d.c: symbolic perturbation of insphere/power3d */
 TCase *geom_construct_tcase(void); /* test_construct.c: circumcentre, segment crossing */
 TCase *geom_measure_tcase(void);   /* test_measure.c: the smallest-angle shortcut */
+TCase *geom_tet_centre_tcase(void); /* test_tet_centre.c: exact circumcentre containment */
 
 /* oracle.c: exact signs (-1, 0, 1) of the determinants for any finite doubles
  * of moderate exponent spread, by big-integer arithmetic. */

@@ -17,5 +17,6 @@ Suite *geom_suite(void)
     suite_add_tcase(s, geom_sos3d_tcase());
     suite_add_tcase(s, geom_construct_tcase());
     suite_add_tcase(s, geom_measure_tcase());
+    suite_add_tcase(s, geom_tet_centre_tcase());
     return s;
 }
