@@ -29,6 +29,9 @@ cvm_status cvm__mesh3_copy_points(double *dst, size_t dst_len, const cvm_mesh *m
 const double *cvm__mesh3_points(const cvm_mesh *m, size_t *nv);
 cvm_status cvm__mesh3_copy_cells(cvm_index *dst, size_t dst_len, const cvm_mesh *m,
                                  cvm_entity kind);
+/* The report of the last cvm_mesh_generate3() (lib/api/generate3.c): CVM_OK, or
+ * CVM_E_ARGUMENT when which is not a CVM_REPORT_GEN3_* value. No message. */
+cvm_status cvm__mesh3_gen3_report(double *out, const cvm_mesh *m, int which);
 /* The message of a 2D-only call made on a 3D handle: CVM_E_UNSUPPORTED. */
 cvm_status cvm__mesh3_unsupported(cvm_mesh *m, const char *call);
 

@@ -207,6 +207,8 @@ cvm_status cvm__mesh3_measure(double *out, cvm_mesh *m, cvm_measure which)
         *out = g->have ? (double)(g->n_steiner_boundary + g->n_steiner_interior) : 0;
         return CVM_OK;
     }
+    if (cvm__mesh3_gen3_report(out, m, (int)which) == CVM_OK)
+        return CVM_OK;
     if (which == CVM_MEASURE_VANISHED_VERTICES) {
         *out = g->have ? (double)g->n_redundant : 0;
         return CVM_OK;
