@@ -37,11 +37,11 @@ static cvm_status check_call(cvm_mesh *m, double size)
                           "cvm_mesh_read() (.off, .stl, .poly, .smesh)");
     if (layers != 1)
         return cvm__error(&m->ctx, CVM_E_UNSUPPORTED, CVM_ENT_OPTION, CVM_OPT_GEN3_LAYERS,
-                          "CVM_OPT_GEN3_LAYERS = %g: only one near-field layer is implemented "
+                          "CVM_OPT_GEN3_LAYERS = %g is unsupported: only one near-field layer is implemented "
                           "in this version", layers);
     if (fs != CVM_GEN3_FREESPACE_LATTICE)
         return cvm__error(&m->ctx, CVM_E_UNSUPPORTED, CVM_ENT_OPTION, CVM_OPT_GEN3_FREESPACE,
-                          "CVM_OPT_GEN3_FREESPACE = %g (%s): only the lattice (0) is implemented "
+                          "CVM_OPT_GEN3_FREESPACE = %g (%s) is unsupported: only the lattice (0) is implemented "
                           "in this version", fs, fs == CVM_GEN3_FREESPACE_OCTREE ? "octree"
                                                                                   : "refine");
     return CVM_OK;
