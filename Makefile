@@ -382,7 +382,7 @@ check-fortran: venv
 	    bash bindings/fortran/check.sh; \
 	else echo "check-fortran: skipped (bindings/fortran/check.sh not present yet)"; fi
 
-bench: all
+bench: all data3d
 	sh tests/bench/run.sh $(BUILD) $(DATA_DIR)
 
 # ---- amalgamation ----------------------------------------------------------

@@ -175,9 +175,9 @@ cvm_status cvm__g3_near_field(cvm__ctx *ctx, const cvm__g3_surface *s, const cvm
             j++;
         if (j - i != 2) {
             st = cvm__error(ctx, CVM_E_UNSUPPORTED, CVM_ENT_NONE, -1,
-                            "surface edge (points %ld, %ld) has %lu triangles: mesh generation "
-                            "handles closed 2-manifold surfaces only in this version (no internal "
-                            "facets between regions)",
+                            "surface edge (points %ld, %ld) has %lu triangles: unsupported in this "
+                            "version, mesh generation handles closed 2-manifold surfaces only (no "
+                            "internal facets between regions)",
                             (long)er[i].v0, (long)er[i].v1, (unsigned long)(j - i));
             goto done;
         }
