@@ -98,6 +98,33 @@ static cvm_status candidate(lat_ctx *L, int64_t i, int64_t j, int64_t k, int sub
     return cvm__g3_grid_add(L->grid, L->P->xyz, (int32_t)(L->P->n - 1));
 }
 
+/* The lattice index box of level L around triangle f where the size can
+ * reach L->a (l(f) + g d <= a_k, plus a cell); 0 when l(f) > a_k. */
+static int face_box(const cvm__g3_surface *s, size_t f, const lat_ctx *L, const int64_t *n,
+                    int64_t *b0, int64_t *b1)
+{
+    const int32_t *t = s->tri + 3 * f;
+    double c[3], l = 0, r;
+    int ax, q;
+    for (ax = 0; ax < 3; ax++)
+        c[ax] = (s->xyz[3 * t[0] + ax] + s->xyz[3 * t[1] + ax] + s->xyz[3 * t[2] + ax]) / 3;
+    for (q = 0; q < 3; q++) {
+        const double *p0 = s->xyz + 3 * t[q], *p1 = s->xyz + 3 * t[(q + 1) % 3];
+        l += sqrt((p0[0] - p1[0]) * (p0[0] - p1[0]) + (p0[1] - p1[1]) * (p0[1] - p1[1]) +
+                  (p0[2] - p1[2]) * (p0[2] - p1[2])) / 3;
+    }
+    if (l > L->a)
+        return 0;
+    r = (L->a - l) / cvm__g3_size_grading(L->z) + L->a;
+    for (ax = 0; ax < 3; ax++) {
+        double lo = floor((c[ax] - r - L->lo[ax]) / L->a) - 1,
+               up = ceil((c[ax] + r - L->lo[ax]) / L->a) + 1;
+        b0[ax] = lo < 0 ? 0 : (int64_t)lo;
+        b1[ax] = up > (double)n[ax] ? n[ax] : (int64_t)up;
+    }
+    return 1;
+}
+
 static uint64_t lattice_key(int64_t i, int64_t j, int64_t k, int sub)
 {
     uint64_t m = ((uint64_t)1 << AXIS_BITS) - 1;
@@ -164,45 +191,51 @@ cvm_status cvm__g3_lattice(cvm__ctx *ctx, const cvm__g3_surface *s, const cvm__g
                             if (!sub || (i < n[0] && j < n[1] && k < n[2]))
                                 st = candidate(&L, i, j, k, sub);
         } else {
-            /* only where some triangle can bring the size down to a_k */
-            S.used = 0;
-            if (S.key)
-                memset(S.key, 0, S.cap * sizeof *S.key);
-            for (f = 0; f < s->nt && !st; f++) {
-                const int32_t *t = s->tri + 3 * f;
-                double c[3], l = 0, r;
-                int64_t b0[3], b1[3];
-                int q;
-                for (ax = 0; ax < 3; ax++)
-                    c[ax] = (s->xyz[3 * t[0] + ax] + s->xyz[3 * t[1] + ax] +
-                             s->xyz[3 * t[2] + ax]) / 3;
-                for (q = 0; q < 3; q++) {
-                    const double *p0 = s->xyz + 3 * t[q], *p1 = s->xyz + 3 * t[(q + 1) % 3];
-                    l += sqrt((p0[0] - p1[0]) * (p0[0] - p1[0]) + (p0[1] - p1[1]) * (p0[1] - p1[1]) +
-                              (p0[2] - p1[2]) * (p0[2] - p1[2])) / 3;
+            /* only where some triangle can bring the size down to a_k: the union
+             * of the triangles' boxes when it holds fewer candidates than the
+             * boxes together, else box by box, each candidate once */
+            int64_t u0[3] = {n[0], n[1], n[2]}, u1[3] = {0, 0, 0}, b0[3], b1[3];
+            double sum = 0, uni = 1;
+            for (f = 0; f < s->nt; f++)
+                if (face_box(s, f, &L, n, b0, b1)) {
+                    double c = 1;
+                    for (ax = 0; ax < 3; ax++) {
+                        c *= (double)(b1[ax] - b0[ax] + 1);
+                        u0[ax] = b0[ax] < u0[ax] ? b0[ax] : u0[ax];
+                        u1[ax] = b1[ax] > u1[ax] ? b1[ax] : u1[ax];
+                    }
+                    sum += c;
                 }
-                if (l > L.a)
-                    continue;
-                r = (L.a - l) / cvm__g3_size_grading(z) + L.a;
-                for (ax = 0; ax < 3; ax++) {
-                    double lo = floor((c[ax] - r - L.lo[ax]) / L.a) - 1,
-                           up = ceil((c[ax] + r - L.lo[ax]) / L.a) + 1;
-                    b0[ax] = lo < 0 ? 0 : (int64_t)lo;
-                    b1[ax] = up > (double)n[ax] ? n[ax] : (int64_t)up;
-                }
-                for (k = b0[2]; k <= b1[2] && !st; k++)
-                    for (j = b0[1]; j <= b1[1] && !st; j++)
-                        for (i = b0[0]; i <= b1[0] && !st; i++)
-                            for (sub = 0; sub < 2 && !st; sub++) {
-                                int r2;
-                                if (sub && (i >= n[0] || j >= n[1] || k >= n[2]))
-                                    continue;
-                                r2 = seen_add(ctx, &S, lattice_key(i, j, k, sub));
-                                if (r2 < 0)
-                                    st = cvm__nomem(ctx);
-                                else if (r2)
+            for (ax = 0; ax < 3; ax++)
+                uni *= u1[ax] >= u0[ax] ? (double)(u1[ax] - u0[ax] + 1) : 0;
+            if (uni <= sum) {
+                for (k = u0[2]; k <= u1[2] && !st; k++)
+                    for (j = u0[1]; j <= u1[1] && !st; j++)
+                        for (i = u0[0]; i <= u1[0] && !st; i++)
+                            for (sub = 0; sub < 2 && !st; sub++)
+                                if (!sub || (i < n[0] && j < n[1] && k < n[2]))
                                     st = candidate(&L, i, j, k, sub);
-                            }
+            } else {
+                S.used = 0;
+                if (S.key)
+                    memset(S.key, 0, S.cap * sizeof *S.key);
+                for (f = 0; f < s->nt && !st; f++) {
+                    if (!face_box(s, f, &L, n, b0, b1))
+                        continue;
+                    for (k = b0[2]; k <= b1[2] && !st; k++)
+                        for (j = b0[1]; j <= b1[1] && !st; j++)
+                            for (i = b0[0]; i <= b1[0] && !st; i++)
+                                for (sub = 0; sub < 2 && !st; sub++) {
+                                    int r2;
+                                    if (sub && (i >= n[0] || j >= n[1] || k >= n[2]))
+                                        continue;
+                                    r2 = seen_add(ctx, &S, lattice_key(i, j, k, sub));
+                                    if (r2 < 0)
+                                        st = cvm__nomem(ctx);
+                                    else if (r2)
+                                        st = candidate(&L, i, j, k, sub);
+                                }
+                }
             }
         }
         if (st == CVM_E_NOMEM)

@@ -19,6 +19,7 @@ struct cvm__g3_size {
     int32_t dim[3];
     int32_t *start;  /* ncell + 1: faces of cell c are idx[start[c] .. start[c+1]-1] */
     int32_t *idx;
+    double *cmin;    /* ncell: smallest l(f) of the faces of each cell (+inf when empty) */
 };
 
 static double dist(const double *a, const double *b)
@@ -45,6 +46,7 @@ void cvm__g3_size_free(cvm__g3_size *z)
     cvm__free(z->ctx, z->l);
     cvm__free(z->ctx, z->start);
     cvm__free(z->ctx, z->idx);
+    cvm__free(z->ctx, z->cmin);
     cvm__free(z->ctx, z);
 }
 
@@ -99,8 +101,11 @@ cvm_status cvm__g3_size_create(cvm__g3_size **out, cvm__ctx *ctx, const cvm__g3_
     }
     z->start = cvm__calloc(ctx, ncell + 1, sizeof *z->start);
     z->idx = cvm__malloc(ctx, s->nt * sizeof *z->idx);
-    if (!z->start || !z->idx)
+    z->cmin = cvm__malloc(ctx, ncell * sizeof *z->cmin);
+    if (!z->start || !z->idx || !z->cmin)
         goto nomem;
+    for (f = 0; f < ncell; f++)
+        z->cmin[f] = INFINITY;
     for (f = 0; f < s->nt; f++) {
         const double *x = z->cen + 3 * f;
         size_t c = ((size_t)cell_of(z, x, 2) * (size_t)z->dim[1] + (size_t)cell_of(z, x, 1)) *
@@ -114,6 +119,8 @@ cvm_status cvm__g3_size_create(cvm__g3_size **out, cvm__ctx *ctx, const cvm__g3_
         size_t c = ((size_t)cell_of(z, x, 2) * (size_t)z->dim[1] + (size_t)cell_of(z, x, 1)) *
                        (size_t)z->dim[0] + (size_t)cell_of(z, x, 0);
         z->idx[z->start[c]++] = (int32_t)f;
+        if (z->l[f] < z->cmin[c])
+            z->cmin[c] = z->l[f];
     }
     for (f = ncell; f > 0; f--)
         z->start[f] = z->start[f - 1];
@@ -135,6 +142,24 @@ double cvm__g3_size_grading(const cvm__g3_size *z)
     return z->g > 0 ? z->g : 1;
 }
 
+/* Distance from x to cell (i, j, k) (0 inside it; the outer cells reach to
+ * infinity, as cell_of() clamps). */
+static double box_dist(const cvm__g3_size *z, int32_t i, int32_t j, int32_t k, const double *x)
+{
+    int32_t id[3] = {i, j, k};
+    double d2 = 0;
+    int a;
+    for (a = 0; a < 3; a++) {
+        double lo = z->lo[a] + z->cell * id[a], hi = lo + z->cell, e = 0;
+        if (x[a] < lo && id[a] > 0)
+            e = lo - x[a];
+        else if (x[a] > hi && id[a] < z->dim[a] - 1)
+            e = x[a] - hi;
+        d2 += e * e;
+    }
+    return sqrt(d2);
+}
+
 /* The faces of the cells at Chebyshev distance exactly r from cell c0. */
 static double ring(const cvm__g3_size *z, const int32_t *c0, int32_t r, const double *x, double best)
 {
@@ -152,6 +177,9 @@ static double ring(const cvm__g3_size *z, const int32_t *c0, int32_t r, const do
                 if (i < 0 || i >= z->dim[0])
                     continue;
                 c = ((size_t)k * (size_t)z->dim[1] + (size_t)j) * (size_t)z->dim[0] + (size_t)i;
+                /* no face of the cell can beat best: skip it */
+                if (z->cmin[c] + z->g * box_dist(z, i, j, k, x) >= best)
+                    continue;
                 for (q = (size_t)z->start[c]; q < (size_t)z->start[c + 1]; q++) {
                     int32_t f = z->idx[q];
                     double v = z->l[f] + z->g * dist(x, z->cen + 3 * f);
