@@ -2280,7 +2280,7 @@ CVM_API cvm_status cvm_mesh_optimise_dual(cvm_mesh *m, const cvm_sizing *sizing)
  *    (size / 2^(k+1), size / 2^k] (edges a and 0.866 a);
  *  - every placed point lies strictly inside the domain (exact ray parity) and
  *    farther than its rejection distance from every earlier point (half its
- *    near-field offset; 0.5 * 1.1 * h(x) / sqrt 3 for a lattice point).
+ *    near-field offset; 0.55 h(x) for a lattice point, h(x) the size there).
  * Without TetGen (cvm_build_string()), placed points that keep a surface
  * triangle from being a Delaunay face are removed again, a few rounds
  * (CVM_MEASURE_GEN3_RECOVERY_DROPPED). Not in this version: more than one

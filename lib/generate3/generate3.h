@@ -114,8 +114,8 @@ cvm_status cvm__g3_near_field(cvm__ctx *ctx, const cvm__g3_surface *s, const cvm
 cvm_status cvm__g3_lattice(cvm__ctx *ctx, const cvm__g3_surface *s, const cvm__g3_size *z,
                            double h, const cvm__g3_inside *in, cvm__g3_points *P,
                            cvm__g3_report *rep);
-/* The rejection distance of a lattice point of size hs: half the near-field
- * offset of an equilateral surface triangle of edge hs, 0.5 * 1.1 hs / sqrt 3. */
+/* The rejection distance of a lattice point of size hs: 0.55 hs (chosen by
+ * measurement, see g3_lattice.c). */
 double cvm__g3_lattice_dm(double hs);
 
 /* ---- g3_recover.c ---- */
