@@ -3,8 +3,10 @@
 quality mesh (`-pq1.414a<V>`, V the mean tetrahedron volume of cvmesh's mesh,
 so both have about as many tetrahedra), on the same surfaces, in the same run.
 
-Rows: the unit cube at uniform size 1/8 and 1/16, and the sphere of radius
-0.5 in the box [-2, 2]^3 graded from its surface (size 0.5, grading 0.3).
+Rows: the unit cube (8 x 8 squares per face) at uniform size 1/8, and at
+1/16 (finer than its surface, which is used as given), the sphere of radius
+0.5 in the box [-2, 2]^3 and the swept NACA 0012 wing slab, both graded from
+their surfaces (size 0.5 and 1.0, grading 0.3).
 Both meshes are measured here by the same numpy code from their .node/.ele
 files: tetrahedra, % whose circumcentre lies outside them (all, and those
 with a face on the boundary; floating point, as CVM_MEASURE 704/705), the
@@ -25,6 +27,7 @@ CASES = [
     ("cube h=1/8", "cube.poly", ["--size", "0.125", "--uniform"]),
     ("cube h=1/16", "cube.poly", ["--size", "0.0625", "--uniform"]),
     ("sphere_in_box graded", "sphere_in_box.poly", ["--size", "0.5", "--grading", "0.3"]),
+    ("wing_slab graded", "wing_slab.poly", ["--size", "1.0", "--grading", "0.3"]),
 ]
 
 
