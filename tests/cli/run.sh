@@ -320,6 +320,16 @@ assert ((x > 0) & (x < 1)).all()
     fi
 fi
 expect_exit 0 "mesh3 a tetrahedron" "$CLI" mesh3 "$D3/tetra.off" --size 0.5 --uniform -o "$OUT/tetra.vtu"
+# the same bytes for any thread count
+for n in 1 2; do
+    expect_exit 0 "mesh3 with $n threads" env OMP_NUM_THREADS=$n "$CLI" mesh3 "$D3/tetra.off" --size 0.3 \
+        -o "$OUT/tetra_$n.node"
+done
+if cmp -s "$OUT/tetra_1.node" "$OUT/tetra_2.node" && cmp -s "$OUT/tetra_1.ele" "$OUT/tetra_2.ele"; then
+    pass
+else
+    fail "mesh3: other bytes with 2 threads"
+fi
 expect_exit 1 "mesh3 --freespace octree" "$CLI" mesh3 "$D3/tetra.off" --size 0.5 --freespace octree
 expect_one_line "mesh3 --freespace octree"
 expect_grep "mesh3 --freespace octree" "$TMP/err" "unsupported"
