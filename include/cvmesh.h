@@ -2306,9 +2306,11 @@ CVM_API cvm_status cvm_mesh_optimise_dual(cvm_mesh *m, const cvm_sizing *sizing)
  *         CVM_E_UNSUPPORTED       CVM_OPT_GEN3_LAYERS above 1, CVM_OPT_GEN3_FREESPACE other
  *                                 than the lattice, a surface with internal facets (an edge
  *                                 of other than two triangles; message names its points),
- *                                 or, without TetGen, a surface triangle that stays no
- *                                 Delaunay face (message names the face in the file's
- *                                 numbering)
+ *                                 or, without TetGen, a surface triangle that is no Delaunay
+ *                                 face of the surface's own points (as in
+ *                                 cvm_mesh_triangulate()) or stays none after generated
+ *                                 points near it are removed (message names the face in the
+ *                                 file's numbering)
  *         CVM_E_TOO_LARGE         size so small against the surface's extent that the
  *                                 lattice would pass 2^19 cells along an axis
  *         the surface's statuses of cvm_mesh_triangulate() (not closed, self-intersecting, ...)

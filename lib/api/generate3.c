@@ -92,7 +92,14 @@ cvm_status cvm_mesh_generate3(cvm_mesh *m, double size)
     p.layers = 1;
     s = cvm__g3_generate(&m->ctx, &surf, &p, !cvm__tetgen_available(),
                          (uint64_t)cvm__opt(m, CVM_OPT_SEED), &pts, &rep, &bad);
-    if (s == CVM_E_UNSUPPORTED && bad >= 0) {
+    if (s == CVM_E_UNSUPPORTED && bad >= 0 && rep.surface_not_delaunay) {
+        int32_t poly = st.tpoly[bad];
+        s = cvm__error(&m->ctx, CVM_E_UNSUPPORTED, CVM_ENT_FACET, (int64_t)g->in.pfacet[poly],
+                       "%s %ld of %s is not a face of the Delaunay tetrahedralisation of its "
+                       "points, and this build has no boundary recovery (build with TETGEN=1)",
+                       g->in.facet_word, (long)(g->in.pfacet[poly] + g->in.facet_base),
+                       g->in.file ? g->in.file : "the input");
+    } else if (s == CVM_E_UNSUPPORTED && bad >= 0) {
         int32_t poly = st.tpoly[bad];
         s = cvm__error(&m->ctx, CVM_E_UNSUPPORTED, CVM_ENT_FACET, (int64_t)g->in.pfacet[poly],
                        "%s %ld of %s stays off the Delaunay tetrahedralisation of the surface "

@@ -54,6 +54,15 @@ cvm_status cvm__g3_generate(cvm__ctx *ctx, const cvm__g3_surface *s, const cvm__
         st = cvm__g3_inside_create(&in, ctx, s);
     if (!st)
         st = cvm__g3_near_field(ctx, s, in, &P, rep);
+    /* without boundary recovery, a surface whose own points miss one of its
+     * triangles cannot be helped by removing generated points: say so (the
+     * check sees the surface's points only, and changes nothing) */
+    if (!st && check_faces) {
+        cvm__g3_points Q = P;
+        Q.n = s->np;
+        if ((st = cvm__g3_recover(ctx, s, &Q, seed, rep, bad_face)) == CVM_E_UNSUPPORTED)
+            rep->surface_not_delaunay = 1;
+    }
     if (!st)
         st = cvm__g3_lattice(ctx, s, z, p->h, in, &P, rep);
     if (!st && check_faces)

@@ -60,6 +60,7 @@ typedef struct cvm__g3_report {
     size_t lattice_levels;  /* lattice levels that contributed a point */
     size_t recovery_dropped; /* generated points removed so that every surface triangle is
                                 a face of the Delaunay tetrahedralisation */
+    int surface_not_delaunay; /* check_faces: the surface's own points already miss a triangle */
 } cvm__g3_report;
 
 /* ---- g3_sizing.c ---- */
