@@ -109,7 +109,7 @@ FUZZ_TARGETS := poly_read node_read cdt vtu_read vtk_read msh_read refine optimi
 # target leaves this list while its fixed-seed run reaches one of its open
 # findings (tests/fuzz/open/<target>/): it would fail on those known inputs
 # (vtk_read, and refine since its fixed-seed run found unmet_angle_24_degrees_on_success).
-FUZZ_CHECK_TARGETS := poly_read node_read cdt vtu_read msh_read optimise off_read stl_read tetpoly_read
+FUZZ_CHECK_TARGETS := poly_read node_read cdt vtu_read msh_read optimise off_read stl_read tetpoly_read generate3
 FUZZ_BINS := $(FUZZ_TARGETS:%=$(BUILD)/fuzz/fuzz_%)
 REPLAY_BINS := $(FUZZ_TARGETS:%=$(BUILD)/fuzz/replay_%)
 FUZZ_SUPPORT_OBJ := $(BUILD)/obj/tests/fuzz/mesh_oracle.o $(BUILD)/obj/tests/fuzz/fuzz_input.o \
