@@ -2312,7 +2312,9 @@ CVM_API cvm_status cvm_mesh_optimise_dual(cvm_mesh *m, const cvm_sizing *sizing)
  *                                 points near it are removed (message names the face in the
  *                                 file's numbering)
  *         CVM_E_TOO_LARGE         size so small against the surface's extent that the
- *                                 lattice would pass 2^19 cells along an axis
+ *                                 lattice would pass 2^19 cells along an axis or about
+ *                                 240,000,000 candidates, or the points would pass the 3D
+ *                                 limit of 60,000,000 (message gives the numbers)
  *         the surface's statuses of cvm_mesh_triangulate() (not closed, self-intersecting, ...)
  *         CVM_E_NOMEM             (the handle keeps its input; the output is dropped)
  *         CVM_INCOMPLETE_TIME_LIMIT, CVM_INCOMPLETE_CANCELLED (as cvm_mesh_triangulate())

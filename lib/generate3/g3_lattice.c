@@ -15,6 +15,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "delaunay3/delaunay3_internal.h"
 #include "generate3/generate3.h"
 
 #define MAX_LEVELS 24
@@ -100,6 +101,10 @@ static cvm_status candidate(lat_ctx *L, int64_t i, int64_t j, int64_t k, int sub
     dm = cvm__g3_lattice_dm(hs);
     if (cvm__g3_grid_near(L->grid, L->P->xyz, x, dm) || !cvm__g3_is_inside(L->in, x))
         return CVM_OK;
+    if (L->P->n >= CVM__T3_MAX_POINTS)
+        return cvm__error(L->ctx, CVM_E_TOO_LARGE, CVM_ENT_NONE, -1,
+                          "the lattice passes the 3D limit of %lu points: use a larger size or "
+                          "grading", (unsigned long)CVM__T3_MAX_POINTS);
     L->kept++;
     if (cvm__g3_points_push(L->ctx, L->P, x, dm))
         return CVM_E_NOMEM;
@@ -178,6 +183,18 @@ cvm_status cvm__g3_lattice(cvm__ctx *ctx, const cvm__g3_surface *s, const cvm__g
                           "size %.17g is too small for the surface's extent %.17g (more than "
                           "2^%d lattice cells along an axis)",
                           h, ext, AXIS_BITS - 1);
+    {
+        /* the coarsest level alone visits 2 (extent / h)^3 candidates */
+        double cand = 2;
+        for (ax = 0; ax < 3; ax++)
+            cand *= (hi[ax] - L.lo[ax]) / h + 1;
+        if (cand > 4.0 * (double)CVM__T3_MAX_POINTS)
+            return cvm__error(ctx, CVM_E_TOO_LARGE, CVM_ENT_NONE, -1,
+                              "size %.17g is too small for the surface's bounding box: its "
+                              "lattice has %.3g candidate points, above the 3D limit of %lu "
+                              "points",
+                              h, cand, (unsigned long)CVM__T3_MAX_POINTS);
+    }
     for (lv = 0; lv < levels && !st; lv++) {
         int64_t n[3], i, j, k;
         int sub;

@@ -34,6 +34,9 @@ START_TEST(bad_sizes_name_the_size)
     ck_assert_int_eq(cvm_mesh_generate3(NULL, 1), CVM_E_NULL_ARG);
     /* 1e-300 against an extent of 2: more lattice cells than an axis can index */
     ck_assert_int_eq(cvm_mesh_generate3(m, 1e-300), CVM_E_TOO_LARGE);
+    /* 1e-3: 1.6e10 lattice candidates, refused before any is visited */
+    ck_assert_int_eq(cvm_mesh_generate3(m, 1e-3), CVM_E_TOO_LARGE);
+    ck_assert_ptr_nonnull(strstr(cvm_mesh_errmsg(m), "limit"));
     cvm_mesh_free(m);
 }
 END_TEST
