@@ -3,7 +3,7 @@
 # stay small enough to read:
 #  1. a file under lib/ includes only its own folder and the layers below it:
 #       common <- geom <- delaunay <- sizing <- {boundary, refine, dual};  geom <- delaunay3;
-#       common <- geom <- surface3 (3D surface checks);  common <- geom <- tetgen (TetGen shim, C++);
+#       common <- geom <- surface3 (3D surface checks);  quad, delaunay3 <- generate3;  common <- geom <- tetgen (TetGen shim, C++);
 #       io <- common;
 #       api sees every engine (not cli);  cli sees only include/ (and itself).
 #     The public headers (include/cvmesh*.h) are open to every layer.
@@ -32,7 +32,8 @@ allowed() {
     surface3) echo "common geom" ;;
     tetgen) echo "common geom" ;;
     quad) echo "common geom delaunay sizing refine" ;;
-    api) echo "common geom delaunay delaunay3 sizing boundary surface3 tetgen refine dual io" ;;
+    generate3) echo "common geom delaunay delaunay3 sizing refine quad" ;;
+    api) echo "common geom delaunay delaunay3 sizing boundary surface3 tetgen refine dual io generate3" ;;
     cli) echo "" ;;
     *) echo "?" ;;
     esac

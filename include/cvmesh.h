@@ -850,12 +850,34 @@ typedef enum cvm_option {
      *  [0, 2]. The arrays, names and order are the same in every encoding; VTK,
      *  ParaView, meshio and cvm_mesh_read() read all three. Other formats and the
      *  dual (cvm_mesh_write_dual()) ignore it. @since 0.2 */
-    CVM_OPT_VTU_ENCODING = 604
+    CVM_OPT_VTU_ENCODING = 604,
 
     /* ---- 700-799: reserved for the 3D kernel ---- */
+    /** 3D mesh generation (cvm_mesh_generate3()), 740-749. Boundary grading g: the size
+     *  near the surface is each surface triangle's mean edge length l and grows away from
+     *  it as l + g * distance, capped by the size given to cvm_mesh_generate3(). Default
+     *  0.3, bounds [0.01, 100]. Ignored when CVM_OPT_GEN3_SIZE_FROM_SURFACE is 0. @since 0.2 */
+    CVM_OPT_GEN3_GRADING = 740,
+    /** Near-field layers of the advancing front. Default 1, integer, bounds [1, 16]; only
+     *  1 is implemented in this version (more: CVM_E_UNSUPPORTED). @since 0.2 */
+    CVM_OPT_GEN3_LAYERS = 741,
+    /** Free-space method: CVM_GEN3_FREESPACE_LATTICE (0, default: BCC lattice),
+     *  CVM_GEN3_FREESPACE_OCTREE (1) or CVM_GEN3_FREESPACE_REFINE (2). Integer, bounds
+     *  [0, 2]; only 0 is implemented in this version (others: CVM_E_UNSUPPORTED). @since 0.2 */
+    CVM_OPT_GEN3_FREESPACE = 742,
+    /** 1 (default): the size follows the surface's own triangles (see
+     *  CVM_OPT_GEN3_GRADING); 0: the size is uniform. Integer, bounds [0, 1]. @since 0.2 */
+    CVM_OPT_GEN3_SIZE_FROM_SURFACE = 743
     /* ---- 800-899: reserved for quad-dominant meshing ---- */
     /* ---- 1000 and up: experimental (include/cvmesh_experimental.h) ---- */
 } cvm_option;
+
+/** Values of CVM_OPT_GEN3_FREESPACE. */
+typedef enum cvm_gen3_freespace {
+    CVM_GEN3_FREESPACE_LATTICE = 0, /**< body-centred cubic lattice (implemented) */
+    CVM_GEN3_FREESPACE_OCTREE = 1,  /**< reserved: 2:1-balanced octree */
+    CVM_GEN3_FREESPACE_REFINE = 2   /**< reserved: Delaunay refinement */
+} cvm_gen3_freespace;
 
 /** Values of CVM_OPT_VTU_ENCODING. */
 typedef enum cvm_vtu_encoding {
@@ -2338,6 +2360,67 @@ CVM_API cvm_status cvm_mesh_copy_dual_merge_groups(cvm_index *dst, size_t dst_le
  */
 CVM_API cvm_status cvm_mesh_optimise_dual(cvm_mesh *m, const cvm_sizing *sizing);
 
+/**
+ * Generate a tetrahedral co-volume mesh inside the closed surface of @p m
+ * (cvm_mesh_read() of .off/.stl/.poly/.smesh): points are placed, then
+ * tetrahedralised with the surface as cvm_mesh_triangulate() does (hole points
+ * emptied, regions' attributes kept). Walton, Hassan and Morgan's pipeline:
+ *  - size: @p size everywhere (CVM_OPT_GEN3_SIZE_FROM_SURFACE 0), or by default
+ *    min(size, l + g * distance) from each surface triangle (mean edge l,
+ *    g = CVM_OPT_GEN3_GRADING); the surface itself is used as given;
+ *  - near field: surface triangles paired across edges by a maximum-cardinality
+ *    matching; a pair ABC/BDC gets x = (c1 + c2 + delta (n1 + n2)) / 2, delta =
+ *    1.1 max(R1, R2) (circumcentres, inward normals, circumradii); an unmatched
+ *    triangle c + 1.1 R n; pairs whose well-centred regions may not meet are
+ *    dropped first (a sufficient test: the edge is not reflex and x lies on the
+ *    inner side of, and outside the diametral sphere of, both triangles);
+ *  - free space: a body-centred cubic lattice, axis-aligned from the surface's
+ *    bounding-box corner, cube edge size / 2^k where the size falls in
+ *    (size / 2^(k+1), size / 2^k] (edges a and 0.866 a);
+ *  - every placed point lies strictly inside the domain (exact ray parity) and
+ *    farther than its rejection distance from every earlier point (half its
+ *    near-field offset; 0.55 h(x) for a lattice point, h(x) the size there).
+ * Without TetGen (cvm_build_string()), placed points that keep a surface
+ * triangle from being a Delaunay face are removed again, a few rounds
+ * (CVM_MEASURE_GEN3_RECOVERY_DROPPED). Not in this version: more than one
+ * near-field layer, octree or refinement free space, a lattice grown in a local
+ * frame, optimisation and merging, internal facets between regions.
+ * The report of the run: CVM_REPORT_GEN3_* (cvm_mesh_get_report()); the mesh's
+ * measures as after cvm_mesh_triangulate(). Vertices: the surface's points,
+ * then the near-field points, then the lattice points.
+ *
+ * @param m     mesh handle holding a closed 3D surface; not NULL.
+ * @param size  largest size (length unit of the coordinates), positive and finite.
+ * Ownership:    the input is kept unchanged (a later cvm_mesh_triangulate() meshes the
+ *               surface alone); the generated mesh replaces the previous output.
+ * Thread-safety: one call at a time on @p m. The result does not depend on the seed or
+ *               on the number of threads.
+ * Stops:        the time limit and progress callback act in the tetrahedralisation only,
+ *               as in cvm_mesh_triangulate() (a stop leaves the mesh empty).
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG
+ *         CVM_E_INPUT_NONFINITE   size is NaN or infinite (message gives it)
+ *         CVM_E_ARGUMENT          size is zero or negative (message gives it)
+ *         CVM_E_STATE             the handle holds no 3D surface (2D input, or a 3D point set)
+ *         CVM_E_UNSUPPORTED       CVM_OPT_GEN3_LAYERS above 1, CVM_OPT_GEN3_FREESPACE other
+ *                                 than the lattice, a surface with internal facets (an edge
+ *                                 of other than two triangles; message names its points),
+ *                                 or, without TetGen, a surface triangle that is no Delaunay
+ *                                 face of the surface's own points (as in
+ *                                 cvm_mesh_triangulate()) or stays none after generated
+ *                                 points near it are removed (message names the face in the
+ *                                 file's numbering)
+ *         CVM_E_TOO_LARGE         size so small against the surface's extent that the
+ *                                 lattice would pass 2^19 cells along an axis or about
+ *                                 240,000,000 candidates, or the points would pass the 3D
+ *                                 limit of 60,000,000 (message gives the numbers)
+ *         the surface's statuses of cvm_mesh_triangulate() (not closed, self-intersecting, ...)
+ *         CVM_E_NOMEM             (the handle keeps its input; the output is dropped)
+ *         CVM_INCOMPLETE_TIME_LIMIT, CVM_INCOMPLETE_CANCELLED (as cvm_mesh_triangulate())
+ * @since 0.2
+ */
+CVM_API cvm_status cvm_mesh_generate3(cvm_mesh *m, double size);
+
 /* ------------------------------------------------------------------------ */
 /* Quality                                                                   */
 /* ------------------------------------------------------------------------ */
@@ -2470,8 +2553,22 @@ typedef enum cvm_measure {
     CVM_MEASURE_MEAN_RADIUS_EDGE = 723, /**< mean circumradius / shortest edge over the
                                              tetrahedra (CVM_MEASURE_MAX_RADIUS_EDGE is the
                                              largest) */
-    CVM_MEASURE_MIN_DUAL_EDGE_3D = 724  /**< smallest dual edge length over interior faces
+    CVM_MEASURE_MIN_DUAL_EDGE_3D = 724, /**< smallest dual edge length over interior faces
                                              (length units; 0 without any) */
+    /* 740-769: the report of the last cvm_mesh_generate3() (0 before any) */
+    CVM_MEASURE_GEN3_MATCHED_PAIRS = 740,   /**< pairs of surface triangles matched */
+    CVM_MEASURE_GEN3_UNMATCHED_FACES = 741, /**< surface triangles left unmatched */
+    CVM_MEASURE_GEN3_PAIRS_REJECTED = 742,  /**< adjacent pairs dropped before the matching
+                                                 (their well-centred regions may not meet) */
+    CVM_MEASURE_GEN3_NEAR_POINTS = 743,     /**< near-field points placed */
+    CVM_MEASURE_GEN3_NEAR_REJECTED = 744,   /**< near-field points not placed (outside the
+                                                 domain, or too close to a point) */
+    CVM_MEASURE_GEN3_LATTICE_POINTS = 745,  /**< free-space lattice points placed */
+    CVM_MEASURE_GEN3_LATTICE_LEVELS = 746,  /**< lattice levels (sizes h / 2^k) that placed a point */
+    CVM_MEASURE_GEN3_RECOVERY_DROPPED = 747, /**< placed points removed again so that every
+                                                 surface triangle is a Delaunay face (builds
+                                                 without TetGen; 0 with it) */
+    CVM_MEASURE_GEN3_SECONDS = 748          /**< wall time of the run, seconds (not deterministic) */
 } cvm_measure;
 
 /**
@@ -2566,7 +2663,17 @@ typedef enum cvm_report {
     CVM_REPORT_DUAL_OPT_REMOVED_DEGREE = 48,  /**< = CVM_MEASURE_DUAL_OPT_REMOVED_DEGREE */
     CVM_REPORT_DUAL_OPT_REMOVED_MAXMIN = 49,  /**< = CVM_MEASURE_DUAL_OPT_REMOVED_MAXMIN */
     /* the last cvm_mesh_read() of a mesh file (0 before any, and after cvm_mesh_triangulate()) */
-    CVM_REPORT_READ_FLIPS = 60                /**< = CVM_MEASURE_READ_FLIPS */
+    CVM_REPORT_READ_FLIPS = 60,               /**< = CVM_MEASURE_READ_FLIPS */
+    /* the last cvm_mesh_generate3() (0 before any) */
+    CVM_REPORT_GEN3_MATCHED_PAIRS = 740,      /**< = CVM_MEASURE_GEN3_MATCHED_PAIRS */
+    CVM_REPORT_GEN3_UNMATCHED_FACES = 741,    /**< = CVM_MEASURE_GEN3_UNMATCHED_FACES */
+    CVM_REPORT_GEN3_PAIRS_REJECTED = 742,     /**< = CVM_MEASURE_GEN3_PAIRS_REJECTED */
+    CVM_REPORT_GEN3_NEAR_POINTS = 743,        /**< = CVM_MEASURE_GEN3_NEAR_POINTS */
+    CVM_REPORT_GEN3_NEAR_REJECTED = 744,      /**< = CVM_MEASURE_GEN3_NEAR_REJECTED */
+    CVM_REPORT_GEN3_LATTICE_POINTS = 745,     /**< = CVM_MEASURE_GEN3_LATTICE_POINTS */
+    CVM_REPORT_GEN3_LATTICE_LEVELS = 746,     /**< = CVM_MEASURE_GEN3_LATTICE_LEVELS */
+    CVM_REPORT_GEN3_RECOVERY_DROPPED = 747,   /**< = CVM_MEASURE_GEN3_RECOVERY_DROPPED */
+    CVM_REPORT_GEN3_SECONDS = 748             /**< = CVM_MEASURE_GEN3_SECONDS */
 } cvm_report;
 
 /**

@@ -36,6 +36,9 @@ cvm_status cvm__mesh3_copy_cells(cvm_index *dst, size_t dst_len, const cvm_mesh 
 cvm_status cvm__mesh3_copy_dual_vertices(double *dst, size_t dst_len, const cvm_mesh *m);
 /* The bounded dual cells as a .vtu of polyhedra into ws (message set on error). */
 cvm_status cvm__mesh3_write_dual_to_set(cvm_mesh *m, const char *path, cvm__write_set *ws);
+/* The report of the last cvm_mesh_generate3() (lib/api/generate3.c): CVM_OK, or
+ * CVM_E_ARGUMENT when which is not a CVM_REPORT_GEN3_* value. No message. */
+cvm_status cvm__mesh3_gen3_report(double *out, const cvm_mesh *m, int which);
 /* The message of a 2D-only call made on a 3D handle: CVM_E_UNSUPPORTED. */
 cvm_status cvm__mesh3_unsupported(cvm_mesh *m, const char *call);
 

@@ -8,6 +8,8 @@
 #include "common/surf3.h"
 #include "delaunay3/delaunay3_internal.h"
 
+#define CVM__GEN3_NREPORT 9
+
 struct cvm__mesh3 {
     cvm__surf3 in;           /* the input: points, and facets when a surface was read */
     /* output (valid when have) */
@@ -24,6 +26,8 @@ struct cvm__mesh3 {
     int32_t *input_map;      /* in.np: input point -> vertex */
     double *w;               /* nv weights (regular), or NULL */
     size_t n_dup, n_redundant, n_steiner_boundary, n_steiner_interior;
+    double gen3[CVM__GEN3_NREPORT]; /* report of the last cvm_mesh_generate3(): value
+                                       CVM_REPORT_GEN3_MATCHED_PAIRS + k at k */
 };
 
 /* Face adjacency of a tetrahedron list: nbr[4 t + f] = 4 u + g when face f of

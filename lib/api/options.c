@@ -50,6 +50,10 @@ static const option_def k_options[] = {
     {CVM_OPT_SVG_WINDOW_XMAX, "SVG_WINDOW_XMAX", {-1e300, 1e300, 0, 0}},
     {CVM_OPT_SVG_WINDOW_YMAX, "SVG_WINDOW_YMAX", {-1e300, 1e300, 0, 0}},
     {CVM_OPT_VTU_ENCODING, "VTU_ENCODING", {0, 2, 0, 1}},
+    {CVM_OPT_GEN3_GRADING, "GEN3_GRADING", {0.01, 100, 0.3, 0}},
+    {CVM_OPT_GEN3_LAYERS, "GEN3_LAYERS", {1, 16, 1, 1}},
+    {CVM_OPT_GEN3_FREESPACE, "GEN3_FREESPACE", {0, 2, 0, 1}},
+    {CVM_OPT_GEN3_SIZE_FROM_SURFACE, "GEN3_SIZE_FROM_SURFACE", {0, 1, 1, 1}},
 };
 
 #define NOPT (sizeof k_options / sizeof k_options[0])

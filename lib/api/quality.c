@@ -80,6 +80,8 @@ cvm_status cvm_mesh_get_measure(double *out, cvm_mesh *m, cvm_measure which)
         return (s = need_triangles(m)) ? s : cvm__optimise_measure(out, m, which);
     if (cvm__optimise_measure(out, m, which) == CVM_OK)
         return CVM_OK; /* the report of the last dual optimisation (lib/api/optimise.c) */
+    if (cvm__mesh3_gen3_report(out, m, (int)which) == CVM_OK)
+        return CVM_OK; /* 3D generation's report: 0 on a 2D handle */
     if ((int)which >= (int)CVM_MEASURE_DUAL_OUTSIDE_PCT &&
         (int)which <= (int)CVM_MEASURE_VANISHED_VERTICES)
         return (s = need_triangles(m)) ? s : cvm__dual_measure(out, m, which); /* lib/api/dual.c */

@@ -14,17 +14,23 @@
 #define REF CLI_CMD_REFINE
 #define OPT CLI_CMD_OPTIMISE
 #define TET CLI_CMD_TETRAHEDRALIZE
+#define M3 CLI_CMD_MESH3
 
 static const cli_option_flag k_flags[] = {
+    {"--grading", "G", CVM_OPT_GEN3_GRADING, 0, M3,
+     "size near the surface grows as l + G x distance from its triangles (default 0.3)"},
+    {"--layers", "N", CVM_OPT_GEN3_LAYERS, 0, M3, "near-field layers (default 1; only 1 so far)"},
+    {"--uniform", NULL, CVM_OPT_GEN3_SIZE_FROM_SURFACE, 0, M3,
+     "uniform size H everywhere instead of following the surface's triangles"},
     {"--keep-hull", NULL, CVM_OPT_KEEP_CONVEX_HULL, 1, TRI | REF | OPT,
      "keep every triangle of the convex hull (holes are still removed)"},
     {"--no-split-intersections", NULL, CVM_OPT_SPLIT_INTERSECTIONS, 0, TRI | REF | OPT,
      "fail on crossing segments instead of splitting them"},
-    {"--reject-duplicates", NULL, CVM_OPT_REJECT_DUPLICATES, 1, TRI | REF | OPT | TET,
+    {"--reject-duplicates", NULL, CVM_OPT_REJECT_DUPLICATES, 1, TRI | REF | OPT | TET | M3,
      "fail on duplicate points instead of merging them"},
-    {"--seed", "S", CVM_OPT_SEED, 0, TRI | REF | OPT | TET, "seed of the random insertion order"},
-    {"--threads", "N", CVM_OPT_THREADS, 0, TRI | REF | OPT | TET, "threads for parallel stages (0: OpenMP default; only optimise is parallel in 0.1)"},
-    {"--time-limit", "SECONDS", CVM_OPT_TIME_LIMIT_S, 0, TRI | REF | OPT | TET, "stop the whole command after this time (0: none)"},
+    {"--seed", "S", CVM_OPT_SEED, 0, TRI | REF | OPT | TET | M3, "seed of the random insertion order"},
+    {"--threads", "N", CVM_OPT_THREADS, 0, TRI | REF | OPT | TET | M3, "threads for parallel stages (0: OpenMP default; only optimise is parallel in 0.1)"},
+    {"--time-limit", "SECONDS", CVM_OPT_TIME_LIMIT_S, 0, TRI | REF | OPT | TET | M3, "stop the whole command after this time (0: none)"},
     {"--min-angle", "DEG", CVM_OPT_MIN_ANGLE_DEG, 0, REF | OPT, "smallest angle wanted (default 30)"},
     {"--max-area", "A", CVM_OPT_MAX_AREA, 0, REF | OPT, "largest triangle area (0 or negative: none, as in a .poly region)"},
     {"--max-steiner", "N", CVM_OPT_MAX_STEINER, 0, REF | OPT, "stop after adding N points (0: no limit)"},

@@ -22,6 +22,8 @@ static const cli_command k_commands[] = {
      cli_optimise, cli_optimise_help},
     {"tetrahedralize", "Delaunay tetrahedralisation of 3D points, or the tetrahedral mesh of a closed surface",
      cli_tetrahedralize, cli_tetrahedralize_help},
+    {"mesh3", "co-volume tetrahedral mesh inside a closed surface: near field + BCC lattice",
+     cli_mesh3, cli_mesh3_help},
 };
 
 #define NCOMMANDS (sizeof k_commands / sizeof k_commands[0])

@@ -16,6 +16,7 @@ $CC -std=c99 -O2 -Iinclude -Ilib -D_POSIX_C_SOURCE=200809L -o "$BUILD/bench/benc
 CXX=${CXX:-c++}
 if [ -f /usr/include/tetgen.h ] && command -v "$CXX" >/dev/null 2>&1; then
     "$CXX" -O2 -o "$BUILD/bench/bench_tetgen3" tests/bench/bench_tetgen3.cxx -ltet
+    "$CXX" -O2 -o "$BUILD/bench/bench_tetgen_quality" tests/bench/bench_tetgen_quality.cxx -ltet
 else
     echo "# run.sh: no tetgen.h or C++ compiler: bench_delaunay3.py runs without TetGen"
 fi
@@ -47,7 +48,7 @@ if command -v dpkg-query >/dev/null 2>&1; then
     fi
 fi
 OMP_NUM_THREADS=1 "$VENV/bin/python" tests/bench/bench_delaunay.py "$BUILD" "$DOMAINS"
-for extra in tests/bench/bench_refine.py tests/bench/bench_dual.py tests/bench/bench_delaunay3.py tests/bench/bench_matching.py; do
+for extra in tests/bench/bench_refine.py tests/bench/bench_dual.py tests/bench/bench_delaunay3.py tests/bench/bench_matching.py tests/bench/bench_generate3.py; do
     if [ -f "$extra" ]; then
         OMP_NUM_THREADS=1 "$VENV/bin/python" "$extra" "$BUILD" "$DOMAINS"
     fi

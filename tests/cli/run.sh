@@ -287,6 +287,66 @@ expect_one_line "tetrahedralize a 2D input"
 expect_exit 2 "tetrahedralize to .svg" "$CLI" tetrahedralize "$D3/cube.off" -o "$OUT/c.svg"
 expect_exit 1 "tetrahedralize a missing file" "$CLI" tetrahedralize "$OUT/none.off"
 
+# ---- mesh3: co-volume generation inside a closed surface --------------------------
+OUT=$TMP/mesh3
+mkdir "$OUT"
+expect_exit 0 "mesh3 --help" "$CLI" mesh3 --help
+expect_grep "mesh3 --help" "$TMP/out" "--grading G"
+if "$CLI" --version | grep -q "TetGen 1.5"; then
+    # the cube's faces are cocircular squares: recovered by TetGen only
+    expect_exit 0 "mesh3 a cube" "$CLI" mesh3 "$D3/cube.off" --size 0.25 --uniform -o "$OUT/cube.vtu" \
+        --quality --timings
+    for want in "matched face pairs           384" "unmatched faces              0" \
+                "volume                       1" "boundary faces               768" "generate: "; do
+        expect_grep "mesh3 --quality" "$TMP/out" "$want"
+    done
+    expect_exit 0 "mesh3 a cube to .node" "$CLI" mesh3 "$D3/cube.off" --size 0.25 -o "$OUT/cube.node"
+    for f in cube.node cube.ele cube.face; do
+        if [ -s "$OUT/$f" ]; then pass; else fail "mesh3 .node: $f missing"; fi
+    done
+    if [ "$HAVE_NUMPY" -eq 1 ] && "$PY" -c '
+import sys, meshio, numpy as np
+m = meshio.read(sys.argv[1])
+t = np.vstack([c.data for c in m.cells if c.type == "tetra"])
+p = m.points[t]
+v = np.einsum("ij,ij->i", p[:, 0] - p[:, 3], np.cross(p[:, 1] - p[:, 3], p[:, 2] - p[:, 3])) / 6
+assert (v > 0).all()
+assert abs(v.sum() - 1.0) < 1e-12, v.sum()
+inner = np.ones(len(m.points), bool)
+inner[:386] = False
+x = m.points[inner]
+assert ((x > 0) & (x < 1)).all()
+' "$OUT/cube.vtu" > "$OUT/meshio.log" 2>&1; then pass; else
+        [ "$HAVE_NUMPY" -eq 1 ] && fail "mesh3 cube with meshio: $(tail -c 300 "$OUT/meshio.log")"
+    fi
+fi
+expect_exit 0 "mesh3 a tetrahedron" "$CLI" mesh3 "$D3/tetra.off" --size 0.5 --uniform -o "$OUT/tetra.vtu"
+# the same bytes for any thread count
+for n in 1 2; do
+    expect_exit 0 "mesh3 with $n threads" env OMP_NUM_THREADS=$n "$CLI" mesh3 "$D3/tetra.off" --size 0.3 \
+        -o "$OUT/tetra_$n.node"
+done
+if cmp -s "$OUT/tetra_1.node" "$OUT/tetra_2.node" && cmp -s "$OUT/tetra_1.ele" "$OUT/tetra_2.ele"; then
+    pass
+else
+    fail "mesh3: other bytes with 2 threads"
+fi
+expect_exit 1 "mesh3 --freespace octree" "$CLI" mesh3 "$D3/tetra.off" --size 0.5 --freespace octree
+expect_one_line "mesh3 --freespace octree"
+expect_grep "mesh3 --freespace octree" "$TMP/err" "unsupported"
+expect_exit 1 "mesh3 --optimise" "$CLI" mesh3 "$D3/tetra.off" --size 0.5 --optimise -o "$OUT/o.vtu"
+expect_grep "mesh3 --optimise" "$TMP/err" "unsupported"
+if [ ! -e "$OUT/o.vtu" ]; then pass; else fail "mesh3 --optimise wrote a file"; fi
+expect_exit 1 "mesh3 --layers 2" "$CLI" mesh3 "$D3/tetra.off" --size 0.5 --layers 2
+expect_grep "mesh3 --layers 2" "$TMP/err" "unsupported"
+expect_exit 2 "mesh3 without --size" "$CLI" mesh3 "$D3/tetra.off"
+expect_exit 2 "mesh3 --size 0" "$CLI" mesh3 "$D3/tetra.off" --size 0
+expect_exit 2 "mesh3 --freespace bogus" "$CLI" mesh3 "$D3/tetra.off" --size 1 --freespace bogus
+expect_exit 1 "mesh3 a 2D input" "$CLI" mesh3 "$DOMAINS/square.poly" --size 1
+expect_one_line "mesh3 a 2D input"
+expect_exit 1 "mesh3 two regions" "$CLI" mesh3 "$D3/two_cubes.poly" --size 0.5
+expect_grep "mesh3 two regions" "$TMP/err" "unsupported"
+
 # ---- optimise: the power dual -------------------------------------------------
 OUT=$TMP/optimise
 mkdir "$OUT"

@@ -107,7 +107,7 @@ def test_top_readme_command_line_runs(index, tmp_path):
         elif flag == "--dual":                      # one power cell per vertex of the mesh
             cells = re.search(r'NumberOfCells="(\d+)"', path.read_text())
             assert nverts is not None and cells and int(cells.group(1)) == nverts
-        elif name.endswith(".vtu") and argv[1] == "tetrahedralize":
+        elif name.endswith(".vtu") and argv[1] in ("tetrahedralize", "mesh3"):
             text = path.read_text()                 # a tetrahedral mesh: VTK_TETRA cells only
             cells = re.search(r'NumberOfCells="(\d+)"', text)
             assert cells and int(cells.group(1)) > 0

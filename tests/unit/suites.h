@@ -13,6 +13,7 @@ Suite *dual_suite(void);     /* tests/unit/dual/suite.c */
 Suite *surface3_suite(void); /* tests/unit/surface3/suite.c */
 Suite *quad_recombine_suite(void); /* tests/unit/quad/suite_recombine.c */
 Suite *quad_suite(void);     /* tests/unit/quad/suite.c */
+Suite *generate3_suite(void); /* tests/unit/generate3/suite.c */
 Suite *support_suite(void);  /* tests/unit/support/test_support.c: the test helpers themselves */
 
 #endif

@@ -1,0 +1,128 @@
+/*
+ * generate3.c - cvm_mesh_generate3(): check the call, let lib/generate3 place
+ * the points inside the handle's surface, and tetrahedralise surface and
+ * points through the kernel path of cvm_mesh_triangulate() (TetGen recovery,
+ * or Delaunay + carve), the generated points appended to the input for that
+ * one call only.
+ */
+#include <math.h>
+#include <string.h>
+
+#include "api/mesh3_internal.h"
+#include "generate3/generate3.h"
+#include "surface3/surface3_internal.h"
+#include "tetgen/tetgen_shim.h"
+
+cvm_status cvm__mesh3_gen3_report(double *out, const cvm_mesh *m, int which)
+{
+    int k = which - (int)CVM_REPORT_GEN3_MATCHED_PAIRS;
+    if (k < 0 || k >= CVM__GEN3_NREPORT)
+        return CVM_E_ARGUMENT;
+    *out = m->m3 ? m->m3->gen3[k] : 0;
+    return CVM_OK;
+}
+
+static cvm_status check_call(cvm_mesh *m, double size)
+{
+    double layers = cvm__opt(m, CVM_OPT_GEN3_LAYERS), fs = cvm__opt(m, CVM_OPT_GEN3_FREESPACE);
+    if (isnan(size) || isinf(size))
+        return cvm__error(&m->ctx, CVM_E_INPUT_NONFINITE, CVM_ENT_NONE, -1,
+                          "size %g is not finite", size);
+    if (!(size > 0))
+        return cvm__error(&m->ctx, CVM_E_ARGUMENT, CVM_ENT_NONE, -1,
+                          "size %.17g must be positive", size);
+    if (!m->m3 || m->m3->in.npoly == 0)
+        return cvm__error(&m->ctx, CVM_E_STATE, CVM_ENT_NONE, -1,
+                          "mesh generation needs a closed 3D surface: read one with "
+                          "cvm_mesh_read() (.off, .stl, .poly, .smesh)");
+    if (layers != 1)
+        return cvm__error(&m->ctx, CVM_E_UNSUPPORTED, CVM_ENT_OPTION, CVM_OPT_GEN3_LAYERS,
+                          "CVM_OPT_GEN3_LAYERS = %g is unsupported: only one near-field layer is implemented "
+                          "in this version", layers);
+    if (fs != CVM_GEN3_FREESPACE_LATTICE)
+        return cvm__error(&m->ctx, CVM_E_UNSUPPORTED, CVM_ENT_OPTION, CVM_OPT_GEN3_FREESPACE,
+                          "CVM_OPT_GEN3_FREESPACE = %g (%s) is unsupported: only the lattice (0) is implemented "
+                          "in this version", fs, fs == CVM_GEN3_FREESPACE_OCTREE ? "octree"
+                                                                                  : "refine");
+    return CVM_OK;
+}
+
+/* Tetrahedralise the surface with the n points xyz appended to its input. */
+static cvm_status tetrahedralise_with(cvm_mesh *m, const double *xyz, size_t n)
+{
+    cvm__surf3 *in = &m->m3->in;
+    size_t np = in->np, i;
+    cvm_status s = CVM_OK;
+    for (i = 0; i < n && !s; i++)
+        s = cvm__surf3_add_point(&m->ctx, in, xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]);
+    if (!s)
+        s = cvm__mesh3_triangulate(m);
+    in->np = np; /* the input is the surface alone again; its array keeps the room */
+    return s;
+}
+
+cvm_status cvm_mesh_generate3(cvm_mesh *m, double size)
+{
+    cvm__mesh3 *g;
+    cvm__surf3_tris st;
+    cvm__g3_surface surf;
+    cvm__g3_params p;
+    cvm__g3_points pts;
+    cvm__g3_report rep;
+    int64_t bad = -1;
+    double t0 = cvm__now();
+    cvm_status s;
+    if (!m)
+        return CVM_E_NULL_ARG;
+    CVM__BEGIN(m);
+    if ((s = check_call(m, size)))
+        return s;
+    g = m->m3;
+    memset(g->gen3, 0, sizeof g->gen3);
+    memset(&st, 0, sizeof st);
+    if ((s = cvm__surf3_validate(&m->ctx, &g->in, CVM__SURF3_ALLOW_INTERNAL, &st)))
+        return s;
+    surf.xyz = g->in.xyz;
+    surf.np = g->in.np;
+    surf.tri = st.tri;
+    surf.nt = st.nt;
+    p.h = size;
+    p.grading = cvm__opt(m, CVM_OPT_GEN3_GRADING);
+    p.follow_surface = cvm__opt(m, CVM_OPT_GEN3_SIZE_FROM_SURFACE) != 0;
+    p.layers = 1;
+    s = cvm__g3_generate(&m->ctx, &surf, &p, !cvm__tetgen_available(),
+                         (uint64_t)cvm__opt(m, CVM_OPT_SEED), &pts, &rep, &bad);
+    if (s == CVM_E_UNSUPPORTED && bad >= 0 && rep.surface_not_delaunay) {
+        int32_t poly = st.tpoly[bad];
+        s = cvm__error(&m->ctx, CVM_E_UNSUPPORTED, CVM_ENT_FACET, (int64_t)g->in.pfacet[poly],
+                       "%s %ld of %s is not a face of the Delaunay tetrahedralisation of its "
+                       "points, and this build has no boundary recovery (build with TETGEN=1)",
+                       g->in.facet_word, (long)(g->in.pfacet[poly] + g->in.facet_base),
+                       g->in.file ? g->in.file : "the input");
+    } else if (s == CVM_E_UNSUPPORTED && bad >= 0) {
+        int32_t poly = st.tpoly[bad];
+        s = cvm__error(&m->ctx, CVM_E_UNSUPPORTED, CVM_ENT_FACET, (int64_t)g->in.pfacet[poly],
+                       "%s %ld of %s stays off the Delaunay tetrahedralisation of the surface "
+                       "and the generated points, and this build has no boundary recovery "
+                       "(build with TETGEN=1)",
+                       g->in.facet_word, (long)(g->in.pfacet[poly] + g->in.facet_base),
+                       g->in.file ? g->in.file : "the input");
+    }
+    cvm__surf3_tris_free(&m->ctx, &st);
+    if (s)
+        return s;
+    s = tetrahedralise_with(m, pts.xyz, pts.n);
+    cvm__g3_points_free(&m->ctx, &pts);
+    if (cvm_status_is_error(s))
+        return s;
+    g->gen3[0] = (double)rep.matched_pairs;
+    g->gen3[1] = (double)rep.unmatched_faces;
+    g->gen3[2] = (double)rep.pairs_rejected;
+    g->gen3[3] = (double)rep.near_points;
+    g->gen3[4] = (double)rep.near_rejected;
+    g->gen3[5] = (double)rep.lattice_points;
+    g->gen3[6] = (double)rep.lattice_levels;
+    g->gen3[7] = (double)rep.recovery_dropped;
+    g->gen3[8] = cvm__now() - t0;
+    return s;
+}

@@ -1,0 +1,140 @@
+/*
+ * generate3.h - the points of a 3D co-volume mesh inside a closed surface
+ * (Walton, Hassan and Morgan's modified advancing front + lattice): a near
+ * field of one point per pair of matched surface triangles (or per unmatched
+ * triangle) and a body-centred cubic (BCC) lattice in the free space. The
+ * points are then tetrahedralised with the surface by the 3D kernel
+ * (lib/api/generate3.c); this folder only decides where the points go.
+ *
+ * Files: g3_sizing.c (the size field), g3_grid.c (range queries), g3_inside.c
+ * (exact point-in-domain test), g3_near.c (matching and near-field placement),
+ * g3_lattice.c (the free-space lattice), g3_recover.c (dropping generated
+ * points that hide a surface triangle from the Delaunay tetrahedralisation),
+ * g3_run.c (the sequence).
+ *
+ * Size field (kept here, not in lib/sizing, whose point sources are 2D): with
+ * follow_surface, size(x) = min(h, min over surface triangles f of l(f) + g
+ * |x - centroid(f)|), l(f) the mean edge length of f; else size(x) = h.
+ *
+ * Free space, this version: a global axis-aligned BCC lattice (origin at the
+ * surface's bounding-box corner), one level per halving of the size (cube
+ * edge a_k = h / 2^k; a candidate of level k is kept where a_k/2 < size(x) <=
+ * a_k), clipped by the exact inside test and by the distance rule. The issue's
+ * lattice grown front by front in a local frame is not implemented.
+ *
+ * Geometry that decides topology (inside or not, which surface triangles are
+ * Delaunay faces) is exact; placements, sizes and distances are plain doubles.
+ * Deterministic: no threads, every order is the input order. Memory through
+ * the context's allocator; CVM_E_NOMEM leaves nothing allocated.
+ */
+#ifndef CVM_GENERATE3_H
+#define CVM_GENERATE3_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include "common/common_internal.h"
+
+/* The closed surface: np points, nt triangles oriented with their right-hand
+ * normal out of the domain (as lib/surface3 validates them). */
+typedef struct cvm__g3_surface {
+    const double *xyz;
+    size_t np;
+    const int32_t *tri;
+    size_t nt;
+} cvm__g3_surface;
+
+typedef struct cvm__g3_params {
+    double h;           /* largest size, > 0 and finite */
+    double grading;     /* g of the size field, > 0 */
+    int follow_surface; /* 1: size from the surface's triangles; 0: uniform h */
+    int layers;         /* near-field layers; only 1 in this version */
+} cvm__g3_params;
+
+typedef struct cvm__g3_report {
+    size_t matched_pairs;   /* pairs of surface triangles matched */
+    size_t unmatched_faces; /* triangles left alone */
+    size_t pairs_rejected;  /* adjacent pairs dropped by the well-centred-region test */
+    size_t near_points;     /* near-field points kept */
+    size_t near_rejected;   /* near-field points outside the domain or within dm of a node */
+    size_t lattice_points;  /* free-space points kept */
+    size_t lattice_levels;  /* lattice levels that contributed a point */
+    size_t recovery_dropped; /* generated points removed so that every surface triangle is
+                                a face of the Delaunay tetrahedralisation */
+    int surface_not_delaunay; /* check_faces: the surface's own points already miss a triangle */
+} cvm__g3_report;
+
+/* ---- g3_sizing.c ---- */
+typedef struct cvm__g3_size cvm__g3_size;
+cvm_status cvm__g3_size_create(cvm__g3_size **out, cvm__ctx *ctx, const cvm__g3_surface *s,
+                               const cvm__g3_params *p);
+void cvm__g3_size_free(cvm__g3_size *z);
+double cvm__g3_size_eval(const cvm__g3_size *z, const double *x);
+/* The smallest size the field can give (the smallest l(f), or h). */
+double cvm__g3_size_min(const cvm__g3_size *z);
+/* The grading g (any positive value for a uniform field). */
+double cvm__g3_size_grading(const cvm__g3_size *z);
+
+/* ---- g3_grid.c: points in a uniform hash grid, for "is any point within r" ---- */
+typedef struct cvm__g3_grid cvm__g3_grid;
+cvm_status cvm__g3_grid_create(cvm__g3_grid **out, cvm__ctx *ctx, double cell);
+void cvm__g3_grid_free(cvm__g3_grid *g);
+/* Add point id (its coordinates are read from xyz[3 id] on queries). */
+cvm_status cvm__g3_grid_add(cvm__g3_grid *g, const double *xyz, int32_t id);
+/* 1 when some added point lies strictly closer than r to x. */
+int cvm__g3_grid_near(const cvm__g3_grid *g, const double *xyz, const double *x, double r);
+
+/* ---- g3_inside.c: exact point-in-domain by ray parity ---- */
+typedef struct cvm__g3_inside cvm__g3_inside;
+cvm_status cvm__g3_inside_create(cvm__g3_inside **out, cvm__ctx *ctx, const cvm__g3_surface *s);
+void cvm__g3_inside_free(cvm__g3_inside *in);
+/* 1 when x lies strictly inside the domain (an odd number of surface
+ * crossings of a segment from x to beyond the bounding box); 0 outside, on
+ * the surface, or when every trial ray met an edge or vertex exactly. */
+int cvm__g3_is_inside(const cvm__g3_inside *in, const double *x);
+
+/* ---- growing point list ---- */
+typedef struct cvm__g3_points {
+    double *xyz;  /* 3 n */
+    double *dm;   /* n: rejection distance of each point (0 for surface points) */
+    size_t n, cap;
+} cvm__g3_points;
+cvm_status cvm__g3_points_push(cvm__ctx *ctx, cvm__g3_points *P, const double *x, double dm);
+void cvm__g3_points_free(cvm__ctx *ctx, cvm__g3_points *P);
+
+/* ---- g3_near.c ---- */
+/* Append the near-field points to P (which holds the surface points first):
+ * pair surface triangles by maximum-cardinality matching, place one point
+ * per pair or unmatched triangle, keep it when inside and farther than its dm
+ * from every point of P. CVM_E_UNSUPPORTED when an edge has other than two
+ * triangles (internal facets); CVM_E_NOMEM. */
+cvm_status cvm__g3_near_field(cvm__ctx *ctx, const cvm__g3_surface *s, const cvm__g3_inside *in,
+                              cvm__g3_points *P, cvm__g3_report *rep);
+
+/* ---- g3_lattice.c ---- */
+/* Append the free-space lattice points to P. */
+cvm_status cvm__g3_lattice(cvm__ctx *ctx, const cvm__g3_surface *s, const cvm__g3_size *z,
+                           double h, const cvm__g3_inside *in, cvm__g3_points *P,
+                           cvm__g3_report *rep);
+/* The rejection distance of a lattice point of size hs: 0.55 hs (chosen by
+ * measurement, see g3_lattice.c). */
+double cvm__g3_lattice_dm(double hs);
+
+/* ---- g3_recover.c ---- */
+/* Remove generated points (P beyond the first s->np) until every surface
+ * triangle is a face of the Delaunay tetrahedralisation of P (at most a few
+ * rounds, each dropping the points inside a sphere through the missing
+ * triangle). CVM_E_UNSUPPORTED naming the triangle (0-based index into
+ * s->tri) in *bad_face when one stays missing, CVM_E_NOMEM, or a kernel status. */
+cvm_status cvm__g3_recover(cvm__ctx *ctx, const cvm__g3_surface *s, cvm__g3_points *P,
+                           uint64_t seed, cvm__g3_report *rep, int64_t *bad_face);
+
+/* ---- g3_run.c ---- */
+/* The generated points (near field, then lattice) in *out, without the
+ * surface's points. check_faces: also run cvm__g3_recover (a build without
+ * TetGen, whose boundary recovery needs every surface triangle as a Delaunay
+ * face). */
+cvm_status cvm__g3_generate(cvm__ctx *ctx, const cvm__g3_surface *s, const cvm__g3_params *p,
+                            int check_faces, uint64_t seed, cvm__g3_points *out,
+                            cvm__g3_report *rep, int64_t *bad_face);
+
+#endif

@@ -1,0 +1,9 @@
+/* generate3_tests.h - TCases of the generate3 suite (tests/unit/generate3/suite.c). */
+#ifndef CVMTEST_GENERATE3_TESTS_H
+#define CVMTEST_GENERATE3_TESTS_H
+#include <check.h>
+
+TCase *generate3_cube_tcase(void); /* test_cube.c: the unit cube at uniform size */
+TCase *generate3_api_tcase(void);  /* test_generate3.c: statuses, sphere in a box, determinism, OOM */
+
+#endif
