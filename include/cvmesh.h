@@ -991,7 +991,13 @@ CVM_API cvm_status cvm_mesh_set_progress(cvm_mesh *m, cvm_progress_fn fn, int64_
  * validated (closed, manifold, consistently oriented, not self-intersecting;
  * internal facets between regions allowed), then its inside is tetrahedralised
  * with the surface's triangles as faces (CVM_ENT_TRIANGLE, with the facets'
- * markers), hole points emptied and region points' attributes flooded. A build
+ * markers), hole points emptied and region points' attributes flooded. Without
+ * hole or region points the triangles' orientation tells the holes: a triangle
+ * faces (right-hand rule) out of the domain, so a closed shell whose triangles
+ * face into it (a sphere inside a box in the usual .off/.stl convention) is
+ * left empty, Steiner points inside it included; when the orientation
+ * contradicts itself (internal facets, or shells facing other ways) nothing is
+ * emptied beyond the outside of the outer surface. A build
  * with TetGen (cvm_build_string()) recovers the boundary with it (inserting
  * Steiner points inside only when it must: CVM_MEASURE_RECOVERY_STEINER); a
  * build without it requires every surface triangle to be a face of the

@@ -397,22 +397,12 @@ done:
     return s;
 }
 
-static cvm_status recover(cvm_mesh *m)
+static cvm_status recover_with_tetgen(cvm_mesh *m)
 {
     cvm__mesh3 *g = m->m3;
-    cvm__surf3_tris st;
     cvm__tet3_out out;
     size_t i;
     cvm_status s;
-    memset(&st, 0, sizeof st);
-    if ((s = cvm__surf3_validate(&m->ctx, &g->in, CVM__SURF3_ALLOW_INTERNAL, &st)))
-        return s;
-    if (!cvm__tetgen_available()) {
-        s = carve_delaunay(m, &st);
-        cvm__surf3_tris_free(&m->ctx, &st);
-        return s;
-    }
-    cvm__surf3_tris_free(&m->ctx, &st);
     memset(&out, 0, sizeof out);
     if ((s = cvm__tetgen_recover(&m->ctx, &g->in, &out)))
         return s;
@@ -432,6 +422,23 @@ static cvm_status recover(cvm_mesh *m)
     for (i = 0; i < g->in.np; i++)
         g->input_map[i] = (int32_t)i;
     return CVM_OK;
+}
+
+static cvm_status recover(cvm_mesh *m)
+{
+    cvm__mesh3 *g = m->m3;
+    cvm__surf3_tris st;
+    size_t removed;
+    cvm_status s;
+    memset(&st, 0, sizeof st);
+    if ((s = cvm__surf3_validate(&m->ctx, &g->in, CVM__SURF3_ALLOW_INTERNAL, &st)))
+        return s;
+    s = cvm__tetgen_available() ? recover_with_tetgen(m) : carve_delaunay(m, &st);
+    /* without hole points, a shell whose triangles face into it bounds a hole */
+    if (!s)
+        s = cvm__mesh3_carve_by_orientation(&m->ctx, g, st.tri, st.nt, &removed);
+    cvm__surf3_tris_free(&m->ctx, &st);
+    return s;
 }
 
 cvm_status cvm__mesh3_triangulate(cvm_mesh *m)

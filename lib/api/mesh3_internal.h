@@ -46,5 +46,13 @@ int32_t cvm__mesh3_find_face(const cvm__face_key *index, size_t n, int32_t a, in
 /* The corners of face f of tet t, oriented outwards (seen from outside
  * counter-clockwise): for f = 0..3. */
 void cvm__mesh3_face_corners(const int32_t *t, int f, int32_t out[3]);
+/* Without hole or region points in g->in: remove the tetrahedra on the side the input
+ * triangles tri (3*nt input point ids, as oriented in the input) face, and every tetrahedron
+ * reached from them without crossing a triangle, then the vertices left unused (mesh3_shells.c).
+ * Nothing changes when the orientation contradicts itself (a tetrahedron both in front of and
+ * behind the surface: internal facets) or would remove everything. *removed: tetrahedra
+ * removed. CVM_OK or CVM_E_NOMEM (the mesh is then unchanged). */
+cvm_status cvm__mesh3_carve_by_orientation(cvm__ctx *ctx, cvm__mesh3 *g, const int32_t *tri,
+                                           size_t nt, size_t *removed);
 
 #endif

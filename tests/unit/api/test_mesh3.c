@@ -439,6 +439,68 @@ START_TEST(holes_and_regions_of_dimension_3)
 }
 END_TEST
 
+/* Without hole points the orientation tells a hole: a small tetrahedron whose triangles face
+ * into it, inside a large one facing out, is left empty; facing out as well, it tells nothing
+ * (the shells contradict each other) and both are meshed. Either way recovery needs nothing:
+ * every triangle is a Delaunay face. */
+START_TEST(a_shell_facing_inwards_bounds_a_hole)
+{
+    static const char *const faces[2] = {"3 4 6 5\n3 4 7 6\n3 4 5 7\n3 5 6 7\n",
+                                         "3 4 5 6\n3 4 6 7\n3 4 7 5\n3 5 7 6\n"};
+    char *dir = iotest_tmpdir(), path[4096];
+    int inward;
+    for (inward = 0; inward <= 1; inward++) {
+        cvm_mesh *m;
+        double vol;
+        size_t nv;
+        FILE *f;
+        snprintf(path, sizeof path, "%s/shells.off", dir);
+        f = fopen(path, "w");
+        ck_assert_ptr_nonnull(f);
+        fprintf(f, "OFF\n8 8 0\n10 10 10\n10 -10 -10\n-10 10 -10\n-10 -10 10\n"
+                   "1 1 1\n1 -1 -1\n-1 1 -1\n-1 -1 1\n"
+                   "3 0 1 2\n3 0 2 3\n3 0 3 1\n3 1 3 2\n%s",
+                faces[inward ? 0 : 1]);
+        fclose(f);
+        ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+        ck_assert_msg(cvm_mesh_read(m, path) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+        ck_assert_msg(cvm_mesh_triangulate(m) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+        ck_assert_msg(cvm_mesh_check(m) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+        ck_assert_int_eq(cvm_mesh_get_measure(&vol, m, CVM_MEASURE_VOLUME), CVM_OK);
+        ck_assert_msg(fabs(vol - (inward ? 7992.0 / 3 : 8000.0 / 3)) < 1e-9, "volume %.17g", vol);
+        ck_assert_int_eq(cvm_mesh_count(&nv, m, CVM_ENT_VERTEX), CVM_OK);
+        ck_assert_int_eq(nv, 8);
+        cvm_mesh_free(m);
+    }
+    { /* allocation k fails, for every k: CVM_E_NOMEM, no leak, then the same volume */
+        cvmtest_alloc a;
+        cvm_mesh *m;
+        long k;
+        double vol = 0;
+        cvmtest_alloc_init(&a, 0, 0);
+        ck_assert_int_eq(cvmtest_mesh_create(&m, &a), CVM_OK);
+        for (k = 1;; k++) {
+            cvm_status s;
+            cvmtest_alloc_arm(&a, k, 0);
+            s = cvm_mesh_read(m, path); /* the last file: the hole */
+            if (s == CVM_OK)
+                s = cvm_mesh_triangulate(m);
+            if (s == CVM_OK)
+                break;
+            ck_assert_msg(s == CVM_E_NOMEM, "k=%ld: %s", k, cvm_mesh_errmsg(m));
+            ck_assert(k < 2000);
+        }
+        cvmtest_alloc_arm(&a, 0, 0);
+        ck_assert_int_eq(cvm_mesh_get_measure(&vol, m, CVM_MEASURE_VOLUME), CVM_OK);
+        ck_assert(fabs(vol - 7992.0 / 3) < 1e-9);
+        cvm_mesh_free(m);
+        ck_assert_int_eq((int)a.live_blocks, 0);
+    }
+    iotest_rmdir(dir);
+    free(dir);
+}
+END_TEST
+
 TCase *api_mesh3_tcase(void)
 {
     TCase *tc = tcase_create("mesh3");
@@ -453,5 +515,6 @@ TCase *api_mesh3_tcase(void)
     tcase_add_test(tc, every_failed_allocation_gives_nomem_and_the_handle_goes_on);
     tcase_add_test(tc, files_are_written_in_each_format);
     tcase_add_test(tc, holes_and_regions_of_dimension_3);
+    tcase_add_test(tc, a_shell_facing_inwards_bounds_a_hole);
     return tc;
 }
