@@ -372,6 +372,13 @@ check-examples:
 	  $(CC) -std=c99 $(WARN) $$src $$flags -Wl,-rpath,$(STAGE)/lib -o $(BUILD)/examples/$$name; \
 	  (cd $(BUILD)/examples && ./$$name) || { echo "check-examples: $$name failed"; exit 1; }; \
 	done
+	@# The co-volume Laplacian on cvmesh's 3D dual (and TetGen's mesh beside it): needs
+	@# boundary recovery, so a build without TetGen says so and skips it.
+	@if $(CLI) --version | grep -q TetGen; then \
+	  $(MAKE) --no-print-directory venv && \
+	  echo "$(VENV_PY) examples/python/covolume_laplacian3d.py --cvmesh $(CLI) --tetgen --check" && \
+	  $(VENV_PY) examples/python/covolume_laplacian3d.py --cvmesh $(CLI) --tetgen --check; \
+	else echo "check-examples: covolume_laplacian3d.py skipped (this build has no TetGen recovery)"; fi
 
 # Bindings: their engineers own these scripts; skipped until they exist.
 check-python: venv
