@@ -32,7 +32,7 @@ allowed() {
     surface3) echo "common geom" ;;
     tetgen) echo "common geom" ;;
     quad) echo "common geom delaunay sizing refine" ;;
-    api) echo "common geom delaunay delaunay3 sizing boundary surface3 tetgen refine dual io" ;;
+    api) echo "common geom delaunay delaunay3 sizing boundary surface3 tetgen refine dual quad io" ;;
     cli) echo "" ;;
     *) echo "?" ;;
     esac

@@ -10,6 +10,7 @@ void cvm__mesh_forget_layers(cvm_mesh *m)
     cvm__free(&m->ctx, m->tlayer);
     m->tlayer = NULL;
     m->n_tlayer = 0;
+    cvm__mesh_forget_quads(m); /* the same calls change the triangles the quads are made of */
 }
 
 void cvm__mesh_drop_output(cvm_mesh *m)
@@ -28,4 +29,5 @@ void cvm__mesh_drop_output(cvm_mesh *m)
     cvm__free(&m->ctx, m->tlayer);
     m->tlayer = NULL;
     m->n_tlayer = 0;
+    cvm__mesh_forget_quads(m);
 }
