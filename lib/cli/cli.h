@@ -19,7 +19,8 @@ enum {
     CLI_CMD_TRIANGULATE = 1u << 0,
     CLI_CMD_REFINE = 1u << 1,
     CLI_CMD_OPTIMISE = 1u << 2,
-    CLI_CMD_TETRAHEDRALIZE = 1u << 3
+    CLI_CMD_TETRAHEDRALIZE = 1u << 3,
+    CLI_CMD_QUAD = 1u << 4
 };
 
 /* One flag that sets a library option (flags.c holds the one table). */
@@ -208,5 +209,7 @@ int cli_optimise(int argc, char **argv);
 void cli_optimise_help(FILE *f);
 int cli_tetrahedralize(int argc, char **argv);
 void cli_tetrahedralize_help(FILE *f);
+int cli_quad(int argc, char **argv);
+void cli_quad_help(FILE *f);
 
 #endif

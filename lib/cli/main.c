@@ -22,6 +22,8 @@ static const cli_command k_commands[] = {
      cli_optimise, cli_optimise_help},
     {"tetrahedralize", "Delaunay tetrahedralisation of 3D points, or the tetrahedral mesh of a closed surface",
      cli_tetrahedralize, cli_tetrahedralize_help},
+    {"quad", "quad-dominant mesh of a convex domain aligned with a metric (Lp-CVT + Blossom-Quad)",
+     cli_quad, cli_quad_help},
 };
 
 #define NCOMMANDS (sizeof k_commands / sizeof k_commands[0])
