@@ -164,6 +164,9 @@ typedef struct cvm__lpcvt {
     cvm__metric metric;
     int p, clip;
     int cellwise;       /* 0: M(y) at every quadrature point (default); 1: M(x_i) over cell i */
+    int mconst;         /* 1: the metric is a constant built-in (cvm__lpcvt_init() decides): M is
+                           Mc everywhere, dM = 0, and no point is evaluated */
+    double Mc[4];
     int threads;        /* OpenMP threads of the energy and gradient (default 1; more only when the
                            metric callback may be called concurrently); same bits for any count */
     uint8_t *cstat;     /* per site: 1 when its cell failed (threaded evaluation) */
