@@ -1327,8 +1327,8 @@ typedef int (*cvm_metric_fn)(void *payload, const double *x, int dim, double *g,
 
 /**
  * Set (or, with fn NULL, remove) the metric (tensor) source of @p s, kept beside the
- * scalar sources for the anisotropic and quad-dominant meshers (planned). In this
- * version no meshing call uses a metric, and none ignores it silently:
+ * scalar sources. cvm_mesh_quadmesh() meshes to it (it needs has_derivatives = 1);
+ * no other meshing call uses a metric, and none ignores it silently:
  * cvm_mesh_refine() and cvm_mesh_optimise_dual() given a sizing with a metric
  * return CVM_E_UNSUPPORTED and change nothing. cvm_sizing_eval() and
  * cvm_sizing_eval_nd() give the scalar size and do not read the metric;
@@ -1740,8 +1740,9 @@ typedef enum cvm_cell_type {
  * @param ncells_out  receives the number of cells (offsets need ncells + 1 entries, types ncells).
  * @param nconn_out   receives the total number of vertex ids over all cells.
  * @param m           mesh handle; not NULL.
- * @param kind        CVM_ENT_CELL: the cells of the mesh's dimension (this version: its
- *                    triangles, in CVM_ENT_TRIANGLE order).
+ * @param kind        CVM_ENT_CELL: the cells of the mesh's dimension (its triangles, in
+ *                    CVM_ENT_TRIANGLE order, or tetrahedra; after cvm_mesh_quadmesh() its
+ *                    quad-dominant cells).
  * Thread-safety: may run concurrently with other read-only calls on @p m.
  * @return CVM_OK (counts 0 before triangulation)
  *         CVM_E_NULL_ARG  a pointer is NULL
@@ -1755,9 +1756,11 @@ CVM_API cvm_status cvm_mesh_count_cells_mixed(size_t *ncells_out, size_t *nconn_
 /**
  * Copy cells of several types in compressed form (as the dual cells are): cell c has
  * type types[c] (a cvm_cell_type) and the vertex ids conn[offsets[c] .. offsets[c+1]-1];
- * offsets[0] = 0 and offsets[ncells] = nconn (cvm_mesh_count_cells_mixed()). In this
- * version every cell is a CVM_CELL_TRIANGLE, in CVM_ENT_TRIANGLE order; a program
- * that reads the types works unchanged when quads and tetrahedra come.
+ * offsets[0] = 0 and offsets[ncells] = nconn (cvm_mesh_count_cells_mixed()). The cells
+ * are the CVM_CELL_TRIANGLEs in CVM_ENT_TRIANGLE order (CVM_CELL_TETRAHEDRON for a 3D
+ * mesh), or after cvm_mesh_quadmesh() its CVM_CELL_QUADs and CVM_CELL_TRIANGLEs (until a
+ * call changes the mesh); cvm_mesh_copy_cell_neighbors() and
+ * cvm_mesh_copy_cell_attributes() with CVM_ENT_CELL follow the same cells.
  *
  * @param offsets      ncells + 1 entries; NULL only with offsets_len 0.
  * @param offsets_len  capacity of offsets.
@@ -1799,7 +1802,8 @@ CVM_API cvm_status cvm_mesh_copy_neighbors(cvm_index *dst, size_t dst_len, const
  * CVM_ENT_TETRAHEDRON is reserved for the 3D kernel.
  *
  * @param dst      receives the neighbours; NULL only with dst_len 0.
- * @param dst_len  capacity in entries; >= 3 x the triangle count (this version, both kinds).
+ * @param dst_len  capacity in entries; >= 3 x the triangle count (CVM_ENT_TRIANGLE), or
+ *                 nconn of cvm_mesh_count_cells_mixed() (CVM_ENT_CELL).
  * @param m        mesh handle; not NULL.
  * @param kind     CVM_ENT_TRIANGLE or CVM_ENT_CELL.
  * Thread-safety: may run concurrently with other read-only calls on @p m.
