@@ -298,9 +298,10 @@ cvm_status cvm__lpcvt_initial_sites(double **xi_out, size_t *ni_out, const cvm__
  * with cvm__lbfgs_minimise(); o->length is set from the boundary's bounding box and o->step0 to
  * a quarter of the shortest boundary edge (a first step that moves no site past its
  * neighbours). Then up to
- * o->relocations times escape a local minimum: the moving site of least cell energy moves into
- * the cell of most energy (half-way from its site to its farthest polygon vertex) and the sites
- * are optimised again; the move is kept when E drops by more than 1e-9 E, else undone and the
+ * o->relocations times escape a local minimum: the 1 + m/256 moving sites of least cell energy
+ * (m moving sites) move into as many cells of most energy (half-way from its site to its
+ * farthest polygon vertex; each cell once, ties to the lower index) and the sites are optimised
+ * again; the move is kept when E drops by more than 1e-9 E, else undone and the
  * relocations stop. res sums the iterations and evaluations of every run. */
 cvm_status cvm__lpcvt_optimise(cvm__lpcvt *L, double *xi, const cvm__lbfgs_opts *o,
                                cvm__lbfgs_result *res);
