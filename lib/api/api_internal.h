@@ -47,6 +47,8 @@ typedef struct cvm__quality_cache {
 typedef struct cvm__quad_cells {
     size_t ncell, nconn;
     int32_t *off, *types, *conn, *first;
+    double *quality; /* per cell: a quad's 1 - max|corner - 90| / 90 in the metric; 0 for a
+                        triangle (.vtu cell data "quad_quality") */
 } cvm__quad_cells;
 
 #define CVM__NQUAD_REPORT 22 /* CVM_REPORT_QUAD_PCT .. CVM_REPORT_QUAD_BOUNDARY_SITES */

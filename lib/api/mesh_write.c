@@ -138,7 +138,7 @@ static cvm_status write_to_set(cvm_mesh *m, const char *path, cvm__write_set *ws
         return s;
     if (m->quad) { /* the mixed cells in place of the triangles */
         const int32_t *tri = mo.tri;
-        const double *tlayer = mo.tlayer;
+        const double *tlayer = mo.tlayer, *tquality = mo.tquality;
         double *tattr = (double *)mo.tattr;
         size_t c;
         mo.tri = m->quad->conn;
@@ -146,12 +146,15 @@ static cvm_status write_to_set(cvm_mesh *m, const char *path, cvm__write_set *ws
         mo.coff = m->quad->off;
         mo.ctype = m->quad->types;
         mo.tlayer = NULL;
+        mo.tquality = m->quad->quality;
+        mo.tquality_name = "quad_quality";
         for (c = 0; tattr && c < m->quad->ncell; c++) /* in place: first[c] >= c */
             tattr[c] = tattr[m->quad->first[c]];
         mo.vtu_encoding = (int)cvm__opt(m, CVM_OPT_VTU_ENCODING);
         s = cvm__write_file_to_set(ws, path, &mo);
         mo.tri = tri;
         mo.tlayer = tlayer;
+        mo.tquality = tquality;
         cvm__mesh_out_free(m, &mo);
         return s;
     }

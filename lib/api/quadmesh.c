@@ -65,6 +65,7 @@ void cvm__mesh_forget_quads(cvm_mesh *m)
     cvm__free(&m->ctx, q->types);
     cvm__free(&m->ctx, q->conn);
     cvm__free(&m->ctx, q->first);
+    cvm__free(&m->ctx, q->quality);
     cvm__free(&m->ctx, q);
     m->quad = NULL;
 }
@@ -338,7 +339,8 @@ static cvm_status make_cells(cvm_mesh *m, const cvm__metric *mt)
         q->off = cvm__malloc(&m->ctx, (nt + 1) * sizeof *q->off);
         q->types = cvm__malloc(&m->ctx, (nt + 1) * sizeof *q->types);
         q->first = cvm__malloc(&m->ctx, (nt + 1) * sizeof *q->first);
-        if (!q->off || !q->types || !q->first) {
+        q->quality = cvm__calloc(&m->ctx, nt + 1, sizeof *q->quality);
+        if (!q->off || !q->types || !q->first || !q->quality) {
             cvm__free(&m->ctx, tri);
             return cvm__nomem(&m->ctx);
         }
@@ -375,8 +377,8 @@ static cvm_status make_cells(cvm_mesh *m, const cvm__metric *mt)
     if (q->first)
         for (k = 0; k < out.ncell; k++)
             q->first[k] = out.source[2 * k];
+    q->quality = out.quality;
     cvm__free(&m->ctx, out.source);
-    cvm__free(&m->ctx, out.quality);
     cvm__free(&m->ctx, out.xy);
     return q->first ? CVM_OK : cvm__nomem(&m->ctx);
 }

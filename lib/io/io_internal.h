@@ -153,6 +153,7 @@ typedef struct cvm__mesh_out {
     const int32_t *coff; /* NULL, or nt+1 offsets into tri: cell t is tri[coff[t] .. coff[t+1]-1]
                             of VTK type ctype[t] (quad-dominant cells; only .vtu writes them) */
     const int32_t *ctype;
+    const char *tquality_name; /* the .vtu name of tquality; NULL: "min_angle_deg" */
     const double *tattr; /* nt or NULL (regional attribute) */
     const int32_t *edge; /* 2*ne or NULL: all edges (for .edge) */
     const int32_t *emark;/* ne or NULL: marker of each edge (0 interior) */

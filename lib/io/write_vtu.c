@@ -94,7 +94,7 @@ static void cell_data(cvm__writer *w, const cvm__mesh_out *mo)
         end_array(w);
     }
     if (mo->tquality) {
-        begin_array(w, "Float64", "min_angle_deg", 1);
+        begin_array(w, "Float64", mo->tquality_name ? mo->tquality_name : "min_angle_deg", 1);
         doubles_then_zeros(w, mo->tquality, mo->nt, mo->nseg);
         end_array(w);
     }

@@ -94,7 +94,7 @@ static size_t list_arrays(const cvm__mesh_out *mo, arr *a)
     if (mo->tattr)
         ADD(A_TATTR, "Float64", "attribute", 1, 8, nc);
     if (mo->tquality)
-        ADD(A_TQUAL, "Float64", "min_angle_deg", 1, 8, nc);
+        ADD(A_TQUAL, "Float64", mo->tquality_name ? mo->tquality_name : "min_angle_deg", 1, 8, nc);
     if (mo->tlayer)
         ADD(A_TLAYER, "Float64", "layer_index", 1, 8, nc);
     ADD(A_XYZ, "Float64", "coordinates", 3, 8, 3 * mo->nv);
