@@ -2347,7 +2347,8 @@ CVM_API cvm_status cvm_mesh_optimise_dual(cvm_mesh *m, const cvm_sizing *sizing)
  *      CVM_OPT_QUAD_MIN_QUALITY). The quad-dominant cells are the mixed cells
  *      (cvm_mesh_count_cells_mixed()/cvm_mesh_copy_cells_mixed() with CVM_ENT_CELL:
  *      CVM_CELL_QUAD and CVM_CELL_TRIANGLE, counter-clockwise, in the order of their
- *      first triangle); cvm_mesh_write() writes them to .vtu and .msh.
+ *      first triangle); cvm_mesh_write() writes them to .vtu and .msh (other formats:
+ *      CVM_E_UNSUPPORTED).
  * The measures of the result are reports of the run (CVM_REPORT_QUAD_*, also readable
  * as cvm_mesh_get_measure() of the same number), since the metric is not kept.
  * Any later call that changes the mesh (triangulate, refine, insert, weights, dual

@@ -129,10 +129,10 @@ static cvm_status write_to_set(cvm_mesh *m, const char *path, cvm__write_set *ws
         return cvm__error(&m->ctx, CVM_E_UNSUPPORTED, CVM_ENT_NONE, -1,
                           "cannot write %s: unknown extension (expected .vtu, .msh, .node or .svg)",
                           path);
-    if (m->quad && fmt != CVM__FMT_VTU)
+    if (m->quad && fmt != CVM__FMT_VTU && fmt != CVM__FMT_MSH)
         return cvm__error(&m->ctx, CVM_E_UNSUPPORTED, CVM_ENT_NONE, -1,
                           "cannot write %s: the quad-dominant cells of cvm_mesh_quadmesh() are "
-                          "written to .vtu only in this version", path);
+                          "written to .vtu and .msh only in this version", path);
     if ((s = cvm__mesh_out_build(m, &mo, fmt == CVM__FMT_NODE,
                                  fmt == CVM__FMT_SVG || (fmt == CVM__FMT_VTU && !m->quad))))
         return s;

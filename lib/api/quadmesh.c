@@ -166,7 +166,7 @@ static cvm_status build_triangulation(cvm_mesh *m, const int32_t *loop, const in
 {
     const cvm__pslg *P = &m->in;
     size_t np = P->np, na = P->nattr, nv = cvm__store_nv(m), total, k, c = 0, nnew = 0, kept = 0;
-    int32_t *v2in = NULL, *seg = NULL, *smark = NULL, *pmark = NULL, *bid = NULL;
+    int32_t *v2in = NULL, *seg = NULL, *smark = NULL, *pmark = NULL, *bid = NULL, *pseg = NULL;
     double *xy = NULL, *pattr = NULL;
     cvm__cdt_input in;
     cvm__cdt_out out;
@@ -178,9 +178,10 @@ static cvm_status build_triangulation(cvm_mesh *m, const int32_t *loop, const in
     xy = cvm__malloc(&m->ctx, (2 * total + 1) * sizeof *xy);
     seg = cvm__malloc(&m->ctx, (2 * nb + 1) * sizeof *seg);
     smark = cvm__malloc(&m->ctx, (nb + 1) * sizeof *smark);
+    pseg = cvm__malloc(&m->ctx, (nb + 1) * sizeof *pseg);
     pmark = cvm__malloc(&m->ctx, (total + 1) * sizeof *pmark);
     pattr = na ? cvm__malloc(&m->ctx, (total * na + 1) * sizeof *pattr) : NULL;
-    if (!v2in || !bid || !xy || !seg || !smark || !pmark || (na && !pattr)) {
+    if (!v2in || !bid || !xy || !seg || !smark || !pseg || !pmark || (na && !pattr)) {
         s = cvm__nomem(&m->ctx);
         goto done;
     }
@@ -238,7 +239,8 @@ static cvm_status build_triangulation(cvm_mesh *m, const int32_t *loop, const in
             c++;
         seg[2 * k] = bid[k];
         seg[2 * k + 1] = bid[(k + 1) % nb];
-        smark[k] = cvm__segment_marker(m, lseg[(c + nc - 1) % nc]);
+        pseg[k] = lseg[(c + nc - 1) % nc];
+        smark[k] = cvm__segment_marker(m, pseg[k]);
     }
     for (k = 0; k < ni; k++) {
         size_t id = np + nnew + kept;
@@ -276,6 +278,8 @@ static cvm_status build_triangulation(cvm_mesh *m, const int32_t *loop, const in
     m->vattr = out.vattr;
     m->cap_vmark = out.cap_vmark;
     m->cap_vattr = out.cap_vattr;
+    if (!s) /* the pieces name the input segments they lie on */
+        cvm__store_remap_segments(m, pseg, nb);
     if (s)
         s = f.kind == CVM__CDT_FAULT_NONE
                 ? s
@@ -289,6 +293,7 @@ done:
     cvm__free(&m->ctx, xy);
     cvm__free(&m->ctx, seg);
     cvm__free(&m->ctx, smark);
+    cvm__free(&m->ctx, pseg);
     cvm__free(&m->ctx, pmark);
     cvm__free(&m->ctx, pattr);
     return s;

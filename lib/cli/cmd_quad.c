@@ -1,6 +1,6 @@
 /*
  * cmd_quad.c - `cvmesh quad IN.poly|--domain-box X0,Y0,X1,Y1 --metric builtin:NAME[:SCALE]|
- * constant:G11,G12,G22 [-o OUT.vtu] [--quality] [--timings] [option flags]`: a quad-dominant
+ * constant:G11,G12,G22 [-o OUT.vtu|OUT.msh] [--quality] [--timings] [option flags]`: a quad-dominant
  * mesh aligned with a metric (cvm_mesh_quadmesh()); write, report.
  */
 #include <stdlib.h>
@@ -43,7 +43,7 @@ void cli_quad_help(FILE *f)
             "the metric and in Euclidean space, alignment with the metric's eigenvectors,\n"
             "edges at unit metric length, energy, gradient and iterations):\n");
     cli_print_output_help(f, 0, 0);
-    fprintf(f, "  (quad-dominant meshes are written to .vtu only: VTK_QUAD and VTK_TRIANGLE cells)\n");
+    fprintf(f, "  (quad-dominant meshes are written to .vtu or .msh: quad and triangle cells)\n");
     cli_print_option_flags(f, CLI_CMD_QUAD);
     fprintf(f, "\nOn bad input the exit status is 1 and one line names the file, point or\n"
                "vertex; no output file is written. Command-line errors exit with 2.\n");

@@ -301,6 +301,7 @@ expect_grep "quad .vtu has VTK_QUAD cells" "$OUT/box.vtu" "9 9 9 9"
 expect_exit 0 "quad a .poly, binary .vtu" "$CLI" quad "$DOMAINS/square.poly" --metric builtin:stretch:9 \
     --p 4 --recombine greedy -o "$OUT/sq.vtu" --vtu-encoding binary --seed 3
 if [ -s "$OUT/sq.vtu" ]; then pass; else fail "quad .poly: no .vtu written"; fi
+expect_exit 0 "quad to .msh" "$CLI" quad --domain-box 0,0,4,4 --metric builtin:identity -o "$OUT/box.msh"
 if [ "$HAVE_MESHIO" -eq 1 ]; then
     if "$PY" -c '
 import sys, meshio, numpy as np
@@ -318,9 +319,15 @@ for path, want in ((sys.argv[1], 16.0), (sys.argv[2], 1.0)):
         area += a.sum()
     assert abs(area - want) < 1e-12 * want, (path, area)
 ' "$OUT/box.vtu" "$OUT/sq.vtu" > "$OUT/meshio.log" 2>&1; then pass; else fail "quad outputs with meshio: $(tail -c 300 "$OUT/meshio.log")"; fi
+    if "$PY" -c '
+import sys, meshio
+m = meshio.read(sys.argv[1])
+q = sum(len(c.data) for c in m.cells if c.type == "quad")
+assert q == 16, q
+' "$OUT/box.msh" > "$OUT/meshio_msh.log" 2>&1; then pass; else fail "quad .msh with meshio: $(tail -c 300 "$OUT/meshio_msh.log")"; fi
 fi
-expect_exit 1 "quad to .msh (not yet)" "$CLI" quad --domain-box 0,0,2,2 --metric builtin:identity -o "$OUT/q.msh"
-expect_one_line "quad to .msh"
+expect_exit 1 "quad to .svg (not yet)" "$CLI" quad --domain-box 0,0,2,2 --metric builtin:identity -o "$OUT/q.svg"
+expect_one_line "quad to .svg"
 expect_exit 1 "quad a non-convex domain" "$CLI" quad "$DOMAINS/annulus.poly" --metric builtin:identity:4
 expect_one_line "quad a non-convex domain"
 expect_exit 2 "quad without --metric" "$CLI" quad --domain-box 0,0,1,1

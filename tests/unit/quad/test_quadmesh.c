@@ -180,6 +180,45 @@ static int same_cells(const cells *a, const cells *b)
            !memcmp(a->xy, b->xy, 2 * a->np * sizeof *a->xy);
 }
 
+/* Segment markers reach every boundary piece (and its new vertices); without segments the
+ * domain is the hull of the points. */
+START_TEST(segment_markers_and_hull_domains)
+{
+    cvm_mesh *m;
+    cvm_sizing *s;
+    int32_t mk[4] = {7, 8, 9, 10}, *sm, *vm;
+    size_t nseg = 0, nv = 0, k;
+    double xy[8] = {0, 0, 3, 0, 3, 2, 0, 2};
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvm_sizing_create(&s), CVM_OK);
+    ck_assert_int_eq(cvm_sizing_set_metric_constant(s, 4, 0, 4), CVM_OK);
+    set_box(m, 0, 0, 3, 2);
+    ck_assert_int_eq(cvm_mesh_set_segment_markers(m, mk, 4), CVM_OK);
+    ck_assert_msg(cvm_mesh_quadmesh(m, s) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    ck_assert_int_eq(cvm_mesh_count(&nseg, m, CVM_ENT_SEGMENT), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_count(&nv, m, CVM_ENT_VERTEX), CVM_OK);
+    ck_assert_uint_eq(nseg, 20); /* 2 x (6 + 4) pieces of unit metric length 0.5 */
+    sm = malloc(nseg * sizeof *sm);
+    vm = malloc(nv * sizeof *vm);
+    ck_assert_int_eq(cvm_mesh_copy_markers(sm, nseg, m, CVM_ENT_SEGMENT), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_copy_markers(vm, nv, m, CVM_ENT_VERTEX), CVM_OK);
+    for (k = 0; k < nseg; k++)
+        ck_assert_msg(sm[k] >= 7 && sm[k] <= 10, "segment %lu marker %d", (unsigned long)k, sm[k]);
+    for (k = 4; k < 20; k++) /* the new boundary points */
+        ck_assert_msg(vm[k] >= 7 && vm[k] <= 10, "vertex %lu marker %d", (unsigned long)k, vm[k]);
+    free(sm);
+    free(vm);
+    assert_mixed_mesh(m, 0, 0, 3, 2);
+    /* the same box as points only */
+    ck_assert_int_eq(cvm_mesh_set_segments(m, NULL, 0), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_points(m, xy, 4, 2), CVM_OK);
+    ck_assert_msg(cvm_mesh_quadmesh(m, s) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    assert_mixed_mesh(m, 0, 0, 3, 2);
+    cvm_sizing_free(s);
+    cvm_mesh_free(m);
+}
+END_TEST
+
 START_TEST(same_seed_gives_same_bytes_for_1_2_4_threads)
 {
     cells a, b, c, d;
@@ -330,6 +369,7 @@ TCase *quad_quadmesh_tcase(void)
     tcase_set_timeout(tc, 300);
     tcase_add_test(tc, identity_box_gives_the_unit_lattice_of_quads);
     tcase_add_test(tc, stretch_box_is_quad_dominant_and_conforming);
+    tcase_add_test(tc, segment_markers_and_hull_domains);
     tcase_add_test(tc, same_seed_gives_same_bytes_for_1_2_4_threads);
     tcase_add_test(tc, bad_metric_returns_argument_naming_the_point);
     tcase_add_test(tc, unsupported_domains_are_refused_with_the_vertex);
