@@ -33,7 +33,7 @@ allowed() {
     tetgen) echo "common geom" ;;
     quad) echo "common geom delaunay sizing refine" ;;
     generate3) echo "common geom delaunay delaunay3 sizing refine quad" ;;
-    api) echo "common geom delaunay delaunay3 sizing boundary surface3 tetgen refine dual io generate3" ;;
+    api) echo "common geom delaunay delaunay3 sizing boundary surface3 tetgen refine dual quad io generate3" ;;
     cli) echo "" ;;
     *) echo "?" ;;
     esac

@@ -867,8 +867,43 @@ typedef enum cvm_option {
     CVM_OPT_GEN3_FREESPACE = 742,
     /** 1 (default): the size follows the surface's own triangles (see
      *  CVM_OPT_GEN3_GRADING); 0: the size is uniform. Integer, bounds [0, 1]. @since 0.2 */
-    CVM_OPT_GEN3_SIZE_FROM_SURFACE = 743
-    /* ---- 800-899: reserved for quad-dominant meshing ---- */
+    CVM_OPT_GEN3_SIZE_FROM_SURFACE = 743,
+    /* ---- quad-dominant meshing (800-899): read by cvm_mesh_quadmesh() ---- */
+    /** Exponent p of the Lp-CVT energy, even integer, default 6, bounds [2, 12]. p = 2 is
+     *  the classic CVT (hexagonal cells); larger p pulls the cells towards squares of unit
+     *  metric size aligned with the eigenvectors of the metric. @since 0.2 */
+    CVM_OPT_QUAD_P = 800,
+    /** Corrections kept by L-BFGS, integer, default 8, bounds [1, 64]. @since 0.2 */
+    CVM_OPT_QUAD_LBFGS_MEMORY = 801,
+    /** Gradient stop of the optimiser: |grad E|_inf <= this x E / L (L the larger side of
+     *  the domain's bounding box), default 1e-10, bounds [0, 1]. The run also stops when E
+     *  decreases by less than 1e-12 (relative) over 10 iterations, at
+     *  CVM_OPT_QUAD_MAX_ITERATIONS or at the time limit. @since 0.2 */
+    CVM_OPT_QUAD_GRADIENT_TOL = 802,
+    /** Iteration limit of each L-BFGS run, integer, default 10000, 0 = none, bounds
+     *  [0, 1e9]. Counts work, so the result stays reproducible. @since 0.2 */
+    CVM_OPT_QUAD_MAX_ITERATIONS = 803,
+    /** Recombination into quads: 0 Blossom-Quad (default; maximum-weight matching),
+     *  1 greedy (pairs by decreasing quality), 2 none (the cells are the triangles).
+     *  Integer, bounds [0, 2]. @since 0.2 */
+    CVM_OPT_QUAD_RECOMBINE = 804,
+    /** Quality threshold of the recombination, default 0.5, bounds [0, 1]: two triangles
+     *  form a quad only when the quad's quality 1 - max|corner - 90 deg| / 90 deg, corners
+     *  measured in the metric at its centroid, is at least this; a quad that is not
+     *  strictly convex (exact orientation tests) is never formed. @since 0.2 */
+    CVM_OPT_QUAD_MIN_QUALITY = 805,
+    /** Boundary cells of the energy: 0 (default) reconstructed from ghost sites at unit
+     *  metric length outside each boundary site (Ekelschot et al.); 1 clipped to the domain.
+     *  Integer, bounds [0, 1]. @since 0.2 */
+    CVM_OPT_QUAD_CLIP = 806,
+    /** Metric sampling of the energy: 0 (default) M(y) at every quadrature point; 1 the
+     *  metric of each site over its whole cell (every integral exact, a C^1 energy, about
+     *  half the time). Integer, bounds [0, 1]. @since 0.2 */
+    CVM_OPT_QUAD_CELLWISE_METRIC = 807,
+    /** Escapes from a local minimum after convergence, integer, default 8, bounds [0, 64]:
+     *  the site of least cell energy moves into the cell of most energy and the sites are
+     *  optimised again; kept only when E drops. @since 0.2 */
+    CVM_OPT_QUAD_RELOCATIONS = 808
     /* ---- 1000 and up: experimental (include/cvmesh_experimental.h) ---- */
 } cvm_option;
 
@@ -929,7 +964,8 @@ typedef enum cvm_stage {
     CVM_STAGE_WRITE = 6,
     CVM_STAGE_REFINE = 7,
     CVM_STAGE_SMOOTH = 8,
-    CVM_STAGE_OPTIMISE_DUAL = 9
+    CVM_STAGE_OPTIMISE_DUAL = 9,
+    CVM_STAGE_QUAD_OPTIMISE = 10 /**< the Lp-CVT optimisation of cvm_mesh_quadmesh() @since 0.2 */
 } cvm_stage;
 
 /**
@@ -1332,8 +1368,8 @@ typedef int (*cvm_metric_fn)(void *payload, const double *x, int dim, double *g,
 
 /**
  * Set (or, with fn NULL, remove) the metric (tensor) source of @p s, kept beside the
- * scalar sources for the anisotropic and quad-dominant meshers (planned). In this
- * version no meshing call uses a metric, and none ignores it silently:
+ * scalar sources. cvm_mesh_quadmesh() meshes to it (it needs has_derivatives = 1);
+ * no other meshing call uses a metric, and none ignores it silently:
  * cvm_mesh_refine() and cvm_mesh_optimise_dual() given a sizing with a metric
  * return CVM_E_UNSUPPORTED and change nothing. cvm_sizing_eval() and
  * cvm_sizing_eval_nd() give the scalar size and do not read the metric;
@@ -1353,6 +1389,48 @@ typedef int (*cvm_metric_fn)(void *payload, const double *x, int dim, double *g,
  */
 CVM_API cvm_status cvm_sizing_set_metric_fn(cvm_sizing *s, cvm_metric_fn fn, int has_derivatives,
                                             void *payload);
+
+/** Built-in metric fields of cvm_sizing_set_metric_builtin(), each g(x, y) times a scale. */
+typedef enum cvm_metric_builtin {
+    CVM_METRIC_IDENTITY = 1, /**< g = I */
+    CVM_METRIC_STRETCH = 2,  /**< g = diag(1, 1 + 4 y^2) (Ekelschot et al.'s case on [0,5]x[0,1.3]) */
+    CVM_METRIC_SADDLE = 3,   /**< g = I + grad f grad f^T, f = x^2 - y^2 (on [-1.3,1.3]^2) */
+    CVM_METRIC_SSHOCK = 4    /**< |Hessian| of 3/4 tanh(2 (sin 5y - 3x)), eigen-sizes clamped to
+                                  [0.005, 0.2], aspect ratio <= 50 (on [-1,1]^2) */
+} cvm_metric_builtin;
+
+/**
+ * Set the metric source of @p s to a built-in field times @p scale, with exact
+ * derivatives (as cvm_sizing_set_metric_fn() with has_derivatives = 1; it replaces any
+ * metric source). scale = 1/h^2 gives edges of length h where g = I.
+ *
+ * @param s      sizing handle; not NULL.
+ * @param kind   a cvm_metric_builtin.
+ * @param scale  > 0 and finite.
+ * Ownership:    the handle keeps the field's parameters; nothing to keep for the caller.
+ * Thread-safety: one call at a time on @p s; the field itself is reentrant.
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG  s is NULL
+ *         CVM_E_ARGUMENT  an unknown kind, or scale not finite and positive (handle unchanged)
+ * @since 0.2
+ */
+CVM_API cvm_status cvm_sizing_set_metric_builtin(cvm_sizing *s, cvm_metric_builtin kind,
+                                                 double scale);
+
+/**
+ * Set the metric source of @p s to the constant tensor (g11, g12, g22) (derivatives 0;
+ * it replaces any metric source). An isotropic size h is (1/h^2, 0, 1/h^2).
+ *
+ * @param s  sizing handle; not NULL.
+ * Thread-safety: one call at a time on @p s.
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG         s is NULL
+ *         CVM_E_INPUT_NONFINITE  an entry is NaN or infinite (handle unchanged)
+ *         CVM_E_ARGUMENT         the tensor is not positive definite (handle unchanged)
+ * @since 0.2
+ */
+CVM_API cvm_status cvm_sizing_set_metric_constant(cvm_sizing *s, double g11, double g12,
+                                                  double g22);
 
 /**
  * Automatic sizing from the geometry of the domain being refined:
@@ -1703,8 +1781,9 @@ typedef enum cvm_cell_type {
  * @param ncells_out  receives the number of cells (offsets need ncells + 1 entries, types ncells).
  * @param nconn_out   receives the total number of vertex ids over all cells.
  * @param m           mesh handle; not NULL.
- * @param kind        CVM_ENT_CELL: the cells of the mesh's dimension (this version: its
- *                    triangles, in CVM_ENT_TRIANGLE order).
+ * @param kind        CVM_ENT_CELL: the cells of the mesh's dimension (its triangles, in
+ *                    CVM_ENT_TRIANGLE order, or tetrahedra; after cvm_mesh_quadmesh() its
+ *                    quad-dominant cells).
  * Thread-safety: may run concurrently with other read-only calls on @p m.
  * @return CVM_OK (counts 0 before triangulation)
  *         CVM_E_NULL_ARG  a pointer is NULL
@@ -1718,9 +1797,11 @@ CVM_API cvm_status cvm_mesh_count_cells_mixed(size_t *ncells_out, size_t *nconn_
 /**
  * Copy cells of several types in compressed form (as the dual cells are): cell c has
  * type types[c] (a cvm_cell_type) and the vertex ids conn[offsets[c] .. offsets[c+1]-1];
- * offsets[0] = 0 and offsets[ncells] = nconn (cvm_mesh_count_cells_mixed()). In this
- * version every cell is a CVM_CELL_TRIANGLE, in CVM_ENT_TRIANGLE order; a program
- * that reads the types works unchanged when quads and tetrahedra come.
+ * offsets[0] = 0 and offsets[ncells] = nconn (cvm_mesh_count_cells_mixed()). The cells
+ * are the CVM_CELL_TRIANGLEs in CVM_ENT_TRIANGLE order (CVM_CELL_TETRAHEDRON for a 3D
+ * mesh), or after cvm_mesh_quadmesh() its CVM_CELL_QUADs and CVM_CELL_TRIANGLEs (until a
+ * call changes the mesh); cvm_mesh_copy_cell_neighbors() and
+ * cvm_mesh_copy_cell_attributes() with CVM_ENT_CELL follow the same cells.
  *
  * @param offsets      ncells + 1 entries; NULL only with offsets_len 0.
  * @param offsets_len  capacity of offsets.
@@ -1762,7 +1843,8 @@ CVM_API cvm_status cvm_mesh_copy_neighbors(cvm_index *dst, size_t dst_len, const
  * CVM_ENT_TETRAHEDRON is reserved for the 3D kernel.
  *
  * @param dst      receives the neighbours; NULL only with dst_len 0.
- * @param dst_len  capacity in entries; >= 3 x the triangle count (this version, both kinds).
+ * @param dst_len  capacity in entries; >= 3 x the triangle count (CVM_ENT_TRIANGLE), or
+ *                 nconn of cvm_mesh_count_cells_mixed() (CVM_ENT_CELL).
  * @param m        mesh handle; not NULL.
  * @param kind     CVM_ENT_TRIANGLE or CVM_ENT_CELL.
  * Thread-safety: may run concurrently with other read-only calls on @p m.
@@ -2428,6 +2510,77 @@ CVM_API cvm_status cvm_mesh_optimise_dual(cvm_mesh *m, const cvm_sizing *sizing)
 CVM_API cvm_status cvm_mesh_generate3(cvm_mesh *m, double size);
 
 /* ------------------------------------------------------------------------ */
+/* Quad-dominant meshing                                                    */
+/* ------------------------------------------------------------------------ */
+
+/**
+ * Mesh the input domain of @p m with quadrilaterals (and a few triangles) of unit
+ * size and right angles in the metric of @p metric: an Lp-CVT under the metric
+ * (Levy and Liu 2010; Ekelschot et al., NASA Ames), then Blossom-Quad recombination
+ * (Remacle et al. 2012). Steps:
+ *   1. the input (cvm_mesh_set_points()/_set_segments() or cvm_mesh_read() of a .poly)
+ *      is triangulated as by cvm_mesh_triangulate(); its boundary must be one closed
+ *      convex polygon (collinear vertices allowed), every input point on it, no holes;
+ *   2. each boundary edge is split into n = max(1, round(L_M)) pieces of equal metric
+ *      length L_M (adaptive Gauss-Kronrod to 1e-12, Newton); those points stay fixed;
+ *   3. N interior sites are drawn from the density sqrt(det g) (N from the metric area;
+ *      a Halton sequence rotated by CVM_OPT_SEED, deterministic) and moved by L-BFGS
+ *      (liblbfgs) to a minimum of E = sum_i Int_{cell i} |M(y)(y - x_i)|_p^p dy, g = M^T M,
+ *      M = Lambda^(1/2) Q^T, with the exact gradient (the Voronoi diagram is rebuilt at
+ *      every evaluation); sites that end outside the domain are dropped;
+ *   4. the Delaunay triangulation of all sites becomes the triangles of @p m
+ *      (CVM_ENT_TRIANGLE, cvm_mesh_copy_cells(); the input points keep their vertex
+ *      numbers, then the boundary points, then the interior sites);
+ *   5. pairs of triangles are recombined into quads (CVM_OPT_QUAD_RECOMBINE,
+ *      CVM_OPT_QUAD_MIN_QUALITY). The quad-dominant cells are the mixed cells
+ *      (cvm_mesh_count_cells_mixed()/cvm_mesh_copy_cells_mixed() with CVM_ENT_CELL:
+ *      CVM_CELL_QUAD and CVM_CELL_TRIANGLE, counter-clockwise, in the order of their
+ *      first triangle); cvm_mesh_write() writes them to .vtu and .msh (other formats:
+ *      CVM_E_UNSUPPORTED).
+ * The measures of the result are reports of the run (CVM_REPORT_QUAD_*, also readable
+ * as cvm_mesh_get_measure() of the same number), since the metric is not kept.
+ * Any later call that changes the mesh (triangulate, refine, insert, weights, dual
+ * optimisation, read) drops the quads; the mixed cells are then the triangles again.
+ *
+ * @param m       mesh handle with 2D input; not NULL.
+ * @param metric  sizing handle with a metric source that gives derivatives
+ *                (cvm_sizing_set_metric_fn() with has_derivatives = 1,
+ *                cvm_sizing_set_metric_builtin(), cvm_sizing_set_metric_constant());
+ *                its scalar sources are not read. Outside the domain the metric is the
+ *                callback's value when it accepts the point, else the value at the
+ *                nearest boundary point. Read only during the call; not kept.
+ * Options:  CVM_OPT_QUAD_*, CVM_OPT_SEED, CVM_OPT_TIME_LIMIT_S, CVM_OPT_THREADS (the energy
+ *           and gradient assembly; the metric callback is then called from several
+ *           threads at once and must be reentrant), and the triangulation options of
+ *           cvm_mesh_triangulate().
+ * Stops:    the progress callback (stage CVM_STAGE_QUAD_OPTIMISE, once per L-BFGS
+ *           iteration when every_n is 1) can cancel, and CVM_OPT_TIME_LIMIT_S stops the
+ *           optimisation; the sites reached so far are then triangulated and recombined,
+ *           and the call returns CVM_INCOMPLETE_* with a valid quad-dominant mesh.
+ * Threads:  the result does not depend on CVM_OPT_THREADS.
+ * Determinism: same input, metric, options and seed give bit-identical output (except
+ *           where the time limit stops the run).
+ * Atomicity: on an error @p m holds no triangulation (as after a failed
+ *           cvm_mesh_triangulate()); its input is unchanged.
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG           m or metric is NULL
+ *         CVM_E_STATE              metric has no metric source
+ *         CVM_E_UNSUPPORTED        a 3D mesh; a domain that is not one convex polygon (holes,
+ *                                  a concave corner: the message names the vertex), an input
+ *                                  point inside the domain, segments that cross
+ *         CVM_E_ARGUMENT           the metric is not finite or not positive definite at a
+ *                                  point, refuses a point with no boundary to fall back on,
+ *                                  or gives no derivatives (the message gives the point)
+ *         CVM_E_INPUT_*            as cvm_mesh_triangulate()
+ *         CVM_E_TOO_LARGE          the metric asks for more than 1e9 sites or 2^30 boundary points
+ *         CVM_E_NOMEM
+ *         CVM_E_INTERNAL
+ *         CVM_INCOMPLETE_TIME_LIMIT, CVM_INCOMPLETE_CANCELLED
+ * @since 0.2
+ */
+CVM_API cvm_status cvm_mesh_quadmesh(cvm_mesh *m, const cvm_sizing *metric);
+
+/* ------------------------------------------------------------------------ */
 /* Quality                                                                   */
 /* ------------------------------------------------------------------------ */
 
@@ -2574,7 +2727,10 @@ typedef enum cvm_measure {
     CVM_MEASURE_GEN3_RECOVERY_DROPPED = 747, /**< placed points removed again so that every
                                                  surface triangle is a Delaunay face (builds
                                                  without TetGen; 0 with it) */
-    CVM_MEASURE_GEN3_SECONDS = 748          /**< wall time of the run, seconds (not deterministic) */
+    CVM_MEASURE_GEN3_SECONDS = 748,         /**< wall time of the run, seconds (not deterministic) */
+    /* ---- 800-899: the quad measures are reports of the last cvm_mesh_quadmesh() (the
+     * metric is not kept with the mesh): cvm_mesh_get_measure() accepts the
+     * CVM_REPORT_QUAD_* values (800-821) and gives the same numbers ---- */
 } cvm_measure;
 
 /**
@@ -2679,7 +2835,37 @@ typedef enum cvm_report {
     CVM_REPORT_GEN3_LATTICE_POINTS = 745,     /**< = CVM_MEASURE_GEN3_LATTICE_POINTS */
     CVM_REPORT_GEN3_LATTICE_LEVELS = 746,     /**< = CVM_MEASURE_GEN3_LATTICE_LEVELS */
     CVM_REPORT_GEN3_RECOVERY_DROPPED = 747,   /**< = CVM_MEASURE_GEN3_RECOVERY_DROPPED */
-    CVM_REPORT_GEN3_SECONDS = 748             /**< = CVM_MEASURE_GEN3_SECONDS */
+    CVM_REPORT_GEN3_SECONDS = 748,            /**< = CVM_MEASURE_GEN3_SECONDS */
+    /* the last cvm_mesh_quadmesh() (0 before any, and after any call that drops the quads).
+       Corner angles and edge lengths are measured in the metric: a corner's angle with g at
+       its quad's centroid, an edge's metric length sqrt(e^T g e) with g at its midpoint. */
+    CVM_REPORT_QUAD_PCT = 800,                /**< % of the cells that are quads */
+    CVM_REPORT_QUAD_AREA_PCT = 801,           /**< % of the area covered by quads */
+    CVM_REPORT_QUAD_ANGLE_DEV_MEAN_DEG = 802, /**< mean |corner - 90| over quad corners, metric */
+    CVM_REPORT_QUAD_ANGLE_DEV_P95_DEG = 803,  /**< its 95th percentile */
+    CVM_REPORT_QUAD_ANGLE_DEV_MAX_DEG = 804,  /**< its largest value */
+    CVM_REPORT_QUAD_EUCLID_ANGLE_DEV_MEAN_DEG = 805, /**< mean |corner - 90|, Euclidean */
+    CVM_REPORT_QUAD_EUCLID_ANGLE_DEV_P95_DEG = 806,  /**< its 95th percentile */
+    CVM_REPORT_QUAD_CORNERS_80_100_PCT = 807, /**< % of quads with all corners in [80, 100] deg
+                                                   (metric) */
+    CVM_REPORT_QUAD_ALIGNMENT_MEAN_DEG = 808, /**< mean angle between a quad edge and the nearest
+                                                   eigenvector of g at its midpoint, in [0, 45]
+                                                   (isotropic g: the axes) */
+    CVM_REPORT_QUAD_ALIGNMENT_P95_DEG = 809,  /**< its 95th percentile */
+    CVM_REPORT_QUAD_UNIT_EDGE_PCT = 810,      /**< % of the edges of the cells with metric length
+                                                   in [1/sqrt 2, sqrt 2] */
+    CVM_REPORT_QUAD_EDGE_DEV_MEAN = 811,      /**< mean |L_M - 1| over those edges */
+    CVM_REPORT_QUAD_MIN_SCALED_JACOBIAN = 812,/**< smallest scaled Jacobian of a quad (corner
+                                                   sine, Euclidean; 1 for a rectangle) */
+    CVM_REPORT_QUAD_ENERGY = 813,             /**< the Lp-CVT energy E at the end */
+    CVM_REPORT_QUAD_GRADIENT_INF = 814,       /**< |grad E|_inf at the end */
+    CVM_REPORT_QUAD_ITERATIONS = 815,         /**< L-BFGS iterations, over every run */
+    CVM_REPORT_QUAD_EVALUATIONS = 816,        /**< energy and gradient evaluations */
+    CVM_REPORT_QUAD_SECONDS = 817,            /**< wall time of the call (not deterministic) */
+    CVM_REPORT_QUAD_QUADS = 818,              /**< number of quads */
+    CVM_REPORT_QUAD_TRIANGLES = 819,          /**< number of triangles left */
+    CVM_REPORT_QUAD_INTERIOR_SITES = 820,     /**< interior sites kept */
+    CVM_REPORT_QUAD_BOUNDARY_SITES = 821      /**< boundary points (corners included) */
 } cvm_report;
 
 /**

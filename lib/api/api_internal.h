@@ -11,7 +11,7 @@
 #include "io/io_internal.h"
 
 /* Options live in one table; index with cvm__option_slot(). */
-#define CVM__NOPTIONS 48
+#define CVM__NOPTIONS 64
 
 #define CVM__NBIN_Q 20      /* the most bins of CVM_HIST_Q1 .. CVM_HIST_Q5 */
 /* CVM_MEASURE_Q1_MEAN_DEG .. CVM_MEASURE_Q5_MIN_BOUNDARY */
@@ -40,6 +40,18 @@ typedef struct cvm__quality_cache {
     cvm__dual_summary dual;
     double pct_outside[2];         /* CVM_MEASURE_DUAL_OUTSIDE_PCT, _OUTSIDE_BOUNDARY_PCT */
 } cvm__quality_cache;
+
+/* The quad-dominant cells of the last cvm_mesh_quadmesh() (lib/api/quadmesh.c), in the layout
+ * of cvm_mesh_copy_cells_mixed(): cell c has type types[c] and the vertex ids
+ * conn[off[c] .. off[c+1]-1]; first[c] is its first triangle in CVM_ENT_TRIANGLE order. */
+typedef struct cvm__quad_cells {
+    size_t ncell, nconn;
+    int32_t *off, *types, *conn, *first;
+    double *quality; /* per cell: a quad's 1 - max|corner - 90| / 90 in the metric; 0 for a
+                        triangle (.vtu cell data "quad_quality") */
+} cvm__quad_cells;
+
+#define CVM__NQUAD_REPORT 22 /* CVM_REPORT_QUAD_PCT .. CVM_REPORT_QUAD_BOUNDARY_SITES */
 
 /* The 3D input and mesh of a handle given points of dimension 3 (lib/api/mesh3*.c). */
 typedef struct cvm__mesh3 cvm__mesh3;
@@ -81,6 +93,10 @@ struct cvm_mesh {
 
     /* the last cvm_mesh_read() of a mesh file: CVM_REPORT_READ_FLIPS */
     double read_flips;
+    /* quad-dominant meshing (lib/api/quadmesh.c): NULL, or the cells of the last
+     * cvm_mesh_quadmesh() on the current triangles (dropped with any change to them) */
+    cvm__quad_cells *quad;
+    double quad_report[CVM__NQUAD_REPORT];
 
     /* cvm_mesh_stage_write(): files written, waiting for cvm_mesh_commit_writes() */
     cvm__write_set staged;
@@ -152,6 +168,12 @@ cvm_status cvm__cdt_fault_message(cvm__ctx *ctx, const cvm__pslg *in, cvm_status
  * hull) as the engine's triangulation input (lib/api/cdt_input.c); out
  * borrows p's arrays. */
 void cvm__mesh_cdt_input(cvm__cdt_input *out, const cvm_mesh *m, const cvm__pslg *p);
+
+/* Forget the quad cells and report of cvm_mesh_quadmesh() (quadmesh.c); a no-op without. */
+void cvm__mesh_forget_quads(cvm_mesh *m);
+/* Report which (CVM_REPORT_QUAD_PCT ..) of the last cvm_mesh_quadmesh(): CVM_OK, or
+ * CVM_E_ARGUMENT (no message) for another value. */
+cvm_status cvm__quad_report(double *out, const cvm_mesh *m, int which);
 
 /* Forget the triangulation (input kept; mesh_state.c). */
 void cvm__mesh_drop_output(cvm_mesh *m);

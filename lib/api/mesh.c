@@ -64,6 +64,7 @@ void cvm_mesh_free(cvm_mesh *m)
     cvm__free(&m->ctx, m->front_marks);
     cvm__free(&m->ctx, m->refine_unmet);
     cvm__free(&m->ctx, m->tlayer);
+    cvm__mesh_forget_quads(m);
     f = m->ctx.free_fn;
     payload = m->ctx.payload;
     f(payload, m);

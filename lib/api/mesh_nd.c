@@ -124,5 +124,5 @@ cvm_status cvm_mesh_get_report(double *out, const cvm_mesh *m, cvm_report which)
     }
     if (w >= (int)CVM_REPORT_GEN3_MATCHED_PAIRS && w <= (int)CVM_REPORT_GEN3_SECONDS)
         return cvm__mesh3_gen3_report(out, m, w);
-    return CVM_E_ARGUMENT;
+    return cvm__quad_report(out, m, w);
 }

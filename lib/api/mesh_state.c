@@ -1,5 +1,5 @@
 /* mesh_state.c - forgetting what a mesh handle computed: the whole output (triangulation,
- * input map, reports) when its input changes, or only the AFLR layer indices. */
+ * input map, reports) when its input changes, or only the AFLR layer indices or the quads. */
 #include <string.h>
 
 #include "api_internal.h"
@@ -10,6 +10,7 @@ void cvm__mesh_forget_layers(cvm_mesh *m)
     cvm__free(&m->ctx, m->tlayer);
     m->tlayer = NULL;
     m->n_tlayer = 0;
+    cvm__mesh_forget_quads(m); /* the same calls change the triangles the quads are made of */
 }
 
 void cvm__mesh_drop_output(cvm_mesh *m)
@@ -29,4 +30,20 @@ void cvm__mesh_drop_output(cvm_mesh *m)
     cvm__free(&m->ctx, m->tlayer);
     m->tlayer = NULL;
     m->n_tlayer = 0;
+    cvm__mesh_forget_quads(m);
+}
+
+void cvm__mesh_forget_quads(cvm_mesh *m)
+{
+    cvm__quad_cells *q = m->quad;
+    memset(m->quad_report, 0, sizeof m->quad_report);
+    if (!q)
+        return;
+    cvm__free(&m->ctx, q->off);
+    cvm__free(&m->ctx, q->types);
+    cvm__free(&m->ctx, q->conn);
+    cvm__free(&m->ctx, q->first);
+    cvm__free(&m->ctx, q->quality);
+    cvm__free(&m->ctx, q);
+    m->quad = NULL;
 }

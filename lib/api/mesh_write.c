@@ -129,9 +129,35 @@ static cvm_status write_to_set(cvm_mesh *m, const char *path, cvm__write_set *ws
         return cvm__error(&m->ctx, CVM_E_UNSUPPORTED, CVM_ENT_NONE, -1,
                           "cannot write %s: unknown extension (expected .vtu, .msh, .node or .svg)",
                           path);
+    if (m->quad && fmt != CVM__FMT_VTU && fmt != CVM__FMT_MSH)
+        return cvm__error(&m->ctx, CVM_E_UNSUPPORTED, CVM_ENT_NONE, -1,
+                          "cannot write %s: the quad-dominant cells of cvm_mesh_quadmesh() are "
+                          "written to .vtu and .msh only in this version", path);
     if ((s = cvm__mesh_out_build(m, &mo, fmt == CVM__FMT_NODE,
-                                 fmt == CVM__FMT_SVG || fmt == CVM__FMT_VTU)))
+                                 fmt == CVM__FMT_SVG || (fmt == CVM__FMT_VTU && !m->quad))))
         return s;
+    if (m->quad) { /* the mixed cells in place of the triangles */
+        const int32_t *tri = mo.tri;
+        const double *tlayer = mo.tlayer, *tquality = mo.tquality;
+        double *tattr = (double *)mo.tattr;
+        size_t c;
+        mo.tri = m->quad->conn;
+        mo.nt = m->quad->ncell;
+        mo.coff = m->quad->off;
+        mo.ctype = m->quad->types;
+        mo.tlayer = NULL;
+        mo.tquality = m->quad->quality;
+        mo.tquality_name = "quad_quality";
+        for (c = 0; tattr && c < m->quad->ncell; c++) /* in place: first[c] >= c */
+            tattr[c] = tattr[m->quad->first[c]];
+        mo.vtu_encoding = (int)cvm__opt(m, CVM_OPT_VTU_ENCODING);
+        s = cvm__write_file_to_set(ws, path, &mo);
+        mo.tri = tri;
+        mo.tlayer = tlayer;
+        mo.tquality = tquality;
+        cvm__mesh_out_free(m, &mo);
+        return s;
+    }
     mo.window[0] = cvm__opt(m, CVM_OPT_SVG_WINDOW_XMIN);
     mo.window[1] = cvm__opt(m, CVM_OPT_SVG_WINDOW_YMIN);
     mo.window[2] = cvm__opt(m, CVM_OPT_SVG_WINDOW_XMAX);

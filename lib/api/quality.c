@@ -76,6 +76,8 @@ cvm_status cvm_mesh_get_measure(double *out, cvm_mesh *m, cvm_measure which)
         *out = m->read_flips; /* the report of the last read of a mesh file */
         return CVM_OK;
     }
+    if (cvm__quad_report(out, m, (int)which) == CVM_OK)
+        return CVM_OK; /* the report of the last quad meshing (lib/api/quadmesh.c) */
     if (cvm__optimise_measure_needs_triangles(which))
         return (s = need_triangles(m)) ? s : cvm__optimise_measure(out, m, which);
     if (cvm__optimise_measure(out, m, which) == CVM_OK)

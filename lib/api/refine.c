@@ -225,6 +225,7 @@ cvm_status cvm_mesh_refine(cvm_mesh *m, const cvm_sizing *sizing, cvm_algorithm 
     if (!m->triangulated)
         return cvm__error(&m->ctx, CVM_E_STATE, CVM_ENT_NONE, -1,
                           "no triangulation: call cvm_mesh_triangulate() first");
+    cvm__mesh_forget_quads(m);
     if (algo != CVM_ALGO_DELAUNAY && algo != CVM_ALGO_FRONTAL && algo != CVM_ALGO_AFLR)
         return cvm__error(&m->ctx, CVM_E_ARGUMENT, CVM_ENT_NONE, -1, "unknown algorithm %d",
                           (int)algo);

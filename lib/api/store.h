@@ -128,6 +128,9 @@ void cvm__store_init(cvm_mesh *m);
 void cvm__store_destroy(cvm_mesh *m);
 /* Empty the store, keeping its memory for the next triangulation. */
 void cvm__store_clear(cvm_mesh *m);
+/* Renumber the input segment of every constrained face: seg k (0 <= k < n) becomes map[k]
+ * (a triangulation built from pieces of the input segments names them as the input does). */
+void cvm__store_remap_segments(cvm_mesh *m, const int32_t *map, size_t n);
 /* Exchange the store's triangulation with *T (same dimension and context). */
 void cvm__store_exchange_tri2(cvm_mesh *m, cvm__tri2 *T);
 /* Replace the store's triangulation by *T, built through another context of

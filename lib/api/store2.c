@@ -103,3 +103,11 @@ cvm_status cvm__store_check(cvm_mesh *m)
         return s;
     return cvm__cdt_check_chains(&m->tri, m->in.seg, m->in.nseg, m->input_map);
 }
+
+void cvm__store_remap_segments(cvm_mesh *m, const int32_t *map, size_t n)
+{
+    size_t k;
+    for (k = 0; m->tri.te && k < 3 * m->tri.nt; k++)
+        if (m->tri.te[k] >= 0 && (size_t)m->tri.te[k] < n)
+            m->tri.te[k] = map[m->tri.te[k]];
+}

@@ -20,7 +20,8 @@ enum {
     CLI_CMD_REFINE = 1u << 1,
     CLI_CMD_OPTIMISE = 1u << 2,
     CLI_CMD_TETRAHEDRALIZE = 1u << 3,
-    CLI_CMD_MESH3 = 1u << 4
+    CLI_CMD_MESH3 = 1u << 4,
+    CLI_CMD_QUAD = 1u << 5
 };
 
 /* One flag that sets a library option (flags.c holds the one table). */
@@ -211,5 +212,7 @@ int cli_tetrahedralize(int argc, char **argv);
 void cli_tetrahedralize_help(FILE *f);
 int cli_mesh3(int argc, char **argv);
 void cli_mesh3_help(FILE *f);
+int cli_quad(int argc, char **argv);
+void cli_quad_help(FILE *f);
 
 #endif

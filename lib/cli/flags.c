@@ -15,6 +15,7 @@
 #define OPT CLI_CMD_OPTIMISE
 #define TET CLI_CMD_TETRAHEDRALIZE
 #define M3 CLI_CMD_MESH3
+#define QUA CLI_CMD_QUAD
 
 static const cli_option_flag k_flags[] = {
     {"--grading", "G", CVM_OPT_GEN3_GRADING, 0, M3,
@@ -28,9 +29,9 @@ static const cli_option_flag k_flags[] = {
      "fail on crossing segments instead of splitting them"},
     {"--reject-duplicates", NULL, CVM_OPT_REJECT_DUPLICATES, 1, TRI | REF | OPT | TET | M3,
      "fail on duplicate points instead of merging them"},
-    {"--seed", "S", CVM_OPT_SEED, 0, TRI | REF | OPT | TET | M3, "seed of the random insertion order"},
-    {"--threads", "N", CVM_OPT_THREADS, 0, TRI | REF | OPT | TET | M3, "threads for parallel stages (0: OpenMP default; only optimise is parallel in 0.1)"},
-    {"--time-limit", "SECONDS", CVM_OPT_TIME_LIMIT_S, 0, TRI | REF | OPT | TET | M3, "stop the whole command after this time (0: none)"},
+    {"--seed", "S", CVM_OPT_SEED, 0, TRI | REF | OPT | TET | M3 | QUA, "seed of the random insertion order"},
+    {"--threads", "N", CVM_OPT_THREADS, 0, TRI | REF | OPT | TET | M3 | QUA, "threads for parallel stages (0: OpenMP default; only optimise is parallel in 0.1)"},
+    {"--time-limit", "SECONDS", CVM_OPT_TIME_LIMIT_S, 0, TRI | REF | OPT | TET | M3 | QUA, "stop the whole command after this time (0: none)"},
     {"--min-angle", "DEG", CVM_OPT_MIN_ANGLE_DEG, 0, REF | OPT, "smallest angle wanted (default 30)"},
     {"--max-area", "A", CVM_OPT_MAX_AREA, 0, REF | OPT, "largest triangle area (0 or negative: none, as in a .poly region)"},
     {"--max-steiner", "N", CVM_OPT_MAX_STEINER, 0, REF | OPT, "stop after adding N points (0: no limit)"},
@@ -70,8 +71,24 @@ static const cli_option_flag k_flags[] = {
      "dual optimiser: removal-trial calls after the max-min rounds (default 0: none)"},
     {"--maxmin-rounds", "N", CVM_OPT_DUAL_MAXMIN_ROUNDS, 0, OPT,
      "rounds of the dual optimiser's final max-min-angle phase (0: none; default 5)"},
-    {"--vtu-encoding", "ascii|binary|zlib", CVM_OPT_VTU_ENCODING, 0, TRI | REF | OPT,
+    {"--vtu-encoding", "ascii|binary|zlib", CVM_OPT_VTU_ENCODING, 0, TRI | REF | OPT | QUA,
      ".vtu data arrays: ascii text (default), binary (raw appended) or zlib (compressed)"},
+    {"--p", "P", CVM_OPT_QUAD_P, 0, QUA, "exponent of the Lp-CVT energy, even, 2 to 12 (default 6)"},
+    {"--recombine", "blossom|greedy|none", CVM_OPT_QUAD_RECOMBINE, 0, QUA,
+     "pairing of triangles into quads (default blossom: maximum-weight matching)"},
+    {"--min-quality", "Q", CVM_OPT_QUAD_MIN_QUALITY, 0, QUA,
+     "smallest quality of a quad formed, 1 - max|corner - 90|/90 in the metric (default 0.5)"},
+    {"--lbfgs-memory", "M", CVM_OPT_QUAD_LBFGS_MEMORY, 0, QUA, "corrections kept by L-BFGS (default 8)"},
+    {"--gradient-tol", "T", CVM_OPT_QUAD_GRADIENT_TOL, 0, QUA,
+     "stop at |grad E|_inf <= T x E / L (default 1e-10)"},
+    {"--max-iter", "N", CVM_OPT_QUAD_MAX_ITERATIONS, 0, QUA,
+     "L-BFGS iterations of each run (default 10000, 0: none)"},
+    {"--relocations", "N", CVM_OPT_QUAD_RELOCATIONS, 0, QUA,
+     "escapes from a local minimum after convergence (default 8)"},
+    {"--clip", NULL, CVM_OPT_QUAD_CLIP, 1, QUA,
+     "clip the boundary cells to the domain instead of reconstructing them"},
+    {"--cellwise-metric", NULL, CVM_OPT_QUAD_CELLWISE_METRIC, 1, QUA,
+     "the metric of each site over its whole cell (faster, exact integrals)"},
 };
 
 /* Flags whose value is a word: the word -> the option value. */
@@ -81,7 +98,10 @@ static const struct {
     double value;
 } k_words[] = {{CVM_OPT_VTU_ENCODING, "ascii", CVM_VTU_ASCII},
                {CVM_OPT_VTU_ENCODING, "binary", CVM_VTU_BINARY},
-               {CVM_OPT_VTU_ENCODING, "zlib", CVM_VTU_ZLIB}};
+               {CVM_OPT_VTU_ENCODING, "zlib", CVM_VTU_ZLIB},
+               {CVM_OPT_QUAD_RECOMBINE, "blossom", 0},
+               {CVM_OPT_QUAD_RECOMBINE, "greedy", 1},
+               {CVM_OPT_QUAD_RECOMBINE, "none", 2}};
 
 /* 1 and *v when f takes words and val is one of them. */
 static int word_value(const cli_option_flag *f, const char *val, double *v)

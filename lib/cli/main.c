@@ -24,6 +24,8 @@ static const cli_command k_commands[] = {
      cli_tetrahedralize, cli_tetrahedralize_help},
     {"mesh3", "co-volume tetrahedral mesh inside a closed surface: near field + BCC lattice",
      cli_mesh3, cli_mesh3_help},
+    {"quad", "quad-dominant mesh of a convex domain aligned with a metric (Lp-CVT + Blossom-Quad)",
+     cli_quad, cli_quad_help},
 };
 
 #define NCOMMANDS (sizeof k_commands / sizeof k_commands[0])

@@ -35,6 +35,7 @@ static const char *stage_name(cvm_stage s)
     case CVM_STAGE_REFINE: return "refining";
     case CVM_STAGE_SMOOTH: return "smoothing";
     case CVM_STAGE_OPTIMISE_DUAL: return "optimising the dual";
+    case CVM_STAGE_QUAD_OPTIMISE: return "optimising the quad sites";
     }
     return "working";
 }

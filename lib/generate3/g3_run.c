@@ -1,36 +1,11 @@
 /*
  * g3_run.c - the sequence of 3D point generation: size field, inside test,
  * near field, lattice, and (without TetGen) the check that every surface
- * triangle stays a Delaunay face. Also the growing point list.
+ * triangle stays a Delaunay face.
  */
 #include <string.h>
 
 #include "generate3/generate3.h"
-
-cvm_status cvm__g3_points_push(cvm__ctx *ctx, cvm__g3_points *P, const double *x, double dm)
-{
-    if (P->n == P->cap) {
-        size_t cap = P->cap ? 2 * P->cap : 1024;
-        double *xyz = cvm__realloc(ctx, P->xyz, 3 * cap * sizeof *xyz), *d;
-        if (!xyz)
-            return cvm__nomem(ctx);
-        P->xyz = xyz;
-        if (!(d = cvm__realloc(ctx, P->dm, cap * sizeof *d)))
-            return cvm__nomem(ctx);
-        P->dm = d;
-        P->cap = cap;
-    }
-    memcpy(P->xyz + 3 * P->n, x, 3 * sizeof *x);
-    P->dm[P->n++] = dm;
-    return CVM_OK;
-}
-
-void cvm__g3_points_free(cvm__ctx *ctx, cvm__g3_points *P)
-{
-    cvm__free(ctx, P->xyz);
-    cvm__free(ctx, P->dm);
-    memset(P, 0, sizeof *P);
-}
 
 cvm_status cvm__g3_generate(cvm__ctx *ctx, const cvm__g3_surface *s, const cvm__g3_params *p,
                             int check_faces, uint64_t seed, cvm__g3_points *out,

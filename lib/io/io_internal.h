@@ -148,8 +148,13 @@ typedef struct cvm__mesh_out {
     const int32_t *vmark;/* nv or NULL */
     const double *vattr; /* nv*nattr or NULL */
     size_t nattr;
-    const int32_t *tri;  /* 3*nt, counter-clockwise */
+    const int32_t *tri;  /* 3*nt, counter-clockwise; with coff, the ids of nt mixed cells */
     size_t nt;
+    const int32_t *coff; /* NULL, or nt+1 offsets into tri: cell t is tri[coff[t] .. coff[t+1]-1]
+                            of VTK type ctype[t] (quad-dominant cells; .vtu and .msh write
+                            them, the other writers read only triangles) */
+    const int32_t *ctype;
+    const char *tquality_name; /* the .vtu name of tquality; NULL: "min_angle_deg" */
     const double *tattr; /* nt or NULL (regional attribute) */
     const int32_t *edge; /* 2*ne or NULL: all edges (for .edge) */
     const int32_t *emark;/* ne or NULL: marker of each edge (0 interior) */

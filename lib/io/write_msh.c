@@ -65,6 +65,17 @@ static int cmp_pair(const void *a, const void *b)
     return (x[1] > y[1]) - (x[1] < y[1]);
 }
 
+/* The vertex ids of cell t and their number (triangles, or the mixed cells of mo->coff). */
+static const int32_t *cell_of(const cvm__mesh_out *mo, size_t t, size_t *n)
+{
+    if (!mo->coff) {
+        *n = 3;
+        return mo->tri + 3 * t;
+    }
+    *n = (size_t)(mo->coff[t + 1] - mo->coff[t]);
+    return mo->tri + mo->coff[t];
+}
+
 /* (min, max, curve) of a segment, for looking edges up. */
 typedef struct seg_key {
     int32_t a, b;
@@ -194,7 +205,8 @@ static cvm_status nodes_build(cvm__ctx *ctx, const cvm__mesh_out *mo, const curv
     l->block = cvm__malloc(ctx, (nv ? nv : 1) * sizeof *l->block);
     l->border = cvm__malloc(ctx, (nv ? nv : 1) * sizeof *l->border);
     keys = cvm__malloc(ctx, (mo->nseg ? mo->nseg : 1) * sizeof *keys);
-    l->bound = cvm__malloc(ctx, 2 * (3 * mo->nt + 1) * sizeof *l->bound);
+    l->bound = cvm__malloc(ctx, 2 * ((mo->coff ? (size_t)mo->coff[mo->nt] : 3 * mo->nt) + 1) *
+                                    sizeof *l->bound);
     if (!nseg || !curve || !ptag || !l->block || !l->border || !keys || !l->bound) {
         s = cvm__nomem(ctx);
         goto done;
@@ -231,9 +243,12 @@ static cvm_status nodes_build(cvm__ctx *ctx, const cvm__mesh_out *mo, const curv
     }
     for (k = 0; k < nv; k++)
         l->block[k] = SIZE_MAX;
-    for (t = mo->nt; t-- > 0;) /* the lowest triangle last: it wins */
-        for (j = 0; j < 3; j++)
-            l->block[mo->tri[3 * t + j]] = l->npoint + c->ncurve + l->tsurf[t];
+    for (t = mo->nt; t-- > 0;) { /* the lowest triangle last: it wins */
+        size_t n;
+        const int32_t *cv = cell_of(mo, t, &n);
+        for (j = 0; j < n; j++)
+            l->block[cv[j]] = l->npoint + c->ncurve + l->tsurf[t];
+    }
     for (k = 0; k < nv; k++) {
         if (ptag[k])
             l->block[k] = ptag[k] - 1;
@@ -252,9 +267,11 @@ static cvm_status nodes_build(cvm__ctx *ctx, const cvm__mesh_out *mo, const curv
     l->bstart[0] = 0;
     /* curves bounding each surface: the segments among its triangles' edges */
     l->nbound = 0;
-    for (t = 0; t < mo->nt && mo->nseg; t++)
-        for (j = 0; j < 3; j++) {
-            int32_t a = mo->tri[3 * t + j], b = mo->tri[3 * t + (j + 1) % 3];
+    for (t = 0; t < mo->nt && mo->nseg; t++) {
+        size_t n;
+        const int32_t *cv = cell_of(mo, t, &n);
+        for (j = 0; j < n; j++) {
+            int32_t a = cv[j], b = cv[(j + 1) % n];
             seg_key key, *hit;
             key.a = a < b ? a : b;
             key.b = a < b ? b : a;
@@ -265,6 +282,7 @@ static cvm_status nodes_build(cvm__ctx *ctx, const cvm__mesh_out *mo, const curv
                 l->nbound++;
             }
         }
+    }
     qsort(l->bound, l->nbound, 2 * sizeof *l->bound, cmp_pair);
     for (k = 0, j = 0; k < l->nbound; k++)
         if (j == 0 || cmp_pair(l->bound + 2 * k, l->bound + 2 * (j - 1)) != 0) {
@@ -361,8 +379,10 @@ static void entities(cvm__writer *w, const cvm__mesh_out *mo, const curves *c, c
         for (t = 0; t < mo->nt; t++) {
             if (l->tsurf[t] != i)
                 continue;
-            for (k = 0; k < 3; k++) {
-                const double *p = mo->xy + 2 * (size_t)mo->tri[3 * t + k];
+            size_t nc;
+            const int32_t *cv = cell_of(mo, t, &nc);
+            for (k = 0; k < nc; k++) {
+                const double *p = mo->xy + 2 * (size_t)cv[k];
                 if (first) {
                     lo[0] = hi[0] = p[0];
                     lo[1] = hi[1] = p[1];
@@ -426,14 +446,24 @@ static void nodes(cvm__writer *w, const cvm__mesh_out *mo, const curves *c, cons
     cvm__writer_puts(w, "$EndNodes\n");
 }
 
+/* The Gmsh type of cell t: 2 triangle, 3 quadrangle. */
+static int gmsh_type(const cvm__mesh_out *mo, size_t t)
+{
+    return mo->coff && mo->coff[t + 1] - mo->coff[t] == 4 ? 3 : 2;
+}
+
 static void elements(cvm__writer *w, const cvm__mesh_out *mo, const curves *c, const layout *l)
 {
     size_t i, j, t, s, tag = 1, total = mo->nseg + mo->nt, nsb = 0;
-    for (s = 0; s < l->nsurf; s++) {
-        for (t = 0; t < mo->nt && l->tsurf[t] != s; t++)
-            ;
-        nsb += t < mo->nt || (s == 0 && mo->nt == 0);
-    }
+    int type;
+    /* one block per surface and cell type present (triangles, then quadrangles); a mesh without
+     * cells keeps one empty triangle block */
+    for (s = 0; s < l->nsurf; s++)
+        for (type = 2; type <= 3; type++) {
+            for (t = 0; t < mo->nt && (l->tsurf[t] != s || gmsh_type(mo, t) != type); t++)
+                ;
+            nsb += t < mo->nt || (s == 0 && type == 2 && mo->nt == 0);
+        }
     cvm__writer_printf(w, "$Elements\n%lu %lu %lu %lu\n", (unsigned long)(c->ncurve + nsb),
                        (unsigned long)total, (unsigned long)(total ? 1 : 0), (unsigned long)total);
     for (i = 0; i < c->ncurve; i++) {
@@ -449,25 +479,27 @@ static void elements(cvm__writer *w, const cvm__mesh_out *mo, const curves *c, c
             cvm__writer_putc(w, '\n');
         }
     }
-    for (s = 0; s < l->nsurf; s++) {
-        size_t n = 0;
-        for (t = 0; t < mo->nt; t++)
-            n += l->tsurf[t] == s;
-        if (n == 0 && !(s == 0 && mo->nt == 0))
-            continue;
-        cvm__writer_printf(w, "2 %lu 2 %lu\n", (unsigned long)s + 1, (unsigned long)n);
-        for (t = 0; t < mo->nt; t++) {
-            const int32_t *v = mo->tri + 3 * t;
-            if (l->tsurf[t] != s)
+    for (s = 0; s < l->nsurf; s++)
+        for (type = 2; type <= 3; type++) {
+            size_t n = 0;
+            for (t = 0; t < mo->nt; t++)
+                n += l->tsurf[t] == s && gmsh_type(mo, t) == type;
+            if (n == 0 && !(s == 0 && type == 2 && mo->nt == 0))
                 continue;
-            cvm__writer_ulong(w, mo->nseg + t + 1);
-            for (j = 0; j < 3; j++) {
-                cvm__writer_putc(w, ' ');
-                cvm__writer_long(w, (long long)v[j] + 1);
+            cvm__writer_printf(w, "2 %lu %d %lu\n", (unsigned long)s + 1, type, (unsigned long)n);
+            for (t = 0; t < mo->nt; t++) {
+                size_t nc;
+                const int32_t *v = cell_of(mo, t, &nc);
+                if (l->tsurf[t] != s || gmsh_type(mo, t) != type)
+                    continue;
+                cvm__writer_ulong(w, mo->nseg + t + 1);
+                for (j = 0; j < nc; j++) {
+                    cvm__writer_putc(w, ' ');
+                    cvm__writer_long(w, (long long)v[j] + 1);
+                }
+                cvm__writer_putc(w, '\n');
             }
-            cvm__writer_putc(w, '\n');
         }
-    }
     (void)tag;
     cvm__writer_puts(w, "$EndElements\n");
 }

@@ -94,7 +94,7 @@ static void cell_data(cvm__writer *w, const cvm__mesh_out *mo)
         end_array(w);
     }
     if (mo->tquality) {
-        begin_array(w, "Float64", "min_angle_deg", 1);
+        begin_array(w, "Float64", mo->tquality_name ? mo->tquality_name : "min_angle_deg", 1);
         doubles_then_zeros(w, mo->tquality, mo->nt, mo->nseg);
         end_array(w);
     }
@@ -111,7 +111,16 @@ static void cells(cvm__writer *w, const cvm__mesh_out *mo)
     size_t t, n = mo->nt + mo->nseg;
     cvm__writer_puts(w, "      <Cells>\n");
     begin_array(w, "Int32", "connectivity", 1);
-    for (t = 0; t < 3 * mo->nt; t++) {
+    if (mo->coff) {
+        for (t = 0; t < mo->nt; t++) {
+            int32_t k;
+            for (k = mo->coff[t]; k < mo->coff[t + 1]; k++) {
+                cvm__writer_long(w, mo->tri[k]);
+                cvm__writer_putc(w, k + 1 == mo->coff[t + 1] ? '\n' : ' ');
+            }
+        }
+    }
+    for (t = 0; t < 3 * mo->nt && !mo->coff; t++) {
         cvm__writer_long(w, mo->tri[t]);
         cvm__writer_putc(w, t % 3 == 2 ? '\n' : ' ');
     }
@@ -122,14 +131,17 @@ static void cells(cvm__writer *w, const cvm__mesh_out *mo)
     end_array(w);
     begin_array(w, "Int64", "offsets", 1);
     for (t = 0; t < n; t++) {
-        cvm__writer_ulong(w, t < mo->nt ? 3 * (t + 1) : 3 * mo->nt + 2 * (t + 1 - mo->nt));
+        size_t c3 = mo->coff ? (size_t)mo->coff[mo->nt] : 3 * mo->nt;
+        cvm__writer_ulong(w, t < mo->nt ? (mo->coff ? (size_t)mo->coff[t + 1] : 3 * (t + 1))
+                                        : c3 + 2 * (t + 1 - mo->nt));
         cvm__writer_putc(w, (t + 1) % PER_LINE == 0 || t + 1 == n ? '\n' : ' ');
     }
     end_array(w);
     begin_array(w, "UInt8", "types", 1);
-    for (t = 0; t < n; t++)
-        cvm__writer_puts(w, t < mo->nt ? ((t + 1) % PER_LINE == 0 || t + 1 == n ? "5\n" : "5 ")
-                                       : ((t + 1) % PER_LINE == 0 || t + 1 == n ? "3\n" : "3 "));
+    for (t = 0; t < n; t++) {
+        cvm__writer_long(w, t < mo->nt ? (mo->coff ? mo->ctype[t] : 5) : 3);
+        cvm__writer_putc(w, (t + 1) % PER_LINE == 0 || t + 1 == n ? '\n' : ' ');
+    }
     end_array(w);
     cvm__writer_puts(w, "      </Cells>\n");
 }

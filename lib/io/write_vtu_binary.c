@@ -48,6 +48,7 @@ static void put_double(unsigned char *p, double x)
 static void gen(const cvm__mesh_out *mo, const arr *a, size_t i0, size_t n, unsigned char *dst)
 {
     size_t e, nt = mo->nt, skip = mo->weight ? 1 : 0, na = a->ncomp;
+    size_t c3 = mo->coff ? (size_t)mo->coff[nt] : 3 * nt; /* ids of the cells */
     for (e = i0; e < i0 + n; e++, dst += a->size) {
         switch (a->id) {
         case A_PMARK: put_le(dst, (uint64_t)(int64_t)(mo->vmark ? mo->vmark[e] : 0), 4); break;
@@ -60,9 +61,12 @@ static void gen(const cvm__mesh_out *mo, const arr *a, size_t i0, size_t n, unsi
         case A_TQUAL: put_double(dst, e < nt ? mo->tquality[e] : 0.0); break;
         case A_TLAYER: put_double(dst, e < nt ? mo->tlayer[e] : 0.0); break;
         case A_XYZ: put_double(dst, e % 3 == 2 ? 0.0 : mo->xy[e / 3 * 2 + e % 3]); break;
-        case A_CONN: put_le(dst, (uint64_t)(int64_t)(e < 3 * nt ? mo->tri[e] : mo->seg[e - 3 * nt]), 4); break;
-        case A_OFF: put_le(dst, e < nt ? 3 * (e + 1) : 3 * nt + 2 * (e + 1 - nt), 8); break;
-        default: *dst = e < nt ? 5 : 3; break; /* A_TYPES */
+        case A_CONN: put_le(dst, (uint64_t)(int64_t)(e < c3 ? mo->tri[e] : mo->seg[e - c3]), 4); break;
+        case A_OFF:
+            put_le(dst, e < nt ? (mo->coff ? (uint64_t)mo->coff[e + 1] : 3 * (e + 1))
+                               : c3 + 2 * (e + 1 - nt), 8);
+            break;
+        default: *dst = (unsigned char)(e < nt ? (mo->coff ? mo->ctype[e] : 5) : 3); break; /* A_TYPES */
         }
     }
 }
@@ -90,11 +94,12 @@ static size_t list_arrays(const cvm__mesh_out *mo, arr *a)
     if (mo->tattr)
         ADD(A_TATTR, "Float64", "attribute", 1, 8, nc);
     if (mo->tquality)
-        ADD(A_TQUAL, "Float64", "min_angle_deg", 1, 8, nc);
+        ADD(A_TQUAL, "Float64", mo->tquality_name ? mo->tquality_name : "min_angle_deg", 1, 8, nc);
     if (mo->tlayer)
         ADD(A_TLAYER, "Float64", "layer_index", 1, 8, nc);
     ADD(A_XYZ, "Float64", "coordinates", 3, 8, 3 * mo->nv);
-    ADD(A_CONN, "Int32", "connectivity", 1, 4, 3 * mo->nt + 2 * mo->nseg);
+    ADD(A_CONN, "Int32", "connectivity", 1, 4,
+        (mo->coff ? (size_t)mo->coff[mo->nt] : 3 * mo->nt) + 2 * mo->nseg);
     ADD(A_OFF, "Int64", "offsets", 1, 8, nc);
     ADD(A_TYPES, "UInt8", "types", 1, 1, nc);
 #undef ADD

@@ -66,7 +66,7 @@ static int progress(void *inst, const lbfgsfloatval_t *x, const lbfgsfloatval_t 
         r->converged = 1;
         return 1;
     }
-    if ((r->st = cvm__tick(r->ctx, 1, CVM_STAGE_SMOOTH, 0)) != CVM_OK)
+    if ((r->st = cvm__tick(r->ctx, 1, CVM_STAGE_QUAD_OPTIMISE, 0)) != CVM_OK)
         return 1;
     return r->o->max_iter > 0 && r->iter >= r->o->max_iter;
 }

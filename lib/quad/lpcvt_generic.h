@@ -43,6 +43,88 @@ static void CVM__G(positions)(CVM__R *pos, const CVM__R *cc, const cvm__lpcvt *L
     }
 }
 
+/* sum_{i=0..p} u^i v^(p-i) (the integral of a linear form to the power p over a triangle, up to
+ * 2 area / ((p+1)(p+2)), from its values 0, u, v at the corners: int lam1^i lam2^j = 2 |T| i! j! /
+ * (i+j+2)!); with CVM__GRAD also its derivatives in u and v. */
+static CVM__R CVM__G(hsum)(CVM__R u, CVM__R v, int p
+#if CVM__GRAD
+                           , double *du, double *dv
+#endif
+)
+{
+    CVM__R U[13], V[13], h = 0;
+    int i;
+    U[0] = V[0] = 1;
+    for (i = 1; i <= p; i++) {
+        U[i] = U[i - 1] * u;
+        V[i] = V[i - 1] * v;
+    }
+    for (i = 0; i <= p; i++)
+        h += U[i] * V[p - i];
+#if CVM__GRAD
+    *du = *dv = 0;
+    for (i = 1; i <= p; i++) {
+        *du += i * U[i - 1] * V[p - i];
+        *dv += i * V[i - 1] * U[p - i];
+    }
+#endif
+    return h;
+}
+
+/* The fan triangle (x, a, b) under one matrix Me (the metric constant over it): E in closed
+ * form, exact for every p (the quadrature's degree-p rule gives the same value up to rounding);
+ * with CVM__GRAD its derivatives, the metric-derivative term through dM at x (cellwise). */
+static cvm_status CVM__G(fan_exact)(CVM__R *e, const cvm__lpcvt *L, const CVM__R *x,
+                                    const CVM__R *a, const CVM__R *b, CVM__R area,
+                                    const CVM__R *Me
+#if CVM__GRAD
+                                    , const double *M, const double *dM, double *gx, double *ga,
+                                    double *gb
+#endif
+)
+{
+    CVM__R e1[2], e2[2], S = 0;
+    double c = 2.0 / ((L->p + 1) * (L->p + 2));
+    int k;
+#if CVM__GRAD
+    double hA[2], hB[2], dS1[2], dS2[2], dAa[2], dAb[2];
+    int m;
+#endif
+    e1[0] = a[0] - x[0];
+    e1[1] = a[1] - x[1];
+    e2[0] = b[0] - x[0];
+    e2[1] = b[1] - x[1];
+    for (k = 0; k < 2; k++) {
+        CVM__R al = Me[2 * k] * e1[0] + Me[2 * k + 1] * e1[1];
+        CVM__R be = Me[2 * k] * e2[0] + Me[2 * k + 1] * e2[1];
+        S += CVM__G(hsum)(al, be, L->p
+#if CVM__GRAD
+                          , hA + k, hB + k
+#endif
+        );
+    }
+    *e = c * area * S;
+#if CVM__GRAD
+    dAa[0] = 0.5 * e2[1];
+    dAa[1] = -0.5 * e2[0];
+    dAb[0] = -0.5 * e1[1];
+    dAb[1] = 0.5 * e1[0];
+    for (m = 0; m < 2; m++) {
+        double dMx = 0;
+        dS1[m] = hA[0] * M[m] + hA[1] * M[2 + m];
+        dS2[m] = hB[0] * M[m] + hB[1] * M[2 + m];
+        if (!L->mconst) /* M = M(x): its derivative along x_m */
+            for (k = 0; k < 2; k++)
+                dMx += hA[k] * (dM[4 * m + 2 * k] * e1[0] + dM[4 * m + 2 * k + 1] * e1[1]) +
+                       hB[k] * (dM[4 * m + 2 * k] * e2[0] + dM[4 * m + 2 * k + 1] * e2[1]);
+        ga[m] += c * (dAa[m] * S + area * dS1[m]);
+        gb[m] += c * (dAb[m] * S + area * dS2[m]);
+        gx[m] += c * (area * (dMx - dS1[m] - dS2[m]) - (dAa[m] + dAb[m]) * S);
+    }
+#endif
+    return CVM_OK;
+}
+
 /* E of the fan triangle (x, a, b) into *e; with CVM__GRAD also its derivatives added to gx, ga, gb. */
 static cvm_status CVM__G(fan)(CVM__R *e, cvm__lpcvt *L, cvm__ctx *err, const CVM__R *x,
                               const CVM__R *a, const CVM__R *b
@@ -59,7 +141,12 @@ static cvm_status CVM__G(fan)(CVM__R *e, cvm__lpcvt *L, cvm__ctx *err, const CVM
 #if CVM__GRAD
     double fy[2] = {0, 0}, fyl0[2] = {0, 0}, fyl1[2] = {0, 0}, fx[2] = {0, 0};
 #endif
-    if (L->cellwise) { /* M(x_i) for the whole cell */
+    if (L->mconst) { /* the same M everywhere: the energy of every sampling */
+        for (k = 0; k < 4; k++) {
+            M[k] = L->Mc[k];
+            Me[k] = CVM__MK(M[k], 0.0);
+        }
+    } else if (L->cellwise) { /* M(x_i) for the whole cell */
         double xr[2];
         cvm_status st;
         xr[0] = CVM__RE(x[0]);
@@ -69,12 +156,18 @@ static cvm_status CVM__G(fan)(CVM__R *e, cvm__lpcvt *L, cvm__ctx *err, const CVM
         for (k = 0; k < 4; k++)
             Me[k] = CVM__MK(M[k], CVM__IM(x[0]) * dM[k] + CVM__IM(x[1]) * dM[4 + k]);
     }
+    if (L->mconst || L->cellwise)
+        return CVM__G(fan_exact)(e, L, x, a, b, area, Me
+#if CVM__GRAD
+                                 , M, dM, gx, ga, gb
+#endif
+        );
     for (q = 0; q < L->nq; q++) {
         const double *r = L->rule[q];
         CVM__R y[2], d[2], u0, u1;
         y[0] = r[0] * x[0] + r[1] * a[0] + r[2] * b[0];
         y[1] = r[0] * x[1] + r[1] * a[1] + r[2] * b[1];
-        if (!L->cellwise) { /* M(y) at every quadrature point */
+        if (!L->cellwise && !L->mconst) { /* M(y) at every quadrature point */
             double yr[2];
             cvm_status st;
             yr[0] = CVM__RE(y[0]);

@@ -1,6 +1,7 @@
 /* lpcvt_optimise.c - the initial sites of the Lp-CVT from the metric density and their
  * optimisation by L-BFGS. */
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "quad_internal.h"
@@ -158,18 +159,34 @@ static cvm_status eval_fn(void *payload, const double *x, double *f, double *g, 
     return st;
 }
 
-/* The relocation of a local minimum (see quad_internal.h): the moving site of least cell energy
- * into the cell of most energy, or 0 when no target lies inside the domain. */
-static int relocate(cvm__lpcvt *L, double *xi)
+/* Sites ordered by cell energy, then index (a total order: qsort is not stable). */
+typedef struct by_energy {
+    double e;
+    size_t i;
+} by_energy;
+
+static int cmp_energy(const void *a, const void *b)
 {
-    size_t i, k, lo = L->nb, hi = 0;
-    double far = -1, p[2] = {0, 0};
-    for (i = L->nb; i < L->ns; i++)
-        if (L->ecell[i] < L->ecell[lo])
-            lo = i;
-    for (i = 0; i < L->ns; i++)
-        if (L->ecell[i] > L->ecell[hi])
-            hi = i;
+    const by_energy *x = (const by_energy *)a, *y = (const by_energy *)b;
+    if (x->e != y->e)
+        return x->e < y->e ? -1 : 1;
+    return x->i < y->i ? -1 : x->i > y->i;
+}
+
+/* Most energy first, then index. */
+static int cmp_energy_desc(const void *a, const void *b)
+{
+    const by_energy *x = (const by_energy *)a, *y = (const by_energy *)b;
+    if (x->e != y->e)
+        return x->e > y->e ? -1 : 1;
+    return x->i < y->i ? -1 : x->i > y->i;
+}
+
+/* Half-way from site hi to the farthest vertex of its cell into p; 0 when that is not inside. */
+static int target_in(const cvm__lpcvt *L, size_t hi, double *p)
+{
+    double far = -1;
+    size_t k;
     for (k = L->cstart[hi]; k < L->cstart[hi + 1]; k++) {
         const cvm__pvert *v = L->pv + k;
         const double *q = v->kind == CVM__PV_FIXED ? v->off : L->cc + 2 * v->t;
@@ -180,11 +197,49 @@ static int relocate(cvm__lpcvt *L, double *xi)
             p[1] = 0.5 * (q[1] + L->xy[2 * hi + 1]);
         }
     }
-    if (lo == hi || far <= 0 || !cvm__lpcvt_inside(L, p))
-        return 0;
-    xi[2 * (lo - L->nb)] = p[0];
-    xi[2 * (lo - L->nb) + 1] = p[1];
-    return 1;
+    return far > 0 && cvm__lpcvt_inside(L, p);
+}
+
+/* The relocation of a local minimum (see quad_internal.h): the nmove moving sites of least cell
+ * energy into the nmove cells of most energy (ties to the lower index; each site into one cell),
+ * or 0 when none moved. With nmove 1 a target outside the domain stops the relocations; with
+ * more the next cell is tried. ord: scratch of 2 L->ns entries. */
+static int relocate(cvm__lpcvt *L, double *xi, by_energy *ord, size_t nmove)
+{
+    by_energy *up = ord, *down = ord + L->ns;
+    size_t i, lo = 0, hi = 0, moved = 0, nm = L->ns - L->nb;
+    uint8_t *taken = L->cstat; /* per site: already moved, or already a target */
+    for (i = 0; i < L->ns; i++) {
+        up[i].e = down[i].e = L->ecell[i];
+        up[i].i = down[i].i = i;
+        taken[i] = 0;
+    }
+    qsort(up, L->ns, sizeof *up, cmp_energy);
+    qsort(down, L->ns, sizeof *down, cmp_energy_desc);
+    while (moved < nmove && moved < (nm + 1) / 2) {
+        size_t s, c;
+        double p[2];
+        while (lo < L->ns && (up[lo].i < L->nb || taken[up[lo].i]))
+            lo++;
+        while (hi < L->ns && taken[down[hi].i])
+            hi++;
+        if (lo >= L->ns || hi >= L->ns)
+            break;
+        s = up[lo].i;
+        c = down[hi++].i;
+        if (s == c)
+            break;
+        if (!target_in(L, c, p)) {
+            if (nmove == 1)
+                break;
+            continue;
+        }
+        xi[2 * (s - L->nb)] = p[0];
+        xi[2 * (s - L->nb) + 1] = p[1];
+        taken[s] = taken[c] = 1;
+        moved++;
+    }
+    return moved > 0;
 }
 
 static void add_result(cvm__lbfgs_result *sum, const cvm__lbfgs_result *r)
@@ -203,6 +258,7 @@ cvm_status cvm__lpcvt_optimise(cvm__lpcvt *L, double *xi, const cvm__lbfgs_opts 
     cvm__lbfgs_opts opt = *o;
     cvm__lbfgs_result r;
     double lo[2], hi[2], *keep, E;
+    by_energy *ord;
     size_t k, n = 2 * (L->ns - L->nb);
     int move;
     cvm_status st;
@@ -227,12 +283,18 @@ cvm_status cvm__lpcvt_optimise(cvm__lpcvt *L, double *xi, const cvm__lbfgs_opts 
         return st;
     }
     keep = cvm__malloc(L->ctx, n * sizeof *keep);
-    if (!keep)
+    ord = cvm__malloc(L->ctx, 2 * L->ns * sizeof *ord);
+    if (!keep || !ord) {
+        cvm__free(L->ctx, keep);
+        cvm__free(L->ctx, ord);
         return cvm__nomem(L->ctx);
+    }
     for (move = 0; move < o->relocations; move++) {
         memcpy(keep, xi, n * sizeof *xi);
-        /* the cell energies and polygons of the minimum */
-        if ((st = cvm__lpcvt_eval(L, xi, &E, NULL)) || !L->valid || !relocate(L, xi))
+        /* the cell energies and polygons of the minimum; one site moves per 256 moving sites, so
+         * a round is worth its re-optimisation on a large mesh */
+        if ((st = cvm__lpcvt_eval(L, xi, &E, NULL)) || !L->valid ||
+            !relocate(L, xi, ord, 1 + (n / 2) / 256))
             break;
         if ((st = cvm__lbfgs_minimise(xi, n, eval_fn, L, &opt, &r, L->ctx)) &&
             st != CVM_E_ARGUMENT)
@@ -247,6 +309,7 @@ cvm_status cvm__lpcvt_optimise(cvm__lpcvt *L, double *xi, const cvm__lbfgs_opts 
         add_result(res, &r);
     }
     cvm__free(L->ctx, keep);
+    cvm__free(L->ctx, ord);
     for (k = 0; k < n / 2; k++)
         res->outside += !cvm__lpcvt_inside(L, xi + 2 * k);
     return st;

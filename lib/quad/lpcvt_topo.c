@@ -170,6 +170,14 @@ cvm_status cvm__lpcvt_init(cvm__lpcvt *L, cvm__ctx *ctx, const cvm_sizing *s, co
         return cvm__error(ctx, CVM_E_ARGUMENT, CVM_ENT_NONE, -1,
                           "the boundary polygon is not counter-clockwise (signed area %.17g)",
                           0.5 * area);
+    if (s && s->metric == cvm__metric_builtin_fn &&
+        (((const cvm__metric_builtin *)s->metric_payload)->kind == CVM__METRIC_CONSTANT ||
+         ((const cvm__metric_builtin *)s->metric_payload)->kind == CVM__METRIC_IDENTITY)) {
+        double dM[8];
+        if ((st = cvm__metric_eval_M(&L->metric, bxy, L->Mc, dM, ctx)))
+            return st;
+        L->mconst = 1;
+    }
     if (!clip && (st = make_ghosts(L, bxy)))
         return st;
     if (clip)

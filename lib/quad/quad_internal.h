@@ -25,6 +25,7 @@
 #include "common/common_internal.h"
 #include "delaunay/delaunay_internal.h"
 #include "refine/refine_internal.h"
+#include "sizing/sizing_internal.h"
 
 /* ---- symmetric 2x2 tensors and the metric (metric.c) ---- */
 
@@ -64,11 +65,9 @@ typedef enum cvm__metric_kind {
     CVM__METRIC_SSHOCK        /* |Hessian| of 3/4 tanh(2 (sin 5y - 3x)), sizes in [0.005, 0.2],
                                  aspect <= 50 */
 } cvm__metric_kind;
-typedef struct cvm__metric_builtin {
-    cvm__metric_kind kind;
-    double scale;
-    double g[3]; /* CVM__METRIC_CONSTANT only */
-} cvm__metric_builtin;
+/* kind (a cvm__metric_kind), scale, and g (CVM__METRIC_CONSTANT only): the sizing
+ * handle's own storage type, so the handle can keep the parameters */
+typedef cvm__metric_params cvm__metric_builtin;
 /* A cvm_metric_fn (install with has_derivatives = 1) whose payload is a
  * const cvm__metric_builtin *; exact derivatives. Returns 0 (every point accepted). */
 int cvm__metric_builtin_fn(void *payload, const double *x, int dim, double *g, double *dg);
@@ -165,6 +164,9 @@ typedef struct cvm__lpcvt {
     cvm__metric metric;
     int p, clip;
     int cellwise;       /* 0: M(y) at every quadrature point (default); 1: M(x_i) over cell i */
+    int mconst;         /* 1: the metric is a constant built-in (cvm__lpcvt_init() decides): M is
+                           Mc everywhere, dM = 0, and no point is evaluated */
+    double Mc[4];
     int threads;        /* OpenMP threads of the energy and gradient (default 1; more only when the
                            metric callback may be called concurrently); same bits for any count */
     uint8_t *cstat;     /* per site: 1 when its cell failed (threaded evaluation) */
@@ -296,11 +298,24 @@ cvm_status cvm__lpcvt_initial_sites(double **xi_out, size_t *ni_out, const cvm__
  * with cvm__lbfgs_minimise(); o->length is set from the boundary's bounding box and o->step0 to
  * a quarter of the shortest boundary edge (a first step that moves no site past its
  * neighbours). Then up to
- * o->relocations times escape a local minimum: the moving site of least cell energy moves into
- * the cell of most energy (half-way from its site to its farthest polygon vertex) and the sites
- * are optimised again; the move is kept when E drops by more than 1e-9 E, else undone and the
+ * o->relocations times escape a local minimum: the 1 + m/256 moving sites of least cell energy
+ * (m moving sites) move into as many cells of most energy (half-way from its site to its
+ * farthest polygon vertex; each cell once, ties to the lower index) and the sites are optimised
+ * again; the move is kept when E drops by more than 1e-9 E, else undone and the
  * relocations stop. res sums the iterations and evaluations of every run. */
 cvm_status cvm__lpcvt_optimise(cvm__lpcvt *L, double *xi, const cvm__lbfgs_opts *o,
                                cvm__lbfgs_result *res);
+
+/* ---- measures of a quad-dominant mesh (quad_measures.c) ---- */
+
+/* The number of values of cvm__quad_measures(): CVM_REPORT_QUAD_PCT .. _MIN_SCALED_JACOBIAN. */
+#define CVM__QUAD_NMEASURES 13
+/* The measures of the mixed cells (off: ncell + 1 offsets into conn, types: CVM_CELL_QUAD or
+ * CVM_CELL_TRIANGLE, counter-clockwise ids into xy) in the metric of mt, into
+ * out[k] = the value of report CVM_REPORT_QUAD_PCT + k (see include/cvmesh.h). Plain doubles:
+ * measures, not decisions. CVM_OK, the metric's errors, CVM_E_NOMEM. */
+cvm_status cvm__quad_measures(double *out, const cvm__metric *mt, const double *xy, size_t ncell,
+                              const int32_t *off, const int32_t *types, const int32_t *conn,
+                              cvm__ctx *ctx);
 
 #endif

@@ -61,6 +61,14 @@ typedef struct cvm__background {
     int32_t *start, *items;
 } cvm__background;
 
+/* Parameters of a built-in metric field (lib/quad: cvm__metric_builtin_fn), kept in the
+ * handle by cvm_sizing_set_metric_builtin() and cvm_sizing_set_metric_constant(). */
+typedef struct cvm__metric_params {
+    int kind;     /* a cvm__metric_kind of lib/quad */
+    double scale;
+    double g[3];  /* the constant tensor */
+} cvm__metric_params;
+
 struct cvm_sizing {
     cvm__ctx ctx;
     int has_uniform;
@@ -76,6 +84,7 @@ struct cvm_sizing {
     cvm_metric_fn metric; /* cvm_sizing_set_metric_fn(); no refiner reads it yet */
     void *metric_payload;
     int metric_has_dg;
+    cvm__metric_params metric_own; /* the payload of a built-in metric the handle owns */
     int has_auto;         /* cvm_sizing_set_automatic() */
     double auto_R, auto_G;
     cvm__background *bg;  /* NULL, or cvm_sizing_set_background() */

@@ -346,6 +346,54 @@ expect_exit 1 "mesh3 a 2D input" "$CLI" mesh3 "$DOMAINS/square.poly" --size 1
 expect_one_line "mesh3 a 2D input"
 expect_exit 1 "mesh3 two regions" "$CLI" mesh3 "$D3/two_cubes.poly" --size 0.5
 expect_grep "mesh3 two regions" "$TMP/err" "unsupported"
+# ---- quad: metric-aligned quad-dominant meshes ---------------------------------
+OUT=$TMP/quad
+mkdir "$OUT"
+expect_exit 0 "quad --help" "$CLI" quad --help
+expect_grep "quad --help" "$TMP/out" "--metric SPEC"
+expect_exit 0 "quad the unit lattice" "$CLI" quad --domain-box 0,0,4,4 --metric builtin:identity \
+    -o "$OUT/box.vtu" --quality --timings
+for want in "quads                        16" "quads by count               100.00 %" \
+    "edges, L_M in [0.71,1.41]    100.00 %" "quadmesh: " "write: "; do
+    expect_grep "quad --quality" "$TMP/out" "$want"
+done
+expect_grep "quad .vtu has VTK_QUAD cells" "$OUT/box.vtu" "9 9 9 9"
+expect_exit 0 "quad a .poly, binary .vtu" "$CLI" quad "$DOMAINS/square.poly" --metric builtin:stretch:9 \
+    --p 4 --recombine greedy -o "$OUT/sq.vtu" --vtu-encoding binary --seed 3
+if [ -s "$OUT/sq.vtu" ]; then pass; else fail "quad .poly: no .vtu written"; fi
+expect_exit 0 "quad to .msh" "$CLI" quad --domain-box 0,0,4,4 --metric builtin:identity -o "$OUT/box.msh"
+if [ "$HAVE_MESHIO" -eq 1 ]; then
+    if "$PY" -c '
+import sys, meshio, numpy as np
+for path, want in ((sys.argv[1], 16.0), (sys.argv[2], 1.0)):
+    m = meshio.read(path)
+    area = 0.0
+    for c in m.cells:
+        assert c.type in ("quad", "triangle", "line"), c.type
+        if c.type == "line":
+            continue
+        p = m.points[c.data][:, :, :2]
+        q = np.roll(p, -1, axis=1)
+        a = 0.5 * (p[:, :, 0] * q[:, :, 1] - p[:, :, 1] * q[:, :, 0]).sum(axis=1)
+        assert (a > 0).all(), path
+        area += a.sum()
+    assert abs(area - want) < 1e-12 * want, (path, area)
+' "$OUT/box.vtu" "$OUT/sq.vtu" > "$OUT/meshio.log" 2>&1; then pass; else fail "quad outputs with meshio: $(tail -c 300 "$OUT/meshio.log")"; fi
+    if "$PY" -c '
+import sys, meshio
+m = meshio.read(sys.argv[1])
+q = sum(len(c.data) for c in m.cells if c.type == "quad")
+assert q == 16, q
+' "$OUT/box.msh" > "$OUT/meshio_msh.log" 2>&1; then pass; else fail "quad .msh with meshio: $(tail -c 300 "$OUT/meshio_msh.log")"; fi
+fi
+expect_exit 1 "quad to .svg (not yet)" "$CLI" quad --domain-box 0,0,2,2 --metric builtin:identity -o "$OUT/q.svg"
+expect_one_line "quad to .svg"
+expect_exit 1 "quad a non-convex domain" "$CLI" quad "$DOMAINS/annulus.poly" --metric builtin:identity:4
+expect_one_line "quad a non-convex domain"
+expect_exit 2 "quad without --metric" "$CLI" quad --domain-box 0,0,1,1
+expect_exit 2 "quad with an unknown metric" "$CLI" quad --domain-box 0,0,1,1 --metric builtin:nope
+expect_exit 2 "quad with a bad box" "$CLI" quad --domain-box 1,0,0,1 --metric builtin:identity
+expect_exit 2 "quad with a bad constant" "$CLI" quad --domain-box 0,0,1,1 --metric constant:1,2,1
 
 # ---- optimise: the power dual -------------------------------------------------
 OUT=$TMP/optimise

@@ -634,6 +634,27 @@ class Mesh:
             if own is not None:
                 own.close()
 
+    def quadmesh(self, metric: Sizing, progress: Optional[ProgressCallback] = None,
+                 every: Optional[int] = None, **options: float) -> Status:
+        """Quad-dominant mesh of the convex input domain aligned with the metric of
+        the Sizing metric (set_metric(), set_metric_builtin() or
+        set_metric_constant()): Lp-CVT sites by L-BFGS, then Blossom-Quad
+        (cvm_mesh_quadmesh()). options: quad_p, quad_recombine, quad_min_quality,
+        quad_max_iterations, ... (CVM_OPT_* names in lower case). The quads are
+        cells_mixed(); triangles stays the triangulation before recombination;
+        report('quad_pct') etc. give the quad measures. Returns the Status
+        (INCOMPLETE_* when the time limit or the callback stopped the
+        optimisation; the mesh of the sites so far is then valid)."""
+        if not hasattr(capi, "cvm_mesh_quadmesh"):
+            raise _unsupported("quad meshing is not available in this version of the "
+                               "cvmesh library (%s)" % version())
+        self.set_options(**options)
+        with contextlib.ExitStack() as stack:
+            s = stack.enter_context(metric._handle())
+            m = stack.enter_context(self._handle())
+            stack.enter_context(self._progress_installed(m, progress, every))
+            return self._finish(capi.cvm_mesh_quadmesh(m, s))
+
     def check(self) -> bool:
         """Re-verify the mesh with exact predicates; raises InternalError
         naming the failed check, else returns True."""
@@ -1348,6 +1369,23 @@ class Sizing:
         with self._handle() as s:
             capi.cvm_sizing_set_metric_fn(s, callback)
             self._metric = callback
+
+    def set_metric_builtin(self, name: Union[str, int], scale: float = 1.0) -> None:
+        """Metric source: a built-in field ('identity', 'stretch', 'saddle',
+        'sshock', or its number) times scale (1/h^2 gives edges of length h
+        where g = I), with exact derivatives; replaces any metric source."""
+        names = {"identity": 1, "stretch": 2, "saddle": 3, "sshock": 4}
+        kind = names[name.lower()] if isinstance(name, str) else int(name)
+        with self._handle() as s:
+            capi.cvm_sizing_set_metric_builtin(s, kind, float(scale))
+            self._metric = None
+
+    def set_metric_constant(self, g11: float, g12: float, g22: float) -> None:
+        """Metric source: the constant tensor (g11, g12, g22); replaces any
+        metric source."""
+        with self._handle() as s:
+            capi.cvm_sizing_set_metric_constant(s, float(g11), float(g12), float(g22))
+            self._metric = None
 
     def eval_nd(self, x: npt.ArrayLike) -> float:
         """The target size at the point x (inf when there is no scalar source)."""

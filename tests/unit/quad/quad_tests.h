@@ -47,6 +47,7 @@ TCase *quad_dunavant_tcase(void);
 TCase *quad_metric_tcase(void);
 TCase *quad_lpcvt_energy_tcase(void);
 TCase *quad_lpcvt_optimise_tcase(void);
+TCase *quad_quadmesh_tcase(void);  /* lib/api/quadmesh.c, cvm_mesh_quadmesh() */
 
 /* The boundary of the box [x0, x1] x [y0, y1] with n pieces a side, counter-clockwise from
  * (x0, y0), into xy (8 n values). */

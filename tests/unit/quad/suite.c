@@ -39,5 +39,6 @@ Suite *quad_suite(void)
     suite_add_tcase(s, quad_metric_tcase());
     suite_add_tcase(s, quad_lpcvt_energy_tcase());
     suite_add_tcase(s, quad_lpcvt_optimise_tcase());
+    suite_add_tcase(s, quad_quadmesh_tcase());
     return s;
 }

@@ -1,0 +1,506 @@
+/* quadmesh.c - cvm_mesh_quadmesh: the input's convex boundary loop, the lib/quad engine (boundary
+ * at unit metric length, Lp-CVT by L-BFGS, Blossom-Quad), the sites' triangulation into the
+ * store and the mixed cells and report onto the handle; the built-in metrics of a sizing. */
+#include <math.h>
+#include <string.h>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+#include "api_internal.h"
+#include "store.h"
+#include "geom/geom_internal.h"
+#include "quad/quad_internal.h"
+#include "quad/recombine.h"
+
+cvm_status cvm_sizing_set_metric_builtin(cvm_sizing *s, cvm_metric_builtin kind, double scale)
+{
+    if (!s)
+        return CVM_E_NULL_ARG;
+    cvm__clear_error(&s->ctx);
+    if (kind < CVM_METRIC_IDENTITY || kind > CVM_METRIC_SSHOCK)
+        return cvm__error(&s->ctx, CVM_E_ARGUMENT, CVM_ENT_NONE, -1,
+                          "unknown built-in metric %d (1 identity, 2 stretch, 3 saddle, 4 sshock)",
+                          (int)kind);
+    if (!(scale > 0) || !isfinite(scale))
+        return cvm__error(&s->ctx, CVM_E_ARGUMENT, CVM_ENT_NONE, -1,
+                          "the scale of a built-in metric must be finite and positive, got %.17g",
+                          scale);
+    memset(&s->metric_own, 0, sizeof s->metric_own);
+    /* the public numbering follows lib/quad's kinds, shifted past CVM__METRIC_CONSTANT */
+    s->metric_own.kind = (int)CVM__METRIC_IDENTITY + (int)(kind - CVM_METRIC_IDENTITY);
+    s->metric_own.scale = scale;
+    return cvm_sizing_set_metric_fn(s, cvm__metric_builtin_fn, 1, &s->metric_own);
+}
+
+cvm_status cvm_sizing_set_metric_constant(cvm_sizing *s, double g11, double g12, double g22)
+{
+    if (!s)
+        return CVM_E_NULL_ARG;
+    cvm__clear_error(&s->ctx);
+    if (!isfinite(g11) || !isfinite(g12) || !isfinite(g22))
+        return cvm__error(&s->ctx, CVM_E_INPUT_NONFINITE, CVM_ENT_NONE, -1,
+                          "the metric (%.17g, %.17g, %.17g) has a non-finite entry", g11, g12, g22);
+    if (!(g11 > 0) || !(g11 * g22 - g12 * g12 > 0))
+        return cvm__error(&s->ctx, CVM_E_ARGUMENT, CVM_ENT_NONE, -1,
+                          "the metric g11 = %.17g, g12 = %.17g, g22 = %.17g is not positive "
+                          "definite", g11, g12, g22);
+    memset(&s->metric_own, 0, sizeof s->metric_own);
+    s->metric_own.kind = (int)CVM__METRIC_CONSTANT;
+    s->metric_own.scale = 1;
+    s->metric_own.g[0] = g11;
+    s->metric_own.g[1] = g12;
+    s->metric_own.g[2] = g22;
+    return cvm_sizing_set_metric_fn(s, cvm__metric_builtin_fn, 1, &s->metric_own);
+}
+
+/* The boundary of the triangulated domain of m as one counter-clockwise loop of vertices
+ * (from the lowest vertex id): *loop_out (nv entries, on m's ctx) and, per loop edge, the
+ * input segment it lies on (*seg_out). CVM_E_UNSUPPORTED with a message when the domain is not
+ * one convex polygon with every vertex on it; CVM_E_NOMEM. */
+static cvm_status boundary_loop(cvm_mesh *m, int32_t **loop_out, int32_t **seg_out, size_t *n_out)
+{
+    size_t nv = cvm__store_nv(m), nb = 0, k, n = 0;
+    int32_t *next = cvm__malloc(&m->ctx, (nv + 1) * sizeof *next);
+    int32_t *eseg = cvm__malloc(&m->ctx, (nv + 1) * sizeof *eseg);
+    int32_t *loop = cvm__malloc(&m->ctx, (nv + 1) * sizeof *loop);
+    int32_t t, start = -1, v;
+    cvm_status s = CVM_OK;
+    *loop_out = *seg_out = NULL;
+    if (!next || !eseg || !loop) {
+        s = cvm__nomem(&m->ctx);
+        goto fail;
+    }
+    for (k = 0; k < nv; k++)
+        next[k] = -1;
+    for (t = cvm__store_next_cell(m, -1); t >= 0; t = cvm__store_next_cell(m, t)) {
+        const int32_t *tv = cvm__store_cell(m, (size_t)t);
+        int j;
+        for (j = 0; j < 3; j++) {
+            int32_t a = tv[(j + 1) % 3], b = tv[(j + 2) % 3];
+            if (cvm__store_in_domain(m, cvm__store_across(m, (size_t)t, j)))
+                continue;
+            if (next[a] >= 0) {
+                s = cvm__error(&m->ctx, CVM_E_UNSUPPORTED, CVM_ENT_VERTEX, a,
+                               "cvm_mesh_quadmesh: the domain boundary passes twice through vertex "
+                               "%ld (%.17g, %.17g): it must be one convex polygon",
+                               (long)a, cvm__store_point(m, (size_t)a)[0],
+                               cvm__store_point(m, (size_t)a)[1]);
+                goto fail;
+            }
+            next[a] = b;
+            eseg[a] = cvm__store_face_segment(m, (size_t)t, j);
+            nb++;
+            if (start < 0 || a < start)
+                start = a;
+        }
+    }
+    for (v = start; v >= 0 && n <= nb; v = next[v]) {
+        loop[n++] = v;
+        if (next[v] == start)
+            break;
+    }
+    if (start < 0 || n != nb) {
+        s = cvm__error(&m->ctx, CVM_E_UNSUPPORTED, CVM_ENT_NONE, -1,
+                       "cvm_mesh_quadmesh: the domain boundary is not one closed loop (holes or "
+                       "several parts): the quad mesher needs one convex polygon");
+        goto fail;
+    }
+    for (k = 0; k < nv; k++)
+        if (next[k] < 0) {
+            s = cvm__error(&m->ctx, CVM_E_UNSUPPORTED, CVM_ENT_VERTEX, (int64_t)k,
+                           "cvm_mesh_quadmesh: vertex %lu (%.17g, %.17g) lies inside the domain: "
+                           "the quad mesher takes only the points of the boundary polygon",
+                           (unsigned long)k, cvm__store_point(m, k)[0], cvm__store_point(m, k)[1]);
+            goto fail;
+        }
+    for (k = 0; k < n; k++) {
+        const double *a = cvm__store_point(m, (size_t)loop[(k + n - 1) % n]);
+        const double *b = cvm__store_point(m, (size_t)loop[k]);
+        const double *c = cvm__store_point(m, (size_t)loop[(k + 1) % n]);
+        if (cvm__orient2d(a, b, c) < 0) {
+            s = cvm__error(&m->ctx, CVM_E_UNSUPPORTED, CVM_ENT_VERTEX, loop[k],
+                           "cvm_mesh_quadmesh: the boundary turns right at vertex %ld "
+                           "(%.17g, %.17g): the quad mesher needs a convex domain",
+                           (long)loop[k], b[0], b[1]);
+            goto fail;
+        }
+    }
+    for (k = 0; k < n; k++)
+        next[k] = eseg[loop[k]];
+    cvm__free(&m->ctx, eseg);
+    *loop_out = loop;
+    *seg_out = next;
+    *n_out = n;
+    return CVM_OK;
+fail:
+    cvm__free(&m->ctx, next);
+    cvm__free(&m->ctx, eseg);
+    cvm__free(&m->ctx, loop);
+    return s;
+}
+
+/* The sites as the triangulation of m: the input points (so they keep their vertex numbers),
+ * the new boundary points of bxy (the loop's vertices are its corners, met in order), the
+ * interior sites xi that lie strictly inside; segments along bxy with the markers of the loop's
+ * input segments. *kept_out: interior sites kept. */
+static cvm_status build_triangulation(cvm_mesh *m, const int32_t *loop, const int32_t *lseg,
+                                      size_t nc, const double *bxy, size_t nb, const double *xi,
+                                      size_t ni, const cvm__lpcvt *L, size_t *kept_out)
+{
+    const cvm__pslg *P = &m->in;
+    size_t np = P->np, na = P->nattr, nv = cvm__store_nv(m), total, k, c = 0, nnew = 0, kept = 0;
+    int32_t *v2in = NULL, *seg = NULL, *smark = NULL, *pmark = NULL, *bid = NULL, *pseg = NULL;
+    double *xy = NULL, *pattr = NULL;
+    cvm__cdt_input in;
+    cvm__cdt_out out;
+    cvm__cdt_fault f;
+    cvm_status s;
+    total = np + nb + ni;
+    v2in = cvm__malloc(&m->ctx, (nv + 1) * sizeof *v2in);
+    bid = cvm__malloc(&m->ctx, (nb + 1) * sizeof *bid);
+    xy = cvm__malloc(&m->ctx, (2 * total + 1) * sizeof *xy);
+    seg = cvm__malloc(&m->ctx, (2 * nb + 1) * sizeof *seg);
+    smark = cvm__malloc(&m->ctx, (nb + 1) * sizeof *smark);
+    pseg = cvm__malloc(&m->ctx, (nb + 1) * sizeof *pseg);
+    pmark = cvm__malloc(&m->ctx, (total + 1) * sizeof *pmark);
+    pattr = na ? cvm__malloc(&m->ctx, (total * na + 1) * sizeof *pattr) : NULL;
+    if (!v2in || !bid || !xy || !seg || !smark || !pseg || !pmark || (na && !pattr)) {
+        s = cvm__nomem(&m->ctx);
+        goto done;
+    }
+    for (k = 0; k < nv; k++)
+        v2in[k] = -1;
+    for (k = np; k-- > 0;)
+        if (m->input_map[k] >= 0)
+            v2in[m->input_map[k]] = (int32_t)k;
+    memcpy(xy, P->xy, 2 * np * sizeof *xy);
+    for (k = 0; k < np; k++)
+        pmark[k] = P->pmark ? P->pmark[k] : 0;
+    if (na)
+        memcpy(pattr, P->pattr, np * na * sizeof *pattr);
+    /* boundary points: corner c of the loop where bxy repeats its coordinates exactly */
+    for (k = 0; k < nb; k++) {
+        const double *p = bxy + 2 * k;
+        const double *q = cvm__store_point(m, (size_t)loop[c % nc]);
+        if (c < nc && p[0] == q[0] && p[1] == q[1]) {
+            bid[k] = v2in[loop[c]];
+            c++;
+            if (bid[k] < 0) {
+                s = cvm__error(&m->ctx, CVM_E_UNSUPPORTED, CVM_ENT_VERTEX, loop[c - 1],
+                               "cvm_mesh_quadmesh: boundary vertex %ld (%.17g, %.17g) is not an "
+                               "input point (segments cross there)", (long)loop[c - 1], q[0], q[1]);
+                goto done;
+            }
+            continue;
+        }
+        {   /* a new point on the loop edge from corner c - 1 to corner c */
+            const double *a = cvm__store_point(m, (size_t)loop[(c + nc - 1) % nc]);
+            size_t id = np + nnew++, j;
+            int32_t ia = v2in[loop[(c + nc - 1) % nc]], ib = v2in[loop[c % nc]];
+            double e0 = q[0] - a[0], e1 = q[1] - a[1];
+            double tpar = (e0 * (p[0] - a[0]) + e1 * (p[1] - a[1])) / (e0 * e0 + e1 * e1);
+            bid[k] = (int32_t)id;
+            xy[2 * id] = p[0];
+            xy[2 * id + 1] = p[1];
+            pmark[id] = cvm__segment_marker(m, lseg[(c + nc - 1) % nc]);
+            for (j = 0; j < na; j++)
+                pattr[id * na + j] = (1 - tpar) * P->pattr[(size_t)ia * na + j] +
+                                     tpar * P->pattr[(size_t)ib * na + j];
+        }
+    }
+    if (c != nc) {
+        s = cvm__error(&m->ctx, CVM_E_INTERNAL, CVM_ENT_NONE, -1,
+                       "cvm_mesh_quadmesh: %lu of %lu boundary corners found among the boundary "
+                       "points", (unsigned long)c, (unsigned long)nc);
+        goto done;
+    }
+    /* segments: bxy point k to k + 1, on the loop edge of the last corner met */
+    for (k = 0, c = 0; k < nb; k++) {
+        const double *p = bxy + 2 * k;
+        const double *q = cvm__store_point(m, (size_t)loop[c % nc]);
+        if (c < nc && p[0] == q[0] && p[1] == q[1])
+            c++;
+        seg[2 * k] = bid[k];
+        seg[2 * k + 1] = bid[(k + 1) % nb];
+        pseg[k] = lseg[(c + nc - 1) % nc];
+        smark[k] = cvm__segment_marker(m, pseg[k]);
+    }
+    for (k = 0; k < ni; k++) {
+        size_t id = np + nnew + kept;
+        if (!cvm__lpcvt_inside(L, xi + 2 * k))
+            continue;
+        xy[2 * id] = xi[2 * k];
+        xy[2 * id + 1] = xi[2 * k + 1];
+        pmark[id] = 0;
+        if (na)
+            memset(pattr + id * na, 0, na * sizeof *pattr);
+        kept++;
+    }
+    memset(&in, 0, sizeof in);
+    cvm__mesh_cdt_input(&in, m, P);
+    in.xy = xy;
+    in.np = np + nnew + kept;
+    in.pmark = pmark;
+    in.pattr = pattr;
+    in.seg = seg;
+    in.nseg = nb;
+    in.smark = smark;
+    in.reject_duplicates = 0;
+    in.keep_hull = 0;
+    cvm__mesh_drop_output(m);
+    memset(&out, 0, sizeof out);
+    memset(&f, 0, sizeof f);
+    out.vmark = m->vmark;
+    out.vattr = m->vattr;
+    out.cap_vmark = m->cap_vmark;
+    out.cap_vattr = m->cap_vattr;
+    s = cvm__cdt_build(cvm__store_tri2(m), &in, &out, &f);
+    m->input_map = out.input_map;
+    m->n_dup = out.n_dup;
+    m->vmark = out.vmark;
+    m->vattr = out.vattr;
+    m->cap_vmark = out.cap_vmark;
+    m->cap_vattr = out.cap_vattr;
+    if (!s) /* the pieces name the input segments they lie on */
+        cvm__store_remap_segments(m, pseg, nb);
+    if (s)
+        s = f.kind == CVM__CDT_FAULT_NONE
+                ? s
+                : cvm__error(&m->ctx, CVM_E_INTERNAL, CVM_ENT_NONE, -1,
+                             "cvm_mesh_quadmesh: the triangulation of the sites failed (fault %d "
+                             "at item %lu)", (int)f.kind, (unsigned long)f.item);
+    *kept_out = kept;
+done:
+    cvm__free(&m->ctx, v2in);
+    cvm__free(&m->ctx, bid);
+    cvm__free(&m->ctx, xy);
+    cvm__free(&m->ctx, seg);
+    cvm__free(&m->ctx, smark);
+    cvm__free(&m->ctx, pseg);
+    cvm__free(&m->ctx, pmark);
+    cvm__free(&m->ctx, pattr);
+    return s;
+}
+
+typedef struct metric_cb {
+    const cvm__metric *mt;
+    cvm__ctx *ctx;
+} metric_cb;
+
+static int recombine_metric(double x, double y, double g[3], void *user)
+{
+    const metric_cb *cb = (const metric_cb *)user;
+    double p[2];
+    p[0] = x;
+    p[1] = y;
+    return cvm__metric_eval(cb->mt, p, g, NULL, cb->ctx) != CVM_OK;
+}
+
+/* The domain triangles of m as the mixed cells (recombined unless CVM_OPT_QUAD_RECOMBINE 2). */
+static cvm_status make_cells(cvm_mesh *m, const cvm__metric *mt)
+{
+    size_t nt = 0, k;
+    int32_t t, *tri = NULL;
+    cvm__quad_cells *q;
+    cvm__recombine_in in;
+    cvm__recombine_out out;
+    metric_cb cb;
+    int method = (int)cvm__opt(m, CVM_OPT_QUAD_RECOMBINE);
+    cvm_status s = CVM_OK;
+    memset(&out, 0, sizeof out);
+    for (t = cvm__store_next_cell(m, -1); t >= 0; t = cvm__store_next_cell(m, t))
+        nt++;
+    q = cvm__calloc(&m->ctx, 1, sizeof *q);
+    tri = cvm__malloc(&m->ctx, (3 * nt + 1) * sizeof *tri);
+    if (!q || !tri) {
+        cvm__free(&m->ctx, q);
+        cvm__free(&m->ctx, tri);
+        return cvm__nomem(&m->ctx);
+    }
+    m->quad = q;
+    k = 0;
+    for (t = cvm__store_next_cell(m, -1); t >= 0; t = cvm__store_next_cell(m, t), k++)
+        memcpy(tri + 3 * k, cvm__store_cell(m, (size_t)t), 3 * sizeof *tri);
+    if (method == 2) {
+        q->ncell = nt;
+        q->nconn = 3 * nt;
+        q->off = cvm__malloc(&m->ctx, (nt + 1) * sizeof *q->off);
+        q->types = cvm__malloc(&m->ctx, (nt + 1) * sizeof *q->types);
+        q->first = cvm__malloc(&m->ctx, (nt + 1) * sizeof *q->first);
+        q->quality = cvm__calloc(&m->ctx, nt + 1, sizeof *q->quality);
+        if (!q->off || !q->types || !q->first || !q->quality) {
+            cvm__free(&m->ctx, tri);
+            return cvm__nomem(&m->ctx);
+        }
+        for (k = 0; k <= nt; k++)
+            q->off[k] = (int32_t)(3 * k);
+        for (k = 0; k < nt; k++) {
+            q->types[k] = CVM_CELL_TRIANGLE;
+            q->first[k] = (int32_t)k;
+        }
+        q->conn = tri;
+        return CVM_OK;
+    }
+    memset(&in, 0, sizeof in);
+    cb.mt = mt;
+    cb.ctx = &m->ctx;
+    in.npts = cvm__store_nv(m);
+    in.xy = cvm__store_points(m);
+    in.ntri = nt;
+    in.tri = tri;
+    in.metric = recombine_metric;
+    in.metric_user = &cb;
+    in.min_quality = cvm__opt(m, CVM_OPT_QUAD_MIN_QUALITY);
+    in.method = method == 1 ? CVM__RECOMBINE_GREEDY : CVM__RECOMBINE_BLOSSOM;
+    s = cvm__recombine(&out, &m->ctx, &in);
+    cvm__free(&m->ctx, tri);
+    if (s)
+        return s;
+    q->ncell = out.ncell;
+    q->nconn = (size_t)out.offsets[out.ncell];
+    q->off = out.offsets;
+    q->types = out.types;
+    q->conn = out.conn;
+    q->first = cvm__malloc(&m->ctx, (out.ncell + 1) * sizeof *q->first);
+    if (q->first)
+        for (k = 0; k < out.ncell; k++)
+            q->first[k] = out.source[2 * k];
+    q->quality = out.quality;
+    cvm__free(&m->ctx, out.source);
+    cvm__free(&m->ctx, out.xy);
+    return q->first ? CVM_OK : cvm__nomem(&m->ctx);
+}
+
+static int thread_count(const cvm_mesh *m)
+{
+    int n = (int)cvm__opt(m, CVM_OPT_THREADS);
+#ifdef _OPENMP
+    if (n == 0)
+        n = omp_get_max_threads();
+#endif
+    return n < 1 ? 1 : n;
+}
+
+cvm_status cvm_mesh_quadmesh(cvm_mesh *m, const cvm_sizing *metric)
+{
+    double t0 = cvm__now(), *bxy = NULL, *xi = NULL, *corners = NULL;
+    int32_t *loop = NULL, *lseg = NULL;
+    size_t nc = 0, nb = 0, ni = 0, kept = 0, k;
+    cvm__metric mt;
+    cvm__lpcvt L;
+    cvm__lbfgs_opts o;
+    cvm__lbfgs_result res;
+    cvm_progress_fn progress_fn;
+    cvm_status s, run = CVM_OK;
+    if (!m)
+        return CVM_E_NULL_ARG;
+    CVM__BEGIN(m);
+    if (m->m3)
+        return cvm__error(&m->ctx, CVM_E_UNSUPPORTED, CVM_ENT_NONE, -1,
+                          "cvm_mesh_quadmesh() meshes 2D domains; this mesh is 3D");
+    if (!metric)
+        return cvm__error(&m->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "metric is NULL");
+    if (!cvm__sizing_has_metric(metric))
+        return cvm__error(&m->ctx, CVM_E_STATE, CVM_ENT_NONE, -1,
+                          "the sizing has no metric: set one with cvm_sizing_set_metric_fn(), "
+                          "cvm_sizing_set_metric_builtin() or cvm_sizing_set_metric_constant()");
+    memset(&L, 0, sizeof L);
+    memset(&res, 0, sizeof res);
+    if ((s = cvm_mesh_triangulate(m)) != CVM_OK)
+        return s;
+    cvm__run_begin(&m->ctx, cvm__opt(m, CVM_OPT_TIME_LIMIT_S));
+    if ((s = boundary_loop(m, &loop, &lseg, &nc)))
+        goto fail;
+    corners = cvm__malloc(&m->ctx, 2 * nc * sizeof *corners);
+    if (!corners) {
+        s = cvm__nomem(&m->ctx);
+        goto fail;
+    }
+    for (k = 0; k < nc; k++)
+        memcpy(corners + 2 * k, cvm__store_point(m, (size_t)loop[k]), 2 * sizeof *corners);
+    mt.s = metric;
+    mt.bnd = corners;
+    mt.nbnd = nc;
+    if ((s = cvm__boundary_discretise(&bxy, &nb, &mt, corners, nc, &m->ctx)) ||
+        (s = cvm__lpcvt_initial_sites(&xi, &ni, &mt, bxy, nb, (uint64_t)cvm__opt(m, CVM_OPT_SEED),
+                                      &m->ctx)) ||
+        (s = cvm__lpcvt_init(&L, &m->ctx, metric, bxy, nb, ni, (int)cvm__opt(m, CVM_OPT_QUAD_P),
+                             (int)cvm__opt(m, CVM_OPT_QUAD_CLIP))))
+        goto fail;
+    L.cellwise = cvm__opt(m, CVM_OPT_QUAD_CELLWISE_METRIC) != 0;
+    L.threads = thread_count(m);
+    cvm__lbfgs_defaults(&o);
+    o.memory = (int)cvm__opt(m, CVM_OPT_QUAD_LBFGS_MEMORY);
+    o.gtol = cvm__opt(m, CVM_OPT_QUAD_GRADIENT_TOL);
+    o.max_iter = (long)cvm__opt(m, CVM_OPT_QUAD_MAX_ITERATIONS);
+    o.relocations = (int)cvm__opt(m, CVM_OPT_QUAD_RELOCATIONS);
+    if (ni > 0) {
+        s = cvm__lpcvt_optimise(&L, xi, &o, &res);
+        if (s == CVM_INCOMPLETE_TIME_LIMIT || s == CVM_INCOMPLETE_CANCELLED) {
+            run = s; /* the sites so far make a valid mesh */
+            cvm__clear_error(&m->ctx);
+        } else if (s) {
+            goto fail;
+        }
+    }
+    /* the rest is short and is not interrupted: a stop leaves the sites reached so far */
+    progress_fn = m->ctx.progress_fn;
+    m->ctx.progress_fn = NULL;
+    cvm__run_begin(&m->ctx, 0);
+    s = build_triangulation(m, loop, lseg, nc, bxy, nb, xi, ni, &L, &kept);
+    if (!s) {
+        m->triangulated = 1;
+        m->nv_triangulated = cvm__store_nv(m);
+        s = make_cells(m, &mt);
+    }
+    if (!s)
+        s = cvm__quad_measures(m->quad_report, &mt, cvm__store_points(m), m->quad->ncell,
+                               m->quad->off, m->quad->types, m->quad->conn, &m->ctx);
+    m->ctx.progress_fn = progress_fn;
+    if (s)
+        goto fail;
+    m->quad_report[CVM_REPORT_QUAD_ENERGY - 800] = res.f;
+    m->quad_report[CVM_REPORT_QUAD_GRADIENT_INF - 800] = res.gnorm_inf;
+    m->quad_report[CVM_REPORT_QUAD_ITERATIONS - 800] = (double)res.iterations;
+    m->quad_report[CVM_REPORT_QUAD_EVALUATIONS - 800] = (double)res.evaluations;
+    for (k = 0; k < m->quad->ncell; k++)
+        m->quad_report[m->quad->types[k] == CVM_CELL_QUAD ? CVM_REPORT_QUAD_QUADS - 800
+                                                          : CVM_REPORT_QUAD_TRIANGLES - 800] += 1;
+    m->quad_report[CVM_REPORT_QUAD_INTERIOR_SITES - 800] = (double)kept;
+    m->quad_report[CVM_REPORT_QUAD_BOUNDARY_SITES - 800] = (double)nb;
+    m->quad_report[CVM_REPORT_QUAD_SECONDS - 800] = cvm__now() - t0;
+    s = run == CVM_OK ? CVM_OK
+                      : cvm__error(&m->ctx, run, CVM_ENT_NONE, -1,
+                                   "quad meshing %s after %ld L-BFGS iterations; the mesh of the "
+                                   "sites reached so far is valid",
+                                   run == CVM_INCOMPLETE_CANCELLED ? "cancelled"
+                                                                   : "stopped at the time limit",
+                                   res.iterations);
+    goto done;
+fail:
+    if (s == CVM_INCOMPLETE_TIME_LIMIT || s == CVM_INCOMPLETE_CANCELLED) {
+        /* stopped before there were sites to keep: no mesh, as a stopped triangulation */
+        s = cvm__error(&m->ctx, s, CVM_ENT_NONE, -1, "quad meshing %s before the optimisation; "
+                       "no mesh", s == CVM_INCOMPLETE_CANCELLED ? "cancelled" : "stopped at the "
+                       "time limit");
+    }
+    cvm__mesh_drop_output(m);
+done:
+    cvm__lpcvt_free(&L);
+    cvm__free(&m->ctx, bxy);
+    cvm__free(&m->ctx, xi);
+    cvm__free(&m->ctx, corners);
+    cvm__free(&m->ctx, loop);
+    cvm__free(&m->ctx, lseg);
+    return s;
+}
+
+cvm_status cvm__quad_report(double *out, const cvm_mesh *m, int which)
+{
+    if (which < (int)CVM_REPORT_QUAD_PCT || which > (int)CVM_REPORT_QUAD_BOUNDARY_SITES)
+        return CVM_E_ARGUMENT;
+    *out = m->quad_report[which - (int)CVM_REPORT_QUAD_PCT];
+    return CVM_OK;
+}
