@@ -2055,13 +2055,120 @@ CVM_API cvm_status cvm_mesh_copy_dual_cell_offsets(cvm_index *dst, size_t dst_le
  */
 CVM_API cvm_status cvm_mesh_copy_dual_cells(double *dst, size_t dst_len, const cvm_mesh *m);
 
+/* ------------------------------------------------------------------------ */
+/* The power dual as a finite-volume mesh                                   */
+/* ------------------------------------------------------------------------ */
+/* The cells of cvm_mesh_copy_dual_cells() on shared points, with the faces
+ * between them, as a finite-volume or co-volume code wants them. Points, each
+ * once: first the power vertex of every triangle (CVM_ENT_TRIANGLE order, the
+ * doubles of cvm_mesh_copy_dual_vertices()), then the power-bisector foot of
+ * every boundary edge (an edge with a domain triangle on one side only, in
+ * CVM_ENT_EDGE order), then every vertex on a boundary edge (vertex order).
+ * Triangles with the same power vertex (cocircular corners) keep a point each;
+ * their face then has length 0. Cell v is vertex v's polygon: the offsets of
+ * cvm_mesh_copy_dual_cell_offsets(), the corners as point ids
+ * (cvm_mesh_copy_dual_polygons()); point polygons[k] is the same double pair
+ * as corner k of cvm_mesh_copy_dual_cells(). Faces: first one per edge in
+ * CVM_ENT_EDGE order (face k crosses edge k; its length is
+ * cvm_mesh_copy_dual_edge_lengths()[k]), between the cells of the edge's two
+ * vertices; on a boundary edge it runs from the power vertex of the edge's
+ * triangle to the edge's foot. Then, per boundary edge (s, h), s -> h
+ * counter-clockwise around the domain (the domain on its left), in
+ * CVM_ENT_EDGE order, two boundary faces on the edge: s to the foot (cell s),
+ * the foot to h (cell h). Cell areas (cvm_mesh_copy_dual_areas()) sum to the
+ * domain area; the cells tile the domain, without overlap, when every triangle
+ * contains its power vertex (cvm_mesh_copy_dual_inside()); otherwise a cell
+ * folds over as cvm_mesh_copy_dual_cells() says (not clipped). A vertex where
+ * the domain pinches lists its own point once per fan. Each call builds the
+ * dual afresh (linear time). A 3D mesh: CVM_E_UNSUPPORTED.
+ * Thread-safety: must not run concurrently with a call that modifies @p m. */
+
 /**
- * Write the dual cells (cvm_mesh_copy_dual_cells()) as a VTK XML unstructured
- * grid (.vtu, ASCII): one VTK_POLYGON (type 7) per vertex with a non-empty
- * cell, each with its own corner points (z = 0), and cell data "vertex"
+ * Count the points, corners and faces of the finite-volume dual (0, 0, 0
+ * before triangulation). The corner count is also the last entry of
+ * cvm_mesh_copy_dual_cell_offsets().
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG     m or an output is NULL
+ *         CVM_E_UNSUPPORTED  a 3D mesh
+ *         CVM_E_TOO_LARGE    more than INT32_MAX points or corners
+ *         CVM_E_NOMEM
+ * @since 0.2
+ */
+CVM_API cvm_status cvm_mesh_count_dual(size_t *points_out, size_t *corners_out,
+                                       size_t *faces_out, const cvm_mesh *m);
+
+/**
+ * Copy the points of the finite-volume dual, 2 doubles each. Constructions:
+ * plain doubles.
+ * @param dst_len  capacity in doubles; must be >= 2 * the point count.
+ * Units:  length.
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG          m is NULL, or dst is NULL while dst_len > 0
+ *         CVM_E_UNSUPPORTED       a 3D mesh
+ *         CVM_E_BUFFER_TOO_SMALL  (nothing written)
+ *         CVM_E_TOO_LARGE, CVM_E_NOMEM
+ * @since 0.2
+ */
+CVM_API cvm_status cvm_mesh_copy_dual_points(double *dst, size_t dst_len, const cvm_mesh *m);
+
+/**
+ * Copy the corners of every cell as point ids (0-based, into
+ * cvm_mesh_copy_dual_points()), cell after cell in vertex order,
+ * counter-clockwise; cell v has the corners offsets[v] .. offsets[v+1]-1 of
+ * cvm_mesh_copy_dual_cell_offsets().
+ * @param dst_len  capacity in entries; must be >= the corner count.
+ * @return as cvm_mesh_copy_dual_points()
+ * @since 0.2
+ */
+CVM_API cvm_status cvm_mesh_copy_dual_polygons(cvm_index *dst, size_t dst_len, const cvm_mesh *m);
+
+/**
+ * Copy the face table of the finite-volume dual, 6 entries per face: cell a,
+ * cell b (-1 on a boundary face), the two vertex ids of the primal edge the
+ * face crosses (a boundary face: of the boundary edge it lies on, its own
+ * cell's vertex first), and the face's two point ids p, q (into
+ * cvm_mesh_copy_dual_points()), cell a on the left of p -> q: (q - p) turned
+ * clockwise by 90 degrees points from cell a to cell b (out of the domain on
+ * a boundary face). Cells are vertex ids; on an interior face a < b are the
+ * primal edge's vertices.
+ * @param dst_len  capacity in entries; must be >= 6 * the face count.
+ * @return as cvm_mesh_copy_dual_points()
+ * @since 0.2
+ */
+CVM_API cvm_status cvm_mesh_copy_dual_faces(cvm_index *dst, size_t dst_len, const cvm_mesh *m);
+
+/**
+ * Copy per face of cvm_mesh_copy_dual_faces() 2 doubles: the length of its
+ * primal edge and the face's own length |q - p| (the dual edge length). The
+ * co-volume flux across a face is (dual length / primal length) x the
+ * difference of the two cells' values. Measures: plain doubles.
+ * @param dst_len  capacity in doubles; must be >= 2 * the face count.
+ * Units:  length.
+ * @return as cvm_mesh_copy_dual_points()
+ * @since 0.2
+ */
+CVM_API cvm_status cvm_mesh_copy_dual_face_lengths(double *dst, size_t dst_len,
+                                                   const cvm_mesh *m);
+
+/**
+ * Write the dual cells as a VTK XML unstructured grid (.vtu, ASCII) that a
+ * finite-volume code reads directly: the points of the finite-volume dual
+ * (cvm_mesh_copy_dual_points(), z = 0, each once), one VTK_POLYGON (type 7)
+ * per vertex with a non-empty cell, its corners as point ids
+ * (cvm_mesh_copy_dual_polygons()), so VTK and ParaView see one polygon mesh
+ * whose neighbouring cells share points. The cells go by corner count, then
+ * vertex id, so meshio (which splits polygons into blocks of consecutive
+ * cells of one size) reads one "polygon" block per corner count; cell data "vertex"
  * (Int32, the vertex id), "area" (Float64, cvm_mesh_copy_dual_areas()) and
- * "weight" (Float64, the vertex weight). The file is written to a temporary
- * name and renamed, so a failure never leaves a partial file.
+ * "weight" (Float64, the vertex weight); and the face table of
+ * cvm_mesh_copy_dual_faces() as field data of nface tuples of 2: "face_cells"
+ * (Int32, the file's cell numbers of cells a and b, -1 on the boundary),
+ * "face_edge" (Int32, the primal edge's vertex ids), "face_points" (Int32, the
+ * face's two point ids) and "face_lengths" (Float64, primal edge length and
+ * face length). Since 0.2 the corners are shared and the field data is new;
+ * before, each cell repeated its own corner points. CVM_OPT_VTU_ENCODING does
+ * not apply. The file is written to a temporary name and renamed, so a
+ * failure never leaves a partial file.
  * @param path  must end in .vtu.
  * Thread-safety: must not run concurrently with any other call on @p m.
  * @return CVM_OK

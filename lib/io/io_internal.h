@@ -165,15 +165,21 @@ typedef struct cvm__mesh_out {
     int vtu_encoding;       /* .vtu data: 0 ASCII, 1 raw appended binary, 2 zlib-compressed */
 } cvm__mesh_out;
 
-/* ---- output: the power cells of a mesh (polygons), borrowed arrays ---- */
+/* ---- output: the power cells of a mesh (polygons on shared points), borrowed arrays ---- */
 typedef struct cvm__dual_out {
-    const double *xy;      /* 2*ncorner: the corners of every cell, cell after cell */
-    size_t ncorner;
+    const double *xy;      /* 2*npoint: the corner points, each once */
+    size_t npoint;
+    const int32_t *corner; /* off[ncell] point ids, cell after cell */
     const int32_t *off;    /* ncell+1: cell c has corners off[c] .. off[c+1]-1 */
     size_t ncell;
     const int32_t *vertex; /* ncell: the mesh vertex of each cell */
     const double *area;    /* ncell */
     const double *weight;  /* ncell */
+    const int32_t *face;   /* 6*nface: cell a, cell b (-1: boundary), the primal edge's two
+                              vertices, the face's two points (cell a left of p -> q) */
+    const double *flen;    /* 2*nface: primal edge length, face length */
+    size_t nface;
+    const int32_t *cell_of;/* per mesh vertex: its cell's index, or -1 (no cell) */
 } cvm__dual_out;
 
 /* Output formats, chosen by the extension of a path (case-insensitive). */
