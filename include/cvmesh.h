@@ -830,13 +830,16 @@ typedef enum cvm_option {
     CVM_OPT_SVG_WINDOW_XMAX = 602, /**< see CVM_OPT_SVG_WINDOW_XMIN */
     CVM_OPT_SVG_WINDOW_YMAX = 603, /**< see CVM_OPT_SVG_WINDOW_XMIN */
     /** Data encoding of a .vtu written by cvm_mesh_write() and cvm_mesh_stage_write():
-     *  CVM_VTU_ASCII (0, the default: text, as before), CVM_VTU_BINARY (1: one raw
-     *  <AppendedData> block, little-endian, header_type UInt64; about 3x smaller
-     *  and written at disk speed) or CVM_VTU_ZLIB (2: the same, each array in
-     *  zlib-compressed 32 KiB blocks, level 1, vtkZLibDataCompressor). Integer, bounds
-     *  [0, 2]. The arrays, names and order are the same in every encoding; VTK,
-     *  ParaView, meshio and cvm_mesh_read() read all three. Other formats and the
-     *  dual (cvm_mesh_write_dual()) ignore it. @since 0.2 */
+     *  CVM_VTU_ASCII (0: text), CVM_VTU_BINARY (1: one raw <AppendedData> block,
+     *  little-endian, header_type UInt64; about 3x smaller and written at disk
+     *  speed), CVM_VTU_ZLIB (2: the same, each array in zlib-compressed 32 KiB
+     *  blocks, level 1, vtkZLibDataCompressor) or CVM_VTU_AUTO (3, the default:
+     *  ASCII for a mesh of at most CVM_VTU_AUTO_MAX_ASCII_POINTS (1,000,000)
+     *  vertices, as before, CVM_VTU_BINARY above). Integer, bounds [0, 3]. The
+     *  arrays, names and order are the same in every encoding; VTK, ParaView,
+     *  meshio and cvm_mesh_read() read all three. Other formats, 3D meshes and
+     *  the dual (cvm_mesh_write_dual()) ignore it. @since 0.2 (value 3 and the
+     *  default 3: since 0.2 as well; before, the default was 0) */
     CVM_OPT_VTU_ENCODING = 604
 
     /* ---- 700-799: reserved for the 3D kernel ---- */
@@ -846,10 +849,15 @@ typedef enum cvm_option {
 
 /** Values of CVM_OPT_VTU_ENCODING. */
 typedef enum cvm_vtu_encoding {
-    CVM_VTU_ASCII = 0,  /**< text data arrays (the default) */
+    CVM_VTU_ASCII = 0,  /**< text data arrays */
     CVM_VTU_BINARY = 1, /**< raw appended binary data */
-    CVM_VTU_ZLIB = 2    /**< raw appended binary data in zlib-compressed blocks */
+    CVM_VTU_ZLIB = 2,   /**< raw appended binary data in zlib-compressed blocks */
+    CVM_VTU_AUTO = 3    /**< the default: ASCII up to CVM_VTU_AUTO_MAX_ASCII_POINTS
+                             vertices, CVM_VTU_BINARY above */
 } cvm_vtu_encoding;
+
+/** The most vertices of a .vtu that CVM_VTU_AUTO writes as ASCII. */
+#define CVM_VTU_AUTO_MAX_ASCII_POINTS 1000000
 
 /** Bounds of an option; the one frozen struct of the ABI. */
 typedef struct cvm_bounds {

@@ -176,6 +176,9 @@ CVMPY_OUT_SCALAR(cvm_entity, kind_out, PyLong_FromLong)
 CVMPY_OUT_SCALAR(int32_t, out, PyLong_FromLong)
 CVMPY_OUT_SCALAR(size_t, ncells_out, PyLong_FromSize_t)
 CVMPY_OUT_SCALAR(size_t, nconn_out, PyLong_FromSize_t)
+CVMPY_OUT_SCALAR(size_t, points_out, PyLong_FromSize_t)
+CVMPY_OUT_SCALAR(size_t, corners_out, PyLong_FromSize_t)
+CVMPY_OUT_SCALAR(size_t, faces_out, PyLong_FromSize_t)
 
 %{
 /* (lo, hi, default, is_integer) */

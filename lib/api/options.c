@@ -49,7 +49,7 @@ static const option_def k_options[] = {
     {CVM_OPT_SVG_WINDOW_YMIN, "SVG_WINDOW_YMIN", {-1e300, 1e300, 0, 0}},
     {CVM_OPT_SVG_WINDOW_XMAX, "SVG_WINDOW_XMAX", {-1e300, 1e300, 0, 0}},
     {CVM_OPT_SVG_WINDOW_YMAX, "SVG_WINDOW_YMAX", {-1e300, 1e300, 0, 0}},
-    {CVM_OPT_VTU_ENCODING, "VTU_ENCODING", {0, 2, 0, 1}},
+    {CVM_OPT_VTU_ENCODING, "VTU_ENCODING", {0, 3, 3, 1}},
 };
 
 #define NOPT (sizeof k_options / sizeof k_options[0])

@@ -64,8 +64,8 @@ static const cli_option_flag k_flags[] = {
      "dual optimiser: removal-trial calls after the max-min rounds (default 0: none)"},
     {"--maxmin-rounds", "N", CVM_OPT_DUAL_MAXMIN_ROUNDS, 0, OPT,
      "rounds of the dual optimiser's final max-min-angle phase (0: none; default 5)"},
-    {"--vtu-encoding", "ascii|binary|zlib", CVM_OPT_VTU_ENCODING, 0, TRI | REF | OPT,
-     ".vtu data arrays: ascii text (default), binary (raw appended) or zlib (compressed)"},
+    {"--vtu-encoding", "ascii|binary|zlib|auto", CVM_OPT_VTU_ENCODING, 0, TRI | REF | OPT,
+     ".vtu data: ascii (0), binary (1, raw appended), zlib (2) or auto (3: ascii up to 1000000 vertices, binary above)"},
 };
 
 /* Flags whose value is a word: the word -> the option value. */
@@ -75,7 +75,8 @@ static const struct {
     double value;
 } k_words[] = {{CVM_OPT_VTU_ENCODING, "ascii", CVM_VTU_ASCII},
                {CVM_OPT_VTU_ENCODING, "binary", CVM_VTU_BINARY},
-               {CVM_OPT_VTU_ENCODING, "zlib", CVM_VTU_ZLIB}};
+               {CVM_OPT_VTU_ENCODING, "zlib", CVM_VTU_ZLIB},
+               {CVM_OPT_VTU_ENCODING, "auto", CVM_VTU_AUTO}};
 
 /* 1 and *v when f takes words and val is one of them. */
 static int word_value(const cli_option_flag *f, const char *val, double *v)

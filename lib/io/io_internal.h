@@ -162,7 +162,7 @@ typedef struct cvm__mesh_out {
                                holds them too (.node writes it; .vtu writes "weight" apart) */
     const double *tlayer;   /* nt or NULL: AFLR layer index per triangle (SVG colours by it) */
     double window[4];       /* SVG view xmin, ymin, xmax, ymax; unused unless xmax > xmin, ymax > ymin */
-    int vtu_encoding;       /* .vtu data: 0 ASCII, 1 raw appended binary, 2 zlib-compressed */
+    int vtu_encoding;       /* .vtu data: cvm_vtu_encoding (3: by the vertex count) */
 } cvm__mesh_out;
 
 /* ---- output: the power cells of a mesh (polygons on shared points), borrowed arrays ---- */

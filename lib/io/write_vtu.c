@@ -138,8 +138,11 @@ static void cells(cvm__writer *w, const cvm__mesh_out *mo)
 cvm_status cvm__write_vtu(cvm__writer *w, cvm__ctx *ctx, const cvm__mesh_out *mo)
 {
     size_t v;
-    if (mo->vtu_encoding == 1 || mo->vtu_encoding == 2)
-        return cvm__write_vtu_binary(w, ctx, mo, mo->vtu_encoding == 2);
+    int enc = mo->vtu_encoding;
+    if (enc == CVM_VTU_AUTO)
+        enc = mo->nv > CVM_VTU_AUTO_MAX_ASCII_POINTS ? CVM_VTU_BINARY : CVM_VTU_ASCII;
+    if (enc == CVM_VTU_BINARY || enc == CVM_VTU_ZLIB)
+        return cvm__write_vtu_binary(w, ctx, mo, enc == CVM_VTU_ZLIB);
     cvm__writer_puts(w, "<?xml version=\"1.0\"?>\n"
                         "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
                         "  <UnstructuredGrid>\n");
