@@ -1883,6 +1883,71 @@ CVM_API cvm_status cvm_mesh_view_points_nd(const double **ptr_out, size_t *count
 CVM_API cvm_status cvm_mesh_write(cvm_mesh *m, const char *path);
 
 /* ------------------------------------------------------------------------ */
+/* Marker names                                                              */
+/* ------------------------------------------------------------------------ */
+/* A handle keeps a table of names for its markers, as Gmsh's physical names:
+ * key (dim, marker), dim 0 for point markers, 1 for segment markers, 2 for
+ * regional attributes (an integer attribute), 3 for volumes. cvm_mesh_read()
+ * of a .msh fills it from the file's $PhysicalNames (a repeated key keeps its
+ * first name; names longer than 127 bytes are cut); any other successful
+ * cvm_mesh_read() empties it. Triangulation, refinement and optimisation keep
+ * it. cvm_mesh_write() to a 2D .msh writes it back in $PhysicalNames: segment
+ * marker m > 0 is physical curve group m named by (1, m) (else "marker_m"), the
+ * surface of regional attribute A is named by (2, A) (else "region_A"), the one
+ * surface of a mesh without regional attributes by (2, 1) (else "domain");
+ * names of groups the file does not have are not written. */
+
+/**
+ * Name marker @p marker of dimension @p dim, or remove its name.
+ *
+ * @param m       mesh handle; not NULL.
+ * @param dim     0 (points), 1 (segments), 2 (regions) or 3 (volumes).
+ * @param marker  the marker (or integer regional attribute).
+ * @param name    1 to 127 bytes without control characters or double quotes (a
+ *                .msh file holds it in quotes); NULL removes the name.
+ * Ownership:    @p name is copied.
+ * Thread-safety: must not run concurrently with any other call on @p m.
+ * Atomicity:    on error the table is unchanged.
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG  m is NULL
+ *         CVM_E_ARGUMENT  dim out of range, or the name is empty, too long or holds a
+ *                         control character or a double quote (message says which)
+ *         CVM_E_NOMEM
+ * @since 0.2
+ */
+CVM_API cvm_status cvm_mesh_set_marker_name(cvm_mesh *m, int dim, int32_t marker,
+                                            const char *name);
+
+/**
+ * The name of marker @p marker of dimension @p dim, or NULL when it has none
+ * (or m is NULL). The string belongs to @p m and stays valid until the next
+ * call that changes the table (cvm_mesh_set_marker_name(), cvm_mesh_read()) or
+ * cvm_mesh_free(m).
+ * Thread-safety: may run concurrently with other read-only calls on @p m.
+ * @since 0.2
+ */
+CVM_API const char *cvm_mesh_get_marker_name(const cvm_mesh *m, int dim, int32_t marker);
+
+/**
+ * Count the named markers of @p m.
+ * @return CVM_OK, CVM_E_NULL_ARG (out or m is NULL)
+ * @since 0.2
+ */
+CVM_API cvm_status cvm_mesh_count_marker_names(size_t *out, const cvm_mesh *m);
+
+/**
+ * Copy the keys of the named markers, 2 entries each (dim, marker), sorted by
+ * dim, then marker; cvm_mesh_get_marker_name() gives each name.
+ * @param dst_len  capacity in entries; must be >= 2 * cvm_mesh_count_marker_names().
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG          m is NULL, or dst is NULL while dst_len > 0
+ *         CVM_E_BUFFER_TOO_SMALL  (nothing written)
+ * @since 0.2
+ */
+CVM_API cvm_status cvm_mesh_copy_marker_name_keys(int32_t *dst, size_t dst_len,
+                                                  const cvm_mesh *m);
+
+/* ------------------------------------------------------------------------ */
 /* Weights and the power (Voronoi) dual                                      */
 /* ------------------------------------------------------------------------ */
 /* Each vertex i carries a power weight w_i (squared length units, default 0);

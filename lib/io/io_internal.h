@@ -126,6 +126,14 @@ cvm_status cvm__read_vtk(cvm__ctx *ctx, cvm__reader *r, const char *name, cvm__v
  * physical names. The same statuses; CVM_E_UNSUPPORTED for other element
  * types or versions. */
 cvm_status cvm__read_msh(cvm__ctx *ctx, cvm__reader *r, const char *name, cvm__vtu_mesh *out);
+/* Only the $PhysicalNames of a Gmsh .msh from r (the other sections are
+ * skipped, not checked) into a fresh array *names_out of *n_out entries (NULL
+ * and 0 without names); the statuses of cvm__read_msh(). */
+cvm_status cvm__read_msh_names(cvm__ctx *ctx, cvm__reader *r, const char *name,
+                               cvm__phys_name **names_out, size_t *n_out);
+/* The same from the file at path (CVM_E_IO_OPEN too). */
+cvm_status cvm__read_msh_names_file(cvm__ctx *ctx, const char *path, cvm__phys_name **names_out,
+                                    size_t *n_out);
 /* 1 when path names a mesh file that cvm__read_mesh_file() reads (.vtu,
  * .vtk, .msh, any case). */
 int cvm__is_mesh_file(const char *path);
@@ -162,6 +170,8 @@ typedef struct cvm__mesh_out {
                                holds them too (.node writes it; .vtu writes "weight" apart) */
     const double *tlayer;   /* nt or NULL: AFLR layer index per triangle (SVG colours by it) */
     double window[4];       /* SVG view xmin, ymin, xmax, ymax; unused unless xmax > xmin, ymax > ymin */
+    const cvm__phys_name *names; /* nnames or NULL: .msh physical names by (dim, marker) */
+    size_t nnames;
     int vtu_encoding;       /* .vtu data: cvm_vtu_encoding (3: by the vertex count) */
 } cvm__mesh_out;
 

@@ -57,6 +57,7 @@ typedef struct msh {
     size_t nent, cap_ent;
     cvm__phys_name *names;
     size_t nnames, cap_names;
+    int names_only;   /* cvm__read_msh_names: skip nodes, entities and elements */
 } msh;
 
 static cvm_status fail(msh *m, size_t at, cvm_status st, const char *fmt, ...) CVM__PRINTF(4, 5);
@@ -483,6 +484,8 @@ static cvm_status sections(msh *m)
             s = mesh_format(m, at);
         } else if (strcmp(w, "$PhysicalNames") == 0) {
             s = physical_names(m, at);
+        } else if (m->names_only) {
+            s = section_end(m, w + 1, at);
         } else if (strcmp(w, "$Entities") == 0 && m->v4) {
             s = entities(m, at);
         } else if (strcmp(w, "$Nodes") == 0) {
@@ -634,4 +637,29 @@ cvm_status cvm__read_msh(cvm__ctx *ctx, cvm__reader *r, const char *name, cvm__v
     if (s)
         cvm__vtu_mesh_free(ctx, out);
     return s;
+}
+
+cvm_status cvm__read_msh_names(cvm__ctx *ctx, cvm__reader *r, const char *name,
+                               cvm__phys_name **names_out, size_t *n_out)
+{
+    msh m;
+    cvm_status s;
+    memset(&m, 0, sizeof m);
+    *names_out = NULL;
+    *n_out = 0;
+    m.f.ctx = ctx;
+    m.f.name = name;
+    m.names_only = 1;
+    if (!(s = cvm__slurp(ctx, r, name, &m.buf, &m.f.n))) {
+        m.f.buf = m.buf;
+        s = sections(&m);
+    }
+    cvm__free(ctx, m.buf);
+    if (s) {
+        cvm__free(ctx, m.names);
+        return s;
+    }
+    *names_out = m.names;
+    *n_out = m.nnames;
+    return CVM_OK;
 }
