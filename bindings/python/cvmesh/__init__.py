@@ -881,6 +881,22 @@ class Mesh:
             k = int(offsets[-1])
             return offsets, capi.cvm_mesh_copy_dual_cells(2 * k, m).reshape(k, 2)
 
+    @property
+    def marker_names(self) -> Dict[Tuple[int, int], str]:
+        """{(dim, marker): name}: the names of the markers (Gmsh physical names;
+        dim 0 points, 1 segments, 2 regions), read from a .msh and written back
+        to one. See cvm_mesh_set_marker_name()."""
+        with self._handle() as m:
+            n = capi.cvm_mesh_count_marker_names(m)
+            keys = capi.cvm_mesh_copy_marker_name_keys(2 * n, m).reshape(n, 2)
+            return {(int(d), int(k)): capi.cvm_mesh_get_marker_name(m, int(d), int(k))
+                    for d, k in keys}
+
+    def set_marker_name(self, dim: int, marker: int, name: Optional[str]) -> None:
+        """Name marker `marker` of dimension `dim` (None removes the name)."""
+        with self._handle() as m:
+            capi.cvm_mesh_set_marker_name(m, dim, marker, name)
+
     def dual(self) -> "DualMesh":
         """The power (Voronoi) dual as a finite-volume mesh (cvm_mesh_copy_dual_points()
         and the calls after it in cvmesh.h): a DualMesh of numpy arrays. points
