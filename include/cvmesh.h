@@ -1859,7 +1859,8 @@ CVM_API cvm_status cvm_mesh_view_points_nd(const double **ptr_out, size_t *count
  * (regional, with regions) and "min_angle_deg" (0 on a line); ASCII, or
  * binary appended data as CVM_OPT_VTU_ENCODING says; cvm_mesh_read()
  * reads it back), .msh (Gmsh 4.1 ASCII, segments tagged by
- * marker as physical groups), .node (writes PREFIX.node, PREFIX.ele and
+ * marker as physical groups, named from the marker names (see "Marker
+ * names")), .node (writes PREFIX.node, PREFIX.ele and
  * PREFIX.edge beside each other, 0-based), .svg (a picture).
  * A 3D mesh: .vtu (VTK_TETRA cells, cell data "attribute" with regions), .msh
  * (Gmsh 4.1: tetrahedra in one volume per regional attribute, boundary
