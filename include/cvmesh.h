@@ -2139,14 +2139,14 @@ CVM_API cvm_status cvm_mesh_copy_dual_cells(double *dst, size_t dst_len, const c
  * every boundary edge (an edge with a domain triangle on one side only, in
  * CVM_ENT_EDGE order), then every vertex on a boundary edge (vertex order).
  * Triangles with the same power vertex (cocircular corners) keep a point each;
- * their face then has length 0. Cell v is vertex v's polygon: the offsets of
+ * their face then has length 0 (up to rounding). Cell v is vertex v's polygon: the offsets of
  * cvm_mesh_copy_dual_cell_offsets(), the corners as point ids
  * (cvm_mesh_copy_dual_polygons()); point polygons[k] is the same double pair
  * as corner k of cvm_mesh_copy_dual_cells(). Faces: first one per edge in
- * CVM_ENT_EDGE order (face k crosses edge k; its length is
+ * CVM_ENT_EDGE order (face k is the dual of edge k; its length is
  * cvm_mesh_copy_dual_edge_lengths()[k]), between the cells of the edge's two
- * vertices; on a boundary edge it runs from the power vertex of the edge's
- * triangle to the edge's foot. Then, per boundary edge (s, h), s -> h
+ * vertices; on a boundary edge it joins the power vertex of the edge's
+ * triangle and the edge's foot. Then, per boundary edge (s, h), s -> h
  * counter-clockwise around the domain (the domain on its left), in
  * CVM_ENT_EDGE order, two boundary faces on the edge: s to the foot (cell s),
  * the foot to h (cell h). Cell areas (cvm_mesh_copy_dual_areas()) sum to the

@@ -203,7 +203,7 @@ cvm_status cvm__dual_cells(cvm__ctx *ctx, const cvm__tri2 *T, int32_t *off, doub
  * same doubles). Faces, 6 ints each: cell a, cell b (-1 on the boundary), the
  * primal edge (its two vertices), the face's two points p, q, cell a on the
  * left of p -> q; first one per domain edge in edge order (a < b its
- * vertices; on a boundary edge the face from the foot to the power vertex),
+ * vertices; on a boundary edge the face joins the foot and the power vertex),
  * then per boundary edge (s, h) counter-clockwise around the domain two
  * boundary faces: (s, -1, s, h, s, foot) and (h, -1, h, s, foot, h). flen, 2
  * per face: the primal edge length and the face length (plain doubles). */
