@@ -126,9 +126,10 @@ cvm_status cvm__read_vtk(cvm__ctx *ctx, cvm__reader *r, const char *name, cvm__v
  * physical names. The same statuses; CVM_E_UNSUPPORTED for other element
  * types or versions. */
 cvm_status cvm__read_msh(cvm__ctx *ctx, cvm__reader *r, const char *name, cvm__vtu_mesh *out);
-/* Only the $PhysicalNames of a Gmsh .msh from r (the other sections are
- * skipped, not checked) into a fresh array *names_out of *n_out entries (NULL
- * and 0 without names); the statuses of cvm__read_msh(). */
+/* The $PhysicalNames of a Gmsh .msh from r into a fresh array *names_out of
+ * *n_out entries (NULL and 0 without names): the whole file is parsed by
+ * cvm__read_msh(), so this succeeds exactly when it does (faults aside); its
+ * statuses. */
 cvm_status cvm__read_msh_names(cvm__ctx *ctx, cvm__reader *r, const char *name,
                                cvm__phys_name **names_out, size_t *n_out);
 /* The same from the file at path (CVM_E_IO_OPEN too). */

@@ -57,7 +57,6 @@ typedef struct msh {
     size_t nent, cap_ent;
     cvm__phys_name *names;
     size_t nnames, cap_names;
-    int names_only;   /* cvm__read_msh_names: skip nodes, entities and elements */
 } msh;
 
 static cvm_status fail(msh *m, size_t at, cvm_status st, const char *fmt, ...) CVM__PRINTF(4, 5);
@@ -484,8 +483,6 @@ static cvm_status sections(msh *m)
             s = mesh_format(m, at);
         } else if (strcmp(w, "$PhysicalNames") == 0) {
             s = physical_names(m, at);
-        } else if (m->names_only) {
-            s = section_end(m, w + 1, at);
         } else if (strcmp(w, "$Entities") == 0 && m->v4) {
             s = entities(m, at);
         } else if (strcmp(w, "$Nodes") == 0) {
@@ -642,24 +639,16 @@ cvm_status cvm__read_msh(cvm__ctx *ctx, cvm__reader *r, const char *name, cvm__v
 cvm_status cvm__read_msh_names(cvm__ctx *ctx, cvm__reader *r, const char *name,
                                cvm__phys_name **names_out, size_t *n_out)
 {
-    msh m;
-    cvm_status s;
-    memset(&m, 0, sizeof m);
+    cvm__vtu_mesh vm;
+    cvm_status s = cvm__read_msh(ctx, r, name, &vm);
     *names_out = NULL;
     *n_out = 0;
-    m.f.ctx = ctx;
-    m.f.name = name;
-    m.names_only = 1;
-    if (!(s = cvm__slurp(ctx, r, name, &m.buf, &m.f.n))) {
-        m.f.buf = m.buf;
-        s = sections(&m);
-    }
-    cvm__free(ctx, m.buf);
-    if (s) {
-        cvm__free(ctx, m.names);
+    if (s)
         return s;
-    }
-    *names_out = m.names;
-    *n_out = m.nnames;
+    *names_out = vm.names;
+    *n_out = vm.nnames;
+    vm.names = NULL;
+    vm.nnames = 0;
+    cvm__vtu_mesh_free(ctx, &vm);
     return CVM_OK;
 }

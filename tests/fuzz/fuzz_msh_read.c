@@ -7,8 +7,8 @@
  * finite coordinates, triangle and line indices in range, weights finite;
  * when it is small, it is rebuilt through cvm_mesh_read() of a temporary
  * file, which must give a mesh that passes cvm_mesh_check() or an error
- * with a message. The names-only pass of cvm_mesh_read() runs on the same
- * bytes and faults.
+ * with a message. The names pass of cvm_mesh_read() runs on the same bytes
+ * and faults.
  */
 #include <math.h>
 #include <stdint.h>
@@ -76,8 +76,9 @@ static void rebuild(const uint8_t *data, size_t size)
     cvm_mesh_free(m);
 }
 
-/* The names-only pass of cvm_mesh_read() (cvm__read_msh_names), with the same
- * faults: a status with a message, or names that the full read (full_ok) agrees on. */
+/* The names pass of cvm_mesh_read() (cvm__read_msh_names), with the same
+ * faults: a status with a message, or the names; it fails only where the full
+ * read (full_ok) failed, or by an injected fault. */
 static void names_only(const uint8_t *data, size_t size, int full_ok)
 {
     cvm__ctx ctx;
