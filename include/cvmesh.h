@@ -843,13 +843,16 @@ typedef enum cvm_option {
     CVM_OPT_SVG_WINDOW_XMAX = 602, /**< see CVM_OPT_SVG_WINDOW_XMIN */
     CVM_OPT_SVG_WINDOW_YMAX = 603, /**< see CVM_OPT_SVG_WINDOW_XMIN */
     /** Data encoding of a .vtu written by cvm_mesh_write() and cvm_mesh_stage_write():
-     *  CVM_VTU_ASCII (0, the default: text, as before), CVM_VTU_BINARY (1: one raw
-     *  <AppendedData> block, little-endian, header_type UInt64; about 3x smaller
-     *  and written at disk speed) or CVM_VTU_ZLIB (2: the same, each array in
-     *  zlib-compressed 32 KiB blocks, level 1, vtkZLibDataCompressor). Integer, bounds
-     *  [0, 2]. The arrays, names and order are the same in every encoding; VTK,
-     *  ParaView, meshio and cvm_mesh_read() read all three. Other formats and the
-     *  dual (cvm_mesh_write_dual()) ignore it. @since 0.2 */
+     *  CVM_VTU_ASCII (0: text), CVM_VTU_BINARY (1: one raw <AppendedData> block,
+     *  little-endian, header_type UInt64; about 3x smaller and written at disk
+     *  speed), CVM_VTU_ZLIB (2: the same, each array in zlib-compressed 32 KiB
+     *  blocks, level 1, vtkZLibDataCompressor) or CVM_VTU_AUTO (3, the default:
+     *  ASCII for a mesh of at most CVM_VTU_AUTO_MAX_ASCII_POINTS (1,000,000)
+     *  vertices, as before, CVM_VTU_BINARY above). Integer, bounds [0, 3]. The
+     *  arrays, names and order are the same in every encoding; VTK, ParaView,
+     *  meshio and cvm_mesh_read() read all three. Other formats, 3D meshes and
+     *  the dual (cvm_mesh_write_dual()) ignore it. @since 0.2 (value 3 and the
+     *  default 3: since 0.2 as well; before, the default was 0) */
     CVM_OPT_VTU_ENCODING = 604,
 
     /* ---- 700-799: reserved for the 3D kernel ---- */
@@ -916,10 +919,15 @@ typedef enum cvm_gen3_freespace {
 
 /** Values of CVM_OPT_VTU_ENCODING. */
 typedef enum cvm_vtu_encoding {
-    CVM_VTU_ASCII = 0,  /**< text data arrays (the default) */
+    CVM_VTU_ASCII = 0,  /**< text data arrays */
     CVM_VTU_BINARY = 1, /**< raw appended binary data */
-    CVM_VTU_ZLIB = 2    /**< raw appended binary data in zlib-compressed blocks */
+    CVM_VTU_ZLIB = 2,   /**< raw appended binary data in zlib-compressed blocks */
+    CVM_VTU_AUTO = 3    /**< the default: ASCII up to CVM_VTU_AUTO_MAX_ASCII_POINTS
+                             vertices, CVM_VTU_BINARY above */
 } cvm_vtu_encoding;
+
+/** The most vertices of a .vtu that CVM_VTU_AUTO writes as ASCII. */
+#define CVM_VTU_AUTO_MAX_ASCII_POINTS 1000000
 
 /** Bounds of an option; the one frozen struct of the ABI. */
 typedef struct cvm_bounds {
@@ -1974,7 +1982,8 @@ CVM_API cvm_status cvm_mesh_view_points_nd(const double **ptr_out, size_t *count
  * (regional, with regions) and "min_angle_deg" (0 on a line); ASCII, or
  * binary appended data as CVM_OPT_VTU_ENCODING says; cvm_mesh_read()
  * reads it back), .msh (Gmsh 4.1 ASCII, segments tagged by
- * marker as physical groups), .node (writes PREFIX.node, PREFIX.ele and
+ * marker as physical groups, named from the marker names (see "Marker
+ * names")), .node (writes PREFIX.node, PREFIX.ele and
  * PREFIX.edge beside each other, 0-based), .svg (a picture).
  * A 3D mesh: .vtu (VTK_TETRA cells, cell data "attribute" with regions), .msh
  * (Gmsh 4.1: tetrahedra in one volume per regional attribute, boundary
@@ -1996,6 +2005,71 @@ CVM_API cvm_status cvm_mesh_view_points_nd(const double **ptr_out, size_t *count
  * @since 0.1
  */
 CVM_API cvm_status cvm_mesh_write(cvm_mesh *m, const char *path);
+
+/* ------------------------------------------------------------------------ */
+/* Marker names                                                              */
+/* ------------------------------------------------------------------------ */
+/* A handle keeps a table of names for its markers, as Gmsh's physical names:
+ * key (dim, marker), dim 0 for point markers, 1 for segment markers, 2 for
+ * regional attributes (an integer attribute), 3 for volumes. cvm_mesh_read()
+ * of a .msh fills it from the file's $PhysicalNames (a repeated key keeps its
+ * first name; names longer than 127 bytes are cut); any other successful
+ * cvm_mesh_read() empties it. Triangulation, refinement and optimisation keep
+ * it. cvm_mesh_write() to a 2D .msh writes it back in $PhysicalNames: segment
+ * marker m > 0 is physical curve group m named by (1, m) (else "marker_m"), the
+ * surface of regional attribute A is named by (2, A) (else "region_A"), the one
+ * surface of a mesh without regional attributes by (2, 1) (else "domain");
+ * names of groups the file does not have are not written. */
+
+/**
+ * Name marker @p marker of dimension @p dim, or remove its name.
+ *
+ * @param m       mesh handle; not NULL.
+ * @param dim     0 (points), 1 (segments), 2 (regions) or 3 (volumes).
+ * @param marker  the marker (or integer regional attribute).
+ * @param name    1 to 127 bytes without control characters or double quotes (a
+ *                .msh file holds it in quotes); NULL removes the name.
+ * Ownership:    @p name is copied.
+ * Thread-safety: must not run concurrently with any other call on @p m.
+ * Atomicity:    on error the table is unchanged.
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG  m is NULL
+ *         CVM_E_ARGUMENT  dim out of range, or the name is empty, too long or holds a
+ *                         control character or a double quote (message says which)
+ *         CVM_E_NOMEM
+ * @since 0.2
+ */
+CVM_API cvm_status cvm_mesh_set_marker_name(cvm_mesh *m, int dim, int32_t marker,
+                                            const char *name);
+
+/**
+ * The name of marker @p marker of dimension @p dim, or NULL when it has none
+ * (or m is NULL). The string belongs to @p m and stays valid until the next
+ * call that changes the table (cvm_mesh_set_marker_name(), cvm_mesh_read()) or
+ * cvm_mesh_free(m).
+ * Thread-safety: may run concurrently with other read-only calls on @p m.
+ * @since 0.2
+ */
+CVM_API const char *cvm_mesh_get_marker_name(const cvm_mesh *m, int dim, int32_t marker);
+
+/**
+ * Count the named markers of @p m.
+ * @return CVM_OK, CVM_E_NULL_ARG (out or m is NULL)
+ * @since 0.2
+ */
+CVM_API cvm_status cvm_mesh_count_marker_names(size_t *out, const cvm_mesh *m);
+
+/**
+ * Copy the keys of the named markers, 2 entries each (dim, marker), sorted by
+ * dim, then marker; cvm_mesh_get_marker_name() gives each name.
+ * @param dst_len  capacity in entries; must be >= 2 * cvm_mesh_count_marker_names().
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG          m is NULL, or dst is NULL while dst_len > 0
+ *         CVM_E_BUFFER_TOO_SMALL  (nothing written)
+ * @since 0.2
+ */
+CVM_API cvm_status cvm_mesh_copy_marker_name_keys(int32_t *dst, size_t dst_len,
+                                                  const cvm_mesh *m);
 
 /* ------------------------------------------------------------------------ */
 /* Weights and the power (Voronoi) dual                                      */
@@ -2181,13 +2255,120 @@ CVM_API cvm_status cvm_mesh_copy_dual_cell_offsets(cvm_index *dst, size_t dst_le
  */
 CVM_API cvm_status cvm_mesh_copy_dual_cells(double *dst, size_t dst_len, const cvm_mesh *m);
 
+/* ------------------------------------------------------------------------ */
+/* The power dual as a finite-volume mesh                                   */
+/* ------------------------------------------------------------------------ */
+/* The cells of cvm_mesh_copy_dual_cells() on shared points, with the faces
+ * between them, as a finite-volume or co-volume code wants them. Points, each
+ * once: first the power vertex of every triangle (CVM_ENT_TRIANGLE order, the
+ * doubles of cvm_mesh_copy_dual_vertices()), then the power-bisector foot of
+ * every boundary edge (an edge with a domain triangle on one side only, in
+ * CVM_ENT_EDGE order), then every vertex on a boundary edge (vertex order).
+ * Triangles with the same power vertex (cocircular corners) keep a point each;
+ * their face then has length 0 (up to rounding). Cell v is vertex v's polygon: the offsets of
+ * cvm_mesh_copy_dual_cell_offsets(), the corners as point ids
+ * (cvm_mesh_copy_dual_polygons()); point polygons[k] is the same double pair
+ * as corner k of cvm_mesh_copy_dual_cells(). Faces: first one per edge in
+ * CVM_ENT_EDGE order (face k is the dual of edge k; its length is
+ * cvm_mesh_copy_dual_edge_lengths()[k]), between the cells of the edge's two
+ * vertices; on a boundary edge it joins the power vertex of the edge's
+ * triangle and the edge's foot. Then, per boundary edge (s, h), s -> h
+ * counter-clockwise around the domain (the domain on its left), in
+ * CVM_ENT_EDGE order, two boundary faces on the edge: s to the foot (cell s),
+ * the foot to h (cell h). Cell areas (cvm_mesh_copy_dual_areas()) sum to the
+ * domain area; the cells tile the domain, without overlap, when every triangle
+ * contains its power vertex (cvm_mesh_copy_dual_inside()); otherwise a cell
+ * folds over as cvm_mesh_copy_dual_cells() says (not clipped). A vertex where
+ * the domain pinches lists its own point once per fan. Each call builds the
+ * dual afresh (linear time). A 3D mesh: CVM_E_UNSUPPORTED.
+ * Thread-safety: must not run concurrently with a call that modifies @p m. */
+
 /**
- * Write the dual cells (cvm_mesh_copy_dual_cells()) as a VTK XML unstructured
- * grid (.vtu, ASCII): one VTK_POLYGON (type 7) per vertex with a non-empty
- * cell, each with its own corner points (z = 0), and cell data "vertex"
+ * Count the points, corners and faces of the finite-volume dual (0, 0, 0
+ * before triangulation). The corner count is also the last entry of
+ * cvm_mesh_copy_dual_cell_offsets().
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG     m or an output is NULL
+ *         CVM_E_UNSUPPORTED  a 3D mesh
+ *         CVM_E_TOO_LARGE    more than INT32_MAX points or corners
+ *         CVM_E_NOMEM
+ * @since 0.2
+ */
+CVM_API cvm_status cvm_mesh_count_dual(size_t *points_out, size_t *corners_out,
+                                       size_t *faces_out, const cvm_mesh *m);
+
+/**
+ * Copy the points of the finite-volume dual, 2 doubles each. Constructions:
+ * plain doubles.
+ * @param dst_len  capacity in doubles; must be >= 2 * the point count.
+ * Units:  length.
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG          m is NULL, or dst is NULL while dst_len > 0
+ *         CVM_E_UNSUPPORTED       a 3D mesh
+ *         CVM_E_BUFFER_TOO_SMALL  (nothing written)
+ *         CVM_E_TOO_LARGE, CVM_E_NOMEM
+ * @since 0.2
+ */
+CVM_API cvm_status cvm_mesh_copy_dual_points(double *dst, size_t dst_len, const cvm_mesh *m);
+
+/**
+ * Copy the corners of every cell as point ids (0-based, into
+ * cvm_mesh_copy_dual_points()), cell after cell in vertex order,
+ * counter-clockwise; cell v has the corners offsets[v] .. offsets[v+1]-1 of
+ * cvm_mesh_copy_dual_cell_offsets().
+ * @param dst_len  capacity in entries; must be >= the corner count.
+ * @return as cvm_mesh_copy_dual_points()
+ * @since 0.2
+ */
+CVM_API cvm_status cvm_mesh_copy_dual_polygons(cvm_index *dst, size_t dst_len, const cvm_mesh *m);
+
+/**
+ * Copy the face table of the finite-volume dual, 6 entries per face: cell a,
+ * cell b (-1 on a boundary face), the two vertex ids of the primal edge the
+ * face crosses (a boundary face: of the boundary edge it lies on, its own
+ * cell's vertex first), and the face's two point ids p, q (into
+ * cvm_mesh_copy_dual_points()), cell a on the left of p -> q: (q - p) turned
+ * clockwise by 90 degrees points from cell a to cell b (out of the domain on
+ * a boundary face). Cells are vertex ids; on an interior face a < b are the
+ * primal edge's vertices.
+ * @param dst_len  capacity in entries; must be >= 6 * the face count.
+ * @return as cvm_mesh_copy_dual_points()
+ * @since 0.2
+ */
+CVM_API cvm_status cvm_mesh_copy_dual_faces(cvm_index *dst, size_t dst_len, const cvm_mesh *m);
+
+/**
+ * Copy per face of cvm_mesh_copy_dual_faces() 2 doubles: the length of its
+ * primal edge and the face's own length |q - p| (the dual edge length). The
+ * co-volume flux across a face is (dual length / primal length) x the
+ * difference of the two cells' values. Measures: plain doubles.
+ * @param dst_len  capacity in doubles; must be >= 2 * the face count.
+ * Units:  length.
+ * @return as cvm_mesh_copy_dual_points()
+ * @since 0.2
+ */
+CVM_API cvm_status cvm_mesh_copy_dual_face_lengths(double *dst, size_t dst_len,
+                                                   const cvm_mesh *m);
+
+/**
+ * Write the dual cells as a VTK XML unstructured grid (.vtu, ASCII) that a
+ * finite-volume code reads directly: the points of the finite-volume dual
+ * (cvm_mesh_copy_dual_points(), z = 0, each once), one VTK_POLYGON (type 7)
+ * per vertex with a non-empty cell, its corners as point ids
+ * (cvm_mesh_copy_dual_polygons()), so VTK and ParaView see one polygon mesh
+ * whose neighbouring cells share points. The cells go by corner count, then
+ * vertex id, so meshio (which splits polygons into blocks of consecutive
+ * cells of one size) reads one "polygon" block per corner count; cell data "vertex"
  * (Int32, the vertex id), "area" (Float64, cvm_mesh_copy_dual_areas()) and
- * "weight" (Float64, the vertex weight). The file is written to a temporary
- * name and renamed, so a failure never leaves a partial file.
+ * "weight" (Float64, the vertex weight); and the face table of
+ * cvm_mesh_copy_dual_faces() as field data of nface tuples of 2: "face_cells"
+ * (Int32, the file's cell numbers of cells a and b, -1 on the boundary),
+ * "face_edge" (Int32, the primal edge's vertex ids), "face_points" (Int32, the
+ * face's two point ids) and "face_lengths" (Float64, primal edge length and
+ * face length). Since 0.2 the corners are shared and the field data is new;
+ * before, each cell repeated its own corner points. CVM_OPT_VTU_ENCODING does
+ * not apply. The file is written to a temporary name and renamed, so a
+ * failure never leaves a partial file.
  * @param path  must end in .vtu.
  * 3D:    on a 3D mesh, the bounded cells of the 3D power dual (see
  *        cvm_mesh_count_dual3()): one VTK_POLYHEDRON (type 42) per interior

@@ -179,6 +179,8 @@ CVMPY_OUT_SCALAR(int32_t, out, PyLong_FromLong)
 CVMPY_OUT_SCALAR(size_t, ncells_out, PyLong_FromSize_t)
 CVMPY_OUT_SCALAR(size_t, nconn_out, PyLong_FromSize_t)
 CVMPY_OUT_SCALAR(size_t, edges_out, PyLong_FromSize_t)
+CVMPY_OUT_SCALAR(size_t, points_out, PyLong_FromSize_t)
+CVMPY_OUT_SCALAR(size_t, corners_out, PyLong_FromSize_t)
 CVMPY_OUT_SCALAR(size_t, faces_out, PyLong_FromSize_t)
 
 %{
@@ -210,6 +212,7 @@ CVMPY_HANDLE_OUT(cvm_sizing)
 /* Each is replaced by a cvmpy_ helper of the same Python name. */
 %ignore cvm_mesh_free;
 %ignore cvm_mesh_errmsg;
+%ignore cvm_mesh_get_marker_name;
 %ignore cvm_mesh_set_progress;
 %ignore cvm_mesh_insert_points;
 %ignore cvm_sizing_free;
@@ -221,6 +224,7 @@ CVMPY_HANDLE_OUT(cvm_sizing)
 %ignore cvm_sizing_set_batch_callback;
 %rename(cvm_mesh_free) cvmpy_mesh_free;
 %rename(cvm_mesh_errmsg) cvmpy_mesh_errmsg;
+%rename(cvm_mesh_get_marker_name) cvmpy_mesh_get_marker_name;
 %rename(cvm_mesh_set_progress) cvmpy_set_progress;
 %rename(cvm_mesh_insert_points) cvmpy_insert_points;
 %rename(cvm_sizing_free) cvmpy_sizing_free;
@@ -441,6 +445,12 @@ void cvmpy_mesh_free(cvm_mesh *handle)
 const char *cvmpy_mesh_errmsg(const cvm_mesh *handle)
 {
     return cvm_mesh_errmsg(handle);
+}
+
+/* The name of (dim, marker), or None (it returns a string, not a status). */
+const char *cvmpy_mesh_get_marker_name(const cvm_mesh *handle, int dim, int32_t marker)
+{
+    return cvm_mesh_get_marker_name(handle, dim, marker);
 }
 %}
 

@@ -103,6 +103,10 @@ struct cvm_mesh {
 
     /* quality measures of the current mesh (lib/api/quality.c) */
     cvm__quality_cache quality;
+
+    /* marker names (lib/api/marker_names.c), sorted by (dim, tag), tags unique per dim */
+    cvm__phys_name *names;
+    size_t nnames;
 };
 
 /* Slot of key in opt[], or -1 if the key is unknown. */
@@ -127,6 +131,14 @@ cvm_status cvm__mesh_begin_set(cvm_mesh *m, const void *items, size_t count, con
 
 /* The triangle holding point p (a hole or region seed), or -1 outside the triangulation. */
 int32_t cvm__mesh_seed_triangle(cvm_mesh *m, const double *p);
+
+/* Marker names (lib/api/marker_names.c): the physical names of the .msh at path
+ * into *names_out, *n_out (sorted, a repeated (dim, tag) keeps its first
+ * name); NULL and 0 for other formats. The reader's statuses. */
+cvm_status cvm__mesh_read_names(cvm_mesh *m, const char *path, cvm__phys_name **names_out,
+                                size_t *n_out);
+/* Replace m's marker names by names (taken over; NULL with n 0: none). */
+void cvm__mesh_set_names(cvm_mesh *m, cvm__phys_name *names, size_t n);
 
 /* Forget the AFLR layer indices (the triangles they belong to are changing; mesh_state.c). */
 void cvm__mesh_forget_layers(cvm_mesh *m);

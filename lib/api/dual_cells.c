@@ -1,5 +1,6 @@
 /* dual_cells.c - the power (Voronoi) cells of a mesh handle (lib/dual/cells.c) as CSR arrays in
- * the caller's buffers and as a .vtu file of polygons. */
+ * the caller's buffers, as a finite-volume mesh (shared points, a face table) and as a .vtu file
+ * of polygons on shared points. */
 #include <string.h>
 
 #include "output_internal.h"
@@ -67,67 +68,172 @@ cvm_status cvm_mesh_copy_dual_cells(double *dst, size_t dst_len, const cvm_mesh 
     return s;
 }
 
-/* The non-empty cells of m as a cvm__dual_out (arrays freed by dual_out_free). */
-static cvm_status dual_out_build(cvm_mesh *m, cvm__dual_out *d)
+/* The finite-volume dual of m (fv zeroed when m has no triangles). */
+static cvm_status fv_of(const cvm_mesh *m, cvm__dual_fv *fv)
 {
-    const cvm__tri2 *T = cvm__store_tri2_const(m);
-    const double *wt = cvm__store_weights(m);
-    size_t nv = cvm__store_nv(m);
-    int32_t *off = NULL, *coff, *vid;
-    double *xy, *area, *w;
-    size_t v, n = 0;
+    memset(fv, 0, sizeof *fv);
+    if (!m->triangulated || !cvm__store_nv(m))
+        return CVM_OK;
+    /* allocation does not change the handle */
+    return cvm__dual_fv_build((cvm__ctx *)&m->ctx, cvm__store_tri2_const(m), fv);
+}
+
+cvm_status cvm_mesh_count_dual(size_t *points_out, size_t *corners_out, size_t *faces_out,
+                               const cvm_mesh *m)
+{
+    cvm__dual_fv fv;
     cvm_status s;
-    memset(d, 0, sizeof *d);
-    if ((s = offsets(&m->ctx, m, &off)))
+    if (m && m->m3)
+        return CVM_E_UNSUPPORTED; /* a 2D call on a 3D mesh */
+    if (!m || !points_out || !corners_out || !faces_out)
+        return CVM_E_NULL_ARG;
+    if ((s = fv_of(m, &fv)))
         return s;
-    xy = cvm__malloc(&m->ctx, (2 * (size_t)off[nv] + 1) * sizeof *xy);
-    coff = cvm__malloc(&m->ctx, (nv + 1) * sizeof *coff);
-    vid = cvm__malloc(&m->ctx, (nv + 1) * sizeof *vid);
-    area = cvm__malloc(&m->ctx, (nv + 1) * sizeof *area);
-    w = cvm__malloc(&m->ctx, (nv + 1) * sizeof *w);
-    d->xy = xy;
-    d->off = coff;
-    d->vertex = vid;
-    d->area = area;
-    d->weight = w;
-    if (!xy || !coff || !vid || !area || !w) {
-        cvm__free(&m->ctx, off);
-        return CVM_E_NOMEM;
-    }
-    if ((s = cvm__dual_cells(&m->ctx, T, off, xy)) ||
-        (s = cvm_mesh_copy_dual_areas(area, nv, m))) {
-        cvm__free(&m->ctx, off);
-        return s;
-    }
-    coff[0] = 0;
-    for (v = 0; v < nv; v++) {
-        if (off[v + 1] == off[v])
-            continue; /* no domain triangle: no cell */
-        vid[n] = (int32_t)v;
-        area[n] = area[v];
-        w[n] = wt ? wt[v] : 0.0;
-        coff[++n] = off[v + 1];
-    }
-    d->ncell = n;
-    d->ncorner = (size_t)off[nv];
-    cvm__free(&m->ctx, off);
+    *points_out = fv.npt;
+    *corners_out = fv.off ? (size_t)fv.off[cvm__store_nv(m)] : 0;
+    *faces_out = fv.nface;
+    cvm__dual_fv_free((cvm__ctx *)&m->ctx, &fv);
     return CVM_OK;
 }
 
-static void dual_out_free(cvm_mesh *m, cvm__dual_out *d)
+/* What a cvm_mesh_copy_dual_* call of the finite-volume dual copies. */
+typedef enum fv_part { FV_POINTS, FV_POLYGONS, FV_FACES, FV_FACE_LENGTHS } fv_part;
+
+static cvm_status copy_fv(void *dst, size_t dst_len, const cvm_mesh *m, fv_part part)
 {
-    cvm__free(&m->ctx, (void *)d->xy);
+    cvm__dual_fv fv;
+    size_t n = 0, size = 0;
+    const void *src = NULL;
+    cvm_status s;
+    if (m && m->m3)
+        return CVM_E_UNSUPPORTED; /* a 2D call on a 3D mesh */
+    if (!m)
+        return CVM_E_NULL_ARG;
+    if (!dst && dst_len)
+        return CVM_E_NULL_ARG;
+    if ((s = fv_of(m, &fv)))
+        return s;
+    switch (part) {
+    case FV_POINTS: n = 2 * fv.npt, size = sizeof(double), src = fv.pt; break;
+    case FV_POLYGONS:
+        n = fv.off ? (size_t)fv.off[cvm__store_nv(m)] : 0, size = sizeof(int32_t), src = fv.corner;
+        break;
+    case FV_FACES: n = 6 * fv.nface, size = sizeof(int32_t), src = fv.face; break;
+    default: n = 2 * fv.nface, size = sizeof(double), src = fv.flen; break;
+    }
+    if (!(s = cvm__room(dst, dst_len, n)) && n)
+        memcpy(dst, src, n * size);
+    cvm__dual_fv_free((cvm__ctx *)&m->ctx, &fv);
+    return s;
+}
+
+cvm_status cvm_mesh_copy_dual_points(double *dst, size_t dst_len, const cvm_mesh *m)
+{
+    return copy_fv(dst, dst_len, m, FV_POINTS);
+}
+
+cvm_status cvm_mesh_copy_dual_polygons(cvm_index *dst, size_t dst_len, const cvm_mesh *m)
+{
+    return copy_fv(dst, dst_len, m, FV_POLYGONS);
+}
+
+cvm_status cvm_mesh_copy_dual_faces(cvm_index *dst, size_t dst_len, const cvm_mesh *m)
+{
+    return copy_fv(dst, dst_len, m, FV_FACES);
+}
+
+cvm_status cvm_mesh_copy_dual_face_lengths(double *dst, size_t dst_len, const cvm_mesh *m)
+{
+    return copy_fv(dst, dst_len, m, FV_FACE_LENGTHS);
+}
+
+/* The non-empty cells of m on shared points, with the face table, as a
+ * cvm__dual_out (its arrays, and fv's, freed by dual_out_free). Cells go by
+ * corner count, then vertex id: a reader that keeps polygons of one size
+ * together (meshio) then makes one block per size. */
+static cvm_status dual_out_build(cvm_mesh *m, cvm__dual_out *d, cvm__dual_fv *fv)
+{
+    const double *wt = cvm__store_weights(m);
+    size_t nv = cvm__store_nv(m), maxc = 0, v, c, n = 0;
+    int32_t *coff, *vid, *cell_of, *corner;
+    size_t *bucket = NULL;
+    double *area, *w;
+    cvm_status s;
+    memset(d, 0, sizeof *d);
+    if ((s = cvm__dual_fv_build(&m->ctx, cvm__store_tri2_const(m), fv)))
+        return s;
+    coff = cvm__malloc(&m->ctx, (nv + 1) * sizeof *coff);
+    vid = cvm__malloc(&m->ctx, (nv + 1) * sizeof *vid);
+    cell_of = cvm__malloc(&m->ctx, (nv + 1) * sizeof *cell_of);
+    area = cvm__malloc(&m->ctx, (nv + 1) * sizeof *area);
+    w = cvm__malloc(&m->ctx, (nv + 1) * sizeof *w);
+    corner = cvm__malloc(&m->ctx, ((size_t)fv->off[nv] + 1) * sizeof *corner);
+    d->off = coff;
+    d->vertex = vid;
+    d->cell_of = cell_of;
+    d->area = area;
+    d->weight = w;
+    d->corner = corner;
+    for (v = 0; v < nv; v++)
+        if ((size_t)(fv->off[v + 1] - fv->off[v]) > maxc)
+            maxc = (size_t)(fv->off[v + 1] - fv->off[v]);
+    if (coff && vid && cell_of && area && w && corner)
+        bucket = cvm__calloc(&m->ctx, maxc + 2, sizeof *bucket);
+    if (!bucket)
+        return CVM_E_NOMEM;
+    if ((s = cvm_mesh_copy_dual_areas(w, nv, m))) {
+        cvm__free(&m->ctx, bucket);
+        return s;
+    }
+    for (v = 0; v < nv; v++) /* cells of each size, then the first cell of each size */
+        bucket[(size_t)(fv->off[v + 1] - fv->off[v]) + 1]++;
+    bucket[1] = 0; /* no cell: no corners */
+    for (c = 0; c <= maxc; c++)
+        bucket[c + 1] += bucket[c];
+    for (v = 0; v < nv; v++) {
+        size_t size = (size_t)(fv->off[v + 1] - fv->off[v]);
+        cell_of[v] = size ? (int32_t)bucket[size]++ : -1;
+        if (size) {
+            vid[cell_of[v]] = (int32_t)v;
+            n++;
+        }
+    }
+    cvm__free(&m->ctx, bucket);
+    coff[0] = 0;
+    for (c = 0; c < n; c++) {
+        size_t u = (size_t)vid[c], size = (size_t)(fv->off[u + 1] - fv->off[u]);
+        memcpy(corner + coff[c], fv->corner + fv->off[u], size * sizeof *corner);
+        coff[c + 1] = coff[c] + (int32_t)size;
+        area[c] = w[u];
+    }
+    for (c = 0; c < n; c++)
+        w[c] = wt ? wt[vid[c]] : 0.0;
+    d->ncell = n;
+    d->xy = fv->pt;
+    d->npoint = fv->npt;
+    d->face = fv->face;
+    d->flen = fv->flen;
+    d->nface = fv->nface;
+    return CVM_OK;
+}
+
+static void dual_out_free(cvm_mesh *m, cvm__dual_out *d, cvm__dual_fv *fv)
+{
     cvm__free(&m->ctx, (void *)d->off);
     cvm__free(&m->ctx, (void *)d->vertex);
+    cvm__free(&m->ctx, (void *)d->cell_of);
     cvm__free(&m->ctx, (void *)d->area);
     cvm__free(&m->ctx, (void *)d->weight);
+    cvm__free(&m->ctx, (void *)d->corner);
     memset(d, 0, sizeof *d);
+    cvm__dual_fv_free(&m->ctx, fv);
 }
 
 /* The checks and cells of cvm_mesh_write_dual(), the file into ws. */
 static cvm_status write_dual_to_set(cvm_mesh *m, const char *path, cvm__write_set *ws)
 {
     cvm__dual_out d;
+    cvm__dual_fv fv;
     cvm_status s;
     if (!path)
         return cvm__error(&m->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "path is NULL");
@@ -137,14 +243,14 @@ static cvm_status write_dual_to_set(cvm_mesh *m, const char *path, cvm__write_se
     if (cvm__format_of(path) != CVM__FMT_VTU)
         return cvm__error(&m->ctx, CVM_E_UNSUPPORTED, CVM_ENT_NONE, -1,
                           "cannot write the dual to %s: only .vtu is supported", path);
-    s = dual_out_build(m, &d);
+    s = dual_out_build(m, &d, &fv);
     if (s == CVM_E_NOMEM)
         s = cvm__nomem(&m->ctx);
     else if (s == CVM_E_TOO_LARGE)
         s = cvm__error(&m->ctx, s, CVM_ENT_NONE, -1, "the dual has more than INT32_MAX corners");
     if (!s)
         s = cvm__write_dual_file_to_set(ws, path, &d);
-    dual_out_free(m, &d);
+    dual_out_free(m, &d, &fv);
     return s;
 }
 

@@ -65,6 +65,7 @@ void cvm_mesh_free(cvm_mesh *m)
     cvm__free(&m->ctx, m->refine_unmet);
     cvm__free(&m->ctx, m->tlayer);
     cvm__mesh_forget_quads(m);
+    cvm__free(&m->ctx, m->names);
     f = m->ctx.free_fn;
     payload = m->ctx.payload;
     f(payload, m);
@@ -342,18 +343,31 @@ cvm_status cvm_mesh_read(cvm_mesh *m, const char *path)
     if (cvm__path_has_ext(path, ".off") || cvm__path_has_ext(path, ".stl") ||
         cvm__path_has_ext(path, ".smesh") ||
         ((cvm__path_has_ext(path, ".poly") || cvm__path_has_ext(path, ".node")) &&
-         cvm__file_dimension(path) == 3))
-        return cvm__mesh3_read(m, path); /* lib/api/mesh3.c */
+         cvm__file_dimension(path) == 3)) {
+        s = cvm__mesh3_read(m, path); /* lib/api/mesh3.c */
+        if (s == CVM_OK)
+            cvm__mesh_set_names(m, NULL, 0);
+        return s;
+    }
     if (cvm__is_mesh_file(path)) { /* .vtu, .vtk, .msh */
-        cvm_status r = cvm__mesh_read_vtu(m, path); /* lib/api/mesh_read_vtu.c */
+        cvm__phys_name *names;
+        size_t nnames;
+        cvm_status r = cvm__mesh_read_names(m, path, &names, &nnames); /* marker_names.c */
         if (r == CVM_OK)
+            r = cvm__mesh_read_vtu(m, path); /* lib/api/mesh_read_vtu.c */
+        if (r == CVM_OK) {
             cvm__mesh3_free(m);
+            cvm__mesh_set_names(m, names, nnames);
+        } else {
+            cvm__free(&m->ctx, names);
+        }
         return r;
     }
     memset(&p, 0, sizeof p);
     s = cvm__read_file(&m->ctx, path, &p);
     if (s)
         return s;
+    cvm__mesh_set_names(m, NULL, 0);
     cvm__mesh3_free(m);
     cvm__pslg_free(&m->ctx, &m->in);
     m->in = p;

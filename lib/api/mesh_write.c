@@ -163,6 +163,8 @@ static cvm_status write_to_set(cvm_mesh *m, const char *path, cvm__write_set *ws
     mo.window[2] = cvm__opt(m, CVM_OPT_SVG_WINDOW_XMAX);
     mo.window[3] = cvm__opt(m, CVM_OPT_SVG_WINDOW_YMAX);
     mo.vtu_encoding = (int)cvm__opt(m, CVM_OPT_VTU_ENCODING);
+    mo.names = m->names;
+    mo.nnames = m->nnames;
     s = cvm__write_file_to_set(ws, path, &mo);
     cvm__mesh_out_free(m, &mo);
     return s;

@@ -163,8 +163,9 @@ void cli_print_output_help(FILE *f, int with_svg, int with_dual)
     if (with_svg)
         fprintf(f, "  --svg PIC.svg              also draw the mesh, coloured by smallest angle\n");
     if (with_dual)
-        fprintf(f, "  --dual DUAL.vtu            write the power (Voronoi) cells as VTK polygons with\n"
-                   "                             vertex id, area and weight\n");
+        fprintf(f, "  --dual DUAL.vtu            write the power (Voronoi) cells as VTK polygons on\n"
+                   "                             shared points with vertex id, area and weight, and\n"
+                   "                             the face table (cells, edge, lengths) as field data\n");
     fprintf(f,
             "  --quality[=short|full]     print the quality report: counts and measures\n"
             "                             (short, the default), or also the histograms of\n"

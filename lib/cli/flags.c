@@ -71,8 +71,8 @@ static const cli_option_flag k_flags[] = {
      "dual optimiser: removal-trial calls after the max-min rounds (default 0: none)"},
     {"--maxmin-rounds", "N", CVM_OPT_DUAL_MAXMIN_ROUNDS, 0, OPT,
      "rounds of the dual optimiser's final max-min-angle phase (0: none; default 5)"},
-    {"--vtu-encoding", "ascii|binary|zlib", CVM_OPT_VTU_ENCODING, 0, TRI | REF | OPT | QUA,
-     ".vtu data arrays: ascii text (default), binary (raw appended) or zlib (compressed)"},
+    {"--vtu-encoding", "ascii|binary|zlib|auto", CVM_OPT_VTU_ENCODING, 0, TRI | REF | OPT | QUA,
+     ".vtu data: ascii (0), binary (1, raw appended), zlib (2) or auto (3: ascii up to 1000000 vertices, binary above)"},
     {"--p", "P", CVM_OPT_QUAD_P, 0, QUA, "exponent of the Lp-CVT energy, even, 2 to 12 (default 6)"},
     {"--recombine", "blossom|greedy|none", CVM_OPT_QUAD_RECOMBINE, 0, QUA,
      "pairing of triangles into quads (default blossom: maximum-weight matching)"},
@@ -101,7 +101,8 @@ static const struct {
                {CVM_OPT_VTU_ENCODING, "zlib", CVM_VTU_ZLIB},
                {CVM_OPT_QUAD_RECOMBINE, "blossom", 0},
                {CVM_OPT_QUAD_RECOMBINE, "greedy", 1},
-               {CVM_OPT_QUAD_RECOMBINE, "none", 2}};
+               {CVM_OPT_QUAD_RECOMBINE, "none", 2},
+               {CVM_OPT_VTU_ENCODING, "auto", CVM_VTU_AUTO}};
 
 /* 1 and *v when f takes words and val is one of them. */
 static int word_value(const cli_option_flag *f, const char *val, double *v)

@@ -195,6 +195,33 @@ cvm_status cvm__dual_edge_ends(cvm__ctx *ctx, const cvm__tri2 *T, const cvm__edg
  * (no message). */
 cvm_status cvm__dual_cells(cvm__ctx *ctx, const cvm__tri2 *T, int32_t *off, double *xy);
 
+/* The power dual of the domain of T as a finite-volume mesh (cells.c), its
+ * corners shared. Points: the power vertex of every domain triangle (output
+ * order), then the power-bisector foot of every boundary edge (edge order of
+ * cvm__domain_edges), then every vertex on a boundary edge (vertex order).
+ * Cells: one per vertex, the corners of cvm__dual_cells() as point ids (the
+ * same doubles). Faces, 6 ints each: cell a, cell b (-1 on the boundary), the
+ * primal edge (its two vertices), the face's two points p, q, cell a on the
+ * left of p -> q; first one per domain edge in edge order (a < b its
+ * vertices; on a boundary edge the face joins the foot and the power vertex),
+ * then per boundary edge (s, h) counter-clockwise around the domain two
+ * boundary faces: (s, -1, s, h, s, foot) and (h, -1, h, s, foot, h). flen, 2
+ * per face: the primal edge length and the face length (plain doubles). */
+typedef struct cvm__dual_fv {
+    double *pt;       /* 2 * npt */
+    size_t npt, ntri, nbedge, nbvert;
+    int32_t *off;     /* nv + 1 */
+    int32_t *corner;  /* off[nv] point ids */
+    int32_t *face;    /* 6 * nface */
+    double *flen;     /* 2 * nface */
+    size_t nface;
+} cvm__dual_fv;
+
+/* Build fv from T. CVM_OK, CVM_E_NOMEM or CVM_E_TOO_LARGE (no message); on
+ * error fv is zeroed. */
+cvm_status cvm__dual_fv_build(cvm__ctx *ctx, const cvm__tri2 *T, cvm__dual_fv *fv);
+void cvm__dual_fv_free(cvm__ctx *ctx, cvm__dual_fv *fv);
+
 /* A view of T for dimensionless dual measures (quality.c): when
  * the coordinates of T reach beyond 2^300 or all lie below 2^-300 (the
  * constructions of the dual form cubes of coordinate differences, which

@@ -126,6 +126,15 @@ cvm_status cvm__read_vtk(cvm__ctx *ctx, cvm__reader *r, const char *name, cvm__v
  * physical names. The same statuses; CVM_E_UNSUPPORTED for other element
  * types or versions. */
 cvm_status cvm__read_msh(cvm__ctx *ctx, cvm__reader *r, const char *name, cvm__vtu_mesh *out);
+/* The $PhysicalNames of a Gmsh .msh from r into a fresh array *names_out of
+ * *n_out entries (NULL and 0 without names): the whole file is parsed by
+ * cvm__read_msh(), so this succeeds exactly when it does (faults aside); its
+ * statuses. */
+cvm_status cvm__read_msh_names(cvm__ctx *ctx, cvm__reader *r, const char *name,
+                               cvm__phys_name **names_out, size_t *n_out);
+/* The same from the file at path (CVM_E_IO_OPEN too). */
+cvm_status cvm__read_msh_names_file(cvm__ctx *ctx, const char *path, cvm__phys_name **names_out,
+                                    size_t *n_out);
 /* 1 when path names a mesh file that cvm__read_mesh_file() reads (.vtu,
  * .vtk, .msh, any case). */
 int cvm__is_mesh_file(const char *path);
@@ -167,18 +176,26 @@ typedef struct cvm__mesh_out {
                                holds them too (.node writes it; .vtu writes "weight" apart) */
     const double *tlayer;   /* nt or NULL: AFLR layer index per triangle (SVG colours by it) */
     double window[4];       /* SVG view xmin, ymin, xmax, ymax; unused unless xmax > xmin, ymax > ymin */
-    int vtu_encoding;       /* .vtu data: 0 ASCII, 1 raw appended binary, 2 zlib-compressed */
+    const cvm__phys_name *names; /* nnames or NULL: .msh physical names by (dim, marker) */
+    size_t nnames;
+    int vtu_encoding;       /* .vtu data: cvm_vtu_encoding (3: by the vertex count) */
 } cvm__mesh_out;
 
-/* ---- output: the power cells of a mesh (polygons), borrowed arrays ---- */
+/* ---- output: the power cells of a mesh (polygons on shared points), borrowed arrays ---- */
 typedef struct cvm__dual_out {
-    const double *xy;      /* 2*ncorner: the corners of every cell, cell after cell */
-    size_t ncorner;
+    const double *xy;      /* 2*npoint: the corner points, each once */
+    size_t npoint;
+    const int32_t *corner; /* off[ncell] point ids, cell after cell */
     const int32_t *off;    /* ncell+1: cell c has corners off[c] .. off[c+1]-1 */
     size_t ncell;
     const int32_t *vertex; /* ncell: the mesh vertex of each cell */
     const double *area;    /* ncell */
     const double *weight;  /* ncell */
+    const int32_t *face;   /* 6*nface: cell a, cell b (-1: boundary), the primal edge's two
+                              vertices, the face's two points (cell a left of p -> q) */
+    const double *flen;    /* 2*nface: primal edge length, face length */
+    size_t nface;
+    const int32_t *cell_of;/* per mesh vertex: its cell's index, or -1 (no cell) */
 } cvm__dual_out;
 
 /* Output formats, chosen by the extension of a path (case-insensitive). */

@@ -31,3 +31,17 @@ cvm_status cvm__read_mesh_file(cvm__ctx *ctx, const char *path, cvm__vtu_mesh *o
     cvm__file_reader_close(&r);
     return s;
 }
+
+cvm_status cvm__read_msh_names_file(cvm__ctx *ctx, const char *path, cvm__phys_name **names_out,
+                                    size_t *n_out)
+{
+    cvm__reader r;
+    cvm_status s;
+    *names_out = NULL;
+    *n_out = 0;
+    if ((s = cvm__file_reader_open(ctx, &r, path)))
+        return s;
+    s = cvm__read_msh_names(ctx, &r, path, names_out, n_out);
+    cvm__file_reader_close(&r);
+    return s;
+}

@@ -635,3 +635,20 @@ cvm_status cvm__read_msh(cvm__ctx *ctx, cvm__reader *r, const char *name, cvm__v
         cvm__vtu_mesh_free(ctx, out);
     return s;
 }
+
+cvm_status cvm__read_msh_names(cvm__ctx *ctx, cvm__reader *r, const char *name,
+                               cvm__phys_name **names_out, size_t *n_out)
+{
+    cvm__vtu_mesh vm;
+    cvm_status s = cvm__read_msh(ctx, r, name, &vm);
+    *names_out = NULL;
+    *n_out = 0;
+    if (s)
+        return s;
+    *names_out = vm.names;
+    *n_out = vm.nnames;
+    vm.names = NULL;
+    vm.nnames = 0;
+    cvm__vtu_mesh_free(ctx, &vm);
+    return CVM_OK;
+}

@@ -129,7 +129,7 @@ cvm_status cvm__write_dual_file_to_set(cvm__write_set *ws, const char *path, con
     cvm_status s = cvm__writer_open(&w, ws->ctx, path);
     if (s)
         return s;
-    cvm__writer_expect(w, 0, (uint64_t)d->ncorner * 3 + (uint64_t)d->ncell * 9);
+    cvm__writer_expect(w, 0, (uint64_t)d->npoint * 3 + (uint64_t)d->ncell * 9 + (uint64_t)d->nface * 8);
     cvm__write_dual_vtu(w, d);
     return cvm__write_set_add(ws, w);
 }

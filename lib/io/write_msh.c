@@ -7,8 +7,10 @@
  * constrained edges (segments) are line elements (type 1) on one curve per
  * distinct segment marker in increasing order; a curve whose marker m is
  * positive belongs to the physical group 1D tag m, named "marker_m" (Gmsh's
- * physical tags are positive, so a marker <= 0 gets no group). Nodes are
- * classified as Gmsh does: a segment vertex where curves meet or a chain ends
+ * physical tags are positive, so a marker <= 0 gets no group). A name in
+ * mo->names replaces these: (1, m) names curve group m, (2, A) the surface of
+ * integer attribute A, (2, 1) the one surface of a mesh without attributes.
+ * Nodes are classified as Gmsh does: a segment vertex where curves meet or a chain ends
  * is a point entity, a vertex inside one curve belongs to that curve, and the
  * others to the surface of their lowest-numbered triangle. Node tags are vertex
  * id + 1; element tags number the lines first (curve by curve), then the
@@ -322,19 +324,49 @@ static void extend(double *lo, double *hi, const double *p)
     }
 }
 
-static void physical_names(cvm__writer *w, const curves *c, const layout *l)
+/* The name of physical group (dim, tag) in mo's table, or NULL. */
+static const char *name_of(const cvm__mesh_out *mo, int32_t dim, int32_t tag)
+{
+    size_t k;
+    for (k = 0; k < mo->nnames; k++)
+        if (mo->names[k].dim == dim && mo->names[k].tag == tag)
+            return mo->names[k].name;
+    return NULL;
+}
+
+/* The table's name for region attribute a (an integer), or NULL. */
+static const char *region_name(const cvm__mesh_out *mo, double a)
+{
+    if (!(a >= INT32_MIN && a <= INT32_MAX) || a != (double)(int32_t)a)
+        return NULL;
+    return name_of(mo, 2, (int32_t)a);
+}
+
+static void physical_names(cvm__writer *w, const cvm__mesh_out *mo, const curves *c,
+                           const layout *l)
 {
     size_t i, n = l->nsurf;
+    const char *name;
     for (i = 0; i < c->ncurve; i++)
         n += c->marker[i] > 0;
     cvm__writer_printf(w, "$PhysicalNames\n%lu\n", (unsigned long)n);
-    for (i = 0; i < c->ncurve; i++)
-        if (c->marker[i] > 0)
+    for (i = 0; i < c->ncurve; i++) {
+        if (c->marker[i] <= 0)
+            continue;
+        if ((name = name_of(mo, 1, c->marker[i])))
+            cvm__writer_printf(w, "1 %ld \"%s\"\n", (long)c->marker[i], name);
+        else
             cvm__writer_printf(w, "1 %ld \"marker_%ld\"\n", (long)c->marker[i], (long)c->marker[i]);
+    }
     if (!l->sattr) {
-        cvm__writer_puts(w, "2 1 \"domain\"\n");
+        name = name_of(mo, 2, 1);
+        cvm__writer_printf(w, "2 1 \"%s\"\n", name ? name : "domain");
     } else {
         for (i = 0; i < l->nsurf; i++) {
+            if ((name = region_name(mo, l->sattr[i]))) {
+                cvm__writer_printf(w, "2 %lu \"%s\"\n", (unsigned long)i + 1, name);
+                continue;
+            }
             cvm__writer_printf(w, "2 %lu \"region_", (unsigned long)i + 1);
             cvm__writer_double(w, l->sattr[i]);
             cvm__writer_puts(w, "\"\n");
@@ -514,7 +546,7 @@ cvm_status cvm__write_msh(cvm__writer *w, cvm__ctx *ctx, const cvm__mesh_out *mo
         return s;
     if ((s = surfaces_build(ctx, mo, &l)) == CVM_OK && (s = nodes_build(ctx, mo, &c, &l)) == CVM_OK) {
         cvm__writer_puts(w, "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n");
-        physical_names(w, &c, &l);
+        physical_names(w, mo, &c, &l);
         entities(w, mo, &c, &l);
         nodes(w, mo, &c, &l);
         elements(w, mo, &c, &l);

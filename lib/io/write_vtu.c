@@ -6,7 +6,8 @@
  * attributes, when there are any); cell data "marker" (the segment marker of
  * a line, 0 on a triangle), "attribute" (regional attribute), "min_angle_deg"
  * and "layer_index" (AFLR) when given (0 on a line).
- * Also the power cells of a mesh as VTK polygons (type 7).
+ * Also the power cells of a mesh as VTK polygons (type 7) on shared points,
+ * with their face table as field data.
  */
 #include "formats.h"
 
@@ -149,8 +150,11 @@ static void cells(cvm__writer *w, const cvm__mesh_out *mo)
 cvm_status cvm__write_vtu(cvm__writer *w, cvm__ctx *ctx, const cvm__mesh_out *mo)
 {
     size_t v;
-    if (mo->vtu_encoding == 1 || mo->vtu_encoding == 2)
-        return cvm__write_vtu_binary(w, ctx, mo, mo->vtu_encoding == 2);
+    int enc = mo->vtu_encoding;
+    if (enc == CVM_VTU_AUTO)
+        enc = mo->nv > CVM_VTU_AUTO_MAX_ASCII_POINTS ? CVM_VTU_BINARY : CVM_VTU_ASCII;
+    if (enc == CVM_VTU_BINARY || enc == CVM_VTU_ZLIB)
+        return cvm__write_vtu_binary(w, ctx, mo, enc == CVM_VTU_ZLIB);
     cvm__writer_puts(w, "<?xml version=\"1.0\"?>\n"
                         "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
                         "  <UnstructuredGrid>\n");
@@ -173,14 +177,60 @@ cvm_status cvm__write_vtu(cvm__writer *w, cvm__ctx *ctx, const cvm__mesh_out *mo
     return CVM_OK;
 }
 
+/* n ints, ncomp per line. */
+static void ints(cvm__writer *w, const int32_t *x, size_t n, size_t ncomp)
+{
+    size_t i;
+    for (i = 0; i < n; i++) {
+        cvm__writer_long(w, x[i]);
+        cvm__writer_putc(w, (i + 1) % ncomp == 0 || i + 1 == n ? '\n' : ' ');
+    }
+}
+
+static void field_array(cvm__writer *w, const char *type, const char *name, size_t ntuple)
+{
+    cvm__writer_printf(w, "      <DataArray type=\"%s\" Name=\"%s\" NumberOfComponents=\"2\" "
+                          "NumberOfTuples=\"%lu\" format=\"ascii\">\n",
+                       type, name, (unsigned long)ntuple);
+}
+
+/* The face table as field data: face_cells (cell a, cell b or -1, the
+ * file's cell numbers), face_points, face_edge (the primal edge's vertices),
+ * face_lengths (primal, dual). */
+static void dual_faces(cvm__writer *w, const cvm__dual_out *d)
+{
+    size_t f, k;
+    int32_t pair[2];
+    cvm__writer_puts(w, "    <FieldData>\n");
+    for (k = 0; k < 3; k++) {
+        static const char *const name[3] = {"face_cells", "face_edge", "face_points"};
+        field_array(w, "Int32", name[k], d->nface);
+        for (f = 0; f < d->nface; f++) {
+            const int32_t *x = d->face + 6 * f + 2 * k;
+            pair[0] = x[0];
+            pair[1] = x[1];
+            if (k == 0) { /* mesh vertex -> the file's cell number */
+                pair[0] = d->cell_of[pair[0]];
+                pair[1] = pair[1] < 0 ? -1 : d->cell_of[pair[1]];
+            }
+            ints(w, pair, 2, 2);
+        }
+        cvm__writer_puts(w, "      </DataArray>\n");
+    }
+    field_array(w, "Float64", "face_lengths", d->nface);
+    doubles(w, d->flen, 2 * d->nface, 2);
+    cvm__writer_puts(w, "      </DataArray>\n    </FieldData>\n");
+}
+
 void cvm__write_dual_vtu(cvm__writer *w, const cvm__dual_out *d)
 {
     size_t c, k;
     cvm__writer_puts(w, "<?xml version=\"1.0\"?>\n"
                         "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
                         "  <UnstructuredGrid>\n");
+    dual_faces(w, d);
     cvm__writer_printf(w, "    <Piece NumberOfPoints=\"%lu\" NumberOfCells=\"%lu\">\n",
-                       (unsigned long)d->ncorner, (unsigned long)d->ncell);
+                       (unsigned long)d->npoint, (unsigned long)d->ncell);
     cvm__writer_puts(w, "      <CellData Scalars=\"area\">\n");
     begin_array(w, "Int32", "vertex", 1);
     for (c = 0; c < d->ncell; c++) {
@@ -196,7 +246,7 @@ void cvm__write_dual_vtu(cvm__writer *w, const cvm__dual_out *d)
     end_array(w);
     cvm__writer_puts(w, "      </CellData>\n      <Points>\n");
     begin_array(w, "Float64", "coordinates", 3);
-    for (k = 0; k < d->ncorner; k++) {
+    for (k = 0; k < d->npoint; k++) {
         cvm__writer_double(w, d->xy[2 * k]);
         cvm__writer_putc(w, ' ');
         cvm__writer_double(w, d->xy[2 * k + 1]);
@@ -207,13 +257,13 @@ void cvm__write_dual_vtu(cvm__writer *w, const cvm__dual_out *d)
     begin_array(w, "Int32", "connectivity", 1);
     for (c = 0; c < d->ncell; c++)
         for (k = (size_t)d->off[c]; k < (size_t)d->off[c + 1]; k++) {
-            cvm__writer_ulong(w, k);
+            cvm__writer_long(w, d->corner[k]);
             cvm__writer_putc(w, k + 1 == (size_t)d->off[c + 1] ? '\n' : ' ');
         }
     end_array(w);
     begin_array(w, "Int64", "offsets", 1);
     for (c = 0; c < d->ncell; c++) {
-        cvm__writer_ulong(w, (unsigned long long)d->off[c + 1]);
+        cvm__writer_ulong(w, (unsigned long long)(d->off[c + 1] - d->off[0]));
         cvm__writer_putc(w, (c + 1) % PER_LINE == 0 || c + 1 == d->ncell ? '\n' : ' ');
     }
     end_array(w);

@@ -153,15 +153,70 @@ for name in written:
 dom = meshio.Mesh(np.array([[0, 0], [2, 0], [2, 1], [0, 1], [1, 0.5]], float),
                   [("line", np.array([[0, 1], [1, 2], [2, 3], [3, 0]])), ("vertex", np.array([[4]]))],
                   cell_data={"gmsh:physical": [np.array([1, 2, 3, 4]), np.array([9])],
-                             "gmsh:geometrical": [np.array([1, 2, 3, 4]), np.array([1])]})
-meshio.write(path("domain.msh"), dom, file_format="gmsh22", binary=True)
-code, err = run("refine", path("domain.msh"), "--size", "0.2", "-o", path("domain_out.msh"))
-check(code == 0, "cvmesh refine domain.msh: " + err)
-if code == 0:
-    d = meshio.read(path("domain_out.msh"))
-    tags = set(int(t) for t in d.cell_data_dict["gmsh:physical"].get("line", []))
-    check(len(d.cells_dict["triangle"]) > 50 and tags <= {1, 2, 3, 4} and len(tags) == 4,
-          "refined Gmsh domain keeps its 4 boundary markers (%s)" % sorted(tags))
+                             "gmsh:geometrical": [np.array([1, 2, 3, 4]), np.array([1])]},
+                  field_data={"bottom": np.array([1, 1]), "right": np.array([2, 1]),
+                              "top": np.array([3, 1]), "left": np.array([4, 1]),
+                              "centre": np.array([9, 0])})
+names = {"bottom": 1, "right": 2, "top": 3, "left": 4}
+for fmt, binary in (("gmsh22", True), ("gmsh22", False)):
+    tag = "%s%s" % (fmt, " binary" if binary else "")
+    meshio.write(path("domain.msh"), dom, file_format=fmt, binary=binary)
+    code, err = run("refine", path("domain.msh"), "--size", "0.2", "-o", path("domain_out.msh"))
+    check(code == 0, "cvmesh refine domain.msh (%s): %s" % (tag, err))
+    if code == 0:
+        d = meshio.read(path("domain_out.msh"))
+        tags = set(int(t) for t in d.cell_data_dict["gmsh:physical"].get("line", []))
+        check(len(d.cells_dict["triangle"]) > 50 and tags <= {1, 2, 3, 4} and len(tags) == 4,
+              "refined Gmsh domain (%s) keeps its 4 boundary markers (%s)" % (tag, sorted(tags)))
+        got = {k: (int(v[0]), int(v[1])) for k, v in d.field_data.items()}
+        check(all(got.get(k) == (t, 1) for k, t in names.items()) and "marker_1" not in got,
+              "meshio reads the physical names of the refined Gmsh domain (%s): %s" % (tag, got))
+        # and once more through cvmesh: the same names
+        code, err = run("triangulate", path("domain_out.msh"), "-o", path("domain_again.msh"))
+        again = meshio.read(path("domain_again.msh")) if code == 0 else None
+        check(code == 0 and {k: tuple(v) for k, v in again.field_data.items()} ==
+              {k: tuple(v) for k, v in d.field_data.items()},
+              "cvmesh reads its named .msh and writes the same names (%s) %s" % (tag, err))
+
+# ---- the power dual as a finite-volume mesh: shared points, one polygon grid --
+code, err = run("refine", path("domain.msh"), "--size", "0.1", "-o", path("fv.vtu"),
+                "--dual", path("fv_dual.vtu"))
+check(code == 0, "cvmesh refine --dual: " + err)
+dual = meshio.read(path("fv_dual.vtu"))
+pts2 = dual.points[:, :2]
+check(len(np.unique(pts2, axis=0)) == len(pts2),
+      "meshio reads the dual: %d points, all distinct" % len(pts2))
+conn = np.concatenate([c.data.ravel() for c in dual.cells])
+check(np.array_equal(np.unique(conn), np.arange(len(pts2))), "every dual point is a corner of a cell")
+sizes = [c.data.shape[1] for c in dual.cells]
+check({c.type for c in dual.cells} == {"polygon"} and sizes == sorted(set(sizes)),
+      "meshio reads the dual as polygon blocks, one per corner count: %s" % sizes)
+fc, fl = dual.field_data["face_cells"], dual.field_data["face_lengths"]
+ncell = sum(len(c.data) for c in dual.cells)
+check(fc.shape[1] == 2 and fc.shape == fl.shape and fc[:, 0].max() < ncell and (fl[:, 1] >= 0).all(),
+      "meshio reads the face table: %d faces over %d cells" % (len(fc), ncell))
+if vtk:
+    rd = vtk.vtkXMLUnstructuredGridReader()
+    rd.SetFileName(path("fv_dual.vtu"))
+    rd.Update()
+    g = rd.GetOutput()
+    types = {g.GetCellType(i) for i in range(g.GetNumberOfCells())}
+    check(g.GetNumberOfPoints() == len(pts2) and g.GetNumberOfCells() == ncell and types == {7},
+          "VTK reads the dual as one grid of %d VTK_POLYGON cells on %d points"
+          % (g.GetNumberOfCells(), g.GetNumberOfPoints()))
+    check(g.GetFieldData().GetArray("face_lengths").GetNumberOfTuples() == len(fl),
+          "VTK reads the face table as field data")
+    # neighbouring cells share points: across each interior face VTK finds cell b
+    fp = dual.field_data["face_points"]
+    bad = 0
+    for (a, b), (p, q) in zip(fc, fp):
+        ids, pts = vtk.vtkIdList(), vtk.vtkIdList()
+        pts.InsertNextId(int(p))
+        pts.InsertNextId(int(q))
+        g.GetCellNeighbors(int(a), pts, ids)
+        got = sorted(ids.GetId(i) for i in range(ids.GetNumberOfIds()))
+        bad += got != ([int(b)] if b >= 0 else [])
+    check(bad == 0, "VTK's neighbour of each cell across each face is the face table's (%d wrong)" % bad)
 
 # ---- bring your own mesh: a sheared structured grid, not Delaunay ----------
 n = 8

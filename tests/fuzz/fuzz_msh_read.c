@@ -7,7 +7,7 @@
  * finite coordinates, triangle and line indices in range, weights finite;
  * when it is small, it is rebuilt through cvm_mesh_read() of a temporary
  * file, which must give a mesh that passes cvm_mesh_check() (fuzz_mesh_check.h) or an error
- * with a message.
+ * with a message. The names pass of cvm_mesh_read() runs on the same bytes and faults.
  */
 #include <math.h>
 #include <stdint.h>
@@ -75,6 +75,33 @@ static void rebuild(const uint8_t *data, size_t size)
     cvm_mesh_free(m);
 }
 
+/* The names pass of cvm_mesh_read() (cvm__read_msh_names), with the same
+ * faults: a status with a message, or the names; it fails only where the full
+ * read (full_ok) failed, or by an injected fault. */
+static void names_only(const uint8_t *data, size_t size, int full_ok)
+{
+    cvm__ctx ctx;
+    cvm__reader r;
+    fuzz_input src;
+    cvmtest_alloc a;
+    cvm__phys_name *names;
+    size_t n, k;
+    cvm_status s;
+    fuzz_input_setup(data, size, &src, &r, &ctx, &a);
+    s = cvm__read_msh_names(&ctx, &r, "fuzz.msh", &names, &n);
+    if (s == CVM_OK) {
+        for (k = 0; k < n; k++)
+            FUZZ_REQUIRE(memchr(names[k].name, '\0', sizeof names[k].name) != NULL, "name %zu", k);
+        FUZZ_REQUIRE((names == NULL) == (n == 0), "names without a count");
+    } else {
+        FUZZ_REQUIRE(!full_ok || a.n_failed > 0 || src.failed, "the full read succeeded: %s", ctx.errmsg);
+        FUZZ_REQUIRE(ctx.errmsg[0] != '\0', "status %d without a message", (int)s);
+        FUZZ_REQUIRE(names == NULL && n == 0, "names not left empty on error");
+    }
+    cvm__free(&ctx, names);
+    FUZZ_REQUIRE(a.live_blocks == 0, "names: %ld blocks leaked (status %d)", a.live_blocks, (int)s);
+}
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     cvm__ctx ctx;
@@ -99,5 +126,6 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     }
     cvm__vtu_mesh_free(&ctx, &vm);
     FUZZ_REQUIRE(a.live_blocks == 0, "%ld blocks leaked (status %d)", a.live_blocks, (int)s);
+    names_only(data, size, s == CVM_OK);
     return 0;
 }

@@ -92,3 +92,58 @@ def test_bad_vtu_raises_with_the_line(tmp_path):
                    '</DataArray></Points></Piece></VTKFile>\n')
     with pytest.raises(cvmesh.FileError, match=r"bad.vtu:2: Points: entry 8 \(from 0\) is 'zz', not a number"):
         Mesh.read(bad)
+
+
+@pytest.mark.skipif(not hasattr(capi, "cvm_mesh_count_dual"), reason="no finite-volume dual")
+def test_dual_fv_mesh_is_consistent(weighted):
+    d = weighted.dual()
+    p, e, t = weighted.points, weighted.edges, weighted.triangles
+    n, ne = len(p), len(e)
+    assert d.points.shape[1] == 2 and d.points.dtype == np.float64
+    assert d.offsets.shape == (n + 1,) and d.polygons.shape == (d.offsets[-1],)
+    assert d.faces.shape[1] == 6 and d.face_lengths.shape == (len(d.faces), 2)
+    # the corners are the doubles of dual_cells; the power vertices come first
+    _, corners = weighted.dual_cells
+    np.testing.assert_array_equal(d.points[d.polygons], corners)
+    np.testing.assert_array_equal(d.points[:len(t)], weighted.dual_vertices)
+    assert np.unique(d.polygons).size == len(d.points)
+    # one face per edge, in edge order, then two per boundary edge
+    np.testing.assert_array_equal(d.faces[:ne, :2], e)
+    np.testing.assert_array_equal(d.face_lengths[:ne, 1], weighted.dual_edge_lengths)
+    nb = len(d.faces) - ne
+    assert nb % 2 == 0 and (d.faces[ne:, 1] == -1).all() and (d.faces[:ne, 1] >= 0).all()
+    a, b = p[d.faces[:, 2]], p[d.faces[:, 3]]
+    np.testing.assert_allclose(d.face_lengths[:, 0], np.hypot(*(a - b).T), rtol=1e-15)
+    fp, fq = d.points[d.faces[:, 4]], d.points[d.faces[:, 5]]
+    np.testing.assert_allclose(d.face_lengths[:, 1], np.hypot(*(fq - fp).T), rtol=1e-15)
+    # every cell is closed by its faces: outward normals sum to 0
+    normal = np.column_stack([fq[:, 1] - fp[:, 1], fp[:, 0] - fq[:, 0]])
+    total = np.zeros((n, 2))
+    np.add.at(total, d.faces[:, 0], normal)
+    inner = d.faces[:, 1] >= 0
+    np.add.at(total, d.faces[inner, 1], -normal[inner])
+    assert np.abs(total).max() < 1e-12
+    areas = np.array([shoelace(d.points[d.polygons[d.offsets[v]:d.offsets[v + 1]]]) for v in range(n)])
+    np.testing.assert_allclose(areas, d.areas, atol=1e-12)
+    assert d.areas.sum() == pytest.approx(1.0, abs=1e-12)
+
+
+@pytest.mark.skipif(not hasattr(capi, "cvm_mesh_count_dual"), reason="no finite-volume dual")
+def test_dual_vtu_is_one_polygon_mesh_for_meshio(weighted, tmp_path):
+    meshio = pytest.importorskip("meshio")
+    weighted.write_dual(tmp_path / "dual.vtu")
+    d = weighted.dual()
+    m = meshio.read(tmp_path / "dual.vtu")
+    assert len(m.points) == len(d.points)
+    assert {c.type for c in m.cells} == {"polygon"}
+    sizes = [c.data.shape[1] for c in m.cells]
+    assert sizes == sorted(set(sizes))  # one block per corner count
+    assert sum(len(c.data) for c in m.cells) == len(weighted.points)
+    assert m.field_data["face_cells"].shape == (len(d.faces), 2)
+    np.testing.assert_array_equal(m.field_data["face_edge"], d.faces[:, 2:4])
+    np.testing.assert_array_equal(m.field_data["face_points"], d.faces[:, 4:6])
+    np.testing.assert_array_equal(m.field_data["face_lengths"], d.face_lengths)
+    vertex = np.concatenate(m.cell_data["vertex"])
+    cell_of = np.full(len(weighted.points), -1)
+    cell_of[vertex] = np.arange(len(vertex))
+    np.testing.assert_array_equal(m.field_data["face_cells"][:, 0], cell_of[d.faces[:, 0]])

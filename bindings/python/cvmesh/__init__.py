@@ -40,6 +40,7 @@ from ._errors import (ArgumentError, Error, FileError, IncompleteWarning,
 __all__ = [
     "Mesh", "Sizing", "Quality", "Bounds", "Status", "Option", "Entity", "Measure",
     "Report", "CellType", "Histogram", "Stage", "Algorithm", "option_bounds", "version",
+    "DualMesh",
     "OptionKey", "PathLike", "ProgressCallback", "SizeCallback", "BatchSizeCallback", "Error",
     "ArgumentError",
     "OptionError", "InputError", "StateError", "UnsupportedError", "FileError",
@@ -142,6 +143,16 @@ class Bounds(NamedTuple):
     hi: float
     default: float
     is_integer: bool
+
+
+class DualMesh(NamedTuple):
+    """The power dual as a finite-volume mesh (Mesh.dual()); see there."""
+    points: "npt.NDArray[np.float64]"
+    offsets: "npt.NDArray[np.int32]"
+    polygons: "npt.NDArray[np.int32]"
+    faces: "npt.NDArray[np.int32]"
+    face_lengths: "npt.NDArray[np.float64]"
+    areas: "npt.NDArray[np.float64]"
 
 
 # Histogram lengths (cvmesh.h: 18 angle bins, 16 degree bins, q1 12, q2..q5 20).
@@ -910,6 +921,43 @@ class Mesh:
             offsets = capi.cvm_mesh_copy_dual_cell_offsets(n + 1, m)
             k = int(offsets[-1])
             return offsets, capi.cvm_mesh_copy_dual_cells(2 * k, m).reshape(k, 2)
+
+    @property
+    def marker_names(self) -> Dict[Tuple[int, int], str]:
+        """{(dim, marker): name}: the names of the markers (Gmsh physical names;
+        dim 0 points, 1 segments, 2 regions), read from a .msh and written back
+        to one. See cvm_mesh_set_marker_name()."""
+        with self._handle() as m:
+            n = capi.cvm_mesh_count_marker_names(m)
+            keys = capi.cvm_mesh_copy_marker_name_keys(2 * n, m).reshape(n, 2)
+            return {(int(d), int(k)): capi.cvm_mesh_get_marker_name(m, int(d), int(k))
+                    for d, k in keys}
+
+    def set_marker_name(self, dim: int, marker: int, name: Optional[str]) -> None:
+        """Name marker `marker` of dimension `dim` (None removes the name)."""
+        with self._handle() as m:
+            capi.cvm_mesh_set_marker_name(m, dim, marker, name)
+
+    def dual(self) -> "DualMesh":
+        """The power (Voronoi) dual as a finite-volume mesh (cvm_mesh_copy_dual_points()
+        and the calls after it in cvmesh.h): a DualMesh of numpy arrays. points
+        (k, 2) float64, each once (power vertices of the triangles, then the
+        feet of the boundary edges, then the boundary vertices); offsets (n + 1,)
+        and polygons (c,) int32, vertex v's cell polygons[offsets[v]:offsets[v+1]]
+        as point ids, counter-clockwise; faces (f, 6) int32: cell a, cell b (-1
+        on the boundary), the primal edge's two vertices, the face's points p, q
+        (cell a on the left of p -> q); face_lengths (f, 2) float64: primal edge
+        length, face length; areas (n,) float64 the cell areas."""
+        with self._handle() as m:
+            n = capi.cvm_mesh_count(m, Entity.VERTEX)
+            npt_, ncorner, nface = capi.cvm_mesh_count_dual(m)
+            return DualMesh(
+                capi.cvm_mesh_copy_dual_points(2 * npt_, m).reshape(npt_, 2),
+                capi.cvm_mesh_copy_dual_cell_offsets(n + 1, m),
+                capi.cvm_mesh_copy_dual_polygons(ncorner, m),
+                capi.cvm_mesh_copy_dual_faces(6 * nface, m).reshape(nface, 6),
+                capi.cvm_mesh_copy_dual_face_lengths(2 * nface, m).reshape(nface, 2),
+                capi.cvm_mesh_copy_dual_areas(n, m))
 
     def write_dual(self, path: PathLike) -> None:
         """Write the power cells as .vtu polygons (cell data vertex, area, weight)."""

@@ -14,6 +14,7 @@ TCase *api_write_tcase(void);    /* test_write.c: cvm_mesh_write (mesh_write.c) 
 TCase *api_read_vtu_tcase(void); /* test_read_vtu.c: cvm_mesh_read of .vtu (mesh_read_vtu.c) */
 TCase *api_read_foreign_tcase(void); /* test_read_foreign.c: cvm_mesh_read of VTK, meshio and Gmsh files */
 TCase *api_read_names_tcase(void); /* test_read_names.c: later errors in the file's terms */
+TCase *api_marker_names_tcase(void); /* test_marker_names.c: the marker <-> name table, .msh physical names */
 TCase *api_nd_tcase(void);        /* test_nd.c: dimension-generic calls, mixed cells, reports */
 TCase *api_sizing_nd_tcase(void);
 TCase *api_mesh3_dual_tcase(void); /* test_mesh3_dual.c: the 3D dual and quality measures */

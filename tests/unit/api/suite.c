@@ -16,6 +16,7 @@ Suite *api_suite(void)
     suite_add_tcase(s, api_read_vtu_tcase());
     suite_add_tcase(s, api_read_foreign_tcase());
     suite_add_tcase(s, api_read_names_tcase());
+    suite_add_tcase(s, api_marker_names_tcase());
     suite_add_tcase(s, api_nd_tcase());
     suite_add_tcase(s, api_sizing_nd_tcase());
     suite_add_tcase(s, api_mesh3_tcase());

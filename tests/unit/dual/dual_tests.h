@@ -8,6 +8,7 @@ TCase *dual_regular_tcase(void);    /* lib/delaunay/regular.c via cvm_mesh_set_w
 TCase *dual_api_tcase(void);        /* lib/api/dual.c */
 TCase *dual_quality_tcase(void);    /* lib/dual/quality.c, lib/api/dual_quality.c */
 TCase *dual_cells_tcase(void);      /* lib/dual/cells.c, lib/api/dual_cells.c */
+TCase *dual_fv_tcase(void);         /* the finite-volume dual: lib/dual/cells.c, lib/api/dual_cells.c */
 TCase *dual_optimise_tcase(void);   /* lib/api/optimise.c, lib/dual/optimise*.c, lib/dual/merge.c */
 TCase *dual_prepass_tcase(void);    /* lib/dual/prepass.c (CVM_OPT_DUAL_PREPASS) */
 

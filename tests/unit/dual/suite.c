@@ -10,6 +10,7 @@ Suite *dual_suite(void)
     suite_add_tcase(s, dual_api_tcase());
     suite_add_tcase(s, dual_quality_tcase());
     suite_add_tcase(s, dual_cells_tcase());
+    suite_add_tcase(s, dual_fv_tcase());
     suite_add_tcase(s, dual_optimise_tcase());
     suite_add_tcase(s, dual_prepass_tcase());
     return s;

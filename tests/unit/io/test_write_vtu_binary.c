@@ -137,6 +137,40 @@ START_TEST(vtu_zlib_write_survives_oom)
 }
 END_TEST
 
+/* CVM_VTU_AUTO: ASCII up to CVM_VTU_AUTO_MAX_ASCII_POINTS vertices, binary
+ * from one more; both read back to the same points. */
+START_TEST(vtu_auto_is_binary_above_the_threshold)
+{
+    size_t n, k, len;
+    double *xy = malloc(2 * (CVM_VTU_AUTO_MAX_ASCII_POINTS + 1) * sizeof *xy);
+    ck_assert_ptr_nonnull(xy);
+    for (k = 0; k < CVM_VTU_AUTO_MAX_ASCII_POINTS + 1; k++) {
+        xy[2 * k] = (double)(k % 1000);
+        xy[2 * k + 1] = (double)(k / 1000);
+    }
+    for (n = CVM_VTU_AUTO_MAX_ASCII_POINTS; n <= CVM_VTU_AUTO_MAX_ASCII_POINTS + 1; n++) {
+        cvm__mesh_out mo;
+        cvm__vtu_mesh vm;
+        cvm__ctx ctx;
+        char *text;
+        memset(&mo, 0, sizeof mo);
+        mo.xy = xy;
+        mo.nv = n;
+        text = write_read(&mo, CVM_VTU_AUTO, &vm, &len);
+        ck_assert_msg((strstr(text, "format=\"appended\"") != NULL) == (n > CVM_VTU_AUTO_MAX_ASCII_POINTS),
+                      "%lu points", (unsigned long)n);
+        ck_assert_msg((strstr(text, "format=\"ascii\"") != NULL) == (n <= CVM_VTU_AUTO_MAX_ASCII_POINTS),
+                      "%lu points", (unsigned long)n);
+        ck_assert_uint_eq(vm.p.np, n);
+        ck_assert(vm.p.xy[2 * n - 2] == xy[2 * n - 2] && vm.p.xy[2 * n - 1] == xy[2 * n - 1]);
+        cvm__ctx_init_default(&ctx);
+        cvm__vtu_mesh_free(&ctx, &vm);
+        free(text);
+    }
+    free(xy);
+}
+END_TEST
+
 TCase *io_write_vtu_binary_tcase(void)
 {
     TCase *tc = tcase_create("write_vtu_binary");
@@ -144,5 +178,6 @@ TCase *io_write_vtu_binary_tcase(void)
     tcase_add_test(tc, vtu_binary_and_zlib_read_back_exactly);
     tcase_add_test(tc, vtu_zlib_spans_blocks);
     tcase_add_test(tc, vtu_zlib_write_survives_oom);
+    tcase_add_test(tc, vtu_auto_is_binary_above_the_threshold);
     return tc;
 }
