@@ -15,6 +15,7 @@ typedef struct seg_work {
     int32_t *rng; size_t cap_rng;                /* ranges for the pseudo-polygon stack */
     int32_t *xe; size_t nxe, cap_xe;             /* crossed edges as vertex pairs */
     size_t reroutes;                             /* crossings routed through an existing vertex */
+    int32_t A, B;                                /* the ends of the input segment */
 } seg_work;
 
 static cvm_status push(cvm__tri2 *T, int32_t **arr, size_t *n, size_t *cap, int32_t v)
@@ -170,12 +171,28 @@ static int at_vertex(const double *p, const double *q)
     return 1;
 }
 
+/* Vertex z lies exactly on the input segment w->A - w->B and strictly between
+ * the ends a, b of the piece being recovered, which is not that segment: the
+ * piece runs from or to a rounded crossing a few ulps off the segment's line,
+ * so z may lie off the piece. An input point lying exactly in the interior of
+ * a segment splits it (cvm_mesh_triangulate()): z joins the chain. */
+static int on_input_segment(const cvm__tri2 *T, const seg_work *w, int32_t a, int32_t b, int32_t z)
+{
+    const double *pz;
+    if (!w || z < 0 || (a == w->A && b == w->B))
+        return 0;
+    pz = cvm__tri2_pt(T, z);
+    return cvm__orient2d(cvm__tri2_pt(T, w->A), cvm__tri2_pt(T, w->B), pz) == 0 &&
+           ahead(cvm__tri2_pt(T, a), cvm__tri2_pt(T, b), pz) &&
+           ahead(cvm__tri2_pt(T, b), cvm__tri2_pt(T, a), pz);
+}
+
 /* Find, around a, the edge a-b or the first triangle the segment enters.
  * Returns STEP_DONE (edge exists, now constrained), STEP_SPLIT (*v_out on the
  * segment, edge a-v constrained), or STEP_CROSS with *t_out, *i_out: triangle
  * (a, x, y) with a at i whose edge x-y the segment crosses. */
-static int start_at(cvm__tri2 *T, int32_t a, int32_t b, int32_t seg, int32_t *t_out, int *i_out,
-                    int32_t *v_out)
+static int start_at(cvm__tri2 *T, const seg_work *w, int32_t a, int32_t b, int32_t seg,
+                    int32_t *t_out, int *i_out, int32_t *v_out)
 {
     const double *pa = cvm__tri2_pt(T, a), *pb = cvm__tri2_pt(T, b);
     int32_t t0 = T->vtri[a], t = t0;
@@ -190,12 +207,12 @@ static int start_at(cvm__tri2 *T, int32_t a, int32_t b, int32_t seg, int32_t *t_
         if (x >= 0 && y >= 0) {
             double ox = cvm__orient2d(pa, pb, cvm__tri2_pt(T, x));
             double oy = cvm__orient2d(pa, pb, cvm__tri2_pt(T, y));
-            if (ox == 0 && ahead(pa, pb, cvm__tri2_pt(T, x))) {
+            if ((ox == 0 && ahead(pa, pb, cvm__tri2_pt(T, x))) || on_input_segment(T, w, a, b, x)) {
                 set_constrained(T, t, (i + 2) % 3, seg);
                 *v_out = x;
                 return STEP_SPLIT;
             }
-            if (oy == 0 && ahead(pa, pb, cvm__tri2_pt(T, y))) {
+            if ((oy == 0 && ahead(pa, pb, cvm__tri2_pt(T, y))) || on_input_segment(T, w, a, b, y)) {
                 set_constrained(T, t, (i + 1) % 3, seg);
                 *v_out = y;
                 return STEP_SPLIT;
@@ -299,7 +316,7 @@ static cvm_status flip_recover(cvm__tri2 *T, seg_work *w, int32_t a, int32_t b, 
                 return s;
         }
     }
-    if (start_at(T, a, b, seg, &t, &i, &v0) != STEP_DONE)
+    if (start_at(T, NULL, a, b, seg, &t, &i, &v0) != STEP_DONE)
         return cvm__error(T->ctx, CVM_E_INTERNAL, CVM_ENT_INPUT_SEGMENT, seg,
                           "segment %ld: edge %ld-%ld missing after flip-based recovery",
                           (long)seg, (long)a, (long)b);
@@ -320,7 +337,7 @@ static cvm_status recover(cvm__tri2 *T, seg_work *w, int32_t a, int32_t b, int32
     size_t h;
     cvm_status s;
 
-    r = start_at(T, a, b, seg, &t, &i, &v);
+    r = start_at(T, w, a, b, seg, &t, &i, &v);
     if (r == STEP_DONE)
         return CVM_OK;
     if (r == STEP_SPLIT) {
@@ -402,7 +419,7 @@ static cvm_status recover(cvm__tri2 *T, seg_work *w, int32_t a, int32_t b, int32
         if (z == b)
             break;
         oz = cvm__orient2d(pa, pb, cvm__tri2_pt(T, z));
-        if (oz == 0) {
+        if (oz == 0 || on_input_segment(T, w, a, b, z)) {
             /* z lies on the segment: recover a-z first, then z-b */
             if ((s = push(T, &w->pairs, &w->npairs, &w->cap_pairs, z)) ||
                 (s = push(T, &w->pairs, &w->npairs, &w->cap_pairs, b)) ||
@@ -471,6 +488,8 @@ cvm_status cvm__tri2_insert_segment(cvm__tri2 *T, int32_t a, int32_t b, int32_t 
     cvm_status s = CVM_OK;
     size_t pieces = 0;
     *other_seg_out = -1;
+    w.A = a;
+    w.B = b;
     if ((s = cvm__tri2_enable_constraints(T)))
         return s;
     if ((s = push(T, &w.pairs, &w.npairs, &w.cap_pairs, a)) ||

@@ -69,9 +69,30 @@ static int dr_crossing(const cvm__refiner *R, int32_t s1, int32_t s2, double *x)
     return 1;
 }
 
+/* An end of segment e1 lying exactly in the interior of segment e2, or the
+ * other way round (a T-junction: cvm_mesh_triangulate() makes it a vertex of
+ * the other's chain, so the two meet there as at a shared end); else -1. */
+static int32_t dr_end_on(const cvm__refiner *R, const int32_t *e1, const int32_t *e2)
+{
+    int k, side;
+    for (side = 0; side < 2; side++) {
+        const int32_t *e = side ? e2 : e1, *f = side ? e1 : e2;
+        const double *p = dr_pt(R, f[0]), *q = dr_pt(R, f[1]);
+        for (k = 0; k < 2; k++) {
+            const double *x = dr_pt(R, e[k]);
+            int i = p[0] != q[0] ? 0 : 1;
+            if (cvm__orient2d(p, q, x) == 0 && x[i] != p[i] && x[i] != q[i] &&
+                (x[i] > p[i]) != (x[i] > q[i]))
+                return e[k];
+        }
+    }
+    return -1;
+}
+
 /* A skinny triangle whose shortest edge u-w joins two different segments that
- * meet at a small angle (at a shared end, or where they cross), with u and w
- * on the same concentric shell around the join, is not split: splitting it
+ * meet at a small angle (at a shared end, an end on the other, or where they
+ * cross), with u and w on the same concentric shell around the join, is not
+ * split: splitting it
  * cannot help (Miller, Pav, Walkington 2003; Triangle's testtriangle, where a
  * crossing vertex also ends the pieces of both segments). */
 static int dr_exempt(cvm__refiner *R, int32_t u, int32_t w)
@@ -93,6 +114,8 @@ static int dr_exempt(cvm__refiner *R, int32_t u, int32_t w)
                       : (e1[1] >= 0 && (e1[1] == e2[0] || e1[1] == e2[1])) ? e1[1] : -1;
             const double *pj, *pu, *pw;
             double ux, uy, wx, wy, d1, d2, xc[2];
+            if (J < 0 && e1[0] >= 0 && e1[1] >= 0 && e2[0] >= 0 && e2[1] >= 0)
+                J = dr_end_on(R, e1, e2);
             if (J >= 0)
                 pj = dr_pt(R, J);
             else if (e1[0] < 0 || e1[1] < 0 || e2[0] < 0 || e2[1] < 0)
