@@ -171,11 +171,14 @@ static int at_vertex(const double *p, const double *q)
     return 1;
 }
 
-/* Vertex z lies exactly on the input segment w->A - w->B and strictly between
- * the ends a, b of the piece being recovered, which is not that segment: the
- * piece runs from or to a rounded crossing a few ulps off the segment's line,
- * so z may lie off the piece. An input point lying exactly in the interior of
- * a segment splits it (cvm_mesh_triangulate()): z joins the chain. */
+/* Vertex z lies exactly on the input segment w->A - w->B, strictly inside it
+ * and strictly between the ends a, b of the piece being recovered, which is
+ * not that segment: the piece runs from or to a rounded crossing a few ulps
+ * off the segment's line, so z may lie off the piece. An input point lying
+ * exactly in the interior of a segment splits it (cvm_mesh_triangulate()): z
+ * joins the chain. A point on the line beyond an end does not (with a piece
+ * from a rounded vertex an ulp behind that end it sent the pieces back and
+ * forth: tests/fuzz/corpus/cdt/regression_segment_start_rerouted_an_ulp_behind_near_offset). */
 static int on_input_segment(const cvm__tri2 *T, const seg_work *w, int32_t a, int32_t b, int32_t z)
 {
     const double *pz;
@@ -183,6 +186,8 @@ static int on_input_segment(const cvm__tri2 *T, const seg_work *w, int32_t a, in
         return 0;
     pz = cvm__tri2_pt(T, z);
     return cvm__orient2d(cvm__tri2_pt(T, w->A), cvm__tri2_pt(T, w->B), pz) == 0 &&
+           ahead(cvm__tri2_pt(T, w->A), cvm__tri2_pt(T, w->B), pz) &&
+           ahead(cvm__tri2_pt(T, w->B), cvm__tri2_pt(T, w->A), pz) &&
            ahead(cvm__tri2_pt(T, a), cvm__tri2_pt(T, b), pz) &&
            ahead(cvm__tri2_pt(T, b), cvm__tri2_pt(T, a), pz);
 }
