@@ -145,6 +145,14 @@ static int within_chain(const double *pa, const double *pb, const double *q)
     return along >= -tol && along <= len + tol && fabs(cvm__orient2d(pa, pb, q)) <= tol * len;
 }
 
+/* q lies strictly between a and b along the axis on which a-b is longer
+ * (exact comparisons; q need not be on the line). */
+static int strictly_between(const double *a, const double *b, const double *q)
+{
+    int i = fabs(b[0] - a[0]) >= fabs(b[1] - a[1]) ? 0 : 1;
+    return q[i] != a[i] && q[i] != b[i] && (q[i] > a[i]) != (q[i] > b[i]);
+}
+
 /* No double splits the piece x-y: the two slivers beside it are thinner than
  * an ulp where a-b crosses it (a-b and the piece nearly coincide). Of x and y
  * the end nearer the line a-b, if within_chain() of a-b, is where they meet;
@@ -380,14 +388,28 @@ static cvm_status recover(cvm__tri2 *T, seg_work *w, int32_t a, int32_t b, int32
                 return CVM_E_INPUT_INTERSECTING;
             }
             cvm__segment_intersection2d(pa, pb, cvm__tri2_pt(T, x), cvm__tri2_pt(T, y), p);
-            if ((s = split_at_crossing(T, p, ht, hj, 0, &nv)))
+            /* On or beside an end of the piece x-y, strictly between a and b,
+             * a rounded crossing where a third segment meets these two
+             * (concurrent segments, or two overlapping ones crossing the same
+             * piece): that end is the crossing, so a-b is routed through it
+             * (the budget keeps a pathological cycle finite) rather than split
+             * x-y again an ulp from it. */
+            {
+                int32_t end = at_vertex(p, cvm__tri2_pt(T, x))   ? x
+                              : at_vertex(p, cvm__tri2_pt(T, y)) ? y
+                                                                 : -1;
+                const double *pe = end >= 0 ? cvm__tri2_pt(T, end) : NULL;
+                nv = -1;
+                if (pe && strictly_between(pa, pb, pe) && within_chain(pa, pb, pe) &&
+                    w->reroutes++ <= 64 + T->nv)
+                    nv = end;
+            }
+            if (nv < 0 && (s = split_at_crossing(T, p, ht, hj, 0, &nv)))
                 return s;
             if (nv < 0) {
-                /* p cannot split x-y. On or beside an end of the piece, a
-                 * rounded crossing where a third segment meets these two
-                 * (concurrent segments), that end is the crossing: route a-b
-                 * through it (the budget keeps a pathological cycle finite).
-                 * Elsewhere p rounded past a sliver: nudge it. Positions are
+                /* p cannot split x-y. On or beside an end of the piece (also
+                 * one an ulp behind a or beyond b), that end is the crossing;
+                 * elsewhere p rounded past a sliver: nudge it. Positions are
                  * read afresh: adding a candidate vertex may move T->xy, so
                  * pa and pb are stale here. */
                 int32_t end = at_vertex(p, cvm__tri2_pt(T, x))   ? x

@@ -515,6 +515,45 @@ START_TEST(point_on_segment_joins_the_piece_from_a_rounded_crossing)
 }
 END_TEST
 
+/* Segment (20000,9500)-(15500,500) lies on segment (15500,500)-(23000,15500),
+ * and both cross the polygon edge (20125,5375)-(15625,8125) at the same point
+ * near (18449.47, 6398.94). Computed from different pieces, the two rounded
+ * crossings fall an ulp apart: the second lies within 16 ulps of the end of
+ * the piece the first left, so it is that end (cvm_mesh_triangulate()), and no
+ * vertex is made an ulp from it. (Two vertices an ulp apart enclosed a flat
+ * triangle of constrained edges that sent AFLR's clean-up to the Steiner
+ * limit: tests/fuzz/corpus/refine/regression_overlapping_segments_cross_an_edge_an_ulp_apart.) */
+START_TEST(overlapping_segments_share_their_rounded_crossing)
+{
+    static const double xy[] = {15625, 8125, 19625, 10375, 14875, 10500, 14500, 15375, 10125, 11000,
+        1375, 11625, 5625, 9250, 2500, 7125, 3875, 5375, 10500, 6250, 10000, 2125, 14000, 2125,
+        17625, 3250, 20125, 5375, 15500, 500, 23000, 15500, 20000, 9500, 15500, 500, 23000, 15500,
+        23000, 8500};
+    static const cvm_index segs[] = {0, 1, 1, 2, 2, 3, 3, 4, 4, 5, 5, 6, 6, 7, 7, 8, 8, 9, 9, 10,
+        10, 11, 11, 12, 12, 13, 13, 0, 14, 15, 16, 17, 18, 19};
+    double *p;
+    size_t nv, i, j;
+    cvm_mesh *m;
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_points(m, xy, 20, 2), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_segments(m, segs, 17), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_KEEP_CONVEX_HULL, 1), CVM_OK);
+    ck_assert_msg(cvm_mesh_triangulate(m) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    cvmtest_assert_valid(m);
+    ck_assert_int_eq(cvm_mesh_count(&nv, m, CVM_ENT_VERTEX), CVM_OK);
+    p = malloc(2 * nv * sizeof *p);
+    ck_assert_ptr_nonnull(p);
+    ck_assert_int_eq(cvm_mesh_copy_points(p, 2 * nv, m), CVM_OK);
+    for (i = 0; i < nv; i++)
+        for (j = i + 1; j < nv; j++)
+            ck_assert_msg(fabs(p[2 * i] - p[2 * j]) + fabs(p[2 * i + 1] - p[2 * j + 1]) > 1e-6,
+                          "vertices %zu and %zu at (%.17g, %.17g) and (%.17g, %.17g)", i, j,
+                          p[2 * i], p[2 * i + 1], p[2 * j], p[2 * j + 1]);
+    free(p);
+    cvm_mesh_free(m);
+}
+END_TEST
+
 /* Segments (15,15)-(7+u,2) and (15+u,15)-(7,2), u one ulp, cross at a tiny
  * angle between two other crossings: the slivers on both sides of the piece
  * they cross are thinner than an ulp there, so no double splits it. The
@@ -585,6 +624,7 @@ TCase *delaunay_cdt_tcase(void)
     tcase_add_test(tc, crossings_near_large_offset_keep_their_chains);
     tcase_add_test(tc, concurrent_crossings_route_through_the_rounded_crossing);
     tcase_add_test(tc, point_on_segment_joins_the_piece_from_a_rounded_crossing);
+    tcase_add_test(tc, overlapping_segments_share_their_rounded_crossing);
     tcase_add_test(tc, nearly_coincident_crossing_meets_at_the_piece_end);
     tcase_add_test(tc, segment_ends_an_ulp_apart_meet_at_one);
     return tc;
