@@ -1493,7 +1493,10 @@ typedef enum cvm_algorithm {
  * CVM_UNMET_SIZE). Segments are split
  * where encroached (concentric shells near small input angles, as Triangle does), so
  * every input segment stays a union of mesh edges; with no segments, or with
- * CVM_OPT_KEEP_CONVEX_HULL, the convex hull edges become segments (with marker 0).
+ * CVM_OPT_KEEP_CONVEX_HULL, the convex hull edges become segments (with marker 0),
+ * a hull edge passing within 2^-40 (M + L) of a vertex (the tolerance of a
+ * segment's chain, see cvm_mesh_triangulate()) through that vertex: the sliver
+ * between them leaves the mesh.
  * Before refining, with CVM_OPT_KEEP_SEGMENT_VERTICES = 0 smooth chains of segments
  * are re-discretised with the sizing and the triangulation rebuilt (see that option:
  * inner input vertices of such chains disappear, the input map gives -1 for them);
