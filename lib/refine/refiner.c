@@ -273,25 +273,36 @@ static cvm_status rf_report(cvm__refiner *R, cvm__refine_report *rep)
 }
 
 /* Post-processing (swap.c, smooth.c) of the Steiner vertices first..nv-1:
- * degree swapping, smoothing, then the Delaunay-restoring flips (their
- * number into *flips). */
-static cvm_status rf_post(cvm__refiner *R, size_t first, size_t *flips)
+ * degree swapping, smoothing, then the Delaunay-restoring flips; *changed
+ * receives the number of swaps, moves and flips. */
+static cvm_status rf_post(cvm__refiner *R, size_t first, size_t *changed)
 {
     const cvm__refine_params *p = R->p;
     cvm_status s = CVM_OK;
     cvm_status s2;
+    size_t n = 0;
+    *changed = 0;
     if (R->T->w)
         return CVM_OK; /* a weighted (regular) triangulation: left as refined */
-    if (p->swap)
-        s = cvm__rf_swap_degree(R, NULL);
-    if (!s && p->smooth_sweeps > 0 && p->smooth_method != 1)
-        s = cvm__rf_smooth(R, first, NULL, p->relax_sweeps, p->smooth_sweeps, NULL);
-    if (!s && p->smooth_sweeps > 0 && p->smooth_method != 0)
-        s = cvm__rf_smooth_maxmin(R, first, NULL, p->smooth_sweeps, p->smooth_method == 3, NULL);
+    if (p->swap) {
+        s = cvm__rf_swap_degree(R, &n);
+        *changed += n;
+    }
+    if (!s && p->smooth_sweeps > 0 && p->smooth_method != 1) {
+        s = cvm__rf_smooth(R, first, NULL, p->relax_sweeps, p->smooth_sweeps, &n);
+        *changed += n;
+    }
+    if (!s && p->smooth_sweeps > 0 && p->smooth_method != 0) {
+        s = cvm__rf_smooth_maxmin(R, first, NULL, p->smooth_sweeps, p->smooth_method == 3, &n);
+        *changed += n;
+    }
     /* restored even after an error above: it finishes without memory if it must */
-    if (p->restore_delaunay && (p->swap || p->smooth_sweeps > 0) &&
-        (s2 = cvm__rf_restore_delaunay(R->T, flips)) != CVM_OK && !s)
-        s = s2;
+    if (p->restore_delaunay && (p->swap || p->smooth_sweeps > 0)) {
+        n = 0;
+        if ((s2 = cvm__rf_restore_delaunay(R->T, &n)) != CVM_OK && !s)
+            s = s2;
+        *changed += n;
+    }
     return s;
 }
 
@@ -299,7 +310,7 @@ cvm_status cvm__refine(cvm__tri2 *T, const cvm__refine_params *p, cvm__refine_re
 {
     cvm__refiner R;
     cvm_status s;
-    size_t first = T->nv, flips = 0;
+    size_t first = T->nv, changed = 0;
     memset(rep, 0, sizeof *rep);
     s = rf_setup(&R, T, p);
     if (!s && p->march && !cvm__sizing_is_empty(p->sizing))
@@ -317,10 +328,13 @@ cvm_status cvm__refine(cvm__tri2 *T, const cvm__refine_params *p, cvm__refine_re
     if (!s)
         s = cvm__rf_delaunay(&R);
     if (!s)
-        s = rf_post(&R, first, &flips);
-    /* swapping and smoothing keep the bounds, but the Delaunay-restoring flips
-     * may make a triangle too big or too thin again: refine those */
-    if (!s && flips > 0)
+        s = rf_post(&R, first, &changed);
+    /* swapping keeps the bounds; smoothing may lower an angle below the
+     * requested one where its star already had a smaller one (an exempt
+     * triangle at a small input angle: CVM_OPT_SMOOTH_SWEEPS), and the
+     * Delaunay-restoring flips may make a triangle too big or too thin again:
+     * refine those */
+    if (!s && changed > 0)
         s = cvm__rf_delaunay(&R);
     /* the report states the documented bound: frontal's 0.707 x size after the
      * frontal and AFLR passes, so a triangle left over it where a segment split
