@@ -1045,7 +1045,8 @@ CVM_API cvm_status cvm_mesh_insert_points_nd(cvm_index *ids_out, cvm_mesh *m, co
  * adjacency symmetric, each edge in at most two triangles, every input segment
  * a chain of constrained mesh edges from end to end, through vertices on it or
  * within 2^-40 (M + L) of it (rounded crossings, see cvm_mesh_triangulate();
- * a tolerance of the check only, no meshing decision uses it) (segments of a chain
+ * meshing uses it only to route a chain, or with cvm_mesh_refine() a hull
+ * edge, through a vertex within rounding of it) (segments of a chain
  * re-discretised by CVM_OPT_KEEP_SEGMENT_VERTICES = 0, whose inner ends are gone,
  * are replaced by its new pieces, checked as constrained edges), every interior
  * non-constrained edge locally Delaunay (in-circle, or the power test with
