@@ -171,7 +171,10 @@ static int dr_exempt(cvm__refiner *R, int32_t u, int32_t w)
                 J = dr_end_on(R, e1, e2);
             if (J < 0 && (e1[0] < 0 || e1[1] < 0 || e2[0] < 0 || e2[1] < 0)) {
                 /* a re-discretised chain: the input segment is gone, so the
-                 * join is found along the chains */
+                 * join with another input segment is found along the chains
+                 * (a hull segment's meeting with a chain is no input angle) */
+                if ((size_t)su[a] >= R->p->nseg || (size_t)sw[b] >= R->p->nseg)
+                    continue;
                 J = dr_chain_join(R, u, su[a], sw[b]);
                 if (J < 0)
                     J = dr_chain_join(R, w, sw[b], su[a]);
