@@ -1130,7 +1130,8 @@ CVM_API cvm_status cvm_mesh_insert_points_nd(cvm_index *ids_out, cvm_mesh *m, co
  * adjacency symmetric, each edge in at most two triangles, every input segment
  * a chain of constrained mesh edges from end to end, through vertices on it or
  * within 2^-40 (M + L) of it (rounded crossings, see cvm_mesh_triangulate();
- * a tolerance of the check only, no meshing decision uses it) (segments of a chain
+ * meshing uses it only to route a chain, or with cvm_mesh_refine() a hull
+ * edge, through a vertex within rounding of it) (segments of a chain
  * re-discretised by CVM_OPT_KEEP_SEGMENT_VERTICES = 0, whose inner ends are gone,
  * are replaced by its new pieces, checked as constrained edges), every interior
  * non-constrained edge locally Delaunay (in-circle, or the power test with
@@ -1620,7 +1621,10 @@ typedef enum cvm_algorithm {
  * CVM_UNMET_SIZE). Segments are split
  * where encroached (concentric shells near small input angles, as Triangle does), so
  * every input segment stays a union of mesh edges; with no segments, or with
- * CVM_OPT_KEEP_CONVEX_HULL, the convex hull edges become segments (with marker 0).
+ * CVM_OPT_KEEP_CONVEX_HULL, the convex hull edges become segments (with marker 0),
+ * a hull edge passing within 2^-40 (M + L) of a vertex (the tolerance of a
+ * segment's chain, see cvm_mesh_triangulate()) through that vertex: the sliver
+ * between them leaves the mesh.
  * Before refining, with CVM_OPT_KEEP_SEGMENT_VERTICES = 0 smooth chains of segments
  * are re-discretised with the sizing and the triangulation rebuilt (see that option:
  * inner input vertices of such chains disappear, the input map gives -1 for them);

@@ -15,6 +15,7 @@ typedef struct seg_work {
     int32_t *rng; size_t cap_rng;                /* ranges for the pseudo-polygon stack */
     int32_t *xe; size_t nxe, cap_xe;             /* crossed edges as vertex pairs */
     size_t reroutes;                             /* crossings routed through an existing vertex */
+    int32_t A, B;                                /* the ends of the input segment */
 } seg_work;
 
 static cvm_status push(cvm__tri2 *T, int32_t **arr, size_t *n, size_t *cap, int32_t v)
@@ -144,6 +145,14 @@ static int within_chain(const double *pa, const double *pb, const double *q)
     return along >= -tol && along <= len + tol && fabs(cvm__orient2d(pa, pb, q)) <= tol * len;
 }
 
+/* q lies strictly between a and b along the axis on which a-b is longer
+ * (exact comparisons; q need not be on the line). */
+static int strictly_between(const double *a, const double *b, const double *q)
+{
+    int i = fabs(b[0] - a[0]) >= fabs(b[1] - a[1]) ? 0 : 1;
+    return q[i] != a[i] && q[i] != b[i] && (q[i] > a[i]) != (q[i] > b[i]);
+}
+
 /* No double splits the piece x-y: the two slivers beside it are thinner than
  * an ulp where a-b crosses it (a-b and the piece nearly coincide). Of x and y
  * the end nearer the line a-b, if within_chain() of a-b, is where they meet;
@@ -170,12 +179,33 @@ static int at_vertex(const double *p, const double *q)
     return 1;
 }
 
+/* Vertex z lies exactly on the input segment w->A - w->B, strictly inside it
+ * and strictly between the ends a, b of the piece being recovered, which is
+ * not that segment: the piece runs from or to a rounded crossing a few ulps
+ * off the segment's line, so z may lie off the piece. An input point lying
+ * exactly in the interior of a segment splits it (cvm_mesh_triangulate()): z
+ * joins the chain. A point on the line beyond an end does not (with a piece
+ * from a rounded vertex an ulp behind that end it sent the pieces back and
+ * forth: tests/fuzz/corpus/cdt/regression_segment_start_rerouted_an_ulp_behind_near_offset). */
+static int on_input_segment(const cvm__tri2 *T, const seg_work *w, int32_t a, int32_t b, int32_t z)
+{
+    const double *pz;
+    if (!w || z < 0 || (a == w->A && b == w->B))
+        return 0;
+    pz = cvm__tri2_pt(T, z);
+    return cvm__orient2d(cvm__tri2_pt(T, w->A), cvm__tri2_pt(T, w->B), pz) == 0 &&
+           ahead(cvm__tri2_pt(T, w->A), cvm__tri2_pt(T, w->B), pz) &&
+           ahead(cvm__tri2_pt(T, w->B), cvm__tri2_pt(T, w->A), pz) &&
+           ahead(cvm__tri2_pt(T, a), cvm__tri2_pt(T, b), pz) &&
+           ahead(cvm__tri2_pt(T, b), cvm__tri2_pt(T, a), pz);
+}
+
 /* Find, around a, the edge a-b or the first triangle the segment enters.
  * Returns STEP_DONE (edge exists, now constrained), STEP_SPLIT (*v_out on the
  * segment, edge a-v constrained), or STEP_CROSS with *t_out, *i_out: triangle
  * (a, x, y) with a at i whose edge x-y the segment crosses. */
-static int start_at(cvm__tri2 *T, int32_t a, int32_t b, int32_t seg, int32_t *t_out, int *i_out,
-                    int32_t *v_out)
+static int start_at(cvm__tri2 *T, const seg_work *w, int32_t a, int32_t b, int32_t seg,
+                    int32_t *t_out, int *i_out, int32_t *v_out)
 {
     const double *pa = cvm__tri2_pt(T, a), *pb = cvm__tri2_pt(T, b);
     int32_t t0 = T->vtri[a], t = t0;
@@ -190,12 +220,12 @@ static int start_at(cvm__tri2 *T, int32_t a, int32_t b, int32_t seg, int32_t *t_
         if (x >= 0 && y >= 0) {
             double ox = cvm__orient2d(pa, pb, cvm__tri2_pt(T, x));
             double oy = cvm__orient2d(pa, pb, cvm__tri2_pt(T, y));
-            if (ox == 0 && ahead(pa, pb, cvm__tri2_pt(T, x))) {
+            if ((ox == 0 && ahead(pa, pb, cvm__tri2_pt(T, x))) || on_input_segment(T, w, a, b, x)) {
                 set_constrained(T, t, (i + 2) % 3, seg);
                 *v_out = x;
                 return STEP_SPLIT;
             }
-            if (oy == 0 && ahead(pa, pb, cvm__tri2_pt(T, y))) {
+            if ((oy == 0 && ahead(pa, pb, cvm__tri2_pt(T, y))) || on_input_segment(T, w, a, b, y)) {
                 set_constrained(T, t, (i + 1) % 3, seg);
                 *v_out = y;
                 return STEP_SPLIT;
@@ -299,7 +329,7 @@ static cvm_status flip_recover(cvm__tri2 *T, seg_work *w, int32_t a, int32_t b, 
                 return s;
         }
     }
-    if (start_at(T, a, b, seg, &t, &i, &v0) != STEP_DONE)
+    if (start_at(T, NULL, a, b, seg, &t, &i, &v0) != STEP_DONE)
         return cvm__error(T->ctx, CVM_E_INTERNAL, CVM_ENT_INPUT_SEGMENT, seg,
                           "segment %ld: edge %ld-%ld missing after flip-based recovery",
                           (long)seg, (long)a, (long)b);
@@ -320,7 +350,7 @@ static cvm_status recover(cvm__tri2 *T, seg_work *w, int32_t a, int32_t b, int32
     size_t h;
     cvm_status s;
 
-    r = start_at(T, a, b, seg, &t, &i, &v);
+    r = start_at(T, w, a, b, seg, &t, &i, &v);
     if (r == STEP_DONE)
         return CVM_OK;
     if (r == STEP_SPLIT) {
@@ -358,14 +388,28 @@ static cvm_status recover(cvm__tri2 *T, seg_work *w, int32_t a, int32_t b, int32
                 return CVM_E_INPUT_INTERSECTING;
             }
             cvm__segment_intersection2d(pa, pb, cvm__tri2_pt(T, x), cvm__tri2_pt(T, y), p);
-            if ((s = split_at_crossing(T, p, ht, hj, 0, &nv)))
+            /* On or beside an end of the piece x-y, strictly between a and b,
+             * a rounded crossing where a third segment meets these two
+             * (concurrent segments, or two overlapping ones crossing the same
+             * piece): that end is the crossing, so a-b is routed through it
+             * (the budget keeps a pathological cycle finite) rather than split
+             * x-y again an ulp from it. */
+            {
+                int32_t end = at_vertex(p, cvm__tri2_pt(T, x))   ? x
+                              : at_vertex(p, cvm__tri2_pt(T, y)) ? y
+                                                                 : -1;
+                const double *pe = end >= 0 ? cvm__tri2_pt(T, end) : NULL;
+                nv = -1;
+                if (pe && strictly_between(pa, pb, pe) && within_chain(pa, pb, pe) &&
+                    w->reroutes++ <= 64 + T->nv)
+                    nv = end;
+            }
+            if (nv < 0 && (s = split_at_crossing(T, p, ht, hj, 0, &nv)))
                 return s;
             if (nv < 0) {
-                /* p cannot split x-y. On or beside an end of the piece, a
-                 * rounded crossing where a third segment meets these two
-                 * (concurrent segments), that end is the crossing: route a-b
-                 * through it (the budget keeps a pathological cycle finite).
-                 * Elsewhere p rounded past a sliver: nudge it. Positions are
+                /* p cannot split x-y. On or beside an end of the piece (also
+                 * one an ulp behind a or beyond b), that end is the crossing;
+                 * elsewhere p rounded past a sliver: nudge it. Positions are
                  * read afresh: adding a candidate vertex may move T->xy, so
                  * pa and pb are stale here. */
                 int32_t end = at_vertex(p, cvm__tri2_pt(T, x))   ? x
@@ -402,7 +446,7 @@ static cvm_status recover(cvm__tri2 *T, seg_work *w, int32_t a, int32_t b, int32
         if (z == b)
             break;
         oz = cvm__orient2d(pa, pb, cvm__tri2_pt(T, z));
-        if (oz == 0) {
+        if (oz == 0 || on_input_segment(T, w, a, b, z)) {
             /* z lies on the segment: recover a-z first, then z-b */
             if ((s = push(T, &w->pairs, &w->npairs, &w->cap_pairs, z)) ||
                 (s = push(T, &w->pairs, &w->npairs, &w->cap_pairs, b)) ||
@@ -471,6 +515,8 @@ cvm_status cvm__tri2_insert_segment(cvm__tri2 *T, int32_t a, int32_t b, int32_t 
     cvm_status s = CVM_OK;
     size_t pieces = 0;
     *other_seg_out = -1;
+    w.A = a;
+    w.B = b;
     if ((s = cvm__tri2_enable_constraints(T)))
         return s;
     if ((s = push(T, &w.pairs, &w.npairs, &w.cap_pairs, a)) ||

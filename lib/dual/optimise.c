@@ -203,6 +203,7 @@ cvm_status cvm__dual_optimise(cvm__tri2 *T, const cvm__dual_opt_params *p, cvm__
         nt = T->nt;
     }
     D.vsize = cvm__malloc(ctx, (nv + 1) * sizeof *D.vsize);
+    D.msize = cvm__malloc(ctx, (nv + 1) * sizeof *D.msize);
     D.vbnd = cvm__malloc(ctx, nv + 1);
     D.mark = cvm__malloc(ctx, nv + 1);
     D.V = cvm__malloc(ctx, (2 * nt + 1) * sizeof *D.V);
@@ -223,18 +224,19 @@ cvm_status cvm__dual_optimise(cvm__tri2 *T, const cvm__dual_opt_params *p, cvm__
         D.dup = cvm__malloc(ctx, (nv + 1) * sizeof *D.dup);
         D.map2 = cvm__malloc(ctx, (nv + 1) * sizeof *D.map2);
     }
-    if (!D.vsize || !D.vbnd || !D.mark || !D.V || !D.F || !D.st || !D.weak || !D.layer || !D.list || !D.star || !D.save || !D.best || !D.jobs ||
+    if (!D.vsize || !D.msize || !D.vbnd || !D.mark || !D.V || !D.F || !D.st || !D.weak || !D.layer || !D.list || !D.star || !D.save || !D.best || !D.jobs ||
         !D.stamp || !D.region || (D.topo && (!D.gone || !D.dup || !D.map2)))
         s = CVM_E_NOMEM;
     else
         s = run(&D);
-    if (D.V && D.st && D.weak && D.layer && D.F && D.vsize && D.vbnd && D.save) {
+    if (D.V && D.st && D.weak && D.layer && D.F && D.vsize && D.msize && D.vbnd && D.save) {
         cvm__dopt_score_all(&D);
         rep->nc_after_pct = cvm__dopt_pct(&D);
         if (!rep->sweeps && !D.nc0)
             rep->nc_before_pct = rep->nc_after_pct;
     }
     cvm__free(ctx, D.vsize);
+    cvm__free(ctx, D.msize);
     cvm__free(ctx, D.vbnd);
     cvm__free(ctx, D.mark);
     cvm__free(ctx, D.V);

@@ -49,7 +49,11 @@ typedef struct job {
 typedef struct dopt {
     cvm__tri2 *T;
     const cvm__dual_opt_params *p;
-    double *vsize;   /* nv */
+    double *vsize;   /* nv: the local size (the sizing's where given, else msize) */
+    double *msize;   /* nv: the mesh's own sizes (cvm__dual_mesh_sizes), which the merge
+                        rule of the compliance measures uses (cvm_mesh_copy_dual_merge_groups()):
+                        the sweeps score with them, so the state they keep as the best
+                        is the best by the report's measure */
     uint8_t *vbnd;   /* nv: on the domain boundary */
     uint8_t *mark;   /* nv: scratch (visited / vanished) */
     double *V;       /* 2 per slot */
@@ -102,7 +106,7 @@ double cvm__dopt_sq(double x);
 void cvm__dopt_rescore(dopt *D, int32_t t);
 
 /* Score every domain triangle (see optimise.c) and count the non-compliant
- * and weak ones. */
+ * and weak ones, with the mesh's own sizes at the current positions (msize). */
 void cvm__dopt_score_all(dopt *D);
 
 /* Live triangles around v into star (room for them); their number. */

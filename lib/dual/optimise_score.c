@@ -133,7 +133,7 @@ static int is_weak(const dopt *D, int32_t t)
 void cvm__dopt_rescore(dopt *D, int32_t t)
 {
     uint8_t old = D->st[t], oldw = D->weak[t];
-    D->st[t] = (uint8_t)cvm__dual_tri_compliance(D->T, D->vsize, D->p->merge_tol, D->V, t);
+    D->st[t] = (uint8_t)cvm__dual_tri_compliance(D->T, D->msize, D->p->merge_tol, D->V, t);
     D->nc += (D->st[t] == CVM__DUAL_NONCOMPLIANT) - (old == CVM__DUAL_NONCOMPLIANT);
     D->weak[t] = (uint8_t)(D->st[t] != CVM__DUAL_NONCOMPLIANT && is_weak(D, t));
     D->nweak += D->weak[t];
@@ -145,6 +145,7 @@ void cvm__dopt_score_all(dopt *D)
 {
     cvm__tri2 *T = D->T;
     size_t t;
+    cvm__dual_mesh_sizes(T, D->msize);
     for (t = 0; t < T->nt; t++)
         if (cvm__tri2_in_domain(T, (int32_t)t))
             cvm__dual_tri_vertex(T, (int32_t)t, D->V + 2 * t);

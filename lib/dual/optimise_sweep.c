@@ -154,6 +154,7 @@ void cvm__dopt_compact(dopt *D)
             continue;
         }
         D->vsize[n] = D->vsize[v]; /* n <= v: in place */
+        D->msize[n] = D->msize[v];
         D->vbnd[n] = D->vbnd[v];
     }
     memset(D->gone, 0, nv);
@@ -431,19 +432,13 @@ static double progress(const dopt *D)
 }
 
 /* The report's non-compliant %, as CVM_MEASURE_DUAL_NONCOMPLIANT_PCT measures
- * it: with the mesh's own sizes, where the sweeps may score with the sizing.
- * D->V must be current; D->save (free at both calls) holds the sizes. */
+ * it: D->nc of the last cvm__dopt_score_all() (the mesh's own sizes). */
 double cvm__dopt_pct(dopt *D)
 {
-    size_t t, n = 0, nc = 0;
-    cvm__dual_mesh_sizes(D->T, D->save);
+    size_t t, n = 0;
     for (t = 0; t < D->T->nt; t++)
-        if (cvm__tri2_in_domain(D->T, (int32_t)t)) {
-            n++;
-            nc += cvm__dual_tri_compliance(D->T, D->save, D->p->merge_tol, D->V, (int32_t)t) ==
-                  CVM__DUAL_NONCOMPLIANT;
-        }
-    return n ? 100.0 * (double)nc / (double)n : 0.0;
+        n += cvm__tri2_in_domain(D->T, (int32_t)t) != 0;
+    return n ? 100.0 * (double)D->nc / (double)n : 0.0;
 }
 
 /* Add v to the batch being formed when no vertex of the batch is v or one of

@@ -11,6 +11,10 @@
 /* Miller-Pav-Walkington exemption (as Triangle): the two ends of the shortest
  * edge are this close to equidistant from the apex of a small input angle. */
 #define DR_SHELL_TOL 0.001
+/* How far along a re-discretised chain the join with another segment is
+ * sought (dr_chain_join): the shells around a small angle halve their
+ * radius each step, so 64 edges cover any range of doubles. */
+#define DR_JOIN_STEPS 64
 /* Input angles below this are "small" (cos 60 degrees = 0.5). */
 #define DR_SMALL_ANGLE_COS 0.5
 /* Ungor's off-centre (2004), as Triangle places it: on the bisector of the
@@ -69,9 +73,79 @@ static int dr_crossing(const cvm__refiner *R, int32_t s1, int32_t s2, double *x)
     return 1;
 }
 
+/* An end of segment e1 lying exactly in the interior of segment e2, or the
+ * other way round (a T-junction: cvm_mesh_triangulate() makes it a vertex of
+ * the other's chain, so the two meet there as at a shared end); else -1. */
+static int32_t dr_end_on(const cvm__refiner *R, const int32_t *e1, const int32_t *e2)
+{
+    int k, side;
+    for (side = 0; side < 2; side++) {
+        const int32_t *e = side ? e2 : e1, *f = side ? e1 : e2;
+        const double *p = dr_pt(R, f[0]), *q = dr_pt(R, f[1]);
+        for (k = 0; k < 2; k++) {
+            const double *x = dr_pt(R, e[k]);
+            int i = p[0] != q[0] ? 0 : 1;
+            if (cvm__orient2d(p, q, x) == 0 && x[i] != p[i] && x[i] != q[i] &&
+                (x[i] > p[i]) != (x[i] > q[i]))
+                return e[k];
+        }
+    }
+    return -1;
+}
+
+/* The neighbour of x other than prev joined to it by a constrained edge of
+ * segment seg (else -1); with mark >= 0, instead 1 when x has a constrained
+ * edge of segment mark (else -1). */
+static int32_t dr_chain_step(const cvm__refiner *R, int32_t x, int32_t prev, int32_t seg,
+                             int32_t mark)
+{
+    const cvm__tri2 *T = R->T;
+    int32_t t0 = T->vtri[x], t = t0;
+    size_t steps = 0;
+    if (t0 < 0)
+        return -1;
+    do {
+        const int32_t *tv = T->tv + 3 * (size_t)t;
+        int i = tv[0] == x ? 0 : tv[1] == x ? 1 : 2;
+        int32_t e = T->te[3 * (size_t)t + (size_t)(i + 2) % 3], y = tv[(i + 1) % 3];
+        if (mark >= 0 && e == mark)
+            return 1;
+        if (mark < 0 && e == seg && y >= 0 && y != prev)
+            return y;
+        t = T->tn[3 * (size_t)t + (size_t)(i + 1) % 3] / 3;
+    } while (t != t0 && ++steps <= T->nt);
+    return -1;
+}
+
+/* Where the chain of segment sa through u meets segment sb: the nearest vertex
+ * along it (at most DR_JOIN_STEPS edges either way from u) with a constrained
+ * edge of sb; -1 if none. For a chain re-discretised with
+ * CVM_OPT_KEEP_SEGMENT_VERTICES = 0, whose input ends are gone, so that no
+ * shared end or crossing can be computed from them. */
+static int32_t dr_chain_join(const cvm__refiner *R, int32_t u, int32_t sa, int32_t sb)
+{
+    int32_t first = -1;
+    int dir, k;
+    for (dir = 0; dir < 2; dir++) {
+        int32_t prev = u, x = dr_chain_step(R, u, first, sa, -1);
+        if (dir == 0)
+            first = x;
+        for (k = 0; k < DR_JOIN_STEPS && x >= 0; k++) {
+            int32_t next;
+            if (dr_chain_step(R, x, -1, -1, sb) == 1)
+                return x;
+            next = dr_chain_step(R, x, prev, sa, -1);
+            prev = x;
+            x = next;
+        }
+    }
+    return -1;
+}
+
 /* A skinny triangle whose shortest edge u-w joins two different segments that
- * meet at a small angle (at a shared end, or where they cross), with u and w
- * on the same concentric shell around the join, is not split: splitting it
+ * meet at a small angle (at a shared end, an end on the other, or where they
+ * cross), with u and w on the same concentric shell around the join, is not
+ * split: splitting it
  * cannot help (Miller, Pav, Walkington 2003; Triangle's testtriangle, where a
  * crossing vertex also ends the pieces of both segments). */
 static int dr_exempt(cvm__refiner *R, int32_t u, int32_t w)
@@ -93,10 +167,22 @@ static int dr_exempt(cvm__refiner *R, int32_t u, int32_t w)
                       : (e1[1] >= 0 && (e1[1] == e2[0] || e1[1] == e2[1])) ? e1[1] : -1;
             const double *pj, *pu, *pw;
             double ux, uy, wx, wy, d1, d2, xc[2];
+            if (J < 0 && e1[0] >= 0 && e1[1] >= 0 && e2[0] >= 0 && e2[1] >= 0)
+                J = dr_end_on(R, e1, e2);
+            if (J < 0 && (e1[0] < 0 || e1[1] < 0 || e2[0] < 0 || e2[1] < 0)) {
+                /* a re-discretised chain: the input segment is gone, so the
+                 * join with another input segment is found along the chains
+                 * (a hull segment's meeting with a chain is no input angle) */
+                if ((size_t)su[a] >= R->p->nseg || (size_t)sw[b] >= R->p->nseg)
+                    continue;
+                J = dr_chain_join(R, u, su[a], sw[b]);
+                if (J < 0)
+                    J = dr_chain_join(R, w, sw[b], su[a]);
+                if (J < 0)
+                    continue;
+            }
             if (J >= 0)
                 pj = dr_pt(R, J);
-            else if (e1[0] < 0 || e1[1] < 0 || e2[0] < 0 || e2[1] < 0)
-                continue; /* a re-discretised chain: the input segment is gone */
             else if (dr_crossing(R, su[a], sw[b], xc))
                 pj = xc;
             else

@@ -198,7 +198,7 @@ typedef struct cvm__refiner {
     int32_t *enc;              /* scratch: encroached subsegments (a, b, seg) */
     size_t nenc, cap_enc;
     size_t steiner;
-    void *aflr;                /* AFLR state (aflr.c) while an AFLR run lasts, else NULL */
+    void *aflr;                /* AFLR state (aflr_internal.h) while an AFLR run lasts, else NULL */
     struct cvm__fr_rec *fr_rec; /* frontal.c: quality record per triangle slot while a
                                   frontal pass lasts, else NULL */
     size_t cap_fr_rec;
@@ -295,7 +295,7 @@ cvm_status cvm__rf_delaunay(cvm__refiner *R);
 /* Run the frontal pass (then the caller runs cvm__rf_delaunay to clean up). */
 cvm_status cvm__rf_frontal(cvm__refiner *R);
 
-/* ---- advancing-front local reconnection (aflr.c, proximity_grid.c) ---- */
+/* ---- advancing-front local reconnection (aflr*.c, proximity_grid.c) ---- */
 
 /* Run the AFLR pass (the caller then runs cvm__rf_delaunay to clean up). Its
  * state (edge layers) stays in R->aflr for cvm__rf_aflr_cell_layers() until

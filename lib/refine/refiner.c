@@ -6,6 +6,88 @@
 #include "geom/geom_internal.h"
 #include "geom/measure.h"
 
+/* Vertex c lies strictly between a and b along a-b and within 2^-40 (M + L)
+ * of its line (M the largest coordinate of a and b, L their distance): the
+ * tolerance of a segment's chain (cvm_mesh_triangulate()). */
+static int rf_on_chain(const double *a, const double *b, const double *c)
+{
+    double dx = b[0] - a[0], dy = b[1] - a[1], len = sqrt(dx * dx + dy * dy);
+    double mag = fmax(fmax(fabs(a[0]), fabs(a[1])), fmax(fabs(b[0]), fabs(b[1])));
+    double along = ((c[0] - a[0]) * dx + (c[1] - a[1]) * dy) / len;
+    return len > 0 && along > 0 && along < len &&
+           fabs(cvm__orient2d(a, b, c)) <= 0x1p-40 * (mag + len) * len;
+}
+
+/* Domain triangle t = (c, a, b) (c at corner j) on a hull edge a-b that no
+ * segment covers, with c on the chain of a-b (rf_on_chain): t and the ghost g
+ * across a-b become the ghosts across c-a and b-c, so the hull passes through
+ * c, reflex by a rounding error, as a segment's chain passes through a
+ * rounded crossing. The hull edges a-c and c-b are constrained afterwards
+ * (rf_constrain_hull), so no cavity crosses the reflex corner. */
+static void rf_hull_through(cvm__tri2 *T, int32_t t, int j)
+{
+    size_t ht = 3 * (size_t)t;
+    int32_t hg = T->tn[ht + (size_t)j], g = hg / 3, c = T->tv[ht + (size_t)j];
+    int32_t a = T->tv[ht + (size_t)(j + 1) % 3], b = T->tv[ht + (size_t)(j + 2) % 3];
+    int k = hg % 3;
+    size_t gg = 3 * (size_t)g;
+    int32_t hp = T->tn[gg + (size_t)(k + 1) % 3]; /* the ghost beyond a */
+    int32_t hn2 = T->tn[ht + (size_t)(j + 1) % 3]; /* the domain triangle beyond b-c */
+    int32_t seg_bc = T->te[ht + (size_t)(j + 1) % 3];
+    /* t -> ghost (c, a, -): b's corner becomes the ghost vertex */
+    T->tv[ht + (size_t)(j + 2) % 3] = CVM__GHOST;
+    /* g -> ghost (-, b, c): a's corner becomes c */
+    T->tv[gg + (size_t)(k + 2) % 3] = c;
+    /* t's edge a-(-) faces the ghost beyond a */
+    T->tn[ht + (size_t)j] = hp;
+    T->tn[hp] = (int32_t)(ht + (size_t)j);
+    T->te[ht + (size_t)j] = -1;
+    /* t's edge (-)-c and g's edge c-(-) face each other */
+    T->tn[ht + (size_t)(j + 1) % 3] = (int32_t)(gg + (size_t)(k + 1) % 3);
+    T->tn[gg + (size_t)(k + 1) % 3] = (int32_t)(ht + (size_t)(j + 1) % 3);
+    T->te[ht + (size_t)(j + 1) % 3] = -1;
+    T->te[gg + (size_t)(k + 1) % 3] = -1;
+    /* g's edge b-c faces the domain triangle that t's did */
+    T->tn[gg + (size_t)k] = hn2;
+    T->tn[hn2] = (int32_t)(gg + (size_t)k);
+    T->te[gg + (size_t)k] = seg_bc;
+    T->tf[t] = T->tf[g];
+    T->vtri[a] = t;
+    T->vtri[b] = g;
+    T->vtri[c] = t;
+    T->last = t;
+}
+
+/* Route the hull through every vertex on the chain of a hull edge that no
+ * segment covers (rf_hull_through), until none is left. Kept, the flat
+ * triangle between such an edge and its vertex is a wedge of a vanishing
+ * angle: no rounded point splits the edge or the segments at the vertex, so
+ * the triangles beside them could never be refined. */
+static void rf_hull_through_flat(cvm__refiner *R)
+{
+    cvm__tri2 *T = R->T;
+    size_t t, rounds;
+    int j, again = 1;
+    for (rounds = 0; again && rounds <= T->nt; rounds++) {
+        again = 0;
+        for (t = 0; t < T->nt; t++) {
+            if (!cvm__tri2_in_domain(T, (int32_t)t))
+                continue;
+            for (j = 0; j < 3; j++) {
+                size_t h = 3 * t + (size_t)j;
+                const int32_t *tv = T->tv + 3 * t;
+                if (T->te[h] >= 0 || !cvm__tri2_is_ghost(T, T->tn[h] / 3) ||
+                    !rf_on_chain(T->xy + 2 * (size_t)tv[(j + 1) % 3], T->xy + 2 * (size_t)tv[(j + 2) % 3],
+                                 T->xy + 2 * (size_t)tv[j]))
+                    continue;
+                rf_hull_through(T, (int32_t)t, j);
+                again = 1;
+                break;
+            }
+        }
+    }
+}
+
 /* Convex hull edges that no segment covers become segments of their own (ids
  * after the input segments): those of the domain first, so refinement never
  * leaves the hull, then those of triangles outside the domain. A split point on
@@ -65,6 +147,7 @@ static cvm_status rf_setup(cvm__refiner *R, cvm__tri2 *T, const cvm__refine_para
     if (p->nseg)
         memcpy(R->seg_ends, p->seg_ends, 2 * p->nseg * sizeof *R->seg_ends);
     R->nseg = p->nseg;
+    rf_hull_through_flat(R);
     if ((s = rf_constrain_hull(R)))
         return s;
     if (cvm__rf_reserve_vertices(R, T->nv + 1))
@@ -190,25 +273,36 @@ static cvm_status rf_report(cvm__refiner *R, cvm__refine_report *rep)
 }
 
 /* Post-processing (swap.c, smooth.c) of the Steiner vertices first..nv-1:
- * degree swapping, smoothing, then the Delaunay-restoring flips (their
- * number into *flips). */
-static cvm_status rf_post(cvm__refiner *R, size_t first, size_t *flips)
+ * degree swapping, smoothing, then the Delaunay-restoring flips; *changed
+ * receives the number of swaps, moves and flips. */
+static cvm_status rf_post(cvm__refiner *R, size_t first, size_t *changed)
 {
     const cvm__refine_params *p = R->p;
     cvm_status s = CVM_OK;
     cvm_status s2;
+    size_t n = 0;
+    *changed = 0;
     if (R->T->w)
         return CVM_OK; /* a weighted (regular) triangulation: left as refined */
-    if (p->swap)
-        s = cvm__rf_swap_degree(R, NULL);
-    if (!s && p->smooth_sweeps > 0 && p->smooth_method != 1)
-        s = cvm__rf_smooth(R, first, NULL, p->relax_sweeps, p->smooth_sweeps, NULL);
-    if (!s && p->smooth_sweeps > 0 && p->smooth_method != 0)
-        s = cvm__rf_smooth_maxmin(R, first, NULL, p->smooth_sweeps, p->smooth_method == 3, NULL);
+    if (p->swap) {
+        s = cvm__rf_swap_degree(R, &n);
+        *changed += n;
+    }
+    if (!s && p->smooth_sweeps > 0 && p->smooth_method != 1) {
+        s = cvm__rf_smooth(R, first, NULL, p->relax_sweeps, p->smooth_sweeps, &n);
+        *changed += n;
+    }
+    if (!s && p->smooth_sweeps > 0 && p->smooth_method != 0) {
+        s = cvm__rf_smooth_maxmin(R, first, NULL, p->smooth_sweeps, p->smooth_method == 3, &n);
+        *changed += n;
+    }
     /* restored even after an error above: it finishes without memory if it must */
-    if (p->restore_delaunay && (p->swap || p->smooth_sweeps > 0) &&
-        (s2 = cvm__rf_restore_delaunay(R->T, flips)) != CVM_OK && !s)
-        s = s2;
+    if (p->restore_delaunay && (p->swap || p->smooth_sweeps > 0)) {
+        n = 0;
+        if ((s2 = cvm__rf_restore_delaunay(R->T, &n)) != CVM_OK && !s)
+            s = s2;
+        *changed += n;
+    }
     return s;
 }
 
@@ -216,7 +310,7 @@ cvm_status cvm__refine(cvm__tri2 *T, const cvm__refine_params *p, cvm__refine_re
 {
     cvm__refiner R;
     cvm_status s;
-    size_t first = T->nv, flips = 0;
+    size_t first = T->nv, changed = 0;
     memset(rep, 0, sizeof *rep);
     s = rf_setup(&R, T, p);
     if (!s && p->march && !cvm__sizing_is_empty(p->sizing))
@@ -234,10 +328,13 @@ cvm_status cvm__refine(cvm__tri2 *T, const cvm__refine_params *p, cvm__refine_re
     if (!s)
         s = cvm__rf_delaunay(&R);
     if (!s)
-        s = rf_post(&R, first, &flips);
-    /* swapping and smoothing keep the bounds, but the Delaunay-restoring flips
-     * may make a triangle too big or too thin again: refine those */
-    if (!s && flips > 0)
+        s = rf_post(&R, first, &changed);
+    /* swapping keeps the bounds; smoothing may lower an angle below the
+     * requested one where its star already had a smaller one (an exempt
+     * triangle at a small input angle: CVM_OPT_SMOOTH_SWEEPS), and the
+     * Delaunay-restoring flips may make a triangle too big or too thin again:
+     * refine those */
+    if (!s && changed > 0)
         s = cvm__rf_delaunay(&R);
     /* the report states the documented bound: frontal's 0.707 x size after the
      * frontal and AFLR passes, so a triangle left over it where a segment split

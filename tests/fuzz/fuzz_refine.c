@@ -18,14 +18,13 @@
  *   - with CVM_OK, what is promised: every unmet triangle is an exempt one,
  *     lies on a boundary edge that is not axis-parallel (the documented
  *     hull limitation), or has its three corners on one input segment (a
- *     rounded crossing or split point a few ulps off it: the documented
- *     rounding limitation);
+ *     rounded crossing or split point a few ulps off it, within a segment
+ *     chain's tolerance 2^-40 (M + L): the documented rounding limitation);
  *   - a second run on a fresh handle gives identical points and triangles.
  *
  * Option bytes (then the PSLG of fuzz_pslg.h; missing bytes read as 0):
  *   byte 0  bits 0-1 algorithm (0, 1 Delaunay, 2 frontal, 3 AFLR); 2 diametral
- *           lens; 3 march segments; 4 KEEP_SEGMENT_VERTICES = 0 (with a size,
- *           without free segments);
+ *           lens; 3 march segments; 4 KEEP_SEGMENT_VERTICES = 0 (with a size);
  *           5 keep the convex hull; 6 a uniform size; 7 a maximum area
  *   byte 1  minimum angle 20 + 13 b / 255 degrees
  *   byte 2  size 1 + (b & 31) / 4 (box units)
@@ -100,10 +99,7 @@ static void decode(options *o, fuzz_pslg *g, const uint8_t *data, size_t size)
         o->h = g->scale * (1.0 + (b2 & 31) / 4.0);
     if (b0 & 128)
         o->max_area = g->scale * g->scale * (0.5 + b3 / 16.0);
-    /* Not with free segments yet: re-discretised chains crossed by them can
-     * leave a tiny unexempt triangle at the crossing on CVM_OK
-     * (tests/fuzz/open/refine/keep_seg_free_segments_crossing_cluster). */
-    o->keep_seg = o->h > 0 && ((b0 >> 4) & 1) && g->ninner == 0;
+    o->keep_seg = o->h > 0 && ((b0 >> 4) & 1);
     o->smooth_sweeps = (b4 & 7) - 1;
     o->smooth_method = (b4 >> 3) & 3;
     o->relax_sweeps = ((b4 >> 5) & 7) - 1;
@@ -279,10 +275,12 @@ static int on_slanted_hull(const output *o, size_t t)
     return 0;
 }
 
-/* 1 when the three corners of a triangle lie within 1e-9 x (M + L) of one
- * input segment (M the largest coordinate, L its length): the triangle lies
- * between a chain and a rounded crossing or split point a few ulps off it,
- * which no Steiner point can remove (the documented rounding limitation). */
+/* 1 when the three corners of a triangle lie within 2^-40 (M + L) of one
+ * input segment (M the largest coordinate, L its length; the tolerance of a
+ * segment's chain, cvm_mesh_triangulate()): the triangle lies between a chain
+ * and a rounded crossing or split point a few ulps off it, which no Steiner
+ * point can remove (the documented rounding limitation). A looser tolerance
+ * let any triangle tiny enough next to a segment pass as rounding. */
 static int on_one_segment(const fuzz_pslg *g, const double *const *p)
 {
     size_t i;
@@ -293,7 +291,7 @@ static int on_one_segment(const fuzz_pslg *g, const double *const *p)
         int near = 1;
         for (k = 0; k < 2; k++)
             M = fmax(M, fmax(fabs(a[k]), fabs(b[k])));
-        tol = 1e-9 * (M + L);
+        tol = 0x1p-40 * (M + L);
         for (k = 0; k < 3 && near; k++) {
             double t = ((p[k][0] - a[0]) * dx + (p[k][1] - a[1]) * dy) / (L * L);
             t = t < 0 ? 0 : t > 1 ? 1 : t;

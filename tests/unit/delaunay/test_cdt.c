@@ -473,19 +473,84 @@ START_TEST(concurrent_crossings_route_through_the_rounded_crossing)
 }
 END_TEST
 
-/* Segment 2, (11,0)-(6,15), is crossed at a rounded vertex near (9.27, 5.18)
+/* Segment 2, (11,0)-(6,15), is crossed at a rounded vertex near (9.27, 5.18),
  * and its piece from there to (6,15) passes within an ulp of the input point
- * (7,12), which lies exactly on the segment: a sliver. Segment 3, (0,13)-(15,8),
- * crosses that piece at (7.5, 10.5), which rounds past the sliver; a double a
- * few ulps toward the far side splits it instead of a refusal. */
-START_TEST(crossing_rounded_past_a_sliver_is_nudged)
+ * (7,12), which lies exactly on the segment. An input point exactly inside a
+ * segment splits it (cvm_mesh_triangulate()), so the piece goes through
+ * (7,12): a constrained edge of segment 2 ends there. Left beside the piece,
+ * it made a sliver that blocked every split of the piece and left a
+ * triangle beside it unrefinable (tests/fuzz/corpus/refine/
+ * regression_input_point_on_segment_between_rounded_crossings). Segment 3,
+ * (0,13)-(15,8), crosses the segment at (7.5, 10.5). (A crossing rounded past
+ * a sliver, nudged across the piece: tests/fuzz/corpus/cdt/
+ * regression_nudged_crossing_reads_moved_coordinates.) */
+START_TEST(point_on_segment_joins_the_piece_from_a_rounded_crossing)
 {
     static const double xy[] = {2, 8, 7, 11, 14, 0, 14, 14, 15, 7, 10, 1, 0, 5, 8, 3, 0, 0, 0, 15,
         14, 7, 2, 12, 9, 13, 4, 3, 15, 7, 6, 0, 14, 6, 0, 13, 15, 8, 13, 5, 1, 14, 1, 14, 1, 14, 1,
         14, 1, 14, 1, 14, 1, 14, 1, 14, 1, 14, 7, 12, 13, 1, 3, 8, 11, 0, 7, 11, 14, 12, 9, 0, 2, 1,
         3, 1, 0, 2, 1, 2, 14, 5, 6, 15, 0, 0};
     static const cvm_index segs[] = {3, 40, 39, 10, 32, 41, 17, 18, 18, 0, 31, 0};
-    triangulate_keeping_hull(xy, 43, segs, 6);
+    cvm_index map[43];
+    size_t k, ends = 0;
+    cvm_mesh *m;
+    ck_assert(cvm__orient2d(xy + 64, xy + 82, xy + 58) == 0); /* (7,12) on (11,0)-(6,15) */
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_points(m, xy, 43, 2), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_segments(m, segs, 6), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_KEEP_CONVEX_HULL, 1), CVM_OK);
+    ck_assert_msg(cvm_mesh_triangulate(m) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    cvmtest_assert_valid(m);
+    ck_assert_int_eq(cvm_mesh_copy_input_map(map, 43, m), CVM_OK);
+    for (k = 0; k < 3 * m->tri.nt; k++) {
+        int32_t t = (int32_t)(k / 3);
+        if (m->tri.te[k] == 2 && cvm__tri2_is_live(&m->tri, t) && !cvm__tri2_is_ghost(&m->tri, t) &&
+            (m->tri.tv[3 * (size_t)t + (k + 1) % 3] == map[29] ||
+             m->tri.tv[3 * (size_t)t + (k + 2) % 3] == map[29]))
+            ends++;
+    }
+    /* two pieces of segment 2 meet at (7,12), each seen from its two sides */
+    ck_assert_uint_ge(ends, 2);
+    cvm_mesh_free(m);
+}
+END_TEST
+
+/* Segment (20000,9500)-(15500,500) lies on segment (15500,500)-(23000,15500),
+ * and both cross the polygon edge (20125,5375)-(15625,8125) at the same point
+ * near (18449.47, 6398.94). Computed from different pieces, the two rounded
+ * crossings fall an ulp apart: the second lies within 16 ulps of the end of
+ * the piece the first left, so it is that end (cvm_mesh_triangulate()), and no
+ * vertex is made an ulp from it. (Two vertices an ulp apart enclosed a flat
+ * triangle of constrained edges that sent AFLR's clean-up to the Steiner
+ * limit: tests/fuzz/corpus/refine/regression_overlapping_segments_cross_an_edge_an_ulp_apart.) */
+START_TEST(overlapping_segments_share_their_rounded_crossing)
+{
+    static const double xy[] = {15625, 8125, 19625, 10375, 14875, 10500, 14500, 15375, 10125, 11000,
+        1375, 11625, 5625, 9250, 2500, 7125, 3875, 5375, 10500, 6250, 10000, 2125, 14000, 2125,
+        17625, 3250, 20125, 5375, 15500, 500, 23000, 15500, 20000, 9500, 15500, 500, 23000, 15500,
+        23000, 8500};
+    static const cvm_index segs[] = {0, 1, 1, 2, 2, 3, 3, 4, 4, 5, 5, 6, 6, 7, 7, 8, 8, 9, 9, 10,
+        10, 11, 11, 12, 12, 13, 13, 0, 14, 15, 16, 17, 18, 19};
+    double *p;
+    size_t nv, i, j;
+    cvm_mesh *m;
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_points(m, xy, 20, 2), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_segments(m, segs, 17), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_KEEP_CONVEX_HULL, 1), CVM_OK);
+    ck_assert_msg(cvm_mesh_triangulate(m) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    cvmtest_assert_valid(m);
+    ck_assert_int_eq(cvm_mesh_count(&nv, m, CVM_ENT_VERTEX), CVM_OK);
+    p = malloc(2 * nv * sizeof *p);
+    ck_assert_ptr_nonnull(p);
+    ck_assert_int_eq(cvm_mesh_copy_points(p, 2 * nv, m), CVM_OK);
+    for (i = 0; i < nv; i++)
+        for (j = i + 1; j < nv; j++)
+            ck_assert_msg(fabs(p[2 * i] - p[2 * j]) + fabs(p[2 * i + 1] - p[2 * j + 1]) > 1e-6,
+                          "vertices %zu and %zu at (%.17g, %.17g) and (%.17g, %.17g)", i, j,
+                          p[2 * i], p[2 * i + 1], p[2 * j], p[2 * j + 1]);
+    free(p);
+    cvm_mesh_free(m);
 }
 END_TEST
 
@@ -558,7 +623,8 @@ TCase *delaunay_cdt_tcase(void)
     tcase_add_test(tc, time_limit_stops_carving);
     tcase_add_test(tc, crossings_near_large_offset_keep_their_chains);
     tcase_add_test(tc, concurrent_crossings_route_through_the_rounded_crossing);
-    tcase_add_test(tc, crossing_rounded_past_a_sliver_is_nudged);
+    tcase_add_test(tc, point_on_segment_joins_the_piece_from_a_rounded_crossing);
+    tcase_add_test(tc, overlapping_segments_share_their_rounded_crossing);
     tcase_add_test(tc, nearly_coincident_crossing_meets_at_the_piece_end);
     tcase_add_test(tc, segment_ends_an_ulp_apart_meet_at_one);
     return tc;

@@ -109,10 +109,52 @@ START_TEST(steiner_limit_leaves_located_triangles)
 }
 END_TEST
 
+/* Input point (0.0135, 0.0065) lies within rounding inside the convex hull
+ * edge (0.0075, 0.0005)-(0.0155, 0.0085) (on it in decimal), and a segment
+ * runs from it along that edge. Kept, the flat triangle between the edge and
+ * the point was a wedge of a vanishing angle that no rounded split point could
+ * enter, and the triangles beside it stayed as thin as 0.78 degrees on CVM_OK
+ * without being exempt. The hull now passes through the point: every
+ * triangle left below the angle is an exempt small input angle, and
+ * cvm_mesh_check() accepts the mesh (tests/fuzz/corpus/refine/
+ * regression_hull_edge_through_a_point_within_rounding). */
+START_TEST(hull_edge_within_rounding_of_a_point_passes_through_it)
+{
+    static const double xy[] = {0.01, 0.0080000000000000002, 0.0070000000000000001, 0.00975,
+        0.0067499999999999999, 0.005875, 0.0045000000000000005, 0.00050000000000000001, 0.0015,
+        0.0065000000000000006, 0.00050000000000000001, 0.00050000000000000001, 0.0155,
+        0.0085000000000000006, 0.0074999999999999997, 0.0025000000000000001, 0.0155,
+        0.0085000000000000006, 0.0135, 0.0065000000000000006, 0.0155, 0.0085000000000000006,
+        0.0074999999999999997, 0.00050000000000000001, 0.0025000000000000001, 0.0065000000000000006,
+        0.0054999999999999997, 0.0085000000000000006, 0.00050000000000000001, 0.00050000000000000001};
+    static const cvm_index segs[] = {0, 1, 1, 2, 2, 0, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14};
+    double unmet_angle, small;
+    cvm_mesh *m;
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_points(m, xy, 15, 2), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_segments(m, segs, 9), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_KEEP_CONVEX_HULL, 1), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_MIN_ANGLE_DEG, 23.5), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_MAX_AREA, 6.5e-6), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_ENCROACH_LENS, 1), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_SWAP, 0), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_refine(m, NULL, CVM_ALGO_FRONTAL), CVM_OK);
+    ck_assert_msg(cvm_mesh_check(m) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    ck_assert_int_eq(cvm_mesh_get_measure(&unmet_angle, m, CVM_MEASURE_REFINE_UNMET_ANGLE), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_get_measure(&small, m, CVM_MEASURE_REFINE_SMALL_INPUT_ANGLE), CVM_OK);
+    ck_assert_msg(unmet_angle == small, "%g triangles below the angle, %g of them exempt", unmet_angle,
+                  small);
+    check_unmet(m);
+    cvm_mesh_free(m);
+}
+END_TEST
+
 TCase *refine_report_tcase(void)
 {
     TCase *tc = tcase_create("report");
     tcase_add_test(tc, small_input_angle_is_located);
     tcase_add_test(tc, steiner_limit_leaves_located_triangles);
+    tcase_add_test(tc, hull_edge_within_rounding_of_a_point_passes_through_it);
     return tc;
 }
