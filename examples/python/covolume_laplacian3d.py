@@ -309,7 +309,7 @@ def report(name, p, t, h_nominal):
     inner = ~on[edges[:, 0]] | ~on[edges[:, 1]]  # the edges the scheme uses
     # |dual face| / |edge|^2, dimensionless: a co-spherical group of points (a lattice) has dual
     # faces of zero area, computed as +-1e-16; those count as zero, not as negative.
-    rel = c[inner] / np.einsum("ij,ij->i", d[inner], d[inner])
+    rel = c[inner] / np.sqrt(np.einsum("ij,ij->i", d[inner], d[inner]))
     neg = int((rel < -1e-9).sum())
     zero = int((np.abs(rel) <= 1e-9).sum())
     print("%-7s h %-6g %7d vertices %8d tetrahedra %8d edges used: negative %5d (%.2f %%),"
