@@ -191,6 +191,11 @@ int cli_stop(cvm_mesh *m, cvm_sizing *sz);
 int cli_write_outputs(cvm_mesh *m, cli_outputs *o);
 /* Called once the outputs are committed (the message then says so). */
 void cli_outputs_committed(void);
+/* The end of a 3D command whose mesh m is made (cli_finish() is the 2D one): write o's
+ * outputs, print report(f, m) on the report stream under --quality, mark the timings, note when nothing was asked (name: the
+ * command, in: its input) and free m. Returns the command's exit status. */
+int cli_finish3(cvm_mesh *m, cli_outputs *o, const char *name, const char *in,
+               void (*report)(FILE *f, cvm_mesh *m));
 
 /* ---- progress.c: the progress line on standard error ---- */
 

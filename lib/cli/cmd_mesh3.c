@@ -192,24 +192,7 @@ static int run(margs *a)
     if (cvm_mesh_generate3(m, a->size) != CVM_OK || cli_interrupted())
         return cli_fail(m, NULL, a->in);
     cli_timing_mark(&a->o, "generate");
-    if ((rc = cli_write_outputs(m, &a->o)) < 0)
-        return cli_stop(m, NULL);
-    if (rc) {
-        cvm_mesh_free(m);
-        return rc;
-    }
-    if (a->o.out)
-        cli_timing_mark(&a->o, "write");
-    if (a->o.quality) {
-        cli_phase("computing the quality report", NULL);
-        report(cli_report_stream(&a->o), m);
-        cli_timing_mark(&a->o, "quality");
-    }
-    if (cli_interrupted())
-        return cli_stop(m, NULL);
-    cli_note_nothing_to_do("mesh3", a->in, &a->o);
-    cvm_mesh_free(m);
-    return CLI_EXIT_OK;
+    return cli_finish3(m, &a->o, "mesh3", a->in, report);
 }
 
 int cli_mesh3(int argc, char **argv)

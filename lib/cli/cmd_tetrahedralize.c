@@ -159,24 +159,7 @@ static int run(targs *a)
         return cli_fail(m, NULL, a->in);
     cli_timing_mark(&a->o, "tetrahedralize");
     cli_note_duplicates(m, a->in);
-    if ((rc = cli_write_outputs(m, &a->o)) < 0)
-        return cli_stop(m, NULL);
-    if (rc) {
-        cvm_mesh_free(m);
-        return rc;
-    }
-    if (a->o.out)
-        cli_timing_mark(&a->o, "write");
-    if (a->o.quality) {
-        cli_phase("computing the quality report", NULL);
-        report(cli_report_stream(&a->o), m);
-        cli_timing_mark(&a->o, "quality");
-    }
-    if (cli_interrupted())
-        return cli_stop(m, NULL);
-    cli_note_nothing_to_do("tetrahedralize", a->in, &a->o);
-    cvm_mesh_free(m);
-    return CLI_EXIT_OK;
+    return cli_finish3(m, &a->o, "tetrahedralize", a->in, report);
 }
 
 int cli_tetrahedralize(int argc, char **argv)

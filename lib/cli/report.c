@@ -230,3 +230,27 @@ int cli_start(cvm_mesh **m, cvm_sizing **sz, const cli_setting *set, int nset, d
     }
     return rc;
 }
+
+int cli_finish3(cvm_mesh *m, cli_outputs *o, const char *name, const char *in,
+               void (*report)(FILE *f, cvm_mesh *m))
+{
+    int rc = cli_write_outputs(m, o);
+    if (rc < 0)
+        return cli_stop(m, NULL);
+    if (rc) {
+        cvm_mesh_free(m);
+        return rc;
+    }
+    if (o->out)
+        cli_timing_mark(o, "write");
+    if (o->quality) {
+        cli_phase("computing the quality report", NULL);
+        report(cli_report_stream(o), m);
+        cli_timing_mark(o, "quality");
+    }
+    if (cli_interrupted())
+        return cli_stop(m, NULL);
+    cli_note_nothing_to_do(name, in, o);
+    cvm_mesh_free(m);
+    return CLI_EXIT_OK;
+}

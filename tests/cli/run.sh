@@ -248,9 +248,10 @@ assert {"region_7", "region_9", "marker_1"} <= set(m.cell_sets), m.cell_sets.key
 dims = set(int(d) for d in m.point_data["gmsh:dim_tags"][:, 0])
 assert dims == {0, 1, 2}, dims
 ' "$OUT/r.msh" > "$OUT/meshio_regions.log" 2>&1; then pass; else fail "regions .msh with meshio: $(tail -c 300 "$OUT/meshio_regions.log")"; fi
-# crossings rounded at the scale of 1e6: success, 13 points plus 17 crossing vertices
+# crossings rounded at the scale of 1e6: success, 13 points plus 16 crossing vertices (a
+# rounded crossing within 16 ulps of an end of the piece it crosses is that end)
 expect_exit 0 "crossings near a large offset" "$CLI" triangulate "$DATA/crossings_near_large_offset.poly" -o "$OUT/c.node"
-expect_grep "crossings near a large offset: 17 crossing vertices" "$OUT/c.node" "30 2 0 1"
+expect_grep "crossings near a large offset: 16 crossing vertices" "$OUT/c.node" "29 2 0 1"
 
 # ---- tetrahedralize: 3D points and closed surfaces ----------------------------
 OUT=$TMP/tet
