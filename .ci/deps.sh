@@ -1,8 +1,10 @@
 #!/bin/sh
 # Install the Debian 12 packages cvmesh's build and tests need, only those
-# dpkg says are missing. As root: non-interactive apt-get; otherwise print the line.
+# dpkg says are missing (the X11/GL libraries: the gmsh wheel of the test venv
+# loads them). As root: non-interactive apt-get; otherwise print the line.
 set -e
-PKGS="build-essential pkg-config check libsubunit-dev liblbfgs-dev clang libomp-dev libclang-rt-14-dev gfortran swig python3-venv zlib1g-dev librsvg2-bin libtet1.5-dev"
+PKGS="build-essential pkg-config check libsubunit-dev liblbfgs-dev clang libomp-dev libclang-rt-14-dev gfortran swig python3-venv zlib1g-dev librsvg2-bin libtet1.5-dev\
+      libglu1-mesa libgl1 libxcursor1 libxft2 libxinerama1 libxrender1"
 missing=""
 for p in $PKGS; do
     dpkg -s "$p" >/dev/null 2>&1 || missing="$missing $p"

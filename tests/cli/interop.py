@@ -12,6 +12,9 @@ markers. A sheared grid that meshio writes (not Delaunay) is flipped and
 optimised. The 3D power dual of a BCC lattice (--dual, VTK_POLYHEDRON cells) is
 read by meshio and VTK, and VTK's polyhedron volumes equal cvmesh's. Prints
 one line per check; exits 1 when any failed.
+Gmsh itself (the gmsh wheel) writes a square with a hole and named physical groups as
+.msh 2.2 and 4.1, ASCII and binary; cvmesh reads each, and Gmsh reads cvmesh's .msh back
+with the same names.
 """
 import os
 import random
@@ -283,6 +286,60 @@ if code == 0:
         check(g.GetNumberOfCells() == ncell and types == {42} and np.abs(vv - mine).max() < 1e-12,
               "VTK reads the dual as %d polyhedra whose volumes equal cvmesh's (max diff %.1e)"
               % (g.GetNumberOfCells(), np.abs(vv - mine).max() if len(vv) else 0))
+
+# ---- Gmsh itself (the gmsh module from PyPI): its .msh in every version and encoding is read
+# by cvmesh with markers and physical names, and cvmesh's .msh is read back by Gmsh ----------
+try:
+    import gmsh
+except (ImportError, OSError) as e:  # the wheel needs X11/GL libraries (.ci/deps.sh installs them)
+    gmsh = None
+    print("skip Gmsh checks: %s" % e)
+if gmsh:
+    gmsh.initialize(["-noenv"])
+    gmsh.option.setNumber("General.Terminal", 0)
+    gmsh.model.add("square_with_hole")
+    geo = gmsh.model.geo
+    outer = [geo.addPoint(x, y, 0, 0.1) for x, y in ((0, 0), (1, 0), (1, 1), (0, 1))]
+    inner = [geo.addPoint(x, y, 0, 0.05) for x, y in ((0.4, 0.4), (0.6, 0.4), (0.6, 0.6), (0.4, 0.6))]
+    lo = [geo.addLine(outer[i], outer[(i + 1) % 4]) for i in range(4)]
+    li = [geo.addLine(inner[i], inner[(i + 1) % 4]) for i in range(4)]
+    surf = geo.addPlaneSurface([geo.addCurveLoop(lo), geo.addCurveLoop(li)])
+    geo.synchronize()
+    gmsh.model.addPhysicalGroup(1, lo, 5, name="wall")
+    gmsh.model.addPhysicalGroup(1, li, 6, name="hole")
+    gmsh.model.addPhysicalGroup(2, [surf], 1, name="fluid")
+    gmsh.model.mesh.generate(2)
+    gnodes = len(gmsh.model.mesh.getNodes()[0])
+    for version, binary in ((2.2, 0), (2.2, 1), (4.1, 0), (4.1, 1)):
+        name = "gmsh_%s_%s.msh" % (version, "bin" if binary else "ascii")
+        gmsh.option.setNumber("Mesh.MshFileVersion", version)
+        gmsh.option.setNumber("Mesh.Binary", binary)
+        gmsh.write(path(name))
+        out = path("cvm_" + name)
+        code, err = run("optimise", path(name), "--max-sweeps", "1", "-o", out)
+        ok = code == 0
+        if ok:
+            back = meshio.read(out)
+            tris = back.cells_dict["triangle"]
+            p2 = back.points[:, :2]
+            e1, e2 = p2[tris[:, 1]] - p2[tris[:, 0]], p2[tris[:, 2]] - p2[tris[:, 0]]
+            area = 0.5 * np.abs(e1[:, 0] * e2[:, 1] - e1[:, 1] * e2[:, 0]).sum()
+            ok = abs(area - 0.96) < 1e-12 and len(back.points) >= gnodes
+        check(ok, "cvmesh optimise reads Gmsh's own .msh %s %s (area 0.96): %s"
+              % (version, "binary" if binary else "ASCII", err))
+        if not ok:
+            continue
+        # Gmsh reads cvmesh's .msh back, with the physical names cvmesh read from Gmsh's
+        gmsh.model.add("back")
+        gmsh.open(out)
+        names = {gmsh.model.getPhysicalName(d, t) for d, t in gmsh.model.getPhysicalGroups()}
+        n_back = len(gmsh.model.mesh.getNodes()[0])
+        check({"wall", "hole", "fluid"} <= names and n_back == len(meshio.read(out).points),
+              "Gmsh reads cvmesh's .msh of %s with its names %s and %d nodes"
+              % (name, sorted(names), n_back))
+        gmsh.model.remove()
+        gmsh.model.setCurrent("square_with_hole")
+    gmsh.finalize()
 
 print("%d failed" % len(failed))
 sys.exit(1 if failed else 0)

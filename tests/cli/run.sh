@@ -858,7 +858,7 @@ else
 fi
 rm -f "$TMP/big.node"
 
-# ---- interoperability with meshio and VTK, both ways (tests/cli/interop.py) --
+# ---- interoperability with meshio, VTK and Gmsh, both ways (tests/cli/interop.py) --
 if "$PY" "$HERE/interop.py" "$CLI" "$TMP/interop" > "$TMP/interop.log" 2>&1; then pass
 else fail "interop.py: $(grep -E '^FAIL|Error' "$TMP/interop.log" | head -n 5)"; fi
 
