@@ -55,6 +55,9 @@ typedef struct cvm__tri2 {
     int32_t free_head; /* first dead slot, -1 if none */
     size_t n_dead;
     int32_t last;      /* start of the next walk */
+    int32_t seg_keep_below; /* > 0: an edge already on a segment of id below this keeps that id
+                             * when a segment of id at or above it is recovered over it (the
+                             * temporary constraints of a rebuilt mesh file); 0: the later wins */
     /* scratch for cavities */
     int32_t *stack; size_t cap_stack;
     int32_t *cav;   size_t cap_cav;   /* triangles of the cavity */

@@ -199,6 +199,9 @@ static cvm_status build(cvm__rebuild *rb, const cvm__rebuild_input *in, size_t n
     cvm__cdt_input cin;
     size_t n = in->cdt.np;
     cvm__tri2_clear(&rb->tri);
+    /* a file edge on a line cell (a chain through a vertex) keeps the line's id, not that of
+     * the edge's own temporary constraint, which drop_temporary() forgets */
+    rb->tri.seg_keep_below = nseg > rb->keep_ids ? (int32_t)rb->keep_ids : 0;
     cvm__free(rb->ctx, rb->out.input_map);
     rb->out.input_map = NULL;
     rb->out.n_dup = 0;
@@ -283,8 +286,9 @@ static cvm_status attempt(cvm__rebuild *rb, const cvm__rebuild_input *in, size_t
 {
     double *holes = NULL;
     size_t nholes = 0;
-    cvm_status s = build(rb, in, nseg, NULL, 0);
-    if (s)
+    cvm_status s;
+    rb->keep_ids = 0;
+    if ((s = build(rb, in, nseg, NULL, 0)))
         return s;
     if ((s = weights(rb, in)))
         return s;
@@ -316,8 +320,9 @@ static cvm_status rb_forced(cvm__rebuild *rb, const cvm__rebuild_input *in, size
     cvm__tri2 *T = &rb->tri;
     double *holes = NULL, *w;
     size_t nholes = 0, i;
-    cvm_status s = build(rb, in, nall, NULL, 0);
-    if (s)
+    cvm_status s;
+    rb->keep_ids = nkeep;
+    if ((s = build(rb, in, nall, NULL, 0)))
         return s;
     if ((s = hole_seeds(rb, in, &holes, &nholes)))
         return s;

@@ -57,6 +57,9 @@ typedef struct cvm__rebuild {
     int rebuilding;         /* 1 when an error arose in the triangulation itself (its
                                message reads "rebuilding the mesh: ..."), 0 in the checks
                                of the cells */
+    size_t keep_ids;        /* the forced rebuild: segments below this id (the file's lines
+                               and boundary) keep their ids on edges that temporary
+                               constraints share with them; 0 otherwise */
 } cvm__rebuild;
 
 /* Empty rb, allocating through ctx. */

@@ -29,6 +29,9 @@ static cvm_status push(cvm__tri2 *T, int32_t **arr, size_t *n, size_t *cap, int3
 static void set_constrained(cvm__tri2 *T, int32_t t, int j, int32_t seg)
 {
     size_t h = 3 * (size_t)t + j;
+    if (T->seg_keep_below > 0 && seg >= T->seg_keep_below && T->te[h] >= 0 &&
+        T->te[h] < T->seg_keep_below)
+        return;
     T->te[h] = seg;
     T->te[T->tn[h]] = seg;
 }
