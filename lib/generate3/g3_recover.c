@@ -22,13 +22,13 @@
 
 #define MAX_ROUNDS 8
 
-typedef struct face_key {
+typedef struct g3_face_key {
     int32_t v[3];
-} face_key;
+} g3_face_key;
 
 static int cmp_key(const void *pa, const void *pb)
 {
-    const face_key *a = pa, *b = pb;
+    const g3_face_key *a = pa, *b = pb;
     int k;
     for (k = 0; k < 3; k++)
         if (a->v[k] != b->v[k])
@@ -36,7 +36,7 @@ static int cmp_key(const void *pa, const void *pb)
     return 0;
 }
 
-static void sort3(const int32_t *in, face_key *out)
+static void sort3(const int32_t *in, g3_face_key *out)
 {
     int32_t a = in[0], b = in[1], c = in[2], t;
     if (a > b) { t = a; a = b; b = t; }
@@ -53,7 +53,7 @@ static cvm_status find_missing(cvm__ctx *ctx, const cvm__g3_surface *s, const cv
 {
     cvm__tet3 T;
     int32_t *tet = NULL;
-    face_key *keys = NULL;
+    g3_face_key *keys = NULL;
     size_t t, f, nk;
     cvm_status st;
     *nmiss = 0;
@@ -82,7 +82,7 @@ static cvm_status find_missing(cvm__ctx *ctx, const cvm__g3_surface *s, const cv
     }
     qsort(keys, nk, sizeof *keys, cmp_key);
     for (f = 0; f < s->nt; f++) {
-        face_key k;
+        g3_face_key k;
         sort3(s->tri + 3 * f, &k);
         if (!bsearch(&k, keys, nk, sizeof *keys, cmp_key))
             miss[(*nmiss)++] = f;
