@@ -103,10 +103,6 @@ int cli_start(cvm_mesh **m, cvm_sizing **sz, const cli_setting *set, int nset, d
 int cli_finish(cvm_mesh *m, cvm_sizing *sz, const char *in, cvm_status s, cli_outputs *o,
                void (*report)(FILE *, cvm_mesh *));
 
-/* The shared tail of a subcommand's argument loop, after its own flags:
- * argv[*i] is an option flag of cmd (recorded in set), or else the one input
- * file (*in). Returns CLI_EXIT_OK, or CLI_EXIT_USAGE after printing why
- * ("cvmesh: NAME: ..."). */
 /* --algo NAME of command name: delaunay, frontal, and aflr when with_aflr,
  * into *out. CLI_EXIT_OK, or CLI_EXIT_USAGE after printing why. */
 int cli_parse_algo(const char *name, const char *s, int with_aflr, cvm_algorithm *out);
@@ -117,8 +113,27 @@ int cli_parse_positive(const char *flag, const char *v, double *out);
 /* The same for a finite number >= 0. */
 int cli_parse_nonnegative(const char *flag, const char *v, double *out);
 
+/* The shared tail of a subcommand's argument loop, after its own flags:
+ * argv[*i] is an option flag of cmd (recorded in set), or else the one input
+ * file (*in). Returns CLI_EXIT_OK, or CLI_EXIT_USAGE after printing why
+ * ("cvmesh: NAME: ..."). */
 int cli_parse_tail(const char *name, unsigned cmd, int argc, char **argv, int *i,
                    cli_setting *set, int *nset, const char **in);
+/* A subcommand's own flags: if argv[*i] is one (args: the command's argument
+ * record), take it with its value and return 1; 0 when it is not one; or an
+ * exit status + 1 after printing why (so that 0 stays "not one"). */
+typedef int (*cli_own_flags)(void *args, int argc, char **argv, int *i);
+/* The argument loop every subcommand shares: -h or --help prints help(stdout)
+ * and returns -1; every other argument is one of the command's own flags (own,
+ * may be NULL), an output flag (o), or an option flag or the input
+ * (cli_parse_tail). Returns CLI_EXIT_OK, or an exit status after printing why. */
+int cli_parse_args(const char *name, unsigned cmd, int argc, char **argv, void (*help)(FILE *),
+                   cli_own_flags own, void *args, cli_outputs *o, cli_setting *set, int *nset,
+                   const char **in);
+/* After the loop of a 3D command: an input was named, the outputs pass
+ * cli_check_outputs(), and none is an .svg picture. CLI_EXIT_OK, or
+ * CLI_EXIT_USAGE after printing why. */
+int cli_check_outputs3(const char *name, const char *in, const cli_outputs *o);
 /* After the loop: CLI_EXIT_OK when an input file was named, else a usage error. */
 int cli_need_input(const char *name, const char *in);
 /* Print the last error of m (after "prefix: " when prefix is not NULL and the

@@ -41,8 +41,9 @@ void cli_mesh3_help(FILE *f)
 }
 
 /* The flags of this command alone: 1 taken, 0 not one of them, or an exit status + 1. */
-static int own_flag(margs *a, int argc, char **argv, int *i)
+static int own_flag(void *args, int argc, char **argv, int *i)
 {
+    margs *a = args;
     const char *v;
     int r;
     if ((r = cli_take_value(argc, argv, i, "--size", &v)) != 0)
@@ -71,38 +72,15 @@ static int own_flag(margs *a, int argc, char **argv, int *i)
 
 static int parse(margs *a, int argc, char **argv)
 {
-    int i, r;
+    int r;
     memset(a, 0, sizeof *a);
     a->o.command = "mesh3";
-    for (i = 1; i < argc; i++) {
-        const char *s = argv[i];
-        if (strcmp(s, "-h") == 0 || strcmp(s, "--help") == 0) {
-            cli_mesh3_help(stdout);
-            return -1;
-        }
-        if ((r = own_flag(a, argc, argv, &i)) != 0) {
-            if (r > 1)
-                return r - 1;
-            continue;
-        }
-        if ((r = cli_parse_outputs(&a->o, argc, argv, &i)) != 0) {
-            if (r < 0)
-                return CLI_EXIT_USAGE;
-            continue;
-        }
-        if ((r = cli_parse_tail("mesh3", CLI_CMD_MESH3, argc, argv, &i, a->set, &a->nset, &a->in)))
-            return r;
-    }
-    if (cli_need_input("mesh3", a->in) || cli_check_outputs("mesh3", &a->o))
-        return CLI_EXIT_USAGE;
+    if ((r = cli_parse_args("mesh3", CLI_CMD_MESH3, argc, argv, cli_mesh3_help, own_flag, a, &a->o,
+                            a->set, &a->nset, &a->in)) ||
+        (r = cli_check_outputs3("mesh3", a->in, &a->o)))
+        return r;
     if (!(a->size > 0)) {
         fprintf(stderr, "cvmesh: mesh3: --size H is required (the largest size)\n");
-        return CLI_EXIT_USAGE;
-    }
-    if ((a->o.out && strcmp(a->o.out, "-") != 0 && strlen(a->o.out) > 4 &&
-         strcmp(a->o.out + strlen(a->o.out) - 4, ".svg") == 0) ||
-        (a->o.format && strcmp(a->o.format, "svg") == 0)) {
-        fprintf(stderr, "cvmesh: mesh3: no .svg picture of a 3D mesh (use .vtu, .msh or .node)\n");
         return CLI_EXIT_USAGE;
     }
     return CLI_EXIT_OK;

@@ -61,8 +61,9 @@ void cli_optimise_help(FILE *f)
 
 /* optimise's own flags that take a value: 1 taken, 0 not one, or
  * CLI_EXIT_USAGE + 1 after printing why. */
-static int parse_value(oargs *a, int argc, char **argv, int *i)
+static int parse_value(void *args, int argc, char **argv, int *i)
 {
+    oargs *a = args;
     const char *v;
     int r;
     if ((r = cli_take_value(argc, argv, i, "--algo", &v)) != 0) {
@@ -81,32 +82,15 @@ static int parse_value(oargs *a, int argc, char **argv, int *i)
 
 static int parse(oargs *a, int argc, char **argv)
 {
-    int i, r;
+    int r;
     memset(a, 0, sizeof *a);
     a->o.command = "optimise";
     a->o.with_dual = 1;
     a->algo = CVM_ALGO_FRONTAL;
     a->bgrad = -1;
-    for (i = 1; i < argc; i++) {
-        const char *s = argv[i];
-        if (strcmp(s, "-h") == 0 || strcmp(s, "--help") == 0) {
-            cli_optimise_help(stdout);
-            return -1;
-        }
-        if ((r = parse_value(a, argc, argv, &i)) != 0) {
-            if (r > 1)
-                return r - 1;
-            continue;
-        }
-        if ((r = cli_parse_outputs(&a->o, argc, argv, &i)) != 0) {
-            if (r < 0)
-                return CLI_EXIT_USAGE;
-            continue;
-        }
-        if ((r = cli_parse_tail("optimise", CLI_CMD_OPTIMISE, argc, argv, &i, a->set, &a->nset,
-                                &a->in)))
-            return r;
-    }
+    if ((r = cli_parse_args("optimise", CLI_CMD_OPTIMISE, argc, argv, cli_optimise_help,
+                            parse_value, a, &a->o, a->set, &a->nset, &a->in)))
+        return r;
     if (a->bgrad >= 0 && !(a->size > 0)) {
         fprintf(stderr, "cvmesh: optimise: --boundary-grading needs --size (it grades the "
                         "refinement's size)\n");

@@ -70,37 +70,30 @@ static int parse_box(qargs *a, const char *v)
     return CLI_EXIT_OK;
 }
 
+/* quad's own flags: 1 taken, 0 not one, or CLI_EXIT_USAGE + 1 after printing why. */
+static int own_flag(void *args, int argc, char **argv, int *i)
+{
+    qargs *a = args;
+    const char *v;
+    int r;
+    if ((r = cli_take_value(argc, argv, i, "--metric", &v)) != 0) {
+        if (r > 0)
+            a->metric = v;
+        return r < 0 ? CLI_EXIT_USAGE + 1 : 1;
+    }
+    if ((r = cli_take_value(argc, argv, i, "--domain-box", &v)) != 0)
+        return r < 0 || parse_box(a, v) ? CLI_EXIT_USAGE + 1 : 1;
+    return 0;
+}
+
 static int parse(qargs *a, int argc, char **argv)
 {
-    int i, r;
-    const char *v;
+    int r;
     memset(a, 0, sizeof *a);
     a->o.command = "quad";
-    for (i = 1; i < argc; i++) {
-        const char *s = argv[i];
-        if (strcmp(s, "-h") == 0 || strcmp(s, "--help") == 0) {
-            cli_quad_help(stdout);
-            return -1;
-        }
-        if ((r = cli_take_value(argc, argv, &i, "--metric", &v)) != 0) {
-            if (r < 0)
-                return CLI_EXIT_USAGE;
-            a->metric = v;
-            continue;
-        }
-        if ((r = cli_take_value(argc, argv, &i, "--domain-box", &v)) != 0) {
-            if (r < 0 || parse_box(a, v))
-                return CLI_EXIT_USAGE;
-            continue;
-        }
-        if ((r = cli_parse_outputs(&a->o, argc, argv, &i)) != 0) {
-            if (r < 0)
-                return CLI_EXIT_USAGE;
-            continue;
-        }
-        if ((r = cli_parse_tail("quad", CLI_CMD_QUAD, argc, argv, &i, a->set, &a->nset, &a->in)))
-            return r;
-    }
+    if ((r = cli_parse_args("quad", CLI_CMD_QUAD, argc, argv, cli_quad_help, own_flag, a, &a->o,
+                            a->set, &a->nset, &a->in)))
+        return r;
     if (a->have_box && a->in) {
         fprintf(stderr, "cvmesh: quad: give IN.poly or --domain-box, not both\n");
         return CLI_EXIT_USAGE;

@@ -84,8 +84,9 @@ static int parse_fronts(rargs *a, const char *s)
 
 /* The flags of refine's own that take a value: 1 taken, 0 not one, or an
  * exit status + 1 (so 0 stays "not one"): CLI_EXIT_USAGE + 1 after printing why. */
-static int parse_value(rargs *a, int argc, char **argv, int *i)
+static int parse_value(void *args, int argc, char **argv, int *i)
 {
+    rargs *a = args;
     static const char *const sizes[] = {"--size", "--auto", "--grading", "--boundary-grading"};
     double *dst[4];
     const char *v;
@@ -107,31 +108,15 @@ static int parse_value(rargs *a, int argc, char **argv, int *i)
 
 static int parse(rargs *a, int argc, char **argv)
 {
-    int i, r;
+    int r;
     memset(a, 0, sizeof *a);
     a->o.command = "refine";
     a->o.with_svg = a->o.with_dual = 1;
     a->algo = CVM_ALGO_DELAUNAY;
     a->grading = 0; /* 0: not given (4 with --auto) */
-    for (i = 1; i < argc; i++) {
-        const char *s = argv[i];
-        if (strcmp(s, "-h") == 0 || strcmp(s, "--help") == 0) {
-            cli_refine_help(stdout);
-            return -1;
-        }
-        if ((r = parse_value(a, argc, argv, &i)) != 0) {
-            if (r > 1)
-                return r - 1;
-            continue;
-        }
-        if ((r = cli_parse_outputs(&a->o, argc, argv, &i)) != 0) {
-            if (r < 0)
-                return CLI_EXIT_USAGE;
-            continue;
-        }
-        if ((r = cli_parse_tail("refine", CLI_CMD_REFINE, argc, argv, &i, a->set, &a->nset, &a->in)))
-            return r;
-    }
+    if ((r = cli_parse_args("refine", CLI_CMD_REFINE, argc, argv, cli_refine_help, parse_value, a,
+                            &a->o, a->set, &a->nset, &a->in)))
+        return r;
     if (a->grading > 0 && !(a->auto_r > 0)) {
         fprintf(stderr, "cvmesh: refine: --grading needs --auto (it grades the automatic size)\n");
         return CLI_EXIT_USAGE;

@@ -43,35 +43,14 @@ void cli_tetrahedralize_help(FILE *f)
 
 static int parse(targs *a, int argc, char **argv)
 {
-    int i, r;
+    int r;
     memset(a, 0, sizeof *a);
     a->o.command = "tetrahedralize";
     a->o.with_dual = 1;
-    for (i = 1; i < argc; i++) {
-        const char *s = argv[i];
-        if (strcmp(s, "-h") == 0 || strcmp(s, "--help") == 0) {
-            cli_tetrahedralize_help(stdout);
-            return -1;
-        }
-        if ((r = cli_parse_outputs(&a->o, argc, argv, &i)) != 0) {
-            if (r < 0)
-                return CLI_EXIT_USAGE;
-            continue;
-        }
-        if ((r = cli_parse_tail("tetrahedralize", CLI_CMD_TETRAHEDRALIZE, argc, argv, &i, a->set,
-                                &a->nset, &a->in)))
-            return r;
-    }
-    if (cli_need_input("tetrahedralize", a->in) || cli_check_outputs("tetrahedralize", &a->o))
-        return CLI_EXIT_USAGE;
-    if ((a->o.out && strcmp(a->o.out, "-") != 0 && strlen(a->o.out) > 4 &&
-         strcmp(a->o.out + strlen(a->o.out) - 4, ".svg") == 0) ||
-        (a->o.format && strcmp(a->o.format, "svg") == 0)) {
-        fprintf(stderr, "cvmesh: tetrahedralize: no .svg picture of a 3D mesh (use .vtu, .msh or "
-                        ".node)\n");
-        return CLI_EXIT_USAGE;
-    }
-    return CLI_EXIT_OK;
+    if ((r = cli_parse_args("tetrahedralize", CLI_CMD_TETRAHEDRALIZE, argc, argv,
+                            cli_tetrahedralize_help, NULL, NULL, &a->o, a->set, &a->nset, &a->in)))
+        return r;
+    return cli_check_outputs3("tetrahedralize", a->in, &a->o);
 }
 
 static void report(FILE *f, cvm_mesh *m)

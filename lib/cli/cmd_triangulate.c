@@ -51,26 +51,13 @@ void cli_triangulate_help(FILE *f)
 
 static int parse(args *a, int argc, char **argv)
 {
-    int i;
+    int r;
     memset(a, 0, sizeof *a);
     a->o.command = "triangulate";
     a->o.with_svg = a->o.with_dual = 1;
-    for (i = 1; i < argc; i++) {
-        const char *s = argv[i];
-        int r;
-        if (strcmp(s, "-h") == 0 || strcmp(s, "--help") == 0) {
-            cli_triangulate_help(stdout);
-            return -1;
-        }
-        if ((r = cli_parse_outputs(&a->o, argc, argv, &i)) != 0) {
-            if (r < 0)
-                return CLI_EXIT_USAGE;
-            continue;
-        }
-        if ((r = cli_parse_tail("triangulate", CLI_CMD_TRIANGULATE, argc, argv, &i, a->set,
-                                &a->nset, &a->in)))
-            return r;
-    }
+    if ((r = cli_parse_args("triangulate", CLI_CMD_TRIANGULATE, argc, argv, cli_triangulate_help,
+                            NULL, NULL, &a->o, a->set, &a->nset, &a->in)))
+        return r;
     if (cli_need_input("triangulate", a->in))
         return CLI_EXIT_USAGE;
     return cli_check_outputs("triangulate", &a->o);

@@ -359,6 +359,46 @@ int cli_parse_tail(const char *name, unsigned cmd, int argc, char **argv, int *i
     return CLI_EXIT_OK;
 }
 
+int cli_parse_args(const char *name, unsigned cmd, int argc, char **argv, void (*help)(FILE *),
+                   cli_own_flags own, void *args, cli_outputs *o, cli_setting *set, int *nset,
+                   const char **in)
+{
+    int i, r;
+    for (i = 1; i < argc; i++) {
+        if (strcmp(argv[i], "-h") == 0 || strcmp(argv[i], "--help") == 0) {
+            help(stdout);
+            return -1;
+        }
+        if (own && (r = own(args, argc, argv, &i)) != 0) {
+            if (r > 1)
+                return r - 1;
+            continue;
+        }
+        if ((r = cli_parse_outputs(o, argc, argv, &i)) != 0) {
+            if (r < 0)
+                return CLI_EXIT_USAGE;
+            continue;
+        }
+        if ((r = cli_parse_tail(name, cmd, argc, argv, &i, set, nset, in)))
+            return r;
+    }
+    return CLI_EXIT_OK;
+}
+
+int cli_check_outputs3(const char *name, const char *in, const cli_outputs *o)
+{
+    size_t n = o->out ? strlen(o->out) : 0;
+    if (cli_need_input(name, in) || cli_check_outputs(name, o))
+        return CLI_EXIT_USAGE;
+    if ((n > 4 && strcmp(o->out, "-") != 0 && strcmp(o->out + n - 4, ".svg") == 0) ||
+        (o->format && strcmp(o->format, "svg") == 0)) {
+        fprintf(stderr, "cvmesh: %s: no .svg picture of a 3D mesh (use .vtu, .msh or .node)\n",
+                name);
+        return CLI_EXIT_USAGE;
+    }
+    return CLI_EXIT_OK;
+}
+
 int cli_need_input(const char *name, const char *in)
 {
     if (in)

@@ -45,34 +45,7 @@ static int cmp_edge(const void *pa, const void *pb)
 
 static void geometry(const double *a, const double *b, const double *c, face_geo *g)
 {
-    double u[3], v[3], w[3], vw[3], wu[3], uu = 0, vv = 0, ww = 0, nn;
-    int k;
-    for (k = 0; k < 3; k++) {
-        u[k] = b[k] - a[k];
-        v[k] = c[k] - a[k];
-    }
-    w[0] = u[1] * v[2] - u[2] * v[1];
-    w[1] = u[2] * v[0] - u[0] * v[2];
-    w[2] = u[0] * v[1] - u[1] * v[0];
-    vw[0] = v[1] * w[2] - v[2] * w[1];
-    vw[1] = v[2] * w[0] - v[0] * w[2];
-    vw[2] = v[0] * w[1] - v[1] * w[0];
-    wu[0] = w[1] * u[2] - w[2] * u[1];
-    wu[1] = w[2] * u[0] - w[0] * u[2];
-    wu[2] = w[0] * u[1] - w[1] * u[0];
-    for (k = 0; k < 3; k++) {
-        uu += u[k] * u[k];
-        vv += v[k] * v[k];
-        ww += w[k] * w[k];
-    }
-    nn = sqrt(ww);
-    g->R = 0;
-    for (k = 0; k < 3; k++) {
-        double d = (uu * vw[k] + vv * wu[k]) / (2 * ww);
-        g->c[k] = a[k] + d;
-        g->R += d * d;
-        g->n[k] = -w[k] / nn; /* the right-hand normal points out of the domain */
-    }
+    cvm__tri3_circle(a, b, c, g->c, &g->R, g->n);
     g->R = sqrt(g->R);
 }
 

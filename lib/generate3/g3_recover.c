@@ -19,6 +19,7 @@
 
 #include "delaunay3/delaunay3_internal.h"
 #include "generate3/generate3.h"
+#include "geom/measure3.h"
 
 #define MAX_ROUNDS 8
 
@@ -100,34 +101,10 @@ static void mark_blockers(const cvm__g3_surface *s, const cvm__g3_points *P, siz
 {
     const int32_t *t = s->tri + 3 * f;
     const double *a = s->xyz + 3 * t[0], *b = s->xyz + 3 * t[1], *c = s->xyz + 3 * t[2];
-    double u[3], v[3], w[3], vw[3], wu[3], uu = 0, vv = 0, ww = 0, cc[3], n[3], R2 = 0, L = 0,
-           ctr[3], r2;
+    double cc[3], n[3], R2, L = 0, ctr[3], r2;
     size_t i;
     int k;
-    for (k = 0; k < 3; k++) {
-        u[k] = b[k] - a[k];
-        v[k] = c[k] - a[k];
-    }
-    w[0] = u[1] * v[2] - u[2] * v[1];
-    w[1] = u[2] * v[0] - u[0] * v[2];
-    w[2] = u[0] * v[1] - u[1] * v[0];
-    vw[0] = v[1] * w[2] - v[2] * w[1];
-    vw[1] = v[2] * w[0] - v[0] * w[2];
-    vw[2] = v[0] * w[1] - v[1] * w[0];
-    wu[0] = w[1] * u[2] - w[2] * u[1];
-    wu[1] = w[2] * u[0] - w[0] * u[2];
-    wu[2] = w[0] * u[1] - w[1] * u[0];
-    for (k = 0; k < 3; k++) {
-        uu += u[k] * u[k];
-        vv += v[k] * v[k];
-        ww += w[k] * w[k];
-    }
-    for (k = 0; k < 3; k++) {
-        double d = (uu * vw[k] + vv * wu[k]) / (2 * ww);
-        cc[k] = a[k] + d;
-        R2 += d * d;
-        n[k] = -w[k] / sqrt(ww);
-    }
+    cvm__tri3_circle(a, b, c, cc, &R2, n);
     for (i = 0; i < s->np; i++) {
         const double *p = s->xyz + 3 * i;
         double d2 = 0, dn = 0;

@@ -131,3 +131,36 @@ double cvm__tet_radius_edge(const double *a, const double *b, const double *c, c
         return sqrt(dot(r, r) / lmin);
     }
 }
+
+void cvm__tri3_circle(const double *a, const double *b, const double *c, double *c_out,
+                      double *r2, double *n)
+{
+    double u[3], v[3], w[3], vw[3], wu[3], uu = 0, vv = 0, ww = 0, nn;
+    int k;
+    for (k = 0; k < 3; k++) {
+        u[k] = b[k] - a[k];
+        v[k] = c[k] - a[k];
+    }
+    w[0] = u[1] * v[2] - u[2] * v[1];
+    w[1] = u[2] * v[0] - u[0] * v[2];
+    w[2] = u[0] * v[1] - u[1] * v[0];
+    vw[0] = v[1] * w[2] - v[2] * w[1];
+    vw[1] = v[2] * w[0] - v[0] * w[2];
+    vw[2] = v[0] * w[1] - v[1] * w[0];
+    wu[0] = w[1] * u[2] - w[2] * u[1];
+    wu[1] = w[2] * u[0] - w[0] * u[2];
+    wu[2] = w[0] * u[1] - w[1] * u[0];
+    for (k = 0; k < 3; k++) {
+        uu += u[k] * u[k];
+        vv += v[k] * v[k];
+        ww += w[k] * w[k];
+    }
+    nn = sqrt(ww);
+    *r2 = 0;
+    for (k = 0; k < 3; k++) {
+        double d = (uu * vw[k] + vv * wu[k]) / (2 * ww);
+        c_out[k] = a[k] + d;
+        *r2 += d * d;
+        n[k] = -w[k] / nn;
+    }
+}

@@ -27,6 +27,12 @@ void cvm__tet_dihedrals_deg(const double *a, const double *b, const double *c, c
  * when the tetrahedron is flat (o unset). w may be NULL (all 0). */
 int cvm__tet_power_centre(const double *a, const double *b, const double *c, const double *d,
                           const double *w, double *o);
+/* Circumcircle of the triangle (a, b, c) in space: centre into c_out, squared
+ * radius into *r2, and the unit normal -(b - a) x (c - a) / |.| into n (into
+ * the domain for a surface triangle whose right-hand normal points out).
+ * Nothing is checked: a flat triangle gives inf or NaN. */
+void cvm__tri3_circle(const double *a, const double *b, const double *c, double *c_out,
+                      double *r2, double *n);
 /* Circumradius / shortest edge; inf for a flat tetrahedron. */
 double cvm__tet_radius_edge(const double *a, const double *b, const double *c, const double *d);
 
