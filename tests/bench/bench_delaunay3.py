@@ -5,7 +5,17 @@ on the same points, in the same run, on one core.
 
 Rows: uniform random points in the unit cube (1e5 and CVM_BENCH3_N, default
 1e6), and an exact and a 1e-9-perturbed BCC lattice of CVM_BENCH3_BCC^3 cells
-(default 40: about 1.3e5 points; the issue's 100^3 takes minutes per peer).
+(default 40: about 1.3e5 points); then the large rows, one run each
+(CVM_BENCH3_BIG=0 leaves them out): 1e7 uniform points and the exact and
+perturbed 100^3 lattices (about 2e6 points).
+Gmsh (the gmsh wheel from PyPI) runs gmsh.algorithm.tetrahedralize, its API
+call for the tetrahedralisation of a point set, with General.NumThreads 1 and
+2, up to CVM_BENCH3_GMSH_MAX points (default 2e6): wall seconds of the call in
+a child process, the conversion of its arguments included; gmsh1/gmsh2 =
+cvmesh's wall time over Gmsh's. This call is not HXT (Mesh.Algorithm3D 10
+meshes volumes bounded by surfaces, not bare point sets), and its tetrahedra
+differ in number from the Delaunay tetrahedralisation's (a line says so).
+CVM_BENCH_NO_GMSH=1 leaves it out.
 Each timing is the median of CVM_BENCH3_REPS runs (default 3) of the build
 and its output arrays; both wall and process CPU seconds are given, because on
 a shared machine CPU time is the fairer of the two. ratio = cvmesh / TetGen
@@ -23,6 +33,9 @@ N = int(float(os.environ.get("CVM_BENCH3_N", "1e6")))
 BCC = int(os.environ.get("CVM_BENCH3_BCC", "40"))
 REPS = int(os.environ.get("CVM_BENCH3_REPS", "3"))
 QHULL_MAX = int(float(os.environ.get("CVM_BENCH3_QHULL_MAX", "2e5")))
+BIG = os.environ.get("CVM_BENCH3_BIG", "1") != "0"
+GMSH_MAX = int(float(os.environ.get("CVM_BENCH3_GMSH_MAX", "2e6")))
+NO_GMSH = os.environ.get("CVM_BENCH_NO_GMSH", "0") == "1"
 CVM = os.path.join(BUILD, "bench", "bench_delaunay3")
 TETGEN = os.path.join(BUILD, "bench", "bench_tetgen3")
 
@@ -37,19 +50,50 @@ def bcc(k):
 
 def cases():
     rng = np.random.default_rng(12345)
-    yield "uniform", rng.random((100000, 3))
+    yield "uniform", rng.random((100000, 3)), REPS
     if N != 100000:
-        yield "uniform", rng.random((N, 3))
+        yield "uniform", rng.random((N, 3)), REPS
     lat = bcc(BCC)
-    yield "bcc_exact_%d^3" % BCC, lat
-    yield "bcc_perturbed_1e-9", lat + 1e-9 * (rng.random(lat.shape) - 0.5)
+    yield "bcc_exact_%d^3" % BCC, lat, REPS
+    yield "bcc_perturbed_1e-9", lat + 1e-9 * (rng.random(lat.shape) - 0.5), REPS
+    if BIG:
+        yield "uniform", rng.random((10000000, 3)), 1
+        lat = bcc(100)
+        yield "bcc_exact_100^3", lat, 1
+        yield "bcc_perturbed_1e-9", lat + 1e-9 * (rng.random(lat.shape) - 0.5), 1
 
 
-def run(binary, path):
-    r = subprocess.run([binary, path, str(REPS)], capture_output=True, text=True)
+def run(binary, path, reps):
+    r = subprocess.run([binary, path, str(reps)], capture_output=True, text=True)
     if r.returncode != 0:
         raise SystemExit("%s failed on %s: %s %s" % (binary, path, r.stdout, r.stderr))
     return json.loads(r.stdout)
+
+
+def gmsh_time(pts, threads):
+    """Wall seconds and tetrahedra of gmsh.algorithm.tetrahedralize, in a child
+    process (Gmsh keeps its memory until finalize)."""
+    code = ("import sys, time, numpy as np, gmsh\n"
+            "p = np.fromfile(sys.argv[1]).reshape(-1, 3).ravel()\n"
+            "gmsh.initialize(['-noenv'])\n"
+            "gmsh.option.setNumber('General.Terminal', 0)\n"
+            "gmsh.option.setNumber('General.NumThreads', %d)\n"
+            "t0 = time.perf_counter()\n"
+            "tets, _ = gmsh.algorithm.tetrahedralize(p)\n"
+            "print(time.perf_counter() - t0, len(tets) // 4)\n"
+            "gmsh.finalize()\n" % threads)
+    r = subprocess.run([sys.executable, "-c", code, pts], capture_output=True, text=True)
+    if r.returncode != 0:
+        return None
+    w, n = r.stdout.split()[-2:]
+    return float(w), int(n)
+
+
+def have_gmsh():
+    if NO_GMSH:
+        return False
+    r = subprocess.run([sys.executable, "-c", "import gmsh"], capture_output=True)
+    return r.returncode == 0
 
 
 def qhull_time(pts):
@@ -67,6 +111,7 @@ def qhull_time(pts):
 def main():
     os.environ.setdefault("OMP_NUM_THREADS", "1")
     have_tetgen = os.path.exists(TETGEN)
+    use_gmsh = have_gmsh()
     tmp = tempfile.mkdtemp()
     print("# cvmesh 3D Delaunay benchmark: medians of %d runs, one core; ratio = cvmesh / TetGen"
           " (< 1: cvmesh faster)" % REPS)
@@ -75,24 +120,34 @@ def main():
     print("# load average at start: %s" % " ".join(open("/proc/loadavg").read().split()[:3]))
     if not have_tetgen:
         print("# TetGen driver not built (no /usr/include/tetgen.h or no C++ compiler): its columns are -")
-    print("%-20s %8s %8s %8s %8s %8s %8s %8s %8s %8s %9s %9s %7s %7s" % (
-        "case", "n", "cpu_cvm", "cpu_tg", "ratio", "build", "b_ratio", "wall_cvm", "wall_tg",
-        "cpu_qh", "tets_cvm", "tets_tg", "B/t_cvm", "B/t_tg"))
-    for name, pts in cases():
+    if not use_gmsh:
+        print("# gmsh not importable (or CVM_BENCH_NO_GMSH=1): its columns are -")
+    print("%-20s %8s %4s %8s %8s %8s %8s %8s %8s %8s %8s %8s %8s %8s %8s %9s %9s %7s %7s" % (
+        "case", "n", "reps", "cpu_cvm", "cpu_tg", "ratio", "build", "b_ratio", "wall_cvm",
+        "wall_tg", "wall_g1", "gmsh1", "wall_g2", "gmsh2", "cpu_qh", "tets_cvm", "tets_tg",
+        "B/t_cvm", "B/t_tg"))
+    for name, pts, reps in cases():
         pts = np.ascontiguousarray(pts, dtype=np.float64)
         path = os.path.join(tmp, "pts.bin")
         pts.tofile(path)
-        c = run(CVM, path)
-        t = run(TETGEN, path) if have_tetgen else None
+        c = run(CVM, path, reps)
+        t = run(TETGEN, path, reps) if have_tetgen else None
+        g1 = gmsh_time(path, 1) if use_gmsh and len(pts) <= GMSH_MAX else None
+        g2 = gmsh_time(path, 2) if use_gmsh and len(pts) <= GMSH_MAX else None
         q = qhull_time(pts) if len(pts) <= QHULL_MAX else None
         fmt = lambda x, f="%8.3f": (f % x) if x is not None else "%8s" % "-"
-        print("%-20s %8d %s %s %s %s %s %s %s %s %9d %9s %7.0f %7s" % (
-            name, len(pts), fmt(c["cpu"]), fmt(t and t["cpu"]),
+        print("%-20s %8d %4d %s %s %s %s %s %s %s %s %s %s %s %s %9d %9s %7.0f %7s" % (
+            name, len(pts), reps, fmt(c["cpu"]), fmt(t and t["cpu"]),
             fmt(t and c["cpu"] / t["cpu"]), fmt(c["cpu_build"]),
             fmt(t and c["cpu_build"] / t["cpu"]), fmt(c["wall"]), fmt(t and t["wall"]),
+            fmt(g1 and g1[0]), fmt(g1 and c["wall"] / g1[0]),
+            fmt(g2 and g2[0]), fmt(g2 and c["wall"] / g2[0]),
             fmt(q and q[0]), c["tets"],
             t["tets"] if t else "-", c["peak_bytes"] / c["tets"],
             ("%7.0f" % (t["peak_bytes"] / t["tets"])) if t else "-"), flush=True)
+        if g1 and g1[1] != c["tets"]:
+            print("#   gmsh made %d tetrahedra (cvmesh %d): Gmsh's result is not the same "
+                  "tetrahedralisation" % (g1[1], c["tets"]))
 
 
 if __name__ == "__main__":
