@@ -399,7 +399,7 @@ check-fortran: venv
 	else echo "check-fortran: skipped (bindings/fortran/check.sh not present yet)"; fi
 
 bench: all data3d
-	sh tests/bench/run.sh $(BUILD) $(DATA_DIR)
+	BENCH_LIBS='$(LDLIBS_LIB)' sh tests/bench/run.sh $(BUILD) $(DATA_DIR)
 
 # ---- amalgamation ----------------------------------------------------------
 # One cvmesh.c holding every library source with internal headers inlined

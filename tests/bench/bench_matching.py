@@ -25,7 +25,8 @@ def build_driver():
     cc = os.environ.get("CC", "cc")
     subprocess.check_call([cc, "-std=c99", "-O2", "-Iinclude", "-Ilib", "-o", path,
                            "tests/bench/bench_matching.c",
-                           os.path.join(BUILD, "lib", "libcvmesh.a"), "-lm", "-fopenmp"])
+                           os.path.join(BUILD, "lib", "libcvmesh.a")]
+                          + os.environ.get("BENCH_LIBS", "-llbfgs -lz -lm -fopenmp").split())
     return path
 
 

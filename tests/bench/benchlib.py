@@ -15,7 +15,7 @@ def build_driver(build, name):
     cc = os.environ.get("CC", "cc")
     subprocess.check_call([cc, "-std=c99", "-O2", "-Iinclude", "-o", path,
                            "tests/bench/%s.c" % name, os.path.join(build, "lib", "libcvmesh.a"),
-                           "-llbfgs", "-lz", "-lm", "-fopenmp"])
+                           ] + os.environ.get("BENCH_LIBS", "-llbfgs -lz -lm -fopenmp").split())
     return path
 
 

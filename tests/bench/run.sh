@@ -6,12 +6,16 @@ set -eu
 BUILD=$1
 DOMAINS=$2
 CC=${CC:-cc}
+# The libraries the static library needs (the Makefile passes its own list:
+# TetGen and the C++ runtime in a TETGEN=1 build).
+LIBS=${BENCH_LIBS:--llbfgs -lz -lm -fopenmp}
+export BENCH_LIBS="$LIBS"
 mkdir -p "$BUILD/bench"
 $CC -std=c99 -O2 -Iinclude -o "$BUILD/bench/bench_delaunay" tests/bench/bench_delaunay.c \
-    "$BUILD/lib/libcvmesh.a" -llbfgs -lz -lm -fopenmp
+    "$BUILD/lib/libcvmesh.a" $LIBS
 # The 3D engine has no public handle yet: its driver includes lib/ and links the static library.
 $CC -std=c99 -O2 -Iinclude -Ilib -D_POSIX_C_SOURCE=200809L -o "$BUILD/bench/bench_delaunay3" \
-    tests/bench/bench_delaunay3.c "$BUILD/lib/libcvmesh.a" -llbfgs -lz -lm -fopenmp
+    tests/bench/bench_delaunay3.c "$BUILD/lib/libcvmesh.a" $LIBS
 # TetGen (AGPL, Debian libtet1.5-dev) is linked only into this test-only C++ driver.
 CXX=${CXX:-c++}
 if [ -f /usr/include/tetgen.h ] && command -v "$CXX" >/dev/null 2>&1; then
