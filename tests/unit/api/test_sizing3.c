@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "api/api_tests.h"
+#include "cvmesh.h"
 
 static double eval3(cvm_sizing *s, double x, double y, double z)
 {
@@ -65,10 +66,10 @@ START_TEST(sources_combine_by_the_minimum_in_3d)
     ck_assert_int_eq(cvm_sizing_add_point_source_nd(s, a, 3, 0.1, 0.5), CVM_OK);
     ck_assert_int_eq(cvm_sizing_add_point_source_nd(s, b, 3, 0.2, 0.5), CVM_OK);
     ck_assert_int_eq(cvm_sizing_set_uniform(s, 1.5), CVM_OK);
-    ck_assert(eval3(s, 0, 3, 4) == 0.1 + 2.5);         /* 2.6 > 1.5: the uniform size */
+    ck_assert(eval3(s, 0, 3, 4) == 1.5); /* the point source gives 2.6: the uniform size */
     ck_assert(eval3(s, 0, 0, 1) == 0.1 + 0.5);
     ck_assert(eval3(s, 10, 0, 1) == 0.2 + 0.5);
-    ck_assert(eval3(s, 4, 0, 0) == 0.1 + 0.5 * 4); /* 2.1 vs 3.2: the first */
+    ck_assert(eval3(s, 2, 0, 0) == 0.1 + 0.5 * 2); /* 1.1 against 4.2 and 1.5 */
     ck_assert(eval3(s, 5, 30, 0) == 1.5);
     cvm_sizing_free(s);
 }
@@ -207,6 +208,7 @@ START_TEST(bad_sources_name_the_source_and_change_nothing)
     ck_assert_int_eq(cvm_sizing_add_point_source_nd(s, badp, 3, 0.1, 0), CVM_E_INPUT_NONFINITE);
     ck_assert_ptr_nonnull(strstr(cvm_sizing_errmsg(s), "point source 1"));
     ck_assert_int_eq(cvm_sizing_add_point_source_nd(s, p, 3, INFINITY, 0), CVM_E_INPUT_NONFINITE);
+    badt[4] = NAN; /* the second end of a line source */
     ck_assert_int_eq(cvm_sizing_add_line_source_nd(s, badt, 3, 0.1, 0), CVM_E_INPUT_NONFINITE);
     ck_assert_ptr_nonnull(strstr(cvm_sizing_errmsg(s), "line source 0"));
     ck_assert_int_eq(cvm_sizing_add_triangle_source_nd(s, badt, 3, 0.1, 0), CVM_E_INPUT_NONFINITE);
