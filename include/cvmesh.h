@@ -2707,7 +2707,8 @@ CVM_API cvm_status cvm_mesh_optimise_dual(cvm_mesh *m, const cvm_sizing *sizing)
  * emptied, regions' attributes kept). Walton, Hassan and Morgan's pipeline:
  *  - size: @p size everywhere (CVM_OPT_GEN3_SIZE_FROM_SURFACE 0), or by default
  *    min(size, l + g * distance) from each surface triangle (mean edge l,
- *    g = CVM_OPT_GEN3_GRADING); the surface itself is used as given;
+ *    g = CVM_OPT_GEN3_GRADING); the surface itself is used as given; a 3D
+ *    cvm_sizing lowers it further (cvm_mesh_generate3_sized());
  *  - near field: surface triangles paired across edges by a maximum-cardinality
  *    matching; a pair ABC/BDC gets x = (c1 + c2 + delta (n1 + n2)) / 2, delta =
  *    1.1 max(R1, R2) (circumcentres, inward normals, circumradii); an unmatched

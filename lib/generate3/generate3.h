@@ -20,8 +20,12 @@
  * Free space, this version: a global axis-aligned BCC lattice (origin at the
  * surface's bounding-box corner), one level per halving of the size (cube
  * edge a_k = h / 2^k; a candidate of level k is kept where a_k/2 < size(x) <=
- * a_k), clipped by the exact inside test and by the distance rule. The issue's
- * lattice grown front by front in a local frame is not implemented.
+ * a_k), clipped by the exact inside test and by the distance rule. With a
+ * user sizing the levels go down to its sources' least size (with a
+ * callback, on while a level meets sizes below its range), and a finer level
+ * also visits the boxes where a source can reach its size
+ * (cvm__sizing_boxes3). The issue's lattice grown front by front in a local
+ * frame is not implemented.
  *
  * Geometry that decides topology (inside or not, which surface triangles are
  * Delaunay faces) is exact; placements, sizes and distances are plain doubles.

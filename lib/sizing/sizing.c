@@ -1,4 +1,5 @@
-/* sizing.c - the cvm_sizing handle: uniform, point, line and callback sizes combined by their minimum. */
+/* sizing.c - the cvm_sizing handle: uniform, point, line, triangle and callback sizes combined by
+ * their minimum, evaluated in 2D. */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>

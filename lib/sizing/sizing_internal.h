@@ -1,8 +1,9 @@
 /*
  * sizing_internal.h - the sizing engine: the cvm_sizing handle (uniform,
- * point, line, callback, automatic, background and boundary-grading sources)
- * and its evaluation at a point. Refinement, dual optimisation and the
- * boundary resampler read sizes through it; it knows nothing of them.
+ * point, line, triangle, callback, automatic, background and boundary-grading
+ * sources, in 2D or 3D: one dimension per handle) and its evaluation at a
+ * point. Refinement, dual optimisation, the boundary resampler and 3D
+ * generation read sizes through it; it knows nothing of them.
  *
  * Nothing here decides topology: a size only chooses which valid mesh a
  * meshing algorithm produces.
