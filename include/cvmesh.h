@@ -1152,9 +1152,17 @@ CVM_API cvm_status cvm_mesh_check(cvm_mesh *m);
 /* ------------------------------------------------------------------------ */
 
 /**
- * Opaque sizing handle: the target edge length h(x, y) for cvm_mesh_refine().
+ * Opaque sizing handle: the target edge length h(x, y) for cvm_mesh_refine(), or
+ * h(x, y, z) for cvm_mesh_generate3_sized().
  * Sources combine by taking the minimum: h = min(uniform, every point source,
- * every line source, the callback). A handle with no source sets no size bound.
+ * every line source, every triangle source, the background, the callback). A
+ * handle with no source sets no size bound.
+ * Dimension: a handle holds positional sources (point, line, triangle,
+ * background) of one dimension, 2 or 3, fixed by the first one added; adding one
+ * of the other dimension fails with CVM_E_ARGUMENT naming it and the handle's
+ * first source (the handle is unchanged). The uniform size, the boundary grading
+ * and the cvm_sizing_set_callback_nd() function serve both; the (x, y) and batch
+ * callbacks and the automatic sizing are 2D only.
  * The handle has its own messages (cvm_sizing_errmsg()) and may be used by any
  * number of refinements, one call at a time.
  */
@@ -1247,15 +1255,15 @@ CVM_API cvm_status cvm_sizing_add_line_source(cvm_sizing *s, double x0, double y
  *
  * @param s       sizing handle; not NULL.
  * @param x       dim coordinates of the source.
- * @param dim     2; 3 gives CVM_E_UNSUPPORTED (no 3D kernel yet).
+ * @param dim     2 or 3 (the handle's dimension, see cvm_sizing).
  * @param h, growth  as cvm_sizing_add_point_source().
  * Units: lengths; growth dimensionless. Ownership: x is copied.
  * Thread-safety: one call at a time on @p s.
  * Atomicity: on error the handle is unchanged.
  * @return CVM_OK
  *         CVM_E_NULL_ARG         s or x is NULL
- *         CVM_E_ARGUMENT         dim is neither 2 nor 3; h <= 0 or growth < 0 (names point source k)
- *         CVM_E_UNSUPPORTED      dim is 3 (message says so)
+ *         CVM_E_ARGUMENT         dim is neither 2 nor 3; h <= 0 or growth < 0 (names point source k);
+ *                                the handle holds sources of the other dimension (names both)
  *         CVM_E_INPUT_NONFINITE  a value is NaN or infinite (names point source k)
  *         CVM_E_NOMEM
  * @since 0.2
@@ -1269,19 +1277,73 @@ CVM_API cvm_status cvm_sizing_add_point_source_nd(cvm_sizing *s, const double *x
  *
  * @param s       sizing handle; not NULL.
  * @param ends    2*dim coordinates: the first end, then the second (they may coincide).
- * @param dim     2; 3 gives CVM_E_UNSUPPORTED (no 3D kernel yet).
+ * @param dim     2 or 3 (the handle's dimension, see cvm_sizing).
  * @param h, growth  as cvm_sizing_add_point_source().
  * Units, ownership, thread-safety and atomicity as cvm_sizing_add_point_source_nd().
  * @return CVM_OK
  *         CVM_E_NULL_ARG         s or ends is NULL
- *         CVM_E_ARGUMENT         dim is neither 2 nor 3; h <= 0 or growth < 0 (names line source k)
- *         CVM_E_UNSUPPORTED      dim is 3 (message says so)
+ *         CVM_E_ARGUMENT         dim is neither 2 nor 3; h <= 0 or growth < 0 (names line source k);
+ *                                the handle holds sources of the other dimension (names both)
  *         CVM_E_INPUT_NONFINITE  a value is NaN or infinite (names line source k)
  *         CVM_E_NOMEM
  * @since 0.2
  */
 CVM_API cvm_status cvm_sizing_add_line_source_nd(cvm_sizing *s, const double *ends, int dim,
                                                  double h, double growth);
+
+/**
+ * Add a triangle source: h(p) = h + growth * dist(p, triangle), the distance to the
+ * nearest point of the (closed, filled) triangle; in 3D a surface patch, in 2D an
+ * area. A degenerate triangle (collinear corners) acts as the union of its edges.
+ *
+ * @param s        sizing handle; not NULL.
+ * @param corners  3*dim coordinates: the three corners one after the other.
+ * @param dim      2 or 3 (the handle's dimension, see cvm_sizing).
+ * @param h, growth  as cvm_sizing_add_point_source().
+ * Units, ownership, thread-safety and atomicity as cvm_sizing_add_point_source_nd().
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG         s or corners is NULL
+ *         CVM_E_ARGUMENT         dim is neither 2 nor 3; h <= 0 or growth < 0 (names triangle
+ *                                source k); the handle holds sources of the other dimension
+ *         CVM_E_INPUT_NONFINITE  a value is NaN or infinite (names triangle source k)
+ *         CVM_E_NOMEM
+ * @since 0.2
+ */
+CVM_API cvm_status cvm_sizing_add_triangle_source_nd(cvm_sizing *s, const double *corners,
+                                                     int dim, double h, double growth);
+
+/**
+ * cvm_sizing_set_background() in the mesh's dimension: sizes at the nodes of a
+ * background triangulation (dim 2: triangles, exactly cvm_sizing_set_background())
+ * or tetrahedral mesh (dim 3), interpolated linearly inside its cells (the least
+ * value where cells overlap); outside them this source sets no bound. Replaces an
+ * earlier background of the same dimension.
+ *
+ * @param s        sizing handle; not NULL.
+ * @param xh       npoints nodes, dim + 1 doubles each: the coordinates and the size
+ *                 there (positive and finite).
+ * @param npoints  node count; npoints = ncells = 0 removes the background of that
+ *                 dimension (then the pointers may be NULL).
+ * @param dim      2 or 3 (the handle's dimension, see cvm_sizing).
+ * @param cells    ncells cells, dim + 1 node indices each (0-based), either orientation.
+ * @param ncells   cell count.
+ * Ownership: copied. Units: length.
+ * Thread-safety: one call at a time on @p s.
+ * Atomicity: on error the handle is unchanged.
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG          s, or xh or cells (with ncells > 0) is NULL
+ *         CVM_E_ARGUMENT          dim is neither 2 nor 3; a size is not positive (names node k);
+ *                                 the handle holds sources of the other dimension
+ *         CVM_E_INPUT_NONFINITE   a coordinate or size is NaN or infinite (names node k)
+ *         CVM_E_INPUT_INDEX       a cell names a node outside [0, npoints) (names the cell)
+ *         CVM_E_INPUT_DEGENERATE  a cell has zero area or volume, by the exact orientation
+ *                                 test (names the cell)
+ *         CVM_E_TOO_LARGE         more than INT32_MAX/4 nodes or cells
+ *         CVM_E_NOMEM
+ * @since 0.2
+ */
+CVM_API cvm_status cvm_sizing_set_background_nd(cvm_sizing *s, const double *xh, size_t npoints,
+                                                int dim, const cvm_index *cells, size_t ncells);
 
 /**
  * Set (or, with fn NULL, remove) a user sizing function.
@@ -1300,7 +1362,8 @@ CVM_API cvm_status cvm_sizing_set_callback(cvm_sizing *s, cvm_sizing_fn fn, void
 
 /**
  * User sizing function in the mesh's dimension: the target edge length at the
- * point @p x (@p dim coordinates, dim = the dimension of the mesh being refined),
+ * point @p x (@p dim coordinates, dim = the dimension of the mesh being refined or
+ * generated: 2 for cvm_mesh_refine(), 3 for cvm_mesh_generate3_sized()),
  * positive and finite, deterministic. It must not call any function on the mesh
  * being refined.
  */
@@ -1535,7 +1598,8 @@ CVM_API cvm_status cvm_sizing_set_background(cvm_sizing *s, const double *xyh, s
  * @return CVM_OK
  *         CVM_E_NULL_ARG         out or s is NULL
  *         CVM_E_INPUT_NONFINITE  x or y is not finite, or the callback returned NaN/Inf
- *         CVM_E_ARGUMENT         the callback returned a value <= 0
+ *         CVM_E_ARGUMENT         the callback returned a value <= 0, or the handle holds 3D
+ *                                sources
  * @since 0.1
  */
 CVM_API cvm_status cvm_sizing_eval(double *out, cvm_sizing *s, double x, double y);
@@ -1547,12 +1611,15 @@ CVM_API cvm_status cvm_sizing_eval(double *out, cvm_sizing *s, double x, double 
  * @param out  receives the size; +infinity when the handle has no scalar source.
  * @param s    sizing handle; not NULL.
  * @param x    dim coordinates.
- * @param dim  2; 3 gives CVM_E_UNSUPPORTED (no 3D kernel yet).
+ * @param dim  2 or 3. As with cvm_sizing_eval(), the fields built from a domain
+ *             (automatic sizing, boundary grading) are not read.
  * Thread-safety: one call at a time on @p s (it records the message of a failure).
  * @return CVM_OK
  *         CVM_E_NULL_ARG         out, s or x is NULL
- *         CVM_E_ARGUMENT         dim is neither 2 nor 3, or the callback returned a value <= 0
- *         CVM_E_UNSUPPORTED      dim is 3 (message says so)
+ *         CVM_E_ARGUMENT         dim is neither 2 nor 3, or the callback returned a value <= 0;
+ *                                the handle holds sources of the other dimension, or (dim 3) its
+ *                                callback is a 2D one (cvm_sizing_set_callback() or
+ *                                cvm_sizing_set_batch_callback())
  *         CVM_E_INPUT_NONFINITE  a coordinate is not finite, or the callback returned NaN/Inf
  * @since 0.2
  */
@@ -2640,7 +2707,8 @@ CVM_API cvm_status cvm_mesh_optimise_dual(cvm_mesh *m, const cvm_sizing *sizing)
  * emptied, regions' attributes kept). Walton, Hassan and Morgan's pipeline:
  *  - size: @p size everywhere (CVM_OPT_GEN3_SIZE_FROM_SURFACE 0), or by default
  *    min(size, l + g * distance) from each surface triangle (mean edge l,
- *    g = CVM_OPT_GEN3_GRADING); the surface itself is used as given;
+ *    g = CVM_OPT_GEN3_GRADING); the surface itself is used as given; a 3D
+ *    cvm_sizing lowers it further (cvm_mesh_generate3_sized());
  *  - near field: surface triangles paired across edges by a maximum-cardinality
  *    matching; a pair ABC/BDC gets x = (c1 + c2 + delta (n1 + n2)) / 2, delta =
  *    1.1 max(R1, R2) (circumcentres, inward normals, circumradii); an unmatched
@@ -2693,6 +2761,39 @@ CVM_API cvm_status cvm_mesh_optimise_dual(cvm_mesh *m, const cvm_sizing *sizing)
  * @since 0.2
  */
 CVM_API cvm_status cvm_mesh_generate3(cvm_mesh *m, double size);
+
+/**
+ * cvm_mesh_generate3() with the size given by a sizing handle as well: the size at
+ * x is min(size, sizing(x), the surface-following field min over surface triangles
+ * of l + g * distance when CVM_OPT_GEN3_SIZE_FROM_SURFACE is 1). The sizing's
+ * boundary grading g_b (cvm_sizing_set_boundary_grading()) adds that
+ * surface-following field with slope g_b (also when the option is 0); with both,
+ * the smaller slope holds. The free-space lattice adds levels (cube edge size / 2^k)
+ * down to the smallest size of the sizing's sources (a callback: while a level
+ * meets points below its range, up to 2^-23 size) and visits, per level, only the
+ * boxes where a source can reach that level's size (everywhere for a uniform size,
+ * a zero growth or a callback). With @p sizing NULL or empty the call is
+ * cvm_mesh_generate3(m, size), the same bytes.
+ *
+ * @param m       mesh handle holding a closed 3D surface; not NULL.
+ * @param size    largest size, positive and finite (as cvm_mesh_generate3()).
+ * @param sizing  3D sizing (sources added with dim 3, cvm_sizing_set_callback_nd(),
+ *                uniform, boundary grading); may be NULL. Read only.
+ * Ownership, thread-safety, stops: as cvm_mesh_generate3(); @p sizing must not be
+ *               changed during the call (it may be shared by calls on other meshes
+ *               only when it has no callback with state).
+ * @return the statuses of cvm_mesh_generate3(), and
+ *         CVM_E_ARGUMENT          the sizing holds 2D sources or a 2D callback (message
+ *                                 says which), or its callback returned a value <= 0
+ *                                 (message names "the sizing callback" and the position)
+ *         CVM_E_INPUT_NONFINITE   the callback returned NaN or infinity (message as above)
+ *         CVM_E_UNSUPPORTED       the sizing has an automatic size
+ *                                 (cvm_sizing_set_automatic()) or a metric source
+ *         CVM_E_TOO_LARGE         also when a finer level's candidates pass the limit of
+ *                                 cvm_mesh_generate3()
+ * @since 0.2
+ */
+CVM_API cvm_status cvm_mesh_generate3_sized(cvm_mesh *m, double size, const cvm_sizing *sizing);
 
 /* ------------------------------------------------------------------------ */
 /* Quad-dominant meshing                                                    */

@@ -147,6 +147,7 @@ CVMPY_LONG_CALL(cvm_mesh_triangulate)
 CVMPY_LONG_CALL(cvm_mesh_refine)
 CVMPY_LONG_CALL(cvm_mesh_optimise_dual)
 CVMPY_LONG_CALL(cvm_mesh_generate3)
+CVMPY_LONG_CALL(cvm_mesh_generate3_sized)
 CVMPY_LONG_CALL(cvm_mesh_quadmesh)
 CVMPY_LONG_CALL(cvm_mesh_read)
 CVMPY_LONG_CALL(cvm_mesh_write)
@@ -222,6 +223,7 @@ CVMPY_HANDLE_OUT(cvm_sizing)
 %ignore cvm_sizing_set_callback_nd;
 %ignore cvm_sizing_set_metric_fn;
 %ignore cvm_sizing_set_batch_callback;
+%ignore cvm_sizing_set_background_nd;
 %rename(cvm_mesh_free) cvmpy_mesh_free;
 %rename(cvm_mesh_errmsg) cvmpy_mesh_errmsg;
 %rename(cvm_mesh_get_marker_name) cvmpy_mesh_get_marker_name;
@@ -234,6 +236,7 @@ CVMPY_HANDLE_OUT(cvm_sizing)
 %rename(cvm_sizing_set_callback_nd) cvmpy_sizing_set_callback_nd;
 %rename(cvm_sizing_set_metric_fn) cvmpy_sizing_set_metric_fn;
 %rename(cvm_sizing_set_batch_callback) cvmpy_sizing_set_batch_callback;
+%rename(cvm_sizing_set_background_nd) cvmpy_sizing_set_background_nd;
 /* Allocation hooks are C function pointers; there is nothing to pass from Python. */
 %ignore cvm_mesh_create_with_allocator;
 %ignore cvm_malloc_fn;
@@ -626,6 +629,32 @@ cvm_status cvmpy_insert_points_nd(PyObject **ids_out, cvm_mesh *m, const double 
     Py_END_ALLOW_THREADS
     *ids_out = (PyObject *)a;
     return s;
+}
+%}
+
+%inline %{
+/*
+ * cvm_sizing_set_background_nd() from two arrays: nodes (n, dim + 1) (the
+ * coordinates, then the size) and cells (m, dim + 1); dim comes from the
+ * nodes' shape, and cells of another width raise ValueError before the call.
+ */
+cvm_status cvmpy_sizing_set_background_nd(cvm_sizing *s, const double *bg_xh, size_t bg_n,
+                                          int bg_cols, const cvm_index *bg_cells, size_t bg_nc,
+                                          int bg_ccols)
+{
+    int dim = bg_cols - 1;
+    if (bg_n == 0 && bg_nc == 0)
+        dim = bg_cols == 3 ? 2 : 3; /* removal: of the dimension the empty shape says */
+    else if (dim != 2 && dim != 3) {
+        PyErr_Format(PyExc_ValueError, "background nodes must have shape (n, 3) or (n, 4) "
+                     "(coordinates, then the size), got %d columns", bg_cols);
+        return CVM_E_ARGUMENT;
+    } else if (bg_nc > 0 && bg_ccols != dim + 1) {
+        PyErr_Format(PyExc_ValueError, "background cells must have shape (m, %d) for %dD "
+                     "nodes, got %d columns", dim + 1, dim, bg_ccols);
+        return CVM_E_ARGUMENT;
+    }
+    return cvm_sizing_set_background_nd(s, bg_xh, bg_n, dim, bg_cells, bg_nc);
 }
 %}
 

@@ -12,6 +12,7 @@
  *   (const double *r, size_t count, int dim)          (k, d + 2) float64 regions
  *   (const double *x, int dim)                        (d,) float64 point
  *   (const double *ends, int dim)                     (2, d) float64 segment ends
+ *   (const double *corners, int dim)                  (3, d) float64 triangle corners
  *   (const cvm_index *segs, size_t count)             (m, 2) integer pairs
  *   (const int32_t *markers, size_t count)            (n,) integers
  * Any array-like is accepted; it is converted without a Python loop. Integer
@@ -306,6 +307,44 @@ static PyArrayObject *cvmpy_out_array(PyObject *obj, int typenum, const char *wh
     $2 = (int)cvmpy_cols(arr);
 }
 %typemap(freearg) (const double *ends, int dim) { Py_XDECREF(arr$argnum); }
+
+/* The three corners of a triangle source: a (3, dim) array. */
+%typemap(in, fragment="cvmpy_numpy") (const double *corners, int dim) (PyArrayObject *arr = NULL) {
+    arr = cvmpy_in_double($input, -1, "corners");
+    if (!arr)
+        SWIG_fail;
+    if (cvmpy_rows(arr) != 3) {
+        PyErr_SetString(PyExc_ValueError, "corners must have shape (3, dim)");
+        SWIG_fail;
+    }
+    $1 = (double *)PyArray_DATA(arr);
+    $2 = (int)cvmpy_cols(arr);
+}
+%typemap(freearg) (const double *corners, int dim) { Py_XDECREF(arr$argnum); }
+
+/* A background mesh in the mesh's dimension (cvmpy_sizing_set_background_nd):
+ * nodes (n, dim + 1) float64 and cells (m, dim + 1) int32, each with its
+ * column count for the helper to check. */
+%typemap(in, fragment="cvmpy_numpy") (const double *bg_xh, size_t bg_n, int bg_cols)
+    (PyArrayObject *arr = NULL) {
+    arr = cvmpy_in_double($input, -1, "background nodes");
+    if (!arr)
+        SWIG_fail;
+    $2 = cvmpy_rows(arr);
+    $1 = $2 ? (double *)PyArray_DATA(arr) : NULL;
+    $3 = (int)cvmpy_cols(arr);
+}
+%typemap(freearg) (const double *bg_xh, size_t bg_n, int bg_cols) { Py_XDECREF(arr$argnum); }
+%typemap(in, fragment="cvmpy_numpy") (const cvm_index *bg_cells, size_t bg_nc, int bg_ccols)
+    (PyArrayObject *arr = NULL) {
+    arr = cvmpy_in_int32($input, -1, "background cells");
+    if (!arr)
+        SWIG_fail;
+    $2 = cvmpy_rows(arr);
+    $1 = $2 ? (cvm_index *)PyArray_DATA(arr) : NULL;
+    $3 = (int)cvmpy_cols(arr);
+}
+%typemap(freearg) (const cvm_index *bg_cells, size_t bg_nc, int bg_ccols) { Py_XDECREF(arr$argnum); }
 
 /* CVMPY_IN_ROWS(CTYPE, NAME, CONVERT, NCOLS, WHAT): (const CTYPE *NAME, size_t count). */
 %define CVMPY_IN_ROWS(CTYPE, NAME, CONVERT, NCOLS, WHAT)

@@ -61,7 +61,8 @@ static cvm_status tetrahedralise_with(cvm_mesh *m, const double *xyz, size_t n)
     return s;
 }
 
-cvm_status cvm_mesh_generate3(cvm_mesh *m, double size)
+/* cvm_mesh_generate3_sized() with sizing NULL or checked for 3D. */
+static cvm_status generate(cvm_mesh *m, double size, const cvm_sizing *sizing)
 {
     cvm__mesh3 *g;
     cvm__surf3_tris st;
@@ -72,9 +73,6 @@ cvm_status cvm_mesh_generate3(cvm_mesh *m, double size)
     int64_t bad = -1;
     double t0 = cvm__now();
     cvm_status s;
-    if (!m)
-        return CVM_E_NULL_ARG;
-    CVM__BEGIN(m);
     if ((s = check_call(m, size)))
         return s;
     g = m->m3;
@@ -90,6 +88,12 @@ cvm_status cvm_mesh_generate3(cvm_mesh *m, double size)
     p.grading = cvm__opt(m, CVM_OPT_GEN3_GRADING);
     p.follow_surface = cvm__opt(m, CVM_OPT_GEN3_SIZE_FROM_SURFACE) != 0;
     p.layers = 1;
+    p.sizing = sizing;
+    if (sizing && sizing->bgrad > 0) {
+        /* min(l + g1 d, l + g2 d) = l + min(g1, g2) d: one field, the smaller slope */
+        p.grading = p.follow_surface && p.grading < sizing->bgrad ? p.grading : sizing->bgrad;
+        p.follow_surface = 1;
+    }
     s = cvm__g3_generate(&m->ctx, &surf, &p, !cvm__tetgen_available(),
                          (uint64_t)cvm__opt(m, CVM_OPT_SEED), &pts, &rep, &bad);
     if (s == CVM_E_UNSUPPORTED && bad >= 0 && rep.surface_not_delaunay) {
@@ -125,4 +129,23 @@ cvm_status cvm_mesh_generate3(cvm_mesh *m, double size)
     g->gen3[7] = (double)rep.recovery_dropped;
     g->gen3[8] = cvm__now() - t0;
     return s;
+}
+
+cvm_status cvm_mesh_generate3(cvm_mesh *m, double size)
+{
+    if (!m)
+        return CVM_E_NULL_ARG;
+    CVM__BEGIN(m);
+    return generate(m, size, NULL);
+}
+
+cvm_status cvm_mesh_generate3_sized(cvm_mesh *m, double size, const cvm_sizing *sizing)
+{
+    cvm_status s;
+    if (!m)
+        return CVM_E_NULL_ARG;
+    CVM__BEGIN(m);
+    if ((s = cvm__sizing_check3(sizing, &m->ctx, "cvm_mesh_generate3_sized()", 1)))
+        return s;
+    return generate(m, size, cvm__sizing_is_empty(sizing) ? NULL : sizing);
 }

@@ -95,6 +95,8 @@ cvm_status cvm_mesh_optimise_dual(cvm_mesh *m, const cvm_sizing *sizing)
     CVM__BEGIN(m);
     if (cvm__sizing_refuse_metric(m, sizing, "cvm_mesh_optimise_dual()"))
         return CVM_E_UNSUPPORTED;
+    if (cvm__sizing_refuse_3d(m, sizing, "cvm_mesh_optimise_dual()"))
+        return CVM_E_ARGUMENT;
     cvm__mesh_forget_layers(m);
     if (!m->triangulated || cvm__store_next_cell(m, -1) < 0)
         return cvm__error(&m->ctx, CVM_E_STATE, CVM_ENT_NONE, -1,

@@ -238,6 +238,8 @@ cvm_status cvm_mesh_refine(cvm_mesh *m, const cvm_sizing *sizing, cvm_algorithm 
                           algo == CVM_ALGO_FRONTAL ? "CVM_ALGO_FRONTAL" : "CVM_ALGO_DELAUNAY");
     if (cvm__sizing_refuse_metric(m, sizing, "cvm_mesh_refine()"))
         return CVM_E_UNSUPPORTED;
+    if (cvm__sizing_refuse_3d(m, sizing, "cvm_mesh_refine()"))
+        return CVM_E_ARGUMENT;
     memset(m->refine_report, 0, sizeof m->refine_report);
     cvm__free(&m->ctx, m->refine_unmet);
     m->refine_unmet = NULL;

@@ -40,6 +40,15 @@ cvm_status cvm__sizing_refuse_metric(cvm_mesh *m, const cvm_sizing *sizing, cons
                       call);
 }
 
+cvm_status cvm__sizing_refuse_3d(cvm_mesh *m, const cvm_sizing *sizing, const char *call)
+{
+    if (!sizing || sizing->dim != 3)
+        return CVM_OK;
+    return cvm__error(&m->ctx, CVM_E_ARGUMENT, CVM_ENT_NONE, -1,
+                      "%s meshes in 2D, and the sizing holds 3D sources (added with dim 3)",
+                      call);
+}
+
 void cvm__sizing_fields_end(cvm_mesh *m, cvm__sizing_fields *F)
 {
     cvm__sizing_fields_free(F, &m->ctx);

@@ -20,4 +20,8 @@ void cvm__sizing_fields_end(cvm_mesh *m, cvm__sizing_fields *F);
  * else CVM_OK. */
 cvm_status cvm__sizing_refuse_metric(cvm_mesh *m, const cvm_sizing *sizing, const char *call);
 
+/* CVM_E_ARGUMENT with a message on m naming call when sizing holds 3D
+ * sources (a 2D meshing call cannot read them); else CVM_OK. */
+cvm_status cvm__sizing_refuse_3d(cvm_mesh *m, const cvm_sizing *sizing, const char *call);
+
 #endif

@@ -1,15 +1,22 @@
 /*
  * cmd_mesh3.c - `cvmesh mesh3 IN --size H [--grading G] [--uniform] [--freespace lattice]
- * [--layers N] -o OUT.{vtu,msh,node} [--quality] [--timings]`: a co-volume
- * tetrahedral mesh inside a closed surface (cvm_mesh_generate3()); write, report.
+ * [--layers N] [--point-source X,Y,Z,H[,G]]... -o OUT.{vtu,msh,node} [--quality]
+ * [--timings]`: a co-volume tetrahedral mesh inside a closed surface
+ * (cvm_mesh_generate3(), or cvm_mesh_generate3_sized() with sources); write, report.
  */
+#include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "cli.h"
 
+#define MESH3_MAX_SOURCES 64
+
 typedef struct margs {
     const char *in;
     double size;
+    double src[MESH3_MAX_SOURCES][5]; /* --point-source x, y, z, h, growth */
+    int nsrc;
     int freespace; /* CVM_GEN3_FREESPACE_* */
     int optimise;
     cli_outputs o;
@@ -21,7 +28,8 @@ void cli_mesh3_help(FILE *f)
 {
     fprintf(f,
             "usage: cvmesh mesh3 IN.off|IN.stl|IN.poly|IN.smesh --size H [--grading G] [--uniform]\n"
-            "                    [--freespace lattice] [--layers N] [-o OUT] [--quality]\n"
+            "                    [--freespace lattice] [--layers N] [--point-source X,Y,Z,H[,G]]\n"
+            "                    [-o OUT] [--quality]\n"
             "                    [--timings] [option flags]\n"
             "\n"
             "A tetrahedral co-volume mesh inside a closed surface: one near-field point per\n"
@@ -30,6 +38,8 @@ void cli_mesh3_help(FILE *f)
             "the domain, tetrahedralised with the surface as `cvmesh tetrahedralize` does.\n"
             "H is the largest size; by default the size near the surface follows its own\n"
             "triangles and grows away from them by the grading G (--uniform: H everywhere).\n"
+            "--point-source X,Y,Z,H[,G] (repeatable, up to 64): size H at (X, Y, Z), growing\n"
+            "by G (default 0.2) per unit distance; the size is the least of all of them.\n"
             "Not yet implemented: --freespace octree|refine, --layers above 1, --optimise.\n"
             "\n"
             "Outputs and reports (--timings: read, generate, write, quality):\n");
@@ -40,6 +50,37 @@ void cli_mesh3_help(FILE *f)
                "no output file is written. Command-line errors exit with 2.\n");
 }
 
+/* --point-source X,Y,Z,H[,G] into the next source of a. CLI_EXIT_OK, or
+ * CLI_EXIT_USAGE after printing why. */
+static int parse_point_source(margs *a, const char *v)
+{
+    double t[5] = {0, 0, 0, 0, 0.2};
+    const char *p = v;
+    char *end;
+    int k;
+    if (a->nsrc >= MESH3_MAX_SOURCES) {
+        fprintf(stderr, "cvmesh: mesh3: more than %d --point-source flags\n", MESH3_MAX_SOURCES);
+        return CLI_EXIT_USAGE;
+    }
+    for (k = 0; k < 5; k++) {
+        t[k] = strtod(p, &end);
+        if (end == p || !isfinite(t[k]) || (*end != ',' && *end != '\0'))
+            break;
+        p = end + (*end == ',');
+        if (*end == '\0') {
+            k++;
+            break;
+        }
+    }
+    if ((k != 4 && k != 5) || *end != '\0' || !(t[3] > 0) || t[4] < 0) {
+        fprintf(stderr, "cvmesh: mesh3: --point-source %s: give X,Y,Z,H[,G] (H > 0, G >= 0, "
+                        "finite numbers)\n", v);
+        return CLI_EXIT_USAGE;
+    }
+    memcpy(a->src[a->nsrc++], t, sizeof t);
+    return CLI_EXIT_OK;
+}
+
 /* The flags of this command alone: 1 taken, 0 not one of them, or an exit status + 1. */
 static int own_flag(void *args, int argc, char **argv, int *i)
 {
@@ -48,6 +89,8 @@ static int own_flag(void *args, int argc, char **argv, int *i)
     int r;
     if ((r = cli_take_value(argc, argv, i, "--size", &v)) != 0)
         return r < 0 || cli_parse_positive("--size", v, &a->size) ? CLI_EXIT_USAGE + 1 : 1;
+    if ((r = cli_take_value(argc, argv, i, "--point-source", &v)) != 0)
+        return r < 0 || parse_point_source(a, v) ? CLI_EXIT_USAGE + 1 : 1;
     if ((r = cli_take_value(argc, argv, i, "--freespace", &v)) != 0) {
         if (r < 0)
             return CLI_EXIT_USAGE + 1;
@@ -132,43 +175,74 @@ static void report(FILE *f, cvm_mesh *m)
     }
 }
 
+/* The sizing of the --point-source flags into *out (NULL without any). */
+static int make_sizing(margs *a, cvm_sizing **out)
+{
+    int k;
+    *out = NULL;
+    if (a->nsrc == 0)
+        return CLI_EXIT_OK;
+    if (cvm_sizing_create(out) != CVM_OK) {
+        fprintf(stderr, "cvmesh: out of memory\n");
+        return CLI_EXIT_FAIL;
+    }
+    for (k = 0; k < a->nsrc; k++)
+        if (cvm_sizing_add_point_source_nd(*out, a->src[k], 3, a->src[k][3], a->src[k][4]) !=
+            CVM_OK) {
+            fprintf(stderr, "cvmesh: mesh3: --point-source: %s\n", cvm_sizing_errmsg(*out));
+            cvm_sizing_free(*out);
+            *out = NULL;
+            return CLI_EXIT_FAIL;
+        }
+    return CLI_EXIT_OK;
+}
+
 static int run(margs *a)
 {
     cvm_mesh *m;
+    cvm_sizing *sz;
     cli_budget budget;
     int rc;
+    cvm_status gs;
     int32_t dim = 0;
     if (a->optimise) {
         fprintf(stderr, "cvmesh: mesh3: --optimise is unsupported in this version (3D dual "
                         "optimisation is not implemented yet)\n");
         return CLI_EXIT_FAIL;
     }
+    if ((rc = make_sizing(a, &sz)))
+        return rc;
     if (cvm_mesh_create(&m) != CVM_OK) {
         fprintf(stderr, "cvmesh: out of memory\n");
+        cvm_sizing_free(sz);
         return CLI_EXIT_FAIL;
     }
     if ((rc = cli_apply_settings(m, a->set, a->nset))) {
         cvm_mesh_free(m);
+        cvm_sizing_free(sz);
         return rc;
     }
     if (cvm_mesh_set_option(m, CVM_OPT_GEN3_FREESPACE, a->freespace) != CVM_OK)
-        return cli_fail(m, NULL, NULL);
+        return cli_fail(m, sz, NULL);
     cvm_mesh_set_progress(m, cli_progress, 256, NULL);
     cli_budget_begin(&budget, m);
     cli_timing_begin(&a->o);
     cli_phase("reading", a->in);
     if (cvm_mesh_read(m, a->in) != CVM_OK)
-        return cli_fail(m, NULL, NULL);
+        return cli_fail(m, sz, NULL);
     if (cvm_mesh_dim(&dim, m) != CVM_OK || dim != 3) {
         fprintf(stderr, "cvmesh: mesh3: %s is a 2D input (use cvmesh refine)\n", a->in);
         cvm_mesh_free(m);
+        cvm_sizing_free(sz);
         return CLI_EXIT_FAIL;
     }
     cli_timing_mark(&a->o, "read");
     cli_budget_apply(&budget, m);
     cli_phase("generating", a->in);
-    if (cvm_mesh_generate3(m, a->size) != CVM_OK || cli_interrupted())
-        return cli_fail(m, NULL, a->in);
+    gs = sz ? cvm_mesh_generate3_sized(m, a->size, sz) : cvm_mesh_generate3(m, a->size);
+    if (gs != CVM_OK || cli_interrupted())
+        return cli_fail(m, sz, a->in);
+    cvm_sizing_free(sz);
     cli_timing_mark(&a->o, "generate");
     return cli_finish3(m, &a->o, "mesh3", a->in, report);
 }

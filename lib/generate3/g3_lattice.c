@@ -85,6 +85,7 @@ typedef struct lat_ctx {
     cvm__g3_grid *grid;
     double lo[3], a, h;
     int level, last;
+    int small;      /* a candidate's size fell below this level's range */
     size_t kept;
 } lat_ctx;
 
@@ -95,9 +96,14 @@ static cvm_status candidate(lat_ctx *L, int64_t i, int64_t j, int64_t k, int sub
     x[0] = L->lo[0] + L->a * ((double)i + off);
     x[1] = L->lo[1] + L->a * ((double)j + off);
     x[2] = L->lo[2] + L->a * ((double)k + off);
-    hs = cvm__g3_size_eval(L->z, x);
-    if (!(hs <= L->a) || (!L->last && hs <= 0.5 * L->a))
+    if (cvm__g3_size_at(L->z, x, &hs))
+        return L->ctx->status;
+    if (!(hs <= L->a))
         return CVM_OK;
+    if (!L->last && hs <= 0.5 * L->a) {
+        L->small = 1;
+        return CVM_OK;
+    }
     dm = cvm__g3_lattice_dm(hs);
     if (cvm__g3_grid_near(L->grid, L->P->xyz, x, dm) || !cvm__g3_is_inside(L->in, x))
         return CVM_OK;
@@ -138,6 +144,41 @@ static int face_box(const cvm__g3_surface *s, size_t f, const lat_ctx *L, const 
     return 1;
 }
 
+/* The lattice index boxes of level L (6 per box, b0 then b1) where the size
+ * can reach L->a: one per surface triangle (when the size follows the
+ * surface), then the user sizing's boxes; their count. bx holds room for
+ * s->nt + CVM__SIZING_MAX_BOXES3 boxes. */
+static size_t level_boxes(const cvm__g3_surface *s, const lat_ctx *L, const int64_t *n,
+                          int64_t *bx, double *ubox)
+{
+    const cvm_sizing *u = cvm__g3_size_user(L->z);
+    size_t f, nb = 0, nu, q;
+    int ax;
+    if (cvm__g3_size_follows(L->z))
+        for (f = 0; f < s->nt; f++)
+            if (face_box(s, f, L, n, bx + 6 * nb, bx + 6 * nb + 3))
+                nb++;
+    if (!u)
+        return nb;
+    nu = cvm__sizing_boxes3(u, L->a, ubox);
+    for (q = 0; q < nu; q++) {
+        int64_t *b0 = bx + 6 * nb, *b1 = b0 + 3;
+        int empty = 0;
+        for (ax = 0; ax < 3; ax++) {
+            double lo = floor((ubox[6 * q + ax] - L->lo[ax]) / L->a) - 1,
+                   up = ceil((ubox[6 * q + 3 + ax] - L->lo[ax]) / L->a) + 1;
+            if (lo > (double)n[ax] || up < 0) {
+                empty = 1;
+                break;
+            }
+            b0[ax] = lo < 0 ? 0 : (int64_t)lo;
+            b1[ax] = up > (double)n[ax] ? n[ax] : (int64_t)up;
+        }
+        nb += !empty;
+    }
+    return nb;
+}
+
 static uint64_t lattice_key(int64_t i, int64_t j, int64_t k, int sub)
 {
     uint64_t m = ((uint64_t)1 << AXIS_BITS) - 1;
@@ -151,8 +192,10 @@ cvm_status cvm__g3_lattice(cvm__ctx *ctx, const cvm__g3_surface *s, const cvm__g
 {
     lat_ctx L;
     seen_set S = {NULL, 0, 0};
-    double hi[3], ext = 0, lmin = cvm__g3_size_min(z);
-    int levels = 1, lv, ax;
+    double hi[3], ext = 0, lmin = cvm__g3_size_min(z), *ubox = NULL;
+    int levels = 1, lv, ax, open_ended = 0;
+    int64_t *bx = NULL;
+    const cvm_sizing *user = cvm__g3_size_user(z);
     size_t f;
     cvm_status st = CVM_OK;
     L.ctx = ctx;
@@ -178,6 +221,26 @@ cvm_status cvm__g3_lattice(cvm__ctx *ctx, const cvm__g3_surface *s, const cvm__g
     while (levels < MAX_LEVELS && lmin <= ldexp(h, -levels) &&
            ext / ldexp(h, -levels) < (double)((int64_t)1 << (AXIS_BITS - 1)))
         levels++;
+    if (user) {
+        /* a callback has no known least size: levels go on while one meets
+         * sizes below its range, within the same limits */
+        int most = levels;
+        open_ended = user->fn_nd != NULL;
+        while (open_ended && most < MAX_LEVELS &&
+               ext / ldexp(h, -most) < (double)((int64_t)1 << (AXIS_BITS - 1)))
+            most++;
+        bx = cvm__malloc(ctx, 6 * (s->nt + CVM__SIZING_MAX_BOXES3(user)) * sizeof *bx);
+        ubox = cvm__malloc(ctx, 6 * CVM__SIZING_MAX_BOXES3(user) * sizeof *ubox);
+        if (!bx || !ubox) {
+            cvm__free(ctx, bx);
+            cvm__free(ctx, ubox);
+            return cvm__nomem(ctx);
+        }
+        if (open_ended) {
+            open_ended = levels; /* the levels the sources alone ask for */
+            levels = most;
+        }
+    }
     if (ext / h >= (double)((int64_t)1 << (AXIS_BITS - 1)))
         return cvm__error(ctx, CVM_E_TOO_LARGE, CVM_ENT_NONE, -1,
                           "size %.17g is too small for the surface's extent %.17g (more than "
@@ -202,6 +265,7 @@ cvm_status cvm__g3_lattice(cvm__ctx *ctx, const cvm__g3_surface *s, const cvm__g
         L.level = lv;
         L.last = lv == levels - 1;
         L.kept = 0;
+        L.small = 0;
         if ((st = cvm__g3_grid_create(&L.grid, ctx, cvm__g3_lattice_dm(L.a))))
             break;
         for (f = 0; f < P->n && !st; f++)
@@ -221,19 +285,34 @@ cvm_status cvm__g3_lattice(cvm__ctx *ctx, const cvm__g3_surface *s, const cvm__g
              * boxes together, else box by box, each candidate once */
             int64_t u0[3] = {n[0], n[1], n[2]}, u1[3] = {0, 0, 0}, b0[3], b1[3];
             double sum = 0, uni = 1;
-            for (f = 0; f < s->nt; f++)
-                if (face_box(s, f, &L, n, b0, b1)) {
-                    double c = 1;
-                    for (ax = 0; ax < 3; ax++) {
-                        c *= (double)(b1[ax] - b0[ax] + 1);
-                        u0[ax] = b0[ax] < u0[ax] ? b0[ax] : u0[ax];
-                        u1[ax] = b1[ax] > u1[ax] ? b1[ax] : u1[ax];
-                    }
-                    sum += c;
+            size_t nb = 0, q;
+            if (user)
+                nb = level_boxes(s, &L, n, bx, ubox);
+            for (q = 0, f = 0; user ? q < nb : f < s->nt; q++, f++) {
+                const int64_t *c0 = b0, *c1 = b1;
+                double c = 1;
+                if (user) {
+                    c0 = bx + 6 * q;
+                    c1 = c0 + 3;
+                } else if (!face_box(s, f, &L, n, b0, b1))
+                    continue;
+                for (ax = 0; ax < 3; ax++) {
+                    c *= (double)(c1[ax] - c0[ax] + 1);
+                    u0[ax] = c0[ax] < u0[ax] ? c0[ax] : u0[ax];
+                    u1[ax] = c1[ax] > u1[ax] ? c1[ax] : u1[ax];
                 }
+                sum += c;
+            }
             for (ax = 0; ax < 3; ax++)
                 uni *= u1[ax] >= u0[ax] ? (double)(u1[ax] - u0[ax] + 1) : 0;
-            if (uni <= sum) {
+            if (user && 2 * (uni < sum ? uni : sum) > 4.0 * (double)CVM__T3_MAX_POINTS) {
+                st = cvm__error(ctx, CVM_E_TOO_LARGE, CVM_ENT_NONE, -1,
+                                "lattice level %d (cube edge %.17g) has %.3g candidate points "
+                                "where the sizing reaches its size, above the 3D limit of %lu "
+                                "points: use larger sizes or growths",
+                                lv, L.a, 2 * (uni < sum ? uni : sum),
+                                (unsigned long)CVM__T3_MAX_POINTS);
+            } else if (uni <= sum) {
                 for (k = u0[2]; k <= u1[2] && !st; k++)
                     for (j = u0[1]; j <= u1[1] && !st; j++)
                         for (i = u0[0]; i <= u1[0] && !st; i++)
@@ -244,12 +323,16 @@ cvm_status cvm__g3_lattice(cvm__ctx *ctx, const cvm__g3_surface *s, const cvm__g
                 S.used = 0;
                 if (S.key)
                     memset(S.key, 0, S.cap * sizeof *S.key);
-                for (f = 0; f < s->nt && !st; f++) {
-                    if (!face_box(s, f, &L, n, b0, b1))
+                for (q = 0, f = 0; (user ? q < nb : f < s->nt) && !st; q++, f++) {
+                    const int64_t *c0 = b0, *c1 = b1;
+                    if (user) {
+                        c0 = bx + 6 * q;
+                        c1 = c0 + 3;
+                    } else if (!face_box(s, f, &L, n, b0, b1))
                         continue;
-                    for (k = b0[2]; k <= b1[2] && !st; k++)
-                        for (j = b0[1]; j <= b1[1] && !st; j++)
-                            for (i = b0[0]; i <= b1[0] && !st; i++)
+                    for (k = c0[2]; k <= c1[2] && !st; k++)
+                        for (j = c0[1]; j <= c1[1] && !st; j++)
+                            for (i = c0[0]; i <= c1[0] && !st; i++)
                                 for (sub = 0; sub < 2 && !st; sub++) {
                                     int r2;
                                     if (sub && (i >= n[0] || j >= n[1] || k >= n[2]))
@@ -269,7 +352,11 @@ cvm_status cvm__g3_lattice(cvm__ctx *ctx, const cvm__g3_surface *s, const cvm__g
         L.grid = NULL;
         rep->lattice_points += L.kept;
         rep->lattice_levels += L.kept > 0;
+        if (open_ended && lv + 1 >= open_ended && !L.small)
+            break; /* no finer size met, and the sources ask for no more levels */
     }
     cvm__free(ctx, S.key);
+    cvm__free(ctx, bx);
+    cvm__free(ctx, ubox);
     return st;
 }

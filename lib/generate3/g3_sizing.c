@@ -10,6 +10,8 @@
 
 struct cvm__g3_size {
     cvm__ctx *ctx;
+    const cvm_sizing *user; /* NULL or a 3D sizing */
+    double umin;            /* the least size of the user sizing's sources */
     double h, g, lmin;
     int follow;
     size_t nf;
@@ -65,6 +67,8 @@ cvm_status cvm__g3_size_create(cvm__g3_size **out, cvm__ctx *ctx, const cvm__g3_
     z->g = p->grading;
     z->follow = p->follow_surface && s->nt > 0;
     z->lmin = p->h;
+    z->user = cvm__sizing_is_empty(p->sizing) ? NULL : p->sizing;
+    z->umin = cvm__sizing_min3(z->user);
     if (!z->follow) {
         *out = z;
         return CVM_OK;
@@ -134,7 +138,30 @@ nomem:
 
 double cvm__g3_size_min(const cvm__g3_size *z)
 {
-    return z->lmin;
+    return z->umin < z->lmin ? z->umin : z->lmin;
+}
+
+int cvm__g3_size_follows(const cvm__g3_size *z)
+{
+    return z->follow;
+}
+
+const cvm_sizing *cvm__g3_size_user(const cvm__g3_size *z)
+{
+    return z->user;
+}
+
+cvm_status cvm__g3_size_at(const cvm__g3_size *z, const double *x, double *out)
+{
+    double d;
+    cvm_status st;
+    *out = cvm__g3_size_eval(z, x);
+    if (!z->user)
+        return CVM_OK;
+    if ((st = cvm__sizing_at3(z->user, x, &d, z->ctx)))
+        return st;
+    *out = d < *out ? d : *out;
+    return CVM_OK;
 }
 
 double cvm__g3_size_grading(const cvm__g3_size *z)

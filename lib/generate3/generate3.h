@@ -12,15 +12,20 @@
  * points that hide a surface triangle from the Delaunay tetrahedralisation),
  * g3_run.c (the sequence).
  *
- * Size field (kept here, not in lib/sizing, whose point sources are 2D): with
- * follow_surface, size(x) = min(h, min over surface triangles f of l(f) + g
- * |x - centroid(f)|), l(f) the mean edge length of f; else size(x) = h.
+ * Size field: with follow_surface, size(x) = min(h, min over surface
+ * triangles f of l(f) + g |x - centroid(f)|), l(f) the mean edge length of f;
+ * else size(x) = h; and with a user sizing (3D, lib/sizing), the least of
+ * that and the sizing at x.
  *
  * Free space, this version: a global axis-aligned BCC lattice (origin at the
  * surface's bounding-box corner), one level per halving of the size (cube
  * edge a_k = h / 2^k; a candidate of level k is kept where a_k/2 < size(x) <=
- * a_k), clipped by the exact inside test and by the distance rule. The issue's
- * lattice grown front by front in a local frame is not implemented.
+ * a_k), clipped by the exact inside test and by the distance rule. With a
+ * user sizing the levels go down to its sources' least size (with a
+ * callback, on while a level meets sizes below its range), and a finer level
+ * also visits the boxes where a source can reach its size
+ * (cvm__sizing_boxes3). The issue's lattice grown front by front in a local
+ * frame is not implemented.
  *
  * Geometry that decides topology (inside or not, which surface triangles are
  * Delaunay faces) is exact; placements, sizes and distances are plain doubles.
@@ -33,6 +38,7 @@
 #include <stddef.h>
 #include <stdint.h>
 #include "common/common_internal.h"
+#include "sizing/sizing_internal.h"
 
 /* The closed surface: np points, nt triangles oriented with their right-hand
  * normal out of the domain (as lib/surface3 validates them). */
@@ -48,6 +54,7 @@ typedef struct cvm__g3_params {
     double grading;     /* g of the size field, > 0 */
     int follow_surface; /* 1: size from the surface's triangles; 0: uniform h */
     int layers;         /* near-field layers; only 1 in this version */
+    const cvm_sizing *sizing; /* NULL, or a 3D sizing (cvm__sizing_check3 passed) */
 } cvm__g3_params;
 
 typedef struct cvm__g3_report {
@@ -69,8 +76,16 @@ cvm_status cvm__g3_size_create(cvm__g3_size **out, cvm__ctx *ctx, const cvm__g3_
                                const cvm__g3_params *p);
 void cvm__g3_size_free(cvm__g3_size *z);
 double cvm__g3_size_eval(const cvm__g3_size *z, const double *x);
-/* The smallest size the field can give (the smallest l(f), or h). */
+/* The size at x with the user sizing, into *out; a callback's bad value is an
+ * error recorded on the field's context (CVM_E_ARGUMENT, _INPUT_NONFINITE). */
+cvm_status cvm__g3_size_at(const cvm__g3_size *z, const double *x, double *out);
+/* The smallest size the field can give (the smallest l(f), or h; or a user
+ * source's size), not counting a callback. */
 double cvm__g3_size_min(const cvm__g3_size *z);
+/* 1 when the field follows the surface's triangles. */
+int cvm__g3_size_follows(const cvm__g3_size *z);
+/* The user sizing, or NULL. */
+const cvm_sizing *cvm__g3_size_user(const cvm__g3_size *z);
 /* The grading g (any positive value for a uniform field). */
 double cvm__g3_size_grading(const cvm__g3_size *z);
 

@@ -1,4 +1,5 @@
-/* sizing.c - the cvm_sizing handle: uniform, point, line and callback sizes combined by their minimum. */
+/* sizing.c - the cvm_sizing handle: uniform, point, line, triangle and callback sizes combined by
+ * their minimum, evaluated in 2D. */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -30,7 +31,9 @@ void cvm_sizing_free(cvm_sizing *s)
     ctx = s->ctx;
     cvm__free(&ctx, s->pts);
     cvm__free(&ctx, s->lines);
+    cvm__free(&ctx, s->tris);
     cvm__background_free(s->bg, &ctx);
+    cvm__background3_free(s->bg3, &ctx);
     cvm__free(&ctx, s);
 }
 
@@ -88,27 +91,69 @@ cvm_status cvm_sizing_set_uniform(cvm_sizing *s, double h)
     return CVM_OK;
 }
 
-cvm_status cvm_sizing_add_point_source(cvm_sizing *s, double x, double y, double h, double growth)
+/* The checks of a new source of kind what (index k) with n coordinates v in
+ * dimension dim. */
+static cvm_status check_source(cvm_sizing *s, const char *what, long k, const double *v, size_t n,
+                               int dim, double h, double growth)
 {
-    double xy[2];
-    long k;
+    char call[64];
     cvm_status st;
-    if (!s)
-        return CVM_E_NULL_ARG;
-    cvm__clear_error(&s->ctx);
-    k = (long)s->npts;
-    xy[0] = x;
-    xy[1] = y;
-    if ((st = check_position(s, "point source", k, xy, 2)) ||
-        (st = check_size(s, "point source", k, h, growth)))
+    snprintf(call, sizeof call, "%s %ld", what, k);
+    if ((st = cvm__sizing_check_dim(s, dim, call)) || (st = check_position(s, what, k, v, n)))
+        return st;
+    return check_size(s, what, k, h, growth);
+}
+
+cvm_status cvm__sizing_add_point(cvm_sizing *s, const double *x, int dim, double h, double growth)
+{
+    cvm__point_source *q;
+    long k = (long)s->npts;
+    cvm_status st;
+    if ((st = check_source(s, "point source", k, x, (size_t)dim, dim, h, growth)))
         return st;
     if (cvm__grow(&s->ctx, (void **)&s->pts, &s->cap_pts, s->npts + 1, sizeof *s->pts))
         return cvm__nomem(&s->ctx);
-    s->pts[s->npts].x = x;
-    s->pts[s->npts].y = y;
-    s->pts[s->npts].h = h;
-    s->pts[s->npts].growth = growth;
-    s->npts++;
+    q = s->pts + s->npts++;
+    q->x = x[0];
+    q->y = x[1];
+    q->z = dim == 3 ? x[2] : 0.0;
+    q->h = h;
+    q->growth = growth;
+    s->dim = dim;
+    return CVM_OK;
+}
+
+cvm_status cvm_sizing_add_point_source(cvm_sizing *s, double x, double y, double h, double growth)
+{
+    double xy[2];
+    if (!s)
+        return CVM_E_NULL_ARG;
+    cvm__clear_error(&s->ctx);
+    xy[0] = x;
+    xy[1] = y;
+    return cvm__sizing_add_point(s, xy, 2, h, growth);
+}
+
+cvm_status cvm__sizing_add_line(cvm_sizing *s, const double *ends, int dim, double h,
+                                double growth)
+{
+    cvm__line_source *l;
+    long k = (long)s->nlines;
+    cvm_status st;
+    if ((st = check_source(s, "line source", k, ends, 2 * (size_t)dim, dim, h, growth)))
+        return st;
+    if (cvm__grow(&s->ctx, (void **)&s->lines, &s->cap_lines, s->nlines + 1, sizeof *s->lines))
+        return cvm__nomem(&s->ctx);
+    l = s->lines + s->nlines++;
+    l->x0 = ends[0];
+    l->y0 = ends[1];
+    l->z0 = dim == 3 ? ends[2] : 0.0;
+    l->x1 = ends[dim];
+    l->y1 = ends[dim + 1];
+    l->z1 = dim == 3 ? ends[5] : 0.0;
+    l->h = h;
+    l->growth = growth;
+    s->dim = dim;
     return CVM_OK;
 }
 
@@ -116,29 +161,36 @@ cvm_status cvm_sizing_add_line_source(cvm_sizing *s, double x0, double y0, doubl
                                       double h, double growth)
 {
     double v[4];
-    long k;
-    cvm__line_source *l;
-    cvm_status st;
     if (!s)
         return CVM_E_NULL_ARG;
     cvm__clear_error(&s->ctx);
-    k = (long)s->nlines;
     v[0] = x0;
     v[1] = y0;
     v[2] = x1;
     v[3] = y1;
-    if ((st = check_position(s, "line source", k, v, 4)) ||
-        (st = check_size(s, "line source", k, h, growth)))
+    return cvm__sizing_add_line(s, v, 2, h, growth);
+}
+
+cvm_status cvm__sizing_add_tri(cvm_sizing *s, const double *corners, int dim, double h,
+                               double growth)
+{
+    cvm__tri_source *t;
+    long k = (long)s->ntris;
+    int c;
+    cvm_status st;
+    if ((st = check_source(s, "triangle source", k, corners, 3 * (size_t)dim, dim, h, growth)))
         return st;
-    if (cvm__grow(&s->ctx, (void **)&s->lines, &s->cap_lines, s->nlines + 1, sizeof *s->lines))
+    if (cvm__grow(&s->ctx, (void **)&s->tris, &s->cap_tris, s->ntris + 1, sizeof *s->tris))
         return cvm__nomem(&s->ctx);
-    l = s->lines + s->nlines++;
-    l->x0 = x0;
-    l->y0 = y0;
-    l->x1 = x1;
-    l->y1 = y1;
-    l->h = h;
-    l->growth = growth;
+    t = s->tris + s->ntris++;
+    for (c = 0; c < 3; c++) {
+        t->p[3 * c] = corners[dim * c];
+        t->p[3 * c + 1] = corners[dim * c + 1];
+        t->p[3 * c + 2] = dim == 3 ? corners[dim * c + 2] : 0.0;
+    }
+    t->h = h;
+    t->growth = growth;
+    s->dim = dim;
     return CVM_OK;
 }
 
@@ -207,9 +259,9 @@ cvm_status cvm_sizing_set_boundary_grading(cvm_sizing *s, double g)
 
 int cvm__sizing_is_empty(const cvm_sizing *s)
 {
-    return !s || (!s->has_uniform && s->npts == 0 && s->nlines == 0 && !s->fn && !s->fn_nd &&
-                  !s->fn_batch && !s->has_auto &&
-                  !s->bg && !(s->bgrad > 0));
+    return !s || (!s->has_uniform && s->npts == 0 && s->nlines == 0 && s->ntris == 0 && !s->fn &&
+                  !s->fn_nd && !s->fn_batch && !s->has_auto && !s->bg && !s->bg3 &&
+                  !(s->bgrad > 0));
 }
 
 /* Distance from p to the segment a-b (a point when a == b). */
@@ -283,6 +335,16 @@ static double sources_at(const cvm_sizing *s, double x, double y)
         if (d < best)
             best = d;
     }
+    for (i = 0; i < s->ntris; i++) {
+        const cvm__tri_source *t = s->tris + i;
+        double p[3], d;
+        p[0] = x;
+        p[1] = y;
+        p[2] = 0;
+        d = t->h + t->growth * cvm__dist_point_tri3(p, t->p);
+        if (d < best)
+            best = d;
+    }
     if (s->bg) {
         double d = cvm__background_at(s->bg, x, y);
         if (d < best)
@@ -349,5 +411,7 @@ cvm_status cvm_sizing_eval(double *out, cvm_sizing *s, double x, double y)
     if (!isfinite(x) || !isfinite(y))
         return cvm__error(&s->ctx, CVM_E_INPUT_NONFINITE, CVM_ENT_NONE, -1,
                           "position (%.17g, %.17g) is not finite", x, y);
+    if (cvm__sizing_check_dim(s, 2, "cvm_sizing_eval"))
+        return s->ctx.status;
     return cvm__sizing_at(s, x, y, out, &s->ctx);
 }

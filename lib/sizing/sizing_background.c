@@ -99,8 +99,11 @@ cvm_status cvm_sizing_set_background(cvm_sizing *s, const double *xyh, size_t np
     if (npoints == 0 && ntri == 0) {
         cvm__background_free(s->bg, ctx);
         s->bg = NULL;
+        cvm__sizing_recount_dim(s);
         return CVM_OK;
     }
+    if ((st = cvm__sizing_check_dim(s, 2, "background mesh")))
+        return st;
     if (!xyh || (!tri && ntri > 0))
         return cvm__error(ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1,
                           "background mesh: xyh or tri is NULL");
@@ -178,6 +181,7 @@ cvm_status cvm_sizing_set_background(cvm_sizing *s, const double *xyh, size_t np
     }
     cvm__background_free(s->bg, ctx);
     s->bg = bg;
+    s->dim = 2;
     return CVM_OK;
 }
 

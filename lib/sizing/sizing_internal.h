@@ -1,8 +1,9 @@
 /*
  * sizing_internal.h - the sizing engine: the cvm_sizing handle (uniform,
- * point, line, callback, automatic, background and boundary-grading sources)
- * and its evaluation at a point. Refinement, dual optimisation and the
- * boundary resampler read sizes through it; it knows nothing of them.
+ * point, line, triangle, callback, automatic, background and boundary-grading
+ * sources, in 2D or 3D: one dimension per handle) and its evaluation at a
+ * point. Refinement, dual optimisation, the boundary resampler and 3D
+ * generation read sizes through it; it knows nothing of them.
  *
  * Nothing here decides topology: a size only chooses which valid mesh a
  * meshing algorithm produces.
@@ -15,13 +16,21 @@
 #include "common/common_internal.h"
 #include "delaunay/delaunay_internal.h"
 
+/* Positional sources; a 2D source has z = 0 (and is evaluated in the plane). */
 typedef struct cvm__point_source {
     double x, y, h, growth;
+    double z;
 } cvm__point_source;
 
 typedef struct cvm__line_source {
     double x0, y0, x1, y1, h, growth;
+    double z0, z1;
 } cvm__line_source;
+
+typedef struct cvm__tri_source {
+    double p[9]; /* the three corners, x y z each (z = 0 in 2D) */
+    double h, growth;
+} cvm__tri_source;
 
 /* The layout of a uniform grid of square cells over a box (grid.c): origin,
  * cell side and counts only. Its users (the automatic and background sizing
@@ -77,6 +86,10 @@ struct cvm_sizing {
     size_t npts, cap_pts;
     cvm__line_source *lines;
     size_t nlines, cap_lines;
+    cvm__tri_source *tris;
+    size_t ntris, cap_tris;
+    int dim;              /* 2 or 3: the dimension of the positional sources; 0: none yet */
+    struct cvm__background3 *bg3; /* NULL, or cvm_sizing_set_background_nd() in 3D */
     cvm_sizing_fn fn;     /* the user function: at most one of fn, fn_nd, fn_batch */
     cvm_sizing_nd_fn fn_nd;
     cvm_sizing_batch_fn fn_batch;
@@ -116,6 +129,55 @@ void cvm__background_free(cvm__background *bg, cvm__ctx *ctx);
 
 /* 1 when s is NULL or has no source (no size bound). */
 int cvm__sizing_is_empty(const cvm_sizing *s);
+
+/* Add a positional source of dimension dim (2 or 3) to s, checked as the
+ * public calls document (the message names the source); atomic (sizing.c). */
+cvm_status cvm__sizing_add_point(cvm_sizing *s, const double *x, int dim, double h, double growth);
+cvm_status cvm__sizing_add_line(cvm_sizing *s, const double *ends, int dim, double h,
+                                double growth);
+cvm_status cvm__sizing_add_tri(cvm_sizing *s, const double *corners, int dim, double h,
+                               double growth);
+/* Forget the dimension of s when it has no positional source left. */
+void cvm__sizing_recount_dim(cvm_sizing *s);
+
+/* Distance from p to the triangle t (9 doubles; a degenerate one is the
+ * union of its edges), and from p to the segment a-b, in 3D (sizing.c). */
+double cvm__dist_point_tri3(const double *p, const double *t);
+double cvm__dist_point_seg3(const double *p, const double *a, const double *b);
+
+/* Record on s an error when its positional sources are of a dimension other
+ * than dim (CVM_E_ARGUMENT naming the first source), else CVM_OK. */
+cvm_status cvm__sizing_check_dim(cvm_sizing *s, int dim, const char *call);
+
+/* Size at the 3D point x into *h (+infinity without sources) from the
+ * positional 3D sources, uniform size, 3D background and the _nd callback;
+ * errors as cvm__sizing_at. The handle's sources must be 3D (or none) and
+ * its callback, if any, the _nd one (cvm__sizing_check3 says so). */
+cvm_status cvm__sizing_at3(const cvm_sizing *s, const double *x, double *h, cvm__ctx *err);
+/* CVM_OK when s can be evaluated in 3D; else the status, with a message on
+ * err naming what is 2D-only (a 2D source, a 2D callback; with meshing, also
+ * the automatic field and a metric, which no 3D mesher reads). */
+cvm_status cvm__sizing_check3(const cvm_sizing *s, cvm__ctx *err, const char *call, int meshing);
+/* The least size the 3D sources can give (uniform, point, line, triangle and
+ * background sizes), +infinity when none; a callback is not bounded. */
+double cvm__sizing_min3(const cvm_sizing *s);
+/* Boxes (6 doubles each: lo xyz, hi xyz) outside which no 3D source gives a
+ * size <= a; an unbounded box (+-infinity) where a source can reach a anywhere
+ * (a uniform size <= a, a zero growth, a callback). Writes them to box unless
+ * it is NULL; returns their count, at most CVM__SIZING_MAX_BOXES3(s). */
+#define CVM__SIZING_MAX_BOXES3(s) ((s)->npts + (s)->nlines + (s)->ntris + 2)
+size_t cvm__sizing_boxes3(const cvm_sizing *s, double a, double *box);
+
+/* Sizes at the nodes of a background tetrahedral mesh (sizing_background3.c). */
+typedef struct cvm__background3 cvm__background3;
+/* Check and install (replacing s->bg3) npoints nodes xyzh (x, y, z, h) and
+ * ntet tetrahedra; errors name the node or tetrahedron, and leave s as it was. */
+cvm_status cvm__background3_set(cvm_sizing *s, const double *xyzh, size_t npoints,
+                                const cvm_index *tet, size_t ntet);
+void cvm__background3_free(cvm__background3 *bg, cvm__ctx *ctx);
+double cvm__background3_at(const cvm__background3 *bg, const double *x);
+double cvm__background3_min(const cvm__background3 *bg);
+void cvm__background3_box(const cvm__background3 *bg, double *lo, double *hi);
 
 /* 1 when s has a metric source (sizing_nd.c). */
 int cvm__sizing_has_metric(const cvm_sizing *s);

@@ -347,6 +347,26 @@ expect_exit 1 "mesh3 a 2D input" "$CLI" mesh3 "$DOMAINS/square.poly" --size 1
 expect_one_line "mesh3 a 2D input"
 expect_exit 1 "mesh3 two regions" "$CLI" mesh3 "$D3/two_cubes.poly" --size 0.5
 expect_grep "mesh3 two regions" "$TMP/err" "unsupported"
+# --point-source: a finer mesh around the point, more vertices than without it
+expect_exit 0 "mesh3 --help" "$CLI" mesh3 --help
+expect_grep "mesh3 --help lists --point-source" "$TMP/out" "--point-source X,Y,Z,H[,G]"
+expect_exit 0 "mesh3 --point-source" "$CLI" mesh3 "$D3/tetra.off" --size 0.5 --uniform \
+    --point-source 0,0,0,0.08,0.3 -o "$OUT/tetra_ps.node"
+expect_exit 0 "mesh3 without a source" "$CLI" mesh3 "$D3/tetra.off" --size 0.5 --uniform \
+    -o "$OUT/tetra_nops.node"
+n_ps=$(head -n 1 "$OUT/tetra_ps.node" | awk '{print $1}')
+n_no=$(head -n 1 "$OUT/tetra_nops.node" | awk '{print $1}')
+if [ "${n_ps:-0}" -gt "${n_no:-0}" ]; then pass; else
+    fail "mesh3 --point-source: $n_ps vertices, not more than $n_no without"
+fi
+expect_exit 2 "mesh3 --point-source 1,2" "$CLI" mesh3 "$D3/tetra.off" --size 0.5 --point-source 1,2
+expect_grep "mesh3 --point-source 1,2" "$TMP/err" "X,Y,Z,H"
+expect_exit 2 "mesh3 --point-source H=0" "$CLI" mesh3 "$D3/tetra.off" --size 0.5 \
+    --point-source 0,0,0,0
+expect_exit 2 "mesh3 --point-source G<0" "$CLI" mesh3 "$D3/tetra.off" --size 0.5 \
+    --point-source 0,0,0,0.1,-1
+expect_exit 2 "mesh3 --point-source 6 values" "$CLI" mesh3 "$D3/tetra.off" --size 0.5 \
+    --point-source 0,0,0,0.1,0.2,3
 # ---- quad: metric-aligned quad-dominant meshes ---------------------------------
 OUT=$TMP/quad
 mkdir "$OUT"

@@ -567,6 +567,23 @@ class Mesh:
             self._finish(code)
             return ids
 
+    def generate3(self, size: float, sizing: Optional[Sizing] = None,
+                  progress: Optional[ProgressCallback] = None, every: Optional[int] = None,
+                  **options: float) -> Status:
+        """Generate a tetrahedral co-volume mesh inside the closed 3D surface
+        read into this mesh (cvm_mesh_generate3): size is the largest size;
+        sizing (a Sizing of 3D sources, a callback_nd, uniform size or boundary
+        grading) lowers it where smaller (cvm_mesh_generate3_sized). Returns
+        the Status."""
+        self.set_options(**options)
+        with contextlib.ExitStack() as stack:
+            s = stack.enter_context(sizing._handle()) if sizing is not None else None
+            m = stack.enter_context(self._handle())
+            stack.enter_context(self._progress_installed(m, progress, every))
+            if s is None:
+                return self._finish(capi.cvm_mesh_generate3(m, float(size)))
+            return self._finish(capi.cvm_mesh_generate3_sized(m, float(size), s))
+
     def refine(self, algorithm: Union[str, int] = "frontal",
                size: Union[float, SizeCallback, None] = None, min_angle: Optional[float] = None,
                max_area: Optional[float] = None, sizing: Optional[Sizing] = None,
@@ -1400,6 +1417,32 @@ class Sizing:
         """h(p) = h + growth * distance(p, segment); ends: (2, dim)."""
         with self._handle() as s:
             capi.cvm_sizing_add_line_source_nd(s, ends, float(h), float(growth))
+
+    def add_triangle_source_nd(self, corners: npt.ArrayLike, h: float,
+                               growth: float = 0.0) -> None:
+        """h(p) = h + growth * distance(p, triangle); corners: (3, dim), dim
+        2 or 3 (a sizing holds sources of one dimension)."""
+        with self._handle() as s:
+            capi.cvm_sizing_add_triangle_source_nd(s, corners, float(h), float(growth))
+
+    def set_background_nd(self, points: npt.ArrayLike, cells: npt.ArrayLike,
+                          sizes: npt.ArrayLike) -> None:
+        """Sizes at the nodes of a background mesh in 2D (points (n, 2),
+        triangles (m, 3)) or 3D (points (n, 3), tetrahedra (m, 4)),
+        interpolated linearly inside its cells (no bound outside them)."""
+        pts = np.asarray(points, dtype=np.float64)
+        if pts.ndim != 2 or pts.shape[1] not in (2, 3):
+            raise ValueError("set_background_nd: points must have shape (n, 2) or (n, 3)")
+        h = np.asarray(sizes, dtype=np.float64).reshape(-1)
+        if h.shape[0] != pts.shape[0]:
+            raise ValueError("set_background_nd: %d sizes for %d points"
+                             % (h.shape[0], pts.shape[0]))
+        xh = np.ascontiguousarray(np.column_stack([pts, h]))
+        cl = np.asarray(cells)
+        if cl.ndim == 1 and cl.size % (pts.shape[1] + 1) == 0:
+            cl = cl.reshape(-1, pts.shape[1] + 1)
+        with self._handle() as s:
+            capi.cvm_sizing_set_background_nd(s, xh, cl)
 
     def set_callback_nd(self, callback: Optional[Callable[[npt.NDArray[np.float64]], float]]
                         ) -> None:

@@ -19,6 +19,7 @@ Suite *api_suite(void)
     suite_add_tcase(s, api_marker_names_tcase());
     suite_add_tcase(s, api_nd_tcase());
     suite_add_tcase(s, api_sizing_nd_tcase());
+    suite_add_tcase(s, api_sizing3_tcase());
     suite_add_tcase(s, api_mesh3_tcase());
     suite_add_tcase(s, api_mesh3_dual_tcase());
     return s;
