@@ -101,6 +101,7 @@ cvm_status cvm_mesh_generate3(cvm_mesh *m, double size)
     cvm__g3_remeshed rm;
     cvm__surf3 saved, ns;
     int swapped = 0;
+    double rm_count[3];
     memset(&saved, 0, sizeof saved);
     memset(&ns, 0, sizeof ns);
     cvm__mesh3 *g;
@@ -199,6 +200,9 @@ cvm_status cvm_mesh_generate3(cvm_mesh *m, double size)
         g->in = saved;
         cvm__surf3_free(&m->ctx, &ns);
     }
+    rm_count[0] = (double)rm.facets_remeshed;
+    rm_count[1] = (double)rm.tris_before;
+    rm_count[2] = (double)rm.tris_after;
     cvm__g3_remeshed_free(&m->ctx, &rm);
     if (cvm_status_is_error(s))
         return s;
@@ -211,8 +215,8 @@ cvm_status cvm_mesh_generate3(cvm_mesh *m, double size)
     g->gen3[6] = (double)rep.lattice_levels;
     g->gen3[7] = (double)rep.recovery_dropped;
     g->gen3[8] = cvm__now() - t0;
-    g->gen3[9] = (double)rm.facets_remeshed;
-    g->gen3[10] = (double)rm.tris_before;
-    g->gen3[11] = (double)rm.tris_after;
+    g->gen3[9] = rm_count[0];
+    g->gen3[10] = rm_count[1];
+    g->gen3[11] = rm_count[2];
     return s;
 }

@@ -234,7 +234,10 @@ static cvm_status group_facets(g3s_state *S, const int32_t *key)
     for (t = 0; t < nt; t++) {
         size_t ns = 0, cnt = 0;
         const int32_t *sv = s->tri + 3 * t;
-        int32_t f = (int32_t)S->nf++;
+        int32_t f;
+        if (S->fac[t] >= 0)
+            continue;
+        f = (int32_t)S->nf++;
         S->fac[t] = f;
         S->fseed[f] = (int32_t)t;
         stack[ns++] = (int32_t)t;
