@@ -7,5 +7,6 @@ Suite *generate3_suite(void)
     Suite *s = suite_create("generate3");
     suite_add_tcase(s, generate3_cube_tcase());
     suite_add_tcase(s, generate3_api_tcase());
+    suite_add_tcase(s, generate3_surface_tcase());
     return s;
 }
