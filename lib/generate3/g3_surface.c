@@ -28,67 +28,13 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "generate3/generate3.h"
+#include "generate3/g3_surface.h"
 #include "geom/geom_internal.h"
 #include "delaunay/delaunay_internal.h"
 #include "sizing/sizing_internal.h"
 #include "refine/refine_internal.h"
 
 #define G3S_MAX_ROUNDS 8
-
-/* An input edge on a facet boundary: its points (lo < hi) and its split
- * parameters sp[soff .. soff + ns - 1] (ascending). */
-typedef struct g3s_edge {
-    int32_t lo, hi;
-    size_t soff, ns;
-} g3s_edge;
-
-/* A split parameter waiting for the next round. */
-typedef struct g3s_split {
-    int32_t e;
-    double t;
-} g3s_split;
-
-typedef struct g3s_frame {
-    int ax, u, v;
-    double n[3];
-    const double *a;
-} g3s_frame;
-
-typedef struct g3s_size_payload {
-    const cvm__g3_size *z;
-    const g3s_frame *fr;
-} g3s_size_payload;
-
-typedef struct g3s_state {
-    cvm__ctx *ctx;
-    const cvm__g3_surface *s;
-    const cvm__g3_size *z;
-    int32_t *nbr;      /* 3 nt: triangle across edge j (from corner j+1 to j+2), -1 if not 2-manifold */
-    int32_t *fac;      /* nt: facet of each triangle */
-    int32_t *fseed;    /* nf: first triangle */
-    int32_t *fcount;   /* nf */
-    unsigned char *fremesh;
-    size_t nf;
-    g3s_edge *edge;    /* sorted by (lo, hi) */
-    size_t ne;
-    double *sp;        /* split parameters */
-    size_t nsp;
-    g3s_split *pend;
-    size_t npend, cap_pend;
-    int32_t *loop;     /* scratch: a facet's boundary as directed edges (3 t + j) */
-    size_t cap_loop;
-    double *bxy;       /* scratch: 2D points of the loop */
-    int32_t *bid, *bseg_e; /* point of each loop point; input edge of each loop segment */
-    double *bt0, *bt1; /* parameters (canonical) at a segment's ends; -1 at corners */
-    int32_t *bseg;
-    size_t cap_b;
-    /* output */
-    double *xyz;
-    size_t np, cap_xyz;
-    int32_t *tri, *tsrc;
-    size_t nt, cap_tri, cap_tsrc;
-} g3s_state;
 
 static int edge_cmp(const void *pa, const void *pb)
 {
@@ -106,98 +52,12 @@ static int split_cmp(const void *pa, const void *pb)
     return (a->t > b->t) - (a->t < b->t);
 }
 
-static int32_t find_edge(const g3s_state *S, int32_t a, int32_t b)
-{
-    size_t lo = 0, hi = S->ne;
-    g3s_edge key;
-    key.lo = a < b ? a : b;
-    key.hi = a < b ? b : a;
-    while (lo < hi) {
-        size_t mid = (lo + hi) / 2;
-        int c = edge_cmp(&key, &S->edge[mid]);
-        if (!c)
-            return (int32_t)mid;
-        if (c < 0)
-            hi = mid;
-        else
-            lo = mid + 1;
-    }
-    return -1;
-}
-
-static const double *P(const g3s_state *S, int32_t i)
+static const double *g3s_pt(const g3s_state *S, int32_t i)
 {
     return S->s->xyz + 3 * (size_t)i;
 }
 
 /* The neighbour of every triangle edge (sorted half-edges). */
-typedef struct g3s_half {
-    int32_t lo, hi, t, j;
-} g3s_half;
-
-static int half_cmp(const void *pa, const void *pb)
-{
-    const g3s_half *a = pa, *b = pb;
-    if (a->lo != b->lo)
-        return a->lo < b->lo ? -1 : 1;
-    if (a->hi != b->hi)
-        return a->hi < b->hi ? -1 : 1;
-    return (a->t > b->t) - (a->t < b->t);
-}
-
-static cvm_status build_neighbours(g3s_state *S)
-{
-    const cvm__g3_surface *s = S->s;
-    g3s_half *h;
-    size_t i, k, n = 3 * s->nt;
-    if (!(h = cvm__malloc(S->ctx, n * sizeof *h)))
-        return cvm__nomem(S->ctx);
-    for (i = 0; i < s->nt; i++)
-        for (k = 0; k < 3; k++) {
-            int32_t a = s->tri[3 * i + (k + 1) % 3], b = s->tri[3 * i + (k + 2) % 3];
-            g3s_half *e = h + 3 * i + k;
-            e->lo = a < b ? a : b;
-            e->hi = a < b ? b : a;
-            e->t = (int32_t)i;
-            e->j = (int32_t)k;
-        }
-    qsort(h, n, sizeof *h, half_cmp);
-    for (i = 0; i < n; i++)
-        S->nbr[i] = -1;
-    for (i = 0; i < n;) {
-        size_t j = i + 1;
-        while (j < n && h[j].lo == h[i].lo && h[j].hi == h[i].hi)
-            j++;
-        if (j - i == 2) {
-            S->nbr[3 * (size_t)h[i].t + (size_t)h[i].j] = h[i + 1].t;
-            S->nbr[3 * (size_t)h[i + 1].t + (size_t)h[i + 1].j] = h[i].t;
-        }
-        i = j;
-    }
-    cvm__free(S->ctx, h);
-    return CVM_OK;
-}
-
-static void frame_of(const g3s_state *S, int32_t t, g3s_frame *fr)
-{
-    const int32_t *v = S->s->tri + 3 * (size_t)t;
-    const double *a = P(S, v[0]), *b = P(S, v[1]), *c = P(S, v[2]);
-    double e[3], f[3];
-    int k;
-    for (k = 0; k < 3; k++)
-        e[k] = b[k] - a[k], f[k] = c[k] - a[k];
-    fr->n[0] = e[1] * f[2] - e[2] * f[1];
-    fr->n[1] = e[2] * f[0] - e[0] * f[2];
-    fr->n[2] = e[0] * f[1] - e[1] * f[0];
-    fr->ax = 0;
-    for (k = 1; k < 3; k++)
-        if (fabs(fr->n[k]) > fabs(fr->n[fr->ax]))
-            fr->ax = k;
-    fr->u = (fr->ax + 1) % 3;
-    fr->v = (fr->ax + 2) % 3;
-    fr->a = a;
-}
-
 static void lift(const g3s_frame *fr, const double *uv, double *x)
 {
     x[fr->u] = uv[0];
@@ -221,106 +81,6 @@ static double size_cb(void *payload, double x, double y)
 
 /* Group the triangles into facets; a facet of 2+ triangles is re-meshed when
  * its boundary is one simple loop, else its triangles become facets of one. */
-static cvm_status group_facets(g3s_state *S, const int32_t *key)
-{
-    const cvm__g3_surface *s = S->s;
-    size_t t, nt = s->nt;
-    int32_t *stack;
-    if (!(stack = cvm__malloc(S->ctx, nt * sizeof *stack)))
-        return cvm__nomem(S->ctx);
-    for (t = 0; t < nt; t++)
-        S->fac[t] = -1;
-    S->nf = 0;
-    for (t = 0; t < nt; t++) {
-        size_t ns = 0, cnt = 0;
-        const int32_t *sv = s->tri + 3 * t;
-        int32_t f;
-        if (S->fac[t] >= 0)
-            continue;
-        f = (int32_t)S->nf++;
-        S->fac[t] = f;
-        S->fseed[f] = (int32_t)t;
-        stack[ns++] = (int32_t)t;
-        while (ns) {
-            int32_t u = stack[--ns];
-            int j;
-            cnt++;
-            for (j = 0; j < 3; j++) {
-                int32_t w = S->nbr[3 * (size_t)u + (size_t)j];
-                const int32_t *wv;
-                int k, ok = 1;
-                if (w < 0 || S->fac[w] >= 0 || (key && key[w] != key[t]))
-                    continue;
-                wv = s->tri + 3 * (size_t)w;
-                for (k = 0; k < 3 && ok; k++)
-                    ok = cvm__orient3d(P(S, sv[0]), P(S, sv[1]), P(S, sv[2]), P(S, wv[k])) == 0;
-                if (!ok)
-                    continue;
-                S->fac[w] = f;
-                stack[ns++] = w;
-            }
-        }
-        S->fcount[f] = (int32_t)cnt;
-    }
-    cvm__free(S->ctx, stack);
-    return CVM_OK;
-}
-
-/* Boundary directed edges of facet f, in loop order, into S->loop (3 t + j:
- * edge j of triangle t, from corner j+1 to j+2); *n their count. 0 when the
- * boundary is not one simple loop (or a triangle of the facet is degenerate
- * in the facet's projection). */
-static int facet_loop(g3s_state *S, int32_t f, const int32_t *members, size_t nm, size_t *n)
-{
-    const cvm__g3_surface *s = S->s;
-    g3s_frame fr;
-    size_t i, k, cnt = 0;
-    frame_of(S, S->fseed[f], &fr);
-    for (i = 0; i < nm; i++) {
-        const int32_t *v = s->tri + 3 * (size_t)members[i];
-        double a[2], b[2], c[2];
-        int j;
-        a[0] = P(S, v[0])[fr.u], a[1] = P(S, v[0])[fr.v];
-        b[0] = P(S, v[1])[fr.u], b[1] = P(S, v[1])[fr.v];
-        c[0] = P(S, v[2])[fr.u], c[1] = P(S, v[2])[fr.v];
-        if ((cvm__orient2d(a, b, c) > 0) != (fr.n[fr.ax] > 0) || cvm__orient2d(a, b, c) == 0)
-            return 0;
-        for (j = 0; j < 3; j++) {
-            int32_t w = S->nbr[3 * (size_t)members[i] + (size_t)j];
-            if (w >= 0 && S->fac[w] == f)
-                continue;
-            S->loop[cnt++] = 3 * members[i] + j;
-        }
-    }
-    /* chain: the edge starting where the previous one ends, unique */
-    for (i = 0; i + 1 < cnt; i++) {
-        int32_t e = S->loop[i], t = e / 3, j = e % 3;
-        int32_t end = s->tri[3 * t + (j + 2) % 3];
-        size_t found = cnt;
-        for (k = i + 1; k < cnt; k++) {
-            int32_t e2 = S->loop[k], t2 = e2 / 3, j2 = e2 % 3;
-            if (s->tri[3 * t2 + (j2 + 1) % 3] == end) {
-                if (found < cnt)
-                    return 0; /* the boundary touches itself at a point */
-                found = k;
-            }
-        }
-        if (found == cnt)
-            return 0; /* more than one loop */
-        e = S->loop[i + 1];
-        S->loop[i + 1] = S->loop[found];
-        S->loop[found] = e;
-    }
-    {
-        int32_t e = S->loop[cnt - 1], t = e / 3, j = e % 3;
-        int32_t e0 = S->loop[0];
-        if (s->tri[3 * t + (j + 2) % 3] != s->tri[3 * (e0 / 3) + (e0 % 3 + 1) % 3])
-            return 0;
-    }
-    *n = cnt;
-    return 1;
-}
-
 static cvm_status push_point(g3s_state *S, const double *x)
 {
     if (3 * (S->np + 1) > S->cap_xyz &&
@@ -379,11 +139,11 @@ static cvm_status mesh_facet(g3s_state *S, int32_t f, size_t n, int remesh, size
     cvm__refine_report rr;
     size_t i, k, nb = 0, need = 0, t;
     cvm_status st;
-    frame_of(S, S->fseed[f], &fr);
+    cvm__g3s_frame(S, S->fseed[f], &fr);
     for (i = 0; i < n; i++) {
         int32_t d = S->loop[i], tt = d / 3, j = d % 3;
         int32_t a = s->tri[3 * tt + (j + 1) % 3], b = s->tri[3 * tt + (j + 2) % 3];
-        need += 1 + S->edge[find_edge(S, a, b)].ns;
+        need += 1 + S->edge[cvm__g3s_find_edge(S, a, b)].ns;
     }
     if (need > S->cap_b) {
         size_t c = need;
@@ -407,7 +167,7 @@ static cvm_status mesh_facet(g3s_state *S, int32_t f, size_t n, int remesh, size
     for (i = 0; i < n; i++) {
         int32_t d = S->loop[i], tt = d / 3, j = d % 3;
         int32_t a = s->tri[3 * tt + (j + 1) % 3], b = s->tri[3 * tt + (j + 2) % 3];
-        int32_t e = find_edge(S, a, b);
+        int32_t e = cvm__g3s_find_edge(S, a, b);
         const g3s_edge *E = S->edge + e;
         int fwd = a == E->lo;
         double tprev = fwd ? 0 : 1;
@@ -539,7 +299,7 @@ static cvm_status initial_splits(g3s_state *S)
 {
     size_t e;
     for (e = 0; e < S->ne; e++) {
-        const double *a = P(S, S->edge[e].lo), *b = P(S, S->edge[e].hi);
+        const double *a = g3s_pt(S, S->edge[e].lo), *b = g3s_pt(S, S->edge[e].hi);
         double m[3], len, h;
         size_t k, pieces;
         if (!S->edge[e].ns) /* ns carries the "both sides re-meshed" flag here */
@@ -636,30 +396,6 @@ void cvm__g3_remeshed_free(cvm__ctx *ctx, cvm__g3_remeshed *r)
 }
 
 /* Facet membership lists: triangles sorted by facet (counting sort). */
-static cvm_status facet_members(g3s_state *S, int32_t **start_out, int32_t **items_out)
-{
-    size_t t, f, nt = S->s->nt;
-    int32_t *start = cvm__calloc(S->ctx, S->nf + 1, sizeof *start);
-    int32_t *items = cvm__malloc(S->ctx, (nt ? nt : 1) * sizeof *items);
-    if (!start || !items) {
-        cvm__free(S->ctx, start);
-        cvm__free(S->ctx, items);
-        return cvm__nomem(S->ctx);
-    }
-    for (t = 0; t < nt; t++)
-        start[S->fac[t] + 1]++;
-    for (f = 0; f < S->nf; f++)
-        start[f + 1] += start[f];
-    for (t = 0; t < nt; t++)
-        items[start[S->fac[t]]++] = (int32_t)t;
-    for (f = S->nf; f > 0; f--)
-        start[f] = start[f - 1];
-    start[0] = 0;
-    *start_out = start;
-    *items_out = items;
-    return CVM_OK;
-}
-
 cvm_status cvm__g3_remesh_planar(cvm__ctx *ctx, const cvm__g3_surface *s, const int32_t *key,
                                  const cvm__g3_params *p, cvm__g3_remeshed *out)
 {
@@ -694,16 +430,16 @@ cvm_status cvm__g3_remesh_planar(cvm__ctx *ctx, const cvm__g3_surface *s, const 
         st = cvm__nomem(ctx);
         goto done;
     }
-    if ((st = build_neighbours(&S)) || (st = group_facets(&S, key)))
+    if ((st = cvm__g3s_neighbours(&S)) || (st = cvm__g3s_group(&S, key)))
         goto done;
-    if ((st = facet_members(&S, &fstart, &fitems)))
+    if ((st = cvm__g3s_members(&S, &fstart, &fitems)))
         goto done;
     /* which facets are re-meshed; the others fall apart into single triangles */
     for (f = 0; f < S.nf; f++) {
         size_t n;
         if (S.fcount[f] < 2)
             continue;
-        if (facet_loop(&S, (int32_t)f, fitems + fstart[f], (size_t)(fstart[f + 1] - fstart[f]), &n))
+        if (cvm__g3s_loop(&S, (int32_t)f, fitems + fstart[f], (size_t)(fstart[f + 1] - fstart[f]), &n))
             S.fremesh[f] = 1;
     }
     {
@@ -743,7 +479,7 @@ cvm_status cvm__g3_remesh_planar(cvm__ctx *ctx, const cvm__g3_surface *s, const 
         cvm__free(ctx, fstart);
         cvm__free(ctx, fitems);
         fstart = fitems = NULL;
-        if ((st = facet_members(&S, &fstart, &fitems)))
+        if ((st = cvm__g3s_members(&S, &fstart, &fitems)))
             goto done;
     }
     for (f = 0; f < S.nf; f++)
@@ -791,7 +527,7 @@ cvm_status cvm__g3_remesh_planar(cvm__ctx *ctx, const cvm__g3_surface *s, const 
         for (i = 0; i < s->np && !st; i++)
             st = push_point(&S, s->xyz + 3 * i);
         for (e = 0; e < S.ne && !st; e++) {
-            const double *a = P(&S, S.edge[e].lo), *b = P(&S, S.edge[e].hi);
+            const double *a = g3s_pt(&S, S.edge[e].lo), *b = g3s_pt(&S, S.edge[e].hi);
             for (k = 0; k < S.edge[e].ns && !st; k++) {
                 double tt = S.sp[S.edge[e].soff + k], x[3];
                 int c;
@@ -802,7 +538,7 @@ cvm_status cvm__g3_remesh_planar(cvm__ctx *ctx, const cvm__g3_surface *s, const 
         }
         for (f = 0; f < S.nf && !st; f++) {
             size_t n;
-            if (!facet_loop(&S, (int32_t)f, fitems + fstart[f], (size_t)(fstart[f + 1] - fstart[f]), &n)) {
+            if (!cvm__g3s_loop(&S, (int32_t)f, fitems + fstart[f], (size_t)(fstart[f + 1] - fstart[f]), &n)) {
                 st = CVM_E_INPUT_DEGENERATE;
                 break;
             }
