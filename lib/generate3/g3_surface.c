@@ -256,6 +256,10 @@ static cvm_status mesh_facet(g3s_state *S, int32_t f, size_t n, int remesh, size
                     w = ((q[0] - p0[0]) * dx + (q[1] - p0[1]) * dy) / (dx * dx + dy * dy);
                     if (!(w > 0.01 && w < 0.99))
                         w = 0.5;
+                    if (!S->edge[S->bseg_e[sg]].both) {
+                        S->demote = f;
+                        return CVM_OK;
+                    }
                     if ((st = push_pending(S, S->bseg_e[sg],
                                            S->bt0[sg] + w * (S->bt1[sg] - S->bt0[sg]))))
                         return st;
@@ -486,8 +490,13 @@ cvm_status cvm__g3_remesh_planar(cvm__ctx *ctx, const cvm__g3_surface *s, const 
         out->facets_remeshed += S.fremesh[f];
     if (!out->facets_remeshed)
         goto done; /* nothing planar to re-mesh: the surface stays as given */
+again:
     /* the boundary edges of every facet; ns = 1 marks an edge between two re-meshed facets */
     S.ne = 0;
+    S.nsp = 0;
+    S.npend = 0;
+    S.demote = -1;
+    changed = 1;
     for (t = 0; t < nt; t++) {
         int j;
         for (j = 0; j < 3; j++) {
@@ -501,6 +510,7 @@ cvm_status cvm__g3_remesh_planar(cvm__ctx *ctx, const cvm__g3_surface *s, const 
             S.edge[S.ne].hi = a < b ? b : a;
             S.edge[S.ne].soff = 0;
             S.edge[S.ne].ns = w >= 0 && S.fremesh[S.fac[t]] && S.fremesh[S.fac[w]];
+            S.edge[S.ne].both = (int)S.edge[S.ne].ns;
             S.ne++;
         }
     }
@@ -511,6 +521,7 @@ cvm_status cvm__g3_remesh_planar(cvm__ctx *ctx, const cvm__g3_surface *s, const 
         for (i = 0; i < S.ne; i++) {
             if (m && !edge_cmp(&S.edge[m - 1], &S.edge[i])) {
                 S.edge[m - 1].ns = 0;
+                S.edge[m - 1].both = 0;
                 continue;
             }
             S.edge[m++] = S.edge[i];
@@ -543,9 +554,15 @@ cvm_status cvm__g3_remesh_planar(cvm__ctx *ctx, const cvm__g3_surface *s, const 
                 break;
             }
             st = mesh_facet(&S, (int32_t)f, n, S.fremesh[f], s->np, &T, &co);
+            if (!st && S.demote >= 0)
+                break;
         }
         if (st)
             break;
+        if (S.demote >= 0) {
+            S.fremesh[S.demote] = 0;
+            goto again;
+        }
         if (S.npend) {
             changed = 1;
             if ((st = merge_pending(&S)))
@@ -555,14 +572,17 @@ cvm_status cvm__g3_remesh_planar(cvm__ctx *ctx, const cvm__g3_surface *s, const 
     if (!st && changed)
         st = CVM_E_INPUT_DEGENERATE;
     out->rounds = round;
+    out->facets_remeshed = 0;
+    for (f = 0; f < S.nf; f++)
+        out->facets_remeshed += S.fremesh[f];
     if (st == CVM_E_INPUT_DEGENERATE) {
         /* a facet the 2D path cannot take (rounding, or no convergence): keep the surface as given */
         out->facets_remeshed = 0;
         st = CVM_OK;
         goto done;
     }
-    if (st)
-        goto done;
+    if (st || !out->facets_remeshed)
+        goto done; /* an error, or every facet demoted: the surface stays as given */
     /* compact: drop input points no triangle uses any more */
     {
         int32_t *map = cvm__malloc(ctx, (S.np ? S.np : 1) * sizeof *map);

@@ -13,6 +13,7 @@
 typedef struct g3s_edge {
     int32_t lo, hi;
     size_t soff, ns;
+    int both;      /* both sides re-meshed: the only edges that may take points */
 } g3s_edge;
 
 /* A split parameter waiting for the next round. */
@@ -46,6 +47,8 @@ typedef struct g3s_state {
     size_t ne;
     double *sp;        /* split parameters */
     size_t nsp;
+    int32_t demote;    /* a re-meshed facet whose refiner split an edge of a kept
+                          triangle: it is meshed again without refinement */
     g3s_split *pend;
     size_t npend, cap_pend;
     int32_t *loop;     /* scratch: a facet's boundary as directed edges (3 t + j) */
