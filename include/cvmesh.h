@@ -874,8 +874,9 @@ typedef enum cvm_option {
     /** The surface before the points are placed: CVM_GEN3_SURFACE_AS_GIVEN (0, default) or
      *  CVM_GEN3_SURFACE_REMESH_PLANAR (1: every planar facet of two or more coplanar
      *  triangles re-meshed by the 2D frontal refiner at the 3D size, the points on edges
-     *  shared by two facets made once for both; other triangles kept, with the points of
-     *  their neighbours' edges added). Integer, bounds [0, 1]. @since 0.2 */
+     *  shared by two facets made once for both; other triangles kept as given, and a facet
+     *  whose refinement would put a point on one of their edges is only re-triangulated).
+     *  Integer, bounds [0, 1]. @since 0.2 */
     CVM_OPT_GEN3_SURFACE = 744,
     /* ---- quad-dominant meshing (800-899): read by cvm_mesh_quadmesh() ---- */
     /** Exponent p of the Lp-CVT energy, even integer, default 6, bounds [2, 12]. p = 2 is
@@ -2703,6 +2704,8 @@ CVM_API cvm_status cvm_mesh_optimise_dual(cvm_mesh *m, const cvm_sizing *sizing)
  *                                 240,000,000 candidates, or the points would pass the 3D
  *                                 limit of 60,000,000 (message gives the numbers)
  *         the surface's statuses of cvm_mesh_triangulate() (not closed, self-intersecting, ...)
+ *         CVM_E_INTERNAL          CVM_OPT_GEN3_SURFACE 1 made a surface that fails the
+ *                                 input checks (a bug; the message says so)
  *         CVM_E_NOMEM             (the handle keeps its input; the output is dropped)
  *         CVM_INCOMPLETE_TIME_LIMIT, CVM_INCOMPLETE_CANCELLED (as cvm_mesh_triangulate())
  * @since 0.2

@@ -6,9 +6,7 @@
  * fourth point is coplanar (orient3d exactly 0) and the two triangles carry
  * the same key (the input facet marker). A facet of two or more triangles
  * whose boundary is one simple loop is re-meshed; any other triangle is a
- * facet of its own, kept as given except that the points its neighbours put
- * on its edges are added (its constrained Delaunay triangulation, no new
- * interior point).
+ * facet of its own, kept as given.
  *
  * Shared edges: every facet boundary is made of input edges; each input edge
  * keeps one sorted list of parameters t in (0, 1) along it from its lower to
@@ -17,7 +15,12 @@
  * re-meshed facets start with ceil(length / size) equal pieces; when the
  * refiner splits a boundary segment anyway (encroachment), the split becomes
  * a parameter of that edge and every facet is meshed again (a few rounds),
- * so both sides always hold the same points.
+ * so both sides always hold the same points. Only edges between two
+ * re-meshed facets take points: a facet whose refiner splits an edge of a
+ * kept triangle is demoted (its boundary loop triangulated, constrained
+ * Delaunay, without new points) and the whole pass starts again; at most one
+ * pass per facet. No convergence in G3S_MAX_ROUNDS rounds, or a facet whose
+ * 2D triangulation fails on rounding: the surface is kept as given.
  *
  * 2D frame: the facet's plane projected along the axis of the largest normal
  * component (cyclic order of the two others, so orientation is kept when that
