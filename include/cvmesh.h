@@ -871,6 +871,13 @@ typedef enum cvm_option {
     /** 1 (default): the size follows the surface's own triangles (see
      *  CVM_OPT_GEN3_GRADING); 0: the size is uniform. Integer, bounds [0, 1]. @since 0.2 */
     CVM_OPT_GEN3_SIZE_FROM_SURFACE = 743,
+    /** The surface before the points are placed: CVM_GEN3_SURFACE_AS_GIVEN (0, default) or
+     *  CVM_GEN3_SURFACE_REMESH_PLANAR (1: every planar facet of two or more coplanar
+     *  triangles re-meshed by the 2D frontal refiner at the 3D size, the points on edges
+     *  shared by two facets made once for both; other triangles kept as given, and a facet
+     *  whose refinement would put a point on one of their edges is only re-triangulated).
+     *  Integer, bounds [0, 1]. @since 0.2 */
+    CVM_OPT_GEN3_SURFACE = 744,
     /* ---- quad-dominant meshing (800-899): read by cvm_mesh_quadmesh() ---- */
     /** Exponent p of the Lp-CVT energy, even integer, default 6, bounds [2, 12]. p = 2 is
      *  the classic CVT (hexagonal cells); larger p pulls the cells towards squares of unit
@@ -916,6 +923,12 @@ typedef enum cvm_gen3_freespace {
     CVM_GEN3_FREESPACE_OCTREE = 1,  /**< reserved: 2:1-balanced octree */
     CVM_GEN3_FREESPACE_REFINE = 2   /**< reserved: Delaunay refinement */
 } cvm_gen3_freespace;
+
+/** Values of CVM_OPT_GEN3_SURFACE. */
+typedef enum cvm_gen3_surface {
+    CVM_GEN3_SURFACE_AS_GIVEN = 0,      /**< the surface's triangles are used as read */
+    CVM_GEN3_SURFACE_REMESH_PLANAR = 1  /**< planar facets re-meshed in 2D at the 3D size */
+} cvm_gen3_surface;
 
 /** Values of CVM_OPT_VTU_ENCODING. */
 typedef enum cvm_vtu_encoding {
@@ -2707,8 +2720,11 @@ CVM_API cvm_status cvm_mesh_optimise_dual(cvm_mesh *m, const cvm_sizing *sizing)
  * emptied, regions' attributes kept). Walton, Hassan and Morgan's pipeline:
  *  - size: @p size everywhere (CVM_OPT_GEN3_SIZE_FROM_SURFACE 0), or by default
  *    min(size, l + g * distance) from each surface triangle (mean edge l,
- *    g = CVM_OPT_GEN3_GRADING); the surface itself is used as given; a 3D
- *    cvm_sizing lowers it further (cvm_mesh_generate3_sized());
+ *    g = CVM_OPT_GEN3_GRADING), from the surface read; a 3D cvm_sizing lowers it
+ *    further (cvm_mesh_generate3_sized());
+ *  - surface: used as given (CVM_OPT_GEN3_SURFACE 0), or its planar facets re-meshed
+ *    by the 2D frontal refiner at that size (1; CVM_REPORT_GEN3_FACETS_REMESHED);
+ *    the mesh then holds the re-meshed surface and its points;
  *  - near field: surface triangles paired across edges by a maximum-cardinality
  *    matching; a pair ABC/BDC gets x = (c1 + c2 + delta (n1 + n2)) / 2, delta =
  *    1.1 max(R1, R2) (circumcentres, inward normals, circumradii); an unmatched
@@ -2756,6 +2772,8 @@ CVM_API cvm_status cvm_mesh_optimise_dual(cvm_mesh *m, const cvm_sizing *sizing)
  *                                 240,000,000 candidates, or the points would pass the 3D
  *                                 limit of 60,000,000 (message gives the numbers)
  *         the surface's statuses of cvm_mesh_triangulate() (not closed, self-intersecting, ...)
+ *         CVM_E_INTERNAL          CVM_OPT_GEN3_SURFACE 1 made a surface that fails the
+ *                                 input checks (a bug; the message says so)
  *         CVM_E_NOMEM             (the handle keeps its input; the output is dropped)
  *         CVM_INCOMPLETE_TIME_LIMIT, CVM_INCOMPLETE_CANCELLED (as cvm_mesh_triangulate())
  * @since 0.2
@@ -3014,6 +3032,10 @@ typedef enum cvm_measure {
                                                  surface triangle is a Delaunay face (builds
                                                  without TetGen; 0 with it) */
     CVM_MEASURE_GEN3_SECONDS = 748,         /**< wall time of the run, seconds (not deterministic) */
+    CVM_MEASURE_GEN3_FACETS_REMESHED = 749, /**< planar facets re-meshed (CVM_OPT_GEN3_SURFACE 1) */
+    CVM_MEASURE_GEN3_SURFACE_TRIS_BEFORE = 750, /**< surface triangles read */
+    CVM_MEASURE_GEN3_SURFACE_TRIS_AFTER = 751,  /**< surface triangles meshed (= before when
+                                                     the surface is used as given) */
     /* ---- 800-899: the quad measures are reports of the last cvm_mesh_quadmesh() (the
      * metric is not kept with the mesh): cvm_mesh_get_measure() accepts the
      * CVM_REPORT_QUAD_* values (800-821) and gives the same numbers ---- */
@@ -3122,6 +3144,9 @@ typedef enum cvm_report {
     CVM_REPORT_GEN3_LATTICE_LEVELS = 746,     /**< = CVM_MEASURE_GEN3_LATTICE_LEVELS */
     CVM_REPORT_GEN3_RECOVERY_DROPPED = 747,   /**< = CVM_MEASURE_GEN3_RECOVERY_DROPPED */
     CVM_REPORT_GEN3_SECONDS = 748,            /**< = CVM_MEASURE_GEN3_SECONDS */
+    CVM_REPORT_GEN3_FACETS_REMESHED = 749,    /**< = CVM_MEASURE_GEN3_FACETS_REMESHED */
+    CVM_REPORT_GEN3_SURFACE_TRIS_BEFORE = 750, /**< = CVM_MEASURE_GEN3_SURFACE_TRIS_BEFORE */
+    CVM_REPORT_GEN3_SURFACE_TRIS_AFTER = 751, /**< = CVM_MEASURE_GEN3_SURFACE_TRIS_AFTER */
     /* the last cvm_mesh_quadmesh() (0 before any, and after any call that drops the quads).
        Corner angles and edge lengths are measured in the metric: a corner's angle with g at
        its quad's centroid, an edge's metric length sqrt(e^T g e) with g at its midpoint. */

@@ -61,9 +61,48 @@ static cvm_status tetrahedralise_with(cvm_mesh *m, const double *xyz, size_t n)
     return s;
 }
 
+/* The surface of r as a cvm__surf3 (one facet per triangle, the marker of
+ * the input facet it comes from; holes and regions borrowed from the input
+ * by copy), validated as the input was. */
+static cvm_status remeshed_surface(cvm_mesh *m, const cvm__g3_remeshed *r, const cvm__surf3_tris *st,
+                                   cvm__surf3 *out)
+{
+    const cvm__surf3 *in = &m->m3->in;
+    cvm__surf3_tris chk;
+    size_t i;
+    cvm_status s = CVM_OK;
+    cvm__surf3_init(out);
+    out->facet_word = "re-meshed surface triangle";
+    for (i = 0; i < r->np && !s; i++)
+        s = cvm__surf3_add_point(&m->ctx, out, r->xyz[3 * i], r->xyz[3 * i + 1], r->xyz[3 * i + 2]);
+    for (i = 0; i < r->nt && !s; i++) {
+        int32_t poly = st->tpoly[r->tsrc[i]];
+        if (!(s = cvm__surf3_add_facet(&m->ctx, out, in->fmark[in->pfacet[poly]])))
+            s = cvm__surf3_add_polygon(&m->ctx, out, r->tri + 3 * i, 3);
+    }
+    for (i = 0; i < in->nholes && !s; i++)
+        s = cvm__surf3_add_hole(&m->ctx, out, in->holes + 3 * i);
+    for (i = 0; i < in->nregions && !s; i++)
+        s = cvm__surf3_add_region(&m->ctx, out, in->regions + 5 * i);
+    if (s)
+        return s;
+    memset(&chk, 0, sizeof chk);
+    s = cvm__surf3_validate(&m->ctx, out, CVM__SURF3_ALLOW_INTERNAL, &chk);
+    cvm__surf3_tris_free(&m->ctx, &chk);
+    if (s && s != CVM_E_NOMEM)
+        s = cvm__error(&m->ctx, CVM_E_INTERNAL, CVM_ENT_NONE, -1,
+                       "the surface with its planar facets re-meshed fails validation (%s): "
+                       "use CVM_OPT_GEN3_SURFACE = 0", cvm_status_str(s));
+    return s;
+}
+
 /* cvm_mesh_generate3_sized() with sizing NULL or checked for 3D. */
 static cvm_status generate(cvm_mesh *m, double size, const cvm_sizing *sizing)
 {
+    cvm__g3_remeshed rm;
+    cvm__surf3 saved, ns;
+    int swapped = 0;
+    double rm_count[3];
     cvm__mesh3 *g;
     cvm__surf3_tris st;
     cvm__g3_surface surf;
@@ -73,6 +112,8 @@ static cvm_status generate(cvm_mesh *m, double size, const cvm_sizing *sizing)
     int64_t bad = -1;
     double t0 = cvm__now();
     cvm_status s;
+    memset(&saved, 0, sizeof saved);
+    memset(&ns, 0, sizeof ns);
     if ((s = check_call(m, size)))
         return s;
     g = m->m3;
@@ -94,6 +135,47 @@ static cvm_status generate(cvm_mesh *m, double size, const cvm_sizing *sizing)
         p.grading = p.follow_surface && p.grading < sizing->bgrad ? p.grading : sizing->bgrad;
         p.follow_surface = 1;
     }
+    memset(&rm, 0, sizeof rm);
+    rm.tris_before = rm.tris_after = st.nt;
+    if (cvm__opt(m, CVM_OPT_GEN3_SURFACE) == CVM_GEN3_SURFACE_REMESH_PLANAR) {
+        int32_t *key = cvm__malloc(&m->ctx, (st.nt ? st.nt : 1) * sizeof *key);
+        size_t t;
+        if (!key) {
+            cvm__surf3_tris_free(&m->ctx, &st);
+            return cvm__nomem(&m->ctx);
+        }
+        for (t = 0; t < st.nt; t++)
+            key[t] = g->in.fmark[g->in.pfacet[st.tpoly[t]]];
+        s = cvm__g3_remesh_planar(&m->ctx, &surf, key, &p, &rm);
+        cvm__free(&m->ctx, key);
+        if (!s && rm.xyz)
+            s = remeshed_surface(m, &rm, &st, &ns);
+        if (s) {
+            if (rm.xyz)
+                cvm__surf3_free(&m->ctx, &ns);
+            cvm__g3_remeshed_free(&m->ctx, &rm);
+            cvm__surf3_tris_free(&m->ctx, &st);
+            return s;
+        }
+        if (rm.xyz) {
+            /* generate and tetrahedralise with the new surface in the input's place */
+            cvm__surf3_tris_free(&m->ctx, &st);
+            memset(&st, 0, sizeof st);
+            if ((s = cvm__surf3_validate(&m->ctx, &ns, CVM__SURF3_ALLOW_INTERNAL, &st))) {
+                cvm__surf3_free(&m->ctx, &ns);
+                cvm__g3_remeshed_free(&m->ctx, &rm);
+                return s;
+            }
+            saved = g->in;
+            g->in = ns;
+            swapped = 1;
+            surf.xyz = g->in.xyz;
+            surf.np = g->in.np;
+            surf.tri = st.tri;
+            surf.nt = st.nt;
+        }
+        rm.tris_after = st.nt;
+    }
     s = cvm__g3_generate(&m->ctx, &surf, &p, !cvm__tetgen_available(),
                          (uint64_t)cvm__opt(m, CVM_OPT_SEED), &pts, &rep, &bad);
     if (s == CVM_E_UNSUPPORTED && bad >= 0 && rep.surface_not_delaunay) {
@@ -113,10 +195,19 @@ static cvm_status generate(cvm_mesh *m, double size, const cvm_sizing *sizing)
                        g->in.file ? g->in.file : "the input");
     }
     cvm__surf3_tris_free(&m->ctx, &st);
-    if (s)
-        return s;
-    s = tetrahedralise_with(m, pts.xyz, pts.n);
-    cvm__g3_points_free(&m->ctx, &pts);
+    if (!s) {
+        s = tetrahedralise_with(m, pts.xyz, pts.n);
+        cvm__g3_points_free(&m->ctx, &pts);
+    }
+    if (swapped) {
+        ns = g->in;
+        g->in = saved;
+        cvm__surf3_free(&m->ctx, &ns);
+    }
+    rm_count[0] = (double)rm.facets_remeshed;
+    rm_count[1] = (double)rm.tris_before;
+    rm_count[2] = (double)rm.tris_after;
+    cvm__g3_remeshed_free(&m->ctx, &rm);
     if (cvm_status_is_error(s))
         return s;
     g->gen3[0] = (double)rep.matched_pairs;
@@ -128,6 +219,9 @@ static cvm_status generate(cvm_mesh *m, double size, const cvm_sizing *sizing)
     g->gen3[6] = (double)rep.lattice_levels;
     g->gen3[7] = (double)rep.recovery_dropped;
     g->gen3[8] = cvm__now() - t0;
+    g->gen3[9] = rm_count[0];
+    g->gen3[10] = rm_count[1];
+    g->gen3[11] = rm_count[2];
     return s;
 }
 

@@ -8,7 +8,7 @@
 #include "common/surf3.h"
 #include "delaunay3/delaunay3_internal.h"
 
-#define CVM__GEN3_NREPORT 9
+#define CVM__GEN3_NREPORT 12
 
 struct cvm__mesh3 {
     cvm__surf3 in;           /* the input: points, and facets when a surface was read */

@@ -23,6 +23,8 @@ static const cli_option_flag k_flags[] = {
     {"--layers", "N", CVM_OPT_GEN3_LAYERS, 0, M3, "near-field layers (default 1; only 1 so far)"},
     {"--uniform", NULL, CVM_OPT_GEN3_SIZE_FROM_SURFACE, 0, M3,
      "uniform size H everywhere instead of following the surface's triangles"},
+    {"--remesh-planar", NULL, CVM_OPT_GEN3_SURFACE, 1, M3,
+     "re-mesh the surface's planar facets at the size H (2D frontal refiner) before meshing"},
     {"--keep-hull", NULL, CVM_OPT_KEEP_CONVEX_HULL, 1, TRI | REF | OPT,
      "keep every triangle of the convex hull (holes are still removed)"},
     {"--no-split-intersections", NULL, CVM_OPT_SPLIT_INTERSECTIONS, 0, TRI | REF | OPT,

@@ -10,7 +10,7 @@
  * (exact point-in-domain test), g3_near.c (matching and near-field placement),
  * g3_lattice.c (the free-space lattice), g3_recover.c (dropping generated
  * points that hide a surface triangle from the Delaunay tetrahedralisation),
- * g3_run.c (the sequence).
+ * g3_surface.c (planar facets re-meshed in 2D), g3_run.c (the sequence).
  *
  * Size field: with follow_surface, size(x) = min(h, min over surface
  * triangles f of l(f) + g |x - centroid(f)|), l(f) the mean edge length of f;
@@ -142,6 +142,26 @@ double cvm__g3_lattice_dm(double hs);
  * s->tri) in *bad_face when one stays missing, CVM_E_NOMEM, or a kernel status. */
 cvm_status cvm__g3_recover(cvm__ctx *ctx, const cvm__g3_surface *s, cvm__g3_points *P,
                            uint64_t seed, cvm__g3_report *rep, int64_t *bad_face);
+
+/* ---- g3_surface.c: planar facets re-meshed by the 2D frontal refiner ---- */
+typedef struct cvm__g3_remeshed {
+    double *xyz;            /* 3 np: the points of the new surface (NULL: keep the input) */
+    size_t np;
+    int32_t *tri;           /* 3 nt, oriented as the input's triangles */
+    int32_t *tsrc;          /* nt: an input triangle of the facet each comes from */
+    size_t nt;
+    size_t facets_remeshed; /* planar facets of 2+ triangles re-meshed */
+    size_t tris_before, tris_after;
+    size_t rounds;          /* meshing rounds (boundary splits by the refiner add one) */
+} cvm__g3_remeshed;
+/* Re-mesh the planar facets of s (see g3_surface.c) at the size field of p.
+ * key: NULL, or nt values; only triangles of equal key join a facet. The
+ * result is in out (out->xyz NULL when nothing was re-meshed: no facet of 2+
+ * coplanar triangles with one simple boundary loop, or one whose 2D
+ * triangulation failed on rounding). CVM_E_NOMEM, or a refiner status. */
+cvm_status cvm__g3_remesh_planar(cvm__ctx *ctx, const cvm__g3_surface *s, const int32_t *key,
+                                 const cvm__g3_params *p, cvm__g3_remeshed *out);
+void cvm__g3_remeshed_free(cvm__ctx *ctx, cvm__g3_remeshed *r);
 
 /* ---- g3_run.c ---- */
 /* The generated points (near field, then lattice) in *out, without the

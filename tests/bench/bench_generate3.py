@@ -6,7 +6,8 @@ so both have about as many tetrahedra), on the same surfaces, in the same run.
 Rows: the unit cube (8 x 8 squares per face) at uniform size 1/8, and at
 1/16 (finer than its surface, which is used as given), the sphere of radius
 0.5 in the box [-2, 2]^3 and the swept NACA 0012 wing slab, both graded from
-their surfaces (size 0.5 and 1.0, grading 0.3).
+their surfaces (size 0.5 and 1.0, grading 0.3); the last three rows again with
+--remesh-planar (planar facets re-meshed at the 3D size first).
 Both meshes are measured here by the same numpy code from their .node/.ele
 files: tetrahedra, % whose circumcentre lies outside them (all, and those
 with a face on the boundary; floating point, as CVM_MEASURE 704/705), the
@@ -28,6 +29,11 @@ CASES = [
     ("cube h=1/16", "cube.poly", ["--size", "0.0625", "--uniform"]),
     ("sphere_in_box graded", "sphere_in_box.poly", ["--size", "0.5", "--grading", "0.3"]),
     ("wing_slab graded", "wing_slab.poly", ["--size", "1.0", "--grading", "0.3"]),
+    ("cube h=1/16 remesh-planar", "cube.poly", ["--size", "0.0625", "--uniform", "--remesh-planar"]),
+    ("sphere_in_box graded remesh-planar", "sphere_in_box.poly",
+     ["--size", "0.5", "--grading", "0.3", "--remesh-planar"]),
+    ("wing_slab graded remesh-planar", "wing_slab.poly",
+     ["--size", "1.0", "--grading", "0.3", "--remesh-planar"]),
 ]
 
 

@@ -8,13 +8,17 @@
  *     CVM_E_UNSUPPORTED; a surface that folds over itself is refused by the
  *     reader's validation);
  *   - on CVM_OK: cvm_mesh_check() accepts the mesh, the 12 surface triangles
- *     are its boundary faces, its volume equals the surface's signed volume
- *     (to 1e-9), every generated vertex lies strictly inside the bounding box,
+ *     are its boundary faces (12 or more with bit 7), its volume equals the surface's signed volume
+ *     (to 1e-9), every generated vertex lies strictly inside the bounding box
+ *     (with bit 7, every vertex past the corners lies in the closed box: the
+ *     re-meshed faces' points are on it),
  *     and a second run on a fresh handle gives identical points and cells.
  *
  * Bytes (missing ones read as 0):
  *   0..23  corner offsets (b - 128) / 128 * 0.3, corner k, axis a at 3 k + a
- *   24     bits 0-5: the diagonal of each face; bit 6 uniform size
+ *   24     bits 0-5: the diagonal of each face; bit 6 uniform size; bit 7
+ *          CVM_OPT_GEN3_SURFACE = CVM_GEN3_SURFACE_REMESH_PLANAR (coplanar
+ *          face pairs re-meshed: then 12 or more boundary faces)
  *   25     size 0.15 + 0.6 b / 255
  *   26     grading 0.05 + 2 b / 255
  */
@@ -42,7 +46,7 @@ static uint8_t byte_at(const uint8_t *data, size_t size, size_t i)
 static const int k_quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
                                   {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
 
-static cvm_mesh *run(const char *path, int uniform, double h, double g)
+static cvm_mesh *run(const char *path, int uniform, int remesh, double h, double g)
 {
     cvm_mesh *m;
     cvm_status s;
@@ -57,6 +61,7 @@ static cvm_mesh *run(const char *path, int uniform, double h, double g)
     FUZZ_REQUIRE(cvm_mesh_set_option(m, CVM_OPT_GEN3_SIZE_FROM_SURFACE, uniform ? 0 : 1) == CVM_OK,
                  "option");
     FUZZ_REQUIRE(cvm_mesh_set_option(m, CVM_OPT_GEN3_GRADING, g) == CVM_OK, "option");
+    FUZZ_REQUIRE(cvm_mesh_set_option(m, CVM_OPT_GEN3_SURFACE, remesh) == CVM_OK, "option");
     s = cvm_mesh_generate3(m, h);
     if (s != CVM_OK) {
         FUZZ_REQUIRE(cvm_status_is_error(s) && cvm_mesh_errmsg(m)[0], "status %d without a message",
@@ -75,7 +80,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     double c[8][3], lo[3], hi[3], vol = 0, v, h, g;
     char dir[] = "/tmp/fuzz_generate3_XXXXXX", path[64];
-    int k, a, uniform;
+    int k, a, uniform, remesh;
     uint8_t diag = byte_at(data, size, 24);
     FILE *f;
     cvm_mesh *m1, *m2;
@@ -84,6 +89,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             c[k][a] = (double)((k >> a) & 1) +
                       ((double)byte_at(data, size, (size_t)(3 * k + a)) - 128) / 128 * 0.3;
     uniform = (diag >> 6) & 1;
+    remesh = (diag >> 7) & 1;
     h = 0.15 + 0.6 * byte_at(data, size, 25) / 255.0;
     g = 0.05 + 2.0 * byte_at(data, size, 26) / 255.0;
     FUZZ_REQUIRE(mkdtemp(dir) != NULL, "mkdtemp");
@@ -111,8 +117,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         }
     }
     fclose(f);
-    m1 = run(path, uniform, h, g);
-    m2 = m1 ? run(path, uniform, h, g) : NULL;
+    m1 = run(path, uniform, remesh, h, g);
+    m2 = m1 ? run(path, uniform, remesh, h, g) : NULL;
     unlink(path);
     rmdir(dir);
     if (!m1)
@@ -129,7 +135,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         FUZZ_REQUIRE(cvm_mesh_count(&nv2, m2, CVM_ENT_VERTEX) == CVM_OK, "count");
         FUZZ_REQUIRE(cvm_mesh_count(&nt1, m1, CVM_ENT_TETRAHEDRON) == CVM_OK, "count");
         FUZZ_REQUIRE(cvm_mesh_count(&nt2, m2, CVM_ENT_TETRAHEDRON) == CVM_OK, "count");
-        FUZZ_REQUIRE(cvm_mesh_count(&nf, m1, CVM_ENT_TRIANGLE) == CVM_OK && nf == 12,
+        FUZZ_REQUIRE(cvm_mesh_count(&nf, m1, CVM_ENT_TRIANGLE) == CVM_OK &&
+                         (remesh ? nf >= 12 : nf == 12),
                      "%zu boundary faces", nf);
         FUZZ_REQUIRE(nv1 == nv2 && nt1 == nt2, "second run: %zu/%zu vertices, %zu/%zu tets", nv1,
                      nv2, nt1, nt2);
@@ -153,7 +160,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         }
         for (i = 8; i < nv1; i++)
             for (a = 0; a < 3; a++)
-                FUZZ_REQUIRE(x1[3 * i + a] > lo[a] && x1[3 * i + a] < hi[a],
+                FUZZ_REQUIRE(remesh ? x1[3 * i + a] >= lo[a] && x1[3 * i + a] <= hi[a]
+                                    : x1[3 * i + a] > lo[a] && x1[3 * i + a] < hi[a],
                              "vertex %zu outside the bounding box", i);
         free(x1);
         free(x2);
