@@ -21,5 +21,6 @@ Suite *api_suite(void)
     suite_add_tcase(s, api_sizing_nd_tcase());
     suite_add_tcase(s, api_mesh3_tcase());
     suite_add_tcase(s, api_mesh3_dual_tcase());
+    suite_add_tcase(s, api_mesh3_insert_tcase());
     return s;
 }
