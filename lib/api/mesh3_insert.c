@@ -10,11 +10,6 @@
 
 #include "api/mesh3_internal.h"
 
-static const char *const why_word[] = {
-    "inserted", "outside the domain", "on an existing vertex", "closer than min_dist to a vertex",
-    "on a constrained face", "with an empty power cell", "hiding a vertex's power cell"
-};
-
 /* A tetrahedron of the result with its region attribute, for the sort. */
 typedef struct cvm__ins3_tet {
     int32_t v[4];
@@ -237,7 +232,6 @@ cvm_status cvm__mesh3_insert_points(cvm_index *ids_out, cvm_mesh *m, const doubl
                 ids_out[i] = (cvm_index)(T.np - 1);
             done++;
         }
-        (void)why_word;
         s = cvm__tick(&m->ctx, 1, CVM_STAGE_INSERT, (double)i / (double)count);
         if (s) {
             stop = cvm__error(&m->ctx, s, CVM_ENT_INPUT_POINT, (int64_t)i,
