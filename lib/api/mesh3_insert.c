@@ -86,17 +86,18 @@ static cvm_status constrained_faces(cvm_mesh *m, const int32_t *nbr, uint8_t **o
     return s;
 }
 
-/* The store's mesh back into g: the vertices nv.. T->np - 1 appended (weight
- * 0), the tetrahedra turned and sorted as cvm_mesh_triangulate() orders them,
+/* The store's mesh back into g: the vertices nv.. T->np - 1 appended as
+ * vertices fin[v - nv] (weight 0), the tetrahedra turned and sorted as cvm_mesh_triangulate() orders them,
  * with their attributes; an unconstrained mesh gets its hull faces again. All
  * or nothing: CVM_OK, or CVM_E_NOMEM with g unchanged. */
-static cvm_status write_back(cvm_mesh *m, cvm__tet3 *T)
+static cvm_status write_back(cvm_mesh *m, cvm__tet3 *T, const int32_t *fin)
 {
     cvm__mesh3 *g = m->m3;
     cvm__ins3_tet *rec = NULL;
     double *xyz = NULL, *w = NULL, *tattr = NULL;
     int32_t *tet = NULL, *nbr = NULL, *face = NULL;
     size_t i, nt = 0, nface = 0, nv = T->np;
+    int k;
     cvm_status s = CVM_E_NOMEM;
     for (i = 0; i < T->nslot; i++)
         nt += T->tt[8 * i] != CVM__T3_DEAD && T->tt[8 * i + 3] != CVM__T3_GHOST;
@@ -113,7 +114,8 @@ static cvm_status write_back(cvm_mesh *m, cvm__tet3 *T)
         const int32_t *v = T->tt + 8 * i;
         if (v[0] == CVM__T3_DEAD || v[3] == CVM__T3_GHOST)
             continue;
-        memcpy(rec[nt].v, v, 4 * sizeof *v);
+        for (k = 0; k < 4; k++)
+            rec[nt].v[k] = (size_t)v[k] < g->nv ? v[k] : fin[(size_t)v[k] - g->nv];
         cvm__tet3_canonical_turn(rec[nt].v);
         rec[nt].attr = T->sattr ? T->sattr[i] : 0.0;
         nt++;
@@ -125,8 +127,8 @@ static cvm_status write_back(cvm_mesh *m, cvm__tet3 *T)
             tattr[i] = rec[i].attr;
     }
     for (i = 0; i < nv; i++)
-        memcpy(xyz + 3 * i, T->pt[i].x, 3 * sizeof *xyz);
-    if (w)
+        memcpy(xyz + 3 * (i < g->nv ? i : (size_t)fin[i - g->nv]), T->pt[i].x, 3 * sizeof *xyz);
+    if (w) /* weighted calls insert in input order: fin is the identity */
         memcpy(w, T->w, nv * sizeof *w);
     if (g->delaunay) { /* the hull may have grown by points on it: its faces again */
         if ((s = cvm__mesh3_adjacency(&m->ctx, tet, nt, &nbr)) != CVM_OK) {
@@ -170,14 +172,70 @@ done_set:
     return s;
 }
 
+/* A point of the call with its index, for finding repeated points. */
+typedef struct cvm__ins3_pt {
+    double x[3];
+    size_t i;
+} cvm__ins3_pt;
+
+static int cmp_ins3_pt(const void *pa, const void *pb)
+{
+    const cvm__ins3_pt *a = pa, *b = pb;
+    int k;
+    for (k = 0; k < 3; k++)
+        if (a->x[k] != b->x[k])
+            return a->x[k] < b->x[k] ? -1 : 1;
+    return (a->i > b->i) - (a->i < b->i);
+}
+
+/*
+ * The order in which the points go in. In input order, unless the result
+ * cannot depend on it: a point set's unweighted Delaunay mesh and min_dist 0,
+ * where a point is refused only outside the hull (which does not move) or on
+ * a vertex, and the tetrahedralisation of the rest is unique (ties broken by
+ * ids, which stay in input order). There BRIO + Hilbert order (as
+ * cvm_mesh_triangulate()) keeps the walks short; a point repeating an earlier
+ * one of the call is refused beforehand (skip), as input order would.
+ * *order NULL: input order. CVM_OK or CVM_E_NOMEM (message set).
+ */
+static cvm_status insertion_order(cvm_mesh *m, const double *xyz, size_t count, double min_dist,
+                                  int32_t **order, uint8_t **skip)
+{
+    const cvm__mesh3 *g = m->m3;
+    cvm__ins3_pt *pt;
+    size_t i;
+    *order = NULL;
+    *skip = NULL;
+    if (!g->delaunay || g->w || min_dist > 0 || count < 2)
+        return CVM_OK;
+    *order = cvm__malloc(&m->ctx, count * sizeof **order);
+    *skip = cvm__calloc(&m->ctx, count, 1);
+    pt = cvm__malloc(&m->ctx, count * sizeof *pt);
+    if (!*order || !*skip || !pt
+        || cvm__tet3_brio_order(&m->ctx, xyz, count, (uint64_t)cvm__opt(m, CVM_OPT_SEED), *order)) {
+        cvm__free(&m->ctx, pt);
+        return cvm__nomem(&m->ctx);
+    }
+    for (i = 0; i < count; i++) {
+        memcpy(pt[i].x, xyz + 3 * i, sizeof pt[i].x);
+        pt[i].i = i;
+    }
+    qsort(pt, count, sizeof *pt, cmp_ins3_pt);
+    for (i = 1; i < count; i++)
+        if (memcmp(pt[i].x, pt[i - 1].x, sizeof pt[i].x) == 0)
+            (*skip)[pt[i].i] = 1;
+    cvm__free(&m->ctx, pt);
+    return CVM_OK;
+}
+
 cvm_status cvm__mesh3_insert_points(cvm_index *ids_out, cvm_mesh *m, const double *xyz,
                                     size_t count, double min_dist)
 {
     cvm__mesh3 *g = m->m3;
     cvm__tet3 T;
-    int32_t *nbr = NULL;
-    uint8_t *cons = NULL;
-    size_t i, nv0, done = 0;
+    int32_t *nbr = NULL, *order = NULL, *ip = NULL, *fin = NULL;
+    uint8_t *cons = NULL, *skip = NULL;
+    size_t i, k, nv0, done = 0;
     cvm_status s, stop = CVM_OK;
     if (!xyz && count > 0)
         return cvm__error(&m->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "coords is NULL");
@@ -202,52 +260,78 @@ cvm_status cvm__mesh3_insert_points(cvm_index *ids_out, cvm_mesh *m, const doubl
                           "%lu points on %lu vertices exceed the 3D limit of %lu",
                           (unsigned long)count, (unsigned long)nv0,
                           (unsigned long)CVM__T3_MAX_POINTS);
-    if ((s = cvm__mesh3_adjacency(&m->ctx, g->tet, g->ntet, &nbr)))
-        return s == CVM_E_NOMEM ? s
-                                : cvm__error(&m->ctx, CVM_E_INTERNAL, CVM_ENT_NONE, -1,
-                                             "insertion: %s", cvm_mesh_errmsg(m));
-    if (!g->delaunay && (s = constrained_faces(m, nbr, &cons))) {
-        cvm__free(&m->ctx, nbr);
-        return s;
+    if ((s = insertion_order(m, xyz, count, min_dist, &order, &skip)))
+        goto out;
+    ip = cvm__malloc(&m->ctx, count * sizeof *ip);
+    fin = cvm__malloc(&m->ctx, count * sizeof *fin);
+    if (!ip || !fin) {
+        s = cvm__nomem(&m->ctx);
+        goto out;
     }
+    if ((s = cvm__mesh3_adjacency(&m->ctx, g->tet, g->ntet, &nbr))) {
+        if (s != CVM_E_NOMEM)
+            s = cvm__error(&m->ctx, CVM_E_INTERNAL, CVM_ENT_NONE, -1, "insertion: %s",
+                           cvm_mesh_errmsg(m));
+        goto out;
+    }
+    if (!g->delaunay && (s = constrained_faces(m, nbr, &cons)))
+        goto out;
     cvm__tet3_init(&T, &m->ctx);
     s = cvm__tet3_load(&T, g->xyz, g->w, nv0, nv0 + count, g->tet, g->ntet, nbr,
                        g->delaunay ? NULL : cons, g->tattr);
-    cvm__free(&m->ctx, nbr);
-    cvm__free(&m->ctx, cons);
     if (s) {
         cvm__tet3_free(&T);
-        return cvm__nomem(&m->ctx);
+        s = cvm__nomem(&m->ctx);
+        goto out;
     }
     cvm__run_begin(&m->ctx, cvm__opt(m, CVM_OPT_TIME_LIMIT_S));
-    for (i = 0; i < count; i++) {
-        cvm__t3_ins res;
+    for (k = 0; k < count; k++) {
+        cvm__t3_ins res = CVM__T3_INS_DUPLICATE;
         int32_t other;
-        if ((s = cvm__tet3_insert_point(&T, xyz + 3 * i, min_dist, &res, &other))) {
+        i = order ? (size_t)order[k] : k;
+        ip[i] = -1;
+        if (!(skip && skip[i])
+            && (s = cvm__tet3_insert_point(&T, xyz + 3 * i, (int32_t)(nv0 + i), min_dist, &res,
+                                           &other))) {
             stop = cvm__nomem(&m->ctx);
             break;
         }
         if (res == CVM__T3_INS_DONE) {
-            if (ids_out)
-                ids_out[i] = (cvm_index)(T.np - 1);
+            ip[i] = (int32_t)(T.np - 1);
             done++;
         }
-        s = cvm__tick(&m->ctx, 1, CVM_STAGE_INSERT, (double)i / (double)count);
+        s = cvm__tick(&m->ctx, 1, CVM_STAGE_INSERT, (double)k / (double)count);
         if (s) {
             stop = cvm__error(&m->ctx, s, CVM_ENT_INPUT_POINT, (int64_t)i,
-                              "%s after point %lu; points after it were not inserted",
+                              "%s after %lu of %lu points%s; the points not inserted by then "
+                              "were rejected",
                               s == CVM_INCOMPLETE_CANCELLED ? "cancelled" : "time limit reached",
-                              (unsigned long)i);
+                              (unsigned long)(k + 1), (unsigned long)count,
+                              order ? " (taken in space-filling-curve order)" : "");
+            ++k;
             break;
         }
     }
-    s = done ? write_back(m, &T) : CVM_OK;
+    for (; k < count; k++) /* not reached: a stop */
+        ip[order ? (size_t)order[k] : k] = -1;
+    /* ids in input order: the k-th point inserted, counted in input order, is vertex nv0 + k */
+    for (i = 0, k = 0; i < count; i++)
+        if (ip[i] >= 0)
+            fin[(size_t)ip[i] - nv0] = (int32_t)(nv0 + k++);
+    s = done ? write_back(m, &T, fin) : CVM_OK;
     cvm__tet3_free(&T);
-    if (s) { /* nothing was kept: no id stands */
-        if (ids_out)
-            for (i = 0; i < count; i++)
-                ids_out[i] = CVM_REJECTED;
-        return s;
-    }
-    return stop;
+    if (!s && ids_out)
+        for (i = 0; i < count; i++)
+            if (ip[i] >= 0)
+                ids_out[i] = fin[(size_t)ip[i] - nv0];
+    if (!s)
+        s = stop;
+out:
+    cvm__free(&m->ctx, nbr);
+    cvm__free(&m->ctx, cons);
+    cvm__free(&m->ctx, order);
+    cvm__free(&m->ctx, skip);
+    cvm__free(&m->ctx, ip);
+    cvm__free(&m->ctx, fin);
+    return s;
 }

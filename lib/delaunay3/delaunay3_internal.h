@@ -225,10 +225,12 @@ typedef enum cvm__t3_ins {
  * constrained store a tetrahedron whose boundary face x does not see strictly
  * from inside is left out again, until the cavity is star-shaped from x. The
  * min_dist test: squared distances to the cavity's vertices in doubles, x is
- * refused when one is below min_dist^2. *res says what happened; on DONE the
- * point is vertex T->np - 1. CVM_OK, or CVM_E_NOMEM (store unchanged).
+ * refused when one is below min_dist^2. sos: the point's symbolic-perturbation
+ * index (above every vertex's; only the order of the indices matters). *res
+ * says what happened; on DONE the point is vertex T->np - 1. CVM_OK, or
+ * CVM_E_NOMEM (store unchanged).
  */
-cvm_status cvm__tet3_insert_point(cvm__tet3 *T, const double *x, double min_dist, cvm__t3_ins *res,
-                                  int32_t *other);
+cvm_status cvm__tet3_insert_point(cvm__tet3 *T, const double *x, int32_t sos, double min_dist,
+                                  cvm__t3_ins *res, int32_t *other);
 
 #endif

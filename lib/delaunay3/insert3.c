@@ -270,8 +270,8 @@ static int in_closure(const cvm__tet3 *T, int32_t t, const double *x)
            && cvm__orient3d(a, b, x, d) >= 0.0 && cvm__orient3d(a, b, c, x) >= 0.0;
 }
 
-/* The walk of locate() that never crosses a constrained face; when it would
- * have to (a non-convex domain) or walks too long (a mesh that is not
+/* The walk of locate() that never leaves the mesh; when it would have to (a
+ * non-convex domain, a point outside) or walks too long (a mesh that is not
  * Delaunay), the first live finite slot whose closure holds p, in slot order.
  * -1: p is in no tetrahedron (outside the domain or in a hole). */
 static int32_t locate_constrained(cvm__tet3 *T, int32_t p)
@@ -300,7 +300,8 @@ static int32_t locate_constrained(cvm__tet3 *T, int32_t p)
             o = cvm__orient3d_inline(q[0], q[1], q[2], q[3]);
             q[f] = keep;
             if (o < 0.0) {
-                if (HAS_CFACE(T, t, f)) {
+                /* locating may cross internal facets; only the boundary stops it */
+                if (T->tt[8 * (size_t)(CVM__T3_TN(T, slot) >> 2) + 3] == CVM__T3_GHOST) {
                     blocked = 1;
                     continue;
                 }
@@ -462,8 +463,8 @@ static int32_t vanishing_vertex(cvm__tet3 *T, int32_t p)
     return best;
 }
 
-cvm_status cvm__tet3_insert_point(cvm__tet3 *T, const double *x, double min_dist, cvm__t3_ins *res,
-                                  int32_t *other)
+cvm_status cvm__tet3_insert_point(cvm__tet3 *T, const double *x, int32_t sos, double min_dist,
+                                  cvm__t3_ins *res, int32_t *other)
 {
     int32_t p = (int32_t)T->np, t;
     const int32_t *v;
@@ -476,7 +477,7 @@ cvm_status cvm__tet3_insert_point(cvm__tet3 *T, const double *x, double min_dist
     T->pt[p].x[0] = x[0], T->pt[p].x[1] = x[1], T->pt[p].x[2] = x[2];
     if (T->w)
         T->w[p] = 0.0;
-    T->orig[p] = p;
+    T->orig[p] = sos;
     T->merged[p] = -1;
     T->outid[p] = p;
     T->fate[p] = CVM__T3_PENDING;

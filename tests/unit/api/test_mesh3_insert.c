@@ -347,12 +347,23 @@ START_TEST(points_outside_on_vertices_near_or_not_finite_are_rejected)
     ck_assert_int_eq(ids[2], (cvm_index)n);
     ck_assert_int_eq(ids[3], (cvm_index)n + 1);
     ck_assert_int_eq(cvm_mesh_check(m), CVM_OK);
+    /* a point repeated in one call: the first copy is inserted */
+    {
+        double rep[9] = {0.3, 0.3, 0.3, 0.4, 0.35, 0.3, 0.3, 0.3, 0.3};
+        cvm_index rid[3];
+        ck_assert_int_eq(cvm_mesh_insert_points_nd(rid, m, rep, 3, 3, 0.0), CVM_OK);
+        ck_assert_int_eq(rid[0], (cvm_index)n + 2);
+        ck_assert_int_eq(rid[1], (cvm_index)n + 3);
+        ck_assert_int_eq(rid[2], CVM_REJECTED);
+        n += 2;
+    }
     /* NaN: the call names the point and inserts nothing */
     q[7] = NAN;
     ck_assert_int_eq(cvm_mesh_insert_points_nd(ids, m, q, 4, 3, 0.0), CVM_E_INPUT_NONFINITE);
     ck_assert_ptr_nonnull(strstr(cvm_mesh_errmsg(m), "point 2"));
     ck_assert_int_eq(cvm_mesh_count(&nv, m, CVM_ENT_VERTEX), CVM_OK);
     ck_assert_uint_eq(nv, n + 2);
+    n -= 2;
     ck_assert_int_eq(cvm_mesh_insert_points_nd(ids, m, q, 1, 3, -1.0), CVM_E_ARGUMENT);
     ck_assert_int_eq(cvm_mesh_insert_points_nd(ids, m, q, 1, 3, INFINITY), CVM_E_INPUT_NONFINITE);
     ck_assert_int_eq(cvm_mesh_insert_points_nd(ids, m, NULL, 1, 3, 0.0), CVM_E_NULL_ARG);
@@ -563,7 +574,7 @@ static int cancel_after(void *payload, cvm_stage stage, double fraction)
 /* A cancelled call keeps the points before the stop; the rest are rejected. */
 START_TEST(a_cancelled_insertion_keeps_the_points_before_it)
 {
-    size_t n = 500, i, nv;
+    size_t n = 500, i, nv, got;
     double *p = rand_pts(n, 3, 0, 1), *q = rand_pts(100, 4, 0.1, 0.8);
     cvm_index ids[100];
     cvm_mesh *m = mesh_of(p, n);
@@ -571,6 +582,18 @@ START_TEST(a_cancelled_insertion_keeps_the_points_before_it)
     ck_assert_int_eq(cvm_mesh_set_progress(m, cancel_after, 1, &left), CVM_OK);
     ck_assert_int_eq(cvm_mesh_insert_points_nd(ids, m, q, 100, 3, 0.0), CVM_INCOMPLETE_CANCELLED);
     ck_assert_ptr_nonnull(strstr(cvm_mesh_errmsg(m), "cancelled"));
+    /* min_dist 0 on a Delaunay mesh: the points go in space-filling-curve
+     * order; the 10 taken before the stop are numbered in input order */
+    for (i = 0, got = 0; i < 100; i++)
+        if (ids[i] != CVM_REJECTED)
+            ck_assert_int_eq(ids[i], (cvm_index)(n + got++));
+    ck_assert_uint_eq(got, 10);
+    /* min_dist > 0: input order, the first 10 */
+    cvm_mesh_free(m);
+    m = mesh_of(p, n);
+    left = 10;
+    ck_assert_int_eq(cvm_mesh_set_progress(m, cancel_after, 1, &left), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_insert_points_nd(ids, m, q, 100, 3, 1e-9), CVM_INCOMPLETE_CANCELLED);
     for (i = 0; i < 100; i++)
         ck_assert_int_eq(ids[i], i < 10 ? (cvm_index)(n + i) : CVM_REJECTED);
     ck_assert_int_eq(cvm_mesh_count(&nv, m, CVM_ENT_VERTEX), CVM_OK);
