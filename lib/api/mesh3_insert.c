@@ -86,39 +86,34 @@ static cvm_status constrained_faces(cvm_mesh *m, const int32_t *nbr, uint8_t **o
     return s;
 }
 
-/* The store's mesh back into g: the vertices nv.. T->np - 1 appended as
- * vertices fin[v - nv] (weight 0), the tetrahedra turned and sorted as cvm_mesh_triangulate() orders them,
- * with their attributes; an unconstrained mesh gets its hull faces again. All
- * or nothing: CVM_OK, or CVM_E_NOMEM with g unchanged. */
-static cvm_status write_back(cvm_mesh *m, cvm__tet3 *T, const int32_t *fin)
+/* The store's mesh back into g: its vertices nv .. np - 1 become vertices
+ * fin[v - nv] (weight 0); the tetrahedra are turned and sorted as
+ * cvm_mesh_triangulate() orders them, with their attributes; an unconstrained
+ * mesh gets its hull faces again. All or nothing: CVM_OK, or CVM_E_NOMEM
+ * (or CVM_E_INTERNAL) with g unchanged. */
+static cvm_status write_back(cvm_mesh *m, const cvm__tet3 *store, size_t np, const int32_t *fin)
 {
     cvm__mesh3 *g = m->m3;
     cvm__ins3_tet *rec = NULL;
-    double *xyz = NULL, *w = NULL, *tattr = NULL;
+    double *xyz = NULL, *w = NULL, *tattr = NULL, *attr = NULL;
     int32_t *tet = NULL, *nbr = NULL, *face = NULL;
-    size_t i, nt = 0, nface = 0, nv = T->np;
-    int k;
+    size_t i, nt = cvm__tet3_count_finite(store), nface = 0;
     cvm_status s = CVM_E_NOMEM;
-    for (i = 0; i < T->nslot; i++)
-        nt += T->tt[8 * i] != CVM__T3_DEAD && T->tt[8 * i + 3] != CVM__T3_GHOST;
     rec = cvm__malloc(&m->ctx, nt * sizeof *rec);
     tet = cvm__malloc(&m->ctx, 4 * nt * sizeof *tet);
-    xyz = cvm__malloc(&m->ctx, 3 * nv * sizeof *xyz);
+    xyz = cvm__malloc(&m->ctx, 3 * np * sizeof *xyz);
     if (g->w)
-        w = cvm__malloc(&m->ctx, nv * sizeof *w);
-    if (g->tattr)
+        w = cvm__malloc(&m->ctx, np * sizeof *w);
+    if (g->tattr) {
         tattr = cvm__malloc(&m->ctx, nt * sizeof *tattr);
-    if (!rec || !tet || !xyz || (g->w && !w) || (g->tattr && !tattr))
+        attr = cvm__malloc(&m->ctx, nt * sizeof *attr);
+    }
+    if (!rec || !tet || !xyz || (g->w && !w) || (g->tattr && (!tattr || !attr)))
         goto done;
-    for (i = 0, nt = 0; i < T->nslot; i++) {
-        const int32_t *v = T->tt + 8 * i;
-        if (v[0] == CVM__T3_DEAD || v[3] == CVM__T3_GHOST)
-            continue;
-        for (k = 0; k < 4; k++)
-            rec[nt].v[k] = (size_t)v[k] < g->nv ? v[k] : fin[(size_t)v[k] - g->nv];
-        cvm__tet3_canonical_turn(rec[nt].v);
-        rec[nt].attr = T->sattr ? T->sattr[i] : 0.0;
-        nt++;
+    cvm__tet3_export(store, g->nv, fin, tet, attr, xyz, w);
+    for (i = 0; i < nt; i++) {
+        memcpy(rec[i].v, tet + 4 * i, sizeof rec[i].v);
+        rec[i].attr = attr ? attr[i] : 0.0;
     }
     qsort(rec, nt, sizeof *rec, cmp_ins3_tet);
     for (i = 0; i < nt; i++) {
@@ -126,10 +121,6 @@ static cvm_status write_back(cvm_mesh *m, cvm__tet3 *T, const int32_t *fin)
         if (tattr)
             tattr[i] = rec[i].attr;
     }
-    for (i = 0; i < nv; i++)
-        memcpy(xyz + 3 * (i < g->nv ? i : (size_t)fin[i - g->nv]), T->pt[i].x, 3 * sizeof *xyz);
-    if (w) /* weighted calls insert in input order: fin is the identity */
-        memcpy(w, T->w, nv * sizeof *w);
     if (g->delaunay) { /* the hull may have grown by points on it: its faces again */
         if ((s = cvm__mesh3_adjacency(&m->ctx, tet, nt, &nbr)) != CVM_OK) {
             if (s != CVM_E_NOMEM)
@@ -154,7 +145,7 @@ static cvm_status write_back(cvm_mesh *m, cvm__tet3 *T, const int32_t *fin)
     cvm__free(&m->ctx, g->w);
     cvm__free(&m->ctx, g->tattr);
     g->xyz = xyz, g->tet = tet, g->w = w, g->tattr = tattr;
-    g->nv = nv, g->ntet = nt;
+    g->nv = np, g->ntet = nt;
     xyz = w = tattr = NULL;
     tet = NULL;
     s = CVM_OK;
@@ -167,6 +158,7 @@ done_set:
     cvm__free(&m->ctx, xyz);
     cvm__free(&m->ctx, w);
     cvm__free(&m->ctx, tattr);
+    cvm__free(&m->ctx, attr);
     cvm__free(&m->ctx, nbr);
     cvm__free(&m->ctx, face);
     return s;
@@ -318,7 +310,7 @@ cvm_status cvm__mesh3_insert_points(cvm_index *ids_out, cvm_mesh *m, const doubl
     for (i = 0, k = 0; i < count; i++)
         if (ip[i] >= 0)
             fin[(size_t)ip[i] - nv0] = (int32_t)(nv0 + k++);
-    s = done ? write_back(m, &T, fin) : CVM_OK;
+    s = done ? write_back(m, &T, T.np, fin) : CVM_OK;
     cvm__tet3_free(&T);
     if (!s && ids_out)
         for (i = 0; i < count; i++)

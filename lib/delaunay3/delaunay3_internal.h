@@ -206,6 +206,15 @@ cvm_status cvm__tet3_load(cvm__tet3 *T, const double *xyz, const double *w, size
                           const int32_t *tet, size_t ntet, const int32_t *nbr, const uint8_t *cons,
                           const double *attr);
 
+/* The finite tetrahedra of the store. */
+size_t cvm__tet3_count_finite(const cvm__tet3 *T);
+/* The finite tetrahedra into tet (4 each, in slot order, turned as
+ * cvm__tet3_copy_tets() turns them) with their attributes into attr (when not
+ * NULL; 0 without), the points into xyz (3 * T->np) and the weights into w
+ * (when both exist); a vertex v >= nv_old is renamed fin[v - nv_old]. */
+void cvm__tet3_export(const cvm__tet3 *T, size_t nv_old, const int32_t *fin, int32_t *tet,
+                      double *attr, double *xyz, double *w);
+
 /* What became of a point given to cvm__tet3_insert_point(). */
 typedef enum cvm__t3_ins {
     CVM__T3_INS_DONE = 0,     /* inserted as vertex T->np - 1 */

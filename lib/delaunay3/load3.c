@@ -101,3 +101,35 @@ cvm_status cvm__tet3_load(cvm__tet3 *T, const double *xyz, const double *w, size
     T->walk = UINT64_C(0x9E3779B97F4A7C15);
     return CVM_OK;
 }
+
+size_t cvm__tet3_count_finite(const cvm__tet3 *T)
+{
+    size_t i, n = 0;
+    for (i = 0; i < T->nslot; i++)
+        n += T->tt[8 * i] != CVM__T3_DEAD && T->tt[8 * i + 3] != CVM__T3_GHOST;
+    return n;
+}
+
+void cvm__tet3_export(const cvm__tet3 *T, size_t nv_old, const int32_t *fin, int32_t *tet,
+                      double *attr, double *xyz, double *w)
+{
+    size_t i, nt = 0;
+    int k;
+    for (i = 0; i < T->nslot; i++) {
+        const int32_t *v = T->tt + 8 * i;
+        if (v[0] == CVM__T3_DEAD || v[3] == CVM__T3_GHOST)
+            continue;
+        for (k = 0; k < 4; k++)
+            tet[4 * nt + k] = (size_t)v[k] < nv_old ? v[k] : fin[(size_t)v[k] - nv_old];
+        cvm__tet3_canonical_turn(tet + 4 * nt);
+        if (attr)
+            attr[nt] = T->sattr ? T->sattr[i] : 0.0;
+        nt++;
+    }
+    for (i = 0; i < T->np; i++) {
+        size_t to = i < nv_old ? i : (size_t)fin[i - nv_old];
+        memcpy(xyz + 3 * to, T->pt[i].x, 3 * sizeof *xyz);
+        if (w && T->w)
+            w[to] = T->w[i];
+    }
+}
