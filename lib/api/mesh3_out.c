@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "api/mesh3_internal.h"
+#include "api/store.h"
 #include "geom/geom_internal.h"
 #include "geom/measure3.h"
 
@@ -13,9 +14,9 @@ cvm_status cvm__mesh3_count(size_t *out, const cvm_mesh *m, cvm_entity kind)
 {
     const cvm__mesh3 *g = m->m3;
     switch (kind) {
-    case CVM_ENT_VERTEX: *out = g->have ? g->nv : 0; return CVM_OK;
+    case CVM_ENT_VERTEX: *out = cvm__store_nv(m); return CVM_OK;
     case CVM_ENT_TETRAHEDRON:
-    case CVM_ENT_CELL: *out = g->have ? g->ntet : 0; return CVM_OK;
+    case CVM_ENT_CELL: *out = cvm__store_nslots(m); return CVM_OK;
     case CVM_ENT_TRIANGLE: *out = g->have ? g->nface : 0; return CVM_OK;
     case CVM_ENT_INPUT_POINT: *out = g->in.np; return CVM_OK;
     case CVM_ENT_FACET: *out = g->in.nfacet; return CVM_OK;
@@ -35,8 +36,8 @@ const double *cvm__mesh3_points(const cvm_mesh *m, size_t *nv)
 {
     const cvm__mesh3 *g = m->m3;
     if (g->have) {
-        *nv = g->nv;
-        return g->xyz;
+        *nv = cvm__store_nv(m);
+        return cvm__store_points(m);
     }
     *nv = g->in.np;
     return g->in.xyz;
@@ -62,9 +63,9 @@ cvm_status cvm__mesh3_copy_cells(cvm_index *dst, size_t dst_len, const cvm_mesh 
     const int32_t *src;
     size_t n, per;
     if (kind == CVM_ENT_TETRAHEDRON || kind == CVM_ENT_CELL) {
-        src = g->tet;
-        n = g->have ? g->ntet : 0;
-        per = 4;
+        n = cvm__store_nslots(m);
+        src = n ? cvm__store_cell(m, 0) : NULL;
+        per = (size_t)cvm__store_cell_size(m);
     } else if (kind == CVM_ENT_TRIANGLE) {
         src = g->face;
         n = g->have ? g->nface : 0;
