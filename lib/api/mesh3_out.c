@@ -122,15 +122,16 @@ cvm_status cvm__mesh3_check(cvm_mesh *m)
     if (!g->have)
         return cvm__error(&m->ctx, CVM_E_STATE, CVM_ENT_NONE, -1,
                           "nothing to check: call cvm_mesh_triangulate() first");
-    for (t = 0; t < g->ntet; t++) {
-        const int32_t *v = g->tet + 4 * t;
+    for (t = 0; t < cvm__store_nslots(m); t++) {
+        const int32_t *v = cvm__store_cell(m, t);
         for (i = 0; i < 4; i++)
-            if (v[i] < 0 || (size_t)v[i] >= g->nv)
+            if (v[i] < 0 || (size_t)v[i] >= cvm__store_nv(m))
                 return cvm__error(&m->ctx, CVM_E_INTERNAL, CVM_ENT_TETRAHEDRON, (int64_t)t,
                                   "check: tetrahedron %lu names vertex %ld of %lu",
                                   (unsigned long)t, (long)v[i], (unsigned long)g->nv);
-        if (cvm__orient3d(g->xyz + 3 * v[0], g->xyz + 3 * v[1], g->xyz + 3 * v[2],
-                          g->xyz + 3 * v[3]) <= 0)
+        if (cvm__orient3d(cvm__store_point(m, (size_t)v[0]), cvm__store_point(m, (size_t)v[1]),
+                          cvm__store_point(m, (size_t)v[2]), cvm__store_point(m, (size_t)v[3]))
+            <= 0)
             return cvm__error(&m->ctx, CVM_E_INTERNAL, CVM_ENT_TETRAHEDRON, (int64_t)t,
                               "check: tetrahedron %lu (%ld, %ld, %ld, %ld) is not positively "
                               "oriented", (unsigned long)t, (long)v[0], (long)v[1], (long)v[2],
@@ -223,14 +224,14 @@ cvm_status cvm__mesh3_measure(double *out, cvm_mesh *m, cvm_measure which)
     if ((which == CVM_MEASURE_CIRCUMCENTRE_OUTSIDE_BOUNDARY_PCT) &&
         (s = cvm__mesh3_adjacency(&m->ctx, g->tet, g->ntet, &nbr)))
         return s;
-    for (t = 0; t < g->ntet; t++) {
-        const int32_t *v = g->tet + 4 * t;
-        const double *P[4];
+    for (t = 0; t < cvm__store_nslots(m); t++) {
+        const int32_t *v = cvm__store_cell(m, t);
+        const double *P[4], *wv = cvm__store_weights(m);
         double lo, hi, w4[4];
         int i, j, bnd = 0;
         for (i = 0; i < 4; i++) {
-            P[i] = g->xyz + 3 * v[i];
-            w4[i] = g->w ? g->w[v[i]] : 0;
+            P[i] = cvm__store_point(m, (size_t)v[i]);
+            w4[i] = wv ? wv[v[i]] : 0;
             if (nbr && nbr[4 * t + i] < 0)
                 bnd = 1;
         }
