@@ -1100,7 +1100,8 @@ CVM_API cvm_status cvm_mesh_triangulate(cvm_mesh *m);
  * outside the domain, on an existing vertex, or closer than @p min_dist to an
  * existing vertex is rejected; with weights set (cvm_mesh_set_weights()) new
  * points get weight 0, and a point whose power cell would be empty is rejected
- * too. A point exactly on a segment splits it.
+ * too. A point exactly on a segment splits it. A 3D mesh takes its points
+ * through cvm_mesh_insert_points_nd() (this call gives CVM_E_UNSUPPORTED there).
  *
  * @param ids_out  count entries: the new vertex id of each point, or CVM_REJECTED;
  *                 may be NULL.
@@ -1123,16 +1124,62 @@ CVM_API cvm_status cvm_mesh_insert_points(cvm_index *ids_out, cvm_mesh *m, const
  * cvm_mesh_insert_points() in the mesh's dimension: dim coordinates per point,
  * the same rules, stops and statuses.
  *
+ * 3D (a mesh made by cvm_mesh_triangulate() from 3D points or a surface): each
+ * point is inserted by a Bowyer-Watson cavity, the tetrahedra whose circumsphere
+ * (orthosphere with weights) contains it by the exact predicates with symbolic
+ * perturbation by vertex id, grown from the tetrahedron holding it and never
+ * across a constrained face (a face of the surface, internal facets included).
+ * - Rejected (CVM_REJECTED): a point strictly outside the convex hull of a
+ *   point set's tetrahedralisation (as in 2D; a point on the hull is inserted
+ *   and splits the hull face), outside a surface's mesh or in one of its
+ *   holes, on a constrained face or edge (a surface's, which is never split),
+ *   on an existing vertex, closer than @p min_dist to a vertex of its cavity,
+ *   with weights a point whose power cell would be empty or that would empty
+ *   the power cell of a vertex (no vertex ever leaves the mesh).
+ * - min_dist rule: the squared distances to the vertices of the point's
+ *   cavity, rounded to double as (dx^2 + dy^2 + dz^2), against min_dist^2 (the
+ *   2D rule). In a Delaunay tetrahedralisation the nearest vertex is always a
+ *   cavity vertex, so this is the test against every vertex; in a regular or
+ *   constrained mesh a nearer vertex that is not in the cavity (behind a
+ *   constrained face, or a vertex whose power cell vanished) is not seen.
+ * - Result: new vertices take the ids nv, nv + 1, ... in input order (rejected
+ *   points take none) with weight 0; the tetrahedra come back in the canonical
+ *   order of cvm_mesh_triangulate() (deterministic). On a point set's Delaunay
+ *   tetrahedralisation the result is the Delaunay tetrahedralisation of the
+ *   vertices and the inserted points, byte for byte what cvm_mesh_triangulate()
+ *   makes of them; with weights, the regular one (cvm_mesh_check() verifies
+ *   both). On a surface's mesh, every surface triangle and internal facet stays
+ *   a face with its marker, a new tetrahedron takes the region attribute of the
+ *   region it is in, each face between a new tetrahedron and an old one is
+ *   locally Delaunay (the old one does not conflict with the point), and a mesh
+ *   that was constrained Delaunay with the same perturbation stays so (it then
+ *   becomes the constrained Delaunay tetrahedralisation with the points). A mesh
+ *   that is not (TetGen's recovery breaks cospherical ties its own way) can
+ *   need a smaller cavity: tetrahedra are left out of it until every face of
+ *   its boundary sees the point strictly (new tetrahedra always positive).
+ *   cvm_mesh_check() checks orientation, adjacency and every surface face; the
+ *   Delaunay property it checks only on a point set's mesh.
+ * - Cost: the mesh is loaded into the kernel's store once per call (linear
+ *   in its size): insert many points per call.
+ *
  * @param ids_out  count entries (new vertex id or CVM_REJECTED); may be NULL.
  * @param m        mesh handle, triangulated; not NULL.
  * @param coords   dim*count coordinates. Ownership: read only during the call.
  * @param count    number of points.
- * @param dim      2; 3 gives CVM_E_UNSUPPORTED (no 3D kernel yet).
+ * @param dim      the mesh's dimension, 2 or 3 (cvm_mesh_dim()).
  * @param min_dist as cvm_mesh_insert_points(). Units: length.
+ * Stops: points inserted before a stop stay (ids written); the rest get CVM_REJECTED.
  * Thread-safety: must not run concurrently with any other call on @p m.
  * @return those of cvm_mesh_insert_points(), and
- *         CVM_E_ARGUMENT     dim is neither 2 nor 3 (nothing inserted)
- *         CVM_E_UNSUPPORTED  dim is 3 (nothing inserted; message says so)
+ *         CVM_E_ARGUMENT     dim is neither 2 nor 3, or not the mesh's (nothing inserted)
+ *         CVM_E_UNSUPPORTED  dim 3 on a 2D mesh (nothing inserted; message says so)
+ *         3D: CVM_E_INPUT_NONFINITE names the point and its coordinate (nothing
+ *         inserted); CVM_E_INPUT_DEGENERATE a nonzero coordinate more than 2^100
+ *         below the largest magnitude of the mesh and the points (beyond the exact
+ *         predicates; nothing inserted); CVM_E_TOO_LARGE more than 60 million
+ *         vertices; CVM_E_NOMEM: the points before it stay, except when memory
+ *         ran out while the mesh was written back: then nothing is inserted and
+ *         every id is CVM_REJECTED
  * @since 0.2
  */
 CVM_API cvm_status cvm_mesh_insert_points_nd(cvm_index *ids_out, cvm_mesh *m, const double *coords,

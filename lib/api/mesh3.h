@@ -20,6 +20,9 @@ cvm_status cvm__mesh3_set_regions(cvm_mesh *m, const double *r, size_t n); /* 5 
 cvm_status cvm__mesh3_read(cvm_mesh *m, const char *path);
 cvm_status cvm__mesh3_triangulate(cvm_mesh *m);
 cvm_status cvm__mesh3_check(cvm_mesh *m);
+/* cvm_mesh_insert_points_nd() with dim 3 (mesh3_insert.c); xyz: 3 per point. */
+cvm_status cvm__mesh3_insert_points(cvm_index *ids_out, cvm_mesh *m, const double *xyz,
+                                    size_t count, double min_dist);
 cvm_status cvm__mesh3_set_weights(cvm_mesh *m, const double *w, size_t n);
 cvm_status cvm__mesh3_write_to_set(cvm_mesh *m, const char *path, cvm__write_set *ws);
 cvm_status cvm__mesh3_measure(double *out, cvm_mesh *m, cvm_measure which);

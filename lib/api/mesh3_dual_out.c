@@ -9,6 +9,7 @@
 
 #include "api/mesh3_dual.h"
 #include "api/output_internal.h"
+#include "api/store.h"
 #include "geom/measure3.h"
 #include "io/io_internal.h"
 
@@ -24,19 +25,21 @@ static cvm_status build(cvm__ctx *tmp, const cvm_mesh *m, cvm__dual3 *d)
 
 cvm_status cvm__mesh3_copy_dual_vertices(double *dst, size_t dst_len, const cvm_mesh *m)
 {
-    const cvm__mesh3 *g = m->m3;
-    size_t n = g->have ? g->ntet : 0, t;
+    const double *w = cvm__store_weights(m);
+    size_t n = cvm__store_nslots(m), t;
     cvm_status s;
     if ((s = cvm__room(dst, dst_len, 3 * n)))
         return s;
     for (t = 0; t < n; t++) {
-        const int32_t *v = g->tet + 4 * t;
+        const int32_t *v = cvm__store_cell(m, t);
         double w4[4];
         int i;
         for (i = 0; i < 4; i++)
-            w4[i] = g->w ? g->w[v[i]] : 0;
-        (void)cvm__tet_power_centre(g->xyz + 3 * v[0], g->xyz + 3 * v[1], g->xyz + 3 * v[2],
-                                    g->xyz + 3 * v[3], w4, dst + 3 * t);
+            w4[i] = w ? w[v[i]] : 0;
+        (void)cvm__tet_power_centre(cvm__store_point(m, (size_t)v[0]),
+                                    cvm__store_point(m, (size_t)v[1]),
+                                    cvm__store_point(m, (size_t)v[2]),
+                                    cvm__store_point(m, (size_t)v[3]), w4, dst + 3 * t);
     }
     return CVM_OK;
 }

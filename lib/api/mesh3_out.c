@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "api/mesh3_internal.h"
+#include "api/store.h"
 #include "geom/geom_internal.h"
 #include "geom/measure3.h"
 
@@ -13,9 +14,9 @@ cvm_status cvm__mesh3_count(size_t *out, const cvm_mesh *m, cvm_entity kind)
 {
     const cvm__mesh3 *g = m->m3;
     switch (kind) {
-    case CVM_ENT_VERTEX: *out = g->have ? g->nv : 0; return CVM_OK;
+    case CVM_ENT_VERTEX: *out = cvm__store_nv(m); return CVM_OK;
     case CVM_ENT_TETRAHEDRON:
-    case CVM_ENT_CELL: *out = g->have ? g->ntet : 0; return CVM_OK;
+    case CVM_ENT_CELL: *out = cvm__store_nslots(m); return CVM_OK;
     case CVM_ENT_TRIANGLE: *out = g->have ? g->nface : 0; return CVM_OK;
     case CVM_ENT_INPUT_POINT: *out = g->in.np; return CVM_OK;
     case CVM_ENT_FACET: *out = g->in.nfacet; return CVM_OK;
@@ -35,8 +36,8 @@ const double *cvm__mesh3_points(const cvm_mesh *m, size_t *nv)
 {
     const cvm__mesh3 *g = m->m3;
     if (g->have) {
-        *nv = g->nv;
-        return g->xyz;
+        *nv = cvm__store_nv(m);
+        return cvm__store_points(m);
     }
     *nv = g->in.np;
     return g->in.xyz;
@@ -62,9 +63,9 @@ cvm_status cvm__mesh3_copy_cells(cvm_index *dst, size_t dst_len, const cvm_mesh 
     const int32_t *src;
     size_t n, per;
     if (kind == CVM_ENT_TETRAHEDRON || kind == CVM_ENT_CELL) {
-        src = g->tet;
-        n = g->have ? g->ntet : 0;
-        per = 4;
+        n = cvm__store_nslots(m);
+        src = n ? cvm__store_cell(m, 0) : NULL;
+        per = (size_t)cvm__store_cell_size(m);
     } else if (kind == CVM_ENT_TRIANGLE) {
         src = g->face;
         n = g->have ? g->nface : 0;
@@ -121,15 +122,16 @@ cvm_status cvm__mesh3_check(cvm_mesh *m)
     if (!g->have)
         return cvm__error(&m->ctx, CVM_E_STATE, CVM_ENT_NONE, -1,
                           "nothing to check: call cvm_mesh_triangulate() first");
-    for (t = 0; t < g->ntet; t++) {
-        const int32_t *v = g->tet + 4 * t;
+    for (t = 0; t < cvm__store_nslots(m); t++) {
+        const int32_t *v = cvm__store_cell(m, t);
         for (i = 0; i < 4; i++)
-            if (v[i] < 0 || (size_t)v[i] >= g->nv)
+            if (v[i] < 0 || (size_t)v[i] >= cvm__store_nv(m))
                 return cvm__error(&m->ctx, CVM_E_INTERNAL, CVM_ENT_TETRAHEDRON, (int64_t)t,
                                   "check: tetrahedron %lu names vertex %ld of %lu",
                                   (unsigned long)t, (long)v[i], (unsigned long)g->nv);
-        if (cvm__orient3d(g->xyz + 3 * v[0], g->xyz + 3 * v[1], g->xyz + 3 * v[2],
-                          g->xyz + 3 * v[3]) <= 0)
+        if (cvm__orient3d(cvm__store_point(m, (size_t)v[0]), cvm__store_point(m, (size_t)v[1]),
+                          cvm__store_point(m, (size_t)v[2]), cvm__store_point(m, (size_t)v[3]))
+            <= 0)
             return cvm__error(&m->ctx, CVM_E_INTERNAL, CVM_ENT_TETRAHEDRON, (int64_t)t,
                               "check: tetrahedron %lu (%ld, %ld, %ld, %ld) is not positively "
                               "oriented", (unsigned long)t, (long)v[0], (long)v[1], (long)v[2],
@@ -222,14 +224,14 @@ cvm_status cvm__mesh3_measure(double *out, cvm_mesh *m, cvm_measure which)
     if ((which == CVM_MEASURE_CIRCUMCENTRE_OUTSIDE_BOUNDARY_PCT) &&
         (s = cvm__mesh3_adjacency(&m->ctx, g->tet, g->ntet, &nbr)))
         return s;
-    for (t = 0; t < g->ntet; t++) {
-        const int32_t *v = g->tet + 4 * t;
-        const double *P[4];
+    for (t = 0; t < cvm__store_nslots(m); t++) {
+        const int32_t *v = cvm__store_cell(m, t);
+        const double *P[4], *wv = cvm__store_weights(m);
         double lo, hi, w4[4];
         int i, j, bnd = 0;
         for (i = 0; i < 4; i++) {
-            P[i] = g->xyz + 3 * v[i];
-            w4[i] = g->w ? g->w[v[i]] : 0;
+            P[i] = cvm__store_point(m, (size_t)v[i]);
+            w4[i] = wv ? wv[v[i]] : 0;
             if (nbr && nbr[4 * t + i] < 0)
                 bnd = 1;
         }

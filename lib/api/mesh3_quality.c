@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "api/mesh3_dual.h"
+#include "api/store.h"
 #include "geom/measure3.h"
 
 #define NBIN_DIHEDRAL 18
@@ -75,10 +76,10 @@ cvm_status cvm__mesh3_quality(double *out, cvm_mesh *m, cvm_measure which)
         return s;
     if (which == CVM_MEASURE_MEAN_RADIUS_EDGE) {
         double sum = 0;
-        for (t = 0; t < g->ntet; t++) {
-            const int32_t *v = g->tet + 4 * t;
-            sum += cvm__tet_radius_edge(g->xyz + 3 * v[0], g->xyz + 3 * v[1], g->xyz + 3 * v[2],
-                                        g->xyz + 3 * v[3]);
+        for (t = 0; t < cvm__store_nslots(m); t++) {
+            const int32_t *v = cvm__store_cell(m, t);
+            sum += cvm__tet_radius_edge(cvm__store_point(m, v[0]), cvm__store_point(m, v[1]),
+                                        cvm__store_point(m, v[2]), cvm__store_point(m, v[3]));
         }
         *out = g->ntet ? sum / (double)g->ntet : 0;
         return CVM_OK;
@@ -121,12 +122,12 @@ cvm_status cvm__mesh3_histogram(double *dst, size_t dst_len, cvm_mesh *m, cvm_hi
         return CVM_OK;
     }
     memset(dst, 0, NBIN_DIHEDRAL * sizeof *dst);
-    for (t = 0; t < g->ntet; t++) {
-        const int32_t *v = g->tet + 4 * t;
+    for (t = 0; t < cvm__store_nslots(m); t++) {
+        const int32_t *v = cvm__store_cell(m, t);
         double a[6];
         int k;
-        cvm__tet_dihedrals_deg(g->xyz + 3 * v[0], g->xyz + 3 * v[1], g->xyz + 3 * v[2],
-                               g->xyz + 3 * v[3], a);
+        cvm__tet_dihedrals_deg(cvm__store_point(m, v[0]), cvm__store_point(m, v[1]),
+                               cvm__store_point(m, v[2]), cvm__store_point(m, v[3]), a);
         for (k = 0; k < 6; k++) {
             int b = (int)(a[k] / 10);
             dst[b < 0 ? 0 : b > NBIN_DIHEDRAL - 1 ? NBIN_DIHEDRAL - 1 : b] += 1;

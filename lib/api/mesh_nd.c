@@ -63,7 +63,7 @@ cvm_status cvm_mesh_insert_points_nd(cvm_index *ids_out, cvm_mesh *m, const doub
 {
     cvm_status s = begin_nd(m, coords, count, "coords", dim, "cvm_mesh_insert_points_nd");
     if (!s && m->m3)
-        return cvm__mesh3_unsupported(m, "cvm_mesh_insert_points_nd");
+        return cvm__mesh3_insert_points(ids_out, m, coords, count, min_dist);
     return s ? s : cvm_mesh_insert_points(ids_out, m, coords, count, min_dist);
 }
 

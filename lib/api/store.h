@@ -3,9 +3,11 @@
  * counts, views of points, weights, cells, neighbours, segments and
  * attributes, iteration over the domain's cells, and the store operations
  * the public calls need (create, clear, locate, insert, weights, check).
- * The 2D store (cvm__tri2 of lib/delaunay) sits behind it in store2.c; a 3D
- * tetrahedral store (lib/delaunay3) joins by dimension: each accessor then
- * branches on cvm__store_dim(m), and the API files above stay as they are.
+ * The 2D store (cvm__tri2 of lib/delaunay) sits behind it in store2.c; the 3D
+ * handle's tetrahedra (m->m3, lib/api/mesh3_internal.h: flat arrays written
+ * by lib/delaunay3 and lib/tetgen) join by dimension: the accessors of the
+ * first section branch on cvm__store_dim(m). The ghost, adjacency and face
+ * accessors and the operations are 2D only so far.
  *
  * Vocabulary, the same in every dimension: a *vertex* has cvm__store_dim(m)
  * coordinates (and one weight when weights are set); a *cell* is a simplex
@@ -25,14 +27,15 @@
 #define CVM_API_STORE_H
 
 #include "api_internal.h"
+#include "api/mesh3_internal.h"
 
 /* ---- counts and views (valid until the next call that changes m) ---- */
 
-/* Dimension of the store: 2 (triangles). */
+/* Dimension of the store: 2 (triangles of m->tri) or 3 (the tetrahedra of a
+ * 3D handle, m->m3: dense, every slot a cell of the domain, no ghosts). */
 static inline int cvm__store_dim(const cvm_mesh *m)
 {
-    (void)m;
-    return 2;
+    return m->m3 ? 3 : 2;
 }
 /* Vertices per cell (dim + 1); also faces per cell. */
 static inline int cvm__store_cell_size(const cvm_mesh *m)
@@ -42,36 +45,43 @@ static inline int cvm__store_cell_size(const cvm_mesh *m)
 /* Vertices: the input less duplicates, then Steiner points. */
 static inline size_t cvm__store_nv(const cvm_mesh *m)
 {
+    if (m->m3)
+        return m->m3->have ? m->m3->nv : 0;
     return m->tri.nv;
 }
 /* Cell slots (live or not). */
 static inline size_t cvm__store_nslots(const cvm_mesh *m)
 {
+    if (m->m3)
+        return m->m3->have ? m->m3->ntet : 0;
     return m->tri.nt;
 }
 /* Coordinates of every vertex, dim per vertex. */
 static inline const double *cvm__store_points(const cvm_mesh *m)
 {
-    return m->tri.xy;
+    return m->m3 ? m->m3->xyz : m->tri.xy;
 }
 /* Coordinates of vertex v. */
 static inline const double *cvm__store_point(const cvm_mesh *m, size_t v)
 {
-    return m->tri.xy + 2 * v;
+    return m->m3 ? m->m3->xyz + 3 * v : m->tri.xy + 2 * v;
 }
 /* Weight of every vertex, or NULL when no weights are set. */
 static inline const double *cvm__store_weights(const cvm_mesh *m)
 {
-    return m->tri.w;
+    return m->m3 ? m->m3->w : m->tri.w;
 }
-/* Vertices of the cell in slot t (counter-clockwise in 2D). */
+/* Vertices of the cell in slot t (counter-clockwise in 2D, positively
+ * oriented in 3D). */
 static inline const int32_t *cvm__store_cell(const cvm_mesh *m, size_t t)
 {
-    return m->tri.tv + 3 * t;
+    return m->m3 ? m->m3->tet + 4 * t : m->tri.tv + 3 * t;
 }
 /* 1 when slot t holds a cell of the domain (0 for t < 0). */
 static inline int cvm__store_in_domain(const cvm_mesh *m, int32_t t)
 {
+    if (m->m3)
+        return t >= 0 && (size_t)t < cvm__store_nslots(m);
     return t >= 0 && cvm__tri2_in_domain(&m->tri, t);
 }
 /* 1 when slot t holds a ghost cell (beyond the convex hull). */
@@ -95,12 +105,14 @@ static inline int32_t cvm__store_face_segment(const cvm_mesh *m, size_t t, int j
  * without regions. */
 static inline double *cvm__store_cell_attributes(const cvm_mesh *m)
 {
-    return m->tri.ta;
+    return m->m3 ? m->m3->tattr : m->tri.ta;
 }
 /* The first domain cell after slot t (t = -1: the first), or -1 after the last:
  * for (t = cvm__store_next_cell(m, -1); t >= 0; t = cvm__store_next_cell(m, t)). */
 static inline int32_t cvm__store_next_cell(const cvm_mesh *m, int32_t t)
 {
+    if (m->m3)
+        return (size_t)(t + 1) < cvm__store_nslots(m) ? t + 1 : -1;
     for (t++; (size_t)t < m->tri.nt; t++)
         if (cvm__tri2_in_domain(&m->tri, t))
             return t;

@@ -86,7 +86,11 @@ typedef struct cvm__tet3 {
 
     int32_t *tt;      /* 8 per slot (one half cache line): 4 vertex ids (internal, ghost last;
                        * DEAD in the first when free), then 4 neighbour slots 4 * tet + face */
-    uint8_t *tmark;   /* per slot: 1 in the current cavity, 2 tested outside it, else 0 */
+    uint8_t *tmark;   /* per slot: 1 in the current cavity, 2 tested outside it, 3 left out of
+                       * it (constrained insertion), else 0 */
+    uint8_t *cface;   /* per slot, or NULL: bit f set when face f is constrained (a loaded
+                       * constrained mesh, cvm__tet3_load()) */
+    double *sattr;    /* per slot, or NULL: the region attribute of a loaded mesh */
     size_t nslot;     /* slots in use or free, below cap */
     size_t cap;
     int32_t *freeslot;
@@ -97,6 +101,8 @@ typedef struct cvm__tet3 {
     size_t stackcap;
     int32_t *dead;
     size_t ndead, deadcap;
+    int32_t *excl;    /* constrained insertion: tetrahedra left out of the cavity (tmark 3) */
+    size_t nexcl, exclcap;
     cvm__t3_bface *bf;
     size_t nbf, bfcap;
     cvm__t3_hent *hash;
@@ -159,6 +165,8 @@ void cvm__tet3_point_fates(const cvm__tet3 *T, uint8_t *fate_out, int32_t *into_
  * Identical input gives identical bytes whatever the seed or insertion order.
  * @return CVM_OK or CVM_E_NOMEM (a temporary copy of the output and n / 2048 + 2048 counters). */
 cvm_status cvm__tet3_copy_tets(cvm__tet3 *T, int32_t *dst);
+/* The canonical turn of one tetrahedron used by cvm__tet3_copy_tets(). */
+void cvm__tet3_canonical_turn(int32_t *t);
 
 /* Re-verify the store with exact predicates: live slots, symmetric adjacency
  * whose shared faces match, every finite tetrahedron positively oriented,
@@ -182,5 +190,56 @@ cvm_status cvm__tet3_brio_order(cvm__ctx *ctx, const double *xyz, size_t n, uint
                                 int32_t *order);
 /* Insert internal point p into a store that already has a first tetrahedron. */
 cvm_status cvm__tet3_insert(cvm__tet3 *T, int32_t p);
+
+/*
+ * Load an existing mesh for point insertion (cvm__tet3_insert_point()): nv
+ * vertices xyz (weights w, or NULL), ntet positively oriented tetrahedra tet
+ * with face adjacency nbr (4 u + g, or -1 on the boundary), room for cap >= nv
+ * points. Internal ids are the vertex ids, and so are the symbolic-perturbation
+ * indices. Every boundary face is closed by a ghost. cons (4 per tetrahedron,
+ * nonzero = constrained face), or NULL for an unconstrained Delaunay / regular
+ * mesh; boundary faces of a constrained mesh are constrained. attr: one per
+ * tetrahedron, or NULL. CVM_OK or CVM_E_NOMEM (no message; the store stays
+ * freeable).
+ */
+cvm_status cvm__tet3_load(cvm__tet3 *T, const double *xyz, const double *w, size_t nv, size_t cap,
+                          const int32_t *tet, size_t ntet, const int32_t *nbr, const uint8_t *cons,
+                          const double *attr);
+
+/* The finite tetrahedra of the store. */
+size_t cvm__tet3_count_finite(const cvm__tet3 *T);
+/* The finite tetrahedra into tet (4 each, in slot order, turned as
+ * cvm__tet3_copy_tets() turns them) with their attributes into attr (when not
+ * NULL; 0 without), the points into xyz (3 * T->np) and the weights into w
+ * (when both exist); a vertex v >= nv_old is renamed fin[v - nv_old]. */
+void cvm__tet3_export(const cvm__tet3 *T, size_t nv_old, const int32_t *fin, int32_t *tet,
+                      double *attr, double *xyz, double *w);
+
+/* What became of a point given to cvm__tet3_insert_point(). */
+typedef enum cvm__t3_ins {
+    CVM__T3_INS_DONE = 0,     /* inserted as vertex T->np - 1 */
+    CVM__T3_INS_OUTSIDE,      /* strictly outside the hull, or outside the constrained domain */
+    CVM__T3_INS_DUPLICATE,    /* on an existing vertex (*other) */
+    CVM__T3_INS_TOO_CLOSE,    /* closer than min_dist to vertex *other of its cavity */
+    CVM__T3_INS_ON_CONSTRAINT,/* on a constrained face (or edge): no valid cavity */
+    CVM__T3_INS_REDUNDANT,    /* weighted: its power cell would be empty */
+    CVM__T3_INS_HIDES         /* weighted: it would leave vertex *other without a power cell */
+} cvm__t3_ins;
+
+/*
+ * Insert the point x (weight 0 in a weighted store) into a loaded store
+ * (cvm__tet3_load(), T->np < cap). The cavity is the set of tetrahedra in
+ * conflict with x (in-sphere / power test with symbolic perturbation) grown
+ * from the one containing it, never across a constrained face; in a
+ * constrained store a tetrahedron whose boundary face x does not see strictly
+ * from inside is left out again, until the cavity is star-shaped from x. The
+ * min_dist test: squared distances to the cavity's vertices in doubles, x is
+ * refused when one is below min_dist^2. sos: the point's symbolic-perturbation
+ * index (above every vertex's; only the order of the indices matters). *res
+ * says what happened; on DONE the point is vertex T->np - 1. CVM_OK, or
+ * CVM_E_NOMEM (store unchanged).
+ */
+cvm_status cvm__tet3_insert_point(cvm__tet3 *T, const double *x, int32_t sos, double min_dist,
+                                  cvm__t3_ins *res, int32_t *other);
 
 #endif

@@ -24,6 +24,11 @@ static void canonical_turn(int32_t *t)
         x = t[1], t[1] = t[2], t[2] = t[3], t[3] = x;
 }
 
+void cvm__tet3_canonical_turn(int32_t *t)
+{
+    canonical_turn(t);
+}
+
 static int tail_less(const int32_t *a, const int32_t *b)
 {
     if (a[1] != b[1])

@@ -23,9 +23,12 @@ void cvm__tet3_free(cvm__tet3 *T)
     cvm__free(ctx, T->fate);
     cvm__free(ctx, T->tt);
     cvm__free(ctx, T->tmark);
+    cvm__free(ctx, T->cface);
+    cvm__free(ctx, T->sattr);
     cvm__free(ctx, T->freeslot);
     cvm__free(ctx, T->stack);
     cvm__free(ctx, T->dead);
+    cvm__free(ctx, T->excl);
     cvm__free(ctx, T->bf);
     cvm__free(ctx, T->hash);
     cvm__free(ctx, T->etab);
@@ -49,7 +52,21 @@ static cvm_status grow_slots(cvm__tet3 *T, size_t ncap)
     if (!p)
         return CVM_E_NOMEM;
     T->tmark = p;
-    /* both hold at least T->cap slots now; only then publish the new size */
+    if (T->cface) {
+        p = cvm__realloc(T->ctx, T->cface, ncap);
+        if (!p)
+            return CVM_E_NOMEM;
+        T->cface = p;
+    }
+    if (T->sattr) {
+        if (!cvm__mul_ok(ncap, sizeof(double), &bytes))
+            return CVM_E_NOMEM;
+        p = cvm__realloc(T->ctx, T->sattr, bytes);
+        if (!p)
+            return CVM_E_NOMEM;
+        T->sattr = p;
+    }
+    /* all hold hold at least T->cap slots now; only then publish the new size */
     T->cap = ncap;
     return CVM_OK;
 }

@@ -64,3 +64,36 @@ def test_a_2d_mesh_has_no_tetrahedra_and_its_quality_still_computes():
     assert mesh.tetrahedra.shape == (0, 4)
     q = mesh.quality()
     assert len(q.hist_dihedral_deg) == 0 and len(q.hist_angle_deg) == 18
+
+
+def test_insert_points_in_3d():
+    """(k, 3) points go into a 3D mesh: the result is the Delaunay
+    tetrahedralisation of all points; outside, duplicates and near points are
+    rejected; NaN raises and names the point."""
+    import pytest
+    import cvmesh
+
+    pts = bcc(3)
+    mesh = Mesh.from_points(pts)
+    mesh.triangulate()
+    rng = np.random.default_rng(7)
+    new = rng.uniform(0.1, 2.9, size=(50, 3))
+    extra = np.array([[5.0, 1.0, 1.0], pts[4]])
+    ids = mesh.insert_points(np.vstack([new, extra]))
+    assert ids.dtype == np.int32
+    assert (ids[:50] == np.arange(len(pts), len(pts) + 50)).all()
+    assert ids[50] == cvmesh.REJECTED and ids[51] == cvmesh.REJECTED
+    assert mesh.check()
+    p, t = mesh.points, mesh.tetrahedra
+    assert abs(tet_volumes(p, t).sum() - 27.0) < 1e-12
+    ref = Mesh.from_points(p)
+    ref.triangulate()
+    assert (ref.tetrahedra == t).all()
+    near = mesh.insert_points(new[1:2] + 1e-3, min_dist=0.01)
+    assert near[0] == cvmesh.REJECTED
+    bad = new[:3].copy()
+    bad[2, 1] = np.nan
+    with pytest.raises(cvmesh.InputError) as err:
+        mesh.insert_points(bad)
+    assert "point 2" in str(err.value)
+    assert len(mesh.points) == len(p)

@@ -550,9 +550,14 @@ class Mesh:
     def insert_points(self, xy: npt.ArrayLike, min_dist: float = 0.0,
                       progress: Optional[ProgressCallback] = None,
                       every: Optional[int] = None) -> npt.NDArray[np.int32]:
-        """Insert (k, 2) points into the triangulation; returns the int32 vertex
-        id of each point, or REJECTED (-1) for a point outside the domain or
-        closer than min_dist to an existing vertex."""
+        """Insert (k, 2) points into the triangulation, or (k, 3) points into a
+        3D mesh's tetrahedralisation (as insert_points_nd()); returns the int32
+        vertex id of each point, or REJECTED (-1) for a point outside the
+        domain, on a vertex (in 3D also on a surface face), or closer than
+        min_dist to an existing vertex."""
+        pts = np.asarray(xy, dtype=np.float64)
+        if pts.ndim == 2 and pts.shape[1] == 3:
+            return self.insert_points_nd(pts, min_dist, progress, every)
         with self._handle() as m, self._progress_installed(m, progress, every):
             code, ids = capi.cvm_mesh_insert_points(m, xy, float(min_dist))
             self._finish(code)

@@ -19,6 +19,7 @@ TCase *api_nd_tcase(void);        /* test_nd.c: dimension-generic calls, mixed c
 TCase *api_sizing_nd_tcase(void);
 TCase *api_sizing3_tcase(void);   /* test_sizing3.c: the sizing handle in 3D */
 TCase *api_mesh3_dual_tcase(void); /* test_mesh3_dual.c: the 3D dual and quality measures */
+TCase *api_mesh3_insert_tcase(void); /* test_mesh3_insert.c: 3D point insertion */
 TCase *api_mesh3_tcase(void);     /* test_mesh3.c: a handle given 3D points */ /* test_sizing_nd.c: dimension-generic sizing, metric source */
 
 #endif

@@ -22,5 +22,6 @@ Suite *api_suite(void)
     suite_add_tcase(s, api_sizing3_tcase());
     suite_add_tcase(s, api_mesh3_tcase());
     suite_add_tcase(s, api_mesh3_dual_tcase());
+    suite_add_tcase(s, api_mesh3_insert_tcase());
     return s;
 }

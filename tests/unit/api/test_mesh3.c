@@ -280,7 +280,7 @@ START_TEST(two_dimensional_calls_are_refused_on_a_3d_mesh)
     ck_assert_int_eq(cvm_mesh_optimise_dual(m, NULL), CVM_E_UNSUPPORTED);
     ck_assert_int_eq(cvm_mesh_copy_points(buf, 8, m), CVM_E_UNSUPPORTED);
     ck_assert_int_eq(cvm_mesh_copy_points_nd(buf, 8, 2, m), CVM_E_ARGUMENT);
-    ck_assert_int_eq(cvm_mesh_insert_points_nd(NULL, m, p, 1, 3, 0), CVM_E_UNSUPPORTED);
+    ck_assert_int_eq(cvm_mesh_insert_points(NULL, m, p, 1, 0), CVM_E_UNSUPPORTED);
     ck_assert_int_eq(cvm_mesh_get_measure(buf, m, CVM_MEASURE_REGULAR_PCT), CVM_E_ARGUMENT);
     /* 2D points make it 2D again */
     ck_assert_int_eq(cvm_mesh_set_points(m, p, n, 2), CVM_OK);
