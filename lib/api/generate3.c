@@ -16,7 +16,7 @@
 cvm_status cvm__mesh3_gen3_report(double *out, const cvm_mesh *m, int which)
 {
     int k = which - (int)CVM_REPORT_GEN3_MATCHED_PAIRS;
-    if (k < 0 || k >= CVM__GEN3_NREPORT)
+    if (k < 0 || k >= CVM__GEN3_NREPORT || which == 749)
         return CVM_E_ARGUMENT;
     *out = m->m3 ? m->m3->gen3[k] : 0;
     return CVM_OK;

@@ -1,6 +1,6 @@
 /*
  * cmd_mesh3.c - `cvmesh mesh3 IN --size H [--grading G] [--uniform] [--freespace lattice]
- * [--layers N] -o OUT.{vtu,msh,node} [--quality] [--timings]`: a co-volume
+ * [--layers N] [--optimise] -o OUT.{vtu,msh,node} [--quality] [--timings]`: a co-volume
  * tetrahedral mesh inside a closed surface (cvm_mesh_generate3()); write, report.
  */
 #include <string.h>
@@ -21,7 +21,7 @@ void cli_mesh3_help(FILE *f)
 {
     fprintf(f,
             "usage: cvmesh mesh3 IN.off|IN.stl|IN.poly|IN.smesh --size H [--grading G] [--uniform]\n"
-            "                    [--freespace lattice] [--layers N] [-o OUT] [--quality]\n"
+            "                    [--freespace lattice] [--layers N] [--optimise] [-o OUT] [--quality]\n"
             "                    [--timings] [option flags]\n"
             "\n"
             "A tetrahedral co-volume mesh inside a closed surface: one near-field point per\n"
@@ -30,7 +30,10 @@ void cli_mesh3_help(FILE *f)
             "the domain, tetrahedralised with the surface as `cvmesh tetrahedralize` does.\n"
             "H is the largest size; by default the size near the surface follows its own\n"
             "triangles and grows away from them by the grading G (--uniform: H everywhere).\n"
-            "Not yet implemented: --freespace octree|refine, --layers above 1, --optimise.\n"
+            "--optimise then moves vertices and sets power weights (cvm_mesh_optimise_dual3(),\n"
+            "connectivity kept, boundary vertices fixed) so that more tetrahedra contain their\n"
+            "power vertex; --time-limit S bounds it.\n"
+            "Not yet implemented: --freespace octree|refine, --layers above 1.\n"
             "\n"
             "Outputs and reports (--timings: read, generate, write, quality):\n");
     cli_print_output_help(f, 0, 0);
@@ -128,6 +131,11 @@ static void report(FILE *f, cvm_mesh *m)
         {CVM_REPORT_GEN3_LATTICE_POINTS, 1, "lattice points", "%.0f"},
         {CVM_REPORT_GEN3_LATTICE_LEVELS, 1, "lattice levels", "%.0f"},
         {CVM_REPORT_GEN3_RECOVERY_DROPPED, 1, "points dropped for recovery", "%.0f"},
+        {CVM_REPORT_DUAL3_SWEEPS, 2, "optimiser sweeps", "%.0f"},
+        {CVM_REPORT_DUAL3_MOVES, 2, "optimiser moves", "%.0f"},
+        {CVM_REPORT_DUAL3_OUTSIDE_BEFORE_PCT, 2, "outside before optimising", "%.3f %%"},
+        {CVM_REPORT_DUAL3_OUTSIDE_BOUNDARY_BEFORE_PCT, 2, "  at the boundary", "%.3f %%"},
+        {CVM_REPORT_DUAL3_SECONDS, 2, "optimiser seconds", "%.3g"},
         {CVM_MEASURE_VOLUME, 0, "volume", "%.10g"},
         {CVM_MEASURE_MIN_DIHEDRAL_DEG, 0, "min dihedral angle", "%.4g deg"},
         {CVM_MEASURE_MAX_DIHEDRAL_DEG, 0, "max dihedral angle", "%.4g deg"},
@@ -139,6 +147,8 @@ static void report(FILE *f, cvm_mesh *m)
         {CVM_MEASURE_RECOVERY_STEINER, 0, "recovery steiner points", "%.0f"},
     };
     size_t i, n;
+    double sw = 0;
+    int optimised = cvm_mesh_get_report(&sw, m, CVM_REPORT_DUAL3_SECONDS) == CVM_OK && sw > 0;
     for (i = 0; i < sizeof counts / sizeof counts[0]; i++)
         if (cvm_mesh_count(&n, m, counts[i].kind) == CVM_OK)
             fprintf(f, "%-28s %lu\n", counts[i].label, (unsigned long)n);
@@ -146,7 +156,7 @@ static void report(FILE *f, cvm_mesh *m)
         double v;
         cvm_status s = rows[i].is_report ? cvm_mesh_get_report(&v, m, (cvm_report)rows[i].which)
                                          : cvm_mesh_get_measure(&v, m, (cvm_measure)rows[i].which);
-        if (s != CVM_OK)
+        if (s != CVM_OK || (rows[i].is_report == 2 && !optimised))
             continue;
         fprintf(f, "%-28s ", rows[i].label);
         fprintf(f, rows[i].fmt, v);
@@ -160,11 +170,6 @@ static int run(margs *a)
     cli_budget budget;
     int rc;
     int32_t dim = 0;
-    if (a->optimise) {
-        fprintf(stderr, "cvmesh: mesh3: --optimise is unsupported in this version (3D dual "
-                        "optimisation is not implemented yet)\n");
-        return CLI_EXIT_FAIL;
-    }
     if (cvm_mesh_create(&m) != CVM_OK) {
         fprintf(stderr, "cvmesh: out of memory\n");
         return CLI_EXIT_FAIL;
@@ -192,6 +197,17 @@ static int run(margs *a)
     if (cvm_mesh_generate3(m, a->size) != CVM_OK || cli_interrupted())
         return cli_fail(m, NULL, a->in);
     cli_timing_mark(&a->o, "generate");
+    if (a->optimise) {
+        cvm_status s;
+        cli_budget_apply(&budget, m);
+        cli_phase("optimising", a->in);
+        s = cvm_mesh_optimise_dual3(m);
+        if (cvm_status_is_error(s) || cli_interrupted())
+            return cli_fail(m, NULL, a->in);
+        if (s != CVM_OK)
+            fprintf(stderr, "cvmesh: mesh3: %s\n", cvm_mesh_errmsg(m));
+        cli_timing_mark(&a->o, "optimise");
+    }
     return cli_finish3(m, &a->o, "mesh3", a->in, report);
 }
 
