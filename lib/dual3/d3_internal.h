@@ -15,6 +15,7 @@ typedef struct cvm__d3_work {
     uint8_t *out;    /* ntet: 1 when the power vertex lies strictly outside (exact) */
     uint8_t *bnd;    /* ntet: 1 when a face has no neighbour */
     double *lv;      /* nv: mean length of the vertex's edges (counted per tetrahedron) */
+    uint8_t *stuck;  /* nv: 1 when the last search from v failed and nothing near v moved since */
     size_t nout;     /* sum of out */
 } cvm__d3_work;
 
@@ -22,9 +23,12 @@ typedef struct cvm__d3_work {
  * inverted in floating point. dist_out (may be NULL): |centroid - power vertex|. */
 double cvm__d3_tet_penalty(const double *const P[4], const double W[4], double margin,
                            double *dist_out);
-/* The summed penalty of v's star with v at (x, wv), and its smallest dihedral angle. */
+/* The summed penalty of v's star with v at (x, wv); the sum is cut short once it
+ * reaches stop (HUGE_VAL: the full sum). */
 double cvm__d3_star_penalty(const cvm__d3_work *K, int32_t v, const double *x, double wv,
-                            double *dmin_out);
+                            double stop);
+/* The smallest dihedral angle of v's star with v at x, degrees. */
+double cvm__d3_star_dihedral(const cvm__d3_work *K, int32_t v, const double *x);
 /* 1 when v may move to (x, wv): the exact checks of dual3.h (orientation,
  * local regularity, non-compliant count of the star). */
 int cvm__d3_star_valid(const cvm__d3_work *K, int32_t v, const double *x, double wv);

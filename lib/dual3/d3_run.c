@@ -31,6 +31,7 @@ static void work_free(cvm__ctx *ctx, cvm__d3_work *K)
     cvm__free(ctx, K->out);
     cvm__free(ctx, K->bnd);
     cvm__free(ctx, K->lv);
+    cvm__free(ctx, K->stuck);
     memset(K, 0, sizeof *K);
 }
 
@@ -44,7 +45,8 @@ static cvm_status work_init(cvm__ctx *ctx, cvm__d3_work *K, const cvm__d3_mesh *
     K->out = cvm__calloc(ctx, M->ntet + 1, 1);
     K->bnd = cvm__calloc(ctx, M->ntet + 1, 1);
     K->lv = cvm__calloc(ctx, 2 * nv + 1, sizeof *K->lv);
-    if (!K->voff || !K->vtet || !K->fixpos || !K->out || !K->bnd || !K->lv) {
+    K->stuck = cvm__calloc(ctx, nv + 1, 1);
+    if (!K->voff || !K->vtet || !K->fixpos || !K->out || !K->bnd || !K->lv || !K->stuck) {
         work_free(ctx, K);
         return cvm__nomem(ctx);
     }
@@ -89,17 +91,18 @@ static int solve_vertex(cvm__d3_work *K, int32_t v)
 {
     cvm__d3_mesh *M = (cvm__d3_mesh *)K->M;
     double *x0 = M->xyz + 3 * (size_t)v;
-    double cur[4], cand[4], best, dmin0, dmin, hs, hw, floor_d;
+    double cur[4], cand[4], best, dmin0, hs, hw, floor_d;
     int evals = 0, dir, first = 0, ndir = K->fixpos[v] ? 2 : 8, moved = 0;
-    if (K->lv[v] <= 0)
+    if (K->lv[v] <= 0 || K->stuck[v])
         return 0;
     cur[0] = x0[0], cur[1] = x0[1], cur[2] = x0[2], cur[3] = M->w[v];
-    best = cvm__d3_star_penalty(K, v, cur, cur[3], &dmin0);
+    best = cvm__d3_star_penalty(K, v, cur, cur[3], HUGE_VAL);
     if (best == HUGE_VAL)
         return 0;
+    dmin0 = cvm__d3_star_dihedral(K, v, cur);
     floor_d = dmin0 < K->p->min_dihedral_deg ? dmin0 : K->p->min_dihedral_deg;
-    hs = 0.25 * K->lv[v];
-    hw = 0.5 * K->lv[v] * K->lv[v];
+    hs = 0.08 * K->lv[v];
+    hw = 0.16 * K->lv[v] * K->lv[v];
     while (evals < K->p->budget && hs > 1e-3 * K->lv[v]) {
         int improved = 0, k;
         for (k = 0; k < ndir && evals < K->p->budget; k++) {
@@ -111,9 +114,10 @@ static int solve_vertex(cvm__d3_work *K, int32_t v)
                 cand[3] += (dir & 1) ? -hw : hw;
             else
                 cand[dir >> 1] += (dir & 1) ? -hs : hs;
-            f = cvm__d3_star_penalty(K, v, cand, cand[3], &dmin);
+            f = cvm__d3_star_penalty(K, v, cand, cand[3], best);
             evals++;
-            if (f < best && dmin >= floor_d && cvm__d3_star_valid(K, v, cand, cand[3])) {
+            if (f < best && (dir >= 6 || K->fixpos[v] || cvm__d3_star_dihedral(K, v, cand) >= floor_d) &&
+                cvm__d3_star_valid(K, v, cand, cand[3])) {
                 memcpy(cur, cand, sizeof cur);
                 best = f;
                 first = dir;
@@ -126,6 +130,7 @@ static int solve_vertex(cvm__d3_work *K, int32_t v)
     }
     if (moved) {
         int32_t s;
+        int k;
         x0[0] = cur[0], x0[1] = cur[1], x0[2] = cur[2];
         M->w[v] = cur[3];
         for (s = K->voff[v]; s < K->voff[v + 1]; s++) {
@@ -133,7 +138,17 @@ static int solve_vertex(cvm__d3_work *K, int32_t v)
             K->nout -= K->out[t];
             K->out[t] = (uint8_t)cvm__d3_outside(M, (size_t)t);
             K->nout += K->out[t];
+            /* these vertices see a new star, and so do those across its faces (whose
+               link faces these are) */
+            for (k = 0; k < 4; k++) {
+                int32_t nb = M->nbr[4 * (size_t)t + (size_t)k];
+                K->stuck[M->tet[4 * (size_t)t + (size_t)k]] = 0;
+                if (nb >= 0)
+                    K->stuck[M->tet[4 * ((size_t)nb >> 2) + ((size_t)nb & 3)]] = 0;
+            }
         }
+    } else {
+        K->stuck[v] = 1; /* the same search would fail again until a neighbour moves */
     }
     return moved;
 }

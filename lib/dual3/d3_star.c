@@ -77,25 +77,40 @@ double cvm__d3_tet_penalty(const double *const P[4], const double W[4], double m
 }
 
 double cvm__d3_star_penalty(const cvm__d3_work *K, int32_t v, const double *x, double wv,
-                            double *dmin_out)
+                            double stop)
 {
     const cvm__d3_mesh *M = K->M;
     int32_t s;
-    double sum = 0, dmin = 180;
+    double sum = 0;
     for (s = K->voff[v]; s < K->voff[v + 1]; s++) {
         size_t t = (size_t)K->vtet[s];
         const double *P[4];
-        double W[4], lo, hi, f;
+        double W[4], f;
         corners(M, t, v, x, wv, P, W);
         f = cvm__d3_tet_penalty(P, W, K->p->margin, NULL);
         if (f == HUGE_VAL)
             return HUGE_VAL;
         sum += K->bnd[t] ? 2 * f : f; /* L_k */
+        if (sum >= stop) /* every term is >= 0: it cannot win any more */
+            return sum;
+    }
+    return sum;
+}
+
+double cvm__d3_star_dihedral(const cvm__d3_work *K, int32_t v, const double *x)
+{
+    const cvm__d3_mesh *M = K->M;
+    int32_t s;
+    double dmin = 180;
+    for (s = K->voff[v]; s < K->voff[v + 1]; s++) {
+        size_t t = (size_t)K->vtet[s];
+        const double *P[4];
+        double W[4], lo, hi;
+        corners(M, t, v, x, 0, P, W);
         cvm__tet_dihedral_range_deg(P[0], P[1], P[2], P[3], &lo, &hi);
         dmin = lo < dmin ? lo : dmin;
     }
-    *dmin_out = dmin;
-    return sum;
+    return dmin;
 }
 
 /* The exact power test of face f of tetrahedron t against the vertex across
