@@ -2146,6 +2146,9 @@ CVM_API cvm_status cvm_mesh_set_weights(cvm_mesh *m, const double *w, size_t cou
 
 /**
  * Copy the weight of each vertex (0 for every vertex when none were set).
+ * On a 3D handle (since 0.2): the weights of the tetrahedral mesh's vertices
+ * (cvm_mesh_set_weights(), cvm_mesh_optimise_dual3()); before 0.2 a 3D handle
+ * returned CVM_E_UNSUPPORTED.
  * @param dst_len  capacity in doubles; must be >= the vertex count.
  * @return CVM_OK, CVM_E_NULL_ARG, CVM_E_BUFFER_TOO_SMALL (nothing written)
  * @since 0.1

@@ -113,3 +113,18 @@ cvm_status cvm_mesh_optimise_dual3(cvm_mesh *m)
                           "cancelled after %lu sweeps (the mesh is valid)", (unsigned long)r.sweeps);
     return s;
 }
+
+cvm_status cvm__mesh3_copy_weights(double *dst, size_t dst_len, const cvm_mesh *m)
+{
+    const cvm__mesh3 *g = m->m3;
+    size_t nv = g->have ? g->nv : 0;
+    if (!dst && nv)
+        return CVM_E_NULL_ARG;
+    if (dst_len < nv)
+        return CVM_E_BUFFER_TOO_SMALL;
+    if (nv && g->w)
+        memcpy(dst, g->w, nv * sizeof *dst);
+    else if (nv)
+        memset(dst, 0, nv * sizeof *dst);
+    return CVM_OK;
+}

@@ -131,7 +131,10 @@ static int face_conflict(const cvm__d3_mesh *M, size_t t, int f, int32_t v, cons
     corners(M, t, v, x, wv, P, W);
     E = M->xyz + 3 * (size_t)e;
     we = M->w[e];
-    return cvm__power3d(P[0], P[1], P[2], P[3], E, W[0], W[1], W[2], W[3], we) > 0;
+    /* perturbed as cvm_mesh_check() and lib/delaunay3 decide ties (by vertex index) */
+    return cvm__power3d_sos(P[0], P[1], P[2], P[3], E, W[0], W[1], W[2], W[3], we,
+                            M->tet[4 * t], M->tet[4 * t + 1], M->tet[4 * t + 2],
+                            M->tet[4 * t + 3], e) > 0;
 }
 
 int cvm__d3_star_valid(const cvm__d3_work *K, int32_t v, const double *x, double wv)

@@ -6,9 +6,10 @@
  * This version keeps the connectivity: a move of vertex v (x, y, z, w) is
  * accepted only when every tetrahedron of v's star stays positively oriented
  * (exact orient3d), every face of the star that is not constrained stays
- * locally regular (exact power test: the vertex across it is not in conflict
- * with the tetrahedron's orthosphere; a face that already failed before the
- * move may keep failing), no dihedral angle of the star drops below
+ * locally regular (exact power test with symbolic perturbation by vertex
+ * index, as cvm_mesh_check() decides it: the vertex across the face is not in
+ * conflict with the tetrahedron's orthosphere; a face that already failed
+ * before the move may keep failing), no dihedral angle of the star drops below
  * min(min_dihedral, the star's smallest before), the star's exactly counted
  * non-compliant tetrahedra do not increase, and the star's penalty decreases.
  * A locally regular tetrahedralisation is the regular one of its vertices (in
