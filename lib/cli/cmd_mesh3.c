@@ -21,7 +21,8 @@ void cli_mesh3_help(FILE *f)
 {
     fprintf(f,
             "usage: cvmesh mesh3 IN.off|IN.stl|IN.poly|IN.smesh --size H [--grading G] [--uniform]\n"
-            "                    [--freespace lattice] [--layers N] [--optimise] [-o OUT] [--quality]\n"
+            "                    [--freespace lattice] [--layers N] [--optimise] [-o OUT]\n"
+            "                    [--dual DUAL.vtu] [--quality]\n"
             "                    [--timings] [option flags]\n"
             "\n"
             "A tetrahedral co-volume mesh inside a closed surface: one near-field point per\n"
@@ -36,7 +37,7 @@ void cli_mesh3_help(FILE *f)
             "Not yet implemented: --freespace octree|refine, --layers above 1.\n"
             "\n"
             "Outputs and reports (--timings: read, generate, write, quality):\n");
-    cli_print_output_help(f, 0, 0);
+    cli_print_output_help(f, 0, 1);
     fprintf(f, "  (.vtu (VTK_TETRA cells), .msh (Gmsh 4.1) or .node (OUT.node + .ele + .face))\n");
     cli_print_option_flags(f, CLI_CMD_MESH3);
     fprintf(f, "\nOn bad input the exit status is 1 and one line names the file, line or face;\n"
@@ -77,6 +78,7 @@ static int parse(margs *a, int argc, char **argv)
     int i, r;
     memset(a, 0, sizeof *a);
     a->o.command = "mesh3";
+    a->o.with_dual = 1; /* --dual DUAL.vtu: the power cells, weights included */
     for (i = 1; i < argc; i++) {
         const char *s = argv[i];
         if (strcmp(s, "-h") == 0 || strcmp(s, "--help") == 0) {
