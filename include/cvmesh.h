@@ -883,6 +883,12 @@ typedef enum cvm_option {
     /** The power vertex is wanted this x the tetrahedron's mean edge inside each face;
      *  default 0.01, bounds [0, 0.2]. Compliance itself is the exact strict test. @since 0.2 */
     CVM_OPT_DUAL3_MARGIN = 753,
+    /** 1 (default): a boundary vertex all of whose boundary faces lie in one axis-aligned
+     *  plane (inside a planar facet such as a box side) moves within that plane, exactly;
+     *  0: every boundary vertex keeps its position (its weight is free either way). Edges,
+     *  corners and vertices of curved or oblique surfaces never move. Integer, bounds
+     *  [0, 1]. @since 0.2 */
+    CVM_OPT_DUAL3_SLIDE_BOUNDARY = 754,
     /* ---- quad-dominant meshing (800-899): read by cvm_mesh_quadmesh() ---- */
     /** Exponent p of the Lp-CVT energy, even integer, default 6, bounds [2, 12]. p = 2 is
      *  the classic CVT (hexagonal cells); larger p pulls the cells towards squares of unit
@@ -2727,13 +2733,14 @@ CVM_API cvm_status cvm_mesh_generate3(cvm_mesh *m, double size);
  * may keep failing); the exactly counted outside tetrahedra there do not
  * increase; no dihedral angle there drops below min(CVM_OPT_DUAL3_MIN_DIHEDRAL_DEG,
  * the smallest before). Vertices on a boundary face (or an internal facet)
- * keep their position; their weight is free. So every tetrahedron and face,
+ * keep their position, except those inside an axis-aligned planar facet
+ * (CVM_OPT_DUAL3_SLIDE_BOUNDARY), which move within its plane; every weight is free. So every tetrahedron and face,
  * the surface triangles included, stays, no power cell vanishes, and a locally
  * regular mesh stays the regular tetrahedralisation of its weighted vertices.
  * The run stops when nothing is outside, a sweep moves nothing, after 3 sweeps
  * without a new lowest count, or at CVM_OPT_DUAL3_MAX_SWEEPS. Not in this
- * version: flips (topology changes), boundary vertices sliding on the surface,
- * Modified Cuckoo Search, threads, merging into polyhedral cells.
+ * version: flips (topology changes), boundary vertices sliding on oblique or
+ * curved surfaces, Modified Cuckoo Search, threads, merging into polyhedral cells.
  * The report: CVM_REPORT_DUAL3_* (cvm_mesh_get_report()).
  *
  * @param m  mesh handle holding a tetrahedral mesh (cvm_mesh_generate3(),

@@ -68,6 +68,7 @@ cvm_status cvm_mesh_optimise_dual3(cvm_mesh *m)
     p.budget = (int)cvm__opt(m, CVM_OPT_DUAL3_BUDGET);
     p.margin = cvm__opt(m, CVM_OPT_DUAL3_MARGIN);
     p.seed = (uint64_t)cvm__opt(m, CVM_OPT_SEED);
+    p.slide = cvm__opt(m, CVM_OPT_DUAL3_SLIDE_BOUNDARY) != 0;
     cvm__run_begin(&m->ctx, cvm__opt(m, CVM_OPT_TIME_LIMIT_S));
     if ((s = cvm__mesh3_adjacency(&m->ctx, g->tet, g->ntet, &nbr)))
         return s;

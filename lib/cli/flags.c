@@ -25,6 +25,8 @@ static const cli_option_flag k_flags[] = {
     {"--opt-budget", "N", CVM_OPT_DUAL3_BUDGET, 0, M3, "--optimise: trial positions per vertex and sweep (default 48)"},
     {"--opt-min-dihedral", "DEG", CVM_OPT_DUAL3_MIN_DIHEDRAL_DEG, 0, M3,
      "--optimise: no move takes a dihedral angle below min(DEG, before) (default 10)"},
+    {"--opt-fixed-boundary", NULL, CVM_OPT_DUAL3_SLIDE_BOUNDARY, 0, M3,
+     "--optimise: no boundary vertex moves (by default those inside an axis-aligned planar facet slide in it)"},
     {"--opt-margin", "F", CVM_OPT_DUAL3_MARGIN, 0, M3,
      "--optimise: wanted depth of the power vertex inside each face, x mean edge (default 0.01)"},
     {"--uniform", NULL, CVM_OPT_GEN3_SIZE_FROM_SURFACE, 0, M3,

@@ -15,6 +15,7 @@ typedef struct cvm__d3_work {
     uint8_t *out;    /* ntet: 1 when the power vertex lies strictly outside (exact) */
     uint8_t *bnd;    /* ntet: 1 when a face has no neighbour */
     double *lv;      /* nv: mean length of the vertex's edges (counted per tetrahedron) */
+    uint8_t *slide;  /* nv: for a vertex on a constrained face, the axes it may move along */
     uint8_t *stuck;  /* nv: 1 when the last search from v failed and nothing near v moved since */
     size_t nout;     /* sum of out */
 } cvm__d3_work;

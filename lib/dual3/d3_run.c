@@ -32,6 +32,7 @@ static void work_free(cvm__ctx *ctx, cvm__d3_work *K)
     cvm__free(ctx, K->bnd);
     cvm__free(ctx, K->lv);
     cvm__free(ctx, K->stuck);
+    cvm__free(ctx, K->slide);
     memset(K, 0, sizeof *K);
 }
 
@@ -46,11 +47,14 @@ static cvm_status work_init(cvm__ctx *ctx, cvm__d3_work *K, const cvm__d3_mesh *
     K->bnd = cvm__calloc(ctx, M->ntet + 1, 1);
     K->lv = cvm__calloc(ctx, 2 * nv + 1, sizeof *K->lv);
     K->stuck = cvm__calloc(ctx, nv + 1, 1);
-    if (!K->voff || !K->vtet || !K->fixpos || !K->out || !K->bnd || !K->lv || !K->stuck) {
+    K->slide = cvm__malloc(ctx, nv + 1);
+    if (!K->voff || !K->vtet || !K->fixpos || !K->out || !K->bnd || !K->lv || !K->stuck ||
+        !K->slide) {
         work_free(ctx, K);
         return cvm__nomem(ctx);
     }
     cnt = K->lv + nv;
+    memset(K->slide, 7, nv + 1);
     for (t = 0; t < 4 * M->ntet; t++)
         K->voff[M->tet[t] + 1]++;
     for (i = 0; i < nv; i++)
@@ -63,10 +67,21 @@ static cvm_status work_init(cvm__ctx *ctx, cvm__d3_work *K, const cvm__d3_mesh *
             K->vtet[K->voff[q]++] = (int32_t)t;
             if (M->nbr[4 * t + (size_t)a] < 0)
                 K->bnd[t] = 1;
-            if (M->cface[4 * t + (size_t)a])
+            if (M->cface[4 * t + (size_t)a]) {
+                const double *X[3];
+                int j = 0, ax, same = 0;
                 for (b = 0; b < 4; b++)
                     if (b != a)
+                        X[j++] = M->xyz + 3 * (size_t)M->tet[4 * t + (size_t)b];
+                for (ax = 0; ax < 3; ax++) /* the face lies in the plane x_ax = const */
+                    if (X[0][ax] == X[1][ax] && X[0][ax] == X[2][ax])
+                        same |= 1 << ax;
+                for (b = 0; b < 4; b++)
+                    if (b != a) {
                         K->fixpos[M->tet[4 * t + (size_t)b]] = 1;
+                        K->slide[M->tet[4 * t + (size_t)b]] &= (uint8_t)same;
+                    }
+            }
             for (b = 0; b < 4; b++)
                 if (b != a) {
                     int32_t r = M->tet[4 * t + (size_t)b];
@@ -79,22 +94,33 @@ static cvm_status work_init(cvm__ctx *ctx, cvm__d3_work *K, const cvm__d3_mesh *
     for (i = nv; i > 0; i--)
         K->voff[i] = K->voff[i - 1];
     K->voff[0] = 0;
-    for (i = 0; i < nv; i++)
+    for (i = 0; i < nv; i++) {
         K->lv[i] = cnt[i] > 0 ? K->lv[i] / cnt[i] : 0;
+        /* every constrained face at i in one plane x_a = const: i may move in the other two
+         * coordinates (exactly in the plane); else (an edge, a corner, a curved surface) not */
+        K->slide[i] = K->p->slide && (K->slide[i] == 1 || K->slide[i] == 2 || K->slide[i] == 4)
+                          ? (uint8_t)(~K->slide[i] & 7) : 0;
+    }
     K->M = M;
     return CVM_OK;
 }
 
-/* Compass search for v over (x, y, z, w) (w only when its position is
- * fixed); writes the best valid point found; 1 when v moved. */
+/* Compass search for v over (x, y, z, w): the coordinates its position may
+ * change in (all for an interior vertex, the two in-plane ones for one inside
+ * an axis-aligned planar facet with slide on, none otherwise) and w; writes the
+ * best valid point found; 1 when v moved. */
 static int solve_vertex(cvm__d3_work *K, int32_t v)
 {
     cvm__d3_mesh *M = (cvm__d3_mesh *)K->M;
     double *x0 = M->xyz + 3 * (size_t)v;
     double cur[4], cand[4], best, dmin0, hs, hw, floor_d;
-    int evals = 0, dir, first = 0, ndir = K->fixpos[v] ? 2 : 8, moved = 0;
+    int evals = 0, dir, first = 0, nd = 0, moved = 0, a, dirs[8];
     if (K->lv[v] <= 0 || K->stuck[v])
         return 0;
+    for (a = 0; a < 3; a++)
+        if (!K->fixpos[v] || (K->slide[v] >> a & 1))
+            dirs[nd++] = 2 * a, dirs[nd++] = 2 * a + 1;
+    dirs[nd++] = 6, dirs[nd++] = 7;
     cur[0] = x0[0], cur[1] = x0[1], cur[2] = x0[2], cur[3] = M->w[v];
     best = cvm__d3_star_penalty(K, v, cur, cur[3], HUGE_VAL);
     if (best == HUGE_VAL)
@@ -105,22 +131,21 @@ static int solve_vertex(cvm__d3_work *K, int32_t v)
     hw = 0.16 * K->lv[v] * K->lv[v];
     while (evals < K->p->budget && hs > 1e-3 * K->lv[v]) {
         int improved = 0, k;
-        for (k = 0; k < ndir && evals < K->p->budget; k++) {
+        for (k = 0; k < nd && evals < K->p->budget; k++) {
             double f;
-            /* weight directions first when the position is fixed (ndir 2) */
-            dir = (first + k) % ndir;
+            dir = dirs[(first + k) % nd];
             memcpy(cand, cur, sizeof cand);
-            if (K->fixpos[v] || dir >= 6)
+            if (dir >= 6)
                 cand[3] += (dir & 1) ? -hw : hw;
             else
                 cand[dir >> 1] += (dir & 1) ? -hs : hs;
             f = cvm__d3_star_penalty(K, v, cand, cand[3], best);
             evals++;
-            if (f < best && (dir >= 6 || K->fixpos[v] || cvm__d3_star_dihedral(K, v, cand) >= floor_d) &&
+            if (f < best && (dir >= 6 || cvm__d3_star_dihedral(K, v, cand) >= floor_d) &&
                 cvm__d3_star_valid(K, v, cand, cand[3])) {
                 memcpy(cur, cand, sizeof cur);
                 best = f;
-                first = dir;
+                first = (first + k) % nd;
                 improved = moved = 1;
                 break;
             }
@@ -223,9 +248,9 @@ cvm_status cvm__d3_optimise(cvm__ctx *ctx, cvm__d3_mesh *M, const cvm__d3_params
     memset(r, 0, sizeof *r);
     memset(&K, 0, sizeof K);
     r->ntet = M->ntet;
+    K.p = p;
     if ((s = work_init(ctx, &K, M)))
         return s;
-    K.p = p;
     rk = cvm__malloc(ctx, (M->nv + 1) * sizeof *rk);
     vs = cvm__malloc(ctx, (M->nv + 1) * sizeof *vs);
     if (!rk || !vs) {

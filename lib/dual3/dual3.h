@@ -16,7 +16,10 @@
  * the constrained sense along constrained faces), so the mesh stays regular
  * after every accepted move, every face (the surface included) stays a face,
  * and no power cell can vanish: a stop at any point leaves a valid mesh.
- * Vertices on a constrained face keep their position; their weight is free.
+ * Vertices on a constrained face keep their position, except, with slide, a
+ * vertex all of whose constrained faces lie in one axis-aligned plane: it
+ * moves in the two other coordinates, so it stays exactly in the plane, and
+ * the orientation checks keep its surface triangles unfolded. Weights are free.
  *
  * Penalty of a tetrahedron with mean edge l and power vertex barycentric
  * coordinates b_i (heights h_i): sum_i max(0, margin l - b_i h_i)^2 / l^2 plus
@@ -59,6 +62,7 @@ typedef struct cvm__d3_params {
     int budget;             /* evaluations per vertex and sweep */
     double margin;          /* power vertex wanted margin x mean edge inside every face */
     uint64_t seed;
+    int slide;              /* 1: vertices inside an axis-aligned planar facet move in it */
 } cvm__d3_params;
 
 typedef struct cvm__d3_report {

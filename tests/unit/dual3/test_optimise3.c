@@ -218,14 +218,17 @@ START_TEST(statuses_and_options)
 END_TEST
 
 /* Optimise the generated mesh m and check every promise of the contract. */
-static void optimise_and_check(cvm_mesh *m, int sweeps)
+static void optimise_and_check(cvm_mesh *m, int sweeps, int slide)
 {
     g3_mesh a, b;
     int32_t *nbr;
     double *w0, *w1, v, before, after, bbefore, bafter;
     unsigned char *reg0, *reg1;
     size_t i, ties0, ties1, nb, bout, out0, out1, nreg0 = 0, lost = 0, moved = 0;
+    double vol0;
     ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_DUAL3_MAX_SWEEPS, sweeps), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_DUAL3_SLIDE_BOUNDARY, slide), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_get_measure(&vol0, m, CVM_MEASURE_VOLUME), CVM_OK);
     g3_mesh_get(&a, m);
     w0 = weights_of(m, a.nv);
     nbr = adjacency(&a);
@@ -242,11 +245,24 @@ static void optimise_and_check(cvm_mesh *m, int sweeps)
     ck_assert(memcmp(a.face, b.face, 3 * a.nf * sizeof *a.face) == 0);
     for (i = 0; i < a.nf; i++)
         ck_assert(g3_face_on_boundary(&b, b.face[3 * i], b.face[3 * i + 1], b.face[3 * i + 2]));
-    /* boundary vertices keep their position */
-    for (i = 0; i < 3 * a.nf; i++) {
-        cvm_index q = a.face[i];
-        ck_assert(memcmp(a.xyz + 3 * q, b.xyz + 3 * q, 3 * sizeof *a.xyz) == 0);
+    /* boundary vertices keep their position, or (slide) stay exactly in their face's
+       axis-aligned plane; the domain keeps its volume */
+    for (i = 0; i < a.nf; i++) {
+        int k, ax;
+        for (k = 0; k < 3; k++) {
+            cvm_index q = a.face[3 * i + (size_t)k];
+            if (!slide)
+                ck_assert(memcmp(a.xyz + 3 * q, b.xyz + 3 * q, 3 * sizeof *a.xyz) == 0);
+            for (ax = 0; ax < 3; ax++) {
+                const cvm_index *f = a.face + 3 * i;
+                if (a.xyz[3 * f[0] + ax] == a.xyz[3 * f[1] + ax] &&
+                    a.xyz[3 * f[0] + ax] == a.xyz[3 * f[2] + ax])
+                    ck_assert(b.xyz[3 * q + ax] == a.xyz[3 * q + ax]);
+            }
+        }
     }
+    ck_assert_int_eq(cvm_mesh_get_measure(&v, m, CVM_MEASURE_VOLUME), CVM_OK);
+    ck_assert_double_eq_tol(v, vol0, 1e-12 * vol0);
     for (i = 0; i < a.nv; i++)
         moved += memcmp(a.xyz + 3 * i, b.xyz + 3 * i, 3 * sizeof *a.xyz) != 0 || w0[i] != w1[i];
     ck_assert_uint_gt(moved, 0);
@@ -301,7 +317,7 @@ START_TEST(cube_keeps_faces_and_regularity)
     if (!g3_with_tetgen())
         return; /* the example cube needs TetGen (cocircular squares) */
     m = generated("cube.poly", 0.25, 1);
-    optimise_and_check(m, 3);
+    optimise_and_check(m, 3, 1);
     cvm_mesh_free(m);
 }
 END_TEST
@@ -309,7 +325,10 @@ END_TEST
 START_TEST(tetra_keeps_faces_and_regularity)
 {
     cvm_mesh *m = generated("tetra.off", 0.3, 0);
-    optimise_and_check(m, 3);
+    optimise_and_check(m, 3, 0);
+    cvm_mesh_free(m);
+    m = generated("tetra.off", 0.3, 0);
+    optimise_and_check(m, 3, 1);
     cvm_mesh_free(m);
 }
 END_TEST
