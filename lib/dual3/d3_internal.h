@@ -28,8 +28,9 @@ double cvm__d3_tet_penalty(const double *const P[4], const double W[4], double m
  * reaches stop (HUGE_VAL: the full sum). */
 double cvm__d3_star_penalty(const cvm__d3_work *K, int32_t v, const double *x, double wv,
                             double stop);
-/* The smallest dihedral angle of v's star with v at x, degrees. */
-double cvm__d3_star_dihedral(const cvm__d3_work *K, int32_t v, const double *x);
+/* The cosine of the smallest dihedral angle of v's star with v at x (2 when a
+ * tetrahedron is flat). */
+double cvm__d3_star_max_cos(const cvm__d3_work *K, int32_t v, const double *x);
 /* 1 when v may move to (x, wv): the exact checks of dual3.h (orientation,
  * local regularity, non-compliant count of the star). */
 int cvm__d3_star_valid(const cvm__d3_work *K, int32_t v, const double *x, double wv);

@@ -113,7 +113,7 @@ static int solve_vertex(cvm__d3_work *K, int32_t v)
 {
     cvm__d3_mesh *M = (cvm__d3_mesh *)K->M;
     double *x0 = M->xyz + 3 * (size_t)v;
-    double cur[4], cand[4], best, dmin0, hs, hw, floor_d;
+    double cur[4], cand[4], best, cmax0, cfloor, hs, hw;
     int evals = 0, dir, first = 0, nd = 0, moved = 0, a, dirs[8];
     if (K->lv[v] <= 0 || K->stuck[v])
         return 0;
@@ -125,8 +125,10 @@ static int solve_vertex(cvm__d3_work *K, int32_t v)
     best = cvm__d3_star_penalty(K, v, cur, cur[3], HUGE_VAL);
     if (best == HUGE_VAL)
         return 0;
-    dmin0 = cvm__d3_star_dihedral(K, v, cur);
-    floor_d = dmin0 < K->p->min_dihedral_deg ? dmin0 : K->p->min_dihedral_deg;
+    /* no angle below min(the floor, the smallest now): cosines, larger is worse */
+    cmax0 = cvm__d3_star_max_cos(K, v, cur);
+    cfloor = cos(K->p->min_dihedral_deg * (3.14159265358979323846 / 180));
+    cfloor = cmax0 > cfloor ? cmax0 : cfloor;
     hs = 0.08 * K->lv[v];
     hw = 0.16 * K->lv[v] * K->lv[v];
     while (evals < K->p->budget && hs > 1e-3 * K->lv[v]) {
@@ -141,7 +143,7 @@ static int solve_vertex(cvm__d3_work *K, int32_t v)
                 cand[dir >> 1] += (dir & 1) ? -hs : hs;
             f = cvm__d3_star_penalty(K, v, cand, cand[3], best);
             evals++;
-            if (f < best && (dir >= 6 || cvm__d3_star_dihedral(K, v, cand) >= floor_d) &&
+            if (f < best && (dir >= 6 || cvm__d3_star_max_cos(K, v, cand) <= cfloor) &&
                 cvm__d3_star_valid(K, v, cand, cand[3])) {
                 memcpy(cur, cand, sizeof cur);
                 best = f;

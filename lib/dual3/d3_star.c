@@ -8,7 +8,6 @@
 
 #include "dual3/d3_internal.h"
 #include "geom/geom_internal.h"
-#include "geom/measure3.h"
 
 /* The corners and weights of tetrahedron t with vertex v (if a corner) at x, wv. */
 static void corners(const cvm__d3_mesh *M, size_t t, int32_t v, const double *x, double wv,
@@ -39,41 +38,91 @@ static void cross3(const double *a, const double *b, double *o)
     o[2] = a[0] * b[1] - a[1] * b[0];
 }
 
+/* The geometry of P that the penalty and the angle check share: e_k = P_k - P_0,
+ * inward face normals n[i] (length twice the face's area; face i opposite corner i),
+ * their lengths, and 6 x the volume. 0, or -1 when the volume is not positive. */
+typedef struct d3_geo {
+    double e[3][3], n[4][3], len[4], det;
+} d3_geo;
+
+static int tet_geo(const double *const P[4], d3_geo *G)
+{
+    int k;
+    for (k = 0; k < 3; k++)
+        sub3(P[k + 1], P[0], G->e[k]);
+    /* e_0 . n_1 = e_1 . n_2 = e_2 . n_3 = det, > 0 for a positively oriented tetrahedron
+       (orient3d > 0): each n_k points towards P_k */
+    cross3(G->e[2], G->e[1], G->n[1]);
+    cross3(G->e[0], G->e[2], G->n[2]);
+    cross3(G->e[1], G->e[0], G->n[3]);
+    G->det = dot3(G->e[0], G->n[1]);
+    if (!(G->det > 0))
+        return -1;
+    for (k = 0; k < 3; k++) /* the area vectors of a closed surface sum to zero */
+        G->n[0][k] = -(G->n[1][k] + G->n[2][k] + G->n[3][k]);
+    for (k = 0; k < 4; k++) {
+        G->len[k] = sqrt(dot3(G->n[k], G->n[k]));
+        if (!(G->len[k] > 0))
+            return -1;
+    }
+    return 0;
+}
+
 double cvm__d3_tet_penalty(const double *const P[4], const double W[4], double margin,
                            double *dist_out)
 {
-    static const int F[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
-    double o[3], c[3], l = 0, pen = 0, e[3], u[3], n[3], q[3];
-    int i, j;
-    if (cvm__tet_volume(P[0], P[1], P[2], P[3]) <= 0 || cvm__tet_power_centre(P[0], P[1], P[2], P[3], W, o))
+    d3_geo G;
+    double y[3], c[3], r[3], l2, l, pen = 0, d, gap;
+    int i, k;
+    if (tet_geo(P, &G))
         return HUGE_VAL;
-    for (i = 0; i < 4; i++)
-        for (j = i + 1; j < 4; j++)
-            l += sqrt(cvm__dist2_3(P[i], P[j]));
-    l /= 6;
+    /* power vertex y (relative to P0): 2 e_k . y = |e_k|^2 - (w_k - w_0) */
+    for (k = 0; k < 3; k++)
+        r[k] = dot3(G.e[k], G.e[k]) - (W[k + 1] - W[0]);
+    for (k = 0; k < 3; k++)
+        y[k] = (r[0] * G.n[1][k] + r[1] * G.n[2][k] + r[2] * G.n[3][k]) / (2 * G.det);
+    /* the mean squared edge sets the scale */
+    sub3(G.e[1], G.e[0], c);
+    l2 = r[0] + r[1] + r[2] + (W[1] - W[0]) + (W[2] - W[0]) + (W[3] - W[0]) + dot3(c, c);
+    sub3(G.e[2], G.e[0], c);
+    l2 += dot3(c, c);
+    sub3(G.e[2], G.e[1], c);
+    l2 = (l2 + dot3(c, c)) / 6;
+    l = sqrt(l2);
     for (i = 0; i < 4; i++) {
-        const double *a = P[F[i][0]];
-        double len, d, gap;
-        sub3(P[F[i][1]], a, e);
-        sub3(P[F[i][2]], a, u);
-        cross3(e, u, n);
-        len = sqrt(dot3(n, n));
-        if (!(len > 0))
-            return HUGE_VAL;
-        sub3(P[i], a, q);
-        if (dot3(q, n) < 0)
-            len = -len;
-        sub3(o, a, q);
-        d = dot3(q, n) / len; /* > 0 on corner i's side */
+        /* signed distance from face i's plane, > 0 on corner i's side */
+        if (i == 0) {
+            sub3(y, G.e[0], c);
+            d = dot3(c, G.n[0]) / G.len[0];
+        } else {
+            d = dot3(y, G.n[i]) / G.len[i];
+        }
         gap = margin * l - d;
         if (gap > 0)
             pen += gap * gap;
     }
-    for (i = 0; i < 3; i++)
-        c[i] = 0.25 * (P[0][i] + P[1][i] + P[2][i] + P[3][i]) - o[i];
+    for (k = 0; k < 3; k++)
+        c[k] = 0.25 * (G.e[0][k] + G.e[1][k] + G.e[2][k]) - y[k];
     if (dist_out)
         *dist_out = sqrt(dot3(c, c));
-    return (pen + 1e-3 * dot3(c, c)) / (l * l);
+    return (pen + 1e-3 * dot3(c, c)) / l2;
+}
+
+/* The largest cosine of a dihedral angle of (P) (the smallest angle's), or 2 when flat. */
+static double tet_max_cos(const double *const P[4])
+{
+    d3_geo G;
+    double cmax = -1;
+    int i, j;
+    if (tet_geo(P, &G))
+        return 2;
+    for (i = 0; i < 4; i++)
+        for (j = i + 1; j < 4; j++) {
+            /* inward normals: the angle at the edge shared by faces i, j */
+            double c = -dot3(G.n[i], G.n[j]) / (G.len[i] * G.len[j]);
+            cmax = c > cmax ? c : cmax;
+        }
+    return cmax;
 }
 
 double cvm__d3_star_penalty(const cvm__d3_work *K, int32_t v, const double *x, double wv,
@@ -97,20 +146,19 @@ double cvm__d3_star_penalty(const cvm__d3_work *K, int32_t v, const double *x, d
     return sum;
 }
 
-double cvm__d3_star_dihedral(const cvm__d3_work *K, int32_t v, const double *x)
+double cvm__d3_star_max_cos(const cvm__d3_work *K, int32_t v, const double *x)
 {
     const cvm__d3_mesh *M = K->M;
     int32_t s;
-    double dmin = 180;
+    double cmax = -1;
     for (s = K->voff[v]; s < K->voff[v + 1]; s++) {
-        size_t t = (size_t)K->vtet[s];
         const double *P[4];
-        double W[4], lo, hi;
-        corners(M, t, v, x, 0, P, W);
-        cvm__tet_dihedral_range_deg(P[0], P[1], P[2], P[3], &lo, &hi);
-        dmin = lo < dmin ? lo : dmin;
+        double W[4], c;
+        corners(M, (size_t)K->vtet[s], v, x, 0, P, W);
+        c = tet_max_cos(P);
+        cmax = c > cmax ? c : cmax;
     }
-    return dmin;
+    return cmax;
 }
 
 /* The exact power test of face f of tetrahedron t against the vertex across
