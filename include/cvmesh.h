@@ -872,7 +872,7 @@ typedef enum cvm_option {
      *  CVM_OPT_GEN3_GRADING); 0: the size is uniform. Integer, bounds [0, 1]. @since 0.2 */
     CVM_OPT_GEN3_SIZE_FROM_SURFACE = 743,
     /** 3D dual optimisation (cvm_mesh_optimise_dual3()), 750-759. Sweep limit, integer,
-     *  default 20, bounds [0, 1e6] (0: measure only). @since 0.2 */
+     *  default 50, bounds [0, 1e6] (0: measure only). @since 0.2 */
     CVM_OPT_DUAL3_MAX_SWEEPS = 750,
     /** No move may make a dihedral angle of the moved vertex's tetrahedra smaller than
      *  min(this, the smallest there before), degrees. Default 10, bounds [0, 60]. @since 0.2 */

@@ -21,7 +21,7 @@ static const cli_option_flag k_flags[] = {
     {"--grading", "G", CVM_OPT_GEN3_GRADING, 0, M3,
      "size near the surface grows as l + G x distance from its triangles (default 0.3)"},
     {"--layers", "N", CVM_OPT_GEN3_LAYERS, 0, M3, "near-field layers (default 1; only 1 so far)"},
-    {"--opt-sweeps", "N", CVM_OPT_DUAL3_MAX_SWEEPS, 0, M3, "--optimise: sweep limit (default 20)"},
+    {"--opt-sweeps", "N", CVM_OPT_DUAL3_MAX_SWEEPS, 0, M3, "--optimise: sweep limit (default 50)"},
     {"--opt-budget", "N", CVM_OPT_DUAL3_BUDGET, 0, M3, "--optimise: trial positions per vertex and sweep (default 48)"},
     {"--opt-min-dihedral", "DEG", CVM_OPT_DUAL3_MIN_DIHEDRAL_DEG, 0, M3,
      "--optimise: no move takes a dihedral angle below min(DEG, before) (default 10)"},

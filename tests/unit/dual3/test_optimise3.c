@@ -204,7 +204,7 @@ START_TEST(statuses_and_options)
     ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_DUAL3_BUDGET, 0), CVM_E_OPTION_RANGE);
     ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_DUAL3_MARGIN, 0.5), CVM_E_OPTION_RANGE);
     ck_assert_int_eq(cvm_option_bounds(&b, CVM_OPT_DUAL3_MAX_SWEEPS), CVM_OK);
-    ck_assert_double_eq(b.def, 20);
+    ck_assert_double_eq(b.def, 50);
     ck_assert_int_eq(cvm_option_bounds(&b, CVM_OPT_DUAL3_MIN_DIHEDRAL_DEG), CVM_OK);
     ck_assert_double_eq(b.def, 10);
     /* a Delaunay tetrahedralisation of points: one tetrahedron, nothing outside */
