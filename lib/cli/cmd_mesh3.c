@@ -146,6 +146,7 @@ static void report(FILE *f, cvm_mesh *m)
         {CVM_MEASURE_MAX_EDGE, 0, "max edge", "%.6g"},
         {CVM_MEASURE_CIRCUMCENTRE_OUTSIDE_PCT, 0, "circumcentre outside", "%.3f %%"},
         {CVM_MEASURE_CIRCUMCENTRE_OUTSIDE_BOUNDARY_PCT, 0, "  at the boundary", "%.3f %%"},
+        {CVM_MEASURE_MIN_DUAL_EDGE_RATIO_3D, 0, "min dual edge / face edge", "%.4g"},
         {CVM_MEASURE_RECOVERY_STEINER, 0, "recovery steiner points", "%.0f"},
     };
     size_t i, n;
