@@ -31,12 +31,13 @@ void cli_mesh3_help(FILE *f)
             "the domain, tetrahedralised with the surface as `cvmesh tetrahedralize` does.\n"
             "H is the largest size; by default the size near the surface follows its own\n"
             "triangles and grows away from them by the grading G (--uniform: H everywhere).\n"
-            "--optimise then moves vertices and sets power weights (cvm_mesh_optimise_dual3(),\n"
-            "connectivity kept, boundary vertices fixed) so that more tetrahedra contain their\n"
-            "power vertex; --time-limit S bounds it.\n"
+            "--optimise then moves vertices and sets power weights (cvm_mesh_optimise_dual3():\n"
+            "connectivity kept; boundary vertices stay, but those inside an axis-aligned planar\n"
+            "facet slide in it) so that more tetrahedra contain their power vertex; --time-limit S\n"
+            "bounds it; --dual writes the weighted power cells.\n"
             "Not yet implemented: --freespace octree|refine, --layers above 1.\n"
             "\n"
-            "Outputs and reports (--timings: read, generate, write, quality):\n");
+            "Outputs and reports (--timings: read, generate, optimise, write, quality):\n");
     cli_print_output_help(f, 0, 1);
     fprintf(f, "  (.vtu (VTK_TETRA cells), .msh (Gmsh 4.1) or .node (OUT.node + .ele + .face))\n");
     cli_print_option_flags(f, CLI_CMD_MESH3);
