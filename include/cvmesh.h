@@ -880,8 +880,8 @@ typedef enum cvm_option {
     /** Trial positions per vertex and sweep (compass search), integer, default 48, bounds
      *  [1, 100000]. @since 0.2 */
     CVM_OPT_DUAL3_BUDGET = 752,
-    /** The power vertex is wanted this x the tetrahedron's mean edge inside each face;
-     *  default 0.01, bounds [0, 0.2]. Compliance itself is the exact strict test. @since 0.2 */
+    /** The power vertex is wanted this x the tetrahedron's root-mean-square edge inside each face;
+     *  default 0.03, bounds [0, 0.2]. Compliance itself is the exact strict test. @since 0.2 */
     CVM_OPT_DUAL3_MARGIN = 753,
     /** 1 (default): a boundary vertex all of whose boundary faces lie in one axis-aligned
      *  plane (inside a planar facet such as a box side) moves within that plane, exactly;
@@ -2725,7 +2725,7 @@ CVM_API cvm_status cvm_mesh_generate3(cvm_mesh *m, double size);
  * min(20, n/25 + 1) bins shuffled within by a stream keyed by CVM_OPT_SEED and
  * the sweep. Each vertex gets a compass search over (x, y, z, w) on a smooth
  * penalty of its tetrahedra (the distance by which each power vertex falls
- * short of lying CVM_OPT_DUAL3_MARGIN x the mean edge inside each face,
+ * short of lying CVM_OPT_DUAL3_MARGIN x the RMS edge inside each face,
  * squared, plus a small centroid term, over squared mean edges). A move is
  * kept only when the penalty drops and: every tetrahedron of the vertex stays
  * positively oriented (exact orient3d); every face there that is not on the

@@ -28,7 +28,7 @@ static const cli_option_flag k_flags[] = {
     {"--opt-fixed-boundary", NULL, CVM_OPT_DUAL3_SLIDE_BOUNDARY, 0, M3,
      "--optimise: no boundary vertex moves (by default those inside an axis-aligned planar facet slide in it)"},
     {"--opt-margin", "F", CVM_OPT_DUAL3_MARGIN, 0, M3,
-     "--optimise: wanted depth of the power vertex inside each face, x mean edge (default 0.01)"},
+     "--optimise: wanted depth of the power vertex inside each face, x mean edge (default 0.03)"},
     {"--uniform", NULL, CVM_OPT_GEN3_SIZE_FROM_SURFACE, 0, M3,
      "uniform size H everywhere instead of following the surface's triangles"},
     {"--keep-hull", NULL, CVM_OPT_KEEP_CONVEX_HULL, 1, TRI | REF | OPT,

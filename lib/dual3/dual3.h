@@ -21,8 +21,8 @@
  * moves in the two other coordinates, so it stays exactly in the plane, and
  * the orientation checks keep its surface triangles unfolded. Weights are free.
  *
- * Penalty of a tetrahedron with mean edge l and power vertex barycentric
- * coordinates b_i (heights h_i): sum_i max(0, margin l - b_i h_i)^2 / l^2 plus
+ * Penalty of a tetrahedron with root-mean-square edge l and power vertex
+ * barycentric coordinates b_i (heights h_i): sum_i max(0, margin l - b_i h_i)^2 / l^2 plus
  * 1e-3 |centroid - power vertex|^2 / l^2 (the 2D design's smooth penalty).
  * Score (sweep order) F_k = W_k L_k |C_k - V_k|, W_k 1 when non-compliant
  * (exact) else 0, L_k 2 at the boundary else 1.
