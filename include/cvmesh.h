@@ -2726,7 +2726,7 @@ CVM_API cvm_status cvm_mesh_generate3(cvm_mesh *m, double size);
  * the sweep. Each vertex gets a compass search over (x, y, z, w) on a smooth
  * penalty of its tetrahedra (the distance by which each power vertex falls
  * short of lying CVM_OPT_DUAL3_MARGIN x the RMS edge inside each face,
- * squared, plus a small centroid term, over squared mean edges). A move is
+ * squared, plus a small centroid term, over the squared RMS edge). A move is
  * kept only when the penalty drops and: every tetrahedron of the vertex stays
  * positively oriented (exact orient3d); every face there that is not on the
  * surface stays locally regular (exact power test; a face that failed before
