@@ -104,7 +104,7 @@ TEST_ENV = CVM_DATA_DIR=$(DATA_DIR) CVM_TEST_DATA=$(CURDIR)/tests/data CVM_DATA3
 DATA3D := $(BUILD)/data3d
 
 # Fuzz targets: tests/fuzz/fuzz_<name>.c, seeds in tests/fuzz/corpus/<name>/.
-FUZZ_TARGETS := poly_read node_read cdt vtu_read vtk_read msh_read refine optimise off_read stl_read tetpoly_read delaunay3 generate3 quadmesh insert3
+FUZZ_TARGETS := poly_read node_read cdt vtu_read vtk_read msh_read refine optimise off_read stl_read tetpoly_read delaunay3 generate3 quadmesh insert3 optimise3
 # The targets make check runs for FUZZ_TIME seconds with a fixed seed. A
 # target leaves this list while its fixed-seed run reaches one of its open
 # findings (tests/fuzz/open/<target>/): it would fail on those known inputs
@@ -112,7 +112,7 @@ FUZZ_TARGETS := poly_read node_read cdt vtu_read vtk_read msh_read refine optimi
 # refine, whose seed-1 run reaches two open findings that c9e9268
 # has too, after about 220 and 1140 executions: libFuzzer's path varies with
 # timing, so either may fall within the run).
-FUZZ_CHECK_TARGETS := poly_read node_read vtu_read vtk_read msh_read optimise off_read stl_read tetpoly_read delaunay3 generate3 quadmesh insert3
+FUZZ_CHECK_TARGETS := poly_read node_read vtu_read vtk_read msh_read optimise off_read stl_read tetpoly_read delaunay3 generate3 quadmesh insert3 optimise3
 FUZZ_BINS := $(FUZZ_TARGETS:%=$(BUILD)/fuzz/fuzz_%)
 REPLAY_BINS := $(FUZZ_TARGETS:%=$(BUILD)/fuzz/replay_%)
 FUZZ_SUPPORT_OBJ := $(BUILD)/obj/tests/fuzz/mesh_oracle.o $(BUILD)/obj/tests/fuzz/fuzz_input.o \
@@ -217,6 +217,7 @@ FUZZ_RUNS_delaunay3 ?= 600
 FUZZ_RUNS_generate3 ?= 2000
 FUZZ_RUNS_quadmesh ?= 300
 FUZZ_RUNS_insert3 ?= 2000
+FUZZ_RUNS_optimise3 ?= 1000
 FUZZ_MAKE = $(MAKE) $(PAR) --no-print-directory BUILD=$(FUZZ_BUILD) CC=$(CLANG) SAN=1 FUZZ=1 OPENMP=0 TETGEN=0
 
 # run_fuzz(target, seconds, seed, runs): fresh work corpus seeded from the committed one;

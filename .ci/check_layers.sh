@@ -3,7 +3,7 @@
 # stay small enough to read:
 #  1. a file under lib/ includes only its own folder and the layers below it:
 #       common <- geom <- delaunay <- sizing <- {boundary, refine, dual};  geom <- delaunay3;
-#       common <- geom <- surface3 (3D surface checks);  quad, delaunay3 <- generate3;  common <- geom <- tetgen (TetGen shim, C++);
+#       common <- geom <- surface3 (3D surface checks);  quad, delaunay3 <- generate3;  common <- geom <- dual3;  common <- geom <- tetgen (TetGen shim, C++);
 #       io <- common;
 #       api sees every engine (not cli);  cli sees only include/ (and itself).
 #     The public headers (include/cvmesh*.h) are open to every layer.
@@ -33,7 +33,8 @@ allowed() {
     tetgen) echo "common geom" ;;
     quad) echo "common geom delaunay sizing refine" ;;
     generate3) echo "common geom delaunay delaunay3 sizing refine quad" ;;
-    api) echo "common geom delaunay delaunay3 sizing boundary surface3 tetgen refine dual quad io generate3" ;;
+    dual3) echo "common geom" ;;
+    api) echo "common geom delaunay delaunay3 sizing boundary surface3 tetgen refine dual quad io generate3 dual3" ;;
     cli) echo "" ;;
     *) echo "?" ;;
     esac

@@ -878,6 +878,24 @@ typedef enum cvm_option {
      *  whose refinement would put a point on one of their edges is only re-triangulated).
      *  Integer, bounds [0, 1]. @since 0.2 */
     CVM_OPT_GEN3_SURFACE = 744,
+    /** 3D dual optimisation (cvm_mesh_optimise_dual3()), 750-759. Sweep limit, integer,
+     *  default 50, bounds [0, 1e6] (0: measure only). @since 0.2 */
+    CVM_OPT_DUAL3_MAX_SWEEPS = 750,
+    /** No move may make a dihedral angle of the moved vertex's tetrahedra smaller than
+     *  min(this, the smallest there before), degrees. Default 10, bounds [0, 60]. @since 0.2 */
+    CVM_OPT_DUAL3_MIN_DIHEDRAL_DEG = 751,
+    /** Trial positions per vertex and sweep (compass search), integer, default 48, bounds
+     *  [1, 100000]. @since 0.2 */
+    CVM_OPT_DUAL3_BUDGET = 752,
+    /** The power vertex is wanted this x the tetrahedron's root-mean-square edge inside each face;
+     *  default 0.03, bounds [0, 0.2]. Compliance itself is the exact strict test. @since 0.2 */
+    CVM_OPT_DUAL3_MARGIN = 753,
+    /** 1 (default): a boundary vertex all of whose boundary faces lie in one axis-aligned
+     *  plane (inside a planar facet such as a box side) moves within that plane, exactly;
+     *  0: every boundary vertex keeps its position (its weight is free either way). Edges,
+     *  corners and vertices of curved or oblique surfaces never move. Integer, bounds
+     *  [0, 1]. @since 0.2 */
+    CVM_OPT_DUAL3_SLIDE_BOUNDARY = 754,
     /* ---- quad-dominant meshing (800-899): read by cvm_mesh_quadmesh() ---- */
     /** Exponent p of the Lp-CVT energy, even integer, default 6, bounds [2, 12]. p = 2 is
      *  the classic CVT (hexagonal cells); larger p pulls the cells towards squares of unit
@@ -2261,6 +2279,9 @@ CVM_API cvm_status cvm_mesh_set_weights(cvm_mesh *m, const double *w, size_t cou
 
 /**
  * Copy the weight of each vertex (0 for every vertex when none were set).
+ * On a 3D handle (since 0.2): the weights of the tetrahedral mesh's vertices
+ * (cvm_mesh_set_weights(), cvm_mesh_optimise_dual3()); before 0.2 a 3D handle
+ * returned CVM_E_UNSUPPORTED.
  * @param dst_len  capacity in doubles; must be >= the vertex count.
  * @return CVM_OK, CVM_E_NULL_ARG, CVM_E_BUFFER_TOO_SMALL (nothing written)
  * @since 0.1
@@ -2860,6 +2881,55 @@ CVM_API cvm_status cvm_mesh_generate3(cvm_mesh *m, double size);
  */
 CVM_API cvm_status cvm_mesh_generate3_sized(cvm_mesh *m, double size, const cvm_sizing *sizing);
 
+/**
+ * Optimise the vertex positions and power weights of the tetrahedral mesh of
+ * @p m so that more tetrahedra contain their power vertex (the 3D form of
+ * cvm_mesh_optimise_dual(); this version keeps the connectivity). Sweeps visit
+ * the vertices of the tetrahedra whose power vertex lies strictly outside them
+ * (exact), worst score F_k = W_k L_k |C_k - V_k| first (centroid C, power
+ * vertex V, W_k 1 when outside else 0, L_k 2 with a boundary face else 1), in
+ * min(20, n/25 + 1) bins shuffled within by a stream keyed by CVM_OPT_SEED and
+ * the sweep. Each vertex gets a compass search over (x, y, z, w) on a smooth
+ * penalty of its tetrahedra (the distance by which each power vertex falls
+ * short of lying CVM_OPT_DUAL3_MARGIN x the RMS edge inside each face,
+ * squared, plus a small centroid term, over the squared RMS edge). A move is
+ * kept only when the penalty drops and: every tetrahedron of the vertex stays
+ * positively oriented (exact orient3d); every face there that is not on the
+ * surface stays locally regular (exact power test; a face that failed before
+ * may keep failing); the exactly counted outside tetrahedra there do not
+ * increase; no dihedral angle there drops below min(CVM_OPT_DUAL3_MIN_DIHEDRAL_DEG,
+ * the smallest before). Vertices on a boundary face (or an internal facet)
+ * keep their position, except those inside an axis-aligned planar facet
+ * (CVM_OPT_DUAL3_SLIDE_BOUNDARY), which move within its plane; every weight is free. So every tetrahedron and face,
+ * the surface triangles included, stays, no power cell vanishes, and a locally
+ * regular mesh stays the regular tetrahedralisation of its weighted vertices.
+ * The run stops when nothing is outside, a sweep moves nothing, after 3 sweeps
+ * without a new lowest count, or at CVM_OPT_DUAL3_MAX_SWEEPS. Not in this
+ * version: flips (topology changes), boundary vertices sliding on oblique or
+ * curved surfaces, Modified Cuckoo Search, threads, merging into polyhedral cells.
+ * The report: CVM_REPORT_DUAL3_* (cvm_mesh_get_report()).
+ *
+ * @param m  mesh handle holding a tetrahedral mesh (cvm_mesh_generate3(),
+ *           cvm_mesh_triangulate() of 3D input, cvm_mesh_read() of a 3D mesh); not NULL.
+ *           Existing weights are the start (none: all 0); the result has weights.
+ * Options:  CVM_OPT_DUAL3_*, CVM_OPT_SEED, CVM_OPT_TIME_LIMIT_S; the progress callback
+ *           (stage CVM_STAGE_OPTIMISE_DUAL) gets the fraction of the initially outside
+ *           tetrahedra fixed so far, and can cancel. CVM_OPT_THREADS is not read.
+ * Stops:    on the time limit or cancellation the mesh holds the moves made so far, each
+ *           of which kept it valid.
+ * Determinism: same mesh, options and seed give bit-identical output (except where the
+ *           time limit stops the run), whatever the number of threads.
+ * Atomicity: on CVM_E_NOMEM (raised before any move) the mesh is unchanged.
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG
+ *         CVM_E_STATE            no tetrahedral mesh on the handle (a 2D handle: use
+ *                                cvm_mesh_optimise_dual())
+ *         CVM_E_NOMEM
+ *         CVM_INCOMPLETE_TIME_LIMIT, CVM_INCOMPLETE_CANCELLED
+ * @since 0.2
+ */
+CVM_API cvm_status cvm_mesh_optimise_dual3(cvm_mesh *m);
+
 /* ------------------------------------------------------------------------ */
 /* Quad-dominant meshing                                                    */
 /* ------------------------------------------------------------------------ */
@@ -3079,9 +3149,9 @@ typedef enum cvm_measure {
                                                  surface triangle is a Delaunay face (builds
                                                  without TetGen; 0 with it) */
     CVM_MEASURE_GEN3_SECONDS = 748,         /**< wall time of the run, seconds (not deterministic) */
-    CVM_MEASURE_GEN3_FACETS_REMESHED = 749, /**< planar facets re-meshed (CVM_OPT_GEN3_SURFACE 1) */
-    CVM_MEASURE_GEN3_SURFACE_TRIS_BEFORE = 750, /**< surface triangles read */
-    CVM_MEASURE_GEN3_SURFACE_TRIS_AFTER = 751,  /**< surface triangles meshed (= before when
+    CVM_MEASURE_GEN3_FACETS_REMESHED = 757, /**< planar facets re-meshed (CVM_OPT_GEN3_SURFACE 1) */
+    CVM_MEASURE_GEN3_SURFACE_TRIS_BEFORE = 758, /**< surface triangles read */
+    CVM_MEASURE_GEN3_SURFACE_TRIS_AFTER = 759,  /**< surface triangles meshed (= before when
                                                      the surface is used as given) */
     /* ---- 800-899: the quad measures are reports of the last cvm_mesh_quadmesh() (the
      * metric is not kept with the mesh): cvm_mesh_get_measure() accepts the
@@ -3191,9 +3261,20 @@ typedef enum cvm_report {
     CVM_REPORT_GEN3_LATTICE_LEVELS = 746,     /**< = CVM_MEASURE_GEN3_LATTICE_LEVELS */
     CVM_REPORT_GEN3_RECOVERY_DROPPED = 747,   /**< = CVM_MEASURE_GEN3_RECOVERY_DROPPED */
     CVM_REPORT_GEN3_SECONDS = 748,            /**< = CVM_MEASURE_GEN3_SECONDS */
-    CVM_REPORT_GEN3_FACETS_REMESHED = 749,    /**< = CVM_MEASURE_GEN3_FACETS_REMESHED */
-    CVM_REPORT_GEN3_SURFACE_TRIS_BEFORE = 750, /**< = CVM_MEASURE_GEN3_SURFACE_TRIS_BEFORE */
-    CVM_REPORT_GEN3_SURFACE_TRIS_AFTER = 751, /**< = CVM_MEASURE_GEN3_SURFACE_TRIS_AFTER */
+    /* the last cvm_mesh_optimise_dual3() (0 before any, and after cvm_mesh_generate3());
+       "outside": the power vertex lies strictly outside its tetrahedron (exact), as
+       CVM_MEASURE_CIRCUMCENTRE_OUTSIDE_PCT; "boundary": tetrahedra with a boundary face */
+    CVM_REPORT_DUAL3_SWEEPS = 750,            /**< sweeps run @since 0.2 */
+    CVM_REPORT_DUAL3_OUTSIDE_BEFORE_PCT = 751, /**< % of tetrahedra outside at the start */
+    CVM_REPORT_DUAL3_OUTSIDE_AFTER_PCT = 752,  /**< % outside at the end */
+    CVM_REPORT_DUAL3_OUTSIDE_BOUNDARY_BEFORE_PCT = 753, /**< % of boundary tetrahedra outside, start */
+    CVM_REPORT_DUAL3_OUTSIDE_BOUNDARY_AFTER_PCT = 754,  /**< ... at the end */
+    CVM_REPORT_DUAL3_MOVES = 755,             /**< vertex moves accepted */
+    CVM_REPORT_DUAL3_SECONDS = 756,           /**< wall time of the run (not deterministic) */
+    /* the last cvm_mesh_generate3() again: its surface (CVM_OPT_GEN3_SURFACE) */
+    CVM_REPORT_GEN3_FACETS_REMESHED = 757,    /**< = CVM_MEASURE_GEN3_FACETS_REMESHED */
+    CVM_REPORT_GEN3_SURFACE_TRIS_BEFORE = 758, /**< = CVM_MEASURE_GEN3_SURFACE_TRIS_BEFORE */
+    CVM_REPORT_GEN3_SURFACE_TRIS_AFTER = 759, /**< = CVM_MEASURE_GEN3_SURFACE_TRIS_AFTER */
     /* the last cvm_mesh_quadmesh() (0 before any, and after any call that drops the quads).
        Corner angles and edge lengths are measured in the metric: a corner's angle with g at
        its quad's centroid, an edge's metric length sqrt(e^T g e) with g at its midpoint. */

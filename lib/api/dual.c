@@ -56,7 +56,7 @@ cvm_status cvm_mesh_set_weights(cvm_mesh *m, const double *w, size_t count)
 cvm_status cvm_mesh_copy_weights(double *dst, size_t dst_len, const cvm_mesh *m)
 {
     if (m && m->m3)
-        return CVM_E_UNSUPPORTED; /* a 2D call on a 3D mesh */
+        return cvm__mesh3_copy_weights(dst, dst_len, m);
     size_t nv;
     cvm_status s;
     if (!m)

@@ -16,7 +16,7 @@
 cvm_status cvm__mesh3_gen3_report(double *out, const cvm_mesh *m, int which)
 {
     int k = which - (int)CVM_REPORT_GEN3_MATCHED_PAIRS;
-    if (k < 0 || k >= CVM__GEN3_NREPORT)
+    if (k < 0 || k >= CVM__GEN3_NREPORT || which == 749)
         return CVM_E_ARGUMENT;
     *out = m->m3 ? m->m3->gen3[k] : 0;
     return CVM_OK;
@@ -219,9 +219,9 @@ static cvm_status generate(cvm_mesh *m, double size, const cvm_sizing *sizing)
     g->gen3[6] = (double)rep.lattice_levels;
     g->gen3[7] = (double)rep.recovery_dropped;
     g->gen3[8] = cvm__now() - t0;
-    g->gen3[9] = rm_count[0];
-    g->gen3[10] = rm_count[1];
-    g->gen3[11] = rm_count[2];
+    g->gen3[17] = rm_count[0];
+    g->gen3[18] = rm_count[1];
+    g->gen3[19] = rm_count[2];
     return s;
 }
 

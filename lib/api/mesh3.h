@@ -35,6 +35,8 @@ cvm_status cvm__mesh3_copy_points(double *dst, size_t dst_len, const cvm_mesh *m
 const double *cvm__mesh3_points(const cvm_mesh *m, size_t *nv);
 cvm_status cvm__mesh3_copy_cells(cvm_index *dst, size_t dst_len, const cvm_mesh *m,
                                  cvm_entity kind);
+/* The weight of each vertex, 0 when none were set (optimise3.c). */
+cvm_status cvm__mesh3_copy_weights(double *dst, size_t dst_len, const cvm_mesh *m);
 /* The power vertex of each tetrahedron (3 per tetrahedron; mesh3_dual_out.c). */
 cvm_status cvm__mesh3_copy_dual_vertices(double *dst, size_t dst_len, const cvm_mesh *m);
 /* The bounded dual cells as a .vtu of polyhedra into ws (message set on error). */

@@ -8,7 +8,8 @@
 #include "common/surf3.h"
 #include "delaunay3/delaunay3_internal.h"
 
-#define CVM__GEN3_NREPORT 12
+/* CVM_REPORT_GEN3_* (740-748, 757-759) and CVM_REPORT_DUAL3_* (750-756), at which - 740 */
+#define CVM__GEN3_NREPORT 20
 
 struct cvm__mesh3 {
     cvm__surf3 in;           /* the input: points, and facets when a surface was read */
@@ -26,7 +27,8 @@ struct cvm__mesh3 {
     int32_t *input_map;      /* in.np: input point -> vertex */
     double *w;               /* nv weights (regular), or NULL */
     size_t n_dup, n_redundant, n_steiner_boundary, n_steiner_interior;
-    double gen3[CVM__GEN3_NREPORT]; /* report of the last cvm_mesh_generate3(): value
+    double gen3[CVM__GEN3_NREPORT]; /* report of the last cvm_mesh_generate3() and
+                                       cvm_mesh_optimise_dual3(): value
                                        CVM_REPORT_GEN3_MATCHED_PAIRS + k at k */
 };
 

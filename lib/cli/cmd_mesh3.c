@@ -1,8 +1,9 @@
 /*
  * cmd_mesh3.c - `cvmesh mesh3 IN --size H [--grading G] [--uniform] [--freespace lattice]
- * [--layers N] [--point-source X,Y,Z,H[,G]]... -o OUT.{vtu,msh,node} [--quality]
- * [--timings]`: a co-volume tetrahedral mesh inside a closed surface
- * (cvm_mesh_generate3(), or cvm_mesh_generate3_sized() with sources); write, report.
+ * [--layers N] [--point-source X,Y,Z,H[,G]]... [--optimise] -o OUT.{vtu,msh,node}
+ * [--dual DUAL.vtu] [--quality] [--timings]`: a co-volume tetrahedral mesh inside a
+ * closed surface (cvm_mesh_generate3(), or cvm_mesh_generate3_sized() with sources),
+ * optionally optimised (cvm_mesh_optimise_dual3()); write, report.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -29,7 +30,7 @@ void cli_mesh3_help(FILE *f)
     fprintf(f,
             "usage: cvmesh mesh3 IN.off|IN.stl|IN.poly|IN.smesh --size H [--grading G] [--uniform]\n"
             "                    [--freespace lattice] [--layers N] [--point-source X,Y,Z,H[,G]]\n"
-            "                    [-o OUT] [--quality]\n"
+            "                    [--optimise] [-o OUT] [--dual DUAL.vtu] [--quality]\n"
             "                    [--timings] [option flags]\n"
             "\n"
             "A tetrahedral co-volume mesh inside a closed surface: one near-field point per\n"
@@ -40,10 +41,14 @@ void cli_mesh3_help(FILE *f)
             "triangles and grows away from them by the grading G (--uniform: H everywhere).\n"
             "--point-source X,Y,Z,H[,G] (repeatable, up to 64): size H at (X, Y, Z), growing\n"
             "by G (default 0.2) per unit distance; the size is the least of all of them.\n"
-            "Not yet implemented: --freespace octree|refine, --layers above 1, --optimise.\n"
+            "--optimise then moves vertices and sets power weights (cvm_mesh_optimise_dual3():\n"
+            "connectivity kept; boundary vertices stay, but those inside an axis-aligned planar\n"
+            "facet slide in it) so that more tetrahedra contain their power vertex; --time-limit S\n"
+            "bounds it; --dual writes the weighted power cells.\n"
+            "Not yet implemented: --freespace octree|refine, --layers above 1.\n"
             "\n"
-            "Outputs and reports (--timings: read, generate, write, quality):\n");
-    cli_print_output_help(f, 0, 0);
+            "Outputs and reports (--timings: read, generate, optimise, write, quality):\n");
+    cli_print_output_help(f, 0, 1);
     fprintf(f, "  (.vtu (VTK_TETRA cells), .msh (Gmsh 4.1) or .node (OUT.node + .ele + .face))\n");
     cli_print_option_flags(f, CLI_CMD_MESH3);
     fprintf(f, "\nOn bad input the exit status is 1 and one line names the file, line or face;\n"
@@ -118,6 +123,7 @@ static int parse(margs *a, int argc, char **argv)
     int r;
     memset(a, 0, sizeof *a);
     a->o.command = "mesh3";
+    a->o.with_dual = 1; /* --dual DUAL.vtu: the power cells, weights included */
     if ((r = cli_parse_args("mesh3", CLI_CMD_MESH3, argc, argv, cli_mesh3_help, own_flag, a, &a->o,
                             a->set, &a->nset, &a->in)) ||
         (r = cli_check_outputs3("mesh3", a->in, &a->o)))
@@ -149,6 +155,11 @@ static void report(FILE *f, cvm_mesh *m)
         {CVM_REPORT_GEN3_LATTICE_POINTS, 1, "lattice points", "%.0f"},
         {CVM_REPORT_GEN3_LATTICE_LEVELS, 1, "lattice levels", "%.0f"},
         {CVM_REPORT_GEN3_RECOVERY_DROPPED, 1, "points dropped for recovery", "%.0f"},
+        {CVM_REPORT_DUAL3_SWEEPS, 2, "optimiser sweeps", "%.0f"},
+        {CVM_REPORT_DUAL3_MOVES, 2, "optimiser moves", "%.0f"},
+        {CVM_REPORT_DUAL3_OUTSIDE_BEFORE_PCT, 2, "outside before optimising", "%.3f %%"},
+        {CVM_REPORT_DUAL3_OUTSIDE_BOUNDARY_BEFORE_PCT, 2, "  at the boundary", "%.3f %%"},
+        {CVM_REPORT_DUAL3_SECONDS, 2, "optimiser seconds", "%.3g"},
         {CVM_MEASURE_VOLUME, 0, "volume", "%.10g"},
         {CVM_MEASURE_MIN_DIHEDRAL_DEG, 0, "min dihedral angle", "%.4g deg"},
         {CVM_MEASURE_MAX_DIHEDRAL_DEG, 0, "max dihedral angle", "%.4g deg"},
@@ -157,9 +168,12 @@ static void report(FILE *f, cvm_mesh *m)
         {CVM_MEASURE_MAX_EDGE, 0, "max edge", "%.6g"},
         {CVM_MEASURE_CIRCUMCENTRE_OUTSIDE_PCT, 0, "circumcentre outside", "%.3f %%"},
         {CVM_MEASURE_CIRCUMCENTRE_OUTSIDE_BOUNDARY_PCT, 0, "  at the boundary", "%.3f %%"},
+        {CVM_MEASURE_MIN_DUAL_EDGE_RATIO_3D, 0, "min dual edge / face edge", "%.4g"},
         {CVM_MEASURE_RECOVERY_STEINER, 0, "recovery steiner points", "%.0f"},
     };
     size_t i, n;
+    double sw = 0;
+    int optimised = cvm_mesh_get_report(&sw, m, CVM_REPORT_DUAL3_SECONDS) == CVM_OK && sw > 0;
     for (i = 0; i < sizeof counts / sizeof counts[0]; i++)
         if (cvm_mesh_count(&n, m, counts[i].kind) == CVM_OK)
             fprintf(f, "%-28s %lu\n", counts[i].label, (unsigned long)n);
@@ -167,7 +181,7 @@ static void report(FILE *f, cvm_mesh *m)
         double v;
         cvm_status s = rows[i].is_report ? cvm_mesh_get_report(&v, m, (cvm_report)rows[i].which)
                                          : cvm_mesh_get_measure(&v, m, (cvm_measure)rows[i].which);
-        if (s != CVM_OK)
+        if (s != CVM_OK || (rows[i].is_report == 2 && !optimised))
             continue;
         fprintf(f, "%-28s ", rows[i].label);
         fprintf(f, rows[i].fmt, v);
@@ -205,11 +219,6 @@ static int run(margs *a)
     int rc;
     cvm_status gs;
     int32_t dim = 0;
-    if (a->optimise) {
-        fprintf(stderr, "cvmesh: mesh3: --optimise is unsupported in this version (3D dual "
-                        "optimisation is not implemented yet)\n");
-        return CLI_EXIT_FAIL;
-    }
     if ((rc = make_sizing(a, &sz)))
         return rc;
     if (cvm_mesh_create(&m) != CVM_OK) {
@@ -244,6 +253,17 @@ static int run(margs *a)
         return cli_fail(m, sz, a->in);
     cvm_sizing_free(sz);
     cli_timing_mark(&a->o, "generate");
+    if (a->optimise) {
+        cvm_status s;
+        cli_budget_apply(&budget, m);
+        cli_phase("optimising", a->in);
+        s = cvm_mesh_optimise_dual3(m);
+        if (cvm_status_is_error(s) || cli_interrupted())
+            return cli_fail(m, NULL, a->in);
+        if (s != CVM_OK)
+            fprintf(stderr, "cvmesh: mesh3: %s\n", cvm_mesh_errmsg(m));
+        cli_timing_mark(&a->o, "optimise");
+    }
     return cli_finish3(m, &a->o, "mesh3", a->in, report);
 }
 

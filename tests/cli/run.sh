@@ -335,9 +335,22 @@ fi
 expect_exit 1 "mesh3 --freespace octree" "$CLI" mesh3 "$D3/tetra.off" --size 0.5 --freespace octree
 expect_one_line "mesh3 --freespace octree"
 expect_grep "mesh3 --freespace octree" "$TMP/err" "unsupported"
-expect_exit 1 "mesh3 --optimise" "$CLI" mesh3 "$D3/tetra.off" --size 0.5 --optimise -o "$OUT/o.vtu"
-expect_grep "mesh3 --optimise" "$TMP/err" "unsupported"
-if [ ! -e "$OUT/o.vtu" ]; then pass; else fail "mesh3 --optimise wrote a file"; fi
+expect_exit 0 "mesh3 --optimise" "$CLI" mesh3 "$D3/tetra.off" --size 0.3 --optimise --opt-sweeps 3 \
+    -o "$OUT/o.vtu" --quality
+expect_grep "mesh3 --optimise" "$TMP/out" "outside before optimising"
+expect_grep "mesh3 --optimise" "$TMP/out" "optimiser sweeps"
+if [ -s "$OUT/o.vtu" ]; then pass; else fail "mesh3 --optimise wrote no file"; fi
+# the same bytes for any thread count, optimised too
+for n in 1 2; do
+    expect_exit 0 "mesh3 --optimise with $n threads" env OMP_NUM_THREADS=$n "$CLI" mesh3 "$D3/tetra.off" \
+        --size 0.3 --optimise --opt-sweeps 2 -o "$OUT/otetra_$n.node" --dual "$OUT/otetra_$n.dual.vtu"
+done
+if cmp -s "$OUT/otetra_1.node" "$OUT/otetra_2.node" && cmp -s "$OUT/otetra_1.dual.vtu" "$OUT/otetra_2.dual.vtu"; then
+    pass
+else
+    fail "mesh3 --optimise: other bytes with 2 threads"
+fi
+expect_exit 2 "mesh3 --opt-budget 0" "$CLI" mesh3 "$D3/tetra.off" --size 0.5 --optimise --opt-budget 0
 expect_exit 1 "mesh3 --layers 2" "$CLI" mesh3 "$D3/tetra.off" --size 0.5 --layers 2
 expect_grep "mesh3 --layers 2" "$TMP/err" "unsupported"
 expect_exit 2 "mesh3 without --size" "$CLI" mesh3 "$D3/tetra.off"

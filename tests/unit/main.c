@@ -16,6 +16,7 @@ int main(void)
     srunner_add_suite(sr, quad_recombine_suite());
     srunner_add_suite(sr, quad_suite());
     srunner_add_suite(sr, generate3_suite());
+    srunner_add_suite(sr, dual3_suite());
     srunner_add_suite(sr, support_suite());
     srunner_run_all(sr, CK_NORMAL);
     failed = srunner_ntests_failed(sr);

@@ -14,6 +14,7 @@ Suite *surface3_suite(void); /* tests/unit/surface3/suite.c */
 Suite *quad_recombine_suite(void); /* tests/unit/quad/suite_recombine.c */
 Suite *quad_suite(void);     /* tests/unit/quad/suite.c */
 Suite *generate3_suite(void); /* tests/unit/generate3/suite.c */
+Suite *dual3_suite(void);    /* tests/unit/dual3/suite.c */
 Suite *support_suite(void);  /* tests/unit/support/test_support.c: the test helpers themselves */
 
 #endif

@@ -1,0 +1,291 @@
+/*
+ * d3_run.c - the sweeps of the 3D power-dual optimiser (dual3.h): the
+ * vertex stars, the sweep order, the compass search per vertex.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "dual3/d3_internal.h"
+#include "geom/geom_internal.h"
+#include "geom/measure3.h"
+
+typedef struct d3_rank {
+    double score;
+    int32_t v;
+} d3_rank;
+
+static int rank_cmp(const void *pa, const void *pb)
+{
+    const d3_rank *a = pa, *b = pb;
+    if (a->score != b->score)
+        return a->score > b->score ? -1 : 1;
+    return (a->v > b->v) - (a->v < b->v);
+}
+
+static void work_free(cvm__ctx *ctx, cvm__d3_work *K)
+{
+    cvm__free(ctx, K->voff);
+    cvm__free(ctx, K->vtet);
+    cvm__free(ctx, K->fixpos);
+    cvm__free(ctx, K->out);
+    cvm__free(ctx, K->bnd);
+    cvm__free(ctx, K->lv);
+    cvm__free(ctx, K->stuck);
+    cvm__free(ctx, K->slide);
+    memset(K, 0, sizeof *K);
+}
+
+static cvm_status work_init(cvm__ctx *ctx, cvm__d3_work *K, const cvm__d3_mesh *M)
+{
+    size_t t, i, nv = M->nv;
+    double *cnt;
+    K->voff = cvm__calloc(ctx, nv + 1, sizeof *K->voff);
+    K->vtet = cvm__malloc(ctx, (4 * M->ntet + 1) * sizeof *K->vtet);
+    K->fixpos = cvm__calloc(ctx, nv + 1, 1);
+    K->out = cvm__calloc(ctx, M->ntet + 1, 1);
+    K->bnd = cvm__calloc(ctx, M->ntet + 1, 1);
+    K->lv = cvm__calloc(ctx, 2 * nv + 1, sizeof *K->lv);
+    K->stuck = cvm__calloc(ctx, nv + 1, 1);
+    K->slide = cvm__malloc(ctx, nv + 1);
+    if (!K->voff || !K->vtet || !K->fixpos || !K->out || !K->bnd || !K->lv || !K->stuck ||
+        !K->slide) {
+        work_free(ctx, K);
+        return cvm__nomem(ctx);
+    }
+    cnt = K->lv + nv;
+    memset(K->slide, 7, nv + 1);
+    for (t = 0; t < 4 * M->ntet; t++)
+        K->voff[M->tet[t] + 1]++;
+    for (i = 0; i < nv; i++)
+        K->voff[i + 1] += K->voff[i];
+    for (t = 0; t < M->ntet; t++) {
+        int a, b;
+        for (a = 0; a < 4; a++) {
+            int32_t q = M->tet[4 * t + (size_t)a];
+            /* fill from the end so that each list stays in increasing t */
+            K->vtet[K->voff[q]++] = (int32_t)t;
+            if (M->nbr[4 * t + (size_t)a] < 0)
+                K->bnd[t] = 1;
+            if (M->cface[4 * t + (size_t)a]) {
+                const double *X[3];
+                int j = 0, ax, same = 0;
+                for (b = 0; b < 4; b++)
+                    if (b != a)
+                        X[j++] = M->xyz + 3 * (size_t)M->tet[4 * t + (size_t)b];
+                for (ax = 0; ax < 3; ax++) /* the face lies in the plane x_ax = const */
+                    if (X[0][ax] == X[1][ax] && X[0][ax] == X[2][ax])
+                        same |= 1 << ax;
+                for (b = 0; b < 4; b++)
+                    if (b != a) {
+                        K->fixpos[M->tet[4 * t + (size_t)b]] = 1;
+                        K->slide[M->tet[4 * t + (size_t)b]] &= (uint8_t)same;
+                    }
+            }
+            for (b = 0; b < 4; b++)
+                if (b != a) {
+                    int32_t r = M->tet[4 * t + (size_t)b];
+                    K->lv[q] += sqrt(cvm__dist2_3(M->xyz + 3 * (size_t)q, M->xyz + 3 * (size_t)r));
+                    cnt[q] += 1;
+                }
+        }
+        K->out[t] = (uint8_t)cvm__d3_outside(M, t);
+    }
+    for (i = nv; i > 0; i--)
+        K->voff[i] = K->voff[i - 1];
+    K->voff[0] = 0;
+    for (i = 0; i < nv; i++) {
+        K->lv[i] = cnt[i] > 0 ? K->lv[i] / cnt[i] : 0;
+        /* every constrained face at i in one plane x_a = const: i may move in the other two
+         * coordinates (exactly in the plane); else (an edge, a corner, a curved surface) not */
+        K->slide[i] = K->p->slide && (K->slide[i] == 1 || K->slide[i] == 2 || K->slide[i] == 4)
+                          ? (uint8_t)(~K->slide[i] & 7) : 0;
+    }
+    K->M = M;
+    return CVM_OK;
+}
+
+/* Compass search for v over (x, y, z, w): the coordinates its position may
+ * change in (all for an interior vertex, the two in-plane ones for one inside
+ * an axis-aligned planar facet with slide on, none otherwise) and w; writes the
+ * best valid point found; 1 when v moved. */
+static int solve_vertex(cvm__d3_work *K, int32_t v)
+{
+    cvm__d3_mesh *M = (cvm__d3_mesh *)K->M;
+    double *x0 = M->xyz + 3 * (size_t)v;
+    double cur[4], cand[4], best, cmax0, cfloor, hs, hw;
+    int evals = 0, dir, first = 0, nd = 0, moved = 0, a, dirs[8];
+    if (K->lv[v] <= 0 || K->stuck[v])
+        return 0;
+    for (a = 0; a < 3; a++)
+        if (!K->fixpos[v] || (K->slide[v] >> a & 1))
+            dirs[nd++] = 2 * a, dirs[nd++] = 2 * a + 1;
+    dirs[nd++] = 6, dirs[nd++] = 7;
+    cur[0] = x0[0], cur[1] = x0[1], cur[2] = x0[2], cur[3] = M->w[v];
+    best = cvm__d3_star_penalty(K, v, cur, cur[3], HUGE_VAL);
+    if (best == HUGE_VAL)
+        return 0;
+    /* no angle below min(the floor, the smallest now): cosines, larger is worse */
+    cmax0 = cvm__d3_star_max_cos(K, v, cur);
+    cfloor = cos(K->p->min_dihedral_deg * (3.14159265358979323846 / 180));
+    cfloor = cmax0 > cfloor ? cmax0 : cfloor;
+    hs = 0.08 * K->lv[v];
+    hw = 0.16 * K->lv[v] * K->lv[v];
+    while (evals < K->p->budget && hs > 1e-3 * K->lv[v]) {
+        int improved = 0, k;
+        for (k = 0; k < nd && evals < K->p->budget; k++) {
+            double f;
+            dir = dirs[(first + k) % nd];
+            memcpy(cand, cur, sizeof cand);
+            if (dir >= 6)
+                cand[3] += (dir & 1) ? -hw : hw;
+            else
+                cand[dir >> 1] += (dir & 1) ? -hs : hs;
+            f = cvm__d3_star_penalty(K, v, cand, cand[3], best);
+            evals++;
+            if (f < best && (dir >= 6 || cvm__d3_star_max_cos(K, v, cand) <= cfloor) &&
+                cvm__d3_star_valid(K, v, cand, cand[3])) {
+                memcpy(cur, cand, sizeof cur);
+                best = f;
+                first = (first + k) % nd;
+                improved = moved = 1;
+                break;
+            }
+        }
+        if (!improved)
+            hs *= 0.5, hw *= 0.5;
+    }
+    if (moved) {
+        int32_t s;
+        int k;
+        x0[0] = cur[0], x0[1] = cur[1], x0[2] = cur[2];
+        M->w[v] = cur[3];
+        for (s = K->voff[v]; s < K->voff[v + 1]; s++) {
+            int32_t t = K->vtet[s];
+            K->nout -= K->out[t];
+            K->out[t] = (uint8_t)cvm__d3_outside(M, (size_t)t);
+            K->nout += K->out[t];
+            /* these vertices see a new star, and so do those across its faces (whose
+               link faces these are) */
+            for (k = 0; k < 4; k++) {
+                int32_t nb = M->nbr[4 * (size_t)t + (size_t)k];
+                K->stuck[M->tet[4 * (size_t)t + (size_t)k]] = 0;
+                if (nb >= 0)
+                    K->stuck[M->tet[4 * ((size_t)nb >> 2) + ((size_t)nb & 3)]] = 0;
+            }
+        }
+    } else {
+        K->stuck[v] = 1; /* the same search would fail again until a neighbour moves */
+    }
+    return moved;
+}
+
+static size_t count_out(const cvm__d3_work *K, size_t ntet, size_t *bout)
+{
+    size_t t, n = 0;
+    *bout = 0;
+    for (t = 0; t < ntet; t++) {
+        n += K->out[t];
+        *bout += K->out[t] && K->bnd[t];
+    }
+    return n;
+}
+
+/* The vertices of the non-compliant tetrahedra, worst score first, bins shuffled. */
+static size_t sweep_order(const cvm__d3_work *K, d3_rank *rk, double *vs, uint64_t seed,
+                          size_t sweep)
+{
+    const cvm__d3_mesh *M = K->M;
+    size_t t, i, n = 0, nbin, b;
+    cvm__rng rng;
+    for (i = 0; i < M->nv; i++)
+        vs[i] = 0;
+    for (t = 0; t < M->ntet; t++) {
+        const double *P[4];
+        double W[4], d = 0, F;
+        int k;
+        if (!K->out[t])
+            continue;
+        for (k = 0; k < 4; k++) {
+            int32_t q = M->tet[4 * t + (size_t)k];
+            P[k] = M->xyz + 3 * (size_t)q;
+            W[k] = M->w[q];
+        }
+        cvm__d3_tet_penalty(P, W, K->p->margin, &d);
+        F = (K->bnd[t] ? 2.0 : 1.0) * (d > 0 ? d : 0) + 1e-300;
+        for (k = 0; k < 4; k++) {
+            int32_t q = M->tet[4 * t + (size_t)k];
+            vs[q] = F > vs[q] ? F : vs[q];
+        }
+    }
+    for (i = 0; i < M->nv; i++)
+        if (vs[i] > 0) {
+            rk[n].score = vs[i];
+            rk[n].v = (int32_t)i;
+            n++;
+        }
+    qsort(rk, n, sizeof *rk, rank_cmp);
+    nbin = n / 25 + 1 < 20 ? n / 25 + 1 : 20;
+    cvm__rng_seed(&rng, seed ^ (0x9e3779b97f4a7c15ULL * (uint64_t)(sweep + 1)));
+    for (b = 0; b < nbin; b++) {
+        size_t lo = n * b / nbin, hi = n * (b + 1) / nbin;
+        for (i = hi; i > lo + 1; i--) {
+            size_t j = lo + (size_t)cvm__rng_below(&rng, (uint64_t)(i - lo));
+            d3_rank tmp = rk[i - 1];
+            rk[i - 1] = rk[j];
+            rk[j] = tmp;
+        }
+    }
+    return n;
+}
+
+cvm_status cvm__d3_optimise(cvm__ctx *ctx, cvm__d3_mesh *M, const cvm__d3_params *p,
+                            cvm__d3_report *r)
+{
+    cvm__d3_work K;
+    d3_rank *rk;
+    double *vs;
+    size_t sweep, i, low, stall = 0;
+    cvm_status s = CVM_OK;
+    memset(r, 0, sizeof *r);
+    memset(&K, 0, sizeof K);
+    r->ntet = M->ntet;
+    K.p = p;
+    if ((s = work_init(ctx, &K, M)))
+        return s;
+    rk = cvm__malloc(ctx, (M->nv + 1) * sizeof *rk);
+    vs = cvm__malloc(ctx, (M->nv + 1) * sizeof *vs);
+    if (!rk || !vs) {
+        cvm__free(ctx, rk);
+        cvm__free(ctx, vs);
+        work_free(ctx, &K);
+        return cvm__nomem(ctx);
+    }
+    for (i = 0; i < M->ntet; i++)
+        r->nbnd += K.bnd[i];
+    r->out_before = r->out_after = K.nout = count_out(&K, M->ntet, &r->bout_before);
+    r->bout_after = r->bout_before;
+    low = r->out_before;
+    for (sweep = 0; sweep < (size_t)p->max_sweeps && r->out_after > 0 && !s; sweep++) {
+        size_t n = sweep_order(&K, rk, vs, p->seed, sweep), moved = 0;
+        for (i = 0; i < n && !s; i++) {
+            moved += (size_t)solve_vertex(&K, rk[i].v);
+            s = cvm__tick(ctx, 1, CVM_STAGE_OPTIMISE_DUAL,
+                          1.0 - (double)K.nout / (double)r->out_before);
+        }
+        r->moves += moved;
+        r->sweeps++;
+        r->out_after = count_out(&K, M->ntet, &r->bout_after);
+        if (r->out_after < low)
+            low = r->out_after, stall = 0;
+        else if (++stall >= 3)
+            break;
+        if (!moved)
+            break;
+    }
+    r->out_after = count_out(&K, M->ntet, &r->bout_after);
+    cvm__free(ctx, rk);
+    cvm__free(ctx, vs);
+    work_free(ctx, &K);
+    return s;
+}

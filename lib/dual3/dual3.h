@@ -1,0 +1,84 @@
+/*
+ * dual3.h - the 3D power-dual optimiser (the 3D form of lib/dual's): move
+ * vertices and set power weights of a tetrahedral mesh so that more
+ * tetrahedra contain their power vertex (the "co-volume" property).
+ *
+ * This version keeps the connectivity: a move of vertex v (x, y, z, w) is
+ * accepted only when every tetrahedron of v's star stays positively oriented
+ * (exact orient3d), every face of the star that is not constrained stays
+ * locally regular (exact power test with symbolic perturbation by vertex
+ * index, as cvm_mesh_check() decides it: the vertex across the face is not in
+ * conflict with the tetrahedron's orthosphere; a face that already failed
+ * before the move may keep failing), no dihedral angle of the star drops below
+ * min(min_dihedral, the star's smallest before), the star's exactly counted
+ * non-compliant tetrahedra do not increase, and the star's penalty decreases.
+ * A locally regular tetrahedralisation is the regular one of its vertices (in
+ * the constrained sense along constrained faces), so the mesh stays regular
+ * after every accepted move, every face (the surface included) stays a face,
+ * and no power cell can vanish: a stop at any point leaves a valid mesh.
+ * Vertices on a constrained face keep their position, except, with slide, a
+ * vertex all of whose constrained faces lie in one axis-aligned plane: it
+ * moves in the two other coordinates, so it stays exactly in the plane, and
+ * the orientation checks keep its surface triangles unfolded. Weights are free.
+ *
+ * Penalty of a tetrahedron with root-mean-square edge l and power vertex
+ * barycentric coordinates b_i (heights h_i): sum_i max(0, margin l - b_i h_i)^2 / l^2 plus
+ * 1e-3 |centroid - power vertex|^2 / l^2 (the 2D design's smooth penalty).
+ * Score (sweep order) F_k = W_k L_k |C_k - V_k|, W_k 1 when non-compliant
+ * (exact) else 0, L_k 2 at the boundary else 1.
+ *
+ * Solver: compass search over (x, y, z, w) from steps l_v / 4 and l_v^2 / 2
+ * (l_v the mean edge at v), halved on failure, budget evaluations per vertex.
+ * Sweeps visit the vertices of the non-compliant tetrahedra, worst score
+ * first, in min(20, n / 25 + 1) bins shuffled within by a stream keyed by
+ * (seed, sweep). One thread: the result depends only on the mesh and params.
+ *
+ * Memory: the context's allocator; CVM_E_NOMEM before any move, the mesh
+ * unchanged. Run control: cvm__tick() per vertex solved (stage
+ * CVM_STAGE_OPTIMISE_DUAL, fraction of the initially non-compliant fixed).
+ */
+#ifndef CVM_DUAL3_H
+#define CVM_DUAL3_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "common/common_internal.h"
+
+typedef struct cvm__d3_mesh {
+    double *xyz;            /* 3 nv, updated in place */
+    double *w;              /* nv weights, updated in place */
+    size_t nv;
+    const int32_t *tet;     /* 4 ntet, each positively oriented */
+    size_t ntet;
+    const int32_t *nbr;     /* 4 ntet: 4 u + g across face f (opposite corner f), or -1 */
+    const uint8_t *cface;   /* 4 ntet: 1 when the face is constrained (no neighbour, or an
+                               internal facet of the surface) */
+} cvm__d3_mesh;
+
+typedef struct cvm__d3_params {
+    int max_sweeps;
+    double min_dihedral_deg;
+    int budget;             /* evaluations per vertex and sweep */
+    double margin;          /* power vertex wanted margin x mean edge inside every face */
+    uint64_t seed;
+    int slide;              /* 1: vertices inside an axis-aligned planar facet move in it */
+} cvm__d3_params;
+
+typedef struct cvm__d3_report {
+    size_t sweeps, moves;
+    size_t ntet, nbnd;              /* tetrahedra; those with a face without neighbour */
+    size_t out_before, out_after;   /* power vertex strictly outside (exact) */
+    size_t bout_before, bout_after; /* the same among the boundary tetrahedra */
+} cvm__d3_report;
+
+/* Optimise M in place. *r is filled also on a stop.
+ * @return CVM_OK, CVM_E_NOMEM (nothing moved), CVM_INCOMPLETE_TIME_LIMIT,
+ *         CVM_INCOMPLETE_CANCELLED (moves so far kept; the mesh is valid). */
+cvm_status cvm__d3_optimise(cvm__ctx *ctx, cvm__d3_mesh *M, const cvm__d3_params *p,
+                            cvm__d3_report *r);
+
+/* 1 when the power vertex of tetrahedron t of M lies strictly outside it (exact). */
+int cvm__d3_outside(const cvm__d3_mesh *M, size_t t);
+
+#endif

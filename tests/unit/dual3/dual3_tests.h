@@ -1,0 +1,8 @@
+/* dual3_tests.h - TCases of the dual3 suite (tests/unit/dual3/suite.c). */
+#ifndef CVMTEST_DUAL3_TESTS_H
+#define CVMTEST_DUAL3_TESTS_H
+#include <check.h>
+
+TCase *dual3_optimise_tcase(void); /* test_optimise3.c: cvm_mesh_optimise_dual3() */
+
+#endif

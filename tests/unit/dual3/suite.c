@@ -1,0 +1,10 @@
+/* suite.c - the dual3 suite: the 3D power-dual optimiser (cvm_mesh_optimise_dual3). */
+#include "suites.h"
+#include "dual3/dual3_tests.h"
+
+Suite *dual3_suite(void)
+{
+    Suite *s = suite_create("dual3");
+    suite_add_tcase(s, dual3_optimise_tcase());
+    return s;
+}
