@@ -6,15 +6,6 @@
 #include "geom/geom_internal.h"
 #include "geom/measure.h"
 
-int cvm__rf_on_chain(const double *a, const double *b, const double *c)
-{
-    double dx = b[0] - a[0], dy = b[1] - a[1], len = sqrt(dx * dx + dy * dy);
-    double mag = fmax(fmax(fabs(a[0]), fabs(a[1])), fmax(fabs(b[0]), fabs(b[1])));
-    double along = ((c[0] - a[0]) * dx + (c[1] - a[1]) * dy) / len;
-    return len > 0 && along > 0 && along < len &&
-           fabs(cvm__orient2d(a, b, c)) <= 0x1p-40 * (mag + len) * len;
-}
-
 /* Domain triangle t = (c, a, b) (c at corner j) on a hull edge a-b that no
  * segment covers, with c on the chain of a-b (cvm__rf_on_chain): t and the ghost g
  * across a-b become the ghosts across c-a and b-c, so the hull passes through

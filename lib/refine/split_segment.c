@@ -130,6 +130,15 @@ static cvm_status ss_insert_on(cvm__refiner *R, int32_t t, int j, int32_t seg, c
     return cvm__rf_new_vertex(R, v, seg);
 }
 
+int cvm__rf_on_chain(const double *a, const double *b, const double *c)
+{
+    double dx = b[0] - a[0], dy = b[1] - a[1], len = sqrt(dx * dx + dy * dy);
+    double mag = fmax(fmax(fabs(a[0]), fabs(a[1])), fmax(fabs(b[0]), fabs(b[1])));
+    double along = ((c[0] - a[0]) * dx + (c[1] - a[1]) * dy) / len;
+    return len > 0 && along > 0 && along < len &&
+           fabs(cvm__orient2d(a, b, c)) <= 0x1p-40 * (mag + len) * len;
+}
+
 /* Constrain edge j of t for segment seg unless another segment holds it: an
  * edge stores one segment, and the chain check does not consult labels. */
 static void ss_constrain(cvm__tri2 *T, int32_t t, int j, int32_t seg)
