@@ -107,12 +107,8 @@ DATA3D := $(BUILD)/data3d
 FUZZ_TARGETS := poly_read node_read cdt vtu_read vtk_read msh_read refine optimise off_read stl_read tetpoly_read delaunay3 generate3 quadmesh insert3 optimise3
 # The targets make check runs for FUZZ_TIME seconds with a fixed seed. A
 # target leaves this list while its fixed-seed run reaches one of its open
-# findings (tests/fuzz/open/<target>/): it would fail on those known inputs
-# (cdt, whose fixed-seed run reached collinearity_tests_disagree_internal_error;
-# refine, whose seed-1 run reaches two open findings that c9e9268
-# has too, after about 220 and 1140 executions: libFuzzer's path varies with
-# timing, so either may fall within the run).
-FUZZ_CHECK_TARGETS := poly_read node_read vtu_read vtk_read msh_read optimise off_read stl_read tetpoly_read delaunay3 generate3 quadmesh insert3 optimise3
+# findings (tests/fuzz/open/<target>/): it would fail on those known inputs.
+FUZZ_CHECK_TARGETS := poly_read node_read cdt vtu_read vtk_read msh_read refine optimise off_read stl_read tetpoly_read delaunay3 generate3 quadmesh insert3 optimise3
 FUZZ_BINS := $(FUZZ_TARGETS:%=$(BUILD)/fuzz/fuzz_%)
 REPLAY_BINS := $(FUZZ_TARGETS:%=$(BUILD)/fuzz/replay_%)
 FUZZ_SUPPORT_OBJ := $(BUILD)/obj/tests/fuzz/mesh_oracle.o $(BUILD)/obj/tests/fuzz/fuzz_input.o \

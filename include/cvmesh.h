@@ -1209,9 +1209,10 @@ CVM_API cvm_status cvm_mesh_insert_points_nd(cvm_index *ids_out, cvm_mesh *m, co
  * a chain of constrained mesh edges from end to end, through vertices on it or
  * within 2^-40 (M + L) of it (rounded crossings, see cvm_mesh_triangulate();
  * meshing uses it only to route a chain, or with cvm_mesh_refine() a hull
- * edge, through a vertex within rounding of it) (segments of a chain
- * re-discretised by CVM_OPT_KEEP_SEGMENT_VERTICES = 0, whose inner ends are gone,
- * are replaced by its new pieces, checked as constrained edges), every interior
+ * edge, through a vertex within rounding of it, see cvm_mesh_refine())
+ * (segments of a chain re-discretised by CVM_OPT_KEEP_SEGMENT_VERTICES = 0,
+ * whose inner ends are gone, are replaced by its new pieces, checked as
+ * constrained edges), every interior
  * non-constrained edge locally Delaunay (in-circle, or the power test with
  * weights), the domain bounded by constrained edges or the convex hull.
  * On a 3D mesh: every tetrahedron positively oriented (exact orient3d), each
@@ -1769,7 +1770,16 @@ typedef enum cvm_algorithm {
  * CVM_OPT_KEEP_CONVEX_HULL, the convex hull edges become segments (with marker 0),
  * a hull edge passing within 2^-40 (M + L) of a vertex (the tolerance of a
  * segment's chain, see cvm_mesh_triangulate()) through that vertex: the sliver
- * between them leaves the mesh.
+ * between them leaves the mesh (also for a hull edge on an input segment, when
+ * the vertex is within that tolerance of the input segment too: its chain then
+ * passes through the vertex). Inside the domain, a segment's chain is routed the
+ * same way through the apex of a triangle beside one of its pieces when the apex
+ * lies strictly between the piece's ends within that tolerance of the piece and
+ * of the input segment (the flat triangle goes to the other side): before
+ * refining, and again where a split of a piece is refused (no rounded point lies
+ * inside the triangles beside it). An end of a segment within that tolerance of
+ * another segment's interior is a join of the two, as an end exactly on it is,
+ * for the small-input-angle exemption.
  * Before refining, with CVM_OPT_KEEP_SEGMENT_VERTICES = 0 smooth chains of segments
  * are re-discretised with the sizing and the triangulation rebuilt (see that option:
  * inner input vertices of such chains disappear, the input map gives -1 for them);

@@ -14,6 +14,7 @@ typedef struct seg_work {
     int32_t *newtri; size_t nnew, cap_new;
     int32_t *rng; size_t cap_rng;                /* ranges for the pseudo-polygon stack */
     int32_t *xe; size_t nxe, cap_xe;             /* crossed edges as vertex pairs */
+    int32_t *ends; size_t nends, cap_ends;       /* every piece end so far: the chain's vertices */
     size_t reroutes;                             /* crossings routed through an existing vertex */
     int32_t A, B;                                /* the ends of the input segment */
 } seg_work;
@@ -193,14 +194,24 @@ static int at_vertex(const double *p, const double *q)
 static int on_input_segment(const cvm__tri2 *T, const seg_work *w, int32_t a, int32_t b, int32_t z)
 {
     const double *pz;
+    size_t k;
     if (!w || z < 0 || (a == w->A && b == w->B))
         return 0;
     pz = cvm__tri2_pt(T, z);
-    return cvm__orient2d(cvm__tri2_pt(T, w->A), cvm__tri2_pt(T, w->B), pz) == 0 &&
-           ahead(cvm__tri2_pt(T, w->A), cvm__tri2_pt(T, w->B), pz) &&
-           ahead(cvm__tri2_pt(T, w->B), cvm__tri2_pt(T, w->A), pz) &&
-           ahead(cvm__tri2_pt(T, a), cvm__tri2_pt(T, b), pz) &&
-           ahead(cvm__tri2_pt(T, b), cvm__tri2_pt(T, a), pz);
+    if (!(cvm__orient2d(cvm__tri2_pt(T, w->A), cvm__tri2_pt(T, w->B), pz) == 0 &&
+          ahead(cvm__tri2_pt(T, w->A), cvm__tri2_pt(T, w->B), pz) &&
+          ahead(cvm__tri2_pt(T, w->B), cvm__tri2_pt(T, w->A), pz) &&
+          ahead(cvm__tri2_pt(T, a), cvm__tri2_pt(T, b), pz) &&
+          ahead(cvm__tri2_pt(T, b), cvm__tri2_pt(T, a), pz)))
+        return 0;
+    /* z already ends a piece: the chain was routed back past it, through a
+     * crossing an ulp behind a piece's start, and joining z again would send
+     * the pieces back and forth between z and that crossing
+     * (tests/fuzz/corpus/cdt/regression_crossing_behind_a_piece_start_not_revisited). */
+    for (k = 0; k < w->nends; k++)
+        if (w->ends[k] == z)
+            return 0;
+    return 1;
 }
 
 /* Find, around a, the edge a-b or the first triangle the segment enters.
@@ -539,6 +550,9 @@ cvm_status cvm__tri2_insert_segment(cvm__tri2 *T, int32_t a, int32_t b, int32_t 
                            (long)bb);
             break;
         }
+        if ((s = push(T, &w.ends, &w.nends, &w.cap_ends, aa)) ||
+            (s = push(T, &w.ends, &w.nends, &w.cap_ends, bb)))
+            break;
         s = recover(T, &w, aa, bb, seg, split, other_seg_out);
         if (s)
             break;
@@ -551,5 +565,6 @@ done:
     cvm__free(T->ctx, w.newtri);
     cvm__free(T->ctx, w.rng);
     cvm__free(T->ctx, w.xe);
+    cvm__free(T->ctx, w.ends);
     return s;
 }

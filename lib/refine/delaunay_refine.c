@@ -73,9 +73,11 @@ static int dr_crossing(const cvm__refiner *R, int32_t s1, int32_t s2, double *x)
     return 1;
 }
 
-/* An end of segment e1 lying exactly in the interior of segment e2, or the
- * other way round (a T-junction: cvm_mesh_triangulate() makes it a vertex of
- * the other's chain, so the two meet there as at a shared end); else -1. */
+/* An end of segment e1 lying in the interior of segment e2, exactly or within
+ * the chain tolerance (cvm__rf_on_chain), or the other way round (a T-junction:
+ * cvm_mesh_triangulate() makes it a vertex of the other's chain, or the
+ * refiner routes the chain through it, so the two meet there as at a shared
+ * end); else -1. */
 static int32_t dr_end_on(const cvm__refiner *R, const int32_t *e1, const int32_t *e2)
 {
     int k, side;
@@ -85,8 +87,9 @@ static int32_t dr_end_on(const cvm__refiner *R, const int32_t *e1, const int32_t
         for (k = 0; k < 2; k++) {
             const double *x = dr_pt(R, e[k]);
             int i = p[0] != q[0] ? 0 : 1;
-            if (cvm__orient2d(p, q, x) == 0 && x[i] != p[i] && x[i] != q[i] &&
-                (x[i] > p[i]) != (x[i] > q[i]))
+            if ((cvm__orient2d(p, q, x) == 0 && x[i] != p[i] && x[i] != q[i] &&
+                 (x[i] > p[i]) != (x[i] > q[i])) ||
+                cvm__rf_on_chain(p, q, x))
                 return e[k];
         }
     }

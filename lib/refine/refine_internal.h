@@ -224,6 +224,12 @@ size_t cvm__rf_star(cvm__refiner *R, int32_t v);
 /* Queue subsegment a-b of segment seg for splitting (R->segq). CVM_OK or
  * CVM_E_NOMEM (message set). */
 cvm_status cvm__rf_segq_push(cvm__refiner *R, int32_t a, int32_t b, int32_t seg);
+/* Vertex c lies strictly between a and b along a-b and within 2^-40 (M + L)
+ * of its line (M the largest coordinate of a and b, L their distance): the
+ * tolerance of a segment's chain (cvm_mesh_triangulate()). A floating-point
+ * test with a stated tolerance: it chooses a chain, the kernel's exact tests
+ * decide whether the mesh change it asks for is valid. */
+int cvm__rf_on_chain(const double *a, const double *b, const double *c);
 
 /* ---- encroachment (encroach.c) ---- */
 
@@ -245,8 +251,26 @@ cvm_status cvm__rf_cavity_encroached(cvm__refiner *R, int32_t v, int32_t t0);
 /* Split every queued subsegment (and those their splits encroach).
  * CVM_OK or a stop / error status. */
 cvm_status cvm__rf_split_queued(cvm__refiner *R);
-/* Split subsegment a-b now; *done_out = 1 if a vertex was added. */
+/* Split subsegment a-b now; *done_out = 1 if a vertex was added, or if the
+ * split was refused and the chain was routed through a vertex instead
+ * (cvm__rf_route_through). */
 cvm_status cvm__rf_split_segment(cvm__refiner *R, int32_t a, int32_t b, int32_t seg,
+                                 int *done_out);
+/* Subsegment a-b of segment seg is edge j of domain triangle t. When the apex
+ * c of t or of the domain triangle across lies strictly between a and b within
+ * the chain tolerance of a-b and of the input segment (cvm__rf_on_chain), that
+ * triangle is a wedge of a vanishing angle (typically between a-b and a
+ * segment ending at c) that no rounded split point of either can enter. The
+ * chain then passes through c, as it does through a rounded crossing: a-b is
+ * flipped to c-d (d the other apex; exact orientation tests decide that the
+ * quadrilateral is convex), a-c and c-b become pieces of seg (an edge another
+ * segment holds keeps it), the flat triangle joins d's side (its flags and
+ * region) and the stars are made constrained Delaunay again. Every routing
+ * adds a vertex to a chain, so it happens finitely often. With requeue, the
+ * stars of the four vertices are queued again (bad triangles, encroached
+ * subsegments). *done_out: 1 when the chain was routed. CVM_OK or
+ * CVM_E_NOMEM / a queueing status. */
+cvm_status cvm__rf_route_through(cvm__refiner *R, int32_t t, int j, int32_t seg, int requeue,
                                  int *done_out);
 /* March every subsegment with the sizing (CVM_OPT_MARCH_SEGMENTS). */
 cvm_status cvm__rf_march_segments(cvm__refiner *R);

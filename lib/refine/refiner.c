@@ -6,20 +6,8 @@
 #include "geom/geom_internal.h"
 #include "geom/measure.h"
 
-/* Vertex c lies strictly between a and b along a-b and within 2^-40 (M + L)
- * of its line (M the largest coordinate of a and b, L their distance): the
- * tolerance of a segment's chain (cvm_mesh_triangulate()). */
-static int rf_on_chain(const double *a, const double *b, const double *c)
-{
-    double dx = b[0] - a[0], dy = b[1] - a[1], len = sqrt(dx * dx + dy * dy);
-    double mag = fmax(fmax(fabs(a[0]), fabs(a[1])), fmax(fabs(b[0]), fabs(b[1])));
-    double along = ((c[0] - a[0]) * dx + (c[1] - a[1]) * dy) / len;
-    return len > 0 && along > 0 && along < len &&
-           fabs(cvm__orient2d(a, b, c)) <= 0x1p-40 * (mag + len) * len;
-}
-
 /* Domain triangle t = (c, a, b) (c at corner j) on a hull edge a-b that no
- * segment covers, with c on the chain of a-b (rf_on_chain): t and the ghost g
+ * segment covers, with c on the chain of a-b (cvm__rf_on_chain): t and the ghost g
  * across a-b become the ghosts across c-a and b-c, so the hull passes through
  * c, reflex by a rounding error, as a segment's chain passes through a
  * rounded crossing. The hull edges a-c and c-b are constrained afterwards
@@ -58,11 +46,15 @@ static void rf_hull_through(cvm__tri2 *T, int32_t t, int j)
     T->last = t;
 }
 
-/* Route the hull through every vertex on the chain of a hull edge that no
- * segment covers (rf_hull_through), until none is left. Kept, the flat
- * triangle between such an edge and its vertex is a wedge of a vanishing
- * angle: no rounded point splits the edge or the segments at the vertex, so
- * the triangles beside them could never be refined. */
+/* Route the hull through every vertex on the chain of a hull edge
+ * (rf_hull_through), until none is left. Kept, the flat triangle between such
+ * an edge and its vertex is a wedge of a vanishing angle: no rounded point
+ * splits the edge or the segments at the vertex, so the triangles beside them
+ * could never be refined. A hull edge that is a piece of input segment s is
+ * routed only when the vertex is also on the chain of s; the two new hull
+ * edges then become pieces of s (unless another segment holds them), so the
+ * vertex, where another segment typically ends within rounding of s, is where
+ * the two meet, and the shells of the small-angle rule are centred there. */
 static void rf_hull_through_flat(cvm__refiner *R)
 {
     cvm__tri2 *T = R->T;
@@ -76,11 +68,28 @@ static void rf_hull_through_flat(cvm__refiner *R)
             for (j = 0; j < 3; j++) {
                 size_t h = 3 * t + (size_t)j;
                 const int32_t *tv = T->tv + 3 * t;
-                if (T->te[h] >= 0 || !cvm__tri2_is_ghost(T, T->tn[h] / 3) ||
-                    !rf_on_chain(T->xy + 2 * (size_t)tv[(j + 1) % 3], T->xy + 2 * (size_t)tv[(j + 2) % 3],
-                                 T->xy + 2 * (size_t)tv[j]))
+                int32_t seg = T->te[h], hg = T->tn[h], hca;
+                const double *pc = T->xy + 2 * (size_t)tv[j];
+                if (!cvm__tri2_is_ghost(T, hg / 3) ||
+                    !cvm__rf_on_chain(T->xy + 2 * (size_t)tv[(j + 1) % 3],
+                                      T->xy + 2 * (size_t)tv[(j + 2) % 3], pc))
+                    continue;
+                if (seg >= 0 && ((size_t)seg >= R->nseg || R->seg_ends[2 * (size_t)seg] < 0 ||
+                                 R->seg_ends[2 * (size_t)seg + 1] < 0 ||
+                                 !cvm__rf_on_chain(T->xy + 2 * (size_t)R->seg_ends[2 * (size_t)seg],
+                                                   T->xy + 2 * (size_t)R->seg_ends[2 * (size_t)seg + 1],
+                                                   pc)))
                     continue;
                 rf_hull_through(T, (int32_t)t, j);
+                if (seg >= 0) {
+                    /* t = (c, a, ghost): its edge c-a; the ghost across a-b
+                     * now holds edge b-c at the corner it had */
+                    hca = (int32_t)(3 * t + (size_t)(j + 2) % 3);
+                    if (T->te[hca] < 0)
+                        T->te[hca] = T->te[T->tn[hca]] = seg;
+                    if (T->te[hg] < 0)
+                        T->te[hg] = T->te[T->tn[hg]] = seg;
+                }
                 again = 1;
                 break;
             }
@@ -122,6 +131,39 @@ static cvm_status rf_constrain_hull(cvm__refiner *R)
                 R->nseg++;
             }
         }
+    return CVM_OK;
+}
+
+/* Route every input segment through each vertex on its chain beside it
+ * (cvm__rf_route_through), until none is left: the flat triangle between them
+ * is a wedge no split can enter, and the vertex (typically where another
+ * segment ends, within rounding of this one) is where the two meet, so the
+ * shells of the small-angle rule must be centred there. */
+static cvm_status rf_route_through_flat(cvm__refiner *R)
+{
+    cvm__tri2 *T = R->T;
+    size_t t, rounds;
+    int j, again = 1;
+    cvm_status s;
+    for (rounds = 0; again && rounds <= T->nv; rounds++) {
+        again = 0;
+        for (t = 0; t < T->nt; t++) {
+            if (!cvm__tri2_in_domain(T, (int32_t)t))
+                continue;
+            for (j = 0; j < 3; j++) {
+                int32_t seg = T->te[3 * t + (size_t)j];
+                int done;
+                if (seg < 0 || (size_t)seg >= R->p->nseg)
+                    continue;
+                if ((s = cvm__rf_route_through(R, (int32_t)t, j, seg, 0, &done)))
+                    return s;
+                if (done) {
+                    again = 1;
+                    break;
+                }
+            }
+        }
+    }
     return CVM_OK;
 }
 
@@ -167,7 +209,7 @@ static cvm_status rf_setup(cvm__refiner *R, cvm__tri2 *T, const cvm__refine_para
                 R->vseg[T->tv[3 * t + (size_t)(j + 2) % 3]] = -2;
             }
     }
-    return CVM_OK;
+    return rf_route_through_flat(R);
 }
 
 static void rf_teardown(cvm__refiner *R)

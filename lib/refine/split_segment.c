@@ -4,6 +4,7 @@
 
 #include "refine_internal.h"
 #include "geom/geom_internal.h"
+#include "delaunay/tri2_store.h"
 
 static const double *ss_pt(const cvm__refiner *R, int32_t v)
 {
@@ -129,6 +130,80 @@ static cvm_status ss_insert_on(cvm__refiner *R, int32_t t, int j, int32_t seg, c
     return cvm__rf_new_vertex(R, v, seg);
 }
 
+int cvm__rf_on_chain(const double *a, const double *b, const double *c)
+{
+    double dx = b[0] - a[0], dy = b[1] - a[1], len = sqrt(dx * dx + dy * dy);
+    double mag = fmax(fmax(fabs(a[0]), fabs(a[1])), fmax(fabs(b[0]), fabs(b[1])));
+    double along = ((c[0] - a[0]) * dx + (c[1] - a[1]) * dy) / len;
+    return len > 0 && along > 0 && along < len &&
+           fabs(cvm__orient2d(a, b, c)) <= 0x1p-40 * (mag + len) * len;
+}
+
+/* Constrain edge j of t for segment seg unless another segment holds it: an
+ * edge stores one segment, and the chain check does not consult labels. */
+static void ss_constrain(cvm__tri2 *T, int32_t t, int j, int32_t seg)
+{
+    size_t h = 3 * (size_t)t + (size_t)j;
+    if (T->te[h] >= 0)
+        return;
+    T->te[h] = seg;
+    T->te[T->tn[h]] = seg;
+}
+
+cvm_status cvm__rf_route_through(cvm__refiner *R, int32_t t, int j, int32_t seg, int requeue,
+                                 int *done_out)
+{
+    cvm__tri2 *T = R->T;
+    int side;
+    *done_out = 0;
+    for (side = 0; side < 2; side++) {
+        int32_t h = side ? T->tn[3 * (size_t)t + (size_t)j] : (int32_t)(3 * (size_t)t + (size_t)j);
+        int32_t tt = h / 3, hu = T->tn[h], u = hu / 3, c, d, a, b, ea = -1, eb = -1, verts[4];
+        int jj = h % 3;
+        const int32_t *tv = T->tv + 3 * (size_t)tt;
+        cvm_status s;
+        if (!cvm__tri2_in_domain(T, tt) || !cvm__tri2_in_domain(T, u))
+            continue;
+        c = tv[jj];
+        a = tv[(jj + 1) % 3];
+        b = tv[(jj + 2) % 3];
+        d = T->tv[3 * (size_t)u + (size_t)(hu % 3)];
+        if (seg < (int32_t)R->nseg) {
+            ea = R->seg_ends[2 * (size_t)seg];
+            eb = R->seg_ends[2 * (size_t)seg + 1];
+        }
+        if (!cvm__rf_on_chain(ss_pt(R, a), ss_pt(R, b), ss_pt(R, c)) ||
+            (ea >= 0 && eb >= 0 && !cvm__rf_on_chain(ss_pt(R, ea), ss_pt(R, eb), ss_pt(R, c))) ||
+            cvm__orient2d(ss_pt(R, c), ss_pt(R, a), ss_pt(R, d)) <= 0 ||
+            cvm__orient2d(ss_pt(R, d), ss_pt(R, b), ss_pt(R, c)) <= 0)
+            continue;
+        /* both new triangles lie on d's side of the chain a-c-b */
+        T->tf[tt] = T->tf[u];
+        if (T->ta)
+            T->ta[tt] = T->ta[u];
+        T->te[h] = T->te[hu] = -1;
+        cvm__tri2_flip(T, tt, jj);
+        /* now tt = (c, a, d) and u = (d, b, c): their edges c-a and b-c */
+        ss_constrain(T, tt, 2, seg);
+        ss_constrain(T, u, 0, seg);
+        if (R->vseg[c] == -1)
+            R->vseg[c] = -2;
+        verts[0] = a;
+        verts[1] = b;
+        verts[2] = c;
+        verts[3] = d;
+        if ((s = cvm__tri2_legalize_stars(T, verts, 4)))
+            return s == CVM_E_NOMEM ? cvm__nomem(R->ctx) : s;
+        *done_out = 1;
+        for (side = 0; side < 4 * requeue; side++)
+            if ((s = cvm__rf_queue_encroached_star(R, verts[side])) ||
+                (s = R->queue_star(R, verts[side])))
+                return s;
+        return CVM_OK;
+    }
+    return CVM_OK;
+}
+
 cvm_status cvm__rf_split_segment(cvm__refiner *R, int32_t a, int32_t b, int32_t seg, int *done_out)
 {
     cvm__tri2 *T = R->T;
@@ -149,8 +224,10 @@ cvm_status cvm__rf_split_segment(cvm__refiner *R, int32_t a, int32_t b, int32_t 
     pb[0] = ss_pt(R, b)[0];
     pb[1] = ss_pt(R, b)[1];
     f = ss_fraction(R, a, b, t, j);
-    if ((s = ss_insert_on(R, t, j, seg, pa, pb, f, &v)) || v < 0)
+    if ((s = ss_insert_on(R, t, j, seg, pa, pb, f, &v)))
         return s;
+    if (v < 0)
+        return cvm__rf_route_through(R, t, j, seg, 1, done_out);
     *done_out = 1;
     if ((s = cvm__rf_queue_encroached_star(R, v)))
         return s;

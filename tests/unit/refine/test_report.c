@@ -150,11 +150,89 @@ START_TEST(hull_edge_within_rounding_of_a_point_passes_through_it)
 }
 END_TEST
 
+/* The options of fuzz_refine's regression seeds below: frontal, hull kept,
+ * 20 + 13 x 69 / 255 (about 23.5) degrees, maximum area 6.5e-6, lens,
+ * marching; then every triangle left below the angle must be an exempt small
+ * input angle, and cvm_mesh_check() must accept the mesh. */
+static void refine_like_fuzz_seed(const double *xy, size_t np, const cvm_index *segs, size_t nseg,
+                                  double seed)
+{
+    double unmet_angle, small;
+    cvm_mesh *m;
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_points(m, xy, np, 2), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_segments(m, segs, nseg), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_KEEP_CONVEX_HULL, 1), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_MIN_ANGLE_DEG, 20.0 + 13.0 * 69 / 255.0), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_MAX_AREA, 1e-3 * 1e-3 * 6.5), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_ENCROACH_LENS, 1), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_MARCH_SEGMENTS, 1), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_SWAP, 0), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_SMOOTH_SWEEPS, -1), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_RELAX_SWEEPS, -1), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_MAX_STEINER, 5000), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_SEED, seed), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_refine(m, NULL, CVM_ALGO_FRONTAL), CVM_OK);
+    ck_assert_msg(cvm_mesh_check(m) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    ck_assert_int_eq(cvm_mesh_get_measure(&unmet_angle, m, CVM_MEASURE_REFINE_UNMET_ANGLE), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_get_measure(&small, m, CVM_MEASURE_REFINE_SMALL_INPUT_ANGLE), CVM_OK);
+    ck_assert_msg(unmet_angle == small, "%g triangles below the angle, %g of them exempt", unmet_angle,
+                  small);
+    check_unmet(m);
+    cvm_mesh_free(m);
+}
+
+/* Input point (0.0135, 0.0065) lies about 1e-19 off the free segment
+ * (0.0155, 0.0085)-(0.0075, 0.0005) (on it in decimal), and another segment
+ * runs from it to (0.0155, 0.0085): the flat triangles between the two
+ * chains are wedges no rounded split point can enter, so every split of the
+ * piece was refused, and a 5.6-degree triangle beside it stayed unexempt on
+ * CVM_OK. The chain of the segment now passes through the vertex
+ * (tests/fuzz/corpus/refine/regression_segment_routed_through_a_point_within_rounding). */
+START_TEST(segment_within_rounding_of_a_point_passes_through_it)
+{
+    static const double xy[] = {0.01, 0.0080000000000000002, 0.0070000000000000001, 0.00975,
+        0.0090000000000000011, 0.00087500000000000002, 0.0015, 0.00050000000000000001,
+        0.0045000000000000005, 0.00050000000000000001, 0.0015, 0.0065000000000000006,
+        0.00050000000000000001, 0.00050000000000000001, 0.0155, 0.0085000000000000006,
+        0.0074999999999999997, 0.0025000000000000001, 0.0155, 0.0085000000000000006,
+        0.0135, 0.0065000000000000006, 0.0155, 0.0085000000000000006,
+        0.0074999999999999997, 0.00050000000000000001, 0.0025000000000000001, 0.0065000000000000006,
+        0.0054999999999999997, 0.0085000000000000006};
+    static const cvm_index segs[] = {0, 1, 1, 2, 2, 0, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14};
+    refine_like_fuzz_seed(xy, 15, segs, 9, 0);
+}
+END_TEST
+
+/* Input point (0.0075, 0.0025), where the segment from (0.0005, 0.0005) ends,
+ * lies 2e-19 off the hull segment (0.0045, 0.0005)-(0.0135, 0.0065) (on it in
+ * decimal): an input angle of 17.7 degrees. The hull segment's chain missed the
+ * point, its splits fell at midpoints instead of on shells around the join, and
+ * the exemption found no join: unexempt triangles clustered within 2e-7 of the
+ * point on CVM_OK. The hull segment now passes through the point, and an end
+ * within the chain tolerance of another segment is a join
+ * (tests/fuzz/corpus/refine/regression_hull_segment_through_a_segment_end_within_rounding). */
+START_TEST(hull_segment_within_rounding_of_a_segment_end_passes_through_it)
+{
+    static const double xy[] = {0.0065000000000000006, 0.013375, 0.0070000000000000001, 0.00975,
+        0.0052500000000000003, 0.0013749999999999999, 0.00050000000000000001, 0.00050000000000000001,
+        0.00050000000000000001, 0.00050000000000000001, 0.00050000000000000001, 0.00050000000000000001,
+        0.0015, 0.00050000000000000001, 0.0045000000000000005, 0.00050000000000000001,
+        0.0135, 0.0065000000000000006, 0.00050000000000000001, 0.00050000000000000001,
+        0.0074999999999999997, 0.0025000000000000001};
+    static const cvm_index segs[] = {0, 1, 1, 2, 2, 0, 5, 6, 7, 8, 9, 10};
+    refine_like_fuzz_seed(xy, 11, segs, 6, 80);
+}
+END_TEST
+
 TCase *refine_report_tcase(void)
 {
     TCase *tc = tcase_create("report");
     tcase_add_test(tc, small_input_angle_is_located);
     tcase_add_test(tc, steiner_limit_leaves_located_triangles);
     tcase_add_test(tc, hull_edge_within_rounding_of_a_point_passes_through_it);
+    tcase_add_test(tc, segment_within_rounding_of_a_point_passes_through_it);
+    tcase_add_test(tc, hull_segment_within_rounding_of_a_segment_end_passes_through_it);
     return tc;
 }
