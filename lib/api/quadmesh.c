@@ -501,8 +501,12 @@ cvm_status cvm_mesh_quadmesh(cvm_mesh *m, const cvm_sizing *metric)
         (s = cvm__lpcvt_initial_sites(&xi, &ni, &mt, bxy, nb, (uint64_t)cvm__opt(m, CVM_OPT_SEED),
                                       &m->ctx)))
         goto fail;
-    if (cvm__opt(m, CVM_OPT_QUAD_MEAN_METRIC_VORONOI) != 0 &&
-        (mapped = mean_metric_map(M0, A, &mt, xi, ni, &m->ctx, &s)) != 0) {
+    mapped = (int)cvm__opt(m, CVM_OPT_QUAD_MEAN_METRIC_VORONOI);
+    if (mapped == 2) /* on where the map is exact: a constant tensor */
+        mapped = metric->metric == cvm__metric_builtin_fn &&
+                 ((const cvm__metric_builtin *)metric->metric_payload)->kind ==
+                     CVM__METRIC_CONSTANT;
+    if (mapped && (mapped = mean_metric_map(M0, A, &mt, xi, ni, &m->ctx, &s)) != 0) {
         /* the same problem in z = M0 x: boundary, sites and the metric pulled back */
         zb = cvm__malloc(&m->ctx, 2 * nb * sizeof *zb);
         if (!zb) {
