@@ -10,6 +10,8 @@ CVM_BENCH_QUAD_N=10000 for the issue's 1e4 size, about ten times slower):
   saddle    I + grad f grad f^T, f = x^2 - y^2, on [-1.3,1.3]^2
   sshock    |Hessian| of 3/4 tanh(2(sin 5y - 3x)), eigen-sizes clamped to [0.005, 0.2], aspect
             <= 50, on [-1,1]^2
+  constant  diag(1, 16) on [0,2]^2 (`--metric constant:s,0,16s`), aspect 4: the one case where
+            cvmesh's default takes the energy's Voronoi cells in the metric itself
 
 Runs per case:
   cvmesh    the CLI: `cvmesh quad --domain-box ... --metric builtin:NAME:s -o OUT.msh`, default
@@ -47,7 +49,8 @@ import numpy as np
 BUILD = sys.argv[1] if len(sys.argv) > 1 else "build"
 NTARGET = float(os.environ.get("CVM_BENCH_QUAD_N", "2500"))
 CASES = [("identity", (0.0, 0.0, 4.0, 4.0)), ("stretch", (0.0, 0.0, 5.0, 1.3)),
-         ("saddle", (-1.3, -1.3, 1.3, 1.3)), ("sshock", (-1.0, -1.0, 1.0, 1.0))]
+         ("saddle", (-1.3, -1.3, 1.3, 1.3)), ("sshock", (-1.0, -1.0, 1.0, 1.0)),
+         ("constant", (0.0, 0.0, 2.0, 2.0))]
 ONLY = [c for c in os.environ.get("CVM_BENCH_QUAD_CASES", "").split(",") if c]
 
 
@@ -87,6 +90,8 @@ def metric(name, scale, xy):
         g[:, 1, 0] = g[:, 0, 1]
     elif name == "sshock":
         g = _sshock(x, y)
+    elif name == "constant":
+        g[:, 0, 0], g[:, 1, 1] = 1, 16
     return scale * g
 
 
@@ -193,9 +198,10 @@ def read_msh41(path):
 
 def run_cvmesh(name, box, scale, tmp):
     out = os.path.join(tmp, "%s.msh" % name)
+    spec = ("constant:%.17g,0,%.17g" % (scale, 16 * scale) if name == "constant"
+            else "builtin:%s:%.17g" % (name, scale))
     cmd = [os.path.join(BUILD, "bin", "cvmesh"), "quad", "--domain-box",
-           ",".join("%.17g" % v for v in box), "--metric", "builtin:%s:%.17g" % (name, scale),
-           "-o", out, "--quality"]
+           ",".join("%.17g" % v for v in box), "--metric", spec, "-o", out, "--quality"]
     env = dict(os.environ, OMP_NUM_THREADS="1")
     t0 = time.perf_counter()
     p = subprocess.run(cmd, capture_output=True, text=True, env=env)
@@ -239,6 +245,8 @@ def _aniso_expr(name, s):
         return S, "0", "%s*(1+4*y*y)" % S
     if name == "saddle":
         return "%s*(1+4*x*x)" % S, "%s*(-4*x*y)" % S, "%s*(1+4*y*y)" % S
+    if name == "constant":
+        return S, "0", "%.17g" % (16 * s)
     return None
 
 
