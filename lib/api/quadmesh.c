@@ -2,6 +2,7 @@
  * at unit metric length, Lp-CVT by L-BFGS, Blossom-Quad), the sites' triangulation into the
  * store and the mixed cells and report onto the handle; the built-in metrics of a sizing. */
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #ifdef _OPENMP
@@ -298,8 +299,88 @@ static int recombine_metric(double x, double y, double g[3], void *user)
     return cvm__metric_eval(cb->mt, p, g, NULL, cb->ctx) != CVM_OK;
 }
 
+typedef struct qm_side {
+    uint64_t key; /* lo << 32 | hi of the side's two points */
+    int32_t s;    /* the side: 3 t + j */
+} qm_side;
+
+static int qm_side_cmp(const void *a, const void *b)
+{
+    const qm_side *x = (const qm_side *)a, *y = (const qm_side *)b;
+    return x->key != y->key ? (x->key < y->key ? -1 : 1) : (x->s > y->s) - (x->s < y->s);
+}
+
+static int32_t qm_next(int32_t s)
+{
+    return s - s % 3 + (s % 3 + 1) % 3;
+}
+
+/* Lawson flips of tri (nt counter-clockwise triangles on m's points) toward the Delaunay
+ * triangulation of the points mapped by M0 (z = M0 x), in which the sites were optimised: a
+ * flip only of a quad strictly convex in x and in z, by the exact in-circle test in z (so the
+ * flips terminate, as Lawson's algorithm on the points z). The store keeps its Delaunay
+ * triangulation; only the triangles given to the recombination change. */
+static cvm_status flip_in_metric(cvm_mesh *m, int32_t *tri, size_t nt, const double M0[4])
+{
+    size_t np = cvm__store_nv(m), k, pass, ns = 3 * nt;
+    const double *xy = cvm__store_points(m);
+    double *z = cvm__malloc(&m->ctx, (2 * np + 1) * sizeof *z);
+    qm_side *sd = cvm__malloc(&m->ctx, (ns + 1) * sizeof *sd);
+    if (!z || !sd) {
+        cvm__free(&m->ctx, z);
+        cvm__free(&m->ctx, sd);
+        return cvm__nomem(&m->ctx);
+    }
+    for (k = 0; k < np; k++) {
+        z[2 * k] = M0[0] * xy[2 * k] + M0[1] * xy[2 * k + 1];
+        z[2 * k + 1] = M0[2] * xy[2 * k] + M0[3] * xy[2 * k + 1];
+    }
+    for (pass = 0; pass < 1000; pass++) {
+        size_t nflip = 0;
+        for (k = 0; k < ns; k++) {
+            int32_t a = tri[k], b = tri[qm_next((int32_t)k)];
+            uint32_t lo = (uint32_t)(a < b ? a : b), hi = (uint32_t)(a < b ? b : a);
+            sd[k].key = (uint64_t)lo << 32 | hi;
+            sd[k].s = (int32_t)k;
+        }
+        qsort(sd, ns, sizeof *sd, qm_side_cmp);
+        for (k = 0; k + 1 < ns; k++) {
+            int32_t s1 = sd[k].s, s2 = sd[k + 1].s, a, b, c, d;
+            if (sd[k].key != sd[k + 1].key)
+                continue;
+            a = tri[s1];
+            b = tri[qm_next(s1)];
+            if (tri[s2] != b || tri[qm_next(s2)] != a)
+                continue; /* a flip earlier in this pass changed one of the two */
+            c = tri[qm_next(qm_next(s1))];
+            d = tri[qm_next(qm_next(s2))];
+            if (cvm__orient2d(xy + 2 * c, xy + 2 * a, xy + 2 * d) > 0 &&
+                cvm__orient2d(xy + 2 * d, xy + 2 * b, xy + 2 * c) > 0 &&
+                cvm__orient2d(z + 2 * c, z + 2 * a, z + 2 * d) > 0 &&
+                cvm__orient2d(z + 2 * d, z + 2 * b, z + 2 * c) > 0 &&
+                cvm__orient2d(z + 2 * a, z + 2 * b, z + 2 * c) > 0 &&
+                cvm__orient2d(z + 2 * b, z + 2 * a, z + 2 * d) > 0 &&
+                cvm__incircle(z + 2 * a, z + 2 * b, z + 2 * c, z + 2 * d) > 0) {
+                int32_t *t1 = tri + (s1 - s1 % 3), *t2 = tri + (s2 - s2 % 3);
+                t1[0] = c;
+                t1[1] = a;
+                t1[2] = d;
+                t2[0] = d;
+                t2[1] = b;
+                t2[2] = c;
+                nflip++;
+            }
+        }
+        if (!nflip)
+            break;
+    }
+    cvm__free(&m->ctx, z);
+    cvm__free(&m->ctx, sd);
+    return CVM_OK;
+}
+
 /* The domain triangles of m as the mixed cells (recombined unless CVM_OPT_QUAD_RECOMBINE 2). */
-static cvm_status make_cells(cvm_mesh *m, const cvm__metric *mt)
+static cvm_status make_cells(cvm_mesh *m, const cvm__metric *mt, const double *M0)
 {
     size_t nt = 0, k;
     int32_t t, *tri = NULL;
@@ -342,6 +423,10 @@ static cvm_status make_cells(cvm_mesh *m, const cvm__metric *mt)
         }
         q->conn = tri;
         return CVM_OK;
+    }
+    if (M0 && (s = flip_in_metric(m, tri, nt, M0)) != CVM_OK) {
+        cvm__free(&m->ctx, tri);
+        return s;
     }
     memset(&in, 0, sizeof in);
     cb.mt = mt;
@@ -581,7 +666,7 @@ cvm_status cvm_mesh_quadmesh(cvm_mesh *m, const cvm_sizing *metric)
     if (!s) {
         m->triangulated = 1;
         m->nv_triangulated = cvm__store_nv(m);
-        s = make_cells(m, &mt);
+        s = make_cells(m, &mt, mapped ? M0 : NULL);
     }
     if (!s)
         s = cvm__quad_measures(m->quad_report, &mt, cvm__store_points(m), m->quad->ncell,

@@ -21,9 +21,10 @@ from bench_quad import CASES, metric, read_msh41  # noqa: E402
 
 
 def run(build, name, box, scale, flags, out):
+    spec = ("constant:%.17g,0,%.17g" % (scale, 16 * scale) if name == "constant"
+            else "builtin:%s:%.17g" % (name, scale))
     cmd = [os.path.join(build, "bin", "cvmesh"), "quad", "--domain-box",
-           ",".join("%.17g" % v for v in box), "--metric", "builtin:%s:%.17g" % (name, scale),
-           "-o", out] + flags
+           ",".join("%.17g" % v for v in box), "--metric", spec, "-o", out] + flags
     subprocess.run(cmd, check=True, capture_output=True, env=dict(os.environ, OMP_NUM_THREADS="1"))
     return read_msh41(out)
 
