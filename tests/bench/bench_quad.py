@@ -22,6 +22,9 @@ Runs per case:
             (edges of unit length in it), RecombineAll 1, Blossom.
   Gmsh: one thread, no size from points, curvature or boundary; time = generate(2) (wall).
 
+CVM_BENCH_QUAD_FLAGS adds flags to the cvmesh command (e.g. "--mean-metric-voronoi 1");
+CVM_BENCH_QUAD_CASES=a,b runs only those cases.
+
 The measure (one function for every mesh; nothing read from a mesher's own report):
   quads %          quads / cells, by count
   dev mean/P95     |corner angle - 90| in metric space, g at the quad's vertex mean, over every
@@ -202,6 +205,7 @@ def run_cvmesh(name, box, scale, tmp):
             else "builtin:%s:%.17g" % (name, scale))
     cmd = [os.path.join(BUILD, "bin", "cvmesh"), "quad", "--domain-box",
            ",".join("%.17g" % v for v in box), "--metric", spec, "-o", out, "--quality"]
+    cmd += os.environ.get("CVM_BENCH_QUAD_FLAGS", "").split()
     env = dict(os.environ, OMP_NUM_THREADS="1")
     t0 = time.perf_counter()
     p = subprocess.run(cmd, capture_output=True, text=True, env=env)
