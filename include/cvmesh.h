@@ -931,7 +931,16 @@ typedef enum cvm_option {
     /** Escapes from a local minimum after convergence, integer, default 8, bounds [0, 64]:
      *  the site of least cell energy moves into the cell of most energy and the sites are
      *  optimised again; kept only when E drops. @since 0.2 */
-    CVM_OPT_QUAD_RELOCATIONS = 808
+    CVM_OPT_QUAD_RELOCATIONS = 808,
+    /** The distance of the energy's Voronoi cells: 0 Euclidean; 1 the metric
+     *  m0 = gbar / sqrt(det gbar), gbar the mean of g over the initial interior sites (unit
+     *  determinant, so the same cell areas): the sites are optimised in the coordinates
+     *  z = M0 x (M0^T M0 = m0), where a constant metric becomes isotropic and its quads
+     *  square; 2 (default) as 1 when the metric is a constant tensor
+     *  (cvm_sizing_set_metric_constant(), where the map is exact), else as 0. Nothing
+     *  changes when gbar is a multiple of the identity. The energy, its value and the
+     *  outputs stay in x (|grad E| is reported in z). Integer, bounds [0, 2]. @since 0.2 */
+    CVM_OPT_QUAD_MEAN_METRIC_VORONOI = 809
     /* ---- 1000 and up: experimental (include/cvmesh_experimental.h) ---- */
 } cvm_option;
 

@@ -2,6 +2,7 @@
  * at unit metric length, Lp-CVT by L-BFGS, Blossom-Quad), the sites' triangulation into the
  * store and the mixed cells and report onto the handle; the built-in metrics of a sizing. */
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #ifdef _OPENMP
@@ -147,7 +148,7 @@ fail:
  * input segments. *kept_out: interior sites kept. */
 static cvm_status build_triangulation(cvm_mesh *m, const int32_t *loop, const int32_t *lseg,
                                       size_t nc, const double *bxy, size_t nb, const double *xi,
-                                      size_t ni, const cvm__lpcvt *L, size_t *kept_out)
+                                      size_t ni, size_t *kept_out)
 {
     const cvm__pslg *P = &m->in;
     size_t np = P->np, na = P->nattr, nv = cvm__store_nv(m), total, k, c = 0, nnew = 0, kept = 0;
@@ -229,7 +230,7 @@ static cvm_status build_triangulation(cvm_mesh *m, const int32_t *loop, const in
     }
     for (k = 0; k < ni; k++) {
         size_t id = np + nnew + kept;
-        if (!cvm__lpcvt_inside(L, xi + 2 * k))
+        if (!cvm__lpcvt_inside_polygon(bxy, nb, xi + 2 * k))
             continue;
         xy[2 * id] = xi[2 * k];
         xy[2 * id + 1] = xi[2 * k + 1];
@@ -298,8 +299,88 @@ static int recombine_metric(double x, double y, double g[3], void *user)
     return cvm__metric_eval(cb->mt, p, g, NULL, cb->ctx) != CVM_OK;
 }
 
+typedef struct qm_side {
+    uint64_t key; /* lo << 32 | hi of the side's two points */
+    int32_t s;    /* the side: 3 t + j */
+} qm_side;
+
+static int qm_side_cmp(const void *a, const void *b)
+{
+    const qm_side *x = (const qm_side *)a, *y = (const qm_side *)b;
+    return x->key != y->key ? (x->key < y->key ? -1 : 1) : (x->s > y->s) - (x->s < y->s);
+}
+
+static int32_t qm_next(int32_t s)
+{
+    return s - s % 3 + (s % 3 + 1) % 3;
+}
+
+/* Lawson flips of tri (nt counter-clockwise triangles on m's points) toward the Delaunay
+ * triangulation of the points mapped by M0 (z = M0 x), in which the sites were optimised: a
+ * flip only of a quad strictly convex in x and in z, by the exact in-circle test in z (so the
+ * flips terminate, as Lawson's algorithm on the points z). The store keeps its Delaunay
+ * triangulation; only the triangles given to the recombination change. */
+static cvm_status flip_in_metric(cvm_mesh *m, int32_t *tri, size_t nt, const double M0[4])
+{
+    size_t np = cvm__store_nv(m), k, pass, ns = 3 * nt;
+    const double *xy = cvm__store_points(m);
+    double *z = cvm__malloc(&m->ctx, (2 * np + 1) * sizeof *z);
+    qm_side *sd = cvm__malloc(&m->ctx, (ns + 1) * sizeof *sd);
+    if (!z || !sd) {
+        cvm__free(&m->ctx, z);
+        cvm__free(&m->ctx, sd);
+        return cvm__nomem(&m->ctx);
+    }
+    for (k = 0; k < np; k++) {
+        z[2 * k] = M0[0] * xy[2 * k] + M0[1] * xy[2 * k + 1];
+        z[2 * k + 1] = M0[2] * xy[2 * k] + M0[3] * xy[2 * k + 1];
+    }
+    for (pass = 0; pass < 1000; pass++) {
+        size_t nflip = 0;
+        for (k = 0; k < ns; k++) {
+            int32_t a = tri[k], b = tri[qm_next((int32_t)k)];
+            uint32_t lo = (uint32_t)(a < b ? a : b), hi = (uint32_t)(a < b ? b : a);
+            sd[k].key = (uint64_t)lo << 32 | hi;
+            sd[k].s = (int32_t)k;
+        }
+        qsort(sd, ns, sizeof *sd, qm_side_cmp);
+        for (k = 0; k + 1 < ns; k++) {
+            int32_t s1 = sd[k].s, s2 = sd[k + 1].s, a, b, c, d;
+            if (sd[k].key != sd[k + 1].key)
+                continue;
+            a = tri[s1];
+            b = tri[qm_next(s1)];
+            if (tri[s2] != b || tri[qm_next(s2)] != a)
+                continue; /* a flip earlier in this pass changed one of the two */
+            c = tri[qm_next(qm_next(s1))];
+            d = tri[qm_next(qm_next(s2))];
+            if (cvm__orient2d(xy + 2 * c, xy + 2 * a, xy + 2 * d) > 0 &&
+                cvm__orient2d(xy + 2 * d, xy + 2 * b, xy + 2 * c) > 0 &&
+                cvm__orient2d(z + 2 * c, z + 2 * a, z + 2 * d) > 0 &&
+                cvm__orient2d(z + 2 * d, z + 2 * b, z + 2 * c) > 0 &&
+                cvm__orient2d(z + 2 * a, z + 2 * b, z + 2 * c) > 0 &&
+                cvm__orient2d(z + 2 * b, z + 2 * a, z + 2 * d) > 0 &&
+                cvm__incircle(z + 2 * a, z + 2 * b, z + 2 * c, z + 2 * d) > 0) {
+                int32_t *t1 = tri + (s1 - s1 % 3), *t2 = tri + (s2 - s2 % 3);
+                t1[0] = c;
+                t1[1] = a;
+                t1[2] = d;
+                t2[0] = d;
+                t2[1] = b;
+                t2[2] = c;
+                nflip++;
+            }
+        }
+        if (!nflip)
+            break;
+    }
+    cvm__free(&m->ctx, z);
+    cvm__free(&m->ctx, sd);
+    return CVM_OK;
+}
+
 /* The domain triangles of m as the mixed cells (recombined unless CVM_OPT_QUAD_RECOMBINE 2). */
-static cvm_status make_cells(cvm_mesh *m, const cvm__metric *mt)
+static cvm_status make_cells(cvm_mesh *m, const cvm__metric *mt, const double *M0)
 {
     size_t nt = 0, k;
     int32_t t, *tri = NULL;
@@ -343,6 +424,10 @@ static cvm_status make_cells(cvm_mesh *m, const cvm__metric *mt)
         q->conn = tri;
         return CVM_OK;
     }
+    if (M0 && (s = flip_in_metric(m, tri, nt, M0)) != CVM_OK) {
+        cvm__free(&m->ctx, tri);
+        return s;
+    }
     memset(&in, 0, sizeof in);
     cb.mt = mt;
     cb.ctx = &m->ctx;
@@ -373,6 +458,76 @@ static cvm_status make_cells(cvm_mesh *m, const cvm__metric *mt)
     return q->first ? CVM_OK : cvm__nomem(&m->ctx);
 }
 
+/* CVM_OPT_QUAD_MEAN_METRIC_VORONOI: the sites are optimised in z = M0 x, where the metric is
+ * pulled back, g'(z) = A^T g(A z) A with A = M0^-1 (row-major 2x2). */
+typedef struct qm_pullback {
+    cvm__metric x; /* the metric in x, with the boundary in x for its fallback */
+    double A[4];
+    cvm__ctx *ctx;
+} qm_pullback;
+
+static void pull_tensor(const double A[4], const double g[3], double out[3])
+{
+    double ga0 = g[0] * A[0] + g[1] * A[2], ga1 = g[0] * A[1] + g[1] * A[3]; /* row 0 of gA */
+    double gb0 = g[1] * A[0] + g[2] * A[2], gb1 = g[1] * A[1] + g[2] * A[3]; /* row 1 of gA */
+    out[0] = A[0] * ga0 + A[2] * gb0;
+    out[1] = A[0] * ga1 + A[2] * gb1;
+    out[2] = A[1] * ga1 + A[3] * gb1;
+}
+
+static int pullback_fn(void *payload, const double *z, int dim, double *g, double *dg)
+{
+    const qm_pullback *P = (const qm_pullback *)payload;
+    double x[2], gx[3], dgx[6], d[3];
+    int k, c;
+    if (dim != 2)
+        return 1;
+    x[0] = P->A[0] * z[0] + P->A[1] * z[1];
+    x[1] = P->A[2] * z[0] + P->A[3] * z[1];
+    if (cvm__metric_eval(&P->x, x, gx, dgx, P->ctx) != CVM_OK)
+        return 1;
+    pull_tensor(P->A, gx, g);
+    if (dg)
+        for (k = 0; k < 2; k++) { /* d/dz_k = sum_j d/dx_j A[j][k] */
+            for (c = 0; c < 3; c++)
+                d[c] = dgx[c] * P->A[k] + dgx[3 + c] * P->A[2 + k];
+            pull_tensor(P->A, d, dg + 3 * k);
+        }
+    return 0;
+}
+
+/* M0 (row-major) and its inverse A for the mean metric of the sites xi, scaled to unit
+ * determinant; 0 when that metric is a multiple of the identity (no transform). */
+static int mean_metric_map(double M0[4], double A[4], const cvm__metric *mt, const double *xi,
+                           size_t ni, cvm__ctx *ctx, cvm_status *st)
+{
+    double gb[3] = {0, 0, 0}, g[3], det;
+    size_t k;
+    *st = CVM_OK;
+    if (ni == 0)
+        return 0;
+    for (k = 0; k < ni; k++) {
+        if ((*st = cvm__metric_eval(mt, xi + 2 * k, g, NULL, ctx)))
+            return 0;
+        gb[0] += g[0];
+        gb[1] += g[1];
+        gb[2] += g[2];
+    }
+    if (gb[1] == 0 && gb[0] == gb[2])
+        return 0;
+    det = sqrt(gb[0] * gb[2] - gb[1] * gb[1]);
+    gb[0] /= det;
+    gb[1] /= det;
+    gb[2] /= det;
+    cvm__metric_factor(M0, NULL, gb, NULL);
+    det = M0[0] * M0[3] - M0[1] * M0[2];
+    A[0] = M0[3] / det;
+    A[1] = -M0[1] / det;
+    A[2] = -M0[2] / det;
+    A[3] = M0[0] / det;
+    return 1;
+}
+
 static int thread_count(const cvm_mesh *m)
 {
     int n = (int)cvm__opt(m, CVM_OPT_THREADS);
@@ -385,7 +540,11 @@ static int thread_count(const cvm_mesh *m)
 
 cvm_status cvm_mesh_quadmesh(cvm_mesh *m, const cvm_sizing *metric)
 {
-    double t0 = cvm__now(), *bxy = NULL, *xi = NULL, *corners = NULL;
+    double t0 = cvm__now(), *bxy = NULL, *xi = NULL, *corners = NULL, *zb = NULL, M0[4], A[4];
+    int mapped = 0;
+    cvm_sizing zs;
+    cvm__metric_builtin zc;
+    qm_pullback pb;
     int32_t *loop = NULL, *lseg = NULL;
     size_t nc = 0, nb = 0, ni = 0, kept = 0, k;
     cvm__metric mt;
@@ -425,8 +584,57 @@ cvm_status cvm_mesh_quadmesh(cvm_mesh *m, const cvm_sizing *metric)
     mt.nbnd = nc;
     if ((s = cvm__boundary_discretise(&bxy, &nb, &mt, corners, nc, &m->ctx)) ||
         (s = cvm__lpcvt_initial_sites(&xi, &ni, &mt, bxy, nb, (uint64_t)cvm__opt(m, CVM_OPT_SEED),
-                                      &m->ctx)) ||
-        (s = cvm__lpcvt_init(&L, &m->ctx, metric, bxy, nb, ni, (int)cvm__opt(m, CVM_OPT_QUAD_P),
+                                      &m->ctx)))
+        goto fail;
+    mapped = (int)cvm__opt(m, CVM_OPT_QUAD_MEAN_METRIC_VORONOI);
+    if (mapped == 2) /* on where the map is exact: a constant tensor */
+        mapped = metric->metric == cvm__metric_builtin_fn &&
+                 ((const cvm__metric_builtin *)metric->metric_payload)->kind ==
+                     CVM__METRIC_CONSTANT;
+    if (mapped && (mapped = mean_metric_map(M0, A, &mt, xi, ni, &m->ctx, &s)) != 0) {
+        /* the same problem in z = M0 x: boundary, sites and the metric pulled back */
+        zb = cvm__malloc(&m->ctx, 2 * nb * sizeof *zb);
+        if (!zb) {
+            s = cvm__nomem(&m->ctx);
+            goto fail;
+        }
+        for (k = 0; k < nb; k++) {
+            double x = bxy[2 * k], y = bxy[2 * k + 1];
+            zb[2 * k] = M0[0] * x + M0[1] * y;
+            zb[2 * k + 1] = M0[2] * x + M0[3] * y;
+        }
+        for (k = 0; k < ni; k++) {
+            double x = xi[2 * k], y = xi[2 * k + 1];
+            xi[2 * k] = M0[0] * x + M0[1] * y;
+            xi[2 * k + 1] = M0[2] * x + M0[3] * y;
+        }
+        zs = *metric;
+        pb.x = mt;
+        memcpy(pb.A, A, sizeof pb.A);
+        pb.ctx = &m->ctx;
+        zs.metric = pullback_fn;
+        zs.metric_payload = &pb;
+        zs.metric_has_dg = 1;
+        if (metric->metric == cvm__metric_builtin_fn &&
+            ((const cvm__metric_builtin *)metric->metric_payload)->kind == CVM__METRIC_CONSTANT) {
+            /* a constant stays a constant built-in: the closed-form energy */
+            const cvm__metric_builtin *c0 = (const cvm__metric_builtin *)metric->metric_payload;
+            double g0[3];
+            g0[0] = c0->scale * c0->g[0];
+            g0[1] = c0->scale * c0->g[1];
+            g0[2] = c0->scale * c0->g[2];
+            memset(&zc, 0, sizeof zc);
+            zc.kind = CVM__METRIC_CONSTANT;
+            zc.scale = 1;
+            pull_tensor(A, g0, zc.g);
+            zs.metric = cvm__metric_builtin_fn;
+            zs.metric_payload = &zc;
+        }
+    } else if (s) {
+        goto fail;
+    }
+    if ((s = cvm__lpcvt_init(&L, &m->ctx, mapped ? &zs : metric, mapped ? zb : bxy, nb, ni,
+                             (int)cvm__opt(m, CVM_OPT_QUAD_P),
                              (int)cvm__opt(m, CVM_OPT_QUAD_CLIP))))
         goto fail;
     L.cellwise = cvm__opt(m, CVM_OPT_QUAD_CELLWISE_METRIC) != 0;
@@ -445,15 +653,20 @@ cvm_status cvm_mesh_quadmesh(cvm_mesh *m, const cvm_sizing *metric)
             goto fail;
         }
     }
+    for (k = 0; mapped && k < ni; k++) { /* back to x; build_triangulation drops any outside */
+        double z0 = xi[2 * k], z1 = xi[2 * k + 1];
+        xi[2 * k] = A[0] * z0 + A[1] * z1;
+        xi[2 * k + 1] = A[2] * z0 + A[3] * z1;
+    }
     /* the rest is short and is not interrupted: a stop leaves the sites reached so far */
     progress_fn = m->ctx.progress_fn;
     m->ctx.progress_fn = NULL;
     cvm__run_begin(&m->ctx, 0);
-    s = build_triangulation(m, loop, lseg, nc, bxy, nb, xi, ni, &L, &kept);
+    s = build_triangulation(m, loop, lseg, nc, bxy, nb, xi, ni, &kept);
     if (!s) {
         m->triangulated = 1;
         m->nv_triangulated = cvm__store_nv(m);
-        s = make_cells(m, &mt);
+        s = make_cells(m, &mt, mapped ? M0 : NULL);
     }
     if (!s)
         s = cvm__quad_measures(m->quad_report, &mt, cvm__store_points(m), m->quad->ncell,
@@ -492,6 +705,7 @@ done:
     cvm__free(&m->ctx, bxy);
     cvm__free(&m->ctx, xi);
     cvm__free(&m->ctx, corners);
+    cvm__free(&m->ctx, zb);
     cvm__free(&m->ctx, loop);
     cvm__free(&m->ctx, lseg);
     return s;

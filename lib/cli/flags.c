@@ -99,6 +99,8 @@ static const cli_option_flag k_flags[] = {
      "clip the boundary cells to the domain instead of reconstructing them"},
     {"--cellwise-metric", NULL, CVM_OPT_QUAD_CELLWISE_METRIC, 1, QUA,
      "the metric of each site over its whole cell (faster, exact integrals)"},
+    {"--mean-metric-voronoi", "0|1|2", CVM_OPT_QUAD_MEAN_METRIC_VORONOI, 0, QUA,
+     "Voronoi cells of the energy: 0 Euclidean, 1 mean metric, 2 1 if g is constant"},
 };
 
 /* Flags whose value is a word: the word -> the option value. */

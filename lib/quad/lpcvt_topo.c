@@ -209,8 +209,12 @@ cvm_status cvm__lpcvt_init(cvm__lpcvt *L, cvm__ctx *ctx, const cvm_sizing *s, co
  * search for the wedge of the fan from boundary vertex 0 that holds p). */
 int cvm__lpcvt_inside(const cvm__lpcvt *L, const double *p)
 {
-    const double *b = L->xy;
-    size_t lo = 1, hi = L->nb - 1;
+    return cvm__lpcvt_inside_polygon(L->xy, L->nb, p);
+}
+
+int cvm__lpcvt_inside_polygon(const double *b, size_t nb, const double *p)
+{
+    size_t lo = 1, hi = nb - 1;
     if (cvm__orient2d(b, b + 2, p) <= 0 || cvm__orient2d(b + 2 * hi, b, p) <= 0)
         return 0;
     while (hi - lo > 1) {

@@ -209,6 +209,8 @@ void cvm__lpcvt_free(cvm__lpcvt *L);
 cvm_status cvm__lpcvt_topology(cvm__lpcvt *L, const double *xi);
 /* 1 when p lies strictly inside the boundary polygon of L (exact orientations). */
 int cvm__lpcvt_inside(const cvm__lpcvt *L, const double *p);
+/* The same test against the convex counter-clockwise polygon b (nb >= 3 vertices). */
+int cvm__lpcvt_inside_polygon(const double *b, size_t nb, const double *p);
 /* Topology, then E and (grad not NULL) dE/d xi (2 per moving site). With
  * L->valid 0 on return E and grad are not written. Errors of the topology and
  * of the metric (CVM_E_ARGUMENT naming the point). */

@@ -52,7 +52,7 @@ if command -v dpkg-query >/dev/null 2>&1; then
     fi
 fi
 OMP_NUM_THREADS=1 "$VENV/bin/python" tests/bench/bench_delaunay.py "$BUILD" "$DOMAINS"
-for extra in tests/bench/bench_refine.py tests/bench/bench_dual.py tests/bench/bench_delaunay3.py tests/bench/bench_matching.py tests/bench/bench_generate3.py; do
+for extra in tests/bench/bench_refine.py tests/bench/bench_dual.py tests/bench/bench_delaunay3.py tests/bench/bench_matching.py tests/bench/bench_generate3.py tests/bench/bench_quad.py; do
     if [ -f "$extra" ]; then
         OMP_NUM_THREADS=1 "$VENV/bin/python" "$extra" "$BUILD" "$DOMAINS"
     fi

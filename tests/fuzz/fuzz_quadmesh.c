@@ -104,6 +104,7 @@ static void run(out *o, const double *poly, int nh, const uint8_t *data, size_t 
     cvm_mesh_set_option(m, CVM_OPT_QUAD_RECOMBINE, ((b3 >> 3) & 3) % 3);
     cvm_mesh_set_option(m, CVM_OPT_QUAD_CLIP, (b3 >> 5) & 1);
     cvm_mesh_set_option(m, CVM_OPT_QUAD_CELLWISE_METRIC, (b3 >> 6) & 1);
+    cvm_mesh_set_option(m, CVM_OPT_QUAD_MEAN_METRIC_VORONOI, (b3 >> 7) & 1 ? 0 : 2);
     cvm_mesh_set_option(m, CVM_OPT_SEED, byte_at(data, size, 4));
     cvm_mesh_set_option(m, CVM_OPT_QUAD_MAX_ITERATIONS, 300);
     cvm_mesh_set_option(m, CVM_OPT_QUAD_RELOCATIONS, 1);
