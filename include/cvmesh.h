@@ -781,7 +781,8 @@ typedef enum cvm_option {
      *  CVM_OPT_DUAL_TARGET_ANGLE_DEG), the latter re-seeded at the mean of its former
      *  neighbours; then every unconstrained interior edge longer than 1.5 x the local
      *  size gets its midpoint inserted (no point closer than 0.5 x the size to a
-     *  vertex). Local size: the sizing when given, else the mean edge length at the
+     *  vertex, nor one whose insertion among the weights would empty another
+     *  vertex's power cell). Local size: the sizing when given, else the mean edge length at the
      *  vertex. Input points and segments are untouched; flips restore the regular
      *  triangulation. Vertices are renumbered as with CVM_OPT_DUAL_TOPOLOGY (markers
      *  and attributes follow); added vertices have marker 0 and attributes 0. Needs

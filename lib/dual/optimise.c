@@ -215,6 +215,14 @@ cvm_status cvm__dual_optimise(cvm__tri2 *T, const cvm__dual_opt_params *p, cvm__
     D.star = cvm__malloc(ctx, (nt + 1) * sizeof *D.star);
     D.save = cvm__malloc(ctx, (3 * nv + 1) * sizeof *D.save);
     D.best = cvm__malloc(ctx, (3 * nv + 1) * sizeof *D.best);
+    /* the optimiser adds no triangle slot: nt bounds them (keep_best checks) */
+    D.best_cap = nt;
+    D.best_tv = cvm__malloc(ctx, (3 * nt + 1) * sizeof *D.best_tv);
+    D.best_tn = cvm__malloc(ctx, (3 * nt + 1) * sizeof *D.best_tn);
+    D.best_te = T->te ? cvm__malloc(ctx, (3 * nt + 1) * sizeof *D.best_te) : NULL;
+    D.best_tf = cvm__malloc(ctx, nt + 1);
+    D.best_ta = T->ta ? cvm__malloc(ctx, (nt + 1) * sizeof *D.best_ta) : NULL;
+    D.best_vtri = cvm__malloc(ctx, (nv + 1) * sizeof *D.best_vtri);
     D.jobs = cvm__malloc(ctx, BATCH * sizeof *D.jobs);
     D.stamp = cvm__calloc(ctx, nv + 1, sizeof *D.stamp);
     D.region = cvm__calloc(ctx, nv + 1, 1);
@@ -225,6 +233,7 @@ cvm_status cvm__dual_optimise(cvm__tri2 *T, const cvm__dual_opt_params *p, cvm__
         D.map2 = cvm__malloc(ctx, (nv + 1) * sizeof *D.map2);
     }
     if (!D.vsize || !D.msize || !D.vbnd || !D.mark || !D.V || !D.F || !D.st || !D.weak || !D.layer || !D.list || !D.star || !D.save || !D.best || !D.jobs ||
+        !D.best_tv || !D.best_tn || (T->te && !D.best_te) || !D.best_tf || (T->ta && !D.best_ta) || !D.best_vtri ||
         !D.stamp || !D.region || (D.topo && (!D.gone || !D.dup || !D.map2)))
         s = CVM_E_NOMEM;
     else
@@ -248,6 +257,12 @@ cvm_status cvm__dual_optimise(cvm__tri2 *T, const cvm__dual_opt_params *p, cvm__
     cvm__free(ctx, D.star);
     cvm__free(ctx, D.save);
     cvm__free(ctx, D.best);
+    cvm__free(ctx, D.best_tv);
+    cvm__free(ctx, D.best_tn);
+    cvm__free(ctx, D.best_te);
+    cvm__free(ctx, D.best_tf);
+    cvm__free(ctx, D.best_ta);
+    cvm__free(ctx, D.best_vtri);
     cvm__free(ctx, D.jobs);
     cvm__free(ctx, D.stamp);
     cvm__free(ctx, D.region);

@@ -8,11 +8,12 @@
 #include "geom/measure.h"
 
 /* Go back to the best state kept by keep_best when it beats the current one
- * and has the same vertices: its positions and weights, made regular again
- * (the regular triangulation of a weighted point set is unique, so this is
- * the triangulation it had). The flips since then may have made triangles that
- * the old positions turn over (around clusters of nearly coincident points);
- * flips cannot untangle that, so the run then keeps its current state. */
+ * and has the same vertices: its positions, weights and triangulation (the
+ * flips since then may have made triangles that the old positions turn over,
+ * around clusters of nearly coincident points, which flips cannot untangle;
+ * so the triangulation is copied back, not re-derived). When that
+ * triangulation was not kept, the old positions are made regular by flips,
+ * and where they turn a triangle over the run keeps its current state. */
 cvm_status cvm__dopt_end_at_best(dopt *D, size_t best_nc, double best_min)
 {
     size_t v;
@@ -26,6 +27,19 @@ cvm_status cvm__dopt_end_at_best(dopt *D, size_t best_nc, double best_min)
         D->T->xy[2 * v] = D->best[3 * v];
         D->T->xy[2 * v + 1] = D->best[3 * v + 1];
         D->T->w[v] = D->best[3 * v + 2];
+    }
+    if (D->best_nt && D->best_nt == D->T->nt) {
+        cvm__tri2 *T = D->T;
+        size_t nt = T->nt;
+        memcpy(T->tv, D->best_tv, 3 * nt * sizeof *T->tv);
+        memcpy(T->tn, D->best_tn, 3 * nt * sizeof *T->tn);
+        memcpy(T->tf, D->best_tf, nt);
+        if (T->te)
+            memcpy(T->te, D->best_te, 3 * nt * sizeof *T->te);
+        if (T->ta)
+            memcpy(T->ta, D->best_ta, nt * sizeof *T->ta);
+        memcpy(T->vtri, D->best_vtri, T->nv * sizeof *T->vtri);
+        T->last = D->best_last;
     }
     if (!cvm__tri2_all_ccw(D->T)) {
         cvm__dopt_load_state(D);
@@ -70,5 +84,20 @@ int cvm__dopt_keep_best(dopt *D, size_t *best_nc, double *best_min)
     }
     D->best_nv = D->T->nv;
     D->best_removed = D->rep->removed_vanished + D->rep->removed_degree + D->rep->removed_maxmin;
+    D->best_nt = 0;
+    if (D->best_tv && D->T->nt <= D->best_cap) {
+        const cvm__tri2 *T = D->T;
+        size_t nt = T->nt;
+        memcpy(D->best_tv, T->tv, 3 * nt * sizeof *T->tv);
+        memcpy(D->best_tn, T->tn, 3 * nt * sizeof *T->tn);
+        memcpy(D->best_tf, T->tf, nt);
+        if (T->te)
+            memcpy(D->best_te, T->te, 3 * nt * sizeof *T->te);
+        if (T->ta)
+            memcpy(D->best_ta, T->ta, nt * sizeof *T->ta);
+        memcpy(D->best_vtri, T->vtri, T->nv * sizeof *T->vtri);
+        D->best_last = T->last;
+        D->best_nt = nt;
+    }
     return 1;
 }

@@ -77,6 +77,14 @@ typedef struct dopt {
     double *save;    /* 3 per vertex: x, y, w at the start of a sweep */
     double *best;    /* 3 per vertex: x, y, w of the best state (keep_best) */
     size_t best_nv, best_removed;
+    /* the best state's triangulation (keep_best), for best_cap slots: its
+     * positions may turn over triangles that later flips made, which flips
+     * cannot untangle; best_nt 0 when none is kept */
+    int32_t *best_tv, *best_tn, *best_te, *best_vtri;
+    uint8_t *best_tf;
+    double *best_ta;
+    size_t best_nt, best_cap;
+    int32_t best_last;
     size_t nc, nc0;  /* current and initial non-compliant counts */
     size_t nweak;
     double sin2_min, sin2_target;

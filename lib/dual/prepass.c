@@ -18,7 +18,8 @@
  *     (topology.c), then Lawson flips restore the regular triangulation.
  *  2. Re-seeding: a new vertex at the recorded mean of each re-seeded vertex's
  *     former neighbours, inserted by Bowyer-Watson (domain only, rejected when
- *     closer than PRE_SHORT x its size to an existing vertex).
+ *     closer than PRE_SHORT x its size to an existing vertex, or when with
+ *     weights its cavity would drop a vertex or is no disc: would_swallow).
  *  3. Split: every unconstrained edge between two domain triangles of the same
  *     region longer than PRE_LONG x its size gets its midpoint inserted the
  *     same way (edges listed first in slot order, then inserted).
@@ -32,6 +33,7 @@
 
 #include "dual_internal.h"
 #include "delaunay/tri2_store.h"
+#include "geom/geom_internal.h"
 #include "geom/measure.h"
 
 #define PRE_SHORT 0.5
@@ -47,7 +49,9 @@ typedef struct pre {
     double *seed_xy;  /* 2 per vertex: re-seed point, NaN when none */
     int32_t *dup, *map;
     double *mid;      /* split points, 3 per edge (x, y, h) */
-    size_t cap;       /* entries of the per-vertex arrays */
+    int32_t *cav;     /* cavity of a point about to be inserted (would_swallow) */
+    uint8_t *in_cav;  /* per triangle slot: 1 in that cavity */
+    size_t cap, cap_cav, cap_tri; /* entries of the per-vertex, cavity, per-slot arrays */
     double sin2_target;
 } pre;
 
@@ -130,19 +134,147 @@ static int wants_removal(pre *P, int32_t v)
     return 1;
 }
 
+/* With weights, Bowyer-Watson insertion (cvm__tri2_insert_vertex) drops every
+ * vertex inside the new point's cavity (the point empties its power cell), and
+ * no flip brings it back; where the triangulation is not regular (a vertex
+ * whose power cell is already empty stays as the blocking corner of an edge
+ * no flip can fix, see cvm_mesh_set_weights) the cavity need not even be a
+ * disc, and the fan over it corrupts the triangulation; a constrained edge
+ * inside the cavity would be taken for one the point splits. All of these
+ * break the pre-pass's contract (vertices go only when picked, segments are
+ * untouched), so *yes = 1 when the insertion of vertex id would do any: the
+ * cavity is grown here as cvm__tri2_insert_vertex grows it (from the triangle
+ * containing the point, across unconstrained edges whose triangle is in
+ * conflict with it, exact power test) and the point is refused unless the
+ * cavity is a disc with no vertex inside (boundary edges = triangles + 2),
+ * every boundary edge is seen counter-clockwise from it (exact orient2d), no
+ * constrained edge lies inside and the point is not on the line of a
+ * constrained edge the cavity touches (the insertion would split it). *yes = 0
+ * too when the insertion refuses the point by itself (duplicate, outside,
+ * redundant). CVM_OK or CVM_E_NOMEM. */
+static cvm_status would_swallow(pre *P, int32_t id, int *yes)
+{
+    cvm__tri2 *T = P->T;
+    cvm__ctx *ctx = T->ctx;
+    const double *pp = T->xy + 2 * (size_t)id;
+    size_t ncav = 0, i, top = 0;
+    int32_t t0;
+    int j0;
+    cvm__loc loc;
+    *yes = 0;
+    loc = cvm__tri2_locate(T, pp, -1, &t0, &j0);
+    if (t0 < 0 || loc == CVM__LOC_VERTEX || loc == CVM__LOC_OUTSIDE || cvm__tri2_conflict(T, t0, id) <= 0)
+        return CVM_OK; /* refused by the insertion (duplicate, outside, redundant) */
+    if (T->nt > P->cap_tri) {
+        size_t n = T->nt + T->nt / 2 + 16;
+        uint8_t *a = cvm__realloc(ctx, P->in_cav, n);
+        if (!a)
+            return CVM_E_NOMEM;
+        memset(a + P->cap_tri, 0, n - P->cap_tri);
+        P->in_cav = a;
+        P->cap_tri = n;
+    }
+#define PUSH_CAV(t)                                                                                \
+    do {                                                                                           \
+        if (ncav + 1 > P->cap_cav) {                                                               \
+            size_t n_ = 2 * P->cap_cav + 64;                                                       \
+            int32_t *a_ = cvm__realloc(ctx, P->cav, n_ * sizeof *a_);                              \
+            if (!a_) {                                                                             \
+                for (i = 0; i < ncav; i++)                                                         \
+                    P->in_cav[P->cav[i]] = 0;                                                      \
+                return CVM_E_NOMEM;                                                                \
+            }                                                                                      \
+            P->cav = a_;                                                                           \
+            P->cap_cav = n_;                                                                       \
+        }                                                                                          \
+        P->cav[ncav++] = (t);                                                                      \
+        P->in_cav[t] = 1;                                                                          \
+    } while (0)
+    PUSH_CAV(t0);
+    /* breadth first over P->cav itself: cav[top..ncav) are still to expand */
+    while (top < ncav && !*yes) {
+        int32_t t = P->cav[top++];
+        int j;
+        for (j = 0; j < 3 && !*yes; j++) {
+            size_t h = 3 * (size_t)t + (size_t)j;
+            int32_t nb = T->tn[h] / 3;
+            if (P->in_cav[nb])
+                continue;
+            if (T->te && T->te[h] >= 0) {
+                int32_t a = T->tv[3 * (size_t)t + (size_t)(j + 1) % 3];
+                int32_t b = T->tv[3 * (size_t)t + (size_t)(j + 2) % 3];
+                if (a >= 0 && b >= 0 &&
+                    cvm__orient2d(T->xy + 2 * (size_t)a, T->xy + 2 * (size_t)b, pp) == 0)
+                    *yes = 1; /* on or in line with a segment: not the pre-pass's to split */
+                continue;
+            }
+            if (cvm__tri2_conflict(T, nb, id) > 0)
+                PUSH_CAV(nb);
+        }
+    }
+#undef PUSH_CAV
+    /* the fan over the cavity's boundary must be a triangulation: a disc
+     * (boundary edges = triangles + 2, so no vertex inside) seen
+     * counter-clockwise from the point, with no constrained edge inside */
+    if (!*yes) {
+        size_t nbnd = 0;
+        for (i = 0; i < ncav && !*yes; i++) {
+            int32_t t = P->cav[i];
+            int j;
+            for (j = 0; j < 3 && !*yes; j++) {
+                size_t h = 3 * (size_t)t + (size_t)j;
+                int32_t a = T->tv[3 * (size_t)t + (size_t)(j + 1) % 3];
+                int32_t b = T->tv[3 * (size_t)t + (size_t)(j + 2) % 3];
+                int32_t x = T->tv[3 * (size_t)t + (size_t)j], u = t;
+                size_t n = 0;
+                /* corner x with every triangle in the cavity: it would vanish */
+                while (x >= 0 && !*yes && P->in_cav[u] && n++ <= T->nt) {
+                    u = T->tn[3 * (size_t)u + (size_t)(cvm__tri2_corner(T, u, x) + 1) % 3] / 3;
+                    if (u == t)
+                        *yes = 1;
+                }
+                if (P->in_cav[T->tn[h] / 3]) {
+                    if (T->te && T->te[h] >= 0)
+                        *yes = 1;
+                    continue;
+                }
+                nbnd++;
+                if (a >= 0 && b >= 0 &&
+                    cvm__orient2d(pp, T->xy + 2 * (size_t)a, T->xy + 2 * (size_t)b) <= 0)
+                    *yes = 1;
+            }
+        }
+        if (nbnd != ncav + 2)
+            *yes = 1;
+    }
+    for (i = 0; i < ncav; i++)
+        P->in_cav[P->cav[i]] = 0;
+    return CVM_OK;
+}
+
 /* Add a vertex at xy and insert it (domain only, min distance md); a rejected
- * one is flagged gone. *added counts the inserted ones. */
+ * one (also one that would_swallow refuses) is flagged gone. *added counts the
+ * inserted ones. */
 static cvm_status add_point(pre *P, const double *xy, double md, int32_t hint, size_t *added)
 {
     cvm__tri2 *T = P->T;
     int32_t id, other;
     cvm__ins res;
     cvm_status s;
+    int refuse = 0;
     if ((s = grow(P, T->nv + 1)))
         return s;
     if ((s = cvm__tri2_add_vertex(T, xy, &id)))
         return s;
     P->pick[id] = 0;
+    if (T->w && (s = would_swallow(P, id, &refuse))) {
+        P->pick[id] = 2;
+        return s;
+    }
+    if (refuse) {
+        P->pick[id] = 2;
+        return CVM_OK;
+    }
     if ((s = cvm__tri2_insert_vertex(T, id, hint, CVM__INSF_DOMAIN_ONLY, md, &res, &other))) {
         P->pick[id] = 2;
         return s;
@@ -268,5 +400,7 @@ cvm_status cvm__dual_prepass(cvm__tri2 *T, const cvm__dual_opt_params *p, size_t
     cvm__free(T->ctx, P.dup);
     cvm__free(T->ctx, P.map);
     cvm__free(T->ctx, P.mid);
+    cvm__free(T->ctx, P.cav);
+    cvm__free(T->ctx, P.in_cav);
     return s;
 }

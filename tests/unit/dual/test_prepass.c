@@ -205,6 +205,67 @@ START_TEST(prepass_reseeds_steiner_vertices_of_small_angles)
 }
 END_TEST
 
+/* Start weights that empty no power cell, where a split or re-seed point
+ * inserted among them can: weighted Bowyer-Watson drops every vertex inside
+ * the point's cavity, and where the triangulation is not regular the cavity
+ * need not even be a disc. The pre-pass refuses such points, so every vertex
+ * stays a corner, input points stay in place and the mesh stays regular.
+ * Before the fix (fuzz finding regression_prepass_insertion_swallows_vertices)
+ * scale 0.05 left a vertex without a triangle (seeds 2 and 4) and scale 0.1
+ * turned a triangle over (seed 0). */
+START_TEST(prepass_insertions_drop_no_weighted_vertex)
+{
+    static const double scale[2] = {0.05, 0.1};
+    int i, seed;
+    for (i = 0; i < 2; i++)
+        for (seed = 0; seed < 7; seed++) {
+            cvm_mesh *m = refined(0.1);
+            cvm_sizing *s;
+            dtest_mesh d0, d;
+            size_t nin, nv0, k, t;
+            double *w, van = -1;
+            unsigned char *corner;
+            ck_assert_int_eq(cvm_mesh_count(&nin, m, CVM_ENT_INPUT_POINT), CVM_OK);
+            ck_assert_int_eq(cvm_mesh_count(&nv0, m, CVM_ENT_VERTEX), CVM_OK);
+            w = malloc(nv0 * sizeof *w);
+            ck_assert_ptr_nonnull(w);
+            for (k = 0; k < nv0; k++)
+                w[k] = scale[i] * 0.01 * (double)((int)((k * 37 + (size_t)seed) % 7) - 3);
+            ck_assert_int_eq(cvm_mesh_set_weights(m, w, nv0), CVM_OK);
+            free(w);
+            /* the premise: the start keeps every vertex */
+            ck_assert_int_eq(cvm_mesh_get_measure(&van, m, CVM_MEASURE_VANISHED_VERTICES), CVM_OK);
+            ck_assert(van == 0);
+            dtest_get(m, &d0);
+            ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_DUAL_PREPASS, 1), CVM_OK);
+            ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_DUAL_MAX_SWEEPS, 0), CVM_OK);
+            ck_assert_int_eq(cvm_sizing_create(&s), CVM_OK);
+            ck_assert_int_eq(cvm_sizing_set_uniform(s, 0.05), CVM_OK); /* every edge ~2x: splits */
+            ck_assert_msg(cvm_mesh_optimise_dual(m, s) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+            cvm_sizing_free(s);
+            ck_assert_msg(cvm_mesh_check(m) == CVM_OK, "scale %g seed %d: %s", scale[i], seed,
+                          cvm_mesh_errmsg(m));
+            ck_assert_int_eq(cvm_mesh_get_measure(&van, m, CVM_MEASURE_VANISHED_VERTICES), CVM_OK);
+            ck_assert_msg(van == 0, "scale %g seed %d: %g vanished", scale[i], seed, van);
+            dtest_get(m, &d);
+            ck_assert_uint_gt(d.nv, d0.nv); /* the premise: points were inserted */
+            corner = calloc(d.nv + 1, 1);
+            ck_assert_ptr_nonnull(corner);
+            for (t = 0; t < 3 * d.nt; t++)
+                corner[d.tri[t]] = 1;
+            for (k = 0; k < d.nv; k++)
+                ck_assert_msg(corner[k], "scale %g seed %d: vertex %zu is in no triangle", scale[i], seed, k);
+            free(corner);
+            for (k = 0; k < nin; k++)
+                ck_assert(d.xy[2 * k] == d0.xy[2 * k] && d.xy[2 * k + 1] == d0.xy[2 * k + 1]);
+            ck_assert_uint_eq(dtest_power_violations(&d, d.w), 0);
+            dtest_free(&d0);
+            dtest_free(&d);
+            cvm_mesh_free(m);
+        }
+}
+END_TEST
+
 static void run_threads(int threads, dtest_mesh *d)
 {
     cvm_mesh *m = refined(0.1);
@@ -281,6 +342,7 @@ TCase *dual_prepass_tcase(void)
     tcase_add_test(tc, prepass_splits_long_edges_and_keeps_input_and_segments);
     tcase_add_test(tc, prepass_collapses_short_edges_and_keeps_input_and_segments);
     tcase_add_test(tc, prepass_reseeds_steiner_vertices_of_small_angles);
+    tcase_add_test(tc, prepass_insertions_drop_no_weighted_vertex);
     tcase_add_test(tc, prepass_same_bytes_for_1_2_4_threads);
     tcase_add_test(tc, prepass_out_of_memory_leaves_a_valid_mesh);
     return tc;
