@@ -589,6 +589,22 @@ class Mesh:
                 return self._finish(capi.cvm_mesh_generate3(m, float(size)))
             return self._finish(capi.cvm_mesh_generate3_sized(m, float(size), s))
 
+    def optimise_dual3(self, progress: Optional[ProgressCallback] = None,
+                       every: Optional[int] = None, **options: float) -> Status:
+        """Move the vertices of this tetrahedral mesh and set power weights so
+        that more tetrahedra contain their power vertex, keeping the
+        connectivity (cvm_mesh_optimise_dual3; options such as
+        dual3_max_sweeps, dual3_min_dihedral_deg, seed, time_limit_s).
+        Returns the Status (INCOMPLETE_* after a time limit or a stop by the
+        progress callback: the mesh is then valid with the moves made so far).
+        The run's report: report("dual3_outside_after_pct") and the other
+        dual3_* reports."""
+        self.set_options(**options)
+        with contextlib.ExitStack() as stack:
+            m = stack.enter_context(self._handle())
+            stack.enter_context(self._progress_installed(m, progress, every))
+            return self._finish(capi.cvm_mesh_optimise_dual3(m))
+
     def refine(self, algorithm: Union[str, int] = "frontal",
                size: Union[float, SizeCallback, None] = None, min_angle: Optional[float] = None,
                max_area: Optional[float] = None, sizing: Optional[Sizing] = None,
