@@ -23,12 +23,13 @@ static void bg_node(const double *xyh, int32_t v, double *out)
     out[1] = xyh[3 * (size_t)v + 1];
 }
 
-/* Cells covered by the bounding box of triangle t: count (pos NULL) or fill. */
-static void bg_grid_tri(cvm__background *bg, size_t t, int32_t *pos)
+/* Cells covered by the bounding box of triangle t (a cvm__cell_range_fn). */
+static void bg_tri_cells(const void *payload, size_t t, int *i0, int *j0, int *i1, int *j1)
 {
+    const cvm__background *bg = payload;
     const int32_t *v = bg->tri + 3 * t;
     double xmin = HUGE_VAL, ymin = HUGE_VAL, xmax = -HUGE_VAL, ymax = -HUGE_VAL;
-    int i0, j0, i1, j1, i, j, k;
+    int k;
     for (k = 0; k < 3; k++) {
         const double *p = bg->xy + 2 * (size_t)v[k];
         xmin = fmin(xmin, p[0]);
@@ -36,23 +37,14 @@ static void bg_grid_tri(cvm__background *bg, size_t t, int32_t *pos)
         ymin = fmin(ymin, p[1]);
         ymax = fmax(ymax, p[1]);
     }
-    cvm__cell_grid_cell(&bg->g, xmin, ymin, &i0, &j0);
-    cvm__cell_grid_cell(&bg->g, xmax, ymax, &i1, &j1);
-    for (j = j0; j <= j1; j++)
-        for (i = i0; i <= i1; i++) {
-            size_t c = (size_t)j * (size_t)bg->g.nx + (size_t)i;
-            if (pos)
-                bg->items[pos[c]++] = (int32_t)t;
-            else
-                bg->start[c + 1]++;
-        }
+    cvm__cell_grid_cell(&bg->g, xmin, ymin, i0, j0);
+    cvm__cell_grid_cell(&bg->g, xmax, ymax, i1, j1);
 }
 
 static cvm_status bg_grid(cvm__background *bg, cvm__ctx *ctx)
 {
     double xmin = HUGE_VAL, ymin = HUGE_VAL, xmax = -HUGE_VAL, ymax = -HUGE_VAL;
-    size_t k, ncell;
-    int32_t *pos;
+    size_t k;
     for (k = 0; k < bg->np; k++) {
         xmin = fmin(xmin, bg->xy[2 * k]);
         xmax = fmax(xmax, bg->xy[2 * k]);
@@ -60,29 +52,7 @@ static cvm_status bg_grid(cvm__background *bg, cvm__ctx *ctx)
         ymax = fmax(ymax, bg->xy[2 * k + 1]);
     }
     cvm__cell_grid_fit(&bg->g, xmin, ymin, xmax, ymax, bg->nt);
-    ncell = (size_t)bg->g.nx * (size_t)bg->g.ny;
-    bg->start = cvm__malloc(ctx, (ncell + 1) * sizeof *bg->start);
-    if (!bg->start)
-        return CVM_E_NOMEM;
-    memset(bg->start, 0, (ncell + 1) * sizeof *bg->start);
-    for (k = 0; k < bg->nt; k++)
-        bg_grid_tri(bg, k, NULL);
-    for (k = 0; k < ncell; k++) {
-        if ((size_t)bg->start[k + 1] > (size_t)INT32_MAX - (size_t)bg->start[k])
-            return CVM_E_TOO_LARGE;
-        bg->start[k + 1] += bg->start[k];
-    }
-    bg->items = cvm__malloc(ctx, ((size_t)bg->start[ncell] + 1) * sizeof *bg->items);
-    pos = cvm__malloc(ctx, (ncell + 1) * sizeof *pos);
-    if (!bg->items || !pos) {
-        cvm__free(ctx, pos);
-        return CVM_E_NOMEM;
-    }
-    memcpy(pos, bg->start, (ncell + 1) * sizeof *pos);
-    for (k = 0; k < bg->nt; k++)
-        bg_grid_tri(bg, k, pos);
-    cvm__free(ctx, pos);
-    return CVM_OK;
+    return cvm__cell_grid_bucket(ctx, &bg->g, bg->nt, bg_tri_cells, bg, &bg->start, &bg->items);
 }
 
 cvm_status cvm_sizing_set_background(cvm_sizing *s, const double *xyh, size_t npoints,

@@ -41,55 +41,26 @@ void cvm__background3_box(const cvm__background3 *bg, double *lo, double *hi)
     }
 }
 
-/* Cells covered by the x-y box of tetrahedron t: count (pos NULL) or fill. */
-static void bg3_bucket(cvm__background3 *bg, size_t t, int32_t *pos)
+/* Cells covered by the x-y box of tetrahedron t (a cvm__cell_range_fn). */
+static void bg3_tet_cells(const void *payload, size_t t, int *i0, int *j0, int *i1, int *j1)
 {
+    const cvm__background3 *bg = payload;
     double lo[2] = {HUGE_VAL, HUGE_VAL}, hi[2] = {-HUGE_VAL, -HUGE_VAL};
-    int i0, j0, i1, j1, i, j, c, k;
+    int c, k;
     for (c = 0; c < 4; c++)
         for (k = 0; k < 2; k++) {
             double v = bg->xyz[3 * (size_t)bg->tet[4 * t + (size_t)c] + (size_t)k];
             lo[k] = fmin(lo[k], v);
             hi[k] = fmax(hi[k], v);
         }
-    cvm__cell_grid_cell(&bg->g, lo[0], lo[1], &i0, &j0);
-    cvm__cell_grid_cell(&bg->g, hi[0], hi[1], &i1, &j1);
-    for (j = j0; j <= j1; j++)
-        for (i = i0; i <= i1; i++) {
-            size_t cell = (size_t)j * (size_t)bg->g.nx + (size_t)i;
-            if (pos)
-                bg->items[pos[cell]++] = (int32_t)t;
-            else
-                bg->start[cell + 1]++;
-        }
+    cvm__cell_grid_cell(&bg->g, lo[0], lo[1], i0, j0);
+    cvm__cell_grid_cell(&bg->g, hi[0], hi[1], i1, j1);
 }
 
 static cvm_status bg3_grid(cvm__background3 *bg, cvm__ctx *ctx)
 {
-    size_t k, ncell;
-    int32_t *pos;
     cvm__cell_grid_fit(&bg->g, bg->lo[0], bg->lo[1], bg->hi[0], bg->hi[1], bg->nt);
-    ncell = (size_t)bg->g.nx * (size_t)bg->g.ny;
-    if (!(bg->start = cvm__calloc(ctx, ncell + 1, sizeof *bg->start)))
-        return CVM_E_NOMEM;
-    for (k = 0; k < bg->nt; k++)
-        bg3_bucket(bg, k, NULL);
-    for (k = 0; k < ncell; k++) {
-        if ((size_t)bg->start[k + 1] > (size_t)INT32_MAX - (size_t)bg->start[k])
-            return CVM_E_TOO_LARGE;
-        bg->start[k + 1] += bg->start[k];
-    }
-    bg->items = cvm__malloc(ctx, ((size_t)bg->start[ncell] + 1) * sizeof *bg->items);
-    pos = cvm__malloc(ctx, (ncell + 1) * sizeof *pos);
-    if (!bg->items || !pos) {
-        cvm__free(ctx, pos);
-        return CVM_E_NOMEM;
-    }
-    memcpy(pos, bg->start, (ncell + 1) * sizeof *pos);
-    for (k = 0; k < bg->nt; k++)
-        bg3_bucket(bg, k, pos);
-    cvm__free(ctx, pos);
-    return CVM_OK;
+    return cvm__cell_grid_bucket(ctx, &bg->g, bg->nt, bg3_tet_cells, bg, &bg->start, &bg->items);
 }
 
 /* Check the nodes (x, y, z, h each) and tetrahedra of a 3D background. */

@@ -46,6 +46,18 @@ typedef struct cvm__cell_grid {
 void cvm__cell_grid_fit(cvm__cell_grid *g, double xmin, double ymin, double xmax, double ymax, size_t n);
 /* Cell (i, j) of (x, y), clamped into the grid. */
 void cvm__cell_grid_cell(const cvm__cell_grid *g, double x, double y, int *i, int *j);
+/* The cells item k covers, for cvm__cell_grid_bucket(): (i, j) with i0 <= i <= i1,
+ * j0 <= j <= j1. */
+typedef void (*cvm__cell_range_fn)(const void *payload, size_t k, int *i0, int *j0, int *i1,
+                                   int *j1);
+/* Bucket items 0..n-1 into the cells of g as offsets: the items of cell
+ * c = j nx + i are (*items)[(*start)[c] .. (*start)[c + 1] - 1], in increasing
+ * k. *start and *items are set as soon as they are allocated, so the caller
+ * frees them on any status. CVM_E_NOMEM, or CVM_E_TOO_LARGE when the
+ * offsets pass INT32_MAX. */
+cvm_status cvm__cell_grid_bucket(cvm__ctx *ctx, const cvm__cell_grid *g, size_t n,
+                                 cvm__cell_range_fn range, const void *payload, int32_t **start,
+                                 int32_t **items);
 
 /* The automatic length scale (sizing_auto.c), built per refinement from the
  * domain: samples (x, y, LS) on the boundary in a uniform grid; the size at a
