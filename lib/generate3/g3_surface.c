@@ -346,7 +346,8 @@ static cvm_status merge_pending(g3s_state *S)
             all[m].e = (int32_t)e;
             all[m++].t = S->sp[S->edge[e].soff + i];
         }
-    memcpy(all + m, S->pend, S->npend * sizeof *all);
+    if (S->npend)
+        memcpy(all + m, S->pend, S->npend * sizeof *all);
     m += S->npend;
     S->npend = 0;
     qsort(all, m, sizeof *all, split_cmp);
@@ -517,7 +518,8 @@ again:
             S.ne++;
         }
     }
-    qsort(S.edge, S.ne, sizeof *S.edge, edge_cmp);
+    if (S.ne > 1)
+        qsort(S.edge, S.ne, sizeof *S.edge, edge_cmp);
     {
         /* an edge of 3+ triangles is listed by each: keep one, split by no one */
         size_t m = 0;
