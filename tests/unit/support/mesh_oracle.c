@@ -344,10 +344,14 @@ static int check_segment(oracle *o, size_t k, cvm_index a, cvm_index b)
             const double *pw = P(o, w);
             int steiner = (size_t)w >= o->n_orig;
             int on_line = w == b || cvm__orient2d(pa, pb, pw) == 0;
+            int cur_on_line = cur == a || cvm__orient2d(pa, pb, P(o, cur)) == 0;
             /* a step off the exact line is a rounding case: an input vertex
              * an ulp from the segment's end may carry it (concurrent or
-             * nearly coincident segments meet there), even an ulp beyond b */
-            int weak = steiner || (size_t)cur >= o->n_orig || !on_line;
+             * nearly coincident segments meet there), even an ulp beyond b;
+             * so is a step back onto the line from a vertex within rounding of
+             * it (two input points an ulp apart, one on the line: the chain
+             * may step sideways between them) */
+            int weak = steiner || (size_t)cur >= o->n_orig || !on_line || !cur_on_line;
             if (o->visit[w] == stamp ||
                 (w != b && !progresses(P(o, cur), pw, pb, ax, weak, pa)))
                 continue;

@@ -148,6 +148,32 @@ START_TEST(oracle_walks_steiner_points_sharing_a_coordinate)
 }
 END_TEST
 
+/* Segment 0-1 carried by input points 2 (an ulp-scale 1e-12 off the line) and
+ * 3 (exactly on it) at the same x: the chain 0-2-3-1 steps sideways from 2
+ * back onto the line, which the rule of cvm_mesh_triangulate() allows (every
+ * chain vertex within 2^-40 (M + L) of the segment); edge 0-3, on the line but
+ * not an output segment, is beside the chain, not part of it. */
+START_TEST(oracle_walks_sideways_step_back_onto_the_line)
+{
+    static const double xy[] = {0, 0, 4, 0, 2, 1e-12, 2, 0, 2, 2, 2, -2};
+    static const cvm_index tri[] = {0, 2, 4, 2, 1, 4, 0, 3, 2, 3, 1, 2, 0, 5, 3, 3, 5, 1};
+    static const cvm_index segs[] = {0, 1};
+    static const cvm_index cons[] = {0, 2, 2, 3, 3, 1};
+    static const cvm_index gap[] = {0, 2, 3, 1};
+    cvmtest_expect e;
+    cvmtest_expect_init(&e);
+    e.delaunay = 0;
+    e.segs = segs;
+    e.nseg = 1;
+    e.check_euler = 1;
+    e.euler = 1;
+    ck_assert_msg(cvmtest_oracle(g_msg, sizeof g_msg, xy, 6, tri, 6, cons, 3, NULL, 0, &e), "%s",
+                  g_msg);
+    /* without the sideways piece 2-3 the chain is broken */
+    ck_assert(!cvmtest_oracle(g_msg, sizeof g_msg, xy, 6, tri, 6, gap, 2, NULL, 0, &e));
+}
+END_TEST
+
 START_TEST(failing_alloc_fails_kth_and_counts_live_blocks)
 {
     cvmtest_alloc a;
@@ -190,6 +216,7 @@ Suite *support_suite(void)
     tcase_add_test(tc, oracle_rejects_doubly_wound_vertex);
     tcase_add_test(tc, oracle_walks_collinear_segment_chain);
     tcase_add_test(tc, oracle_walks_steiner_points_sharing_a_coordinate);
+    tcase_add_test(tc, oracle_walks_sideways_step_back_onto_the_line);
     suite_add_tcase(s, tc);
     tc = tcase_create("failing_alloc");
     tcase_add_test(tc, failing_alloc_fails_kth_and_counts_live_blocks);
