@@ -305,13 +305,16 @@ $(DATA3D)/.stamp: examples/data3d/make_data3d.py
 	$(PYTHON) $< $(DATA3D)
 	@touch $@
 
+# Each suite runs in its own process, JOBS at a time (.ci/run_unit_tests.sh).
+UNIT_RUN = sh .ci/run_unit_tests.sh
+
 check-unit: $(TEST_BIN) data3d
-	set -o pipefail; $(TEST_ENV) $(TEST_BIN) 2>&1 | tee $(BUILD)/unit.log
+	$(TEST_ENV) $(UNIT_RUN) $(TEST_BIN) $(BUILD)/unit.log $(JOBS)
 
 check-asan: data3d
 	$(MAKE) $(PAR) --no-print-directory BUILD=$(BUILD)/asan SAN=1 OPENMP=0 tests replay-bins
 	$(TEST_ENV) ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 CK_TIMEOUT_MULTIPLIER=4 \
-	  $(BUILD)/asan/tests/unit_tests
+	  $(UNIT_RUN) $(BUILD)/asan/tests/unit_tests $(BUILD)/asan/unit.log $(JOBS)
 	$(MAKE) --no-print-directory BUILD=$(BUILD)/asan SAN=1 OPENMP=0 check-replay
 
 check-valgrind: data3d
@@ -321,7 +324,7 @@ check-valgrind: data3d
 
 check-clang: data3d
 	$(MAKE) $(PAR) --no-print-directory BUILD=$(BUILD)/clang CC=$(CLANG) all tests
-	$(TEST_ENV) $(BUILD)/clang/tests/unit_tests
+	$(TEST_ENV) $(UNIT_RUN) $(BUILD)/clang/tests/unit_tests $(BUILD)/clang/unit.log $(JOBS)
 
 # The unit tests themselves run without OpenMP in check-asan (OPENMP=0); here the
 # build, the link (no OpenMP runtime) and the CLI.
@@ -423,7 +426,7 @@ check-amalgamation: amalgamation $(TEST_OBJ) data3d
 	sh .ci/check_symbols.sh $(AMALG)/libcvmesh_amalg.so .ci/exported_symbols.txt
 	$(CC) $(SANFLAGS) -pthread -o $(AMALG)/unit_tests $(TEST_OBJ) $(AMALG)/cvmesh.o \
 	  $(CHECK_LIBS) $(LDLIBS_LIB)
-	$(TEST_ENV) $(AMALG)/unit_tests
+	$(TEST_ENV) $(UNIT_RUN) $(AMALG)/unit_tests $(AMALG)/unit.log $(JOBS)
 
 # ---- install, clean --------------------------------------------------------
 # make install: the C library, header, pkg-config file and CLI, then the Fortran
