@@ -8,6 +8,7 @@
 
 #include "dual3/d3_internal.h"
 #include "geom/geom_internal.h"
+#include "geom/measure.h"
 #include "geom/measure3.h"
 
 typedef struct d3_rank {
@@ -127,7 +128,7 @@ static int solve_vertex(cvm__d3_work *K, int32_t v)
         return 0;
     /* no angle below min(the floor, the smallest now): cosines, larger is worse */
     cmax0 = cvm__d3_star_max_cos(K, v, cur);
-    cfloor = cos(K->p->min_dihedral_deg * (3.14159265358979323846 / 180));
+    cfloor = cos(K->p->min_dihedral_deg * (CVM__PI / 180));
     cfloor = cmax0 > cfloor ? cmax0 : cfloor;
     hs = 0.08 * K->lv[v];
     hw = 0.16 * K->lv[v] * K->lv[v];

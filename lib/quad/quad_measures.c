@@ -5,10 +5,11 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "geom/measure.h"
 #include "quad_internal.h"
 
-#define DEG (180.0 / 3.14159265358979323846)
-#define HALF_PI 1.57079632679489661923
+#define DEG (180.0 / CVM__PI)
+#define HALF_PI (CVM__PI / 2)
 
 static int cmp_double(const void *a, const void *b)
 {

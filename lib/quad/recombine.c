@@ -6,11 +6,11 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "geom/measure.h"
 #include "quad/recombine.h"
 #include "quad/matching.h"
 #include "geom/geom_internal.h"
 
-#define PI_ 3.14159265358979323846
 
 /* One candidate pair: triangles t1 < t2 sharing the edge a-b; t1 = (a, b, c)
  * and t2 = (b, a, d) counter-clockwise, so the quad is (a, d, b, c). */
@@ -150,7 +150,7 @@ static double quad_quality(const double *xy, const cvm_index p[4], const double 
         double vv = g[0] * v[0] * v[0] + 2 * g[1] * v[0] * v[1] + g[2] * v[1] * v[1];
         double c = uv / sqrt(uu * vv), dev;
         c = c > 1 ? 1 : c < -1 ? -1 : c;
-        dev = fabs(acos(c) * (180 / PI_) - 90);
+        dev = fabs(acos(c) * (180 / CVM__PI) - 90);
         if (dev > worst)
             worst = dev;
     }

@@ -17,7 +17,7 @@
  * at the local size, the circumcentre and the shape- and size-optimal
  * off-centres; a candidate closer than AF_PROX x the edge to an existing
  * vertex (uniform grid, proximity_grid.c) is skipped. Insertion is
- * Bowyer-Watson with the refiner's encroachment rules (cvm__rf_insert_free),
+ * Bowyer-Watson with the refiner's encroachment rules (cvm__rf_try_interior_point),
  * so the "local reconnection" is the Delaunay cavity.
  *
  * Changes to the published rules (figures in docs/design/refiners.md):
@@ -183,7 +183,7 @@ cvm_status cvm__rf_aflr(cvm__refiner *R)
             continue; /* every candidate too close: left to the clean-up */
         if (R->steiner >= cap)
             break;
-        r = cvm__rf_insert_free(R, e.t, x, &v, &s);
+        r = cvm__rf_try_interior_point(R, e.t, x, &v, &s);
         if (s)
             return s;
         if (r == CVM__RF_DONE)

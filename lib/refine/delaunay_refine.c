@@ -365,8 +365,8 @@ static cvm_status dr_split_encroached(cvm__refiner *R, int *split_any)
     return s;
 }
 
-int cvm__rf_insert_free(cvm__refiner *R, int32_t t, const double *x, int32_t *v_out,
-                        cvm_status *s_out)
+int cvm__rf_try_interior_point(cvm__refiner *R, int32_t t, const double *x, int32_t *v_out,
+                               cvm_status *s_out)
 {
     cvm__tri2 *T = R->T;
     int32_t tc, st, v, other;
@@ -496,7 +496,7 @@ cvm_status cvm__rf_delaunay(cvm__refiner *R)
             continue;
         tv = R->T->tv + 3 * (size_t)e.t;
         dr_steiner_point(R, tv, koff, c);
-        r = cvm__rf_insert_free(R, e.t, c, &v, &s);
+        r = cvm__rf_try_interior_point(R, e.t, c, &v, &s);
         if (s)
             return s;
         if (r == CVM__RF_DONE)

@@ -378,7 +378,7 @@ static cvm_status fr_run(cvm__refiner *R)
          * segment where the walk meets it would not remove t */
         if (!isfinite(x[0]) || !isfinite(x[1]) || !fr_reachable(R, e.t, x))
             continue;
-        r = cvm__rf_insert_free(R, e.t, x, &v, &s);
+        r = cvm__rf_try_interior_point(R, e.t, x, &v, &s);
         if (s)
             return s;
         if (r == CVM__RF_DONE)

@@ -303,12 +303,12 @@ cvm_status cvm__rf_march_segments(cvm__refiner *R);
  * 2 (bad shape: key = sin^2 of its smallest angle), 3 (bad shape but exempt:
  * a small input angle subtends it). size_factor scales the size test. */
 int cvm__rf_classify(cvm__refiner *R, int32_t t, double *key_out);
-/* Try to insert the free point x for bad triangle t: CVM__RF_DONE (inserted,
- * new triangles queued by the caller via *v_out), CVM__RF_SPLIT (x encroached
- * or was blocked by segments, which were split instead), CVM__RF_REJECT (x
- * cannot be used). Status in *s_out. */
-int cvm__rf_insert_free(cvm__refiner *R, int32_t t, const double *x, int32_t *v_out,
-                        cvm_status *s_out);
+/* Try to insert x, a point off every segment, for bad triangle t:
+ * CVM__RF_DONE (inserted, new triangles queued by the caller via *v_out),
+ * CVM__RF_SPLIT (x encroached or was blocked by segments, which were split
+ * instead), CVM__RF_REJECT (x cannot be used). Status in *s_out. */
+int cvm__rf_try_interior_point(cvm__refiner *R, int32_t t, const double *x, int32_t *v_out,
+                               cvm_status *s_out);
 /* Queue the bad triangles around vertex v (Delaunay refinement classes). */
 cvm_status cvm__rf_queue_star(cvm__refiner *R, int32_t v);
 /* Run Delaunay refinement until no triangle is bad (queue rebuilt from all triangles). */
