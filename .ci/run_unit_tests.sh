@@ -3,7 +3,8 @@
 # in its own process, JOBS (default 2) at a time, slowest first; LOG gets every
 # suite's output in BIN --list order, then a total line in Check's format
 # ("100%: Checks: N, Failures: 0, Errors: 0"), which is also printed. Exit
-# status 0 only if every suite passed. The environment (CK_*, ASAN_OPTIONS,
+# status 0 only if every suite passed. Tests that CVMTEST_SKIP (tests/unit/support/skip.h)
+# are counted and listed: a skip is loud, never silent. The environment (CK_*, ASAN_OPTIONS,
 # CVM_* data folders) passes through to every suite.
 set -u
 bin=$1
@@ -28,7 +29,7 @@ start=$(date +%s)
 printf '%s\n' $order | xargs -P "$jobs" -I{} sh -c \
     '"$1" "$3" > "$2/$3.out" 2>&1; echo $? > "$2/$3.rc"' sh "$bin" "$dir" {}
 : > "$log"
-checks=0 failures=0 errors=0 bad=
+checks=0 failures=0 errors=0 skipped=0 bad=
 for s in $suites; do
     cat "$dir/$s.out" >> "$log"
     rc=$(cat "$dir/$s.rc" 2>/dev/null || echo 1)
@@ -37,17 +38,23 @@ for s in $suites; do
         set -- $(echo "$line" | sed 's/^[0-9]*%: Checks: \([0-9]*\), Failures: \([0-9]*\), Errors: \([0-9]*\).*/\1 \2 \3/')
         checks=$((checks + $1)) failures=$((failures + $2)) errors=$((errors + $3))
     fi
+    n_skip=$(grep -c '^SKIP: ' "$dir/$s.out" || true)
+    skipped=$((skipped + n_skip))
     if [ "$rc" != 0 ] || [ -z "$line" ]; then
         bad="$bad $s"
         cat "$dir/$s.out"
     fi
-    echo "unit: $s: ${line:-no summary (exit $rc)}"
+    echo "unit: $s: ${line:-no summary (exit $rc)}$( [ "$n_skip" = 0 ] || echo ", $n_skip skipped")"
 done
 pct=100
 if [ "$checks" -gt 0 ]; then pct=$(( (checks - failures - errors) * 100 / checks )); fi
 total="$pct%: Checks: $checks, Failures: $failures, Errors: $errors"
 echo "$total" >> "$log"
-echo "unit: $(echo $suites | wc -w) suites, $jobs at a time, $(( $(date +%s) - start )) s"
+if [ "$skipped" != 0 ]; then
+    echo "unit: $skipped tests skipped (each passed as a check):"
+    grep -h '^SKIP: ' "$dir"/*.out | sed 's/^/    /'
+fi
+echo "unit: $(echo $suites | wc -w) suites, $jobs at a time, $skipped skipped, $(( $(date +%s) - start )) s"
 echo "$total"
 if [ -n "$bad" ]; then
     echo "unit: failed:$bad"

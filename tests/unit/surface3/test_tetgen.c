@@ -5,6 +5,7 @@
 #include "geom/geom_internal.h"
 #include "surface3/surface3_tests.h"
 #include "tetgen/tetgen_shim.h"
+#include "support/skip.h"
 
 static int cmp3(const void *pa, const void *pb)
 {
@@ -69,7 +70,7 @@ START_TEST(recovery_keeps_every_input_triangle)
     size_t i;
     cvm_status st;
     if (!cvm__tetgen_available())
-        return;
+        CVMTEST_SKIP("needs TetGen (a TETGEN=1 build)");
     cvmtest_alloc_init(&a, 0, 0);
     s3test_ctx(&ctx, &a);
     s3test_read(&ctx, c->file, &s);
@@ -117,7 +118,7 @@ START_TEST(regions_keep_their_attributes)
     double v[3] = {0, 0, 0};
     size_t i;
     if (!cvm__tetgen_available())
-        return;
+        CVMTEST_SKIP("needs TetGen (a TETGEN=1 build)");
     cvm__ctx_init_default(&ctx);
     s3test_read(&ctx, "two_cubes.poly", &s);
     ck_assert_msg(cvm__tetgen_recover(&ctx, &s, &o) == CVM_OK, "%s", ctx.errmsg);
@@ -144,7 +145,7 @@ START_TEST(build_without_tetgen_says_so)
     cvm__surf3 s;
     cvm__tet3_out o;
     if (cvm__tetgen_available())
-        return;
+        CVMTEST_SKIP("tests the TETGEN=0 build");
     cvm__ctx_init_default(&ctx);
     s3test_read(&ctx, "tetra.poly", &s);
     ck_assert_int_eq(cvm__tetgen_recover(&ctx, &s, &o), CVM_E_UNSUPPORTED);
@@ -161,7 +162,7 @@ START_TEST(recovery_survives_out_of_memory)
     cvm__surf3 s;
     long i;
     if (!cvm__tetgen_available())
-        return;
+        CVMTEST_SKIP("needs TetGen (a TETGEN=1 build)");
     cvm__ctx_init_default(&ctx0);
     s3test_read(&ctx0, "tetra.poly", &s);
     for (i = 1;; i++) {
