@@ -103,4 +103,24 @@ uint64_t cvm__rng_below(cvm__rng *r, uint64_t n);
 /* Uniform double in [0, 1). */
 double cvm__rng_uniform(cvm__rng *r);
 
+/* ---- insertion order (brio.c): biased randomised rounds (BRIO, Amenta, Choi
+ * and Rote 2003) with a space-filling curve inside each round; both kernels
+ * build their keys as (round << curve bits) | curve index and sort them. ---- */
+typedef struct cvm__brio {
+    cvm__rng rng;
+    int rounds;
+} cvm__brio;
+/* rounds = the smallest r with (n >> r) <= first_round_max, at most 15. */
+void cvm__brio_init(cvm__brio *b, size_t n, size_t first_round_max, uint64_t seed);
+/* The round of the next point: rounds less the trailing zero bits of a random
+ * word (at most rounds), so the last round holds about half the points, the
+ * one before a quarter, ... One random word per call. */
+int cvm__brio_next_round(cvm__brio *b);
+/* Lower corner lo and scale sc = cells / extent per axis of n points of dim
+ * (<= 3) coordinates; sc 0 on an axis without extent or with an infinite scale. */
+void cvm__bbox_scale(const double *x, size_t n, int dim, double cells, double *lo, double *sc);
+/* order[i] = i, then sorted stably by the low `bits` bits of key[] (LSD radix,
+ * 12 bits a pass); key[] ends sorted too. CVM_E_NOMEM leaves order unspecified. */
+cvm_status cvm__sort_by_key(cvm__ctx *ctx, uint64_t *key, int32_t *order, size_t n, int bits);
+
 #endif
