@@ -1161,15 +1161,16 @@ CVM_API cvm_status cvm_mesh_insert_points(cvm_index *ids_out, cvm_mesh *m, const
  *   point set's tetrahedralisation (as in 2D; a point on the hull is inserted
  *   and splits the hull face), outside a surface's mesh or in one of its
  *   holes, on a constrained face or edge (a surface's, which is never split),
- *   on an existing vertex, closer than @p min_dist to a vertex of its cavity,
+ *   on an existing vertex, closer than @p min_dist to a vertex (rule below),
  *   with weights a point whose power cell would be empty or that would empty
  *   the power cell of a vertex (no vertex ever leaves the mesh).
- * - min_dist rule: the squared distances to the vertices of the point's
- *   cavity, rounded to double as (dx^2 + dy^2 + dz^2), against min_dist^2 (the
- *   2D rule). In a Delaunay tetrahedralisation the nearest vertex is always a
- *   cavity vertex, so this is the test against every vertex; in a regular or
- *   constrained mesh a nearer vertex that is not in the cavity (behind a
- *   constrained face, or a vertex whose power cell vanished) is not seen.
+ * - min_dist rule: the squared distance to every vertex of the mesh, rounded
+ *   to double as (dx^2 + dy^2 + dz^2), against min_dist^2 (the 2D rule). In a
+ *   Delaunay tetrahedralisation the nearest vertex is always a vertex of the
+ *   point's cavity, which is all that is tested; in a regular or constrained
+ *   mesh the test also covers the vertices of every tetrahedron near the ball
+ *   of radius min_dist (behind a constrained face, say). A vertex in no
+ *   tetrahedron (its power cell vanished) is not seen.
  * - Result: new vertices take the ids nv, nv + 1, ... in input order (rejected
  *   points take none) with weight 0; the tetrahedra come back in the canonical
  *   order of cvm_mesh_triangulate() (deterministic). On a point set's Delaunay

@@ -463,6 +463,100 @@ static int32_t vanishing_vertex(cvm__tet3 *T, int32_t p)
     return best;
 }
 
+/* The nearest vertex to x closer than min_dist (rounded squared distance
+ * against min_dist^2, ties to the lowest id) into *best / *other. The cavity's
+ * vertices first; in a regular or constrained mesh the nearest vertex need not
+ * be one of them, so the search then walks, face to face from the cavity, every
+ * tetrahedron whose bounding box meets the box of the ball B(x, min_dist)
+ * (slightly widened: a conservative filter; those tetrahedra form one
+ * face-connected set, the box being convex) and tests their vertices. Marks
+ * are bit 0x80 of tmark, cleared before returning. A vertex in no tetrahedron
+ * (its power cell vanished) is not seen. */
+static cvm_status nearest_within(cvm__tet3 *T, const double *x, double min_dist, int32_t *other)
+{
+    double best = min_dist * min_dist, r = min_dist * (1.0 + 0x1p-20);
+    size_t i, nq = 0, head;
+    int k;
+    int wide = T->w != NULL || T->cface != NULL;
+    cvm_status s = CVM_OK;
+    for (i = 0; i < T->ndead; i++) {
+        int32_t c = T->dead[i];
+        if (wide) {
+            if (nq == T->stackcap
+                && cvm__grow(T->ctx, (void **)&T->stack, &T->stackcap, nq + 1, sizeof *T->stack)
+                       != CVM_OK) {
+                s = CVM_E_NOMEM;
+                goto done;
+            }
+            T->tmark[c] |= 0x80;
+            T->stack[nq++] = c;
+        } else {
+            for (k = 0; k < 4; k++) {
+                int32_t a = T->tt[8 * (size_t)c + k];
+                const double *q;
+                double d;
+                if (a < 0)
+                    continue;
+                q = PT(T, a);
+                d = (q[0] - x[0]) * (q[0] - x[0]) + (q[1] - x[1]) * (q[1] - x[1])
+                    + (q[2] - x[2]) * (q[2] - x[2]);
+                if (d < best || (d == best && *other >= 0 && a < *other)) {
+                    best = d;
+                    *other = a;
+                }
+            }
+        }
+    }
+    for (head = 0; head < nq; head++) {
+        int32_t c = T->stack[head];
+        const int32_t *v = T->tt + 8 * (size_t)c;
+        int f;
+        for (k = 0; k < 4; k++) {
+            const double *q;
+            double d;
+            if (v[k] < 0)
+                continue;
+            q = PT(T, v[k]);
+            d = (q[0] - x[0]) * (q[0] - x[0]) + (q[1] - x[1]) * (q[1] - x[1])
+                + (q[2] - x[2]) * (q[2] - x[2]);
+            if (d < best || (d == best && *other >= 0 && v[k] < *other)) {
+                best = d;
+                *other = v[k];
+            }
+        }
+        for (f = 0; f < 4; f++) {
+            int32_t u = CVM__T3_TN(T, 4 * (size_t)c + f) >> 2;
+            const int32_t *w = T->tt + 8 * (size_t)u;
+            int meets = 1, ax;
+            if ((T->tmark[u] & 0x80) || w[3] == CVM__T3_GHOST)
+                continue;
+            for (ax = 0; ax < 3 && meets; ax++) {
+                double lo = PT(T, w[0])[ax], hi = lo;
+                for (k = 1; k < 4; k++) {
+                    double c2 = PT(T, w[k])[ax];
+                    lo = c2 < lo ? c2 : lo;
+                    hi = c2 > hi ? c2 : hi;
+                }
+                meets = lo <= x[ax] + r && hi >= x[ax] - r;
+            }
+            if (!meets)
+                continue;
+            if (nq == T->stackcap
+                && cvm__grow(T->ctx, (void **)&T->stack, &T->stackcap, nq + 1, sizeof *T->stack)
+                       != CVM_OK) {
+                s = CVM_E_NOMEM;
+                goto done;
+            }
+            T->tmark[u] |= 0x80;
+            T->stack[nq++] = u;
+        }
+    }
+done:
+    for (i = 0; i < nq; i++)
+        T->tmark[T->stack[i]] &= 0x7f;
+    return s;
+}
+
 cvm_status cvm__tet3_insert_point(cvm__tet3 *T, const double *x, int32_t sos, double min_dist,
                                   cvm__t3_ins *res, int32_t *other)
 {
@@ -513,22 +607,13 @@ cvm_status cvm__tet3_insert_point(cvm__tet3 *T, const double *x, int32_t sos, do
         return s;
     }
     if (min_dist > 0) {
-        double best = min_dist * min_dist;
-        for (i = 0; i < T->ndead; i++)
-            for (k = 0; k < 4; k++) {
-                int32_t a = T->tt[8 * (size_t)T->dead[i] + k];
-                const double *q;
-                double d;
-                if (a < 0)
-                    continue;
-                q = PT(T, a);
-                d = (q[0] - x[0]) * (q[0] - x[0]) + (q[1] - x[1]) * (q[1] - x[1])
-                    + (q[2] - x[2]) * (q[2] - x[2]);
-                if (d < best || (d == best && *other >= 0 && a < *other)) {
-                    best = d;
-                    *other = a;
-                }
-            }
+        if ((s = nearest_within(T, x, min_dist, other)) != CVM_OK) {
+            unmark(T);
+            clear_excluded(T);
+            T->ndead = T->nbf = 0;
+            *other = -1;
+            return s;
+        }
         if (*other >= 0) {
             unmark(T);
             clear_excluded(T);
