@@ -205,6 +205,9 @@ cvm_status cvm__mesh3_measure(double *out, cvm_mesh *m, cvm_measure which)
     if ((int)which >= (int)CVM_MEASURE_MIN_DUAL_EDGE_RATIO_3D &&
         (int)which <= (int)CVM_MEASURE_MIN_DUAL_EDGE_3D)
         return cvm__mesh3_quality(out, m, which);
+    if ((int)which >= (int)CVM_MEASURE_DUAL3_MERGED_PCT &&
+        (int)which <= (int)CVM_MEASURE_DUAL3_MERGE_DISSOLVED)
+        return cvm__mesh3_merge_measure(out, m, which);
     if (cvm__mesh3_gen3_report(out, m, (int)which) == CVM_OK)
         return CVM_OK;
     if (which == CVM_MEASURE_VANISHED_VERTICES) {

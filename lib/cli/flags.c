@@ -29,6 +29,8 @@ static const cli_option_flag k_flags[] = {
      "--optimise: no boundary vertex moves (by default those inside an axis-aligned planar facet slide in it)"},
     {"--opt-margin", "F", CVM_OPT_DUAL3_MARGIN, 0, M3,
      "--optimise: wanted depth of the power vertex inside each face, x mean edge (default 0.03)"},
+    {"--merge-tol", "F", CVM_OPT_DUAL3_MERGE_TOL, 0, M3,
+     "--quality: merge tetrahedra whose dual edge is below F x 0.38 x the mean edge (default 0.1; 0: none)"},
     {"--uniform", NULL, CVM_OPT_GEN3_SIZE_FROM_SURFACE, 0, M3,
      "uniform size H everywhere instead of following the surface's triangles"},
     {"--remesh-planar", NULL, CVM_OPT_GEN3_SURFACE, 1, M3,
