@@ -855,6 +855,17 @@ typedef enum cvm_option {
      *  the dual (cvm_mesh_write_dual()) ignore it. @since 0.2 (value 3 and the
      *  default 3: since 0.2 as well; before, the default was 0) */
     CVM_OPT_VTU_ENCODING = 604,
+    /** 1: the .vtu of a 3D mesh (cvm_mesh_write()) holds each kept merged dual cell
+     *  (cvm_mesh_copy_dual3_merge_groups(), CVM_OPT_DUAL3_MERGE_TOL) as one
+     *  VTK_POLYHEDRON (42) cell, its faces the group's boundary triangles oriented
+     *  outwards, and every other tetrahedron as a VTK_POLYHEDRON of its 4 faces (a
+     *  file of polyhedra only, which meshio reads too: "faces" / "faceoffsets"
+     *  arrays), in the order of each cell's smallest tetrahedron; cell data
+     *  "tetrahedron" (that index) and "attribute" (its region, when there are
+     *  regions). ASCII. 0 (default): one VTK_TETRA per tetrahedron. Other formats
+     *  and 2D meshes ignore it; cvm_mesh_read() does not read such a file back.
+     *  Integer, bounds [0, 1]. @since 0.2 */
+    CVM_OPT_VTU_MERGED_CELLS = 605,
 
     /* ---- 700-799: reserved for the 3D kernel ---- */
     /** 3D mesh generation (cvm_mesh_generate3()), 740-749. Boundary grading g: the size

@@ -98,6 +98,8 @@ cvm_status cvm__mesh3_write_to_set(cvm_mesh *m, const char *path, cvm__write_set
     mo.face = g->face;
     mo.fmark = g->fmark;
     mo.nface = g->nface;
+    if (cvm__opt(m, CVM_OPT_VTU_MERGED_CELLS) != 0 && cvm__format_of(path) == CVM__FMT_VTU)
+        return cvm__mesh3_write_merged_to_set(m, path, ws, &mo);
     return cvm__write_file3_to_set(ws, path, &mo);
 }
 

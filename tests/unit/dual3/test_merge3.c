@@ -8,10 +8,12 @@
  * and convexity check). Also: tol 0, bad tolerances, statuses, determinism, OOM.
  */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "dual3/dual3_tests.h"
+#include "io/io_tests.h"
 #include "support/oom_sweep.h"
 
 typedef long double ld;
@@ -452,12 +454,72 @@ START_TEST(statuses_options_and_determinism)
 }
 END_TEST
 
+START_TEST(vtu_with_merged_cells)
+{
+    cvm_mesh *m = lattice(4, 0, 0);
+    char *dir = iotest_tmpdir(), out[600], *text;
+    size_t nt;
+    ck_assert_int_eq(cvm_mesh_count(&nt, m, CVM_ENT_TETRAHEDRON), CVM_OK);
+    snprintf(out, sizeof out, "%s/merged.vtu", dir);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_VTU_MERGED_CELLS, 1), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_write(m, out), CVM_OK);
+    text = iotest_slurp(out, NULL);
+    ck_assert_ptr_nonnull(text);
+    /* the 27 cubes, each one polyhedron of 12 outer triangles (2 per square side) */
+    ck_assert_ptr_nonnull(strstr(text, "NumberOfCells=\"27\""));
+    ck_assert_ptr_nonnull(strstr(text, "Name=\"faceoffsets\""));
+    {
+        const char *q = strstr(text, "Name=\"faces\"");
+        int c, k;
+        ck_assert_ptr_nonnull(q);
+        q = strchr(q, '>') + 1;
+        for (c = 0; c < 27; c++) {
+            char *end;
+            long nf = strtol(q, &end, 10);
+            ck_assert_int_eq(nf, 12);
+            q = end;
+            for (k = 0; k < 4 * 12; k++) {
+                long x = strtol(q, &end, 10);
+                ck_assert_ptr_ne(end, q);
+                if (k % 4 == 0)
+                    ck_assert_int_eq(x, 3);
+                q = end;
+            }
+        }
+    }
+    free(text);
+    /* tol 0: every tetrahedron a polyhedron of its own 4 faces */
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_DUAL3_MERGE_TOL, 0), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_write(m, out), CVM_OK);
+    text = iotest_slurp(out, NULL);
+    ck_assert_ptr_nonnull(text);
+    {
+        char want[64];
+        snprintf(want, sizeof want, "NumberOfCells=\"%lu\"", (unsigned long)nt);
+        ck_assert_ptr_nonnull(strstr(text, want));
+    }
+    free(text);
+    /* the option off: tetrahedra as before */
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_VTU_MERGED_CELLS, 0), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_write(m, out), CVM_OK);
+    text = iotest_slurp(out, NULL);
+    ck_assert_ptr_nonnull(text);
+    ck_assert_ptr_null(strstr(text, "faceoffsets"));
+    free(text);
+    remove(out);
+    iotest_rmdir(dir);
+    free(dir);
+    cvm_mesh_free(m);
+}
+END_TEST
+
 static void oom_setup(cvm_mesh *m, void *arg)
 {
     size_t np;
     double *p = lattice_points(3, 0, 0, &np);
     (void)arg;
     ck_assert_int_eq(cvm_mesh_set_points(m, p, np, 3), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_VTU_MERGED_CELLS, 1), CVM_OK);
     free(p);
 }
 
@@ -467,7 +529,6 @@ static cvm_status oom_run(cvm_mesh *m, void *arg)
     size_t nt;
     double v;
     cvm_status s;
-    (void)arg;
     if ((s = cvm_mesh_triangulate(m)))
         return s;
     if ((s = cvm_mesh_get_measure(&v, m, CVM_MEASURE_DUAL3_NONCOMPLIANT_PCT)))
@@ -482,12 +543,19 @@ static cvm_status oom_run(cvm_mesh *m, void *arg)
     s = cvm_mesh_copy_dual3_merge_groups(g, nt, m);
     if (s == CVM_E_NOMEM)
         ck_assert_int_eq(g[0], -7); /* nothing written */
-    return s;
+    if (s)
+        return s;
+    return cvm_mesh_write(m, (const char *)arg); /* the merged cells of a .vtu */
 }
 
 START_TEST(oom_at_every_allocation)
 {
-    cvmtest_oom_sweep(oom_setup, oom_run, NULL, NULL);
+    char *dir = iotest_tmpdir(), out[600];
+    snprintf(out, sizeof out, "%s/oom.vtu", dir);
+    cvmtest_oom_sweep(oom_setup, oom_run, NULL, out);
+    remove(out);
+    iotest_rmdir(dir);
+    free(dir);
 }
 END_TEST
 
@@ -499,6 +567,7 @@ TCase *dual3_merge_tcase(void)
     tcase_add_test(tc, bcc_lattice_merges_nothing);
     tcase_add_test(tc, perturbed_lattice_dissolves_concave_cubes);
     tcase_add_test(tc, statuses_options_and_determinism);
+    tcase_add_test(tc, vtu_with_merged_cells);
     tcase_add_test(tc, oom_at_every_allocation);
     return tc;
 }
