@@ -47,7 +47,7 @@ static cvm_status mesh3_merge_run(cvm__ctx *ctx, const cvm_mesh *m, int32_t *gro
     return s;
 }
 
-static double pct(size_t a, size_t b)
+static double m3m_pct(size_t a, size_t b)
 {
     return b ? 100.0 * (double)a / (double)b : 0;
 }
@@ -62,9 +62,9 @@ cvm_status cvm__mesh3_merge_measure(double *out, cvm_mesh *m, cvm_measure which)
     if ((s = mesh3_merge_run(&m->ctx, m, NULL, &r)))
         return s;
     switch (which) {
-    case CVM_MEASURE_DUAL3_MERGED_PCT: *out = pct(r.nmerged, r.ntet); break;
-    case CVM_MEASURE_DUAL3_NONCOMPLIANT_PCT: *out = pct(r.nnc, r.ntet); break;
-    case CVM_MEASURE_DUAL3_NONCOMPLIANT_BOUNDARY_PCT: *out = pct(r.nbnc, r.nbnd); break;
+    case CVM_MEASURE_DUAL3_MERGED_PCT: *out = m3m_pct(r.nmerged, r.ntet); break;
+    case CVM_MEASURE_DUAL3_NONCOMPLIANT_PCT: *out = m3m_pct(r.nnc, r.ntet); break;
+    case CVM_MEASURE_DUAL3_NONCOMPLIANT_BOUNDARY_PCT: *out = m3m_pct(r.nbnc, r.nbnd); break;
     default: *out = (double)r.ndissolved; break;
     }
     return CVM_OK;

@@ -15,7 +15,7 @@
  * relative to the lattice's mean edge, the ideal the tolerance is taken of. */
 #define D3_MERGE_IDEAL 0.38
 
-static int cmp_u64(const void *pa, const void *pb)
+static int d3m_cmp_u64(const void *pa, const void *pb)
 {
     uint64_t a = *(const uint64_t *)pa, b = *(const uint64_t *)pb;
     return (a > b) - (a < b);
@@ -34,7 +34,7 @@ static void d3m_sizes(const cvm__d3_mesh *M, uint64_t *keys, double *lv, double 
             uint64_t b = (uint32_t)M->tet[4 * t + (size_t)eb[k]];
             keys[n++] = a < b ? a << 32 | b : b << 32 | a;
         }
-    qsort(keys, n, sizeof *keys, cmp_u64);
+    qsort(keys, n, sizeof *keys, d3m_cmp_u64);
     memset(lv, 0, M->nv * sizeof *lv);
     memset(cnt, 0, M->nv * sizeof *cnt);
     for (i = 0; i < n; i++) {
@@ -96,7 +96,7 @@ static int32_t d3m_find(int32_t *g, int32_t x)
     return x;
 }
 
-static int sgn(double x)
+static int d3m_sgn(double x)
 {
     return (x > 0) - (x < 0);
 }
@@ -136,12 +136,12 @@ static int d3m_group_ok(const cvm__d3_mesh *M, const int32_t *group, const doubl
             for (j = 0; j < 4; j++)
                 if (j != f)
                     a[m++] = M->xyz + 3 * (size_t)M->tet[4 * t + (size_t)j];
-            in = sgn(cvm__orient3d(a[0], a[1], a[2], M->xyz + 3 * (size_t)M->tet[4 * t + (size_t)f]));
+            in = d3m_sgn(cvm__orient3d(a[0], a[1], a[2], M->xyz + 3 * (size_t)M->tet[4 * t + (size_t)f]));
             /* star: the dual vertex on the inner side or on the plane */
-            if (sgn(cvm__orient3d(a[0], a[1], a[2], c)) == -in)
+            if (d3m_sgn(cvm__orient3d(a[0], a[1], a[2], c)) == -in)
                 return 0;
             for (k = 0; k < nvq; k++)
-                if (sgn(cvm__orient3d(a[0], a[1], a[2], M->xyz + 3 * (size_t)gvert[k])) == -in)
+                if (d3m_sgn(cvm__orient3d(a[0], a[1], a[2], M->xyz + 3 * (size_t)gvert[k])) == -in)
                     return 0;
         }
     }

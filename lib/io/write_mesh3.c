@@ -13,7 +13,7 @@
 
 #include "io_internal.h"
 
-static void put_longs(cvm__writer *w, const int64_t *a, size_t n)
+static void m3w_put_longs(cvm__writer *w, const int64_t *a, size_t n)
 {
     size_t i;
     for (i = 0; i < n; i++) {
@@ -36,7 +36,7 @@ static void vtu_cells(cvm__writer *w, const cvm__mesh3_out *mo)
     }
     cvm__writer_puts(w, "        </DataArray>\n"
                         "        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n");
-    put_longs(w, c->conn_off + 1, c->ncell);
+    m3w_put_longs(w, c->conn_off + 1, c->ncell);
     cvm__writer_puts(w, "        </DataArray>\n"
                         "        <DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n");
     for (i = 0; i < c->ncell; i++) {
@@ -45,7 +45,7 @@ static void vtu_cells(cvm__writer *w, const cvm__mesh3_out *mo)
     }
     cvm__writer_puts(w, "        </DataArray>\n"
                         "        <DataArray type=\"Int64\" Name=\"faces\" format=\"ascii\">\n");
-    put_longs(w, c->faces, (size_t)c->face_off[c->ncell]);
+    m3w_put_longs(w, c->faces, (size_t)c->face_off[c->ncell]);
     cvm__writer_puts(w, "        </DataArray>\n"
                         "        <DataArray type=\"Int64\" Name=\"faceoffsets\" format=\"ascii\">\n");
     for (i = 0; i < c->ncell; i++) {
