@@ -30,7 +30,7 @@ static const cli_option_flag k_flags[] = {
     {"--opt-margin", "F", CVM_OPT_DUAL3_MARGIN, 0, M3,
      "--optimise: wanted depth of the power vertex inside each face, x mean edge (default 0.03)"},
     {"--merge-tol", "F", CVM_OPT_DUAL3_MERGE_TOL, 0, M3 | TET,
-     "--quality: merge tetrahedra whose dual edge is below F x 0.38 x the mean edge (default 0.1; 0: none)"},
+     "merged dual cells (mesh3 --quality, --merged-cells): tetrahedra whose dual edge is below F x 0.38 x the mean edge (0: none)"},
     {"--merged-cells", NULL, CVM_OPT_VTU_MERGED_CELLS, 1, M3 | TET,
      ".vtu output: each merged dual cell (--merge-tol) as one VTK_POLYHEDRON instead of its tetrahedra"},
     {"--uniform", NULL, CVM_OPT_GEN3_SIZE_FROM_SURFACE, 0, M3,
