@@ -855,6 +855,17 @@ typedef enum cvm_option {
      *  the dual (cvm_mesh_write_dual()) ignore it. @since 0.2 (value 3 and the
      *  default 3: since 0.2 as well; before, the default was 0) */
     CVM_OPT_VTU_ENCODING = 604,
+    /** 1: the .vtu of a 3D mesh (cvm_mesh_write()) holds each kept merged dual cell
+     *  (cvm_mesh_copy_dual3_merge_groups(), CVM_OPT_DUAL3_MERGE_TOL) as one
+     *  VTK_POLYHEDRON (42) cell, its faces the group's boundary triangles oriented
+     *  outwards, and every other tetrahedron as a VTK_POLYHEDRON of its 4 faces (a
+     *  file of polyhedra only, which meshio reads too: "faces" / "faceoffsets"
+     *  arrays), in the order of each cell's smallest tetrahedron; cell data
+     *  "tetrahedron" (that index) and "attribute" (its region, when there are
+     *  regions). ASCII. 0 (default): one VTK_TETRA per tetrahedron. Other formats
+     *  and 2D meshes ignore it; cvm_mesh_read() does not read such a file back.
+     *  Integer, bounds [0, 1]. @since 0.2 */
+    CVM_OPT_VTU_MERGED_CELLS = 605,
 
     /* ---- 700-799: reserved for the 3D kernel ---- */
     /** 3D mesh generation (cvm_mesh_generate3()), 740-749. Boundary grading g: the size
@@ -897,6 +908,16 @@ typedef enum cvm_option {
      *  corners and vertices of curved or oblique surfaces never move. Integer, bounds
      *  [0, 1]. @since 0.2 */
     CVM_OPT_DUAL3_SLIDE_BOUNDARY = 754,
+    /** Merge tolerance of the 3D dual (cvm_mesh_copy_dual3_merge_groups(), measures
+     *  725-728), a fraction of the local ideal dual edge l_V = 0.38 x l; default 0.1,
+     *  bounds [0, 1]; 0 merges nothing. l at a face is the mean of the local sizes of
+     *  its 3 corners, each the mean length of the vertex's edges (taken from the mesh,
+     *  so merge decisions can be recomputed from the mesh alone). Two tetrahedra of one
+     *  region sharing a face that is not constrained (not on the boundary, not an
+     *  internal facet of the surface) belong to the same merged cell when their power
+     *  vertices coincide (exact power test) or are closer than tol x l_V. Read by the
+     *  measures and copies only; the mesh never changes. @since 0.2 */
+    CVM_OPT_DUAL3_MERGE_TOL = 755,
     /* ---- quad-dominant meshing (800-899): read by cvm_mesh_quadmesh() ---- */
     /** Exponent p of the Lp-CVT energy, even integer, default 6, bounds [2, 12]. p = 2 is
      *  the classic CVT (hexagonal cells); larger p pulls the cells towards squares of unit
@@ -2637,6 +2658,42 @@ CVM_API cvm_status cvm_mesh_copy_dual3_edge_lengths(cvm_index *faces, size_t fac
                                                     double *lengths, size_t lengths_len,
                                                     const cvm_mesh *m);
 
+/**
+ * Merged 3D dual cells: copy, per tetrahedron in CVM_ENT_TETRAHEDRON order,
+ * the index (in that order) of the smallest tetrahedron of its kept merged
+ * group; a tetrahedron that is not merged gets its own index.
+ * The rule (CVM_OPT_DUAL3_MERGE_TOL): a face shared by two tetrahedra is
+ * mergeable when it is not constrained (boundary or internal facet), both
+ * tetrahedra have the same region attribute, and their power vertices
+ * coincide (exact power test) or lie closer than tol x 0.38 x l (l the mean
+ * over the face's corners of the mean length of each corner's edges, each
+ * edge once). Groups are the connected sets of tetrahedra joined across
+ * mergeable faces. A group of 2 or more is kept only when it is one convex
+ * polyhedron star-shaped about its dual vertex: for each of its boundary
+ * faces, every vertex of the group and the group's dual vertex (the power
+ * vertex of its smallest tetrahedron, in doubles) lie on the inner side or on
+ * the face's plane (exact orient3d of those doubles: non-strict), and no
+ * constrained face lies between two of its tetrahedra. Other groups are
+ * dissolved: their tetrahedra are not merged (CVM_MEASURE_DUAL3_MERGE_DISSOLVED
+ * counts them). A kept group is one polyhedral dual cell: its power vertices
+ * are treated as one. A tetrahedron whose power vertex lies outside it (exact,
+ * as CVM_MEASURE_CIRCUMCENTRE_OUTSIDE_PCT) counts as compliant when it lies
+ * outside only beyond faces that are mergeable within a kept group
+ * (CVM_MEASURE_DUAL3_NONCOMPLIANT_PCT).
+ * @param dst_len  capacity in entries; must be >= the tetrahedron count.
+ * Determinism: depends only on the mesh, its weights, its region attributes and
+ * CVM_OPT_DUAL3_MERGE_TOL. Cost: O(tetrahedra log tetrahedra), plus for each
+ * group its boundary faces x its vertices.
+ * Thread-safety: as the other 3D dual copies (a const handle).
+ * @return CVM_OK, CVM_E_NULL_ARG (m NULL, or dst NULL with tetrahedra),
+ *         CVM_E_UNSUPPORTED (a 2D mesh, as the other 3D dual calls),
+ *         CVM_E_STATE (nothing triangulated),
+ *         CVM_E_BUFFER_TOO_SMALL (nothing written), CVM_E_NOMEM (nothing written)
+ * @since 0.2
+ */
+CVM_API cvm_status cvm_mesh_copy_dual3_merge_groups(cvm_index *dst, size_t dst_len,
+                                                    const cvm_mesh *m);
+
 /* ------------------------------------------------------------------------ */
 /* Several output files as one                                               */
 /* ------------------------------------------------------------------------ */
@@ -3156,6 +3213,17 @@ typedef enum cvm_measure {
                                              largest) */
     CVM_MEASURE_MIN_DUAL_EDGE_3D = 724, /**< smallest dual edge length over interior faces
                                              (length units; 0 without any) */
+    /* Merged 3D dual cells (CVM_OPT_DUAL3_MERGE_TOL, cvm_mesh_copy_dual3_merge_groups()): */
+    CVM_MEASURE_DUAL3_MERGED_PCT = 725, /**< % of tetrahedra in a kept merged group of 2 or
+                                             more */
+    CVM_MEASURE_DUAL3_NONCOMPLIANT_PCT = 726, /**< % of tetrahedra whose power vertex lies
+                                             outside (exact, as CIRCUMCENTRE_OUTSIDE_PCT) and
+                                             not only beyond faces mergeable within a kept
+                                             group (0 without tetrahedra) */
+    CVM_MEASURE_DUAL3_NONCOMPLIANT_BOUNDARY_PCT = 727, /**< the same % over the tetrahedra
+                                             with a face on the boundary (0 without any) */
+    CVM_MEASURE_DUAL3_MERGE_DISSOLVED = 728, /**< merged groups of 2 or more dissolved
+                                             because they failed the convexity or star check */
     /* 740-769: the report of the last cvm_mesh_generate3() (0 before any) */
     CVM_MEASURE_GEN3_MATCHED_PAIRS = 740,   /**< pairs of surface triangles matched */
     CVM_MEASURE_GEN3_UNMATCHED_FACES = 741, /**< surface triangles left unmatched */

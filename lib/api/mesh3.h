@@ -28,6 +28,13 @@ cvm_status cvm__mesh3_write_to_set(cvm_mesh *m, const char *path, cvm__write_set
 cvm_status cvm__mesh3_measure(double *out, cvm_mesh *m, cvm_measure which);
 /* Measures 720-724 and the 3D histograms (mesh3_quality.c). */
 cvm_status cvm__mesh3_quality(double *out, cvm_mesh *m, cvm_measure which);
+/* Measures 725-728, merged dual cells (mesh3_merge.c). */
+cvm_status cvm__mesh3_merge_measure(double *out, cvm_mesh *m, cvm_measure which);
+/* Write mo (the handle's mesh) to path with the merged cells of
+ * CVM_OPT_VTU_MERGED_CELLS: as cvm__write_file3_to_set(), message set. */
+struct cvm__mesh3_out;
+cvm_status cvm__mesh3_write_merged_to_set(cvm_mesh *m, const char *path, cvm__write_set *ws,
+                                          struct cvm__mesh3_out *mo);
 cvm_status cvm__mesh3_histogram(double *dst, size_t dst_len, cvm_mesh *m, cvm_histogram which);
 /* Const readers: statuses only, no message. */
 cvm_status cvm__mesh3_count(size_t *out, const cvm_mesh *m, cvm_entity kind);

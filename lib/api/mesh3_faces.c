@@ -1,4 +1,5 @@
-/* mesh3_faces.c - face adjacency of a tetrahedron list, by sorting the faces' corner triples. */
+/* mesh3_faces.c - face adjacency of a tetrahedron list, by sorting the faces' corner triples;
+ * the constrained faces of a 3D handle's mesh. */
 #include <stdlib.h>
 #include <string.h>
 
@@ -113,5 +114,36 @@ cvm_status cvm__mesh3_adjacency(cvm__ctx *ctx, const int32_t *tet, size_t ntet, 
     }
     cvm__free(ctx, keys);
     *nbr_out = nbr;
+    return CVM_OK;
+}
+
+cvm_status cvm__mesh3_constrained_faces(cvm__ctx *ctx, const cvm__mesh3 *g, const int32_t *nbr,
+                                        uint8_t **out)
+{
+    uint8_t *cf = cvm__calloc(ctx, 4 * g->ntet + 1, 1);
+    cvm__face_key *keys = NULL;
+    size_t i;
+    cvm_status s;
+    if (!cf)
+        return cvm__nomem(ctx);
+    for (i = 0; i < 4 * g->ntet; i++)
+        cf[i] = nbr[i] < 0;
+    if (g->nface) {
+        if ((s = cvm__mesh3_face_index(ctx, g->tet, g->ntet, &keys))) {
+            cvm__free(ctx, cf);
+            return s;
+        }
+        for (i = 0; i < g->nface; i++) {
+            const int32_t *f = g->face + 3 * i;
+            int32_t slot = cvm__mesh3_find_face(keys, 4 * g->ntet, f[0], f[1], f[2]);
+            if (slot < 0)
+                continue;
+            cf[slot] = 1;
+            if (nbr[slot] >= 0)
+                cf[nbr[slot]] = 1;
+        }
+        cvm__free(ctx, keys);
+    }
+    *out = cf;
     return CVM_OK;
 }

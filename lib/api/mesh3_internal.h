@@ -48,6 +48,11 @@ int32_t cvm__mesh3_find_face(const cvm__face_key *index, size_t n, int32_t a, in
 /* The corners of face f of tet t, oriented outwards (seen from outside
  * counter-clockwise): for f = 0..3. */
 void cvm__mesh3_face_corners(const int32_t *t, int f, int32_t out[3]);
+/* cf[4 t + f] = 1 for the faces with no neighbour (nbr, from cvm__mesh3_adjacency) and
+ * the faces in g->face (the surface and its internal facets), else 0 (mesh3_faces.c).
+ * CVM_OK or CVM_E_NOMEM (message set). */
+cvm_status cvm__mesh3_constrained_faces(cvm__ctx *ctx, const cvm__mesh3 *g, const int32_t *nbr,
+                                        uint8_t **out);
 /* Without hole or region points in g->in: remove the tetrahedra on the side the input
  * triangles tri (3*nt input point ids, as oriented in the input) face, and every tetrahedron
  * reached from them without crossing a triangle, then the vertices left unused (mesh3_shells.c).

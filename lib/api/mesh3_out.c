@@ -98,6 +98,8 @@ cvm_status cvm__mesh3_write_to_set(cvm_mesh *m, const char *path, cvm__write_set
     mo.face = g->face;
     mo.fmark = g->fmark;
     mo.nface = g->nface;
+    if (cvm__opt(m, CVM_OPT_VTU_MERGED_CELLS) != 0 && cvm__format_of(path) == CVM__FMT_VTU)
+        return cvm__mesh3_write_merged_to_set(m, path, ws, &mo);
     return cvm__write_file3_to_set(ws, path, &mo);
 }
 
@@ -205,6 +207,9 @@ cvm_status cvm__mesh3_measure(double *out, cvm_mesh *m, cvm_measure which)
     if ((int)which >= (int)CVM_MEASURE_MIN_DUAL_EDGE_RATIO_3D &&
         (int)which <= (int)CVM_MEASURE_MIN_DUAL_EDGE_3D)
         return cvm__mesh3_quality(out, m, which);
+    if ((int)which >= (int)CVM_MEASURE_DUAL3_MERGED_PCT &&
+        (int)which <= (int)CVM_MEASURE_DUAL3_MERGE_DISSOLVED)
+        return cvm__mesh3_merge_measure(out, m, which);
     if (cvm__mesh3_gen3_report(out, m, (int)which) == CVM_OK)
         return CVM_OK;
     if (which == CVM_MEASURE_VANISHED_VERTICES) {

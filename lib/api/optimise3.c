@@ -8,38 +8,6 @@
 #include "api/mesh3_internal.h"
 #include "dual3/dual3.h"
 
-/* cface[4 t + f] = 1 for the faces with no neighbour and the faces in g->face. */
-static cvm_status constrained_faces(cvm__ctx *ctx, const cvm__mesh3 *g, const int32_t *nbr,
-                                    uint8_t **out)
-{
-    uint8_t *cf = cvm__calloc(ctx, 4 * g->ntet + 1, 1);
-    cvm__face_key *keys = NULL;
-    size_t i;
-    cvm_status s;
-    if (!cf)
-        return cvm__nomem(ctx);
-    for (i = 0; i < 4 * g->ntet; i++)
-        cf[i] = nbr[i] < 0;
-    if (g->nface) {
-        if ((s = cvm__mesh3_face_index(ctx, g->tet, g->ntet, &keys))) {
-            cvm__free(ctx, cf);
-            return s;
-        }
-        for (i = 0; i < g->nface; i++) {
-            const int32_t *f = g->face + 3 * i;
-            int32_t slot = cvm__mesh3_find_face(keys, 4 * g->ntet, f[0], f[1], f[2]);
-            if (slot < 0)
-                continue;
-            cf[slot] = 1;
-            if (nbr[slot] >= 0)
-                cf[nbr[slot]] = 1;
-        }
-        cvm__free(ctx, keys);
-    }
-    *out = cf;
-    return CVM_OK;
-}
-
 cvm_status cvm_mesh_optimise_dual3(cvm_mesh *m)
 {
     cvm__mesh3 *g;
@@ -72,7 +40,7 @@ cvm_status cvm_mesh_optimise_dual3(cvm_mesh *m)
     cvm__run_begin(&m->ctx, cvm__opt(m, CVM_OPT_TIME_LIMIT_S));
     if ((s = cvm__mesh3_adjacency(&m->ctx, g->tet, g->ntet, &nbr)))
         return s;
-    if ((s = constrained_faces(&m->ctx, g, nbr, &cf))) {
+    if ((s = cvm__mesh3_constrained_faces(&m->ctx, g, nbr, &cf))) {
         cvm__free(&m->ctx, nbr);
         return s;
     }

@@ -44,7 +44,9 @@ void cli_mesh3_help(FILE *f)
             "--optimise then moves vertices and sets power weights (cvm_mesh_optimise_dual3():\n"
             "connectivity kept; boundary vertices stay, but those inside an axis-aligned planar\n"
             "facet slide in it) so that more tetrahedra contain their power vertex; --time-limit S\n"
-            "bounds it; --dual writes the weighted power cells.\n"
+            "bounds it; --dual writes the weighted power cells. --quality also reports the\n"
+            "tetrahedra merged into polyhedral dual cells (--merge-tol F, see\n"
+            "cvm_mesh_copy_dual3_merge_groups()) and those non-compliant after merging.\n"
             "Not yet implemented: --freespace octree|refine, --layers above 1.\n"
             "\n"
             "Outputs and reports (--timings: read, generate, optimise, write, quality):\n");
@@ -168,6 +170,10 @@ static void report(FILE *f, cvm_mesh *m)
         {CVM_MEASURE_MAX_EDGE, 0, "max edge", "%.6g"},
         {CVM_MEASURE_CIRCUMCENTRE_OUTSIDE_PCT, 0, "circumcentre outside", "%.3f %%"},
         {CVM_MEASURE_CIRCUMCENTRE_OUTSIDE_BOUNDARY_PCT, 0, "  at the boundary", "%.3f %%"},
+        {CVM_MEASURE_DUAL3_MERGED_PCT, 0, "merged (--merge-tol)", "%.3f %%"},
+        {CVM_MEASURE_DUAL3_NONCOMPLIANT_PCT, 0, "non-compliant after merging", "%.3f %%"},
+        {CVM_MEASURE_DUAL3_NONCOMPLIANT_BOUNDARY_PCT, 0, "  at the boundary", "%.3f %%"},
+        {CVM_MEASURE_DUAL3_MERGE_DISSOLVED, 0, "merge groups dissolved", "%.0f"},
         {CVM_MEASURE_MIN_DUAL_EDGE_RATIO_3D, 0, "min dual edge / face edge", "%.4g"},
         {CVM_MEASURE_RECOVERY_STEINER, 0, "recovery steiner points", "%.0f"},
     };

@@ -81,4 +81,37 @@ cvm_status cvm__d3_optimise(cvm__ctx *ctx, cvm__d3_mesh *M, const cvm__d3_params
 /* 1 when the power vertex of tetrahedron t of M lies strictly outside it (exact). */
 int cvm__d3_outside(const cvm__d3_mesh *M, size_t t);
 
+/* ---- merged cells (d3_merge.c) ----
+ * Face f of tetrahedron t is mergeable when it is shared with a tetrahedron u
+ * (M->nbr), is not constrained (M->cface), t and u have the same region (when
+ * region is not NULL), tol > 0, and either their power vertices coincide
+ * (the exact power test of u's far corner against t ties) or the distance of
+ * their power vertices (plain doubles) is < tol x 0.38 x l, l the mean over the
+ * face's 3 corners of the mean length of the corner's edges (each edge once):
+ * only the mesh decides, so any tool can recompute the groups. Groups: the
+ * connected components over mergeable faces (union-find; the root is the
+ * group's smallest tetrahedron). A group of >= 2 is kept when, for each of its
+ * boundary faces (a face of a member whose other side is no member), every
+ * vertex of the group lies on the face's inner side or on its plane, and so
+ * does the group's dual vertex, the power vertex of its root (plain doubles,
+ * then the exact orient3d of that point: non-strict); and no constrained face
+ * lies between two members. A group that fails is dissolved: its tetrahedra
+ * are unmerged (group[t] = t). A tetrahedron is compliant when its power vertex
+ * lies inside it or on its boundary (exact, as CVM_MEASURE_CIRCUMCENTRE_OUTSIDE_PCT)
+ * or lies outside only beyond faces that are mergeable within a kept group. */
+typedef struct cvm__d3_merge_report {
+    size_t ntet, nbnd;   /* tetrahedra; those with a face without neighbour */
+    size_t ngroups;      /* kept groups of >= 2 tetrahedra */
+    size_t nmerged;      /* tetrahedra in those groups */
+    size_t ndissolved;   /* groups of >= 2 that failed the check */
+    size_t nout, nbout;  /* power vertex strictly outside (exact); among the boundary ones */
+    size_t nnc, nbnc;    /* non-compliant; among the boundary ones */
+} cvm__d3_merge_report;
+
+/* group: ntet entries, the root of each tetrahedron's kept group (t itself when
+ * unmerged). M->w may be NULL (all weights 0). region: ntet or NULL.
+ * @return CVM_OK or CVM_E_NOMEM (message set; group unset). */
+cvm_status cvm__d3_merge(cvm__ctx *ctx, const cvm__d3_mesh *M, const double *region, double tol,
+                         int32_t *group, cvm__d3_merge_report *r);
+
 #endif

@@ -288,6 +288,19 @@ cvm_status cvm__write_file(cvm__ctx *ctx, const char *path, const cvm__mesh_out 
 cvm_status cvm__write_file_to_set(cvm__write_set *ws, const char *path, const cvm__mesh_out *mo);
 
 /* ---- output: a tetrahedral mesh, arrays borrowed ---- */
+/* Cells written to a .vtu instead of the tetrahedra (merged dual cells): cell c
+ * is a VTK_TETRA (10, no faces) or a VTK_POLYHEDRON (42). */
+typedef struct cvm__mesh3_cells {
+    size_t ncell;
+    const int32_t *tet;      /* ncell: the smallest tetrahedron of each cell */
+    const uint8_t *type;     /* ncell: 10 or 42 */
+    const int32_t *conn;     /* the cell's points: conn[conn_off[c] .. conn_off[c+1]-1] */
+    const int64_t *conn_off; /* ncell + 1 */
+    const int64_t *faces;    /* VTK face stream of the polyhedra: nfaces, then per face 3, ids */
+    const int64_t *face_off; /* ncell + 1: cell c's stream is faces[face_off[c] .. face_off[c+1]-1]
+                                (empty for a tetrahedron) */
+} cvm__mesh3_cells;
+
 typedef struct cvm__mesh3_out {
     const double *xyz;    /* 3*nv */
     size_t nv;
@@ -297,6 +310,7 @@ typedef struct cvm__mesh3_out {
     const int32_t *face;  /* 3*nface boundary triangles */
     const int32_t *fmark; /* nface or NULL: their markers */
     size_t nface;
+    const cvm__mesh3_cells *cells; /* NULL, or the cells a .vtu holds instead of the tetrahedra */
 } cvm__mesh3_out;
 
 /* Write a tetrahedral mesh to path as its extension names (.vtu, .msh,

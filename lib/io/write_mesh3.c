@@ -1,6 +1,7 @@
 /*
  * write_mesh3.c - writes a tetrahedral mesh: VTK XML UnstructuredGrid (.vtu,
- * VTK_TETRA cells, cell data "attribute" with regions), Gmsh MSH 4.1 (.msh:
+ * VTK_TETRA cells, cell data "attribute" with regions; or merged cells as
+ * VTK_POLYHEDRON), Gmsh MSH 4.1 (.msh:
  * tetrahedra, type 4, in one volume per regional attribute; boundary
  * triangles, type 2, on one surface per face marker, physical group m
  * "marker_m" when m > 0), and TetGen's .node/.ele/.face (0-based). All ASCII,
@@ -12,6 +13,64 @@
 
 #include "io_internal.h"
 
+static void m3w_put_longs(cvm__writer *w, const int64_t *a, size_t n)
+{
+    size_t i;
+    for (i = 0; i < n; i++) {
+        cvm__writer_long(w, (long long)a[i]);
+        cvm__writer_putc(w, (i + 1) % 12 == 0 || i + 1 == n ? '\n' : ' ');
+    }
+}
+
+/* The <Cells> and <CellData> of merged cells: VTK's polyhedron layout, with
+ * "faceoffsets" -1 for the tetrahedra; cell data "tetrahedron" (the cell's
+ * smallest tetrahedron) and "attribute" (its region). */
+static void vtu_cells(cvm__writer *w, const cvm__mesh3_out *mo)
+{
+    const cvm__mesh3_cells *c = mo->cells;
+    size_t i;
+    cvm__writer_puts(w, "        <DataArray type=\"Int32\" Name=\"connectivity\" format=\"ascii\">\n");
+    for (i = 0; i < (size_t)c->conn_off[c->ncell]; i++) {
+        cvm__writer_long(w, c->conn[i]);
+        cvm__writer_putc(w, (i + 1) % 12 == 0 || i + 1 == (size_t)c->conn_off[c->ncell] ? '\n' : ' ');
+    }
+    cvm__writer_puts(w, "        </DataArray>\n"
+                        "        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n");
+    m3w_put_longs(w, c->conn_off + 1, c->ncell);
+    cvm__writer_puts(w, "        </DataArray>\n"
+                        "        <DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n");
+    for (i = 0; i < c->ncell; i++) {
+        cvm__writer_ulong(w, c->type[i]);
+        cvm__writer_putc(w, (i + 1) % 12 == 0 || i + 1 == c->ncell ? '\n' : ' ');
+    }
+    cvm__writer_puts(w, "        </DataArray>\n"
+                        "        <DataArray type=\"Int64\" Name=\"faces\" format=\"ascii\">\n");
+    m3w_put_longs(w, c->faces, (size_t)c->face_off[c->ncell]);
+    cvm__writer_puts(w, "        </DataArray>\n"
+                        "        <DataArray type=\"Int64\" Name=\"faceoffsets\" format=\"ascii\">\n");
+    for (i = 0; i < c->ncell; i++) {
+        cvm__writer_long(w, c->type[i] == 42 ? (long long)c->face_off[i + 1] : -1);
+        cvm__writer_putc(w, (i + 1) % 12 == 0 || i + 1 == c->ncell ? '\n' : ' ');
+    }
+    cvm__writer_puts(w, "        </DataArray>\n      </Cells>\n"
+                        "      <CellData Scalars=\"tetrahedron\">\n"
+                        "        <DataArray type=\"Int32\" Name=\"tetrahedron\" format=\"ascii\">\n");
+    for (i = 0; i < c->ncell; i++) {
+        cvm__writer_long(w, c->tet[i]);
+        cvm__writer_putc(w, (i + 1) % 12 == 0 || i + 1 == c->ncell ? '\n' : ' ');
+    }
+    cvm__writer_puts(w, "        </DataArray>\n");
+    if (mo->tattr) {
+        cvm__writer_puts(w, "        <DataArray type=\"Float64\" Name=\"attribute\" format=\"ascii\">\n");
+        for (i = 0; i < c->ncell; i++) {
+            cvm__writer_double(w, mo->tattr[c->tet[i]]);
+            cvm__writer_putc(w, '\n');
+        }
+        cvm__writer_puts(w, "        </DataArray>\n");
+    }
+    cvm__writer_puts(w, "      </CellData>\n");
+}
+
 static void vtu(cvm__writer *w, const cvm__mesh3_out *mo)
 {
     size_t i;
@@ -19,7 +78,7 @@ static void vtu(cvm__writer *w, const cvm__mesh3_out *mo)
                         "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
                         "  <UnstructuredGrid>\n");
     cvm__writer_printf(w, "    <Piece NumberOfPoints=\"%lu\" NumberOfCells=\"%lu\">\n",
-                       (unsigned long)mo->nv, (unsigned long)mo->ntet);
+                       (unsigned long)mo->nv, (unsigned long)(mo->cells ? mo->cells->ncell : mo->ntet));
     cvm__writer_puts(w, "      <Points>\n        <DataArray type=\"Float64\" NumberOfComponents=\"3\" "
                         "format=\"ascii\">\n");
     for (i = 0; i < mo->nv; i++) {
@@ -30,8 +89,13 @@ static void vtu(cvm__writer *w, const cvm__mesh3_out *mo)
         cvm__writer_double(w, mo->xyz[3 * i + 2]);
         cvm__writer_putc(w, '\n');
     }
-    cvm__writer_puts(w, "        </DataArray>\n      </Points>\n      <Cells>\n"
-                        "        <DataArray type=\"Int32\" Name=\"connectivity\" format=\"ascii\">\n");
+    cvm__writer_puts(w, "        </DataArray>\n      </Points>\n      <Cells>\n");
+    if (mo->cells) {
+        vtu_cells(w, mo);
+        cvm__writer_puts(w, "    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n");
+        return;
+    }
+    cvm__writer_puts(w, "        <DataArray type=\"Int32\" Name=\"connectivity\" format=\"ascii\">\n");
     for (i = 0; i < mo->ntet; i++) {
         const int32_t *t = mo->tet + 4 * i;
         cvm__writer_printf(w, "%ld %ld %ld %ld\n", (long)t[0], (long)t[1], (long)t[2], (long)t[3]);

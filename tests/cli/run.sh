@@ -350,6 +350,34 @@ if cmp -s "$OUT/otetra_1.node" "$OUT/otetra_2.node" && cmp -s "$OUT/otetra_1.dua
 else
     fail "mesh3 --optimise: other bytes with 2 threads"
 fi
+# merged dual cells: reported with --quality; --merge-tol 0 merges nothing, so the
+# non-compliant share is then the outside share
+expect_exit 0 "mesh3 --merge-tol" "$CLI" mesh3 "$D3/tetra.off" --size 0.3 --merge-tol 1 --quality
+expect_grep "mesh3 --merge-tol" "$TMP/out" "merged (--merge-tol)"
+expect_grep "mesh3 --merge-tol" "$TMP/out" "non-compliant after merging"
+expect_grep "mesh3 --merge-tol" "$TMP/out" "merge groups dissolved"
+expect_exit 0 "mesh3 --merge-tol 0" "$CLI" mesh3 "$D3/tetra.off" --size 0.3 --merge-tol 0 --quality
+expect_grep "mesh3 --merge-tol 0" "$TMP/out" "merged (--merge-tol)         0.000 %"
+out_pct=$(sed -n 's/^circumcentre outside *//p' "$TMP/out")
+nc_pct=$(sed -n 's/^non-compliant after merging *//p' "$TMP/out")
+if [ -n "$out_pct" ] && [ "$out_pct" = "$nc_pct" ]; then pass; else
+    fail "mesh3 --merge-tol 0: non-compliant '$nc_pct', outside '$out_pct'"
+fi
+expect_exit 0 "mesh3 --merged-cells" "$CLI" mesh3 "$D3/tetra.off" --size 0.3 --merge-tol 1 --merged-cells \
+    -o "$OUT/merged.vtu"
+expect_grep "mesh3 --merged-cells" "$OUT/merged.vtu" "faceoffsets"
+if [ "$HAVE_NUMPY" -eq 1 ] && "$PY" -c '
+import sys, meshio
+m = meshio.read(sys.argv[1])
+assert all(c.type.startswith("polyhedron") for c in m.cells), [c.type for c in m.cells]
+assert any(c.type != "polyhedron4" for c in m.cells)
+' "$OUT/merged.vtu" > "$OUT/merged.log" 2>&1; then pass; else
+    [ "$HAVE_NUMPY" -eq 1 ] && fail "mesh3 --merged-cells with meshio: $(tail -c 300 "$OUT/merged.log")"
+fi
+expect_exit 2 "mesh3 --merge-tol 2" "$CLI" mesh3 "$D3/tetra.off" --size 0.3 --merge-tol 2
+expect_exit 2 "mesh3 --merge-tol x" "$CLI" mesh3 "$D3/tetra.off" --size 0.3 --merge-tol x
+expect_exit 0 "mesh3 --help" "$CLI" mesh3 --help
+expect_grep "mesh3 --help" "$TMP/out" "--merge-tol F"
 expect_exit 2 "mesh3 --opt-budget 0" "$CLI" mesh3 "$D3/tetra.off" --size 0.5 --optimise --opt-budget 0
 expect_exit 1 "mesh3 --layers 2" "$CLI" mesh3 "$D3/tetra.off" --size 0.5 --layers 2
 expect_grep "mesh3 --layers 2" "$TMP/err" "unsupported"

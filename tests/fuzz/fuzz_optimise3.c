@@ -9,12 +9,18 @@
  *     tetrahedralisation, which the check verifies face by face);
  *   - the tetrahedra and boundary faces are the same as before, the volume
  *     the same (to 1e-9 relative), and the outside share did not grow;
- *   - a second run on a fresh handle gives identical points and weights.
+ *   - a second run on a fresh handle gives identical points and weights;
+ *   - the merged dual cells of the result (cvm_mesh_copy_dual3_merge_groups(),
+ *     tol from byte 2): each group id is a tetrahedron of the group and its
+ *     smallest, the tetrahedra of a group are connected across faces shared by
+ *     two of them (so never across a boundary face), a second copy is the same,
+ *     merged % in [0, 100], non-compliant % <= outside % (all and boundary),
+ *     and tol 0 merges nothing and leaves non-compliant = outside.
  *
  * Bytes (missing ones read as 0):
  *   0      points: 5 + b % 40
  *   1      bits 0-1 sweeps 1 + b % 4; bit 2 slide; bit 3 weights; bits 4-7 budget 1 + 4 (b >> 4)
- *   2      min dihedral (b % 61) degrees; 3 margin (b % 21) / 100
+ *   2      min dihedral (b % 61) degrees, merge tol (b / 61 % 5) / 4; 3 margin (b % 21) / 100
  *   4..    per point: 3 coordinates (b % 8) / 4 (a grid), then, with weights, (b % 16) / 64
  */
 #include <math.h>
@@ -62,6 +68,71 @@ static void state_free(o3_state *st)
     free(st->w);
     free(st->tet);
     free(st->face);
+}
+
+static int32_t o3_find(int32_t *g, int32_t x)
+{
+    while (g[x] != x)
+        x = g[x] = g[g[x]];
+    return x;
+}
+
+static double o3_measure(cvm_mesh *m, cvm_measure which)
+{
+    double v = -1;
+    FUZZ_REQUIRE(cvm_mesh_get_measure(&v, m, which) == CVM_OK, "measure %d: %s", (int)which,
+                 cvm_mesh_errmsg(m));
+    return v;
+}
+
+/* The merge invariants of the header comment on m (tetrahedra st->tet). */
+static void check_merge(cvm_mesh *m, const o3_state *st, double tol)
+{
+    size_t nt = st->nt, t, i, j;
+    cvm_index *g = malloc(nt * sizeof *g + 1), *g2 = malloc(nt * sizeof *g2 + 1);
+    int32_t *uf = malloc(nt * sizeof *uf + 1);
+    FUZZ_REQUIRE(g && g2 && uf, "malloc");
+    FUZZ_REQUIRE(cvm_mesh_set_option(m, CVM_OPT_DUAL3_MERGE_TOL, tol) == CVM_OK, "option");
+    FUZZ_REQUIRE(cvm_mesh_copy_dual3_merge_groups(g, nt, m) == CVM_OK, "merge groups");
+    FUZZ_REQUIRE(cvm_mesh_copy_dual3_merge_groups(g2, nt, m) == CVM_OK, "merge groups");
+    FUZZ_REQUIRE(memcmp(g, g2, nt * sizeof *g) == 0, "merge groups: a second copy differs");
+    for (t = 0; t < nt; t++) {
+        FUZZ_REQUIRE(g[t] >= 0 && (size_t)g[t] <= t && g[g[t]] == g[t],
+                     "tet %lu: group %ld is not its group's smallest", (unsigned long)t, (long)g[t]);
+        FUZZ_REQUIRE(tol > 0 || g[t] == (cvm_index)t, "tol 0 merged tet %lu", (unsigned long)t);
+        uf[t] = (int32_t)t;
+    }
+    /* join members that share a face (3 common corners); each group is one component */
+    for (t = 0; t < nt; t++)
+        for (i = t + 1; i < nt; i++) {
+            int common = 0, a, b;
+            if (g[t] != g[i])
+                continue;
+            for (a = 0; a < 4; a++)
+                for (b = 0; b < 4; b++)
+                    common += st->tet[4 * t + (size_t)a] == st->tet[4 * i + (size_t)b];
+            if (common == 3) {
+                int32_t ra = o3_find(uf, (int32_t)t), rb = o3_find(uf, (int32_t)i);
+                uf[ra > rb ? ra : rb] = ra < rb ? ra : rb;
+            }
+        }
+    for (j = 0; j < nt; j++)
+        FUZZ_REQUIRE(o3_find(uf, (int32_t)j) == o3_find(uf, g[j]),
+                     "tet %lu is not face-connected to its group %ld", (unsigned long)j, (long)g[j]);
+    {
+        double mp = o3_measure(m, CVM_MEASURE_DUAL3_MERGED_PCT);
+        double nc = o3_measure(m, CVM_MEASURE_DUAL3_NONCOMPLIANT_PCT);
+        double ncb = o3_measure(m, CVM_MEASURE_DUAL3_NONCOMPLIANT_BOUNDARY_PCT);
+        double out = o3_measure(m, CVM_MEASURE_CIRCUMCENTRE_OUTSIDE_PCT);
+        double outb = o3_measure(m, CVM_MEASURE_CIRCUMCENTRE_OUTSIDE_BOUNDARY_PCT);
+        FUZZ_REQUIRE(mp >= 0 && mp <= 100, "merged %g %%", mp);
+        FUZZ_REQUIRE(nc <= out && ncb <= outb, "non-compliant %g %% / %g %%, outside %g %% / %g %%",
+                     nc, ncb, out, outb);
+        FUZZ_REQUIRE(tol > 0 || (mp == 0 && nc == out && ncb == outb), "tol 0: merged %g %%", mp);
+    }
+    free(g);
+    free(g2);
+    free(uf);
 }
 
 /* A mesh of the points, optimised; NULL when the points have no tetrahedralisation. */
@@ -138,6 +209,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     FUZZ_REQUIRE(a.nv == b.nv && a.nt == b.nt && a.nf == b.nf, "counts changed");
     FUZZ_REQUIRE(memcmp(a.tet, b.tet, 4 * a.nt * sizeof *a.tet) == 0, "tetrahedra changed");
     FUZZ_REQUIRE(memcmp(a.face, b.face, 3 * a.nf * sizeof *a.face) == 0, "faces changed");
+    check_merge(m1, &b, (byte_at(data, size, 2) / 61 % 5) / 4.0);
+    check_merge(m1, &b, 0);
     m2 = run(xyz, weighted ? w : NULL, n, opt, NULL);
     FUZZ_REQUIRE(m2 != NULL, "the second run failed");
     state_get(&c, m2);

@@ -2,6 +2,7 @@
 measures and histograms in quality(), dual vertices and cell volumes."""
 
 import numpy as np
+import pytest
 
 from cvmesh import Mesh
 
@@ -97,3 +98,48 @@ def test_insert_points_in_3d():
         mesh.insert_points(bad)
     assert "point 2" in str(err.value)
     assert len(mesh.points) == len(p)
+
+
+def test_dual3_merge_groups_of_a_cubic_lattice():
+    """Each cube of a cubic lattice is one merged dual cell: its tetrahedra share
+    their circumcentre; dual3_merge_tol 0 merges nothing."""
+    g = np.arange(4, dtype=float)
+    pts = np.array([(x, y, z) for x in g for y in g for z in g])
+    mesh = Mesh.from_points(pts)
+    mesh.triangulate()
+    groups = mesh.dual3_merge_groups
+    tets = mesh.tetrahedra
+    assert groups.shape == (len(tets),) and groups.dtype == np.int32
+    assert len(np.unique(groups)) == 27
+    assert (groups <= np.arange(len(tets))).all() and (groups[groups] == groups).all()
+    # the tetrahedra of a group lie in one cube: the same floor of their centroids
+    cube = np.floor(mesh.points[tets].mean(axis=1)).astype(int)
+    for r in np.unique(groups):
+        assert len(np.unique(cube[groups == r], axis=0)) == 1
+    q = mesh.quality()
+    assert q.dual3_merged_pct == 100 and q.dual3_noncompliant_pct == 0
+    mesh.set_option("dual3_merge_tol", 0)
+    assert (mesh.dual3_merge_groups == np.arange(len(tets))).all()
+
+
+def test_vtu_of_merged_cells_reads_with_meshio(tmp_path):
+    """vtu_merged_cells: one closed, outward-oriented polyhedron per merged cell;
+    the volumes add up to the lattice's."""
+    meshio = pytest.importorskip("meshio")
+    g = np.arange(4, dtype=float)
+    mesh = Mesh.from_points(np.array([(x, y, z) for x in g for y in g for z in g]))
+    mesh.triangulate()
+    mesh.set_option("vtu_merged_cells", 1)
+    mesh.write(tmp_path / "m.vtu")
+    m = meshio.read(tmp_path / "m.vtu")
+    cells = [c for block in m.cells for c in block.data]
+    assert len(cells) == 27
+    vol = 0.0
+    for faces in cells:
+        assert len(faces) == 12
+        edges = [(int(f[i]), int(f[(i + 1) % 3])) for f in faces for i in range(3)]
+        assert sorted(edges) == sorted((b, a) for a, b in edges)  # closed, consistently oriented
+        for f in faces:
+            a, b, c = m.points[np.asarray(f)]
+            vol += np.dot(a, np.cross(b, c)) / 6
+    assert abs(vol - 27.0) < 1e-9

@@ -800,6 +800,16 @@ class Mesh:
             return capi.cvm_mesh_copy_dual3_volumes(n, m)
 
     @property
+    def dual3_merge_groups(self) -> npt.NDArray[np.int32]:
+        """(m,) int32: per tetrahedron of a 3D mesh, the smallest tetrahedron index
+        of its kept merged dual cell (its own index when not merged); the rule is
+        CVM_OPT_DUAL3_MERGE_TOL (option dual3_merge_tol); see
+        cvm_mesh_copy_dual3_merge_groups()."""
+        with self._handle() as m:
+            n = capi.cvm_mesh_count(m, Entity.TETRAHEDRON)
+            return capi.cvm_mesh_copy_dual3_merge_groups(n, m)
+
+    @property
     def triangles(self) -> npt.NDArray[np.int32]:
         """(m, 3) int32 vertex ids of the triangles, counter-clockwise."""
         return self._cells(Entity.TRIANGLE, 3)

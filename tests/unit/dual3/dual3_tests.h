@@ -5,4 +5,6 @@
 
 TCase *dual3_optimise_tcase(void); /* test_optimise3.c: cvm_mesh_optimise_dual3() */
 
+TCase *dual3_merge_tcase(void);    /* test_merge3.c: merged 3D dual cells */
+
 #endif
