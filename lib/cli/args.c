@@ -189,6 +189,8 @@ void cli_note_nothing_to_do(const char *name, const char *in, const cli_outputs 
 const char *cli_fmt_number(char *buf, size_t len, double v)
 {
     int digits;
+    if (!buf || len == 0) /* also tells gcc's -Wformat-truncation (with UBSan) buf is set */
+        return "";
     if (v == floor(v) && fabs(v) < 1e15) { /* 300, not 3e+02 */
         snprintf(buf, len, "%.0f", v);
         return buf;
