@@ -102,9 +102,10 @@ static int d3m_sgn(double x)
 }
 
 /* The convexity and star check of the group of tetrahedra mem[0 .. n - 1] (all
- * with group root r): 1 when it passes (and no constrained face lies between two
- * of its tetrahedra, which a ring of mergeable faces around it could join). gvert: scratch of 4 n vertex ids; stamp:
- * nv, stamp[v] == r marks v as seen. */
+ * with group root r): 1 when it passes and no constrained face lies between two
+ * of its tetrahedra (a ring of mergeable faces around such a face could join
+ * them). gvert: scratch of 4 n vertex ids; stamp: nv, stamp[v] == r marks v as
+ * seen. */
 static int d3m_group_ok(const cvm__d3_mesh *M, const int32_t *group, const double *pv,
                         const int32_t *mem, size_t n, int32_t r, int32_t *stamp, int32_t *gvert)
 {
