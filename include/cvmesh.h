@@ -1151,6 +1151,9 @@ CVM_API cvm_status cvm_mesh_triangulate(cvm_mesh *m);
  * points get weight 0, and a point whose power cell would be empty is rejected
  * too. A point exactly on a segment splits it. A 3D mesh takes its points
  * through cvm_mesh_insert_points_nd() (this call gives CVM_E_UNSUPPORTED there).
+ * min_dist rule: the squared distance, rounded to double as (dx^2 + dy^2),
+ * against min_dist^2, to every vertex of a triangle of the domain, also one
+ * behind a segment (a vertex only in holes or outside the domain is not seen).
  *
  * @param ids_out  count entries: the new vertex id of each point, or CVM_REJECTED;
  *                 may be NULL.

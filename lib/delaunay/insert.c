@@ -267,6 +267,70 @@ static int shrink_to_visible(cvm__tri2 *T, int32_t p, size_t *ncav, size_t *nbnd
     }
 }
 
+/* min_dist in a constrained or weighted triangulation: the nearest vertex to pp
+ * need not be on the cavity's boundary (it can lie behind a segment), so walk,
+ * edge to edge from the cavity, every triangle whose bounding box meets the box
+ * of the disc B(pp, min_dist) (widened by 2^-20 of min_dist: a conservative
+ * filter; the triangles meeting a convex box form one edge-connected set), and
+ * test the vertices of those in the domain by the rule of insert_from(). Marks:
+ * CVM__TF_MARK2, cleared before returning. */
+static cvm_status nearest_behind(cvm__tri2 *T, const double *pp, double min_dist, size_t ncav,
+                                 double *best, int32_t *who)
+{
+    double r = min_dist * (1.0 + 0x1p-20);
+    size_t i, nq = 0, head;
+    cvm_status s = CVM_OK;
+    for (i = 0; i < ncav; i++) {
+        if ((s = push_int(T, &T->stack, &T->cap_stack, nq, T->cav[i])) != CVM_OK)
+            goto done;
+        T->tf[T->cav[i]] |= CVM__TF_MARK2;
+        nq++;
+    }
+    for (head = 0; head < nq; head++) {
+        int32_t t = T->stack[head];
+        const int32_t *tv = T->tv + 3 * (size_t)t;
+        int j;
+        if (!(T->tf[t] & CVM__TF_OUT))
+            for (j = 0; j < 3; j++) {
+                const double *pa;
+                double d;
+                if (tv[j] < 0)
+                    continue;
+                pa = cvm__tri2_pt(T, tv[j]);
+                d = (pa[0] - pp[0]) * (pa[0] - pp[0]) + (pa[1] - pp[1]) * (pa[1] - pp[1]);
+                if (d < *best || (d == *best && *who >= 0 && tv[j] < *who
+                                  && d < min_dist * min_dist)) {
+                    *best = d;
+                    *who = tv[j];
+                }
+            }
+        for (j = 0; j < 3; j++) {
+            int32_t u = T->tn[3 * (size_t)t + j] / 3;
+            const int32_t *uv = T->tv + 3 * (size_t)u;
+            int ax, meets = 1;
+            if ((T->tf[u] & (CVM__TF_MARK2 | CVM__TF_DEAD)) || cvm__tri2_is_ghost(T, u))
+                continue;
+            for (ax = 0; ax < 2 && meets; ax++) {
+                double a = cvm__tri2_pt(T, uv[0])[ax], b = cvm__tri2_pt(T, uv[1])[ax];
+                double c = cvm__tri2_pt(T, uv[2])[ax];
+                double lo = a < b ? (a < c ? a : c) : (b < c ? b : c);
+                double hi = a > b ? (a > c ? a : c) : (b > c ? b : c);
+                meets = lo <= pp[ax] + r && hi >= pp[ax] - r;
+            }
+            if (!meets)
+                continue;
+            if ((s = push_int(T, &T->stack, &T->cap_stack, nq, u)) != CVM_OK)
+                goto done;
+            T->tf[u] |= CVM__TF_MARK2;
+            nq++;
+        }
+    }
+done:
+    for (i = 0; i < nq; i++)
+        T->tf[T->stack[i]] &= (uint8_t)~CVM__TF_MARK2;
+    return s;
+}
+
 static cvm_status insert_from(cvm__tri2 *T, int32_t v, int32_t t0, int fe_t, int fe_j,
                               double min_dist, cvm__ins *res_out, int32_t *other_out)
 {
@@ -294,6 +358,10 @@ static cvm_status insert_from(cvm__tri2 *T, int32_t v, int32_t t0, int fe_t, int
                 best = d;
                 who = a;
             }
+        }
+        if ((T->te || T->w) && (s = nearest_behind(T, pp, min_dist, ncav, &best, &who))) {
+            unmark(T, ncav);
+            return s;
         }
         if (who >= 0) {
             unmark(T, ncav);

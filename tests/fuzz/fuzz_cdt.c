@@ -131,6 +131,30 @@ static void fetch(cvm_mesh *m, output *o)
                  "copy_cells");
 }
 
+/* No inserted point lies closer than min_dist (rounded squared distance) to a
+ * vertex of a triangle that was there before it, whatever lies between them. */
+static void check_min_dist(const output *o, double min_dist)
+{
+    unsigned char *used = (unsigned char *)calloc(o->nv + 1, 1);
+    size_t i, j, k;
+    FUZZ_REQUIRE(used != NULL, "out of memory");
+    for (i = 0; i < 3 * o->nt; i++)
+        used[o->tri[i]] = 1;
+    for (k = 0; k < 16; k++) {
+        cvm_index id = o->ids[k];
+        if (id == CVM_REJECTED || id <= 0)
+            continue;
+        for (j = 0; j < (size_t)id; j++) {
+            const double *a = o->xy + 2 * j, *b = o->xy + 2 * (size_t)id;
+            double d = (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]);
+            if (used[j])
+                FUZZ_REQUIRE(d >= min_dist * min_dist, "inserted vertex %ld is %g from vertex %zu",
+                             (long)id, sqrt(d), j);
+        }
+    }
+    free(used);
+}
+
 static void run(const input *in, output *o, int validate_it)
 {
     cvm_mesh *m = NULL;
@@ -179,6 +203,8 @@ static void run(const input *in, output *o, int validate_it)
         for (i = 0; i < in->nins; i++)
             FUZZ_REQUIRE(o->ids[i] == CVM_REJECTED || (o->ids[i] >= 0 && (size_t)o->ids[i] < o->nv),
                          "inserted point %zu got id %ld of %zu vertices", i, (long)o->ids[i], o->nv);
+        if (validate_it && min_dist > 0)
+            check_min_dist(o, min_dist);
     }
     cvm_mesh_free(m);
 }

@@ -39,6 +39,28 @@ START_TEST(insert_returns_ids_and_rejects)
 }
 END_TEST
 
+/* min_dist counts every vertex, also one behind a segment: the square [0, 10]^2
+ * cut by the segment y = 5, a vertex at (5, 4.9) below it; the point (5, 5.1)
+ * above is 0.2 from it, though its cavity (above the segment) does not hold it. */
+START_TEST(insert_min_dist_sees_a_vertex_behind_a_segment)
+{
+    double xy[] = {0, 0, 10, 0, 10, 10, 0, 10, 0, 5, 10, 5, 5, 4.9};
+    cvm_index segs[] = {0, 1, 1, 5, 5, 2, 2, 3, 3, 4, 4, 0, 4, 5};
+    double p[] = {5, 5.1, 5, 5.6};
+    cvm_index ids[2];
+    cvm_mesh *m;
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_points(m, xy, 7, 2), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_segments(m, segs, 7), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_insert_points(ids, m, p, 2, 0.5), CVM_OK);
+    ck_assert_int_eq(ids[0], CVM_REJECTED); /* 0.2 from vertex 6 across the segment */
+    ck_assert_int_eq(ids[1], 7);            /* 0.6 from it: inserted */
+    cvmtest_assert_valid(m);
+    cvm_mesh_free(m);
+}
+END_TEST
+
 START_TEST(insert_many_keeps_constrained_delaunay)
 {
     cvm_mesh *m = unit_square();
@@ -176,6 +198,7 @@ TCase *delaunay_insert_tcase(void)
     TCase *tc = tcase_create("insert");
     tcase_set_timeout(tc, 60);
     tcase_add_test(tc, insert_returns_ids_and_rejects);
+    tcase_add_test(tc, insert_min_dist_sees_a_vertex_behind_a_segment);
     tcase_add_test(tc, insert_many_keeps_constrained_delaunay);
     tcase_add_test(tc, insert_bad_arguments);
     tcase_add_test(tc, insert_in_cavity_matches_bowyer_watson);
