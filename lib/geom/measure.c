@@ -216,3 +216,18 @@ double cvm__min_angle_deg(const double *a, const double *b, const double *c)
     x = x < y ? x : y;
     return x < z ? x : z;
 }
+
+double cvm__metric_angle_deg(const double g[3], const double *o, const double *a, const double *b)
+{
+    double u[2], v[2], uv, uu, vv, c;
+    u[0] = a[0] - o[0];
+    u[1] = a[1] - o[1];
+    v[0] = b[0] - o[0];
+    v[1] = b[1] - o[1];
+    uv = g[0] * u[0] * v[0] + g[1] * (u[0] * v[1] + u[1] * v[0]) + g[2] * u[1] * v[1];
+    uu = g[0] * u[0] * u[0] + 2 * g[1] * u[0] * u[1] + g[2] * u[1] * u[1];
+    vv = g[0] * v[0] * v[0] + 2 * g[1] * v[0] * v[1] + g[2] * v[1] * v[1];
+    c = uv / sqrt(uu * vv);
+    c = c > 1 ? 1 : c < -1 ? -1 : c;
+    return acos(c) * (180 / CVM__PI);
+}

@@ -51,6 +51,11 @@ double cvm__vec_angle(double ux, double uy, double wx, double wy);
 /* Interior angle at o of the triangle o, a, b (in [0, pi]). */
 double cvm__corner_angle(const double *o, const double *a, const double *b);
 
+/* The angle at o between o->a and o->b measured in the metric g = (g11, g12,
+ * g22) (the inner product u^T g v), degrees, in [0, 180]. */
+double cvm__metric_angle_deg(const double g[3], const double *o, const double *a,
+                             const double *b);
+
 /* Turning angle at b of the path a -> b -> c (0 straight on, pi straight back). */
 double cvm__turn_angle(const double *a, const double *b, const double *c);
 

@@ -43,22 +43,6 @@ static void stats(double *mean, double *p95, double *max, double *v, size_t n)
         *max = v[n - 1];
 }
 
-/* The angle at p between p->a and p->b in the metric g, degrees. */
-static double angle_in(const double g[3], const double *p, const double *a, const double *b)
-{
-    double u[2], v[2], uv, uu, vv, c;
-    u[0] = a[0] - p[0];
-    u[1] = a[1] - p[1];
-    v[0] = b[0] - p[0];
-    v[1] = b[1] - p[1];
-    uv = u[0] * v[0] * g[0] + (u[0] * v[1] + u[1] * v[0]) * g[1] + u[1] * v[1] * g[2];
-    uu = u[0] * u[0] * g[0] + 2 * u[0] * u[1] * g[1] + u[1] * u[1] * g[2];
-    vv = v[0] * v[0] * g[0] + 2 * v[0] * v[1] * g[1] + v[1] * v[1] * g[2];
-    c = uv / sqrt(uu * vv);
-    c = c > 1 ? 1 : c < -1 ? -1 : c;
-    return acos(c) * DEG;
-}
-
 cvm_status cvm__quad_measures(double *out, const cvm__metric *mt, const double *xy, size_t ncell,
                               const int32_t *off, const int32_t *types, const int32_t *conn,
                               cvm__ctx *ctx)
@@ -104,10 +88,10 @@ cvm_status cvm__quad_measures(double *out, const cvm__metric *mt, const double *
         for (j = 0; j < 4; j++) {
             const double *q = xy + 2 * p[j], *nx = xy + 2 * p[(j + 1) % 4];
             const double *pv = xy + 2 * p[(j + 3) % 4];
-            double d = fabs(angle_in(g, q, nx, pv) - 90), e[2], m[2], gm[3], th, phi, f, sj;
-            double u[2], v[2];
+            double d = fabs(cvm__metric_angle_deg(g, q, nx, pv) - 90);
+            double e[2], m[2], gm[3], th, phi, f, sj, u[2], v[2];
             dev[ncorner] = d;
-            edev[ncorner] = fabs(angle_in(I, q, nx, pv) - 90);
+            edev[ncorner] = fabs(cvm__metric_angle_deg(I, q, nx, pv) - 90);
             all_in &= d <= 10;
             u[0] = nx[0] - q[0];
             u[1] = nx[1] - q[1];

@@ -144,13 +144,7 @@ static double quad_quality(const double *xy, const cvm_index p[4], const double 
     int k;
     for (k = 0; k < 4; k++) {
         const double *o = xy + 2 * p[k], *a = xy + 2 * p[(k + 3) % 4], *b = xy + 2 * p[(k + 1) % 4];
-        double u[2] = {a[0] - o[0], a[1] - o[1]}, v[2] = {b[0] - o[0], b[1] - o[1]};
-        double uv = g[0] * u[0] * v[0] + g[1] * (u[0] * v[1] + u[1] * v[0]) + g[2] * u[1] * v[1];
-        double uu = g[0] * u[0] * u[0] + 2 * g[1] * u[0] * u[1] + g[2] * u[1] * u[1];
-        double vv = g[0] * v[0] * v[0] + 2 * g[1] * v[0] * v[1] + g[2] * v[1] * v[1];
-        double c = uv / sqrt(uu * vv), dev;
-        c = c > 1 ? 1 : c < -1 ? -1 : c;
-        dev = fabs(acos(c) * (180 / CVM__PI) - 90);
+        double dev = fabs(cvm__metric_angle_deg(g, o, a, b) - 90);
         if (dev > worst)
             worst = dev;
     }
