@@ -267,6 +267,20 @@ static int shrink_to_visible(cvm__tri2 *T, int32_t p, size_t *ncav, size_t *nbnd
     }
 }
 
+/* Vertex a, if it is nearer to pp than *best (ties to the lowest id, and only
+ * below min_dist), becomes *who; distances are rounded squared distances (the
+ * min_dist rule). */
+static void take_if_nearer2(const cvm__tri2 *T, const double *pp, int32_t a, double min_dist,
+                            double *best, int32_t *who)
+{
+    const double *pa = cvm__tri2_pt(T, a);
+    double d = (pa[0] - pp[0]) * (pa[0] - pp[0]) + (pa[1] - pp[1]) * (pa[1] - pp[1]);
+    if (d < *best || (d == *best && *who >= 0 && a < *who && d < min_dist * min_dist)) {
+        *best = d;
+        *who = a;
+    }
+}
+
 /* min_dist in a constrained or weighted triangulation: the nearest vertex to pp
  * need not be on the cavity's boundary (it can lie behind a segment), so walk,
  * edge to edge from the cavity, every triangle whose bounding box meets the box
@@ -291,19 +305,9 @@ static cvm_status nearest_behind(cvm__tri2 *T, const double *pp, double min_dist
         const int32_t *tv = T->tv + 3 * (size_t)t;
         int j;
         if (!(T->tf[t] & CVM__TF_OUT))
-            for (j = 0; j < 3; j++) {
-                const double *pa;
-                double d;
-                if (tv[j] < 0)
-                    continue;
-                pa = cvm__tri2_pt(T, tv[j]);
-                d = (pa[0] - pp[0]) * (pa[0] - pp[0]) + (pa[1] - pp[1]) * (pa[1] - pp[1]);
-                if (d < *best || (d == *best && *who >= 0 && tv[j] < *who
-                                  && d < min_dist * min_dist)) {
-                    *best = d;
-                    *who = tv[j];
-                }
-            }
+            for (j = 0; j < 3; j++)
+                if (tv[j] >= 0)
+                    take_if_nearer2(T, pp, tv[j], min_dist, best, who);
         for (j = 0; j < 3; j++) {
             int32_t u = T->tn[3 * (size_t)t + j] / 3;
             const int32_t *uv = T->tv + 3 * (size_t)u;
@@ -346,19 +350,9 @@ static cvm_status insert_from(cvm__tri2 *T, int32_t v, int32_t t0, int fe_t, int
         const double *pp = cvm__tri2_pt(T, v);
         double best = min_dist * min_dist;
         int32_t who = -1;
-        for (i = 0; i < nbnd; i++) {
-            int32_t a = T->bnd[i * B_STRIDE + B_A];
-            const double *pa;
-            double d;
-            if (a < 0)
-                continue;
-            pa = cvm__tri2_pt(T, a);
-            d = (pa[0] - pp[0]) * (pa[0] - pp[0]) + (pa[1] - pp[1]) * (pa[1] - pp[1]);
-            if (d < best || (d == best && who >= 0 && a < who && d < min_dist * min_dist)) {
-                best = d;
-                who = a;
-            }
-        }
+        for (i = 0; i < nbnd; i++)
+            if (T->bnd[i * B_STRIDE + B_A] >= 0)
+                take_if_nearer2(T, pp, T->bnd[i * B_STRIDE + B_A], min_dist, &best, &who);
         if ((T->te || T->w) && (s = nearest_behind(T, pp, min_dist, ncav, &best, &who))) {
             unmark(T, ncav);
             return s;

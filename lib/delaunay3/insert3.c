@@ -463,6 +463,20 @@ static int32_t vanishing_vertex(cvm__tet3 *T, int32_t p)
     return best;
 }
 
+/* Vertex a, if it is nearer to x than *best (ties to the lowest id), becomes
+ * *other; distances are rounded squared distances (the min_dist rule). */
+static void take_if_nearer(const cvm__tet3 *T, const double *x, int32_t a, double *best,
+                           int32_t *other)
+{
+    const double *q = PT(T, a);
+    double d = (q[0] - x[0]) * (q[0] - x[0]) + (q[1] - x[1]) * (q[1] - x[1])
+               + (q[2] - x[2]) * (q[2] - x[2]);
+    if (d < *best || (d == *best && *other >= 0 && a < *other)) {
+        *best = d;
+        *other = a;
+    }
+}
+
 /* The nearest vertex to x closer than min_dist (rounded squared distance
  * against min_dist^2, ties to the lowest id) into *best / *other. The cavity's
  * vertices first; in a regular or constrained mesh the nearest vertex need not
@@ -491,39 +505,18 @@ static cvm_status nearest_within(cvm__tet3 *T, const double *x, double min_dist,
             T->tmark[c] |= 0x80;
             T->stack[nq++] = c;
         } else {
-            for (k = 0; k < 4; k++) {
-                int32_t a = T->tt[8 * (size_t)c + k];
-                const double *q;
-                double d;
-                if (a < 0)
-                    continue;
-                q = PT(T, a);
-                d = (q[0] - x[0]) * (q[0] - x[0]) + (q[1] - x[1]) * (q[1] - x[1])
-                    + (q[2] - x[2]) * (q[2] - x[2]);
-                if (d < best || (d == best && *other >= 0 && a < *other)) {
-                    best = d;
-                    *other = a;
-                }
-            }
+            for (k = 0; k < 4; k++)
+                if (T->tt[8 * (size_t)c + k] >= 0)
+                    take_if_nearer(T, x, T->tt[8 * (size_t)c + k], &best, other);
         }
     }
     for (head = 0; head < nq; head++) {
         int32_t c = T->stack[head];
         const int32_t *v = T->tt + 8 * (size_t)c;
         int f;
-        for (k = 0; k < 4; k++) {
-            const double *q;
-            double d;
-            if (v[k] < 0)
-                continue;
-            q = PT(T, v[k]);
-            d = (q[0] - x[0]) * (q[0] - x[0]) + (q[1] - x[1]) * (q[1] - x[1])
-                + (q[2] - x[2]) * (q[2] - x[2]);
-            if (d < best || (d == best && *other >= 0 && v[k] < *other)) {
-                best = d;
-                *other = v[k];
-            }
-        }
+        for (k = 0; k < 4; k++)
+            if (v[k] >= 0)
+                take_if_nearer(T, x, v[k], &best, other);
         for (f = 0; f < 4; f++) {
             int32_t u = CVM__T3_TN(T, 4 * (size_t)c + f) >> 2;
             const int32_t *w = T->tt + 8 * (size_t)u;
