@@ -41,8 +41,8 @@ static cvm_status run_sequence(cvm_mesh *m, result *r)
         s = cvm_mesh_set_option(m, CVM_OPT_SEED, 7);
     if (s == CVM_OK)
         s = cvm_mesh_triangulate(m);
-    if (s == CVM_OK)
-        s = cvm_mesh_insert_points(r->ids, m, k_extra, 3, 0.0);
+    if (s == CVM_OK) /* min_dist > 0 in a constrained mesh: the walk near each point too */
+        s = cvm_mesh_insert_points(r->ids, m, k_extra, 3, 0.01);
     if (s == CVM_OK)
         s = cvm_mesh_count(&r->nv, m, CVM_ENT_VERTEX);
     if (s == CVM_OK)
