@@ -950,9 +950,10 @@ typedef enum cvm_option {
      *  metric of each site over its whole cell (every integral exact, a C^1 energy, about
      *  half the time). Integer, bounds [0, 1]. @since 0.2 */
     CVM_OPT_QUAD_CELLWISE_METRIC = 807,
-    /** Escapes from a local minimum after convergence, integer, default 8, bounds [0, 64]:
-     *  the site of least cell energy moves into the cell of most energy and the sites are
-     *  optimised again; kept only when E drops. @since 0.2 */
+    /** Escapes from a local minimum after convergence, integer, default 0 (8 before the
+     *  frontal start of CVM_OPT_QUAD_INITIAL_SITES, which made them pay no more), bounds
+     *  [0, 64]: the site of least cell energy moves into the cell of most energy and the
+     *  sites are optimised again; kept only when E drops. @since 0.2 */
     CVM_OPT_QUAD_RELOCATIONS = 808,
     /** The distance of the energy's Voronoi cells: 0 Euclidean; 1 the metric
      *  m0 = gbar / sqrt(det gbar), gbar the mean of g over the initial interior sites (unit
@@ -962,7 +963,23 @@ typedef enum cvm_option {
      *  (cvm_sizing_set_metric_constant(), where the map is exact), else as 0. Nothing
      *  changes when gbar is a multiple of the identity. The energy, its value and the
      *  outputs stay in x (|grad E| is reported in z). Integer, bounds [0, 2]. @since 0.2 */
-    CVM_OPT_QUAD_MEAN_METRIC_VORONOI = 809
+    CVM_OPT_QUAD_MEAN_METRIC_VORONOI = 809,
+    /** The initial interior sites, integer, bounds [0, 1]: 0 (default) an advancing front
+     *  in metric space, unit metric steps along the metric's eigenvectors (along the
+     *  nearest domain edge where the metric is isotropic) from the boundary sites, so the
+     *  optimisation starts near a lattice of metric squares; 1 the metric density sampled
+     *  by rejection on a Halton sequence rotated by CVM_OPT_SEED.
+     *  @since 0.2 */
+    CVM_OPT_QUAD_INITIAL_SITES = 810,
+    /** Sweeps of parallelogram smoothing after the recombination, integer, default 200
+     *  (0: none), bounds [0, 1000]; the sweeps stop early once nothing moves: each interior vertex with a quad moves towards the mean
+     *  of the points that would make its quads parallelograms (an affine-invariant rule,
+     *  so a lattice of metric squares is left as it is), a move kept only when every
+     *  cell around it stays strictly convex (exact) and the squared metric corner
+     *  deviations of its quads drop. The sites are then triangulated again, so the
+     *  triangles stay the Delaunay triangulation of the final sites; the quads and
+     *  triangles of the mixed cells keep their vertices. @since 0.2 */
+    CVM_OPT_QUAD_SMOOTH = 811
     /* ---- 1000 and up: experimental (include/cvmesh_experimental.h) ---- */
 } cvm_option;
 
@@ -3025,8 +3042,11 @@ CVM_API cvm_status cvm_mesh_optimise_dual3(cvm_mesh *m);
  *      convex polygon (collinear vertices allowed), every input point on it, no holes;
  *   2. each boundary edge is split into n = max(1, round(L_M)) pieces of equal metric
  *      length L_M (adaptive Gauss-Kronrod to 1e-12, Newton); those points stay fixed;
- *   3. N interior sites are drawn from the density sqrt(det g) (N from the metric area;
- *      a Halton sequence rotated by CVM_OPT_SEED, deterministic) and moved by L-BFGS
+ *   3. interior sites are placed by an advancing front from the boundary points, one
+ *      unit metric step at a time along the metric's eigenvectors (along the nearest
+ *      domain edge where the metric is isotropic), or with CVM_OPT_QUAD_INITIAL_SITES = 1
+ *      drawn from the density sqrt(det g) (N from the metric area; a Halton sequence
+ *      rotated by CVM_OPT_SEED); both deterministic. They are then moved by L-BFGS
  *      (liblbfgs) to a minimum of E = sum_i Int_{cell i} |M(y)(y - x_i)|_p^p dy, g = M^T M,
  *      M = Lambda^(1/2) Q^T, with the exact gradient (the Voronoi diagram is rebuilt at
  *      every evaluation); sites that end outside the domain are dropped;

@@ -70,8 +70,10 @@ static const option_def k_options[] = {
     {CVM_OPT_QUAD_MIN_QUALITY, "QUAD_MIN_QUALITY", {0, 1, 0.5, 0}},
     {CVM_OPT_QUAD_CLIP, "QUAD_CLIP", {0, 1, 0, 1}},
     {CVM_OPT_QUAD_CELLWISE_METRIC, "QUAD_CELLWISE_METRIC", {0, 1, 0, 1}},
-    {CVM_OPT_QUAD_RELOCATIONS, "QUAD_RELOCATIONS", {0, 64, 8, 1}},
+    {CVM_OPT_QUAD_RELOCATIONS, "QUAD_RELOCATIONS", {0, 64, 0, 1}},
     {CVM_OPT_QUAD_MEAN_METRIC_VORONOI, "QUAD_MEAN_METRIC_VORONOI", {0, 2, 2, 1}},
+    {CVM_OPT_QUAD_INITIAL_SITES, "QUAD_INITIAL_SITES", {0, 1, 0, 1}},
+    {CVM_OPT_QUAD_SMOOTH, "QUAD_SMOOTH", {0, 1000, 200, 1}},
 };
 
 #define NOPT (sizeof k_options / sizeof k_options[0])

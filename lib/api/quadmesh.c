@@ -458,6 +458,65 @@ static cvm_status make_cells(cvm_mesh *m, const cvm__metric *mt, const double *M
     return q->first ? CVM_OK : cvm__nomem(&m->ctx);
 }
 
+/* CVM_OPT_QUAD_SMOOTH: smooth the interior sites of the cells made, then triangulate the
+ * sites again (the cells keep their vertex numbers). Skipped when the interior sites are not
+ * the last kept vertices in xi's order (a site merged with another). */
+static cvm_status smooth_cells(cvm_mesh *m, const cvm__metric *mt, const int32_t *loop,
+                               const int32_t *lseg, size_t nc, const double *bxy, size_t nb,
+                               const double *xi, size_t ni, size_t kept)
+{
+    size_t nv = cvm__store_nv(m), first = nv - kept, k, j = 0, moves, again;
+    cvm__quad_cells *q = m->quad;
+    cvm__quad_smooth_in in;
+    metric_cb cb;
+    double *xy;
+    cvm_status s;
+    if (kept > nv)
+        return CVM_OK;
+    for (k = 0; k < ni; k++) {
+        const double *p;
+        if (!cvm__lpcvt_inside_polygon(bxy, nb, xi + 2 * k))
+            continue;
+        p = cvm__store_point(m, first + j++);
+        if (p[0] != xi[2 * k] || p[1] != xi[2 * k + 1])
+            return CVM_OK;
+    }
+    xy = cvm__malloc(&m->ctx, (2 * nv + 1) * sizeof *xy);
+    if (!xy)
+        return cvm__nomem(&m->ctx);
+    memcpy(xy, cvm__store_points(m), 2 * nv * sizeof *xy);
+    cb.mt = mt;
+    cb.ctx = &m->ctx;
+    memset(&in, 0, sizeof in);
+    in.nv = nv;
+    in.first_free = first;
+    in.ncell = q->ncell;
+    in.off = q->off;
+    in.types = q->types;
+    in.conn = q->conn;
+    in.metric = recombine_metric;
+    in.metric_user = &cb;
+    in.sweeps = (int)cvm__opt(m, CVM_OPT_QUAD_SMOOTH);
+    in.quality = q->quality;
+    if ((s = cvm__quad_smooth(&m->ctx, xy, &in, &moves)) || moves == 0) {
+        cvm__free(&m->ctx, xy);
+        return s;
+    }
+    m->quad = NULL; /* kept through the new triangulation, which drops the output */
+    s = build_triangulation(m, loop, lseg, nc, bxy, nb, xy + 2 * first, kept, &again);
+    m->quad = q;
+    cvm__free(&m->ctx, xy);
+    if (!s && (again != kept || cvm__store_nv(m) != nv))
+        s = cvm__error(&m->ctx, CVM_E_INTERNAL, CVM_ENT_NONE, -1,
+                       "cvm_mesh_quadmesh: %lu of %lu smoothed sites kept",
+                       (unsigned long)again, (unsigned long)kept);
+    if (!s) {
+        m->triangulated = 1;
+        m->nv_triangulated = cvm__store_nv(m);
+    }
+    return s;
+}
+
 /* CVM_OPT_QUAD_MEAN_METRIC_VORONOI: the sites are optimised in z = M0 x, where the metric is
  * pulled back, g'(z) = A^T g(A z) A with A = M0^-1 (row-major 2x2). */
 typedef struct qm_pullback {
@@ -583,8 +642,11 @@ cvm_status cvm_mesh_quadmesh(cvm_mesh *m, const cvm_sizing *metric)
     mt.bnd = corners;
     mt.nbnd = nc;
     if ((s = cvm__boundary_discretise(&bxy, &nb, &mt, corners, nc, &m->ctx)) ||
-        (s = cvm__lpcvt_initial_sites(&xi, &ni, &mt, bxy, nb, (uint64_t)cvm__opt(m, CVM_OPT_SEED),
-                                      &m->ctx)))
+        (s = cvm__opt(m, CVM_OPT_QUAD_INITIAL_SITES) == 0
+                 ? cvm__lpcvt_frontal_sites(&xi, &ni, &mt, bxy, nb, corners, nc,
+                                            (size_t)1 << 30, &m->ctx)
+                 : cvm__lpcvt_initial_sites(&xi, &ni, &mt, bxy, nb,
+                                            (uint64_t)cvm__opt(m, CVM_OPT_SEED), &m->ctx)))
         goto fail;
     mapped = (int)cvm__opt(m, CVM_OPT_QUAD_MEAN_METRIC_VORONOI);
     if (mapped == 2) /* on where the map is exact: a constant tensor */
@@ -668,6 +730,8 @@ cvm_status cvm_mesh_quadmesh(cvm_mesh *m, const cvm_sizing *metric)
         m->nv_triangulated = cvm__store_nv(m);
         s = make_cells(m, &mt, mapped ? M0 : NULL);
     }
+    if (!s && m->quad && cvm__opt(m, CVM_OPT_QUAD_SMOOTH) > 0)
+        s = smooth_cells(m, &mt, loop, lseg, nc, bxy, nb, xi, ni, kept);
     if (!s)
         s = cvm__quad_measures(m->quad_report, &mt, cvm__store_points(m), m->quad->ncell,
                                m->quad->off, m->quad->types, m->quad->conn, &m->ctx);

@@ -98,13 +98,17 @@ static const cli_option_flag k_flags[] = {
     {"--max-iter", "N", CVM_OPT_QUAD_MAX_ITERATIONS, 0, QUA,
      "L-BFGS iterations of each run (default 10000, 0: none)"},
     {"--relocations", "N", CVM_OPT_QUAD_RELOCATIONS, 0, QUA,
-     "escapes from a local minimum after convergence (default 8)"},
+     "escapes from a local minimum after convergence (default 0)"},
     {"--clip", NULL, CVM_OPT_QUAD_CLIP, 1, QUA,
      "clip the boundary cells to the domain instead of reconstructing them"},
     {"--cellwise-metric", NULL, CVM_OPT_QUAD_CELLWISE_METRIC, 1, QUA,
      "the metric of each site over its whole cell (faster, exact integrals)"},
     {"--mean-metric-voronoi", "0|1|2", CVM_OPT_QUAD_MEAN_METRIC_VORONOI, 0, QUA,
      "Voronoi cells of the energy: 0 Euclidean, 1 mean metric, 2 1 if g is constant"},
+    {"--initial-sites", "frontal|halton", CVM_OPT_QUAD_INITIAL_SITES, 0, QUA,
+     "start: a metric-aligned front from the boundary (default) or density samples"},
+    {"--smooth", "N", CVM_OPT_QUAD_SMOOTH, 0, QUA,
+     "sweeps of parallelogram smoothing after the recombination (default 200)"},
 };
 
 /* Flags whose value is a word: the word -> the option value. */
@@ -118,6 +122,8 @@ static const struct {
                {CVM_OPT_QUAD_RECOMBINE, "blossom", 0},
                {CVM_OPT_QUAD_RECOMBINE, "greedy", 1},
                {CVM_OPT_QUAD_RECOMBINE, "none", 2},
+               {CVM_OPT_QUAD_INITIAL_SITES, "frontal", 0},
+               {CVM_OPT_QUAD_INITIAL_SITES, "halton", 1},
                {CVM_OPT_VTU_ENCODING, "auto", CVM_VTU_AUTO}};
 
 /* 1 and *v when f takes words and val is one of them. */

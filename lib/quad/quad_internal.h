@@ -282,6 +282,29 @@ cvm_status cvm__metric_length(double *out, const cvm__metric *mt, const double *
 cvm_status cvm__boundary_discretise(double **xy_out, size_t *n_out, const cvm__metric *mt,
                                     const double *corners, size_t nc, cvm__ctx *ctx);
 
+/* ---- parallelogram smoothing of the quad-dominant cells (smooth.c) ---- */
+
+typedef struct cvm__quad_smooth_in {
+    size_t nv;          /* points */
+    size_t first_free;  /* points first_free .. nv - 1 may move; the others are fixed */
+    size_t ncell;       /* cells: counter-clockwise polygons conn[off[c] .. off[c + 1]) */
+    const int32_t *off, *types, *conn; /* types: CVM_CELL_QUAD or CVM_CELL_TRIANGLE */
+    int (*metric)(double x, double y, double g[3], void *user); /* nonzero: refused */
+    void *metric_user;
+    int sweeps;         /* Gauss-Seidel sweeps over the free points, in index order */
+    double *quality;    /* ncell or NULL: after the moves, each quad's 1 - max|corner - 90| / 90
+                           in the metric at its vertex mean (as the recombination's) */
+} cvm__quad_smooth_in;
+/* Move each free point that has a quad towards the mean, over its quads, of the point that
+ * makes the quad a parallelogram (full step, else half, else a quarter); a move is kept when
+ * every cell of the point stays strictly convex (exact orient2d) and the sum over its quads of
+ * the squared corner deviations from 90 degrees in the metric at the quad's vertex mean
+ * drops. Stops after a sweep without a move. Deterministic (serial, index order). xy: 2 nv,
+ * updated. *moves_out: the moves kept. CVM_OK, CVM_E_NOMEM (xy unchanged) or CVM_E_ARGUMENT
+ * (the metric refused a quad's vertex mean when its quality was written). */
+cvm_status cvm__quad_smooth(cvm__ctx *ctx, double *xy, const cvm__quad_smooth_in *in,
+                            size_t *moves_out);
+
 /* ---- initial sites and the optimisation (lpcvt_optimise.c) ---- */
 
 /* Int sqrt(det g) dA over the convex polygon bxy (nb corners): a fan from its first corner, each
@@ -296,6 +319,18 @@ cvm_status cvm__metric_area(double *area, double *rho_max, const cvm__metric *mt
  * the caller frees) and *ni_out. CVM_OK, the metric's errors, CVM_E_NOMEM, CVM_E_TOO_LARGE. */
 cvm_status cvm__lpcvt_initial_sites(double **xi_out, size_t *ni_out, const cvm__metric *mt,
                                     const double *bxy, size_t nb, uint64_t seed, cvm__ctx *ctx);
+/* The initial moving sites of the convex domain cor (nc corners, counter-clockwise) by an
+ * advancing front in metric space (frontal_sites.c): breadth first from the boundary sites bxy
+ * (nb), each placed point steps one unit metric length along +-d1 and +-d2, d1 the metric's
+ * major eigenvector blended towards the nearest edge's direction where the metric is nearly
+ * isotropic (a cross field, angles modulo 90 degrees), d2 metric-orthogonal to it; a step is
+ * kept when strictly inside the domain, at least 0.6 from every edge and 0.75 from every point
+ * placed (metric lengths at the candidate). At most limit sites. Deterministic: no random
+ * numbers. *xi_out (on ctx, the caller frees) and *ni_out. CVM_OK, the metric's errors,
+ * CVM_E_NOMEM, CVM_E_TOO_LARGE. */
+cvm_status cvm__lpcvt_frontal_sites(double **xi_out, size_t *ni_out, const cvm__metric *mt,
+                                    const double *bxy, size_t nb, const double *cor, size_t nc,
+                                    size_t limit, cvm__ctx *ctx);
 /* Minimise the energy of L over its moving sites xi (ni = L->ns - L->nb, 2 per site, overwritten)
  * with cvm__lbfgs_minimise(); o->length is set from the boundary's bounding box and o->step0 to
  * a quarter of the shortest boundary edge (a first step that moves no site past its

@@ -143,6 +143,166 @@ START_TEST(lpcvt_initial_sites_follow_the_metric_area)
 }
 END_TEST
 
+/* The frontal start reproduces the lattice of metric squares where one exists: the 3 x 3
+ * interior of [0,4]^2 under g = I, and under the constant metric of unit steps 1/2 along
+ * (cos 30, sin 30) and 1/4 across it (a rotated rectangle lattice clipped to a rotated
+ * square); sites strictly inside, the same twice. */
+START_TEST(lpcvt_frontal_sites_reproduce_a_lattice)
+{
+    cvm__metric_builtin b = {CVM__METRIC_IDENTITY, 1, {0, 0, 0}};
+    double corners[8] = {0, 0, 4, 0, 4, 4, 0, 4}, *bxy, *x1, *x2, err = 0;
+    size_t nb, n1, n2, k;
+    cvm_sizing *s;
+    cvm__ctx ctx;
+    cvm__metric mt;
+    cvm__ctx_init_default(&ctx);
+    ck_assert_int_eq(cvm_sizing_create(&s), CVM_OK);
+    cvm_sizing_set_metric_fn(s, cvm__metric_builtin_fn, 1, &b);
+    mt.s = s;
+    mt.bnd = corners;
+    mt.nbnd = 4;
+    ck_assert_int_eq(cvm__boundary_discretise(&bxy, &nb, &mt, corners, 4, &ctx), CVM_OK);
+    ck_assert_int_eq(cvm__lpcvt_frontal_sites(&x1, &n1, &mt, bxy, nb, corners, 4, 1000, &ctx),
+                     CVM_OK);
+    ck_assert_int_eq(cvm__lpcvt_frontal_sites(&x2, &n2, &mt, bxy, nb, corners, 4, 1000, &ctx),
+                     CVM_OK);
+    ck_assert_uint_eq(n1, 9);
+    ck_assert_uint_eq(n2, 9);
+    ck_assert(memcmp(x1, x2, 18 * sizeof *x1) == 0);
+    for (k = 0; k < n1; k++) {
+        err = fmax(err, fabs(x1[2 * k] - floor(x1[2 * k] + 0.5)));
+        err = fmax(err, fabs(x1[2 * k + 1] - floor(x1[2 * k + 1] + 0.5)));
+        ck_assert(x1[2 * k] > 0.5 && x1[2 * k] < 3.5 && x1[2 * k + 1] > 0.5 && x1[2 * k + 1] < 3.5);
+    }
+    ck_assert_msg(err < 1e-12, "off the lattice by %g", err);
+    cvm__free(&ctx, x1);
+    cvm__free(&ctx, x2);
+    cvm__free(&ctx, bxy);
+    {
+        /* g = Q diag(4, 16) Q^T, Q the rotation by 30 degrees; the domain a square of side 3
+         * with the same axes, so the boundary sites lie on the lattice */
+        double c = sqrt(3.0) / 2, sn = 0.5, rc[8], lat[2][2];
+        size_t bad = 0;
+        b.kind = CVM__METRIC_CONSTANT;
+        b.g[0] = 4 * c * c + 16 * sn * sn;
+        b.g[1] = (4 - 16) * c * sn;
+        b.g[2] = 4 * sn * sn + 16 * c * c;
+        rc[0] = 0, rc[1] = 0;
+        rc[2] = 3 * c, rc[3] = 3 * sn;
+        rc[4] = 3 * c - 3 * sn, rc[5] = 3 * sn + 3 * c;
+        rc[6] = -3 * sn, rc[7] = 3 * c;
+        mt.bnd = rc;
+        lat[0][0] = 0.5 * c, lat[0][1] = 0.5 * sn;    /* unit metric step along Q e1 */
+        lat[1][0] = -0.25 * sn, lat[1][1] = 0.25 * c; /* and along Q e2 */
+        ck_assert_int_eq(cvm__boundary_discretise(&bxy, &nb, &mt, rc, 4, &ctx), CVM_OK);
+        ck_assert_int_eq(cvm__lpcvt_frontal_sites(&x1, &n1, &mt, bxy, nb, rc, 4, 1000, &ctx),
+                         CVM_OK);
+        ck_assert_uint_eq(n1, 5 * 11); /* (6 - 1) x (12 - 1) interior lattice points */
+        for (k = 0; k < n1; k++) {
+            /* lattice coordinates: x = i lat0 + j lat1 */
+            double i = (x1[2 * k] * lat[0][0] + x1[2 * k + 1] * lat[0][1]) / 0.25;
+            double j = (x1[2 * k] * lat[1][0] + x1[2 * k + 1] * lat[1][1]) / 0.0625;
+            bad += fabs(i - floor(i + 0.5)) > 1e-9 || fabs(j - floor(j + 0.5)) > 1e-9;
+        }
+        ck_assert_msg(bad == 0, "%zu of %zu sites off the lattice", bad, n1);
+        cvm__free(&ctx, x1);
+        cvm__free(&ctx, bxy);
+    }
+    cvm_sizing_free(s);
+}
+END_TEST
+
+static int identity_metric(double x, double y, double g[3], void *user)
+{
+    (void)x;
+    (void)y;
+    (void)user;
+    g[0] = g[2] = 1;
+    g[1] = 0;
+    return 0;
+}
+
+/* A 7 x 7 grid of unit squares whose interior columns zig-zag by +-0.2 in y: parallelogram
+ * smoothing straightens it back to the lattice (the boundary is fixed), every cell stays
+ * convex, and the lattice itself does not move. The grid is stored with its 32 boundary
+ * points first. */
+static void zigzag_grid(double *xy, int32_t *off, int32_t *types, int32_t *conn, int32_t *id,
+                        double amp)
+{
+    int i, j, nb = 0, ni = 32, c = 0;
+    for (j = 0; j <= 8; j++)
+        for (i = 0; i <= 8; i++) {
+            int b = i == 0 || j == 0 || i == 8 || j == 8;
+            int v = b ? nb++ : ni++;
+            id[j * 9 + i] = v;
+            xy[2 * v] = i;
+            xy[2 * v + 1] = j + (b ? 0 : (i % 2 ? amp : -amp));
+        }
+    for (j = 0; j < 8; j++)
+        for (i = 0; i < 8; i++, c++) {
+            off[c] = 4 * c;
+            types[c] = CVM_CELL_QUAD;
+            conn[4 * c] = id[j * 9 + i];
+            conn[4 * c + 1] = id[j * 9 + i + 1];
+            conn[4 * c + 2] = id[(j + 1) * 9 + i + 1];
+            conn[4 * c + 3] = id[(j + 1) * 9 + i];
+        }
+    off[c] = 4 * c;
+}
+
+START_TEST(quad_smoothing_straightens_a_zigzag_grid)
+{
+    double xy[162], q[64], err = 0;
+    int32_t off[65], types[64], conn[256], id[81];
+    cvm__quad_smooth_in in;
+    cvm__ctx ctx;
+    size_t moves, k;
+    cvm__ctx_init_default(&ctx);
+    zigzag_grid(xy, off, types, conn, id, 0.2);
+    memset(&in, 0, sizeof in);
+    in.nv = 81;
+    in.first_free = 32;
+    in.ncell = 64;
+    in.off = off;
+    in.types = types;
+    in.conn = conn;
+    in.metric = identity_metric;
+    in.sweeps = 1000;
+    in.quality = q;
+    ck_assert_int_eq(cvm__quad_smooth(&ctx, xy, &in, &moves), CVM_OK);
+    ck_assert(moves > 0);
+    for (k = 0; k < 81; k++) {
+        err = fmax(err, fabs(xy[2 * k] - floor(xy[2 * k] + 0.5)));
+        err = fmax(err, fabs(xy[2 * k + 1] - floor(xy[2 * k + 1] + 0.5)));
+    }
+    ck_assert_msg(err < 1e-3, "%g off the lattice after %zu moves", err, moves);
+    for (k = 0; k < 64; k++)
+        ck_assert_msg(q[k] > 0.99, "quad %zu quality %g", k, q[k]);
+    /* the lattice is a fixed point */
+    zigzag_grid(xy, off, types, conn, id, 0);
+    ck_assert_int_eq(cvm__quad_smooth(&ctx, xy, &in, &moves), CVM_OK);
+    ck_assert_uint_eq(moves, 0);
+    /* every allocation may fail: CVM_E_NOMEM and the points unchanged */
+    {
+        cvmtest_alloc a;
+        double before[162];
+        long n;
+        for (n = 1; n <= 2; n++) {
+            zigzag_grid(xy, off, types, conn, id, 0.2);
+            memcpy(before, xy, sizeof before);
+            cvmtest_alloc_init(&a, n, 0);
+            ctx.alloc_fn = cvmtest_malloc;
+            ctx.realloc_fn = cvmtest_realloc;
+            ctx.free_fn = cvmtest_free;
+            ctx.payload = &a;
+            ck_assert_int_eq(cvm__quad_smooth(&ctx, xy, &in, &moves), CVM_E_NOMEM);
+            ck_assert(memcmp(before, xy, sizeof before) == 0);
+            ck_assert_int_eq(a.live_blocks, 0);
+        }
+    }
+}
+END_TEST
+
 static int nan_inside(void *payload, const double *x, int dim, double *g, double *dg)
 {
     (void)payload;
@@ -216,8 +376,13 @@ START_TEST(lpcvt_out_of_memory_sweep)
         mt.nbnd = 4;
         memset(&L, 0, sizeof L);
         st = cvm__boundary_discretise(&bxy, &nb, &mt, corners, 4, &ctx);
-        if (!st)
+        if (!st) /* both starts: the frontal one is the default */
             st = cvm__lpcvt_initial_sites(&xi, &ni, &mt, bxy, nb, 7, &ctx);
+        if (!st) {
+            cvm__free(&ctx, xi);
+            xi = NULL;
+            st = cvm__lpcvt_frontal_sites(&xi, &ni, &mt, bxy, nb, corners, 4, 100000, &ctx);
+        }
         if (!st)
             st = cvm__lpcvt_init(&L, &ctx, s, bxy, nb, ni, 4, 0);
         if (!st) {
@@ -245,6 +410,8 @@ TCase *quad_lpcvt_optimise_tcase(void)
     tcase_set_timeout(tc, 300);
     tcase_add_test(tc, boundary_pieces_have_equal_metric_length);
     tcase_add_test(tc, lpcvt_initial_sites_follow_the_metric_area);
+    tcase_add_test(tc, lpcvt_frontal_sites_reproduce_a_lattice);
+    tcase_add_test(tc, quad_smoothing_straightens_a_zigzag_grid);
     tcase_add_test(tc, lpcvt_bad_metric_is_an_argument_error);
     tcase_add_test(tc, lpcvt_recovers_the_lattice_from_random_starts);
     tcase_add_test(tc, lpcvt_out_of_memory_sweep);

@@ -184,7 +184,7 @@ START_TEST(mean_metric_voronoi_squares_a_constant_anisotropic_metric)
 }
 END_TEST
 
-static void run_saddle(cells *c, int threads, double seed)
+static void run_saddle(cells *c, int threads, double seed, double start)
 {
     cvm_mesh *m;
     cvm_sizing *s;
@@ -195,6 +195,7 @@ static void run_saddle(cells *c, int threads, double seed)
     ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_THREADS, threads), CVM_OK);
     ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_SEED, seed), CVM_OK);
     ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_QUAD_RELOCATIONS, 1), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_QUAD_INITIAL_SITES, start), CVM_OK);
     ck_assert_msg(cvm_mesh_quadmesh(m, s) == CVM_OK, "%s", cvm_mesh_errmsg(m));
     get_cells(c, m);
     cvm_sizing_free(s);
@@ -251,18 +252,24 @@ END_TEST
 
 START_TEST(same_seed_gives_same_bytes_for_1_2_4_threads)
 {
-    cells a, b, c, d;
-    run_saddle(&a, 1, 1);
-    run_saddle(&b, 2, 1);
-    run_saddle(&c, 4, 1);
-    run_saddle(&d, 1, 7);
+    cells a, b, c, d, e, f;
+    run_saddle(&a, 1, 1, 1);
+    run_saddle(&b, 2, 1, 1);
+    run_saddle(&c, 4, 1, 1);
+    run_saddle(&d, 1, 7, 1);
     ck_assert(same_cells(&a, &b));
     ck_assert(same_cells(&a, &c));
-    ck_assert(!same_cells(&a, &d)); /* another seed, another start */
+    ck_assert(!same_cells(&a, &d)); /* another seed, another Halton start */
+    /* the frontal start (the default) has no random numbers: the seed changes nothing */
+    run_saddle(&e, 1, 1, 0);
+    run_saddle(&f, 2, 7, 0);
+    ck_assert(same_cells(&e, &f));
     free_cells(&a);
     free_cells(&b);
     free_cells(&c);
     free_cells(&d);
+    free_cells(&e);
+    free_cells(&f);
 }
 END_TEST
 
@@ -360,6 +367,8 @@ START_TEST(cancel_leaves_a_valid_quad_mesh)
     ck_assert_int_eq(cvm_sizing_create(&s), CVM_OK);
     ck_assert_int_eq(cvm_sizing_set_metric_builtin(s, CVM_METRIC_IDENTITY, 4), CVM_OK);
     set_box(m, 0, 0, 4, 4);
+    /* the Halton start: the frontal one is the lattice itself, converged at once */
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_QUAD_INITIAL_SITES, 1), CVM_OK);
     ck_assert_int_eq(cvm_mesh_set_progress(m, cancel_after, 1, &left), CVM_OK);
     ck_assert_int_eq(cvm_mesh_quadmesh(m, s), CVM_INCOMPLETE_CANCELLED);
     assert_mixed_mesh(m, 0, 0, 4, 4);

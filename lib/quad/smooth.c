@@ -1,0 +1,179 @@
+/* smooth.c - parallelogram smoothing of a quad-dominant mesh: each free vertex moves towards
+ * the mean of the points that would make each of its quads a parallelogram. The rule is
+ * affine invariant, so where the metric is locally constant it acts in metric space, and a
+ * lattice of metric squares is a fixed point; what it removes is the zig-zag of the Lp-CVT
+ * minimisers where the metric varies. A move is kept only when every cell around the vertex
+ * stays strictly convex (exact orientations) and the summed squared metric corner deviation
+ * of its quads drops. */
+#include <math.h>
+#include <string.h>
+
+#include "geom/geom_internal.h"
+#include "geom/measure.h"
+#include "quad_internal.h"
+
+typedef struct qs_work {
+    const cvm__quad_smooth_in *in;
+    double *xy;
+    int32_t *vstart, *vcell; /* CSR: the cells of each vertex */
+} qs_work;
+
+/* 1 when cell c is strictly convex (every corner turns left, exact). */
+static int qs_convex(const qs_work *W, int32_t c)
+{
+    const int32_t *p = W->in->conn + W->in->off[c];
+    int n = (int)(W->in->off[c + 1] - W->in->off[c]), i;
+    for (i = 0; i < n; i++)
+        if (!(cvm__orient2d(W->xy + 2 * p[i], W->xy + 2 * p[(i + 1) % n],
+                            W->xy + 2 * p[(i + 2) % n]) > 0))
+            return 0;
+    return 1;
+}
+
+/* The squared corner deviations from 90 degrees of quad c in the metric at its vertex mean,
+ * summed (radians^2); HUGE_VAL when the metric fails there. */
+static double qs_quad_cost(const qs_work *W, int32_t c)
+{
+    const int32_t *p = W->in->conn + W->in->off[c];
+    double m[2] = {0, 0}, g[3], s = 0;
+    int i;
+    for (i = 0; i < 4; i++) {
+        m[0] += 0.25 * W->xy[2 * p[i]];
+        m[1] += 0.25 * W->xy[2 * p[i] + 1];
+    }
+    if (W->in->metric(m[0], m[1], g, W->in->metric_user))
+        return HUGE_VAL;
+    for (i = 0; i < 4; i++) {
+        const double *a = W->xy + 2 * p[i], *b = W->xy + 2 * p[(i + 1) % 4],
+                     *d = W->xy + 2 * p[(i + 3) % 4];
+        double u0 = b[0] - a[0], u1 = b[1] - a[1], w0 = d[0] - a[0], w1 = d[1] - a[1];
+        double uw = g[0] * u0 * w0 + g[1] * (u0 * w1 + u1 * w0) + g[2] * u1 * w1;
+        double uu = g[0] * u0 * u0 + 2 * g[1] * u0 * u1 + g[2] * u1 * u1;
+        double ww = g[0] * w0 * w0 + 2 * g[1] * w0 * w1 + g[2] * w1 * w1;
+        double t = uw / sqrt(uu * ww), dev = asin(t < -1 ? -1 : t > 1 ? 1 : t); /* 90 - angle */
+        s += dev * dev;
+    }
+    return s;
+}
+
+/* The summed cost of v's quads and 1 when every cell of v is strictly convex. */
+static int qs_star(const qs_work *W, size_t v, double *cost)
+{
+    int32_t k;
+    *cost = 0;
+    for (k = W->vstart[v]; k < W->vstart[v + 1]; k++) {
+        int32_t c = W->vcell[k];
+        if (!qs_convex(W, c))
+            return 0;
+        if (W->in->types[c] == CVM_CELL_QUAD)
+            *cost += qs_quad_cost(W, c);
+    }
+    return 1;
+}
+
+/* The mean of v's parallelogram points into t; 0 when v has no quad. */
+static int qs_target(const qs_work *W, size_t v, double *t)
+{
+    int32_t k, nq = 0;
+    t[0] = t[1] = 0;
+    for (k = W->vstart[v]; k < W->vstart[v + 1]; k++) {
+        int32_t c = W->vcell[k], i;
+        const int32_t *p = W->in->conn + W->in->off[c];
+        if (W->in->types[c] != CVM_CELL_QUAD)
+            continue;
+        for (i = 0; i < 4 && p[i] != (int32_t)v; i++)
+            ;
+        {
+            const double *a = W->xy + 2 * p[(i + 1) % 4], *b = W->xy + 2 * p[(i + 2) % 4],
+                         *d = W->xy + 2 * p[(i + 3) % 4];
+            t[0] += a[0] + d[0] - b[0];
+            t[1] += a[1] + d[1] - b[1];
+            nq++;
+        }
+    }
+    if (nq == 0)
+        return 0;
+    t[0] /= nq;
+    t[1] /= nq;
+    return 1;
+}
+
+cvm_status cvm__quad_smooth(cvm__ctx *ctx, double *xy, const cvm__quad_smooth_in *in,
+                            size_t *moves_out)
+{
+    qs_work W;
+    size_t v, moves = 0;
+    int32_t c, k;
+    int sweep;
+    *moves_out = 0;
+    memset(&W, 0, sizeof W);
+    W.in = in;
+    W.xy = xy;
+    W.vstart = cvm__calloc(ctx, in->nv + 1, sizeof *W.vstart);
+    W.vcell = cvm__malloc(ctx, ((size_t)in->off[in->ncell] + 1) * sizeof *W.vcell);
+    if (!W.vstart || !W.vcell) {
+        cvm__free(ctx, W.vstart);
+        cvm__free(ctx, W.vcell);
+        return cvm__nomem(ctx);
+    }
+    for (k = 0; k < in->off[in->ncell]; k++)
+        W.vstart[in->conn[k] + 1]++;
+    for (v = 0; v < in->nv; v++)
+        W.vstart[v + 1] += W.vstart[v];
+    for (c = 0; c < (int32_t)in->ncell; c++)
+        for (k = in->off[c]; k < in->off[c + 1]; k++)
+            W.vcell[W.vstart[in->conn[k]]++] = c;
+    for (v = in->nv; v > 0; v--)
+        W.vstart[v] = W.vstart[v - 1];
+    W.vstart[0] = 0;
+    for (sweep = 0; sweep < in->sweeps; sweep++) {
+        size_t moved = 0;
+        for (v = in->first_free; v < in->nv; v++) {
+            double t[2], old[2], before, after;
+            int j;
+            if (!qs_target(&W, v, t) || !qs_star(&W, v, &before))
+                continue;
+            old[0] = xy[2 * v];
+            old[1] = xy[2 * v + 1];
+            /* the full step, then halves: the first that keeps the star convex and cheaper */
+            for (j = 0; j < 3; j++) {
+                double f = ldexp(1.0, -j);
+                xy[2 * v] = old[0] + f * (t[0] - old[0]);
+                xy[2 * v + 1] = old[1] + f * (t[1] - old[1]);
+                if (qs_star(&W, v, &after) && after < before)
+                    break;
+            }
+            if (j == 3) {
+                xy[2 * v] = old[0];
+                xy[2 * v + 1] = old[1];
+            } else {
+                moved++;
+            }
+        }
+        moves += moved;
+        if (moved == 0)
+            break;
+    }
+    cvm__free(ctx, W.vstart);
+    cvm__free(ctx, W.vcell);
+    *moves_out = moves;
+    for (c = 0; in->quality && c < (int32_t)in->ncell; c++) {
+        const int32_t *p = in->conn + in->off[c];
+        double m[2] = {0, 0}, g[3], worst = 0;
+        int i;
+        if (in->types[c] != CVM_CELL_QUAD)
+            continue;
+        for (i = 0; i < 4; i++) {
+            m[0] += 0.25 * xy[2 * p[i]];
+            m[1] += 0.25 * xy[2 * p[i] + 1];
+        }
+        if (in->metric(m[0], m[1], g, in->metric_user))
+            return cvm__error(ctx, CVM_E_ARGUMENT, CVM_ENT_NONE, -1,
+                              "smoothing: the metric refused the point (%g, %g)", m[0], m[1]);
+        for (i = 0; i < 4; i++)
+            worst = fmax(worst, fabs(cvm__metric_angle_deg(g, xy + 2 * p[i], xy + 2 * p[(i + 3) % 4],
+                                                           xy + 2 * p[(i + 1) % 4]) - 90));
+        in->quality[c] = 1 - worst / 90;
+    }
+    return CVM_OK;
+}
