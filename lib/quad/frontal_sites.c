@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "geom/measure.h"
 #include "quad_internal.h"
 
 /* Metric distance below which a candidate is refused: from the points placed (1 on a lattice,
@@ -16,6 +17,9 @@
 /* Anisotropy (lam0 - lam1) / (lam0 + lam1) from which the eigenvectors alone set the frame;
  * below it the frame blends towards the nearest edge's direction. */
 #define FS_ANISO_FULL 0.05
+/* A boundary site seeds the first front when its frame is within this many degrees of the
+ * boundary's direction. */
+#define FS_SEED_DEG 5.0
 
 typedef struct fs_state {
     const cvm__metric *mt;
@@ -153,13 +157,37 @@ static cvm_status fs_step(const fs_state *S, const double *p, const double *dir,
     return CVM_OK;
 }
 
+/* *al = 1 when the frame at boundary site k of bxy is within FS_SEED_DEG of the boundary's
+ * direction on both sides of the site (modulo 90 degrees). */
+static cvm_status fs_aligned(const fs_state *S, const double *bxy, size_t nb, size_t k, int *al)
+{
+    const double *p = bxy + 2 * k, *a = bxy + 2 * ((k + nb - 1) % nb), *b = bxy + 2 * ((k + 1) % nb);
+    double d[2][2], fr, e1, e2, t1, t2;
+    cvm_status st = fs_frame(S, p, d);
+    *al = 0;
+    if (st)
+        return st;
+    fr = atan2(d[0][1], d[0][0]);
+    e1 = atan2(p[1] - a[1], p[0] - a[0]);
+    e2 = atan2(b[1] - p[1], b[0] - p[0]);
+    /* the angle between two directions modulo 90 degrees, in [0, 45] */
+    t1 = fmod(fabs(fr - e1), 0.5 * CVM__PI);
+    t2 = fmod(fabs(fr - e2), 0.5 * CVM__PI);
+    t1 = fmin(t1, 0.5 * CVM__PI - t1);
+    t2 = fmin(t2, 0.5 * CVM__PI - t2);
+    *al = t1 <= FS_SEED_DEG * CVM__PI / 180 && t2 <= FS_SEED_DEG * CVM__PI / 180;
+    return CVM_OK;
+}
+
 cvm_status cvm__lpcvt_frontal_sites(double **xi_out, size_t *ni_out, const cvm__metric *mt,
                                     const double *bxy, size_t nb, const double *cor, size_t nc,
                                     size_t limit, cvm__ctx *ctx)
 {
     fs_state S;
     double hi[2], A, rmax, area = 0;
-    size_t k, q, ncell;
+    size_t k, q, ncell, nq = 0, qcap;
+    int32_t *qu = NULL;
+    int phase;
     cvm_status st;
     *xi_out = NULL;
     *ni_out = 0;
@@ -198,12 +226,42 @@ cvm_status cvm__lpcvt_frontal_sites(double **xi_out, size_t *ni_out, const cvm__
         S.head[k] = -1;
     for (k = 0; k < nb && !st; k++)
         st = fs_add(&S, bxy + 2 * k);
-    /* the placed points are the queue: breadth first from the boundary */
-    for (q = 0; q < S.n && !st; q++) {
+    /* breadth first: from the boundary sites where the frame follows the boundary first, so
+     * the lattice grows along the frame field instead of copying the boundary's direction
+     * where the two disagree; then from the other boundary sites, into what is left */
+    qcap = 0;
+    if (cvm__grow(ctx, (void **)&qu, &qcap, nb + 1, sizeof *qu)) {
+        st = cvm__nomem(ctx);
+    }
+    for (k = 0; k < nb && !st; k++) {
+        int al;
+        if ((st = fs_aligned(&S, bxy, nb, k, &al)))
+            break;
+        if (al)
+            qu[nq++] = (int32_t)k;
+    }
+    phase = nq > 0 ? 0 : 1;
+    for (q = 0; !st; q++) {
         double d[2][2], p[2];
         int j;
-        p[0] = S.xy[2 * q];
-        p[1] = S.xy[2 * q + 1];
+        if (q == nq) {
+            if (phase == 1)
+                break;
+            phase = 1; /* the boundary sites not taken yet */
+            for (k = 0; k < nb && !st; k++) {
+                int al;
+                if ((st = fs_aligned(&S, bxy, nb, k, &al)))
+                    break;
+                if (!al && cvm__grow(ctx, (void **)&qu, &qcap, nq + 1, sizeof *qu))
+                    st = cvm__nomem(ctx);
+                else if (!al)
+                    qu[nq++] = (int32_t)k;
+            }
+            if (st || q == nq)
+                break;
+        }
+        p[0] = S.xy[2 * (size_t)qu[q]];
+        p[1] = S.xy[2 * (size_t)qu[q] + 1];
         if ((st = fs_frame(&S, p, d)))
             break;
         for (j = 0; j < 4 && !st; j++) {
@@ -220,9 +278,15 @@ cvm_status cvm__lpcvt_frontal_sites(double **xi_out, size_t *ni_out, const cvm__
                 continue;
             if (S.n - nb >= limit)
                 break;
+            if (cvm__grow(ctx, (void **)&qu, &qcap, nq + 1, sizeof *qu)) {
+                st = cvm__nomem(ctx);
+                break;
+            }
+            qu[nq++] = (int32_t)S.n;
             st = fs_add(&S, c);
         }
     }
+    cvm__free(ctx, qu);
     cvm__free(ctx, S.head);
     cvm__free(ctx, S.next);
     if (st) {
