@@ -979,7 +979,16 @@ typedef enum cvm_option {
      *  deviations of its quads drop. The sites are then triangulated again, so the
      *  triangles stay the Delaunay triangulation of the final sites; the quads and
      *  triangles of the mixed cells keep their vertices. @since 0.2 */
-    CVM_OPT_QUAD_SMOOTH = 811
+    CVM_OPT_QUAD_SMOOTH = 811,
+    /** All-quad output, integer, default 0, bounds [0, 1]: 1 runs the Lp-CVT and the
+     *  recombination in the metric g / 4 (cells twice the size), then splits each quad
+     *  into 4 and each remaining triangle into 3 quads through its vertex centroid and
+     *  its edge midpoints, so every cell is a quad of about unit metric size. The new
+     *  points join the sites and the triangles (CVM_ENT_TRIANGLE) are their Delaunay
+     *  triangulation; smoothing (CVM_OPT_QUAD_SMOOTH) then applies to the split cells.
+     *  Needs a recombination (CVM_OPT_QUAD_RECOMBINE 0 or 1; 2 gives CVM_E_ARGUMENT).
+     *  @since 0.2 */
+    CVM_OPT_QUAD_ALL_QUAD = 812
     /* ---- 1000 and up: experimental (include/cvmesh_experimental.h) ---- */
 } cvm_option;
 

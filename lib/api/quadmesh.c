@@ -10,6 +10,7 @@
 #endif
 
 #include "api_internal.h"
+#include "quadmesh_internal.h"
 #include "store.h"
 #include "geom/geom_internal.h"
 #include "quad/quad_internal.h"
@@ -142,162 +143,6 @@ fail:
     return s;
 }
 
-/* The sites as the triangulation of m: the input points (so they keep their vertex numbers),
- * the new boundary points of bxy (the loop's vertices are its corners, met in order), the
- * interior sites xi that lie strictly inside; segments along bxy with the markers of the loop's
- * input segments. *kept_out: interior sites kept. */
-static cvm_status build_triangulation(cvm_mesh *m, const int32_t *loop, const int32_t *lseg,
-                                      size_t nc, const double *bxy, size_t nb, const double *xi,
-                                      size_t ni, size_t *kept_out)
-{
-    const cvm__pslg *P = &m->in;
-    size_t np = P->np, na = P->nattr, nv = cvm__store_nv(m), total, k, c = 0, nnew = 0, kept = 0;
-    int32_t *v2in = NULL, *seg = NULL, *smark = NULL, *pmark = NULL, *bid = NULL, *pseg = NULL;
-    double *xy = NULL, *pattr = NULL;
-    cvm__cdt_input in;
-    cvm__cdt_out out;
-    cvm__cdt_fault f;
-    cvm_status s;
-    total = np + nb + ni;
-    v2in = cvm__malloc(&m->ctx, (nv + 1) * sizeof *v2in);
-    bid = cvm__malloc(&m->ctx, (nb + 1) * sizeof *bid);
-    xy = cvm__malloc(&m->ctx, (2 * total + 1) * sizeof *xy);
-    seg = cvm__malloc(&m->ctx, (2 * nb + 1) * sizeof *seg);
-    smark = cvm__malloc(&m->ctx, (nb + 1) * sizeof *smark);
-    pseg = cvm__malloc(&m->ctx, (nb + 1) * sizeof *pseg);
-    pmark = cvm__malloc(&m->ctx, (total + 1) * sizeof *pmark);
-    pattr = na ? cvm__malloc(&m->ctx, (total * na + 1) * sizeof *pattr) : NULL;
-    if (!v2in || !bid || !xy || !seg || !smark || !pseg || !pmark || (na && !pattr)) {
-        s = cvm__nomem(&m->ctx);
-        goto done;
-    }
-    for (k = 0; k < nv; k++)
-        v2in[k] = -1;
-    for (k = np; k-- > 0;)
-        if (m->input_map[k] >= 0)
-            v2in[m->input_map[k]] = (int32_t)k;
-    memcpy(xy, P->xy, 2 * np * sizeof *xy);
-    for (k = 0; k < np; k++)
-        pmark[k] = P->pmark ? P->pmark[k] : 0;
-    if (na)
-        memcpy(pattr, P->pattr, np * na * sizeof *pattr);
-    /* boundary points: corner c of the loop where bxy repeats its coordinates exactly */
-    for (k = 0; k < nb; k++) {
-        const double *p = bxy + 2 * k;
-        const double *q = cvm__store_point(m, (size_t)loop[c % nc]);
-        if (c < nc && p[0] == q[0] && p[1] == q[1]) {
-            bid[k] = v2in[loop[c]];
-            c++;
-            if (bid[k] < 0) {
-                s = cvm__error(&m->ctx, CVM_E_UNSUPPORTED, CVM_ENT_VERTEX, loop[c - 1],
-                               "cvm_mesh_quadmesh: boundary vertex %ld (%.17g, %.17g) is not an "
-                               "input point (segments cross there)", (long)loop[c - 1], q[0], q[1]);
-                goto done;
-            }
-            continue;
-        }
-        {   /* a new point on the loop edge from corner c - 1 to corner c */
-            const double *a = cvm__store_point(m, (size_t)loop[(c + nc - 1) % nc]);
-            size_t id = np + nnew++, j;
-            int32_t ia = v2in[loop[(c + nc - 1) % nc]], ib = v2in[loop[c % nc]];
-            double e0 = q[0] - a[0], e1 = q[1] - a[1];
-            double tpar = (e0 * (p[0] - a[0]) + e1 * (p[1] - a[1])) / (e0 * e0 + e1 * e1);
-            bid[k] = (int32_t)id;
-            xy[2 * id] = p[0];
-            xy[2 * id + 1] = p[1];
-            pmark[id] = cvm__segment_marker(m, lseg[(c + nc - 1) % nc]);
-            for (j = 0; j < na; j++)
-                pattr[id * na + j] = (1 - tpar) * P->pattr[(size_t)ia * na + j] +
-                                     tpar * P->pattr[(size_t)ib * na + j];
-        }
-    }
-    if (c != nc) {
-        s = cvm__error(&m->ctx, CVM_E_INTERNAL, CVM_ENT_NONE, -1,
-                       "cvm_mesh_quadmesh: %lu of %lu boundary corners found among the boundary "
-                       "points", (unsigned long)c, (unsigned long)nc);
-        goto done;
-    }
-    /* segments: bxy point k to k + 1, on the loop edge of the last corner met */
-    for (k = 0, c = 0; k < nb; k++) {
-        const double *p = bxy + 2 * k;
-        const double *q = cvm__store_point(m, (size_t)loop[c % nc]);
-        if (c < nc && p[0] == q[0] && p[1] == q[1])
-            c++;
-        seg[2 * k] = bid[k];
-        seg[2 * k + 1] = bid[(k + 1) % nb];
-        pseg[k] = lseg[(c + nc - 1) % nc];
-        smark[k] = cvm__segment_marker(m, pseg[k]);
-    }
-    for (k = 0; k < ni; k++) {
-        size_t id = np + nnew + kept;
-        if (!cvm__lpcvt_inside_polygon(bxy, nb, xi + 2 * k))
-            continue;
-        xy[2 * id] = xi[2 * k];
-        xy[2 * id + 1] = xi[2 * k + 1];
-        pmark[id] = 0;
-        if (na)
-            memset(pattr + id * na, 0, na * sizeof *pattr);
-        kept++;
-    }
-    memset(&in, 0, sizeof in);
-    cvm__mesh_cdt_input(&in, m, P);
-    in.xy = xy;
-    in.np = np + nnew + kept;
-    in.pmark = pmark;
-    in.pattr = pattr;
-    in.seg = seg;
-    in.nseg = nb;
-    in.smark = smark;
-    in.reject_duplicates = 0;
-    in.keep_hull = 0;
-    cvm__mesh_drop_output(m);
-    memset(&out, 0, sizeof out);
-    memset(&f, 0, sizeof f);
-    out.vmark = m->vmark;
-    out.vattr = m->vattr;
-    out.cap_vmark = m->cap_vmark;
-    out.cap_vattr = m->cap_vattr;
-    s = cvm__cdt_build(cvm__store_tri2(m), &in, &out, &f);
-    m->input_map = out.input_map;
-    m->n_dup = out.n_dup;
-    m->vmark = out.vmark;
-    m->vattr = out.vattr;
-    m->cap_vmark = out.cap_vmark;
-    m->cap_vattr = out.cap_vattr;
-    if (!s) /* the pieces name the input segments they lie on */
-        cvm__store_remap_segments(m, pseg, nb);
-    if (s)
-        s = f.kind == CVM__CDT_FAULT_NONE
-                ? s
-                : cvm__error(&m->ctx, CVM_E_INTERNAL, CVM_ENT_NONE, -1,
-                             "cvm_mesh_quadmesh: the triangulation of the sites failed (fault %d "
-                             "at item %lu)", (int)f.kind, (unsigned long)f.item);
-    *kept_out = kept;
-done:
-    cvm__free(&m->ctx, v2in);
-    cvm__free(&m->ctx, bid);
-    cvm__free(&m->ctx, xy);
-    cvm__free(&m->ctx, seg);
-    cvm__free(&m->ctx, smark);
-    cvm__free(&m->ctx, pseg);
-    cvm__free(&m->ctx, pmark);
-    cvm__free(&m->ctx, pattr);
-    return s;
-}
-
-typedef struct metric_cb {
-    const cvm__metric *mt;
-    cvm__ctx *ctx;
-} metric_cb;
-
-static int recombine_metric(double x, double y, double g[3], void *user)
-{
-    const metric_cb *cb = (const metric_cb *)user;
-    double p[2];
-    p[0] = x;
-    p[1] = y;
-    return cvm__metric_eval(cb->mt, p, g, NULL, cb->ctx) != CVM_OK;
-}
 
 typedef struct qm_side {
     uint64_t key; /* lo << 32 | hi of the side's two points */
@@ -380,14 +225,17 @@ static cvm_status flip_in_metric(cvm_mesh *m, int32_t *tri, size_t nt, const dou
 }
 
 /* The domain triangles of m as the mixed cells (recombined unless CVM_OPT_QUAD_RECOMBINE 2). */
-static cvm_status make_cells(cvm_mesh *m, const cvm__metric *mt, const double *M0)
+/* The mixed cells of m's triangles. With all-quad, *split_xy (on m's ctx; the caller frees) and
+ * *split_n receive the points the cells then refer to: m's points, then the new ones. */
+static cvm_status make_cells(cvm_mesh *m, const cvm__metric *mt, const double *M0,
+                             double **split_xy, size_t *split_n)
 {
     size_t nt = 0, k;
     int32_t t, *tri = NULL;
     cvm__quad_cells *q;
     cvm__recombine_in in;
     cvm__recombine_out out;
-    metric_cb cb;
+    cvm__qm_metric_cb cb;
     int method = (int)cvm__opt(m, CVM_OPT_QUAD_RECOMBINE);
     cvm_status s = CVM_OK;
     memset(&out, 0, sizeof out);
@@ -435,10 +283,11 @@ static cvm_status make_cells(cvm_mesh *m, const cvm__metric *mt, const double *M
     in.xy = cvm__store_points(m);
     in.ntri = nt;
     in.tri = tri;
-    in.metric = recombine_metric;
+    in.metric = cvm__qm_metric_at;
     in.metric_user = &cb;
     in.min_quality = cvm__opt(m, CVM_OPT_QUAD_MIN_QUALITY);
     in.method = method == 1 ? CVM__RECOMBINE_GREEDY : CVM__RECOMBINE_BLOSSOM;
+    in.all_quad = cvm__opt(m, CVM_OPT_QUAD_ALL_QUAD) != 0;
     s = cvm__recombine(&out, &m->ctx, &in);
     cvm__free(&m->ctx, tri);
     if (s)
@@ -449,72 +298,14 @@ static cvm_status make_cells(cvm_mesh *m, const cvm__metric *mt, const double *M
     q->types = out.types;
     q->conn = out.conn;
     q->first = cvm__malloc(&m->ctx, (out.ncell + 1) * sizeof *q->first);
-    if (q->first)
+    if (q->first) /* all-quad: one region, and at least as many new triangles as cells */
         for (k = 0; k < out.ncell; k++)
-            q->first[k] = out.source[2 * k];
+            q->first[k] = in.all_quad ? (int32_t)k : out.source[2 * k];
     q->quality = out.quality;
     cvm__free(&m->ctx, out.source);
-    cvm__free(&m->ctx, out.xy);
+    *split_xy = out.xy;
+    *split_n = out.npts;
     return q->first ? CVM_OK : cvm__nomem(&m->ctx);
-}
-
-/* CVM_OPT_QUAD_SMOOTH: smooth the interior sites of the cells made, then triangulate the
- * sites again (the cells keep their vertex numbers). Skipped when the interior sites are not
- * the last kept vertices in xi's order (a site merged with another). */
-static cvm_status smooth_cells(cvm_mesh *m, const cvm__metric *mt, const int32_t *loop,
-                               const int32_t *lseg, size_t nc, const double *bxy, size_t nb,
-                               const double *xi, size_t ni, size_t kept)
-{
-    size_t nv = cvm__store_nv(m), first = nv - kept, k, j = 0, moves, again;
-    cvm__quad_cells *q = m->quad;
-    cvm__quad_smooth_in in;
-    metric_cb cb;
-    double *xy;
-    cvm_status s;
-    if (kept > nv)
-        return CVM_OK;
-    for (k = 0; k < ni; k++) {
-        const double *p;
-        if (!cvm__lpcvt_inside_polygon(bxy, nb, xi + 2 * k))
-            continue;
-        p = cvm__store_point(m, first + j++);
-        if (p[0] != xi[2 * k] || p[1] != xi[2 * k + 1])
-            return CVM_OK;
-    }
-    xy = cvm__malloc(&m->ctx, (2 * nv + 1) * sizeof *xy);
-    if (!xy)
-        return cvm__nomem(&m->ctx);
-    memcpy(xy, cvm__store_points(m), 2 * nv * sizeof *xy);
-    cb.mt = mt;
-    cb.ctx = &m->ctx;
-    memset(&in, 0, sizeof in);
-    in.nv = nv;
-    in.first_free = first;
-    in.ncell = q->ncell;
-    in.off = q->off;
-    in.types = q->types;
-    in.conn = q->conn;
-    in.metric = recombine_metric;
-    in.metric_user = &cb;
-    in.sweeps = (int)cvm__opt(m, CVM_OPT_QUAD_SMOOTH);
-    in.quality = q->quality;
-    if ((s = cvm__quad_smooth(&m->ctx, xy, &in, &moves)) || moves == 0) {
-        cvm__free(&m->ctx, xy);
-        return s;
-    }
-    m->quad = NULL; /* kept through the new triangulation, which drops the output */
-    s = build_triangulation(m, loop, lseg, nc, bxy, nb, xy + 2 * first, kept, &again);
-    m->quad = q;
-    cvm__free(&m->ctx, xy);
-    if (!s && (again != kept || cvm__store_nv(m) != nv))
-        s = cvm__error(&m->ctx, CVM_E_INTERNAL, CVM_ENT_NONE, -1,
-                       "cvm_mesh_quadmesh: %lu of %lu smoothed sites kept",
-                       (unsigned long)again, (unsigned long)kept);
-    if (!s) {
-        m->triangulated = 1;
-        m->nv_triangulated = cvm__store_nv(m);
-    }
-    return s;
 }
 
 /* CVM_OPT_QUAD_MEAN_METRIC_VORONOI: the sites are optimised in z = M0 x, where the metric is
@@ -597,11 +388,34 @@ static int thread_count(const cvm_mesh *m)
     return n < 1 ? 1 : n;
 }
 
+/* CVM_OPT_QUAD_ALL_QUAD: a metric callback times 1/4 (edges twice as long before the split). */
+typedef struct qm_scaled {
+    cvm_metric_fn fn;
+    void *payload;
+} qm_scaled;
+
+static int scaled_fn(void *payload, const double *x, int dim, double *g, double *dg)
+{
+    const qm_scaled *w = (const qm_scaled *)payload;
+    int r = w->fn(w->payload, x, dim, g, dg), k;
+    for (k = 0; k < 3; k++)
+        g[k] *= 0.25;
+    for (k = 0; dg && k < 6; k++)
+        dg[k] *= 0.25;
+    return r;
+}
+
 cvm_status cvm_mesh_quadmesh(cvm_mesh *m, const cvm_sizing *metric)
 {
     double t0 = cvm__now(), *bxy = NULL, *xi = NULL, *corners = NULL, *zb = NULL, M0[4], A[4];
+    double *split_xy = NULL;
+    size_t split_n = 0;
     int mapped = 0;
-    cvm_sizing zs;
+    cvm_sizing zs, hs;
+    cvm__metric_builtin hb;
+    qm_scaled hw;
+    const cvm_sizing *metric0 = metric;
+    cvm__metric mt0;
     cvm__metric_builtin zc;
     qm_pullback pb;
     int32_t *loop = NULL, *lseg = NULL;
@@ -624,6 +438,25 @@ cvm_status cvm_mesh_quadmesh(cvm_mesh *m, const cvm_sizing *metric)
         return cvm__error(&m->ctx, CVM_E_STATE, CVM_ENT_NONE, -1,
                           "the sizing has no metric: set one with cvm_sizing_set_metric_fn(), "
                           "cvm_sizing_set_metric_builtin() or cvm_sizing_set_metric_constant()");
+    if (cvm__opt(m, CVM_OPT_QUAD_ALL_QUAD) != 0) {
+        if (cvm__opt(m, CVM_OPT_QUAD_RECOMBINE) == 2)
+            return cvm__error(&m->ctx, CVM_E_ARGUMENT, CVM_ENT_NONE, -1,
+                              "CVM_OPT_QUAD_ALL_QUAD splits the cells of a recombination; "
+                              "CVM_OPT_QUAD_RECOMBINE is 2 (none)");
+        /* the mesh before the split at twice the size: g / 4 */
+        hs = *metric;
+        if (metric->metric == cvm__metric_builtin_fn) {
+            hb = *(const cvm__metric_builtin *)metric->metric_payload;
+            hb.scale *= 0.25;
+            hs.metric_payload = &hb;
+        } else {
+            hw.fn = metric->metric;
+            hw.payload = metric->metric_payload;
+            hs.metric = scaled_fn;
+            hs.metric_payload = &hw;
+        }
+        metric = &hs;
+    }
     memset(&L, 0, sizeof L);
     memset(&res, 0, sizeof res);
     if ((s = cvm_mesh_triangulate(m)) != CVM_OK)
@@ -641,6 +474,8 @@ cvm_status cvm_mesh_quadmesh(cvm_mesh *m, const cvm_sizing *metric)
     mt.s = metric;
     mt.bnd = corners;
     mt.nbnd = nc;
+    mt0 = mt; /* the measures: the metric as given */
+    mt0.s = metric0;
     if ((s = cvm__boundary_discretise(&bxy, &nb, &mt, corners, nc, &m->ctx)) ||
         (s = cvm__opt(m, CVM_OPT_QUAD_INITIAL_SITES) == 0
                  ? cvm__lpcvt_frontal_sites(&xi, &ni, &mt, bxy, nb, corners, nc,
@@ -724,16 +559,32 @@ cvm_status cvm_mesh_quadmesh(cvm_mesh *m, const cvm_sizing *metric)
     progress_fn = m->ctx.progress_fn;
     m->ctx.progress_fn = NULL;
     cvm__run_begin(&m->ctx, 0);
-    s = build_triangulation(m, loop, lseg, nc, bxy, nb, xi, ni, &kept);
+    s = cvm__qm_triangulate_sites(m, loop, lseg, nc, bxy, nb, xi, ni, &kept);
     if (!s) {
         m->triangulated = 1;
         m->nv_triangulated = cvm__store_nv(m);
-        s = make_cells(m, &mt, mapped ? M0 : NULL);
+        s = make_cells(m, &mt, mapped ? M0 : NULL, &split_xy, &split_n);
+    }
+    if (!s && split_xy) { /* all-quad: the new points join the sites, triangulated again */
+        double *bxy2 = NULL, *xi2 = NULL;
+        size_t nb2 = 0, ni2 = 0;
+        s = cvm__qm_adopt_split(m, loop, lseg, nc, bxy, nb, kept, split_xy, split_n, &bxy2, &nb2,
+                                &xi2, &ni2, &kept);
+        cvm__free(&m->ctx, split_xy);
+        split_xy = NULL;
+        if (!s) {
+            cvm__free(&m->ctx, bxy);
+            cvm__free(&m->ctx, xi);
+            bxy = bxy2;
+            nb = nb2;
+            xi = xi2;
+            ni = ni2;
+        }
     }
     if (!s && m->quad && cvm__opt(m, CVM_OPT_QUAD_SMOOTH) > 0)
-        s = smooth_cells(m, &mt, loop, lseg, nc, bxy, nb, xi, ni, kept);
+        s = cvm__qm_smooth_cells(m, &mt, loop, lseg, nc, bxy, nb, xi, ni, kept);
     if (!s)
-        s = cvm__quad_measures(m->quad_report, &mt, cvm__store_points(m), m->quad->ncell,
+        s = cvm__quad_measures(m->quad_report, &mt0, cvm__store_points(m), m->quad->ncell,
                                m->quad->off, m->quad->types, m->quad->conn, &m->ctx);
     m->ctx.progress_fn = progress_fn;
     if (s)
@@ -770,6 +621,7 @@ done:
     cvm__free(&m->ctx, xi);
     cvm__free(&m->ctx, corners);
     cvm__free(&m->ctx, zb);
+    cvm__free(&m->ctx, split_xy);
     cvm__free(&m->ctx, loop);
     cvm__free(&m->ctx, lseg);
     return s;

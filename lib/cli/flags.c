@@ -109,6 +109,8 @@ static const cli_option_flag k_flags[] = {
      "start: a metric-aligned front from the boundary (default) or density samples"},
     {"--smooth", "N", CVM_OPT_QUAD_SMOOTH, 0, QUA,
      "sweeps of parallelogram smoothing after the recombination (default 200)"},
+    {"--all-quad", NULL, CVM_OPT_QUAD_ALL_QUAD, 1, QUA,
+     "split every cell into quads (a quad into 4, a triangle into 3) at the metric's size"},
 };
 
 /* Flags whose value is a word: the word -> the option value. */

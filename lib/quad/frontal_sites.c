@@ -240,7 +240,7 @@ cvm_status cvm__lpcvt_frontal_sites(double **xi_out, size_t *ni_out, const cvm__
         if (al)
             qu[nq++] = (int32_t)k;
     }
-    phase = nq > 0 ? 0 : 1;
+    phase = 0;
     for (q = 0; !st; q++) {
         double d[2][2], p[2];
         int j;

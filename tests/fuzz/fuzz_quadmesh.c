@@ -111,6 +111,7 @@ static void run(out *o, const double *poly, int nh, const uint8_t *data, size_t 
     /* the seed's high bits: the start and the smoothing (both starts, with and without) */
     cvm_mesh_set_option(m, CVM_OPT_QUAD_INITIAL_SITES, (byte_at(data, size, 4) >> 7) & 1);
     cvm_mesh_set_option(m, CVM_OPT_QUAD_SMOOTH, (byte_at(data, size, 4) >> 6) & 1 ? 0 : 200);
+    cvm_mesh_set_option(m, CVM_OPT_QUAD_ALL_QUAD, (byte_at(data, size, 4) >> 5) & 1);
     o->st = cvm_mesh_quadmesh(m, s);
     if (o->st != CVM_OK) {
         FUZZ_REQUIRE(cvm_status_is_error(o->st) && cvm_mesh_errmsg(m)[0] != '\0',

@@ -207,6 +207,22 @@ START_TEST(lpcvt_frontal_sites_reproduce_a_lattice)
         ck_assert_msg(bad == 0, "%zu of %zu sites off the lattice", bad, n1);
         cvm__free(&ctx, x1);
         cvm__free(&ctx, bxy);
+        /* the same metric in the axis-aligned [0,4]^2: no boundary site follows the frame, the
+         * front still fills the domain (about the metric area's count of sites) */
+        mt.bnd = corners;
+        {
+            double A, rmax;
+            ck_assert_int_eq(cvm__boundary_discretise(&bxy, &nb, &mt, corners, 4, &ctx), CVM_OK);
+            ck_assert_int_eq(cvm__metric_area(&A, &rmax, &mt, corners, 4, &ctx), CVM_OK);
+            ck_assert_int_eq(cvm__lpcvt_frontal_sites(&x1, &n1, &mt, bxy, nb, corners, 4, 10000,
+                                                      &ctx), CVM_OK);
+            A = A - 0.5 * (double)nb + 1;
+            ck_assert_msg(fabs((double)n1 - A) <= 0.15 * A, "%zu sites, the area asks for %g", n1, A);
+            for (k = 0; k < n1; k++)
+                ck_assert(x1[2 * k] > 0 && x1[2 * k] < 4 && x1[2 * k + 1] > 0 && x1[2 * k + 1] < 4);
+            cvm__free(&ctx, x1);
+            cvm__free(&ctx, bxy);
+        }
     }
     cvm_sizing_free(s);
 }

@@ -273,6 +273,68 @@ START_TEST(same_seed_gives_same_bytes_for_1_2_4_threads)
 }
 END_TEST
 
+/* CVM_OPT_QUAD_ALL_QUAD: on g = I over [0,4]^2 the mesh at twice the size is 2 x 2 quads, split
+ * into the 4 x 4 unit lattice; on the saddle every cell is a quad, conforming and convex, and
+ * the triangles are the Delaunay triangulation of all the points (cvm_mesh_check()). Without a
+ * recombination the option is refused. */
+START_TEST(all_quad_splits_every_cell_at_the_metric_size)
+{
+    cvm_mesh *m;
+    cvm_sizing *s;
+    size_t nq, nc = 0, nconn = 0;
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvm_sizing_create(&s), CVM_OK);
+    ck_assert_int_eq(cvm_sizing_set_metric_builtin(s, CVM_METRIC_IDENTITY, 1), CVM_OK);
+    set_box(m, 0, 0, 4, 4);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_QUAD_ALL_QUAD, 1), CVM_OK);
+    ck_assert_msg(cvm_mesh_quadmesh(m, s) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    ck_assert_uint_eq(assert_mixed_mesh(m, 0, 0, 4, 4), 16);
+    ck_assert_double_eq(report(m, CVM_REPORT_QUAD_PCT), 100);
+    ck_assert_double_eq(report(m, CVM_REPORT_QUAD_UNIT_EDGE_PCT), 100);
+    ck_assert(report(m, CVM_REPORT_QUAD_ANGLE_DEV_MAX_DEG) < 1e-5);
+    ck_assert_int_eq(cvm_sizing_set_metric_builtin(s, CVM_METRIC_SADDLE, 36), CVM_OK);
+    set_box(m, -1.3, -1.3, 1.3, 1.3);
+    ck_assert_msg(cvm_mesh_quadmesh(m, s) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    nq = assert_mixed_mesh(m, -1.3, -1.3, 1.3, 1.3);
+    ck_assert_int_eq(cvm_mesh_count_cells_mixed(&nc, &nconn, m, CVM_ENT_CELL), CVM_OK);
+    ck_assert_uint_eq(nq, nc);
+    ck_assert_double_eq(report(m, CVM_REPORT_QUAD_PCT), 100);
+    ck_assert_msg(report(m, CVM_REPORT_QUAD_UNIT_EDGE_PCT) >= 70, "%g%% unit edges",
+                  report(m, CVM_REPORT_QUAD_UNIT_EDGE_PCT));
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_QUAD_RECOMBINE, 2), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_quadmesh(m, s), CVM_E_ARGUMENT);
+    ck_assert_ptr_nonnull(strstr(cvm_mesh_errmsg(m), "ALL_QUAD"));
+    cvm_sizing_free(s);
+    cvm_mesh_free(m);
+}
+END_TEST
+
+/* CVM_OPT_QUAD_SMOOTH on the stretch box: the Lp-CVT's zig-zag rows straightened, so the
+ * corner deviation drops by half or more, with the mesh conforming, every cell convex and
+ * the triangles Delaunay (cvm_mesh_check()). */
+START_TEST(smoothing_straightens_the_stretch_rows)
+{
+    cvm_mesh *m;
+    cvm_sizing *s;
+    double dev0, dev1;
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvm_sizing_create(&s), CVM_OK);
+    ck_assert_int_eq(cvm_sizing_set_metric_builtin(s, CVM_METRIC_STRETCH, 36), CVM_OK);
+    set_box(m, 0, 0, 5, 1.3);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_QUAD_SMOOTH, 0), CVM_OK);
+    ck_assert_msg(cvm_mesh_quadmesh(m, s) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    assert_mixed_mesh(m, 0, 0, 5, 1.3);
+    dev0 = report(m, CVM_REPORT_QUAD_ANGLE_DEV_MEAN_DEG);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_QUAD_SMOOTH, 200), CVM_OK);
+    ck_assert_msg(cvm_mesh_quadmesh(m, s) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    assert_mixed_mesh(m, 0, 0, 5, 1.3);
+    dev1 = report(m, CVM_REPORT_QUAD_ANGLE_DEV_MEAN_DEG);
+    ck_assert_msg(dev1 <= 0.5 * dev0, "deviation %g deg before smoothing, %g after", dev0, dev1);
+    cvm_sizing_free(s);
+    cvm_mesh_free(m);
+}
+END_TEST
+
 /* NaN beyond x = 2, or not positive definite there. */
 static int bad_metric(void *payload, const double *x, int dim, double *g, double *dg)
 {
@@ -420,6 +482,25 @@ START_TEST(out_of_memory_with_the_mean_metric_voronoi)
 }
 END_TEST
 
+static void oom_setup_split(cvm_mesh *m, void *arg)
+{
+    (void)arg;
+    set_box(m, 0, 0, 5, 1.3);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_QUAD_ALL_QUAD, 1), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_QUAD_MAX_ITERATIONS, 30), CVM_OK);
+}
+
+/* The same sweep through the all-quad split and the smoothing (stretch: both move points). */
+START_TEST(out_of_memory_with_all_quad_and_smoothing)
+{
+    oom_arg a;
+    ck_assert_int_eq(cvm_sizing_create(&a.s), CVM_OK);
+    ck_assert_int_eq(cvm_sizing_set_metric_builtin(a.s, CVM_METRIC_STRETCH, 9), CVM_OK);
+    cvmtest_oom_sweep(oom_setup_split, oom_run, NULL, &a);
+    cvm_sizing_free(a.s);
+}
+END_TEST
+
 TCase *quad_quadmesh_tcase(void)
 {
     TCase *tc = tcase_create("quadmesh");
@@ -434,5 +515,8 @@ TCase *quad_quadmesh_tcase(void)
     tcase_add_test(tc, cancel_leaves_a_valid_quad_mesh);
     tcase_add_test(tc, out_of_memory_at_every_allocation_leaves_a_valid_mesh);
     tcase_add_test(tc, out_of_memory_with_the_mean_metric_voronoi);
+    tcase_add_test(tc, all_quad_splits_every_cell_at_the_metric_size);
+    tcase_add_test(tc, smoothing_straightens_the_stretch_rows);
+    tcase_add_test(tc, out_of_memory_with_all_quad_and_smoothing);
     return tc;
 }
