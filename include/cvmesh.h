@@ -971,12 +971,15 @@ typedef enum cvm_option {
      *  by rejection on a Halton sequence rotated by CVM_OPT_SEED.
      *  @since 0.2 */
     CVM_OPT_QUAD_INITIAL_SITES = 810,
-    /** Sweeps of parallelogram smoothing after the recombination, integer, default 200
-     *  (0: none), bounds [0, 1000]; the sweeps stop early once nothing moves: each interior vertex with a quad moves towards the mean
-     *  of the points that would make its quads parallelograms (an affine-invariant rule,
-     *  so a lattice of metric squares is left as it is), a move kept only when every
-     *  cell around it stays strictly convex (exact) and the squared metric corner
-     *  deviations of its quads drop. The sites are then triangulated again, so the
+    /** Sweeps of smoothing after the recombination, integer, default 200 (0: none),
+     *  bounds [0, 1000]; the sweeps stop early once nothing moves. Each interior vertex
+     *  with a quad moves to the mean of its quad-edge neighbours, or else part of the way
+     *  to the mean of the points that would make its quads parallelograms (affine
+     *  invariant, so a lattice of metric squares is left as it is); a move is kept only
+     *  when every cell around it stays strictly convex (exact) and the cost of its quads
+     *  drops: squared metric corner deviations from 90 degrees plus squared angles of
+     *  their edges to the metric's eigenvectors weighted by the anisotropy
+     *  (lam1 - lam2) / (lam1 + lam2). The sites are then triangulated again, so the
      *  triangles stay the Delaunay triangulation of the final sites; the quads and
      *  triangles of the mixed cells keep their vertices. @since 0.2 */
     CVM_OPT_QUAD_SMOOTH = 811,

@@ -295,11 +295,13 @@ typedef struct cvm__quad_smooth_in {
     double *quality;    /* ncell or NULL: after the moves, each quad's 1 - max|corner - 90| / 90
                            in the metric at its vertex mean (as the recombination's) */
 } cvm__quad_smooth_in;
-/* Move each free point that has a quad towards the mean, over its quads, of the point that
- * makes the quad a parallelogram (full step, else half, else a quarter); a move is kept when
- * every cell of the point stays strictly convex (exact orient2d) and the sum over its quads of
- * the squared corner deviations from 90 degrees in the metric at the quad's vertex mean
- * drops. Stops after a sweep without a move. Deterministic (serial, index order). xy: 2 nv,
+/* Move each free point that has a quad to the mean of its quad-edge neighbours, or else towards
+ * the mean, over its quads, of the point that makes the quad a parallelogram (full step, half, a
+ * quarter): the first move kept is one that leaves every cell of the point strictly convex
+ * (exact orient2d) and lowers the cost of its quads, the sum of the squared corner deviations
+ * from 90 degrees in the metric at the quad's vertex mean plus, per quad edge, the squared angle
+ * to the nearer eigenvector of that metric times its anisotropy (lam1 - lam2) / (lam1 + lam2).
+ * Stops after a sweep without a move. Deterministic (serial, index order). xy: 2 nv,
  * updated. *moves_out: the moves kept. CVM_OK, CVM_E_NOMEM (xy unchanged) or CVM_E_ARGUMENT
  * (the metric refused a quad's vertex mean when its quality was written). */
 cvm_status cvm__quad_smooth(cvm__ctx *ctx, double *xy, const cvm__quad_smooth_in *in,

@@ -1,10 +1,10 @@
-/* smooth.c - parallelogram smoothing of a quad-dominant mesh: each free vertex moves towards
- * the mean of the points that would make each of its quads a parallelogram. The rule is
- * affine invariant, so where the metric is locally constant it acts in metric space, and a
- * lattice of metric squares is a fixed point; what it removes is the zig-zag of the Lp-CVT
- * minimisers where the metric varies. A move is kept only when every cell around the vertex
- * stays strictly convex (exact orientations) and the summed squared metric corner deviation
- * of its quads drops. */
+/* smooth.c - smoothing of a quad-dominant mesh after the recombination: each free vertex moves to
+ * the mean of its quad-edge neighbours (which removes the zig-zag rows of the Lp-CVT minimisers
+ * where the metric varies) or towards the mean of the points that would make each of its quads a
+ * parallelogram (affine invariant: where the metric is locally constant a lattice of metric
+ * squares is a fixed point). A move is kept only when every cell around the vertex stays
+ * strictly convex (exact orientations) and the metric corner deviation and edge misalignment of
+ * its quads drop. */
 #include <math.h>
 #include <string.h>
 
@@ -30,12 +30,13 @@ static int qs_convex(const qs_work *W, int32_t c)
     return 1;
 }
 
-/* The squared corner deviations from 90 degrees of quad c in the metric at its vertex mean,
- * summed (radians^2); HUGE_VAL when the metric fails there. */
+/* The cost of quad c in the metric g at its vertex mean (radians^2): the squared corner
+ * deviations from 90 degrees plus each edge's squared angle to the nearer eigenvector of g
+ * times the anisotropy of g; HUGE_VAL when the metric fails there. */
 static double qs_quad_cost(const qs_work *W, int32_t c)
 {
     const int32_t *p = W->in->conn + W->in->off[c];
-    double m[2] = {0, 0}, g[3], s = 0;
+    double m[2] = {0, 0}, g[3], s = 0, aniso, th;
     int i;
     for (i = 0; i < 4; i++) {
         m[0] += 0.25 * W->xy[2 * p[i]];
@@ -43,6 +44,11 @@ static double qs_quad_cost(const qs_work *W, int32_t c)
     }
     if (W->in->metric(m[0], m[1], g, W->in->metric_user))
         return HUGE_VAL;
+    {
+        double c = g[0] - g[2], r = sqrt(c * c + 4 * g[1] * g[1]);
+        aniso = r / (g[0] + g[2]);
+        th = 0.5 * atan2(2 * g[1], c);
+    }
     for (i = 0; i < 4; i++) {
         const double *a = W->xy + 2 * p[i], *b = W->xy + 2 * p[(i + 1) % 4],
                      *d = W->xy + 2 * p[(i + 3) % 4];
@@ -52,6 +58,11 @@ static double qs_quad_cost(const qs_work *W, int32_t c)
         double ww = g[0] * w0 * w0 + 2 * g[1] * w0 * w1 + g[2] * w1 * w1;
         double t = uw / sqrt(uu * ww), dev = asin(t < -1 ? -1 : t > 1 ? 1 : t); /* 90 - angle */
         s += dev * dev;
+        if (aniso > 0) { /* the edge's angle to the nearer eigenvector, weighted by anisotropy */
+            double f = fmod(fabs(atan2(u1, u0) - th), 0.5 * CVM__PI);
+            f = fmin(f, 0.5 * CVM__PI - f);
+            s += aniso * f * f;
+        }
     }
     return s;
 }
@@ -71,11 +82,12 @@ static int qs_star(const qs_work *W, size_t v, double *cost)
     return 1;
 }
 
-/* The mean of v's parallelogram points into t; 0 when v has no quad. */
-static int qs_target(const qs_work *W, size_t v, double *t)
+/* The mean of v's parallelogram points into t, and the mean of its neighbours along quad edges
+ * into lap; 0 when v has no quad. */
+static int qs_target(const qs_work *W, size_t v, double *t, double *lap)
 {
     int32_t k, nq = 0;
-    t[0] = t[1] = 0;
+    t[0] = t[1] = lap[0] = lap[1] = 0;
     for (k = W->vstart[v]; k < W->vstart[v + 1]; k++) {
         int32_t c = W->vcell[k], i;
         const int32_t *p = W->in->conn + W->in->off[c];
@@ -88,6 +100,8 @@ static int qs_target(const qs_work *W, size_t v, double *t)
                          *d = W->xy + 2 * p[(i + 3) % 4];
             t[0] += a[0] + d[0] - b[0];
             t[1] += a[1] + d[1] - b[1];
+            lap[0] += 0.5 * (a[0] + d[0]);
+            lap[1] += 0.5 * (a[1] + d[1]);
             nq++;
         }
     }
@@ -95,6 +109,8 @@ static int qs_target(const qs_work *W, size_t v, double *t)
         return 0;
     t[0] /= nq;
     t[1] /= nq;
+    lap[0] /= nq;
+    lap[1] /= nq;
     return 1;
 }
 
@@ -129,17 +145,20 @@ cvm_status cvm__quad_smooth(cvm__ctx *ctx, double *xy, const cvm__quad_smooth_in
     for (sweep = 0; sweep < in->sweeps; sweep++) {
         size_t moved = 0;
         for (v = in->first_free; v < in->nv; v++) {
-            double t[2], old[2], before, after;
+            double t[2], lap[2], old[2], before, after;
             int j;
-            if (!qs_target(&W, v, t) || !qs_star(&W, v, &before))
+            if (!qs_target(&W, v, t, lap) || !qs_star(&W, v, &before))
                 continue;
             old[0] = xy[2 * v];
             old[1] = xy[2 * v + 1];
-            /* the full step, then halves: the first that keeps the star convex and cheaper */
-            for (j = 0; j < 3; j++) {
-                double f = ldexp(1.0, -j);
-                xy[2 * v] = old[0] + f * (t[0] - old[0]);
-                xy[2 * v + 1] = old[1] + f * (t[1] - old[1]);
+            /* the neighbours' mean (it removes a zig-zag of parallelograms, which is a fixed
+             * point of the parallelogram rule), then the parallelogram point at a full, half
+             * and quarter step: the first that keeps the star convex and cheaper */
+            for (j = -1; j < 3; j++) {
+                const double *to = j < 0 ? lap : t;
+                double f = j < 0 ? 1 : ldexp(1.0, -j);
+                xy[2 * v] = old[0] + f * (to[0] - old[0]);
+                xy[2 * v + 1] = old[1] + f * (to[1] - old[1]);
                 if (qs_star(&W, v, &after) && after < before)
                     break;
             }
