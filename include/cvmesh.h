@@ -918,6 +918,14 @@ typedef enum cvm_option {
      *  vertices coincide (exact power test) or are closer than tol x l_V. Read by the
      *  measures and copies only; the mesh never changes. @since 0.2 */
     CVM_OPT_DUAL3_MERGE_TOL = 755,
+    /** 1 (default): cvm_mesh_optimise_dual3() may change the connectivity: a trial move
+     *  that leaves faces not locally regular is followed by exact 2-3 and 3-2 flips of
+     *  unconstrained faces between tetrahedra of one region until every face there is
+     *  locally regular again (else the move is undone), and a first pass flips the faces
+     *  of the input that are not; the surface triangles stay faces and no vertex is
+     *  lost, but tetrahedra are renumbered and their count changes. 0: the connectivity
+     *  is kept. Integer, bounds [0, 1]. @since 0.2 */
+    CVM_OPT_DUAL3_FLIPS = 756,
     /* ---- quad-dominant meshing (800-899): read by cvm_mesh_quadmesh() ---- */
     /** Exponent p of the Lp-CVT energy, even integer, default 6, bounds [2, 12]. p = 2 is
      *  the classic CVT (hexagonal cells); larger p pulls the cells towards squares of unit
@@ -3367,6 +3375,9 @@ typedef enum cvm_report {
     CVM_REPORT_GEN3_FACETS_REMESHED = 757,    /**< = CVM_MEASURE_GEN3_FACETS_REMESHED */
     CVM_REPORT_GEN3_SURFACE_TRIS_BEFORE = 758, /**< = CVM_MEASURE_GEN3_SURFACE_TRIS_BEFORE */
     CVM_REPORT_GEN3_SURFACE_TRIS_AFTER = 759, /**< = CVM_MEASURE_GEN3_SURFACE_TRIS_AFTER */
+    /* the last cvm_mesh_optimise_dual3() again */
+    CVM_REPORT_DUAL3_FLIPS = 760,             /**< flips kept (CVM_OPT_DUAL3_FLIPS), the first
+                                                   pass over the input's faces included */
     /* the last cvm_mesh_quadmesh() (0 before any, and after any call that drops the quads).
        Corner angles and edge lengths are measured in the metric: a corner's angle with g at
        its quad's centroid, an edge's metric length sqrt(e^T g e) with g at its midpoint. */

@@ -54,6 +54,8 @@ typedef struct cvm__d3_mesh {
     const int32_t *nbr;     /* 4 ntet: 4 u + g across face f (opposite corner f), or -1 */
     const uint8_t *cface;   /* 4 ntet: 1 when the face is constrained (no neighbour, or an
                                internal facet of the surface) */
+    const double *attr;     /* ntet region attributes, or NULL (the optimiser flips only
+                               between tetrahedra of one region) */
 } cvm__d3_mesh;
 
 typedef struct cvm__d3_params {
@@ -63,6 +65,7 @@ typedef struct cvm__d3_params {
     double margin;          /* power vertex wanted margin x mean edge inside every face */
     uint64_t seed;
     int slide;              /* 1: vertices inside an axis-aligned planar facet move in it */
+    int flips;              /* 1: the connectivity may change (d3_flip.c) */
 } cvm__d3_params;
 
 typedef struct cvm__d3_report {
@@ -70,13 +73,26 @@ typedef struct cvm__d3_report {
     size_t ntet, nbnd;              /* tetrahedra; those with a face without neighbour */
     size_t out_before, out_after;   /* power vertex strictly outside (exact) */
     size_t bout_before, bout_after; /* the same among the boundary tetrahedra */
+    size_t ntet_after, nbnd_after;  /* the same counts at the end (flips change them) */
+    size_t flips, flips_start;      /* flips kept in all; those of the first pass */
 } cvm__d3_report;
 
-/* Optimise M in place. *r is filled also on a stop.
+/* The connectivity after a run with flips: owned by the caller (the context's
+ * allocator), ntet tetrahedra; attr NULL when the input had none. */
+typedef struct cvm__d3_topo {
+    int32_t *tet;
+    double *attr;
+    size_t ntet;
+} cvm__d3_topo;
+
+/* Optimise M in place (vertices and weights). With p->flips, *topo receives the
+ * new connectivity (also on a stop; the caller frees it) and M's tet, nbr, cface
+ * describe the old one; without, topo is untouched and may be NULL. *r is filled
+ * also on a stop. No allocation after the first move: CVM_E_NOMEM means nothing moved.
  * @return CVM_OK, CVM_E_NOMEM (nothing moved), CVM_INCOMPLETE_TIME_LIMIT,
  *         CVM_INCOMPLETE_CANCELLED (moves so far kept; the mesh is valid). */
 cvm_status cvm__d3_optimise(cvm__ctx *ctx, cvm__d3_mesh *M, const cvm__d3_params *p,
-                            cvm__d3_report *r);
+                            cvm__d3_report *r, cvm__d3_topo *topo);
 
 /* 1 when the power vertex of tetrahedron t of M lies strictly outside it (exact). */
 int cvm__d3_outside(const cvm__d3_mesh *M, size_t t);
