@@ -262,6 +262,9 @@ static int solve_vertex(cvm__d3_work *K, int32_t v)
             evals++;
             if (f < best && (dir >= 6 || cvm__d3_star_max_cos(K, v, cand) <= cfloor))
                 st = cvm__d3_star_check(K, v, cand, cand[3]);
+            else if (K->p->flips && cvm__d3_star_check(K, v, cand, cand[3]) == 1)
+                st = 1; /* the fixed star's penalty and angles say nothing about the flipped
+                           one: flip_move judges it */
             if (st == 0) { /* v itself moves at the end */
                 memcpy(cur, cand, sizeof cur);
                 best = f;
