@@ -508,6 +508,8 @@ int cvm__d3_restore(cvm__d3_work *K, int32_t v, const double *x0, double w0, siz
                     K->queue[qn++] = (int32_t)(4 * t + (size_t)k);
                 }
         }
+        if (!flips_round && round == 0)
+            return 0; /* every face of the star was queued: none could be flipped */
         /* what must hold: every face of v's star and of the new tetrahedra */
         if (cvm__d3_gather_star(K, v))
             return 0;

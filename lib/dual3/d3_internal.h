@@ -8,7 +8,10 @@
 
 /* Bounds of one move's topology repair (d3_flip.c): flips, the tetrahedra of a
  * star, and what follows from them (queue, undo log, appended tetrahedra). */
-#define CVM__D3_MAX_FLIPS 24
+#define CVM__D3_MAX_FLIPS 8
+/* Per vertex and sweep: trials whose fixed star would be refused on its penalty or
+ * angles that still get a flip repair when only local regularity failed. */
+#define CVM__D3_SPECULATIVE 24
 #define CVM__D3_MAX_STAR 1024
 #define CVM__D3_QUEUE (4 * CVM__D3_MAX_STAR + 20 * CVM__D3_MAX_FLIPS)
 #define CVM__D3_LOG (80 * CVM__D3_MAX_FLIPS + 80)
@@ -72,8 +75,9 @@ double cvm__d3_star_max_cos(const cvm__d3_work *K, int32_t v, const double *x);
 /* The exact checks of dual3.h for v at (x, wv) over its star: -1 when a tetrahedron
  * is not positively oriented; 1 when oriented but a face became non-regular (with
  * flips also: a face failing before on a tie only now fails strictly); 2 when
- * regular but the non-compliant count grows; 0 when v may move there. */
-int cvm__d3_star_check(const cvm__d3_work *K, int32_t v, const double *x, double wv);
+ * regular but the non-compliant count grows; 0 when v may move there (counts 0: the
+ * count is not checked). */
+int cvm__d3_star_check(const cvm__d3_work *K, int32_t v, const double *x, double wv, int counts);
 /* 1 when face f of tetrahedron t is locally regular or constrained (exact). */
 int cvm__d3_face_regular(const cvm__d3_mesh *M, size_t t, int f);
 /* 1 when face f of t is not locally regular with v at (x, wv) (exact; whichever side

@@ -230,7 +230,7 @@ static int solve_vertex(cvm__d3_work *K, int32_t v)
     cvm__d3_mesh *M = &K->W;
     double *x0 = M->xyz + 3 * (size_t)v;
     double cur[4], cand[4], best, cmax0, cfloor, cmin, hs, hw;
-    int evals = 0, dir, first = 0, nd = 0, moved = 0, a, dirs[8];
+    int evals = 0, dir, first = 0, nd = 0, moved = 0, a, dirs[8], spec = 0;
     if (K->lv[v] <= 0 || K->stuck[v] || cvm__d3_gather_star(K, v))
         return 0;
     for (a = 0; a < 3; a++)
@@ -261,8 +261,8 @@ static int solve_vertex(cvm__d3_work *K, int32_t v)
             f = cvm__d3_star_penalty(K, v, cand, cand[3], best);
             evals++;
             if (f < best && (dir >= 6 || cvm__d3_star_max_cos(K, v, cand) <= cfloor))
-                st = cvm__d3_star_check(K, v, cand, cand[3]);
-            else if (K->p->flips && cvm__d3_star_check(K, v, cand, cand[3]) == 1)
+                st = cvm__d3_star_check(K, v, cand, cand[3], 1);
+            else if (K->p->flips && spec++ < CVM__D3_SPECULATIVE && cvm__d3_star_check(K, v, cand, cand[3], 0) == 1)
                 st = 1; /* the fixed star's penalty and angles say nothing about the flipped
                            one: flip_move judges it */
             if (st == 0) { /* v itself moves at the end */

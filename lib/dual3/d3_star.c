@@ -197,7 +197,7 @@ static int face_conflict(const cvm__d3_mesh *M, size_t t, int f, int32_t v, cons
     return face_test(M, t, f, v, x, wv, 1);
 }
 
-int cvm__d3_star_check(const cvm__d3_work *K, int32_t v, const double *x, double wv)
+int cvm__d3_star_check(const cvm__d3_work *K, int32_t v, const double *x, double wv, int counts)
 {
     const cvm__d3_mesh *M = K->M;
     const double *x0 = M->xyz + 3 * (size_t)v;
@@ -227,6 +227,8 @@ int cvm__d3_star_check(const cvm__d3_work *K, int32_t v, const double *x, double
                 return 1;
         }
     }
+    if (!counts)
+        return 0;
     for (s = 0; s < K->nstar; s++) {
         size_t t = (size_t)K->star[s];
         const double *P[4];

@@ -563,6 +563,41 @@ START_TEST(flips_cancel_and_time_limit_leave_a_valid_mesh)
 }
 END_TEST
 
+/* The Delaunay tetrahedralisation of a point set: cvm_mesh_check() tests every
+ * interior face by the perturbed power test, so with flips the result must be the
+ * regular tetrahedralisation of the weighted points, every point kept. */
+START_TEST(flips_keep_a_point_set_regular)
+{
+    cvm_mesh *m;
+    double xyz[3 * 200], v, vol0, vol1;
+    uint64_t x = 88172645463325252ULL;
+    size_t i, nt;
+    g3_mesh g;
+    for (i = 0; i < 3 * 200; i++) { /* xorshift: the same points on every platform */
+        x ^= x << 13, x ^= x >> 7, x ^= x << 17;
+        xyz[i] = (double)(x >> 11) / 9007199254740992.0;
+    }
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_points(m, xyz, 200, 3), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_get_measure(&vol0, m, CVM_MEASURE_VOLUME), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_DUAL3_MAX_SWEEPS, 5), CVM_OK);
+    ck_assert_msg(cvm_mesh_optimise_dual3(m) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    ck_assert_msg(cvm_mesh_check(m) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    ck_assert_int_eq(cvm_mesh_get_report(&v, m, CVM_REPORT_DUAL3_FLIPS), CVM_OK);
+    ck_assert_double_gt(v, 0);
+    ck_assert_int_eq(cvm_mesh_get_measure(&vol1, m, CVM_MEASURE_VOLUME), CVM_OK);
+    ck_assert_double_eq_tol(vol1, vol0, 1e-12 * vol0);
+    ck_assert_int_eq(cvm_mesh_count(&nt, m, CVM_ENT_TETRAHEDRON), CVM_OK);
+    g3_mesh_get(&g, m);
+    ck_assert_uint_eq(g.nv, 200);
+    for (i = 0; i < g.nv; i++)
+        ck_assert_int_gt(g.valence[i], 0);
+    g3_mesh_free(&g);
+    cvm_mesh_free(m);
+}
+END_TEST
+
 static void oom_setup(cvm_mesh *m, void *arg)
 {
     char path[1024];
@@ -598,6 +633,7 @@ TCase *dual3_optimise_tcase(void)
     tcase_add_test(tc, same_bytes_for_every_run_and_thread_count);
     tcase_add_test(tc, cancel_and_time_limit_leave_a_valid_mesh);
     tcase_add_test(tc, flips_cancel_and_time_limit_leave_a_valid_mesh);
+    tcase_add_test(tc, flips_keep_a_point_set_regular);
     tcase_add_test(tc, oom_at_every_allocation);
     return tc;
 }
