@@ -3,8 +3,8 @@
  * vertices and set power weights of a tetrahedral mesh so that more
  * tetrahedra contain their power vertex (the "co-volume" property).
  *
- * This version keeps the connectivity: a move of vertex v (x, y, z, w) is
- * accepted only when every tetrahedron of v's star stays positively oriented
+ * Without flips (params.flips 0) the connectivity is kept: a move of vertex
+ * v (x, y, z, w) is accepted only when every tetrahedron of v's star stays positively oriented
  * (exact orient3d), every face of the star that is not constrained stays
  * locally regular (exact power test with symbolic perturbation by vertex
  * index, as cvm_mesh_check() decides it: the vertex across the face is not in
@@ -16,6 +16,12 @@
  * the constrained sense along constrained faces), so the mesh stays regular
  * after every accepted move, every face (the surface included) stays a face,
  * and no power cell can vanish: a stop at any point leaves a valid mesh.
+ * With flips, a move that leaves faces of the star not locally regular (all
+ * its tetrahedra still positive) is followed by exact 2-3 / 3-2 / 4-4 flips of
+ * unconstrained faces (d3_flip.c) until every face around v and of the new
+ * tetrahedra is locally regular (or an unchanged face that failed before, by
+ * the perturbation only), else undone; the counts, angle floor and penalty are
+ * judged on the tetrahedra replaced against those replacing them.
  * Vertices on a constrained face keep their position, except, with slide, a
  * vertex all of whose constrained faces lie in one axis-aligned plane: it
  * moves in the two other coordinates, so it stays exactly in the plane, and
