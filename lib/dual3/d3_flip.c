@@ -92,7 +92,7 @@ cvm_status cvm__d3_topo_init(cvm__ctx *ctx, cvm__d3_work *K, const cvm__d3_mesh 
     return CVM_OK;
 }
 
-static void set_log(cvm__d3_work *K, int kind, int32_t *arr, int32_t idx, int32_t val)
+static void d3f_set_log(cvm__d3_work *K, int kind, int32_t *arr, int32_t idx, int32_t val)
 {
     if (K->logging && K->nlog < CVM__D3_LOG) {
         K->log[K->nlog].kind = kind;
@@ -103,7 +103,7 @@ static void set_log(cvm__d3_work *K, int kind, int32_t *arr, int32_t idx, int32_
     arr[idx] = val;
 }
 
-static void set_dead(cvm__d3_work *K, int32_t t)
+static void d3f_set_dead(cvm__d3_work *K, int32_t t)
 {
     if (K->logging && K->nlog < CVM__D3_LOG) {
         K->log[K->nlog].kind = 1;
@@ -129,7 +129,7 @@ void cvm__d3_undo_all(cvm__d3_work *K, size_t ntet0)
     K->W.ntet = ntet0;
 }
 
-static uint32_t next_stamp(cvm__d3_work *K)
+static uint32_t d3f_next_stamp(cvm__d3_work *K)
 {
     if (++K->stamp == 0) { /* wrapped: forget every old mark */
         memset(K->mark, 0, K->cap * sizeof *K->mark);
@@ -146,7 +146,7 @@ int cvm__d3_gather_star(cvm__d3_work *K, int32_t v)
     K->nstar = 0;
     if (t0 < 0)
         return -1;
-    st = next_stamp(K);
+    st = d3f_next_stamp(K);
     K->star[n++] = t0;
     K->mark[t0] = st;
     while (head < n) {
@@ -212,7 +212,7 @@ void cvm__d3_compact(cvm__d3_work *K)
 }
 
 /* 1 when room is left for one move's flips (compacting when needed). */
-static int room(cvm__d3_work *K)
+static int d3f_room(cvm__d3_work *K)
 {
     if (K->ntet + 4 * CVM__D3_MAX_FLIPS <= K->cap)
         return 1;
@@ -220,7 +220,7 @@ static int room(cvm__d3_work *K)
     return K->ntet + 4 * CVM__D3_MAX_FLIPS <= K->cap;
 }
 
-static void sort3i(int32_t *v)
+static void d3f_sort3(int32_t *v)
 {
     int32_t t;
     if (v[0] > v[1]) t = v[0], v[0] = v[1], v[1] = t;
@@ -229,19 +229,19 @@ static void sort3i(int32_t *v)
 }
 
 /* The corners of face f of the tetrahedron with corners c, sorted. */
-static void face_key(const int32_t *c, int f, int32_t k[3])
+static void d3f_face_key(const int32_t *c, int f, int32_t k[3])
 {
     int i, j = 0;
     for (i = 0; i < 4; i++)
         if (i != f)
             k[j++] = c[i];
-    sort3i(k);
+    d3f_sort3(k);
 }
 
 /* Replace the nk tetrahedra kill[] by the nn positively oriented tetrahedra nt[],
  * which fill the same polyhedron: append them, link their faces to each other and to
  * the old ones' outer neighbours (constrained flags inherited), mark the old dead. */
-static void replace(cvm__d3_work *K, const int32_t *kill, int nk, int32_t nt[][4], int nn)
+static void d3f_replace(cvm__d3_work *K, const int32_t *kill, int nk, int32_t nt[][4], int nn)
 {
     size_t base = K->ntet;
     int j, f, j2, f2, i, q;
@@ -268,10 +268,10 @@ static void replace(cvm__d3_work *K, const int32_t *kill, int nk, int32_t nt[][4
             int done = 0;
             if (K->nbr[slot] != -2)
                 continue;
-            face_key(nt[j], f, key);
+            d3f_face_key(nt[j], f, key);
             for (j2 = j + 1; j2 < nn && !done; j2++)
                 for (f2 = 0; f2 < 4 && !done; f2++) {
-                    face_key(nt[j2], f2, k2);
+                    d3f_face_key(nt[j2], f2, k2);
                     if (memcmp(key, k2, sizeof key) == 0) {
                         size_t s2 = 4 * (base + (size_t)j2) + (size_t)f2;
                         K->nbr[slot] = (int32_t)s2;
@@ -283,40 +283,40 @@ static void replace(cvm__d3_work *K, const int32_t *kill, int nk, int32_t nt[][4
                 for (f2 = 0; f2 < 4 && !done; f2++) {
                     size_t os = 4 * (size_t)kill[i] + (size_t)f2;
                     int32_t nb = K->nbr[os];
-                    face_key(K->tet + 4 * (size_t)kill[i], f2, k2);
+                    d3f_face_key(K->tet + 4 * (size_t)kill[i], f2, k2);
                     if (memcmp(key, k2, sizeof key) != 0)
                         continue;
                     K->nbr[slot] = nb;
                     K->cface[slot] = K->cface[os];
                     if (nb >= 0)
-                        set_log(K, 0, K->nbr, nb, (int32_t)slot);
+                        d3f_set_log(K, 0, K->nbr, nb, (int32_t)slot);
                     else
                         K->bnd[base + (size_t)j] = 1;
                     done = 1;
                 }
         }
     for (i = 0; i < nk; i++) {
-        set_dead(K, kill[i]);
+        d3f_set_dead(K, kill[i]);
         for (q = 0; q < 4; q++) {
             int32_t c = K->tet[4 * (size_t)kill[i] + (size_t)q];
-            set_log(K, 3, K->deg, c, K->deg[c] - 1);
+            d3f_set_log(K, 3, K->deg, c, K->deg[c] - 1);
         }
     }
     for (j = 0; j < nn; j++)
         for (q = 0; q < 4; q++) {
             int32_t c = nt[j][q];
-            set_log(K, 3, K->deg, c, K->deg[c] + 1);
+            d3f_set_log(K, 3, K->deg, c, K->deg[c] + 1);
             if (K->vt[c] != (int32_t)base + j)
-                set_log(K, 2, K->vt, c, (int32_t)base + j);
+                d3f_set_log(K, 2, K->vt, c, (int32_t)base + j);
         }
 }
 
-static int same_region(const cvm__d3_work *K, int32_t a, int32_t b)
+static int d3f_same_region(const cvm__d3_work *K, int32_t a, int32_t b)
 {
     return !K->attr || K->attr[a] == K->attr[b];
 }
 
-static int corner_of(const int32_t *c, int32_t v)
+static int d3f_corner_of(const int32_t *c, int32_t v)
 {
     int i;
     for (i = 0; i < 4; i++)
@@ -326,7 +326,7 @@ static int corner_of(const int32_t *c, int32_t v)
 }
 
 /* The positively oriented order of corners c (one swap when negative); 0 when flat. */
-static int orient_fix(const double *X, int32_t c[4])
+static int d3f_orient_fix(const double *X, int32_t c[4])
 {
     double o = cvm__orient3d(X + 3 * (size_t)c[0], X + 3 * (size_t)c[1], X + 3 * (size_t)c[2],
                              X + 3 * (size_t)c[3]);
@@ -342,12 +342,12 @@ static int orient_fix(const double *X, int32_t c[4])
  * (p q e y): the segment de crosses pq inside both (the caller's orient3d tests), so
  * the four tetrahedra x d e p, x d e q, y d e p, y d e q fill the same octahedron.
  * The number of new tetrahedra (4) or 0. */
-static int flip44(cvm__d3_work *K, int32_t t, int32_t u, int32_t x, int32_t p, int32_t q,
+static int d3f_flip44(cvm__d3_work *K, int32_t t, int32_t u, int32_t x, int32_t p, int32_t q,
                   int32_t d, int32_t e)
 {
     const double *X = K->W.xyz;
     int32_t s3, s4, y, kill[4], nn[4][4], apex[2];
-    int ft = corner_of(K->tet + 4 * (size_t)t, x), fu = corner_of(K->tet + 4 * (size_t)u, x), f3,
+    int ft = d3f_corner_of(K->tet + 4 * (size_t)t, x), fu = d3f_corner_of(K->tet + 4 * (size_t)u, x), f3,
         i, j;
     s3 = K->nbr[4 * (size_t)t + (size_t)ft]; /* across p q d: (p q d y) */
     s4 = K->nbr[4 * (size_t)u + (size_t)fu]; /* across p q e: (p q e y) */
@@ -355,30 +355,30 @@ static int flip44(cvm__d3_work *K, int32_t t, int32_t u, int32_t x, int32_t p, i
         K->cface[4 * (size_t)u + (size_t)fu])
         return 0;
     y = K->tet[s3];
-    if (K->tet[s4] != y || (f3 = corner_of(K->tet + 4 * (size_t)(s3 >> 2), d)) < 0)
+    if (K->tet[s4] != y || (f3 = d3f_corner_of(K->tet + 4 * (size_t)(s3 >> 2), d)) < 0)
         return 0;
     /* (p q d y) and (p q e y) must share the face p q y */
     if ((K->nbr[4 * (size_t)(s3 >> 2) + (size_t)f3] >> 2) != (s4 >> 2) ||
-        K->cface[4 * (size_t)(s3 >> 2) + (size_t)f3] || !same_region(K, t, s3 >> 2) ||
-        !same_region(K, t, s4 >> 2))
+        K->cface[4 * (size_t)(s3 >> 2) + (size_t)f3] || !d3f_same_region(K, t, s3 >> 2) ||
+        !d3f_same_region(K, t, s4 >> 2))
         return 0;
     apex[0] = x, apex[1] = y;
     for (i = 0; i < 2; i++)
         for (j = 0; j < 2; j++) {
             int32_t *c = nn[2 * i + j];
             c[0] = apex[i], c[1] = d, c[2] = e, c[3] = j ? q : p;
-            if (!orient_fix(X, c))
+            if (!d3f_orient_fix(X, c))
                 return 0;
         }
     kill[0] = t, kill[1] = u, kill[2] = s3 >> 2, kill[3] = s4 >> 2;
-    replace(K, kill, 4, nn, 4);
+    d3f_replace(K, kill, 4, nn, 4);
     return 4;
 }
 
 /* Flip the face f of t (not locally regular, checked by the caller) when a 2-3 or
  * a 3-2 flip can remove it; the number of new tetrahedra (the last slots), 0 when
  * not flipped. */
-static int try_flip(cvm__d3_work *K, int32_t t, int f)
+static int d3f_try_flip(cvm__d3_work *K, int32_t t, int f)
 {
     const double *X = K->W.xyz;
     int32_t nb = K->nbr[4 * (size_t)t + (size_t)f], u, d, e, abc[3], tmp, nt[3][4];
@@ -389,7 +389,7 @@ static int try_flip(cvm__d3_work *K, int32_t t, int f)
         return 0;
     u = nb >> 2;
     g = nb & 3;
-    if (!same_region(K, t, u))
+    if (!d3f_same_region(K, t, u))
         return 0;
     d = K->tet[4 * (size_t)t + (size_t)f];
     e = K->tet[4 * (size_t)u + (size_t)g];
@@ -412,18 +412,18 @@ static int try_flip(cvm__d3_work *K, int32_t t, int f)
             neg = i, nneg++;
     }
     if (nzero == 1 && nneg == 0) /* de meets the edge pq: 4-4 when pq has 4 tetrahedra */
-        return flip44(K, t, u, abc[zero], abc[(zero + 1) % 3], abc[(zero + 2) % 3], d, e);
+        return d3f_flip44(K, t, u, abc[zero], abc[(zero + 1) % 3], abc[(zero + 2) % 3], d, e);
     if (nzero)
         return 0;
     if (nneg == 0) { /* segment de crosses the triangle abc: 2-3 */
         int32_t kill[2];
         kill[0] = t, kill[1] = u;
-        replace(K, kill, 2, nt, 3);
+        d3f_replace(K, kill, 2, nt, 3);
         return 3;
     }
     if (nneg == 1) { /* de passes beyond edge pq (the other two): 3-2 when pq has 3 tetrahedra */
         int32_t x = abc[neg], p = abc[(neg + 1) % 3], q = abc[(neg + 2) % 3], kill[3], s3, n2;
-        int ft = corner_of(K->tet + 4 * (size_t)t, x), fu = corner_of(K->tet + 4 * (size_t)u, x);
+        int ft = d3f_corner_of(K->tet + 4 * (size_t)t, x), fu = d3f_corner_of(K->tet + 4 * (size_t)u, x);
         double o1, o2;
         int32_t nn[2][4];
         s3 = K->nbr[4 * (size_t)t + (size_t)ft];
@@ -432,7 +432,7 @@ static int try_flip(cvm__d3_work *K, int32_t t, int f)
             return 0;
         n2 = K->nbr[4 * (size_t)u + (size_t)fu];
         if (n2 < 0 || (n2 >> 2) != (s3 >> 2) || K->cface[4 * (size_t)u + (size_t)fu] ||
-            !same_region(K, t, s3 >> 2))
+            !d3f_same_region(K, t, s3 >> 2))
             return 0;
         o1 = cvm__orient3d(X + 3 * (size_t)x, X + 3 * (size_t)d, X + 3 * (size_t)e,
                            X + 3 * (size_t)p);
@@ -449,13 +449,13 @@ static int try_flip(cvm__d3_work *K, int32_t t, int f)
         else
             nn[1][0] = d, nn[1][1] = x;
         kill[0] = t, kill[1] = u, kill[2] = s3 >> 2;
-        replace(K, kill, 3, nn, 2);
+        d3f_replace(K, kill, 3, nn, 2);
         return 2;
     }
     return 0;
 }
 
-static int conflict_now(const cvm__d3_work *K, int32_t t, int f)
+static int d3f_conflict(const cvm__d3_work *K, int32_t t, int f)
 {
     return !cvm__d3_face_regular(K->M, (size_t)t, f);
 }
@@ -465,7 +465,7 @@ static int conflict_now(const cvm__d3_work *K, int32_t t, int f)
  * (v at x0, w0), and it fails strictly now only if it did before: a face of the
  * input that no flip repairs may fail on a tie (perturbation) but never turns
  * into a vertex strictly inside an orthosphere. */
-static int failed_before(const cvm__d3_work *K, int32_t t, int f, int32_t v, const double *x0,
+static int d3f_failed_before(const cvm__d3_work *K, int32_t t, int f, int32_t v, const double *x0,
                          double w0, size_t ntet0)
 {
     int32_t nb = K->nbr[4 * (size_t)t + (size_t)f];
@@ -492,11 +492,11 @@ int cvm__d3_restore(cvm__d3_work *K, int32_t v, const double *x0, double w0, siz
         while (head < qn) {
             int32_t slot = K->queue[head++], tt = slot >> 2;
             int f = slot & 3, k, nn;
-            if (K->dead[tt] || !conflict_now(K, tt, f))
+            if (K->dead[tt] || !d3f_conflict(K, tt, f))
                 continue;
             if (nflip == CVM__D3_MAX_FLIPS)
                 return 0;
-            if (!(nn = try_flip(K, tt, f)))
+            if (!(nn = d3f_try_flip(K, tt, f)))
                 continue;
             nflip++, flips_round++;
             K->mflips = nflip;
@@ -520,7 +520,7 @@ int cvm__d3_restore(cvm__d3_work *K, int32_t v, const double *x0, double w0, siz
             if (K->dead[tt])
                 continue;
             for (f = 0; f < 4; f++)
-                if (conflict_now(K, tt, f) && !failed_before(K, tt, f, v, x0, w0, ntet0)) {
+                if (d3f_conflict(K, tt, f) && !d3f_failed_before(K, tt, f, v, x0, w0, ntet0)) {
                     if (qn == CVM__D3_QUEUE)
                         return 0;
                     K->queue[qn++] = 4 * tt + f;
@@ -536,7 +536,7 @@ int cvm__d3_restore(cvm__d3_work *K, int32_t v, const double *x0, double w0, siz
 
 /* The smallest dihedral cosine bound check of the last nn slots: 1 when every new
  * tetrahedron's largest dihedral cosine is at most cmax. */
-static int new_ok(const cvm__d3_work *K, int nn, double cmax)
+static int d3f_new_ok(const cvm__d3_work *K, int nn, double cmax)
 {
     size_t t;
     for (t = K->ntet - (size_t)nn; t < K->ntet; t++)
@@ -552,7 +552,7 @@ size_t cvm__d3_regularise(cvm__d3_work *K, double cfloor)
     K->logging = 0;
     for (pass = 0; pass < 8; pass++) {
         size_t before = n, end;
-        if (!room(K))
+        if (!d3f_room(K))
             break;
         end = K->ntet;
         for (t = 0; t < end; t++)
@@ -561,7 +561,7 @@ size_t cvm__d3_regularise(cvm__d3_work *K, double cfloor)
                 double cold = -1;
                 int nn, k;
                 int32_t nb;
-                if (!conflict_now(K, (int32_t)t, f) || K->ntet + 4 > K->cap)
+                if (!d3f_conflict(K, (int32_t)t, f) || K->ntet + 4 > K->cap)
                     continue;
                 /* the old tetrahedra's worst angle: every tetrahedron a flip of this face
                    can remove is t, its neighbour, or a neighbour of one of them */
@@ -577,8 +577,8 @@ size_t cvm__d3_regularise(cvm__d3_work *K, double cfloor)
                 }
                 K->logging = 1;
                 K->nlog = 0;
-                nn = try_flip(K, (int32_t)t, f);
-                if (nn && cfloor < 2 && !new_ok(K, nn, cold > cfloor ? cold : cfloor)) {
+                nn = d3f_try_flip(K, (int32_t)t, f);
+                if (nn && cfloor < 2 && !d3f_new_ok(K, nn, cold > cfloor ? cold : cfloor)) {
                     cvm__d3_undo_all(K, ntet0);
                     nn = 0;
                 }

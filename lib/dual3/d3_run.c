@@ -98,7 +98,7 @@ typedef struct d3_region {
     size_t nout, bout;
 } d3_region;
 
-static void region_eval(const cvm__d3_work *K, const int32_t *list, size_t n, int32_t v,
+static void d3_region_eval(const cvm__d3_work *K, const int32_t *list, size_t n, int32_t v,
                         const double *x, double wv, d3_region *R)
 {
     size_t i;
@@ -120,13 +120,13 @@ static void region_eval(const cvm__d3_work *K, const int32_t *list, size_t n, in
     }
 }
 
-static int tet_has(const int32_t *c, int32_t v)
+static int d3_tet_has(const int32_t *c, int32_t v)
 {
     return c[0] == v || c[1] == v || c[2] == v || c[3] == v;
 }
 
 /* Clear the stuck flag of the corners of t and of the vertices across its faces. */
-static void unstick(cvm__d3_work *K, size_t t)
+static void d3_unstick(cvm__d3_work *K, size_t t)
 {
     int k;
     for (k = 0; k < 4; k++) {
@@ -143,7 +143,7 @@ static void unstick(cvm__d3_work *K, size_t t)
  * penalty drops, the outside counts do not grow and no dihedral angle falls below
  * min(floor, the smallest before); else everything is undone. 1 when kept (v's new
  * star in K->star). */
-static int flip_move(cvm__d3_work *K, int32_t v, const double *cand, double cfloor)
+static int d3_flip_move(cvm__d3_work *K, int32_t v, const double *cand, double cfloor)
 {
     cvm__d3_mesh *M = &K->W;
     double x0[3], w0 = M->w[v];
@@ -176,17 +176,17 @@ static int flip_move(cvm__d3_work *K, int32_t v, const double *cand, double cflo
             oldr[nold++] = K->star0[i];
         for (i = 0; i < K->nlog; i++)
             if (K->log[i].kind == 1 && (size_t)K->log[i].idx < ntet0 &&
-                !tet_has(K->tet + 4 * (size_t)K->log[i].idx, v))
+                !d3_tet_has(K->tet + 4 * (size_t)K->log[i].idx, v))
                 oldr[nold++] = K->log[i].idx;
         newr = oldr + nold;
         nnew = 0;
         for (i = 0; i < K->nstar; i++)
             newr[nnew++] = K->star[i];
         for (i = ntet0; i < K->ntet; i++)
-            if (!K->dead[i] && !tet_has(K->tet + 4 * i, v))
+            if (!K->dead[i] && !d3_tet_has(K->tet + 4 * i, v))
                 newr[nnew++] = (int32_t)i;
-        region_eval(K, oldr, nold, v, x0, w0, &Ro);
-        region_eval(K, newr, nnew, v, cand, cand[3], &Rn);
+        d3_region_eval(K, oldr, nold, v, x0, w0, &Ro);
+        d3_region_eval(K, newr, nnew, v, cand, cand[3], &Rn);
         cfloor = Ro.cmax > cfloor ? Ro.cmax : cfloor;
         ok = Rn.pen < Ro.pen && Rn.nout <= Ro.nout && Rn.bout <= Ro.bout && Rn.cmax <= cfloor;
     }
@@ -212,7 +212,7 @@ static int flip_move(cvm__d3_work *K, int32_t v, const double *cand, double cflo
             K->nout -= K->out[t];
         K->out[t] = (uint8_t)cvm__d3_outside(M, t);
         K->nout += K->out[t];
-        unstick(K, t);
+        d3_unstick(K, t);
     }
     K->flips += K->mflips;
     K->logging = 0;
@@ -224,7 +224,7 @@ static int flip_move(cvm__d3_work *K, int32_t v, const double *cand, double cflo
  * change in (all for an interior vertex, the two in-plane ones for one inside
  * an axis-aligned planar facet with slide on, none otherwise) and w; writes the
  * best valid point found; 1 when v moved. With flips, a trial that breaks local
- * regularity gets its faces repaired (flip_move) and is judged on the result. */
+ * regularity gets its faces repaired (d3_flip_move) and is judged on the result. */
 static int solve_vertex(cvm__d3_work *K, int32_t v)
 {
     cvm__d3_mesh *M = &K->W;
@@ -264,11 +264,11 @@ static int solve_vertex(cvm__d3_work *K, int32_t v)
                 st = cvm__d3_star_check(K, v, cand, cand[3], 1);
             else if (K->p->flips && spec++ < CVM__D3_SPECULATIVE && cvm__d3_star_check(K, v, cand, cand[3], 0) == 1)
                 st = 1; /* the fixed star's penalty and angles say nothing about the flipped
-                           one: flip_move judges it */
+                           one: d3_flip_move judges it */
             if (st == 0) { /* v itself moves at the end */
                 memcpy(cur, cand, sizeof cur);
                 best = f;
-            } else if (st == 1 && K->p->flips && flip_move(K, v, cand, cmin)) {
+            } else if (st == 1 && K->p->flips && d3_flip_move(K, v, cand, cmin)) {
                 /* a new star: its penalty and smallest angle are the new reference */
                 memcpy(cur, cand, sizeof cur);
                 best = cvm__d3_star_penalty(K, v, cur, cur[3], HUGE_VAL);
@@ -295,7 +295,7 @@ static int solve_vertex(cvm__d3_work *K, int32_t v)
             K->nout += K->out[t];
             /* these vertices see a new star, and so do those across its faces (whose
                link faces these are) */
-            unstick(K, (size_t)t);
+            d3_unstick(K, (size_t)t);
         }
     } else {
         K->stuck[v] = 1; /* the same search would fail again until a neighbour moves */

@@ -169,7 +169,7 @@ double cvm__d3_star_max_cos(const cvm__d3_work *K, int32_t v, const double *x)
  * locally regular), else 0; 0 for a constrained face. sos: ties decided by the
  * symbolic perturbation (by vertex index) that cvm_mesh_check() and
  * lib/delaunay3 use; else a tie is no conflict (strictly inside only). */
-static int face_test(const cvm__d3_mesh *M, size_t t, int f, int32_t v, const double *x,
+static int d3s_face_test(const cvm__d3_mesh *M, size_t t, int f, int32_t v, const double *x,
                      double wv, int sos)
 {
     int32_t nb = M->nbr[4 * t + (size_t)f], e;
@@ -194,7 +194,7 @@ static int face_test(const cvm__d3_mesh *M, size_t t, int f, int32_t v, const do
 static int face_conflict(const cvm__d3_mesh *M, size_t t, int f, int32_t v, const double *x,
                          double wv)
 {
-    return face_test(M, t, f, v, x, wv, 1);
+    return d3s_face_test(M, t, f, v, x, wv, 1);
 }
 
 int cvm__d3_star_check(const cvm__d3_work *K, int32_t v, const double *x, double wv, int counts)
@@ -222,8 +222,8 @@ int cvm__d3_star_check(const cvm__d3_work *K, int32_t v, const double *x, double
             if (face_conflict(M, t, f, v, x, wv) &&
                 (!face_conflict(M, t, f, v, x0, w0) ||
                  /* with flips, a face failing on a tie only may not fail strictly */
-                 (K->p->flips && face_test(M, t, f, v, x, wv, 0) &&
-                  !face_test(M, t, f, v, x0, w0, 0))))
+                 (K->p->flips && d3s_face_test(M, t, f, v, x, wv, 0) &&
+                  !d3s_face_test(M, t, f, v, x0, w0, 0))))
                 return 1;
         }
     }
@@ -263,6 +263,6 @@ int cvm__d3_face_conflict_at(const cvm__d3_mesh *M, size_t t, int f, int32_t v, 
     int32_t nb = M->nbr[4 * t + (size_t)f];
     /* the test from t's side sees v only as a corner: with v across, ask from there */
     if (nb >= 0 && M->tet[4 * ((size_t)nb >> 2) + ((size_t)nb & 3)] == v)
-        return face_test(M, (size_t)nb >> 2, nb & 3, v, x, wv, sos);
-    return face_test(M, t, f, v, x, wv, sos);
+        return d3s_face_test(M, (size_t)nb >> 2, nb & 3, v, x, wv, sos);
+    return d3s_face_test(M, t, f, v, x, wv, sos);
 }
