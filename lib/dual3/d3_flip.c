@@ -477,6 +477,20 @@ static int d3f_failed_before(const cvm__d3_work *K, int32_t t, int f, int32_t v,
            cvm__d3_face_conflict_at(K->M, (size_t)t, f, v, x0, w0, 0);
 }
 
+static int d3f_has(const int32_t *c, int32_t v)
+{
+    return c[0] == v || c[1] == v || c[2] == v || c[3] == v;
+}
+
+/* 1 for the second side of a face between two tetrahedra of v's star (a face at v,
+ * the neighbour with the smaller slot has it): each such face once. */
+static int d3f_twice(const cvm__d3_work *K, int32_t t, int f, int32_t v)
+{
+    int32_t nb = K->nbr[4 * (size_t)t + (size_t)f];
+    return nb >= 0 && K->tet[4 * (size_t)t + (size_t)f] != v && (nb >> 2) < t &&
+           d3f_has(K->tet + 4 * (size_t)t, v);
+}
+
 int cvm__d3_restore(cvm__d3_work *K, int32_t v, const double *x0, double w0, size_t ntet0)
 {
     size_t qn = 0, head = 0, s, nflip = 0;
@@ -485,7 +499,8 @@ int cvm__d3_restore(cvm__d3_work *K, int32_t v, const double *x0, double w0, siz
     for (s = 0; s < K->nstar; s++) {
         int f;
         for (f = 0; f < 4; f++)
-            K->queue[qn++] = 4 * K->star[s] + f;
+            if (!d3f_twice(K, K->star[s], f, v))
+                K->queue[qn++] = 4 * K->star[s] + f;
     }
     for (round = 0; round < 4; round++) {
         size_t flips_round = 0, t;
@@ -517,10 +532,11 @@ int cvm__d3_restore(cvm__d3_work *K, int32_t v, const double *x0, double w0, siz
         for (s = 0; s < K->nstar + (K->ntet - ntet0); s++) {
             int32_t tt = s < K->nstar ? K->star[s] : (int32_t)(ntet0 + (s - K->nstar));
             int f;
-            if (K->dead[tt])
-                continue;
+            if (K->dead[tt] || (s >= K->nstar && d3f_has(K->tet + 4 * (size_t)tt, v)))
+                continue; /* dead, or a new tetrahedron of the star, seen there */
             for (f = 0; f < 4; f++)
-                if (d3f_conflict(K, tt, f) && !d3f_failed_before(K, tt, f, v, x0, w0, ntet0)) {
+                if (!d3f_twice(K, tt, f, v) && d3f_conflict(K, tt, f) &&
+                    !d3f_failed_before(K, tt, f, v, x0, w0, ntet0)) {
                     if (qn == CVM__D3_QUEUE)
                         return 0;
                     K->queue[qn++] = 4 * tt + f;

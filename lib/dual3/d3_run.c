@@ -92,25 +92,29 @@ static cvm_status work_init(cvm__ctx *ctx, cvm__d3_work *K, const cvm__d3_mesh *
 }
 
 /* Penalty (L_k-weighted), outside counts and largest dihedral cosine of the
- * tetrahedra list[0..n) with v at (x, wv). */
+ * tetrahedra list[0..n) with v at (x, wv); full 0: the penalty only. */
 typedef struct d3_region {
     double pen, cmax;
     size_t nout, bout;
 } d3_region;
 
 static void d3_region_eval(const cvm__d3_work *K, const int32_t *list, size_t n, int32_t v,
-                        const double *x, double wv, d3_region *R)
+                           const double *x, double wv, int full, d3_region *R)
 {
     size_t i;
-    memset(R, 0, sizeof *R);
+    if (!full)
+        memset(R, 0, sizeof *R);
     R->cmax = -1;
     for (i = 0; i < n; i++) {
         size_t t = (size_t)list[i];
         const double *P[4];
         double W[4], f, c;
         cvm__d3_corners(K->M, t, v, x, wv, P, W);
-        f = cvm__d3_tet_penalty(P, W, K->p->margin, NULL);
-        R->pen += K->bnd[t] ? 2 * f : f;
+        if (!full) {
+            f = cvm__d3_tet_penalty(P, W, K->p->margin, NULL);
+            R->pen += K->bnd[t] ? 2 * f : f;
+            continue;
+        }
         c = cvm__d3_tet_max_cos(K->M, t, v, x);
         R->cmax = c > R->cmax ? c : R->cmax;
         if (cvm__tet_centre_inside(P[0], P[1], P[2], P[3], W) < 0) {
@@ -185,10 +189,16 @@ static int d3_flip_move(cvm__d3_work *K, int32_t v, const double *cand, double c
         for (i = ntet0; i < K->ntet; i++)
             if (!K->dead[i] && !d3_tet_has(K->tet + 4 * i, v))
                 newr[nnew++] = (int32_t)i;
-        d3_region_eval(K, oldr, nold, v, x0, w0, &Ro);
-        d3_region_eval(K, newr, nnew, v, cand, cand[3], &Rn);
-        cfloor = Ro.cmax > cfloor ? Ro.cmax : cfloor;
-        ok = Rn.pen < Ro.pen && Rn.nout <= Ro.nout && Rn.bout <= Ro.bout && Rn.cmax <= cfloor;
+        /* the penalty first: most repaired trials end there, before the exact counts */
+        d3_region_eval(K, oldr, nold, v, x0, w0, 0, &Ro);
+        d3_region_eval(K, newr, nnew, v, cand, cand[3], 0, &Rn);
+        ok = Rn.pen < Ro.pen;
+        if (ok) {
+            d3_region_eval(K, oldr, nold, v, x0, w0, 1, &Ro);
+            d3_region_eval(K, newr, nnew, v, cand, cand[3], 1, &Rn);
+            cfloor = Ro.cmax > cfloor ? Ro.cmax : cfloor;
+            ok = Rn.nout <= Ro.nout && Rn.bout <= Ro.bout && Rn.cmax <= cfloor;
+        }
     }
     if (!ok) {
         cvm__d3_undo_all(K, ntet0);
