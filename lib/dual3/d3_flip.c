@@ -1,9 +1,9 @@
 /*
  * d3_flip.c - the mutable connectivity of the 3D power-dual optimiser
  * (dual3.h): a copy of the tetrahedra with their neighbours and constrained
- * faces, the vertex stars found by walking it, exact 2-3 and 3-2 flips of
- * faces that are not locally regular, and the undo log that takes a rejected
- * move back. Every flip is decided by exact predicates: the face is not
+ * faces, the vertex stars found by walking it, exact 2-3, 3-2 and 4-4 flips
+ * of faces that are not locally regular, and the undo log that takes a
+ * rejected move back. Every flip is decided by exact predicates: the face is not
  * locally regular (perturbed power test), it and every other face the flip
  * removes are unconstrained and between tetrahedra of one region, and the new
  * tetrahedra are positively oriented (orient3d) and fill the old ones' union.
@@ -550,8 +550,7 @@ int cvm__d3_restore(cvm__d3_work *K, int32_t v, const double *x0, double w0, siz
     return 0;
 }
 
-/* The smallest dihedral cosine bound check of the last nn slots: 1 when every new
- * tetrahedron's largest dihedral cosine is at most cmax. */
+/* 1 when each of the last nn tetrahedra has no dihedral cosine above cmax. */
 static int d3f_new_ok(const cvm__d3_work *K, int nn, double cmax)
 {
     size_t t;
