@@ -918,6 +918,14 @@ typedef enum cvm_option {
      *  vertices coincide (exact power test) or are closer than tol x l_V. Read by the
      *  measures and copies only; the mesh never changes. @since 0.2 */
     CVM_OPT_DUAL3_MERGE_TOL = 755,
+    /** 1 (default): cvm_mesh_optimise_dual3() may change the connectivity: a trial move
+     *  that leaves faces not locally regular is followed by exact 2-3 and 3-2 flips of
+     *  unconstrained faces between tetrahedra of one region until every face there is
+     *  locally regular again (else the move is undone), and a first pass flips the faces
+     *  of the input that are not; the surface triangles stay faces and no vertex is
+     *  lost, but tetrahedra are renumbered and their count changes. 0: the connectivity
+     *  is kept. Integer, bounds [0, 1]. @since 0.2 */
+    CVM_OPT_DUAL3_FLIPS = 756,
     /* ---- quad-dominant meshing (800-899): read by cvm_mesh_quadmesh() ---- */
     /** Exponent p of the Lp-CVT energy, even integer, default 6, bounds [2, 12]. p = 2 is
      *  the classic CVT (hexagonal cells); larger p pulls the cells towards squares of unit
@@ -2994,7 +3002,7 @@ CVM_API cvm_status cvm_mesh_generate3_sized(cvm_mesh *m, double size, const cvm_
 /**
  * Optimise the vertex positions and power weights of the tetrahedral mesh of
  * @p m so that more tetrahedra contain their power vertex (the 3D form of
- * cvm_mesh_optimise_dual(); this version keeps the connectivity). Sweeps visit
+ * cvm_mesh_optimise_dual()). Sweeps visit
  * the vertices of the tetrahedra whose power vertex lies strictly outside them
  * (exact), worst score F_k = W_k L_k |C_k - V_k| first (centroid C, power
  * vertex V, W_k 1 when outside else 0, L_k 2 with a boundary face else 1), in
@@ -3008,14 +3016,24 @@ CVM_API cvm_status cvm_mesh_generate3_sized(cvm_mesh *m, double size, const cvm_
  * surface stays locally regular (exact power test; a face that failed before
  * may keep failing); the exactly counted outside tetrahedra there do not
  * increase; no dihedral angle there drops below min(CVM_OPT_DUAL3_MIN_DIHEDRAL_DEG,
- * the smallest before). Vertices on a boundary face (or an internal facet)
+ * the smallest before). With CVM_OPT_DUAL3_FLIPS (default) the connectivity
+ * changes instead of refusing a move for local regularity: exact 2-3, 3-2 and
+ * 4-4 flips of unconstrained faces between tetrahedra of one region repair
+ * every face the move left not locally regular (else the move and its flips
+ * are undone), and the other rules are judged on the tetrahedra replaced
+ * against those replacing them; a first pass flips the input's faces that are
+ * not locally regular (when no new dihedral angle drops below min(10 degrees,
+ * the smallest there)); a face that no flip repairs may keep failing only by the
+ * perturbation (never with a vertex strictly inside an orthosphere). Flips
+ * never remove a vertex or a surface triangle, but they renumber the
+ * tetrahedra and change their count. Vertices on a boundary face (or an internal facet)
  * keep their position, except those inside an axis-aligned planar facet
- * (CVM_OPT_DUAL3_SLIDE_BOUNDARY), which move within its plane; every weight is free. So every tetrahedron and face,
- * the surface triangles included, stays, no power cell vanishes, and a locally
+ * (CVM_OPT_DUAL3_SLIDE_BOUNDARY), which move within its plane; every weight is free. So
+ * the surface triangles stay faces, no power cell vanishes, and a locally
  * regular mesh stays the regular tetrahedralisation of its weighted vertices.
  * The run stops when nothing is outside, a sweep moves nothing, after 3 sweeps
  * without a new lowest count, or at CVM_OPT_DUAL3_MAX_SWEEPS. Not in this
- * version: flips (topology changes), boundary vertices sliding on oblique or
+ * version: flips of surface triangles, boundary vertices sliding on oblique or
  * curved surfaces, Modified Cuckoo Search, threads, merging into polyhedral cells.
  * The report: CVM_REPORT_DUAL3_* (cvm_mesh_get_report()).
  *
@@ -3025,11 +3043,13 @@ CVM_API cvm_status cvm_mesh_generate3_sized(cvm_mesh *m, double size, const cvm_
  * Options:  CVM_OPT_DUAL3_*, CVM_OPT_SEED, CVM_OPT_TIME_LIMIT_S; the progress callback
  *           (stage CVM_STAGE_OPTIMISE_DUAL) gets the fraction of the initially outside
  *           tetrahedra fixed so far, and can cancel. CVM_OPT_THREADS is not read.
- * Stops:    on the time limit or cancellation the mesh holds the moves made so far, each
- *           of which kept it valid.
+ * Stops:    on the time limit or cancellation the mesh holds the moves (and flips) made
+ *           so far, each of which kept it valid.
  * Determinism: same mesh, options and seed give bit-identical output (except where the
  *           time limit stops the run), whatever the number of threads.
- * Atomicity: on CVM_E_NOMEM (raised before any move) the mesh is unchanged.
+ * Atomicity: on CVM_E_NOMEM (raised before any move) the mesh is unchanged. With flips
+ *           the tetrahedra are renumbered: indices taken before (cells, their region
+ *           attributes, merge groups, dual vertices) do not apply to the result.
  * @return CVM_OK
  *         CVM_E_NULL_ARG
  *         CVM_E_STATE            no tetrahedral mesh on the handle (a 2D handle: use
@@ -3399,6 +3419,9 @@ typedef enum cvm_report {
     CVM_REPORT_GEN3_FACETS_REMESHED = 757,    /**< = CVM_MEASURE_GEN3_FACETS_REMESHED */
     CVM_REPORT_GEN3_SURFACE_TRIS_BEFORE = 758, /**< = CVM_MEASURE_GEN3_SURFACE_TRIS_BEFORE */
     CVM_REPORT_GEN3_SURFACE_TRIS_AFTER = 759, /**< = CVM_MEASURE_GEN3_SURFACE_TRIS_AFTER */
+    /* the last cvm_mesh_optimise_dual3() again */
+    CVM_REPORT_DUAL3_FLIPS = 760,             /**< flips kept (CVM_OPT_DUAL3_FLIPS), the first
+                                                   pass over the input's faces included */
     /* the last cvm_mesh_quadmesh() (0 before any, and after any call that drops the quads).
        Corner angles and edge lengths are measured in the metric: a corner's angle with g at
        its quad's centroid, an edge's metric length sqrt(e^T g e) with g at its midpoint. */

@@ -39,6 +39,7 @@ static cvm_status mesh3_merge_run(cvm__ctx *ctx, const cvm_mesh *m, int32_t *gro
     M.ntet = g->ntet;
     M.nbr = nbr;
     M.cface = cf;
+    M.attr = g->tattr;
     s = cvm__d3_merge(ctx, &M, g->tattr, cvm__opt(m, CVM_OPT_DUAL3_MERGE_TOL), grp, r);
     if (grp != group)
         cvm__free(ctx, grp);

@@ -1,7 +1,8 @@
 /*
  * optimise3.c - cvm_mesh_optimise_dual3(): check the call, mark the faces the
  * optimiser must keep (no neighbour, or an internal facet of the surface),
- * run lib/dual3 on the handle's vertices and weights, keep the report.
+ * run lib/dual3 on the handle's vertices and weights, take back the flipped
+ * tetrahedra (CVM_OPT_DUAL3_FLIPS), keep the report.
  */
 #include <string.h>
 
@@ -14,6 +15,7 @@ cvm_status cvm_mesh_optimise_dual3(cvm_mesh *m)
     cvm__d3_mesh M;
     cvm__d3_params p;
     cvm__d3_report r;
+    cvm__d3_topo topo;
     int32_t *nbr = NULL;
     uint8_t *cf = NULL;
     double t0 = cvm__now(), *w_new = NULL;
@@ -37,6 +39,8 @@ cvm_status cvm_mesh_optimise_dual3(cvm_mesh *m)
     p.margin = cvm__opt(m, CVM_OPT_DUAL3_MARGIN);
     p.seed = (uint64_t)cvm__opt(m, CVM_OPT_SEED);
     p.slide = cvm__opt(m, CVM_OPT_DUAL3_SLIDE_BOUNDARY) != 0;
+    p.flips = cvm__opt(m, CVM_OPT_DUAL3_FLIPS) != 0;
+    memset(&topo, 0, sizeof topo);
     cvm__run_begin(&m->ctx, cvm__opt(m, CVM_OPT_TIME_LIMIT_S));
     if ((s = cvm__mesh3_adjacency(&m->ctx, g->tet, g->ntet, &nbr)))
         return s;
@@ -56,7 +60,8 @@ cvm_status cvm_mesh_optimise_dual3(cvm_mesh *m)
     M.ntet = g->ntet;
     M.nbr = nbr;
     M.cface = cf;
-    s = cvm__d3_optimise(&m->ctx, &M, &p, &r);
+    M.attr = g->tattr;
+    s = cvm__d3_optimise(&m->ctx, &M, &p, &r, &topo);
     cvm__free(&m->ctx, nbr);
     cvm__free(&m->ctx, cf);
     if (s == CVM_E_NOMEM) {
@@ -65,18 +70,27 @@ cvm_status cvm_mesh_optimise_dual3(cvm_mesh *m)
     }
     if (w_new)
         g->w = w_new;
+    if (topo.tet) {
+        /* the flipped connectivity: the surface triangles (g->face) are faces of it */
+        cvm__free(&m->ctx, g->tet);
+        cvm__free(&m->ctx, g->tattr);
+        g->tet = topo.tet;
+        g->tattr = topo.attr;
+        g->ntet = topo.ntet;
+    }
     g->gen3[10] = (double)r.sweeps;
     g->gen3[11] = r.ntet ? 100.0 * (double)r.out_before / (double)r.ntet : 0;
-    g->gen3[12] = r.ntet ? 100.0 * (double)r.out_after / (double)r.ntet : 0;
+    g->gen3[12] = r.ntet_after ? 100.0 * (double)r.out_after / (double)r.ntet_after : 0;
     g->gen3[13] = r.nbnd ? 100.0 * (double)r.bout_before / (double)r.nbnd : 0;
-    g->gen3[14] = r.nbnd ? 100.0 * (double)r.bout_after / (double)r.nbnd : 0;
+    g->gen3[14] = r.nbnd_after ? 100.0 * (double)r.bout_after / (double)r.nbnd_after : 0;
     g->gen3[15] = (double)r.moves;
     g->gen3[16] = cvm__now() - t0;
+    g->gen3[20] = (double)r.flips;
     if (s == CVM_INCOMPLETE_TIME_LIMIT)
         return cvm__error(&m->ctx, s, CVM_ENT_NONE, -1,
                           "time limit reached after %lu sweeps: %lu of %lu tetrahedra still "
                           "outside (the mesh is valid)", (unsigned long)r.sweeps,
-                          (unsigned long)r.out_after, (unsigned long)r.ntet);
+                          (unsigned long)r.out_after, (unsigned long)r.ntet_after);
     if (s == CVM_INCOMPLETE_CANCELLED)
         return cvm__error(&m->ctx, s, CVM_ENT_NONE, -1,
                           "cancelled after %lu sweeps (the mesh is valid)", (unsigned long)r.sweeps);

@@ -159,6 +159,7 @@ static void report(FILE *f, cvm_mesh *m)
         {CVM_REPORT_GEN3_RECOVERY_DROPPED, 1, "points dropped for recovery", "%.0f"},
         {CVM_REPORT_DUAL3_SWEEPS, 2, "optimiser sweeps", "%.0f"},
         {CVM_REPORT_DUAL3_MOVES, 2, "optimiser moves", "%.0f"},
+        {CVM_REPORT_DUAL3_FLIPS, 2, "optimiser flips", "%.0f"},
         {CVM_REPORT_DUAL3_OUTSIDE_BEFORE_PCT, 2, "outside before optimising", "%.3f %%"},
         {CVM_REPORT_DUAL3_OUTSIDE_BOUNDARY_BEFORE_PCT, 2, "  at the boundary", "%.3f %%"},
         {CVM_REPORT_DUAL3_SECONDS, 2, "optimiser seconds", "%.3g"},

@@ -27,6 +27,8 @@ static const cli_option_flag k_flags[] = {
      "--optimise: no move takes a dihedral angle below min(DEG, before) (default 10)"},
     {"--opt-fixed-boundary", NULL, CVM_OPT_DUAL3_SLIDE_BOUNDARY, 0, M3,
      "--optimise: no boundary vertex moves (by default those inside an axis-aligned planar facet slide in it)"},
+    {"--opt-no-flips", NULL, CVM_OPT_DUAL3_FLIPS, 0, M3,
+     "--optimise: keep the connectivity (by default flips repair the faces a move leaves not locally regular)"},
     {"--opt-margin", "F", CVM_OPT_DUAL3_MARGIN, 0, M3,
      "--optimise: wanted depth of the power vertex inside each face, x mean edge (default 0.03)"},
     {"--merge-tol", "F", CVM_OPT_DUAL3_MERGE_TOL, 0, M3 | TET,

@@ -26,11 +26,8 @@ static int rank_cmp(const void *pa, const void *pb)
 
 static void work_free(cvm__ctx *ctx, cvm__d3_work *K)
 {
-    cvm__free(ctx, K->voff);
-    cvm__free(ctx, K->vtet);
+    cvm__d3_topo_free(ctx, K);
     cvm__free(ctx, K->fixpos);
-    cvm__free(ctx, K->out);
-    cvm__free(ctx, K->bnd);
     cvm__free(ctx, K->lv);
     cvm__free(ctx, K->stuck);
     cvm__free(ctx, K->slide);
@@ -41,31 +38,23 @@ static cvm_status work_init(cvm__ctx *ctx, cvm__d3_work *K, const cvm__d3_mesh *
 {
     size_t t, i, nv = M->nv;
     double *cnt;
-    K->voff = cvm__calloc(ctx, nv + 1, sizeof *K->voff);
-    K->vtet = cvm__malloc(ctx, (4 * M->ntet + 1) * sizeof *K->vtet);
+    cvm_status s;
+    if ((s = cvm__d3_topo_init(ctx, K, M)))
+        return s;
     K->fixpos = cvm__calloc(ctx, nv + 1, 1);
-    K->out = cvm__calloc(ctx, M->ntet + 1, 1);
-    K->bnd = cvm__calloc(ctx, M->ntet + 1, 1);
     K->lv = cvm__calloc(ctx, 2 * nv + 1, sizeof *K->lv);
     K->stuck = cvm__calloc(ctx, nv + 1, 1);
     K->slide = cvm__malloc(ctx, nv + 1);
-    if (!K->voff || !K->vtet || !K->fixpos || !K->out || !K->bnd || !K->lv || !K->stuck ||
-        !K->slide) {
+    if (!K->fixpos || !K->lv || !K->stuck || !K->slide) {
         work_free(ctx, K);
         return cvm__nomem(ctx);
     }
     cnt = K->lv + nv;
     memset(K->slide, 7, nv + 1);
-    for (t = 0; t < 4 * M->ntet; t++)
-        K->voff[M->tet[t] + 1]++;
-    for (i = 0; i < nv; i++)
-        K->voff[i + 1] += K->voff[i];
     for (t = 0; t < M->ntet; t++) {
         int a, b;
         for (a = 0; a < 4; a++) {
             int32_t q = M->tet[4 * t + (size_t)a];
-            /* fill from the end so that each list stays in increasing t */
-            K->vtet[K->voff[q]++] = (int32_t)t;
             if (M->nbr[4 * t + (size_t)a] < 0)
                 K->bnd[t] = 1;
             if (M->cface[4 * t + (size_t)a]) {
@@ -92,9 +81,6 @@ static cvm_status work_init(cvm__ctx *ctx, cvm__d3_work *K, const cvm__d3_mesh *
         }
         K->out[t] = (uint8_t)cvm__d3_outside(M, t);
     }
-    for (i = nv; i > 0; i--)
-        K->voff[i] = K->voff[i - 1];
-    K->voff[0] = 0;
     for (i = 0; i < nv; i++) {
         K->lv[i] = cnt[i] > 0 ? K->lv[i] / cnt[i] : 0;
         /* every constrained face at i in one plane x_a = const: i may move in the other two
@@ -102,21 +88,160 @@ static cvm_status work_init(cvm__ctx *ctx, cvm__d3_work *K, const cvm__d3_mesh *
         K->slide[i] = K->p->slide && (K->slide[i] == 1 || K->slide[i] == 2 || K->slide[i] == 4)
                           ? (uint8_t)(~K->slide[i] & 7) : 0;
     }
-    K->M = M;
     return CVM_OK;
+}
+
+/* Penalty (L_k-weighted), outside counts and largest dihedral cosine of the
+ * tetrahedra list[0..n) with v at (x, wv); full 0: the penalty only. */
+typedef struct d3_region {
+    double pen, cmax;
+    size_t nout, bout;
+} d3_region;
+
+static void d3_region_eval(const cvm__d3_work *K, const int32_t *list, size_t n, int32_t v,
+                           const double *x, double wv, int full, d3_region *R)
+{
+    size_t i;
+    if (!full)
+        memset(R, 0, sizeof *R);
+    R->cmax = -1;
+    for (i = 0; i < n; i++) {
+        size_t t = (size_t)list[i];
+        const double *P[4];
+        double W[4], f, c;
+        cvm__d3_corners(K->M, t, v, x, wv, P, W);
+        if (!full) {
+            f = cvm__d3_tet_penalty(P, W, K->p->margin, NULL);
+            R->pen += K->bnd[t] ? 2 * f : f;
+            continue;
+        }
+        c = cvm__d3_tet_max_cos(K->M, t, v, x);
+        R->cmax = c > R->cmax ? c : R->cmax;
+        if (cvm__tet_centre_inside(P[0], P[1], P[2], P[3], W) < 0) {
+            R->nout++;
+            R->bout += K->bnd[t];
+        }
+    }
+}
+
+static int d3_tet_has(const int32_t *c, int32_t v)
+{
+    return c[0] == v || c[1] == v || c[2] == v || c[3] == v;
+}
+
+/* Clear the stuck flag of the corners of t and of the vertices across its faces. */
+static void d3_unstick(cvm__d3_work *K, size_t t)
+{
+    int k;
+    for (k = 0; k < 4; k++) {
+        int32_t nb = K->nbr[4 * t + (size_t)k];
+        K->stuck[K->tet[4 * t + (size_t)k]] = 0;
+        if (nb >= 0)
+            K->stuck[K->tet[nb]] = 0;
+    }
+}
+
+/* Move v from (x0, w0) to cand (its star in K->star) and repair the faces that are
+ * no longer locally regular by flips. Kept when the repair succeeds and, over the
+ * tetrahedra the move and the flips replaced against those that replace them, the
+ * penalty drops, the outside counts do not grow and no dihedral angle falls below
+ * min(floor, the smallest before); else everything is undone. 1 when kept (v's new
+ * star in K->star). */
+static int d3_flip_move(cvm__d3_work *K, int32_t v, const double *cand, double cfloor)
+{
+    cvm__d3_mesh *M = &K->W;
+    double x0[3], w0 = M->w[v];
+    size_t ntet0, i, nold, nnew;
+    int32_t *oldr = K->queue, *newr; /* the queue is free again once the repair is done */
+    d3_region Ro, Rn;
+    int ok;
+    memcpy(x0, M->xyz + 3 * (size_t)v, sizeof x0);
+    if (K->ntet + 4 * CVM__D3_MAX_FLIPS > K->cap) {
+        /* compacting renumbers the tetrahedra in order: v's star follows */
+        cvm__d3_compact(K);
+        for (i = 0; i < K->nstar; i++)
+            K->star[i] = K->remap[K->star[i]];
+        if (K->ntet + 4 * CVM__D3_MAX_FLIPS > K->cap)
+            return 0;
+    }
+    ntet0 = K->ntet;
+    memcpy(K->star0, K->star, K->nstar * sizeof *K->star);
+    K->nstar0 = K->nstar;
+    K->logging = 1;
+    K->nlog = 0;
+    memcpy(M->xyz + 3 * (size_t)v, cand, 3 * sizeof *cand);
+    M->w[v] = cand[3];
+    ok = cvm__d3_restore(K, v, x0, w0, ntet0);
+    if (ok) {
+        /* old side: the star before and every older tetrahedron killed; new side: the
+           star now and every appended tetrahedron alive outside it */
+        nold = 0;
+        for (i = 0; i < K->nstar0; i++)
+            oldr[nold++] = K->star0[i];
+        for (i = 0; i < K->nlog; i++)
+            if (K->log[i].kind == 1 && (size_t)K->log[i].idx < ntet0 &&
+                !d3_tet_has(K->tet + 4 * (size_t)K->log[i].idx, v))
+                oldr[nold++] = K->log[i].idx;
+        newr = oldr + nold;
+        nnew = 0;
+        for (i = 0; i < K->nstar; i++)
+            newr[nnew++] = K->star[i];
+        for (i = ntet0; i < K->ntet; i++)
+            if (!K->dead[i] && !d3_tet_has(K->tet + 4 * i, v))
+                newr[nnew++] = (int32_t)i;
+        /* the penalty first: most repaired trials end there, before the exact counts */
+        d3_region_eval(K, oldr, nold, v, x0, w0, 0, &Ro);
+        d3_region_eval(K, newr, nnew, v, cand, cand[3], 0, &Rn);
+        ok = Rn.pen < Ro.pen;
+        if (ok) {
+            d3_region_eval(K, oldr, nold, v, x0, w0, 1, &Ro);
+            d3_region_eval(K, newr, nnew, v, cand, cand[3], 1, &Rn);
+            cfloor = Ro.cmax > cfloor ? Ro.cmax : cfloor;
+            ok = Rn.nout <= Ro.nout && Rn.bout <= Ro.bout && Rn.cmax <= cfloor;
+        }
+    }
+    if (!ok) {
+        cvm__d3_undo_all(K, ntet0);
+        memcpy(M->xyz + 3 * (size_t)v, x0, sizeof x0);
+        M->w[v] = w0;
+        memcpy(K->star, K->star0, K->nstar0 * sizeof *K->star);
+        K->nstar = K->nstar0;
+        K->logging = 0;
+        return 0;
+    }
+    for (i = 0; i < K->nlog; i++)
+        if (K->log[i].kind == 1) {
+            size_t t = (size_t)K->log[i].idx;
+            if (t < ntet0)
+                K->nout -= K->out[t];
+            K->out[t] = 0;
+        }
+    for (i = 0; i < nnew; i++) {
+        size_t t = (size_t)newr[i];
+        if (t < ntet0)
+            K->nout -= K->out[t];
+        K->out[t] = (uint8_t)cvm__d3_outside(M, t);
+        K->nout += K->out[t];
+        d3_unstick(K, t);
+    }
+    K->flips += K->mflips;
+    K->logging = 0;
+    K->nlog = 0;
+    return 1;
 }
 
 /* Compass search for v over (x, y, z, w): the coordinates its position may
  * change in (all for an interior vertex, the two in-plane ones for one inside
  * an axis-aligned planar facet with slide on, none otherwise) and w; writes the
- * best valid point found; 1 when v moved. */
+ * best valid point found; 1 when v moved. With flips, a trial that breaks local
+ * regularity gets its faces repaired (d3_flip_move) and is judged on the result. */
 static int solve_vertex(cvm__d3_work *K, int32_t v)
 {
-    cvm__d3_mesh *M = (cvm__d3_mesh *)K->M;
+    cvm__d3_mesh *M = &K->W;
     double *x0 = M->xyz + 3 * (size_t)v;
-    double cur[4], cand[4], best, cmax0, cfloor, hs, hw;
-    int evals = 0, dir, first = 0, nd = 0, moved = 0, a, dirs[8];
-    if (K->lv[v] <= 0 || K->stuck[v])
+    double cur[4], cand[4], best, cmax0, cfloor, cmin, hs, hw;
+    int evals = 0, dir, first = 0, nd = 0, moved = 0, a, dirs[8], spec = 0;
+    if (K->lv[v] <= 0 || K->stuck[v] || cvm__d3_gather_star(K, v))
         return 0;
     for (a = 0; a < 3; a++)
         if (!K->fixpos[v] || (K->slide[v] >> a & 1))
@@ -128,14 +253,15 @@ static int solve_vertex(cvm__d3_work *K, int32_t v)
         return 0;
     /* no angle below min(the floor, the smallest now): cosines, larger is worse */
     cmax0 = cvm__d3_star_max_cos(K, v, cur);
-    cfloor = cos(K->p->min_dihedral_deg * (CVM__PI / 180));
-    cfloor = cmax0 > cfloor ? cmax0 : cfloor;
+    cmin = cos(K->p->min_dihedral_deg * (CVM__PI / 180));
+    cfloor = cmax0 > cmin ? cmax0 : cmin;
     hs = 0.08 * K->lv[v];
     hw = 0.16 * K->lv[v] * K->lv[v];
     while (evals < K->p->budget && hs > 1e-3 * K->lv[v]) {
         int improved = 0, k;
         for (k = 0; k < nd && evals < K->p->budget; k++) {
             double f;
+            int st = -1;
             dir = dirs[(first + k) % nd];
             memcpy(cand, cur, sizeof cand);
             if (dir >= 6)
@@ -144,36 +270,42 @@ static int solve_vertex(cvm__d3_work *K, int32_t v)
                 cand[dir >> 1] += (dir & 1) ? -hs : hs;
             f = cvm__d3_star_penalty(K, v, cand, cand[3], best);
             evals++;
-            if (f < best && (dir >= 6 || cvm__d3_star_max_cos(K, v, cand) <= cfloor) &&
-                cvm__d3_star_valid(K, v, cand, cand[3])) {
+            if (f < best && (dir >= 6 || cvm__d3_star_max_cos(K, v, cand) <= cfloor))
+                st = cvm__d3_star_check(K, v, cand, cand[3], 1);
+            else if (K->p->flips && spec++ < CVM__D3_SPECULATIVE && cvm__d3_star_check(K, v, cand, cand[3], 0) == 1)
+                st = 1; /* the fixed star's penalty and angles say nothing about the flipped
+                           one: d3_flip_move judges it */
+            if (st == 0) { /* v itself moves at the end */
                 memcpy(cur, cand, sizeof cur);
                 best = f;
-                first = (first + k) % nd;
-                improved = moved = 1;
-                break;
+            } else if (st == 1 && K->p->flips && d3_flip_move(K, v, cand, cmin)) {
+                /* a new star: its penalty and smallest angle are the new reference */
+                memcpy(cur, cand, sizeof cur);
+                best = cvm__d3_star_penalty(K, v, cur, cur[3], HUGE_VAL);
+                cmax0 = cvm__d3_star_max_cos(K, v, cur);
+                cfloor = cmax0 > cmin ? cmax0 : cmin;
+            } else {
+                continue;
             }
+            first = (first + k) % nd;
+            improved = moved = 1;
+            break;
         }
         if (!improved)
             hs *= 0.5, hw *= 0.5;
     }
     if (moved) {
-        int32_t s;
-        int k;
+        size_t s;
         x0[0] = cur[0], x0[1] = cur[1], x0[2] = cur[2];
         M->w[v] = cur[3];
-        for (s = K->voff[v]; s < K->voff[v + 1]; s++) {
-            int32_t t = K->vtet[s];
+        for (s = 0; s < K->nstar; s++) {
+            int32_t t = K->star[s];
             K->nout -= K->out[t];
             K->out[t] = (uint8_t)cvm__d3_outside(M, (size_t)t);
             K->nout += K->out[t];
             /* these vertices see a new star, and so do those across its faces (whose
                link faces these are) */
-            for (k = 0; k < 4; k++) {
-                int32_t nb = M->nbr[4 * (size_t)t + (size_t)k];
-                K->stuck[M->tet[4 * (size_t)t + (size_t)k]] = 0;
-                if (nb >= 0)
-                    K->stuck[M->tet[4 * ((size_t)nb >> 2) + ((size_t)nb & 3)]] = 0;
-            }
+            d3_unstick(K, (size_t)t);
         }
     } else {
         K->stuck[v] = 1; /* the same search would fail again until a neighbour moves */
@@ -181,13 +313,16 @@ static int solve_vertex(cvm__d3_work *K, int32_t v)
     return moved;
 }
 
-static size_t count_out(const cvm__d3_work *K, size_t ntet, size_t *bout)
+static size_t count_out(const cvm__d3_work *K, size_t *bout, size_t *nbnd)
 {
     size_t t, n = 0;
-    *bout = 0;
-    for (t = 0; t < ntet; t++) {
+    *bout = *nbnd = 0;
+    for (t = 0; t < K->ntet; t++) {
+        if (K->dead[t])
+            continue;
         n += K->out[t];
         *bout += K->out[t] && K->bnd[t];
+        *nbnd += K->bnd[t];
     }
     return n;
 }
@@ -241,7 +376,7 @@ static size_t sweep_order(const cvm__d3_work *K, d3_rank *rk, double *vs, uint64
 }
 
 cvm_status cvm__d3_optimise(cvm__ctx *ctx, cvm__d3_mesh *M, const cvm__d3_params *p,
-                            cvm__d3_report *r)
+                            cvm__d3_report *r, cvm__d3_topo *topo)
 {
     cvm__d3_work K;
     d3_rank *rk;
@@ -262,21 +397,37 @@ cvm_status cvm__d3_optimise(cvm__ctx *ctx, cvm__d3_mesh *M, const cvm__d3_params
         work_free(ctx, &K);
         return cvm__nomem(ctx);
     }
-    for (i = 0; i < M->ntet; i++)
-        r->nbnd += K.bnd[i];
-    r->out_before = r->out_after = K.nout = count_out(&K, M->ntet, &r->bout_before);
-    r->bout_after = r->bout_before;
-    low = r->out_before;
+    /* nothing is allocated from here on: a stop leaves the mesh as it is */
+    r->out_before = K.nout = count_out(&K, &r->bout_before, &r->nbnd);
+    if (p->flips && p->max_sweeps > 0) {
+        /* a constrained Delaunay mesh can start with faces that are not locally regular */
+        r->flips_start = cvm__d3_regularise(&K, cos(p->min_dihedral_deg * (CVM__PI / 180)));
+        K.flips = r->flips_start;
+        if (r->flips_start) {
+            cvm__d3_compact(&K);
+            for (i = 0; i < K.ntet; i++) {
+                int f;
+                K.out[i] = (uint8_t)cvm__d3_outside(K.M, i);
+                K.bnd[i] = 0;
+                for (f = 0; f < 4; f++)
+                    K.bnd[i] |= K.nbr[4 * i + (size_t)f] < 0;
+            }
+        }
+    }
+    r->out_after = K.nout = count_out(&K, &r->bout_after, &r->nbnd_after);
+    low = r->out_after;
     for (sweep = 0; sweep < (size_t)p->max_sweeps && r->out_after > 0 && !s; sweep++) {
         size_t n = sweep_order(&K, rk, vs, p->seed, sweep), moved = 0;
         for (i = 0; i < n && !s; i++) {
             moved += (size_t)solve_vertex(&K, rk[i].v);
             s = cvm__tick(ctx, 1, CVM_STAGE_OPTIMISE_DUAL,
-                          1.0 - (double)K.nout / (double)r->out_before);
+                          1.0 - (double)K.nout / (double)(r->out_before ? r->out_before : 1));
         }
+        if (p->flips)
+            cvm__d3_compact(&K);
         r->moves += moved;
         r->sweeps++;
-        r->out_after = count_out(&K, M->ntet, &r->bout_after);
+        r->out_after = count_out(&K, &r->bout_after, &r->nbnd_after);
         if (r->out_after < low)
             low = r->out_after, stall = 0;
         else if (++stall >= 3)
@@ -284,7 +435,18 @@ cvm_status cvm__d3_optimise(cvm__ctx *ctx, cvm__d3_mesh *M, const cvm__d3_params
         if (!moved)
             break;
     }
-    r->out_after = count_out(&K, M->ntet, &r->bout_after);
+    if (p->flips)
+        cvm__d3_compact(&K);
+    r->out_after = count_out(&K, &r->bout_after, &r->nbnd_after);
+    r->ntet_after = K.ntet;
+    r->flips = K.flips;
+    if (p->flips) { /* hand the connectivity over: no allocation, so no failure here */
+        topo->tet = K.tet;
+        topo->attr = K.attr;
+        topo->ntet = K.ntet;
+        K.tet = NULL;
+        K.attr = NULL;
+    }
     cvm__free(ctx, rk);
     cvm__free(ctx, vs);
     work_free(ctx, &K);

@@ -9,9 +9,8 @@
 #include "dual3/d3_internal.h"
 #include "geom/geom_internal.h"
 
-/* The corners and weights of tetrahedron t with vertex v (if a corner) at x, wv. */
-static void corners(const cvm__d3_mesh *M, size_t t, int32_t v, const double *x, double wv,
-                    const double *P[4], double W[4])
+void cvm__d3_corners(const cvm__d3_mesh *M, size_t t, int32_t v, const double *x, double wv,
+                     const double *P[4], double W[4])
 {
     int k;
     for (k = 0; k < 4; k++) {
@@ -129,13 +128,13 @@ double cvm__d3_star_penalty(const cvm__d3_work *K, int32_t v, const double *x, d
                             double stop)
 {
     const cvm__d3_mesh *M = K->M;
-    int32_t s;
+    size_t s;
     double sum = 0;
-    for (s = K->voff[v]; s < K->voff[v + 1]; s++) {
-        size_t t = (size_t)K->vtet[s];
+    for (s = 0; s < K->nstar; s++) {
+        size_t t = (size_t)K->star[s];
         const double *P[4];
         double W[4], f;
-        corners(M, t, v, x, wv, P, W);
+        cvm__d3_corners(M, t, v, x, wv, P, W);
         f = cvm__d3_tet_penalty(P, W, K->p->margin, NULL);
         if (f == HUGE_VAL)
             return HUGE_VAL;
@@ -146,16 +145,20 @@ double cvm__d3_star_penalty(const cvm__d3_work *K, int32_t v, const double *x, d
     return sum;
 }
 
+double cvm__d3_tet_max_cos(const cvm__d3_mesh *M, size_t t, int32_t v, const double *x)
+{
+    const double *P[4];
+    double W[4];
+    cvm__d3_corners(M, t, v, x, 0, P, W);
+    return tet_max_cos(P);
+}
+
 double cvm__d3_star_max_cos(const cvm__d3_work *K, int32_t v, const double *x)
 {
-    const cvm__d3_mesh *M = K->M;
-    int32_t s;
+    size_t s;
     double cmax = -1;
-    for (s = K->voff[v]; s < K->voff[v + 1]; s++) {
-        const double *P[4];
-        double W[4], c;
-        corners(M, (size_t)K->vtet[s], v, x, 0, P, W);
-        c = tet_max_cos(P);
+    for (s = 0; s < K->nstar; s++) {
+        double c = cvm__d3_tet_max_cos(K->M, (size_t)K->star[s], v, x);
         cmax = c > cmax ? c : cmax;
     }
     return cmax;
@@ -163,9 +166,11 @@ double cvm__d3_star_max_cos(const cvm__d3_work *K, int32_t v, const double *x)
 
 /* The exact power test of face f of tetrahedron t against the vertex across
  * it, v at (x, wv): 1 when that vertex is in conflict (the face is not
- * locally regular), else 0; 0 for a constrained face. */
-static int face_conflict(const cvm__d3_mesh *M, size_t t, int f, int32_t v, const double *x,
-                         double wv)
+ * locally regular), else 0; 0 for a constrained face. sos: ties decided by the
+ * symbolic perturbation (by vertex index) that cvm_mesh_check() and
+ * lib/delaunay3 use; else a tie is no conflict (strictly inside only). */
+static int d3s_face_test(const cvm__d3_mesh *M, size_t t, int f, int32_t v, const double *x,
+                     double wv, int sos)
 {
     int32_t nb = M->nbr[4 * t + (size_t)f], e;
     const double *P[4], *E;
@@ -176,47 +181,59 @@ static int face_conflict(const cvm__d3_mesh *M, size_t t, int f, int32_t v, cons
     e = M->tet[4 * ((size_t)nb >> 2) + ((size_t)nb & 3)];
     if (e == v)
         return 0;
-    corners(M, t, v, x, wv, P, W);
+    cvm__d3_corners(M, t, v, x, wv, P, W);
     E = M->xyz + 3 * (size_t)e;
     we = M->w[e];
-    /* perturbed as cvm_mesh_check() and lib/delaunay3 decide ties (by vertex index) */
+    if (!sos)
+        return cvm__power3d(P[0], P[1], P[2], P[3], E, W[0], W[1], W[2], W[3], we) > 0;
     return cvm__power3d_sos(P[0], P[1], P[2], P[3], E, W[0], W[1], W[2], W[3], we,
                             M->tet[4 * t], M->tet[4 * t + 1], M->tet[4 * t + 2],
                             M->tet[4 * t + 3], e) > 0;
 }
 
-int cvm__d3_star_valid(const cvm__d3_work *K, int32_t v, const double *x, double wv)
+static int face_conflict(const cvm__d3_mesh *M, size_t t, int f, int32_t v, const double *x,
+                         double wv)
+{
+    return d3s_face_test(M, t, f, v, x, wv, 1);
+}
+
+int cvm__d3_star_check(const cvm__d3_work *K, int32_t v, const double *x, double wv, int counts)
 {
     const cvm__d3_mesh *M = K->M;
     const double *x0 = M->xyz + 3 * (size_t)v;
     double w0 = M->w[v];
-    int32_t s;
-    size_t nout = 0, nout0 = 0, bout = 0, bout0 = 0;
-    for (s = K->voff[v]; s < K->voff[v + 1]; s++) {
-        size_t t = (size_t)K->vtet[s];
+    size_t s, nout = 0, nout0 = 0, bout = 0, bout0 = 0;
+    for (s = 0; s < K->nstar; s++) {
+        size_t t = (size_t)K->star[s];
         const double *P[4];
         double W[4];
-        corners(M, t, v, x, wv, P, W);
+        cvm__d3_corners(M, t, v, x, wv, P, W);
         if (!(cvm__orient3d(P[0], P[1], P[2], P[3]) > 0))
-            return 0;
+            return -1;
     }
-    for (s = K->voff[v]; s < K->voff[v + 1]; s++) {
-        size_t t = (size_t)K->vtet[s];
+    for (s = 0; s < K->nstar; s++) {
+        size_t t = (size_t)K->star[s];
         int f;
         for (f = 0; f < 4; f++) {
             int32_t nb = M->nbr[4 * t + (size_t)f];
             /* a face inside the star is seen from both sides: test it once */
             if (nb >= 0 && M->tet[4 * t + (size_t)f] != v && (size_t)(nb >> 2) < t)
                 continue;
-            if (face_conflict(M, t, f, v, x, wv) && !face_conflict(M, t, f, v, x0, w0))
-                return 0;
+            if (face_conflict(M, t, f, v, x, wv) &&
+                (!face_conflict(M, t, f, v, x0, w0) ||
+                 /* with flips, a face failing on a tie only may not fail strictly */
+                 (K->p->flips && d3s_face_test(M, t, f, v, x, wv, 0) &&
+                  !d3s_face_test(M, t, f, v, x0, w0, 0))))
+                return 1;
         }
     }
-    for (s = K->voff[v]; s < K->voff[v + 1]; s++) {
-        size_t t = (size_t)K->vtet[s];
+    if (!counts)
+        return 0;
+    for (s = 0; s < K->nstar; s++) {
+        size_t t = (size_t)K->star[s];
         const double *P[4];
         double W[4];
-        corners(M, t, v, x, wv, P, W);
+        cvm__d3_corners(M, t, v, x, wv, P, W);
         if (cvm__tet_centre_inside(P[0], P[1], P[2], P[3], W) < 0) {
             nout++;
             bout += K->bnd[t];
@@ -224,18 +241,28 @@ int cvm__d3_star_valid(const cvm__d3_work *K, int32_t v, const double *x, double
         nout0 += K->out[t];
         bout0 += K->out[t] & K->bnd[t];
     }
-    return nout <= nout0 && bout <= bout0;
+    return nout <= nout0 && bout <= bout0 ? 0 : 2;
 }
 
 int cvm__d3_outside(const cvm__d3_mesh *M, size_t t)
 {
     const double *P[4];
     double W[4];
-    corners(M, t, -1, NULL, 0, P, W);
+    cvm__d3_corners(M, t, -1, NULL, 0, P, W);
     return cvm__tet_centre_inside(P[0], P[1], P[2], P[3], W) < 0;
 }
 
 int cvm__d3_face_regular(const cvm__d3_mesh *M, size_t t, int f)
 {
     return !face_conflict(M, t, f, -1, NULL, 0);
+}
+
+int cvm__d3_face_conflict_at(const cvm__d3_mesh *M, size_t t, int f, int32_t v, const double *x,
+                             double wv, int sos)
+{
+    int32_t nb = M->nbr[4 * t + (size_t)f];
+    /* the test from t's side sees v only as a corner: with v across, ask from there */
+    if (nb >= 0 && M->tet[4 * ((size_t)nb >> 2) + ((size_t)nb & 3)] == v)
+        return d3s_face_test(M, (size_t)nb >> 2, nb & 3, v, x, wv, sos);
+    return d3s_face_test(M, t, f, v, x, wv, sos);
 }

@@ -3,8 +3,8 @@
  * vertices and set power weights of a tetrahedral mesh so that more
  * tetrahedra contain their power vertex (the "co-volume" property).
  *
- * This version keeps the connectivity: a move of vertex v (x, y, z, w) is
- * accepted only when every tetrahedron of v's star stays positively oriented
+ * Without flips (params.flips 0) the connectivity is kept: a move of vertex
+ * v (x, y, z, w) is accepted only when every tetrahedron of v's star stays positively oriented
  * (exact orient3d), every face of the star that is not constrained stays
  * locally regular (exact power test with symbolic perturbation by vertex
  * index, as cvm_mesh_check() decides it: the vertex across the face is not in
@@ -16,6 +16,12 @@
  * the constrained sense along constrained faces), so the mesh stays regular
  * after every accepted move, every face (the surface included) stays a face,
  * and no power cell can vanish: a stop at any point leaves a valid mesh.
+ * With flips, a move that leaves faces of the star not locally regular (all
+ * its tetrahedra still positive) is followed by exact 2-3 / 3-2 / 4-4 flips of
+ * unconstrained faces (d3_flip.c) until every face around v and of the new
+ * tetrahedra is locally regular (or an unchanged face that failed before, by
+ * the perturbation only), else undone; the counts, angle floor and penalty are
+ * judged on the tetrahedra replaced against those replacing them.
  * Vertices on a constrained face keep their position, except, with slide, a
  * vertex all of whose constrained faces lie in one axis-aligned plane: it
  * moves in the two other coordinates, so it stays exactly in the plane, and
@@ -54,6 +60,8 @@ typedef struct cvm__d3_mesh {
     const int32_t *nbr;     /* 4 ntet: 4 u + g across face f (opposite corner f), or -1 */
     const uint8_t *cface;   /* 4 ntet: 1 when the face is constrained (no neighbour, or an
                                internal facet of the surface) */
+    const double *attr;     /* ntet region attributes, or NULL (the optimiser flips only
+                               between tetrahedra of one region) */
 } cvm__d3_mesh;
 
 typedef struct cvm__d3_params {
@@ -63,6 +71,7 @@ typedef struct cvm__d3_params {
     double margin;          /* power vertex wanted margin x mean edge inside every face */
     uint64_t seed;
     int slide;              /* 1: vertices inside an axis-aligned planar facet move in it */
+    int flips;              /* 1: the connectivity may change (d3_flip.c) */
 } cvm__d3_params;
 
 typedef struct cvm__d3_report {
@@ -70,13 +79,26 @@ typedef struct cvm__d3_report {
     size_t ntet, nbnd;              /* tetrahedra; those with a face without neighbour */
     size_t out_before, out_after;   /* power vertex strictly outside (exact) */
     size_t bout_before, bout_after; /* the same among the boundary tetrahedra */
+    size_t ntet_after, nbnd_after;  /* the same counts at the end (flips change them) */
+    size_t flips, flips_start;      /* flips kept in all; those of the first pass */
 } cvm__d3_report;
 
-/* Optimise M in place. *r is filled also on a stop.
+/* The connectivity after a run with flips: owned by the caller (the context's
+ * allocator), ntet tetrahedra; attr NULL when the input had none. */
+typedef struct cvm__d3_topo {
+    int32_t *tet;
+    double *attr;
+    size_t ntet;
+} cvm__d3_topo;
+
+/* Optimise M in place (vertices and weights). With p->flips, *topo receives the
+ * new connectivity (also on a stop; the caller frees it) and M's tet, nbr, cface
+ * describe the old one; without, topo is untouched and may be NULL. *r is filled
+ * also on a stop. No allocation after the first move: CVM_E_NOMEM means nothing moved.
  * @return CVM_OK, CVM_E_NOMEM (nothing moved), CVM_INCOMPLETE_TIME_LIMIT,
  *         CVM_INCOMPLETE_CANCELLED (moves so far kept; the mesh is valid). */
 cvm_status cvm__d3_optimise(cvm__ctx *ctx, cvm__d3_mesh *M, const cvm__d3_params *p,
-                            cvm__d3_report *r);
+                            cvm__d3_report *r, cvm__d3_topo *topo);
 
 /* 1 when the power vertex of tetrahedron t of M lies strictly outside it (exact). */
 int cvm__d3_outside(const cvm__d3_mesh *M, size_t t);

@@ -592,9 +592,11 @@ class Mesh:
     def optimise_dual3(self, progress: Optional[ProgressCallback] = None,
                        every: Optional[int] = None, **options: float) -> Status:
         """Move the vertices of this tetrahedral mesh and set power weights so
-        that more tetrahedra contain their power vertex, keeping the
-        connectivity (cvm_mesh_optimise_dual3; options such as
-        dual3_max_sweeps, dual3_min_dihedral_deg, seed, time_limit_s).
+        that more tetrahedra contain their power vertex (cvm_mesh_optimise_dual3;
+        options such as dual3_max_sweeps, dual3_min_dihedral_deg, dual3_flips,
+        seed, time_limit_s). With dual3_flips=1 (default) flips keep the mesh
+        regular and the tetrahedra change (the vertices and surface faces stay);
+        dual3_flips=0 keeps the connectivity.
         Returns the Status (INCOMPLETE_* after a time limit or a stop by the
         progress callback: the mesh is then valid with the moves made so far).
         The run's report: report("dual3_outside_after_pct") and the other

@@ -206,6 +206,9 @@ START_TEST(statuses_and_options)
     ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_DUAL3_MARGIN, 0.5), CVM_E_OPTION_RANGE);
     ck_assert_int_eq(cvm_option_bounds(&b, CVM_OPT_DUAL3_MAX_SWEEPS), CVM_OK);
     ck_assert_double_eq(b.def, 50);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_DUAL3_FLIPS, 2), CVM_E_OPTION_RANGE);
+    ck_assert_int_eq(cvm_option_bounds(&b, CVM_OPT_DUAL3_FLIPS), CVM_OK);
+    ck_assert_double_eq(b.def, 1);
     ck_assert_int_eq(cvm_option_bounds(&b, CVM_OPT_DUAL3_MIN_DIHEDRAL_DEG), CVM_OK);
     ck_assert_double_eq(b.def, 10);
     /* a Delaunay tetrahedralisation of points: one tetrahedron, nothing outside */
@@ -218,17 +221,51 @@ START_TEST(statuses_and_options)
 }
 END_TEST
 
-/* Optimise the generated mesh m and check every promise of the contract. */
-static void optimise_and_check(cvm_mesh *m, int sweeps, int slide)
+/* Interior faces (each once) that are not locally regular: the tetrahedra of a
+ * generated mesh with no internal facets, so every interior face is unconstrained. */
+static size_t irregular_faces(const g3_mesh *g, const double *w, const int32_t *nbr)
+{
+    unsigned char *reg = regular_faces(g, w, nbr);
+    size_t i, n = 0;
+    for (i = 0; i < 4 * g->nt; i++)
+        n += nbr[i] >= 0 && (int32_t)i < nbr[i] && !reg[i];
+    free(reg);
+    return n;
+}
+
+/* Interior faces whose far vertex lies strictly inside the tetrahedron's orthosphere
+ * (exact, no perturbation: a tie is no violation). */
+static size_t strict_violations(const g3_mesh *g, const double *w, const int32_t *nbr)
+{
+    size_t i, n = 0;
+    for (i = 0; i < 4 * g->nt; i++) {
+        const cvm_index *a = g->tet + 4 * (i / 4);
+        const double *X = g->xyz;
+        cvm_index e;
+        if (nbr[i] < 0)
+            continue;
+        e = g->tet[4 * (size_t)(nbr[i] / 4) + (size_t)(nbr[i] % 4)];
+        n += cvm__power3d(X + 3 * a[0], X + 3 * a[1], X + 3 * a[2], X + 3 * a[3], X + 3 * e,
+                          w[a[0]], w[a[1]], w[a[2]], w[a[3]], w[e]) > 0;
+    }
+    return n;
+}
+
+/* Optimise the generated mesh m and check every promise of the contract; with flips
+ * the tetrahedra may change, but the vertices, the surface triangles (as faces), the
+ * volume stay, and no face that was regular turns irregular (the irregular ones left
+ * can only be faces of the input that no flip could repair). */
+static void optimise_and_check(cvm_mesh *m, int sweeps, int slide, int flips)
 {
     g3_mesh a, b;
-    int32_t *nbr;
+    int32_t *nbr, *nbr1;
     double *w0, *w1, v, before, after, bbefore, bafter;
     unsigned char *reg0, *reg1;
     size_t i, ties0, ties1, nb, bout, out0, out1, nreg0 = 0, lost = 0, moved = 0;
     double vol0;
     ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_DUAL3_MAX_SWEEPS, sweeps), CVM_OK);
     ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_DUAL3_SLIDE_BOUNDARY, slide), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_DUAL3_FLIPS, flips), CVM_OK);
     ck_assert_int_eq(cvm_mesh_get_measure(&vol0, m, CVM_MEASURE_VOLUME), CVM_OK);
     g3_mesh_get(&a, m);
     w0 = weights_of(m, a.nv);
@@ -240,10 +277,14 @@ static void optimise_and_check(cvm_mesh *m, int sweeps, int slide)
     w1 = weights_of(m, b.nv);
     /* the same vertices, tetrahedra and surface: nothing dropped, every face kept */
     ck_assert_uint_eq(a.nv, b.nv);
-    ck_assert_uint_eq(a.nt, b.nt);
+    if (!flips) {
+        ck_assert_uint_eq(a.nt, b.nt);
+        ck_assert(memcmp(a.tet, b.tet, 4 * a.nt * sizeof *a.tet) == 0);
+    }
     ck_assert_uint_eq(a.nf, b.nf);
-    ck_assert(memcmp(a.tet, b.tet, 4 * a.nt * sizeof *a.tet) == 0);
     ck_assert(memcmp(a.face, b.face, 3 * a.nf * sizeof *a.face) == 0);
+    for (i = 0; i < b.nv; i++) /* no vertex lost */
+        ck_assert_int_gt(b.valence[i], 0);
     for (i = 0; i < a.nf; i++)
         ck_assert(g3_face_on_boundary(&b, b.face[3 * i], b.face[3 * i + 1], b.face[3 * i + 2]));
     /* boundary vertices keep their position, or (slide) stay exactly in their face's
@@ -274,15 +315,34 @@ static void optimise_and_check(cvm_mesh *m, int sweeps, int slide)
                                 b.xyz + 3 * t[3]) > 0);
     }
     /* every face that was regular (exact perturbed power test) still is */
-    reg1 = regular_faces(&b, w1, nbr);
-    for (i = 0; i < 4 * a.nt; i++) {
-        nreg0 += reg0[i];
-        lost += reg0[i] && !reg1[i];
+    nbr1 = flips ? adjacency(&b) : nbr;
+    if (!flips) {
+        reg1 = regular_faces(&b, w1, nbr);
+        for (i = 0; i < 4 * a.nt; i++) {
+            nreg0 += reg0[i];
+            lost += reg0[i] && !reg1[i];
+        }
+        ck_assert_uint_eq(lost, 0);
+        ck_assert_uint_gt(nreg0, 0);
+        free(reg1);
+    } else {
+        size_t bad0 = irregular_faces(&a, w0, nbr), bad1 = irregular_faces(&b, w1, nbr1);
+        ck_assert_msg(bad1 <= bad0, "%lu irregular faces after, %lu before", (unsigned long)bad1,
+                      (unsigned long)bad0);
+        /* no vertex strictly inside an orthosphere unless one was before */
+        ck_assert_uint_le(strict_violations(&b, w1, nbr1), strict_violations(&a, w0, nbr));
+        for (i = 0; i < 4 * b.nt; i++) /* a face without neighbour is a surface triangle */
+            if (nbr1[i] < 0) {
+                cvm_index f[3];
+                int k, j = 0;
+                for (k = 0; k < 4; k++)
+                    if (k != (int)(i % 4))
+                        f[j++] = b.tet[4 * (i / 4) + (size_t)k];
+                ck_assert(g3_face_on_boundary(&a, f[0], f[1], f[2]));
+            }
     }
-    ck_assert_uint_eq(lost, 0);
-    ck_assert_uint_gt(nreg0, 0);
     /* the report against an independent count */
-    out1 = outside_count(&b, w1, nbr, &ties1, &nb, &bout);
+    out1 = outside_count(&b, w1, nbr1, &ties1, &nb, &bout);
     ck_assert_int_eq(cvm_mesh_get_report(&before, m, CVM_REPORT_DUAL3_OUTSIDE_BEFORE_PCT), CVM_OK);
     ck_assert_int_eq(cvm_mesh_get_report(&after, m, CVM_REPORT_DUAL3_OUTSIDE_AFTER_PCT), CVM_OK);
     ck_assert_int_eq(cvm_mesh_get_report(&bbefore, m, CVM_REPORT_DUAL3_OUTSIDE_BOUNDARY_BEFORE_PCT),
@@ -302,11 +362,12 @@ static void optimise_and_check(cvm_mesh *m, int sweeps, int slide)
     ck_assert_int_eq(cvm_mesh_get_report(&v, m, CVM_REPORT_DUAL3_MOVES), CVM_OK);
     ck_assert(v >= 1);
     ck_assert_int_eq(cvm_mesh_get_measure(&v, m, CVM_MEASURE_MIN_DIHEDRAL_DEG), CVM_OK);
-    ck_assert_int_eq(cvm_mesh_check(m), CVM_OK);
+    ck_assert_msg(cvm_mesh_check(m) == CVM_OK, "%s", cvm_mesh_errmsg(m));
     free(reg0);
-    free(reg1);
     free(w0);
     free(w1);
+    if (nbr1 != nbr)
+        free(nbr1);
     free(nbr);
     g3_mesh_free(&a);
     g3_mesh_free(&b);
@@ -315,26 +376,36 @@ static void optimise_and_check(cvm_mesh *m, int sweeps, int slide)
 START_TEST(cube_keeps_faces_and_regularity)
 {
     cvm_mesh *m;
+    double v;
     if (!g3_with_tetgen())
         CVMTEST_SKIP("the example cube needs TetGen (cocircular squares)");
     m = generated("cube.poly", 0.25, 1);
-    optimise_and_check(m, 3, 1);
+    optimise_and_check(m, 3, 1, 0);
+    cvm_mesh_free(m);
+    m = generated("cube.poly", 0.25, 1);
+    optimise_and_check(m, 6, 1, 1);
+    ck_assert_int_eq(cvm_mesh_get_report(&v, m, CVM_REPORT_DUAL3_FLIPS), CVM_OK);
+    ck_assert_double_gt(v, 0); /* the flip path ran */
     cvm_mesh_free(m);
 }
 END_TEST
 
 START_TEST(tetra_keeps_faces_and_regularity)
 {
-    cvm_mesh *m = generated("tetra.off", 0.3, 0);
-    optimise_and_check(m, 3, 0);
-    cvm_mesh_free(m);
-    m = generated("tetra.off", 0.3, 0);
-    optimise_and_check(m, 3, 1);
-    cvm_mesh_free(m);
+    int flips;
+    for (flips = 0; flips < 2; flips++) {
+        cvm_mesh *m = generated("tetra.off", 0.3, 0);
+        optimise_and_check(m, 3, 0, flips);
+        cvm_mesh_free(m);
+        m = generated("tetra.off", 0.3, 0);
+        optimise_and_check(m, 3, 1, flips);
+        cvm_mesh_free(m);
+    }
 }
 END_TEST
 
-static void run_bytes(double threads, double **xyz, double **w, size_t *nv)
+static void run_bytes(double threads, double **xyz, double **w, size_t *nv, cvm_index **tet,
+                      size_t *nt)
 {
     cvm_mesh *m = generated("tetra.off", 0.3, 0);
     ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_THREADS, threads), CVM_OK);
@@ -345,25 +416,34 @@ static void run_bytes(double threads, double **xyz, double **w, size_t *nv)
     ck_assert_ptr_nonnull(*xyz);
     ck_assert_int_eq(cvm_mesh_copy_points_nd(*xyz, 3 * *nv, 3, m), CVM_OK);
     *w = weights_of(m, *nv);
+    ck_assert_int_eq(cvm_mesh_count(nt, m, CVM_ENT_TETRAHEDRON), CVM_OK);
+    *tet = malloc((4 * *nt + 1) * sizeof **tet);
+    ck_assert_ptr_nonnull(*tet);
+    ck_assert_int_eq(cvm_mesh_copy_cells(*tet, 4 * *nt, m, CVM_ENT_TETRAHEDRON), CVM_OK);
     cvm_mesh_free(m);
 }
 
 START_TEST(same_bytes_for_every_run_and_thread_count)
 {
     double *x0, *w0, *x1, *w1;
-    size_t n0, n1;
+    cvm_index *t0, *t1;
+    size_t n0, n1, nt0, nt1;
     int k;
-    run_bytes(1, &x0, &w0, &n0);
+    run_bytes(1, &x0, &w0, &n0, &t0, &nt0);
     for (k = 0; k < 2; k++) {
-        run_bytes(k ? 2 : 1, &x1, &w1, &n1);
+        run_bytes(k ? 2 : 1, &x1, &w1, &n1, &t1, &nt1);
         ck_assert_uint_eq(n0, n1);
         ck_assert(memcmp(x0, x1, 3 * n0 * sizeof *x0) == 0);
         ck_assert(memcmp(w0, w1, n0 * sizeof *w0) == 0);
+        ck_assert_uint_eq(nt0, nt1);
+        ck_assert(memcmp(t0, t1, 4 * nt0 * sizeof *t0) == 0);
         free(x1);
         free(w1);
+        free(t1);
     }
     free(x0);
     free(w0);
+    free(t0);
 }
 END_TEST
 
@@ -408,6 +488,7 @@ START_TEST(cancel_and_time_limit_leave_a_valid_mesh)
     w = weights_of(m, g.nv);
     nbr = adjacency(&g);
     reg = regular_faces(&g, w, nbr);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_DUAL3_FLIPS, 0), CVM_OK);
     ck_assert_int_eq(cvm_mesh_set_progress(m, cancel_at, 1, &calls), CVM_OK);
     ck_assert_int_eq(cvm_mesh_optimise_dual3(m), CVM_INCOMPLETE_CANCELLED);
     ck_assert_int_eq(calls, 5);
@@ -426,6 +507,92 @@ START_TEST(cancel_and_time_limit_leave_a_valid_mesh)
     free(reg);
     free(w);
     free(nbr);
+    g3_mesh_free(&g);
+    cvm_mesh_free(m);
+}
+END_TEST
+
+/* With flips: a stop at any point leaves a checked mesh with every surface triangle,
+ * every vertex and no face irregular that was regular. */
+START_TEST(flips_cancel_and_time_limit_leave_a_valid_mesh)
+{
+    int stop;
+    for (stop = 0; stop < 3; stop++) {
+        cvm_mesh *m = generated("tetra.off", 0.3, 0);
+        g3_mesh g, b;
+        int32_t *nbr, *nbr1;
+        double *w, *w1, vol0, vol1;
+        int calls = 0;
+        size_t i;
+        cvm_status s;
+        g3_mesh_get(&g, m);
+        w = weights_of(m, g.nv);
+        nbr = adjacency(&g);
+        ck_assert_int_eq(cvm_mesh_get_measure(&vol0, m, CVM_MEASURE_VOLUME), CVM_OK);
+        if (stop < 2) {
+            int *pc = &calls;
+            ck_assert_int_eq(cvm_mesh_set_progress(m, cancel_at, 1, pc), CVM_OK);
+            calls = stop ? -40 : 0; /* cancel at the 5th or the 45th vertex */
+            ck_assert_int_eq(cvm_mesh_optimise_dual3(m), CVM_INCOMPLETE_CANCELLED);
+        } else {
+            ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_TIME_LIMIT_S, 1e-4), CVM_OK);
+            s = cvm_mesh_optimise_dual3(m);
+            ck_assert(s == CVM_OK || s == CVM_INCOMPLETE_TIME_LIMIT);
+        }
+        ck_assert_msg(cvm_mesh_check(m) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+        g3_mesh_get(&b, m);
+        w1 = weights_of(m, b.nv);
+        nbr1 = adjacency(&b);
+        ck_assert_uint_le(irregular_faces(&b, w1, nbr1), irregular_faces(&g, w, nbr));
+        ck_assert_uint_le(strict_violations(&b, w1, nbr1), strict_violations(&g, w, nbr));
+        for (i = 0; i < g.nf; i++)
+            ck_assert(g3_face_on_boundary(&b, g.face[3 * i], g.face[3 * i + 1], g.face[3 * i + 2]));
+        for (i = 0; i < b.nv; i++)
+            ck_assert_int_gt(b.valence[i], 0);
+        ck_assert_uint_eq(b.nbnd, g.nbnd);
+        ck_assert_int_eq(cvm_mesh_get_measure(&vol1, m, CVM_MEASURE_VOLUME), CVM_OK);
+        ck_assert_double_eq_tol(vol1, vol0, 1e-12 * vol0);
+        free(w);
+        free(w1);
+        free(nbr);
+        free(nbr1);
+        g3_mesh_free(&g);
+        g3_mesh_free(&b);
+        cvm_mesh_free(m);
+    }
+}
+END_TEST
+
+/* The Delaunay tetrahedralisation of a point set: cvm_mesh_check() tests every
+ * interior face by the perturbed power test, so with flips the result must be the
+ * regular tetrahedralisation of the weighted points, every point kept. */
+START_TEST(flips_keep_a_point_set_regular)
+{
+    cvm_mesh *m;
+    double xyz[3 * 200], v, vol0, vol1;
+    uint64_t x = 88172645463325252ULL;
+    size_t i, nt;
+    g3_mesh g;
+    for (i = 0; i < 3 * 200; i++) { /* xorshift: the same points on every platform */
+        x ^= x << 13, x ^= x >> 7, x ^= x << 17;
+        xyz[i] = (double)(x >> 11) / 9007199254740992.0;
+    }
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_points(m, xyz, 200, 3), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_get_measure(&vol0, m, CVM_MEASURE_VOLUME), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_DUAL3_MAX_SWEEPS, 5), CVM_OK);
+    ck_assert_msg(cvm_mesh_optimise_dual3(m) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    ck_assert_msg(cvm_mesh_check(m) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    ck_assert_int_eq(cvm_mesh_get_report(&v, m, CVM_REPORT_DUAL3_FLIPS), CVM_OK);
+    ck_assert_double_gt(v, 0);
+    ck_assert_int_eq(cvm_mesh_get_measure(&vol1, m, CVM_MEASURE_VOLUME), CVM_OK);
+    ck_assert_double_eq_tol(vol1, vol0, 1e-12 * vol0);
+    ck_assert_int_eq(cvm_mesh_count(&nt, m, CVM_ENT_TETRAHEDRON), CVM_OK);
+    g3_mesh_get(&g, m);
+    ck_assert_uint_eq(g.nv, 200);
+    for (i = 0; i < g.nv; i++)
+        ck_assert_int_gt(g.valence[i], 0);
     g3_mesh_free(&g);
     cvm_mesh_free(m);
 }
@@ -465,6 +632,8 @@ TCase *dual3_optimise_tcase(void)
     tcase_add_test(tc, cube_keeps_faces_and_regularity);
     tcase_add_test(tc, same_bytes_for_every_run_and_thread_count);
     tcase_add_test(tc, cancel_and_time_limit_leave_a_valid_mesh);
+    tcase_add_test(tc, flips_cancel_and_time_limit_leave_a_valid_mesh);
+    tcase_add_test(tc, flips_keep_a_point_set_regular);
     tcase_add_test(tc, oom_at_every_allocation);
     return tc;
 }
