@@ -39,3 +39,21 @@ def test_quadmesh_options_and_bad_metric():
     s.set_metric(lambda x: (1.0, 0.0, 1.0))  # a Python callback gives no derivatives
     with pytest.raises(cvmesh.Error, match="derivatives"):
         m.quadmesh(s)
+
+
+def test_quadmesh_all_quad_and_smoothing_options():
+    m = box_mesh(-1.3, -1.3, 1.3, 1.3)
+    s = cvmesh.Sizing()
+    s.set_metric_builtin("saddle", 36.0)
+    assert m.quadmesh(s, quad_all_quad=1) == cvmesh.Status.OK
+    off, types, conn = m.cells_mixed()
+    assert (types == cvmesh.CellType.QUAD).all()
+    assert m.report("quad_pct") == 100.0
+    p = m.points[conn.reshape(-1, 4)]
+    q = np.roll(p, -1, axis=1)
+    area = 0.5 * (p[:, :, 0] * q[:, :, 1] - p[:, :, 1] * q[:, :, 0]).sum(axis=1)
+    assert (area > 0).all() and abs(area.sum() - 2.6 * 2.6) < 1e-12
+    assert m.check()
+    # no smoothing, the Halton start: still a valid mesh, the option names reach the library
+    assert m.quadmesh(s, quad_all_quad=0, quad_smooth=0, quad_initial_sites=1) == cvmesh.Status.OK
+    assert m.check()

@@ -689,10 +689,11 @@ class Mesh:
                  every: Optional[int] = None, **options: float) -> Status:
         """Quad-dominant mesh of the convex input domain aligned with the metric of
         the Sizing metric (set_metric(), set_metric_builtin() or
-        set_metric_constant()): Lp-CVT sites by L-BFGS, then Blossom-Quad
-        (cvm_mesh_quadmesh()). options: quad_p, quad_recombine, quad_min_quality,
-        quad_max_iterations, ... (CVM_OPT_* names in lower case). The quads are
-        cells_mixed(); triangles stays the triangulation before recombination;
+        set_metric_constant()): a frontal start, Lp-CVT sites by L-BFGS, then
+        Blossom-Quad and smoothing (cvm_mesh_quadmesh()). options: quad_p,
+        quad_recombine, quad_min_quality, quad_max_iterations, quad_smooth,
+        quad_all_quad, ... (CVM_OPT_* names in lower case). The quads are
+        cells_mixed(); triangles is the Delaunay triangulation of the final points;
         report('quad_pct') etc. give the quad measures. Returns the Status
         (INCOMPLETE_* when the time limit or the callback stopped the
         optimisation; the mesh of the sites so far is then valid)."""
