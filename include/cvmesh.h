@@ -999,7 +999,15 @@ typedef enum cvm_option {
      *  triangulation; smoothing (CVM_OPT_QUAD_SMOOTH) then applies to the split cells.
      *  Needs a recombination (CVM_OPT_QUAD_RECOMBINE 0 or 1; 2 gives CVM_E_ARGUMENT).
      *  @since 0.2 */
-    CVM_OPT_QUAD_ALL_QUAD = 812
+    CVM_OPT_QUAD_ALL_QUAD = 812,
+    /** Insertion/removal cycles after the optimisation, integer, default 3, bounds
+     *  [0, 20]: while fewer than 95 % of the sides among the Delaunay edges of the sites
+     *  (an edge with a moving end that is not the longest of every triangle beside it,
+     *  so quad diagonals do not count) have a metric length in [1/sqrt 2, sqrt 2], each
+     *  shorter side loses its moving end with the larger spread of edge lengths, each
+     *  longer one gets a site at its midpoint, and the sites are optimised again. Stops
+     *  when nothing changes. @since 0.2 */
+    CVM_OPT_QUAD_CYCLES = 813
     /* ---- 1000 and up: experimental (include/cvmesh_experimental.h) ---- */
 } cvm_option;
 

@@ -11,7 +11,7 @@
 #include "io/io_internal.h"
 
 /* Options live in one table; index with cvm__option_slot(). */
-#define CVM__NOPTIONS 64
+#define CVM__NOPTIONS 96
 
 #define CVM__NBIN_Q 20      /* the most bins of CVM_HIST_Q1 .. CVM_HIST_Q5 */
 /* CVM_MEASURE_Q1_MEAN_DEG .. CVM_MEASURE_Q5_MIN_BOUNDARY */

@@ -76,6 +76,7 @@ static const option_def k_options[] = {
     {CVM_OPT_QUAD_INITIAL_SITES, "QUAD_INITIAL_SITES", {0, 1, 0, 1}},
     {CVM_OPT_QUAD_SMOOTH, "QUAD_SMOOTH", {0, 1000, 200, 1}},
     {CVM_OPT_QUAD_ALL_QUAD, "QUAD_ALL_QUAD", {0, 1, 0, 1}},
+    {CVM_OPT_QUAD_CYCLES, "QUAD_CYCLES", {0, 20, 3, 1}},
 };
 
 #define NOPT (sizeof k_options / sizeof k_options[0])

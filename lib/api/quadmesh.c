@@ -550,6 +550,40 @@ cvm_status cvm_mesh_quadmesh(cvm_mesh *m, const cvm_sizing *metric)
             goto fail;
         }
     }
+    /* insertion/removal cycles until >= 95 % of the sites' edges have unit metric length */
+    for (k = 0; run == CVM_OK && ni > 0 && k < (size_t)cvm__opt(m, CVM_OPT_QUAD_CYCLES); k++) {
+        double *xn = NULL, pct;
+        size_t nn = 0, nins = 0, nrem = 0;
+        cvm__lbfgs_result r2;
+        if ((s = cvm__lpcvt_adapt_sites(&L, xi, &xn, &nn, &nins, &nrem, &pct)))
+            goto fail;
+        if (!xn || pct >= 95 || nn == 0) {
+            cvm__free(&m->ctx, xn);
+            break;
+        }
+        cvm__free(&m->ctx, xi);
+        xi = xn;
+        ni = nn;
+        cvm__lpcvt_free(&L);
+        if ((s = cvm__lpcvt_init(&L, &m->ctx, mapped ? &zs : metric, mapped ? zb : bxy, nb, ni,
+                                 (int)cvm__opt(m, CVM_OPT_QUAD_P),
+                                 (int)cvm__opt(m, CVM_OPT_QUAD_CLIP))))
+            goto fail;
+        L.cellwise = cvm__opt(m, CVM_OPT_QUAD_CELLWISE_METRIC) != 0;
+        L.threads = thread_count(m);
+        memset(&r2, 0, sizeof r2);
+        s = cvm__lpcvt_optimise(&L, xi, &o, &r2);
+        r2.iterations += res.iterations;
+        r2.evaluations += res.evaluations;
+        r2.restarts += res.restarts;
+        res = r2;
+        if (s == CVM_INCOMPLETE_TIME_LIMIT || s == CVM_INCOMPLETE_CANCELLED) {
+            run = s;
+            cvm__clear_error(&m->ctx);
+        } else if (s) {
+            goto fail;
+        }
+    }
     for (k = 0; mapped && k < ni; k++) { /* back to x; build_triangulation drops any outside */
         double z0 = xi[2 * k], z1 = xi[2 * k + 1];
         xi[2 * k] = A[0] * z0 + A[1] * z1;

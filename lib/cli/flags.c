@@ -113,6 +113,8 @@ static const cli_option_flag k_flags[] = {
      "sweeps of parallelogram smoothing after the recombination (default 200)"},
     {"--all-quad", NULL, CVM_OPT_QUAD_ALL_QUAD, 1, QUA,
      "split every cell into quads (a quad into 4, a triangle into 3) at the metric's size"},
+    {"--cycles", "N", CVM_OPT_QUAD_CYCLES, 0, QUA,
+     "insertion/removal cycles while < 95% of edges have unit metric length (default 3)"},
 };
 
 /* Flags whose value is a word: the word -> the option value. */

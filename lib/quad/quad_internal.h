@@ -345,6 +345,19 @@ cvm_status cvm__lpcvt_frontal_sites(double **xi_out, size_t *ni_out, const cvm__
 cvm_status cvm__lpcvt_optimise(cvm__lpcvt *L, double *xi, const cvm__lbfgs_opts *o,
                                cvm__lbfgs_result *res);
 
+/* One insertion/removal cycle (lpcvt_adapt.c): the Delaunay edges of L's sites at xi (L->nb
+ * boundary sites, then the moving sites xi) with a moving end, measured in L's metric
+ * (cvm__metric_length()); only sides count, not diagonals: an edge that is the longest of every
+ * triangle beside it is left out. *pct_in: the share of the sides with L_M in [1/sqrt 2,
+ * sqrt 2]. Each side shorter than 1/sqrt 2 whose ends are both still there loses one end, the
+ * moving end with the larger coefficient of variation of its edges' metric lengths; then each
+ * side longer than sqrt 2 with both ends kept gets a site at its midpoint. *xo (on L's ctx, the caller frees):
+ * the kept moving sites in order, then the new ones (*no in all, *nins added, *nrem removed);
+ * NULL when nothing changes or the energy is not defined at xi. CVM_OK, CVM_E_NOMEM, the
+ * metric's errors. */
+cvm_status cvm__lpcvt_adapt_sites(cvm__lpcvt *L, const double *xi, double **xo, size_t *no,
+                                  size_t *nins, size_t *nrem, double *pct_in);
+
 /* ---- measures of a quad-dominant mesh (quad_measures.c) ---- */
 
 /* The number of values of cvm__quad_measures(): CVM_REPORT_QUAD_PCT .. _MIN_SCALED_JACOBIAN. */

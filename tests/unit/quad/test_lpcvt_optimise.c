@@ -319,6 +319,55 @@ START_TEST(quad_smoothing_straightens_a_zigzag_grid)
 }
 END_TEST
 
+/* One insertion/removal cycle on [0,4]^2 under g = I: four sites at (1|3, 1|3) leave quad sides
+ * of length 2 (a site goes to each midpoint), and a tenth site 0.2 from the centre of the 3 x 3
+ * lattice gives one side of 0.2 (one of the two ends goes); the lattice itself is left as it is. */
+START_TEST(lpcvt_cycle_inserts_and_removes_sites)
+{
+    cvm__metric_builtin b = {CVM__METRIC_IDENTITY, 1, {0, 0, 0}};
+    double bxy[32], four[8] = {1, 1, 3, 1, 1, 3, 3, 3}, ten[20], *xo, pct;
+    size_t no, nins, nrem, k, mids = 0;
+    cvm_sizing *s;
+    cvm__ctx ctx;
+    cvm__lpcvt L;
+    cvm__ctx_init_default(&ctx);
+    ck_assert_int_eq(cvm_sizing_create(&s), CVM_OK);
+    cvm_sizing_set_metric_fn(s, cvm__metric_builtin_fn, 1, &b);
+    qtest_box(bxy, 0, 0, 4, 4, 4);
+    ck_assert_int_eq(cvm__lpcvt_init(&L, &ctx, s, bxy, 16, 4, 6, 0), CVM_OK);
+    ck_assert_int_eq(cvm__lpcvt_adapt_sites(&L, four, &xo, &no, &nins, &nrem, &pct), CVM_OK);
+    ck_assert_ptr_nonnull(xo);
+    ck_assert(pct < 95);
+    ck_assert_uint_eq(nrem, 0);
+    ck_assert_uint_eq(no, 4 + nins);
+    for (k = 4; k < no; k++) /* (2, 1), (1, 2), (3, 2), (2, 3) among the new sites */
+        mids += (xo[2 * k] == 2 && (xo[2 * k + 1] == 1 || xo[2 * k + 1] == 3)) ||
+                (xo[2 * k + 1] == 2 && (xo[2 * k] == 1 || xo[2 * k] == 3));
+    ck_assert_uint_eq(mids, 4);
+    cvm__free(&ctx, xo);
+    cvm__lpcvt_free(&L);
+    for (k = 0; k < 9; k++) {
+        ten[2 * k] = 1 + (double)(k % 3);
+        ten[2 * k + 1] = 1 + (double)(k / 3);
+    }
+    ck_assert_int_eq(cvm__lpcvt_init(&L, &ctx, s, bxy, 16, 9, 6, 0), CVM_OK);
+    ck_assert_int_eq(cvm__lpcvt_adapt_sites(&L, ten, &xo, &no, &nins, &nrem, &pct), CVM_OK);
+    ck_assert_ptr_null(xo); /* the lattice: every side has length 1 */
+    ck_assert_double_eq(pct, 100);
+    cvm__lpcvt_free(&L);
+    ten[18] = 2;
+    ten[19] = 2.2;
+    ck_assert_int_eq(cvm__lpcvt_init(&L, &ctx, s, bxy, 16, 10, 6, 0), CVM_OK);
+    ck_assert_int_eq(cvm__lpcvt_adapt_sites(&L, ten, &xo, &no, &nins, &nrem, &pct), CVM_OK);
+    ck_assert_ptr_nonnull(xo);
+    ck_assert_uint_eq(nrem, 1);
+    ck_assert_uint_eq(no, 9 + nins);
+    cvm__free(&ctx, xo);
+    cvm__lpcvt_free(&L);
+    cvm_sizing_free(s);
+}
+END_TEST
+
 static int nan_inside(void *payload, const double *x, int dim, double *g, double *dg)
 {
     (void)payload;
@@ -407,6 +456,12 @@ START_TEST(lpcvt_out_of_memory_sweep)
             o.relocations = 1;
             st = cvm__lpcvt_optimise(&L, xi, &o, &res);
         }
+        if (!st) { /* and one insertion/removal cycle */
+            double *xo = NULL, pct;
+            size_t no, nins, nrem;
+            st = cvm__lpcvt_adapt_sites(&L, xi, &xo, &no, &nins, &nrem, &pct);
+            cvm__free(&ctx, xo);
+        }
         ck_assert_msg(st == CVM_OK || st == CVM_E_NOMEM, "allocation %ld: status %d (%s)", k,
                       (int)st, ctx.errmsg);
         done = st == CVM_OK && a.n_failed == 0;
@@ -428,6 +483,7 @@ TCase *quad_lpcvt_optimise_tcase(void)
     tcase_add_test(tc, lpcvt_initial_sites_follow_the_metric_area);
     tcase_add_test(tc, lpcvt_frontal_sites_reproduce_a_lattice);
     tcase_add_test(tc, quad_smoothing_straightens_a_zigzag_grid);
+    tcase_add_test(tc, lpcvt_cycle_inserts_and_removes_sites);
     tcase_add_test(tc, lpcvt_bad_metric_is_an_argument_error);
     tcase_add_test(tc, lpcvt_recovers_the_lattice_from_random_starts);
     tcase_add_test(tc, lpcvt_out_of_memory_sweep);
