@@ -619,14 +619,21 @@ START_TEST(every_failed_allocation_in_insertion_gives_nomem)
     int mode;
     cvmtest_alloc_init(&a, 0, 0);
     ck_assert_int_eq(cvmtest_mesh_create(&m, &a), CVM_OK);
-    /* mode 0: curve order (min_dist 0); 1: input order (min_dist); 2: the hull constrained */
-    for (mode = 0; mode < 3; mode++)
+    /* mode 0: curve order (min_dist 0); 1: input order (min_dist); 2: the hull constrained;
+     * 3: weighted and constrained (the walk near each point of min_dist) */
+    for (mode = 0; mode < 4; mode++)
     for (k = 1;; k++) {
         cvm_status s;
         size_t got = 0;
         ck_assert_int_eq(cvm_mesh_set_points(m, p, n, 3), CVM_OK);
         ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
-        if (mode == 2)
+        if (mode == 3) {
+            double w[150];
+            for (i = 0; i < n; i++)
+                w[i] = 1e-3 * (double)(i % 5);
+            ck_assert_int_eq(cvm_mesh_set_weights(m, w, n), CVM_OK);
+        }
+        if (mode >= 2)
             m->m3->delaunay = 0;
         cvmtest_alloc_arm(&a, k, 0);
         s = cvm_mesh_insert_points_nd(ids, m, q, nq, 3, mode ? 1e-3 : 0.0);
