@@ -530,31 +530,41 @@ cvm_status cvm_mesh_quadmesh(cvm_mesh *m, const cvm_sizing *metric)
     } else if (s) {
         goto fail;
     }
-    if ((s = cvm__lpcvt_init(&L, &m->ctx, mapped ? &zs : metric, mapped ? zb : bxy, nb, ni,
-                             (int)cvm__opt(m, CVM_OPT_QUAD_P),
-                             (int)cvm__opt(m, CVM_OPT_QUAD_CLIP))))
-        goto fail;
-    L.cellwise = cvm__opt(m, CVM_OPT_QUAD_CELLWISE_METRIC) != 0;
-    L.threads = thread_count(m);
     cvm__lbfgs_defaults(&o);
     o.memory = (int)cvm__opt(m, CVM_OPT_QUAD_LBFGS_MEMORY);
     o.gtol = cvm__opt(m, CVM_OPT_QUAD_GRADIENT_TOL);
     o.max_iter = (long)cvm__opt(m, CVM_OPT_QUAD_MAX_ITERATIONS);
     o.relocations = (int)cvm__opt(m, CVM_OPT_QUAD_RELOCATIONS);
-    if (ni > 0) {
-        s = cvm__lpcvt_optimise(&L, xi, &o, &res);
+    /* the optimisation, then insertion/removal cycles while < 95 % of the sites' sides have
+     * unit metric length */
+    for (k = 0;; k++) {
+        double *xn = NULL, pct;
+        size_t nn = 0, nins = 0, nrem = 0;
+        cvm__lbfgs_result r;
+        cvm__lpcvt_free(&L);
+        if ((s = cvm__lpcvt_init(&L, &m->ctx, mapped ? &zs : metric, mapped ? zb : bxy, nb, ni,
+                                 (int)cvm__opt(m, CVM_OPT_QUAD_P),
+                                 (int)cvm__opt(m, CVM_OPT_QUAD_CLIP))))
+            goto fail;
+        L.cellwise = cvm__opt(m, CVM_OPT_QUAD_CELLWISE_METRIC) != 0;
+        L.threads = thread_count(m);
+        if (ni == 0)
+            break;
+        memset(&r, 0, sizeof r);
+        s = cvm__lpcvt_optimise(&L, xi, &o, &r);
+        r.iterations += res.iterations;
+        r.evaluations += res.evaluations;
+        r.restarts += res.restarts;
+        res = r;
         if (s == CVM_INCOMPLETE_TIME_LIMIT || s == CVM_INCOMPLETE_CANCELLED) {
             run = s; /* the sites so far make a valid mesh */
             cvm__clear_error(&m->ctx);
+            break;
         } else if (s) {
             goto fail;
         }
-    }
-    /* insertion/removal cycles until >= 95 % of the sites' edges have unit metric length */
-    for (k = 0; run == CVM_OK && ni > 0 && k < (size_t)cvm__opt(m, CVM_OPT_QUAD_CYCLES); k++) {
-        double *xn = NULL, pct;
-        size_t nn = 0, nins = 0, nrem = 0;
-        cvm__lbfgs_result r2;
+        if (k >= (size_t)cvm__opt(m, CVM_OPT_QUAD_CYCLES))
+            break;
         if ((s = cvm__lpcvt_adapt_sites(&L, xi, &xn, &nn, &nins, &nrem, &pct)))
             goto fail;
         if (!xn || pct >= 95 || nn == 0) {
@@ -564,25 +574,6 @@ cvm_status cvm_mesh_quadmesh(cvm_mesh *m, const cvm_sizing *metric)
         cvm__free(&m->ctx, xi);
         xi = xn;
         ni = nn;
-        cvm__lpcvt_free(&L);
-        if ((s = cvm__lpcvt_init(&L, &m->ctx, mapped ? &zs : metric, mapped ? zb : bxy, nb, ni,
-                                 (int)cvm__opt(m, CVM_OPT_QUAD_P),
-                                 (int)cvm__opt(m, CVM_OPT_QUAD_CLIP))))
-            goto fail;
-        L.cellwise = cvm__opt(m, CVM_OPT_QUAD_CELLWISE_METRIC) != 0;
-        L.threads = thread_count(m);
-        memset(&r2, 0, sizeof r2);
-        s = cvm__lpcvt_optimise(&L, xi, &o, &r2);
-        r2.iterations += res.iterations;
-        r2.evaluations += res.evaluations;
-        r2.restarts += res.restarts;
-        res = r2;
-        if (s == CVM_INCOMPLETE_TIME_LIMIT || s == CVM_INCOMPLETE_CANCELLED) {
-            run = s;
-            cvm__clear_error(&m->ctx);
-        } else if (s) {
-            goto fail;
-        }
     }
     for (k = 0; mapped && k < ni; k++) { /* back to x; build_triangulation drops any outside */
         double z0 = xi[2 * k], z1 = xi[2 * k + 1];
