@@ -138,13 +138,14 @@ static uint64_t edge_key(int32_t a, int32_t b)
  * (-1)^f: face 0 = (1 2 3), 1 = (2 0 3), 2 = (0 1 3), 3 = (1 0 2). The new
  * tetrahedra around a point are positively oriented (ghosts included), so the
  * cavity boundary is a closed surface on which every edge appears once in each
- * direction. dir[f][k]: the positions (from, to) of the edge of face f that
- * does not hold position k, directed as in face f. */
-static const int8_t dir[4][4][2] = {
-    { { -1, -1 }, { 2, 3 }, { 3, 1 }, { 1, 2 } },
-    { { 3, 2 }, { -1, -1 }, { 0, 3 }, { 2, 0 } },
-    { { 1, 3 }, { 3, 0 }, { -1, -1 }, { 0, 1 } },
-    { { 2, 1 }, { 0, 2 }, { 1, 0 }, { -1, -1 } },
+ * direction. side[f][j] = (k, from, to): the j-th side face k != f of a new
+ * tetrahedron whose apex is at position f, and the positions of its edge on
+ * the boundary face f (the one not holding k), directed as in face f. */
+static const int8_t side[4][3][3] = {
+    { { 1, 2, 3 }, { 2, 3, 1 }, { 3, 1, 2 } },
+    { { 0, 3, 2 }, { 2, 0, 3 }, { 3, 2, 0 } },
+    { { 0, 1, 3 }, { 1, 3, 0 }, { 3, 0, 1 } },
+    { { 0, 2, 1 }, { 1, 0, 2 }, { 2, 1, 0 } },
 };
 
 /* The usual cavity: at most CVM__T3_ETAB - 1 vertices on its boundary. Each
@@ -154,50 +155,45 @@ static const int8_t dir[4][4][2] = {
  * first). Returns 0 (nothing linked) when the boundary has too many vertices. */
 static int link_small(cvm__tet3 *T)
 {
-    uint32_t stamp;
+    cvm__t3_point *pt = T->pt;
+    int32_t *etab = T->etab;
+    uint32_t stamp, nv = 1;
     size_t i;
-    int nv = 1;
     if (++T->lstamp >= (UINT32_C(1) << 25)) { /* wrapped: forget every old id */
         size_t v;
         for (v = 0; v < T->np; v++)
-            T->pt[v].loc = 0;
+            pt[v].loc = 0;
         T->lstamp = 1;
     }
     stamp = T->lstamp;
     for (i = 0; i < T->nbf; i++) {
         cvm__t3_bface *b = &T->bf[i];
+        const int8_t(*sd)[3] = side[b->f];
         int j;
-        for (j = 0; j < 4; j++) {
-            int32_t x = b->v[j];
-            if (j == b->f)
-                continue;
-            if (x < 0) {
-                b->lid[j] = 0;
-                continue;
+        for (j = 0; j < 3; j++) {
+            int32_t x = b->v[sd[j][0]];
+            uint32_t id = 0;
+            if (x >= 0) { /* not the ghost (local id 0) */
+                uint32_t loc = pt[x].loc;
+                uint32_t fresh = loc >> 7 != stamp;
+                id = fresh ? nv : loc & 127u;
+                pt[x].loc = (stamp << 7) | id;
+                nv += fresh;
             }
-            if (T->pt[x].loc >> 7 != stamp) {
-                if (nv == CVM__T3_ETAB)
-                    return 0;
-                T->pt[x].loc = (stamp << 7) | (uint32_t)nv++;
-            }
-            b->lid[j] = (uint8_t)(T->pt[x].loc & 127u);
+            b->lid[sd[j][0]] = (uint8_t)id;
         }
+        if (nv > CVM__T3_ETAB)
+            return 0;
+        for (j = 0; j < 3; j++)
+            etab[b->lid[sd[j][1]] * CVM__T3_ETAB + b->lid[sd[j][2]]] = 4 * b->tet + sd[j][0];
     }
     for (i = 0; i < T->nbf; i++) {
         const cvm__t3_bface *b = &T->bf[i];
-        int k;
-        for (k = 0; k < 4; k++)
-            if (k != b->f)
-                T->etab[b->lid[dir[b->f][k][0]] * CVM__T3_ETAB + b->lid[dir[b->f][k][1]]] =
-                    4 * b->tet + k;
-    }
-    for (i = 0; i < T->nbf; i++) {
-        const cvm__t3_bface *b = &T->bf[i];
-        int k;
-        for (k = 0; k < 4; k++)
-            if (k != b->f)
-                CVM__T3_TN(T, 4 * b->tet + k) =
-                    T->etab[b->lid[dir[b->f][k][1]] * CVM__T3_ETAB + b->lid[dir[b->f][k][0]]];
+        const int8_t(*sd)[3] = side[b->f];
+        int32_t *nb = T->tt + 8 * (size_t)b->tet + 4;
+        int j;
+        for (j = 0; j < 3; j++)
+            nb[sd[j][0]] = etab[b->lid[sd[j][2]] * CVM__T3_ETAB + b->lid[sd[j][1]]];
     }
     return 1;
 }
