@@ -169,6 +169,8 @@ static int link_small(cvm__tet3 *T)
     for (i = 0; i < T->nbf; i++) {
         cvm__t3_bface *b = &T->bf[i];
         const int8_t(*sd)[3] = side[b->f];
+        int32_t slot = 4 * b->tet;
+        uint8_t lid[4] = { 0, 0, 0, 0 }; /* a local copy: the stores below cannot alias it */
         int j;
         for (j = 0; j < 3; j++) {
             int32_t x = b->v[sd[j][0]];
@@ -180,20 +182,23 @@ static int link_small(cvm__tet3 *T)
                 pt[x].loc = (stamp << 7) | id;
                 nv += fresh;
             }
-            b->lid[sd[j][0]] = (uint8_t)id;
+            lid[sd[j][0]] = (uint8_t)id;
         }
         if (nv > CVM__T3_ETAB)
             return 0;
         for (j = 0; j < 3; j++)
-            etab[b->lid[sd[j][1]] * CVM__T3_ETAB + b->lid[sd[j][2]]] = 4 * b->tet + sd[j][0];
+            etab[lid[sd[j][1]] * CVM__T3_ETAB + lid[sd[j][2]]] = slot + sd[j][0];
+        memcpy(b->lid, lid, sizeof lid);
     }
     for (i = 0; i < T->nbf; i++) {
         const cvm__t3_bface *b = &T->bf[i];
         const int8_t(*sd)[3] = side[b->f];
         int32_t *nb = T->tt + 8 * (size_t)b->tet + 4;
+        uint8_t lid[4];
         int j;
+        memcpy(lid, b->lid, sizeof lid);
         for (j = 0; j < 3; j++)
-            nb[sd[j][0]] = etab[b->lid[sd[j][2]] * CVM__T3_ETAB + b->lid[sd[j][1]]];
+            nb[sd[j][0]] = etab[lid[sd[j][2]] * CVM__T3_ETAB + lid[sd[j][1]]];
     }
     return 1;
 }
