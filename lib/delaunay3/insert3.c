@@ -121,25 +121,31 @@ static void unmark(cvm__tet3 *T)
 static cvm_status dig_cavity(cvm__tet3 *T, int32_t t0, int32_t p)
 {
     size_t nstack = 0;
+    int f;
     T->ndead = 0;
     T->nbf = 0;
     T->tmark[t0] = 1;
     PUSH(T->dead, T->ndead, T->deadcap, t0);
     PUSH(T->stack, nstack, T->stackcap, t0);
+    for (f = 0; f < 4; f++) {
+        int32_t u = CVM__T3_TN(T, 4 * t0 + f) >> 2;
+        CVM__PREFETCH(T->tt + 8 * (size_t)u);
+        CVM__PREFETCH(T->tmark + u);
+    }
     while (nstack > 0) {
         int32_t c = T->stack[--nstack];
-        int f;
-        /* the neighbours are mostly cold: start all four loads before using one */
-        for (f = 0; f < 4; f++) {
-            int32_t u = CVM__T3_TN(T, 4 * c + f) >> 2;
-            CVM__PREFETCH(T->tt + 8 * (size_t)u);
-            CVM__PREFETCH(T->tmark + u);
-        }
         for (f = 0; f < 4; f++) {
             int32_t s = CVM__T3_TN(T, 4 * (size_t)c + f), u = s >> 2;
             if (T->tmark[u] == 1)
                 continue;
             if (T->tmark[u] == 0 && in_conflict(T, u, p)) {
+                int g;
+                /* u's record is in cache now: start loading its neighbours */
+                for (g = 0; g < 4; g++) {
+                    int32_t w = CVM__T3_TN(T, 4 * u + g) >> 2;
+                    CVM__PREFETCH(T->tt + 8 * (size_t)w);
+                    CVM__PREFETCH(T->tmark + w);
+                }
                 T->tmark[u] = 1;
                 PUSH(T->dead, T->ndead, T->deadcap, u);
                 PUSH(T->stack, nstack, T->stackcap, u);
