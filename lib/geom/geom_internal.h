@@ -236,15 +236,46 @@ static inline double cvm__insphere_fp(const double *a, const double *b, const do
     return (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
 }
 
-/* cvm__insphere with its filter inlined into the caller (hot loops). */
+/* cvm__insphere with its filter inlined into the caller (hot loops). A
+ * semi-static stage comes first: with m the largest magnitude of the twelve
+ * differences to e, every product in the permanent is at most m^2 or m^3 and
+ * every lift at most 3 m^2, so the permanent is at most 72 m^5 (the bound
+ * uses 73 to cover the rounding of both sides); the bound costs a few max and
+ * multiplications instead of the permanent's ~50 operations, and the filter
+ * behind it decides when it is too loose. m > 2^-200 keeps m^5 normal. */
 static inline double cvm__insphere_inline(const double *a, const double *b, const double *c,
                                           const double *d, const double *e)
 {
-    double permanent, det = cvm__insphere_fp(a, b, c, d, e, &permanent);
-    double errbound = cvm__isp_errbound_a * permanent + cvm__filter_floor;
-    if (fabs(det) > errbound)
+    double aex = a[0] - e[0], bex = b[0] - e[0], cex = c[0] - e[0], dex = d[0] - e[0];
+    double aey = a[1] - e[1], bey = b[1] - e[1], cey = c[1] - e[1], dey = d[1] - e[1];
+    double aez = a[2] - e[2], bez = b[2] - e[2], cez = c[2] - e[2], dez = d[2] - e[2];
+    double ab = aex * bey - bex * aey, bc = bex * cey - cex * bey, cd = cex * dey - dex * cey;
+    double da = dex * aey - aex * dey, ac = aex * cey - cex * aey, bd = bex * dey - dex * bey;
+    double abc = aez * bc - bez * ac + cez * ab;
+    double bcd = bez * cd - cez * bd + dez * bc;
+    double cda = cez * da + dez * ac + aez * cd;
+    double dab = dez * ab + aez * bd + bez * da;
+    double alift = aex * aex + aey * aey + aez * aez;
+    double blift = bex * bex + bey * bey + bez * bez;
+    double clift = cex * cex + cey * cey + cez * cez;
+    double dlift = dex * dex + dey * dey + dez * dez;
+    double det = (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
+    double mx = fabs(aex) > fabs(bex) ? fabs(aex) : fabs(bex);
+    double my = fabs(aey) > fabs(bey) ? fabs(aey) : fabs(bey);
+    double mz = fabs(aez) > fabs(bez) ? fabs(aez) : fabs(bez);
+    double m, m2;
+    mx = fabs(cex) > mx ? fabs(cex) : mx;
+    my = fabs(cey) > my ? fabs(cey) : my;
+    mz = fabs(cez) > mz ? fabs(cez) : mz;
+    mx = fabs(dex) > mx ? fabs(dex) : mx;
+    my = fabs(dey) > my ? fabs(dey) : my;
+    mz = fabs(dez) > mz ? fabs(dez) : mz;
+    m = mx > my ? mx : my;
+    m = mz > m ? mz : m;
+    m2 = m * m;
+    if (m > 0x1p-200 && fabs(det) > cvm__isp_errbound_a * 73.0 * (m2 * m2 * m) + cvm__filter_floor)
         return det;
-    return cvm__insphere_adapt(a, b, c, d, e);
+    return cvm__insphere(a, b, c, d, e); /* the permanent's filter, then the exact stages */
 }
 
 /* The orient3d determinant in plain floating point: exact when every
