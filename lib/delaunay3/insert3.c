@@ -7,13 +7,15 @@
 #define PT(T, v) ((T)->pt[v].x)
 #if defined(__GNUC__)
 #define CVM__PREFETCH(p) __builtin_prefetch(p)
+#define T3_HOT inline __attribute__((always_inline))
 #else
 #define CVM__PREFETCH(p) ((void)(p))
+#define T3_HOT inline
 #endif
 
 /* Is p in conflict with the finite tetrahedron of vertices v (circumsphere /
  * orthosphere strictly containing p after symbolic perturbation)? */
-static inline int finite_conflict(const cvm__tet3 *T, const int32_t *v, int32_t p)
+static T3_HOT int finite_conflict(const cvm__tet3 *T, const int32_t *v, int32_t p)
 {
     const double *a = PT(T, v[0]), *b = PT(T, v[1]), *c = PT(T, v[2]), *d = PT(T, v[3]);
     const double *e = PT(T, p);
@@ -38,7 +40,7 @@ static inline int finite_conflict(const cvm__tet3 *T, const int32_t *v, int32_t 
 /* Conflict of p with slot t. A ghost tetrahedron conflicts when p lies
  * strictly beyond its hull face, or in the face's plane and in conflict with
  * the finite tetrahedron behind the face (the limit of a far-away apex). */
-static inline int in_conflict(const cvm__tet3 *T, int32_t t, int32_t p)
+static T3_HOT int in_conflict(const cvm__tet3 *T, int32_t t, int32_t p)
 {
     const int32_t *v = T->tt + 8 * (size_t)t;
     int32_t n;
