@@ -5,23 +5,24 @@
 #include "delaunay3/delaunay3_internal.h"
 
 /* Turn t[4] by an even permutation (orientation kept): smallest first, then
- * the smallest of the other three by a cyclic turn of the last three. */
+ * the smallest of the other three by a cyclic turn of the last three. Table
+ * driven, without branches: the order of the indices is random. */
 static void canonical_turn(int32_t *t)
 {
-    int32_t a = t[0], b = t[1], c = t[2], d = t[3], x;
-    int m = 0, k;
-    for (k = 1; k < 4; k++)
-        if (t[k] < t[m])
-            m = k;
-    /* the double transpositions bring position m to the front */
-    if (m == 1)
-        t[0] = b, t[1] = a, t[2] = d, t[3] = c;
-    else if (m == 2)
-        t[0] = c, t[1] = d, t[2] = a, t[3] = b;
-    else if (m == 3)
-        t[0] = d, t[1] = c, t[2] = b, t[3] = a;
-    while (t[1] > t[2] || t[1] > t[3])
-        x = t[1], t[1] = t[2], t[2] = t[3], t[3] = x;
+    /* front[m]: a double transposition (or none) bringing position m first */
+    static const int8_t front[4][4] = {
+        { 0, 1, 2, 3 }, { 1, 0, 3, 2 }, { 2, 3, 0, 1 }, { 3, 2, 1, 0 }
+    };
+    static const int8_t turn[3][3] = { { 0, 1, 2 }, { 1, 2, 0 }, { 2, 0, 1 } };
+    int32_t q[3];
+    int m01 = t[1] < t[0], m23 = 2 + (t[3] < t[2]), m, r;
+    int32_t v01 = t[m01], v23 = t[m23], lo;
+    m = v23 < v01 ? m23 : m01;
+    lo = v23 < v01 ? v23 : v01;
+    q[0] = t[front[m][1]], q[1] = t[front[m][2]], q[2] = t[front[m][3]];
+    r = q[1] < q[0] ? (q[2] < q[1] ? 2 : 1) : (q[2] < q[0] ? 2 : 0);
+    t[0] = lo;
+    t[1] = q[turn[r][0]], t[2] = q[turn[r][1]], t[3] = q[turn[r][2]];
 }
 
 void cvm__tet3_canonical_turn(int32_t *t)
@@ -29,13 +30,15 @@ void cvm__tet3_canonical_turn(int32_t *t)
     canonical_turn(t);
 }
 
+/* In a valid tetrahedralisation two tetrahedra never share their first three
+ * canonical indices (they would lie on one side of the same face), so a run
+ * of equal first index sorts on (second, third) as one 64-bit key; the
+ * fourth only breaks ties that cannot occur, to keep the order total. */
 static int tail_less(const int32_t *a, const int32_t *b)
 {
-    if (a[1] != b[1])
-        return a[1] < b[1];
-    if (a[2] != b[2])
-        return a[2] < b[2];
-    return a[3] < b[3];
+    uint64_t ka = ((uint64_t)(uint32_t)a[1] << 32) | (uint32_t)a[2];
+    uint64_t kb = ((uint64_t)(uint32_t)b[1] << 32) | (uint32_t)b[2];
+    return ka < kb || (ka == kb && a[3] < b[3]);
 }
 
 static int cmp_tet(const void *pa, const void *pb)
