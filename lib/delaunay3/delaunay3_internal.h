@@ -163,7 +163,9 @@ void cvm__tet3_point_fates(const cvm__tet3 *T, uint8_t *fate_out, int32_t *into_
  * (orientation kept) so that its smallest index comes first and the smallest
  * of the other three second; the list is then sorted lexicographically.
  * Identical input gives identical bytes whatever the seed or insertion order.
- * @return CVM_OK or CVM_E_NOMEM (a temporary copy of the output and n / 2048 + 2048 counters). */
+ * @return CVM_OK or CVM_E_NOMEM (temporaries: n / 2048 + 2048 counters and a buffer of
+ *         the tetrahedra whose first index shares its high bits with the most others,
+ *         about 6.75 * 2048 for uniform input). */
 cvm_status cvm__tet3_copy_tets(cvm__tet3 *T, int32_t *dst);
 /* The canonical turn of one tetrahedron used by cvm__tet3_copy_tets(). */
 void cvm__tet3_canonical_turn(int32_t *t);

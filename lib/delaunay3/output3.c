@@ -104,48 +104,57 @@ static void sort_runs(int32_t *dst, size_t nt)
     }
 }
 
-/* Two-level sort on the first vertex: one streaming scatter by its high bits
- * (counted while the canonical forms are written), then a counting sort of
- * each bucket by the low bits in cache, then the runs. */
+/* Two-level sort on the first vertex: the buckets of its high bits are
+ * counted first (the first canonical index is the smallest), then each
+ * tetrahedron is written in canonical form straight into its bucket of dst
+ * (one streaming scatter), then each bucket is sorted in cache by the low
+ * bits and its runs by the rest, through a buffer of the largest bucket. */
 cvm_status cvm__tet3_copy_tets(cvm__tet3 *T, int32_t *dst)
 {
-    size_t nt = T->n_finite, nhigh = (T->np >> LOW_BITS) + 1, i, m = 0, sum = 0;
+    size_t nhigh = (T->np >> LOW_BITS) + 1, i, sum = 0, big = 0;
+    const int32_t *out = T->outid;
     size_t *start, *low;
-    int32_t *tmp;
+    int32_t *buf = NULL, o[4];
     start = cvm__calloc(T->ctx, nhigh + 1, sizeof *start);
     low = cvm__malloc(T->ctx, ((size_t)1 << LOW_BITS) * sizeof *low);
-    tmp = cvm__malloc(T->ctx, 4 * nt * sizeof *tmp + 1);
-    if (!start || !low || !tmp) {
-        cvm__free(T->ctx, start);
-        cvm__free(T->ctx, low);
-        cvm__free(T->ctx, tmp);
-        return cvm__nomem(T->ctx);
+    if (!start || !low)
+        goto nomem;
+    for (i = 0; i < T->nslot; i++) {
+        const int32_t *v = T->tt + 8 * i;
+        int32_t a, b;
+        if (v[0] == CVM__T3_DEAD || v[3] == CVM__T3_GHOST)
+            continue;
+        a = out[v[0]] < out[v[1]] ? out[v[0]] : out[v[1]];
+        b = out[v[2]] < out[v[3]] ? out[v[2]] : out[v[3]];
+        start[(size_t)(a < b ? a : b) >> LOW_BITS]++;
     }
-    for (i = 0; i < T->nslot; i++)
-        if (canonical_tet(T, i, tmp + 4 * m)) {
-            start[(size_t)tmp[4 * m] >> LOW_BITS]++;
-            m++;
-        }
     for (i = 0; i <= nhigh; i++) {
         size_t c = start[i];
         start[i] = sum;
         sum += c;
+        big = c > big ? c : big;
     }
-    for (i = 0; i < nt; i++) { /* after this, bucket h spans [start[h - 1], start[h]) */
-        size_t h = (size_t)tmp[4 * i] >> LOW_BITS;
-        memcpy(dst + 4 * start[h]++, tmp + 4 * i, 4 * sizeof *tmp);
-    }
+    buf = cvm__malloc(T->ctx, 4 * big * sizeof *buf + 1);
+    if (!buf)
+        goto nomem;
+    for (i = 0; i < T->nslot; i++)
+        if (canonical_tet(T, i, o)) /* after this, bucket h spans [start[h - 1], start[h]) */
+            memcpy(dst + 4 * start[(size_t)o[0] >> LOW_BITS]++, o, sizeof o);
     for (i = 0, sum = 0; i < nhigh; i++) {
         size_t lo = sum, hi = start[i];
         sum = hi;
         if (hi - lo < 2)
             continue;
-        sort_low(dst + 4 * lo, tmp + 4 * lo, hi - lo, low);
-        memcpy(dst + 4 * lo, tmp + 4 * lo, 4 * (hi - lo) * sizeof *tmp);
+        sort_low(dst + 4 * lo, buf, hi - lo, low);
+        sort_runs(buf, hi - lo);
+        memcpy(dst + 4 * lo, buf, 4 * (hi - lo) * sizeof *buf);
     }
-    sort_runs(dst, nt);
     cvm__free(T->ctx, start);
     cvm__free(T->ctx, low);
-    cvm__free(T->ctx, tmp);
+    cvm__free(T->ctx, buf);
     return CVM_OK;
+nomem:
+    cvm__free(T->ctx, start);
+    cvm__free(T->ctx, low);
+    return cvm__nomem(T->ctx);
 }
