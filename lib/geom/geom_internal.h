@@ -237,12 +237,13 @@ static inline double cvm__insphere_fp(const double *a, const double *b, const do
 }
 
 /* cvm__insphere with its filter inlined into the caller (hot loops). A
- * semi-static stage comes first: with m the largest magnitude of the twelve
- * differences to e, every product in the permanent is at most m^2 or m^3 and
- * every lift at most 3 m^2, so the permanent is at most 72 m^5 (the bound
- * uses 73 to cover the rounding of both sides); the bound costs a few max and
- * multiplications instead of the permanent's ~50 operations, and the filter
- * behind it decides when it is too loose. m > 2^-200 keeps m^5 normal. */
+ * semi-static stage comes first: every product in the permanent of
+ * cvm__insphere_fp is at most m^2 or m^3 and every lift at most 3 m^2, m the
+ * largest magnitude of the twelve differences to e, so the permanent is at
+ * most 72 m^5 <= 72 L^(5/2), L the largest lift (m^2 <= L); 73 covers the
+ * rounding of both sides. The bound costs three max, a square root and three
+ * products instead of the permanent's ~50 operations; the permanent's filter
+ * decides when it is too loose. L > 2^-400 keeps L^(5/2) normal. */
 static inline double cvm__insphere_inline(const double *a, const double *b, const double *c,
                                           const double *d, const double *e)
 {
@@ -260,20 +261,9 @@ static inline double cvm__insphere_inline(const double *a, const double *b, cons
     double clift = cex * cex + cey * cey + cez * cez;
     double dlift = dex * dex + dey * dey + dez * dez;
     double det = (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
-    double mx = fabs(aex) > fabs(bex) ? fabs(aex) : fabs(bex);
-    double my = fabs(aey) > fabs(bey) ? fabs(aey) : fabs(bey);
-    double mz = fabs(aez) > fabs(bez) ? fabs(aez) : fabs(bez);
-    double m, m2;
-    mx = fabs(cex) > mx ? fabs(cex) : mx;
-    my = fabs(cey) > my ? fabs(cey) : my;
-    mz = fabs(cez) > mz ? fabs(cez) : mz;
-    mx = fabs(dex) > mx ? fabs(dex) : mx;
-    my = fabs(dey) > my ? fabs(dey) : my;
-    mz = fabs(dez) > mz ? fabs(dez) : mz;
-    m = mx > my ? mx : my;
-    m = mz > m ? mz : m;
-    m2 = m * m;
-    if (m > 0x1p-200 && fabs(det) > cvm__isp_errbound_a * 73.0 * (m2 * m2 * m) + cvm__filter_floor)
+    double l1 = alift > blift ? alift : blift, l2 = clift > dlift ? clift : dlift;
+    double l = l1 > l2 ? l1 : l2;
+    if (l > 0x1p-400 && fabs(det) > cvm__isp_errbound_a * 73.0 * (l * l * sqrt(l)) + cvm__filter_floor)
         return det;
     return cvm__insphere(a, b, c, d, e); /* the permanent's filter, then the exact stages */
 }
