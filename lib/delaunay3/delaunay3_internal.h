@@ -55,7 +55,8 @@ typedef struct cvm__t3_bface {
     int32_t f;
     int32_t out;
     int32_t tet;
-    uint8_t lid[4]; /* small local ids of the vertices, for the edge table */
+    uint8_t lid[4]; /* edge table: local ids of the three face vertices, in the cyclic order of
+                     * cvm__tet3_link_around (tet3_store.c) */
 } cvm__t3_bface;
 
 /* A point, with the scratch word of the edge table next to its coordinates

@@ -138,15 +138,11 @@ static uint64_t edge_key(int32_t a, int32_t b)
  * (-1)^f: face 0 = (1 2 3), 1 = (2 0 3), 2 = (0 1 3), 3 = (1 0 2). The new
  * tetrahedra around a point are positively oriented (ghosts included), so the
  * cavity boundary is a closed surface on which every edge appears once in each
- * direction. side[f][j] = (k, from, to): the j-th side face k != f of a new
- * tetrahedron whose apex is at position f, and the positions of its edge on
- * the boundary face f (the one not holding k), directed as in face f. */
-static const int8_t side[4][3][3] = {
-    { { 1, 2, 3 }, { 2, 3, 1 }, { 3, 1, 2 } },
-    { { 0, 3, 2 }, { 2, 0, 3 }, { 3, 2, 0 } },
-    { { 0, 1, 3 }, { 1, 3, 0 }, { 3, 0, 1 } },
-    { { 0, 2, 1 }, { 1, 0, 2 }, { 2, 1, 0 } },
-};
+ * direction. cyc[f] = (q0, q1, q2): the three positions other than f in the
+ * order that makes the edges uniform: the edge of side face q0 (opposite q0,
+ * through the apex at f) on the boundary face f is q1 -> q2 as directed in
+ * face f, that of q1 is q2 -> q0 and that of q2 is q0 -> q1. */
+static const int8_t cyc[4][3] = { { 1, 2, 3 }, { 0, 3, 2 }, { 0, 1, 3 }, { 0, 2, 1 } };
 
 /* The usual cavity: at most CVM__T3_ETAB - 1 vertices on its boundary. Each
  * gets a local id (the ghost 0), a directed edge indexes a small table
@@ -168,12 +164,12 @@ static int link_small(cvm__tet3 *T)
     stamp = T->lstamp;
     for (i = 0; i < T->nbf; i++) {
         cvm__t3_bface *b = &T->bf[i];
-        const int8_t(*sd)[3] = side[b->f];
+        const int8_t *q = cyc[b->f];
         int32_t slot = 4 * b->tet;
-        uint8_t lid[4] = { 0, 0, 0, 0 }; /* a local copy: the stores below cannot alias it */
+        uint32_t l[3];
         int j;
         for (j = 0; j < 3; j++) {
-            int32_t x = b->v[sd[j][0]];
+            int32_t x = b->v[q[j]];
             uint32_t id = 0;
             if (x >= 0) { /* not the ghost (local id 0) */
                 uint32_t loc = pt[x].loc;
@@ -182,23 +178,23 @@ static int link_small(cvm__tet3 *T)
                 pt[x].loc = (stamp << 7) | id;
                 nv += fresh;
             }
-            lid[sd[j][0]] = (uint8_t)id;
+            l[j] = id;
         }
         if (nv > CVM__T3_ETAB)
             return 0;
-        for (j = 0; j < 3; j++)
-            etab[lid[sd[j][1]] * CVM__T3_ETAB + lid[sd[j][2]]] = slot + sd[j][0];
-        memcpy(b->lid, lid, sizeof lid);
+        etab[l[1] * CVM__T3_ETAB + l[2]] = slot + q[0];
+        etab[l[2] * CVM__T3_ETAB + l[0]] = slot + q[1];
+        etab[l[0] * CVM__T3_ETAB + l[1]] = slot + q[2];
+        b->lid[0] = (uint8_t)l[0], b->lid[1] = (uint8_t)l[1], b->lid[2] = (uint8_t)l[2];
     }
     for (i = 0; i < T->nbf; i++) {
         const cvm__t3_bface *b = &T->bf[i];
-        const int8_t(*sd)[3] = side[b->f];
+        const int8_t *q = cyc[b->f];
         int32_t *nb = T->tt + 8 * (size_t)b->tet + 4;
-        uint8_t lid[4];
-        int j;
-        memcpy(lid, b->lid, sizeof lid);
-        for (j = 0; j < 3; j++)
-            nb[sd[j][0]] = etab[lid[sd[j][2]] * CVM__T3_ETAB + lid[sd[j][1]]];
+        uint32_t l0 = b->lid[0], l1 = b->lid[1], l2 = b->lid[2];
+        int32_t n0 = etab[l2 * CVM__T3_ETAB + l1], n1 = etab[l0 * CVM__T3_ETAB + l2];
+        int32_t n2 = etab[l1 * CVM__T3_ETAB + l0];
+        nb[q[0]] = n0, nb[q[1]] = n1, nb[q[2]] = n2;
     }
     return 1;
 }
