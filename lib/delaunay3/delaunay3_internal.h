@@ -187,6 +187,12 @@ void cvm__tet3_release_slot(cvm__tet3 *T, int32_t t);
  * another along the edge of the two vertices at neither k nor f. The hash
  * holds at least 4 nbf entries (cvm__tet3_reserve_hash). */
 void cvm__tet3_link_around(cvm__tet3 *T);
+/* Replace a dug cavity (dead[], ndead) by the tetrahedra joining the apex to
+ * its boundary faces bf[] (slots of the cavity first, then free ones, then
+ * fresh ones; cvm__tet3_reserve and cvm__tet3_reserve_hash made room), link
+ * them to the outside and around the apex, clear the marks, free the dead
+ * slots left over. T->last becomes a finite new tetrahedron. */
+void cvm__tet3_fill_around(cvm__tet3 *T);
 cvm_status cvm__tet3_reserve_hash(cvm__tet3 *T, size_t nfaces);
 /* BRIO rounds, Hilbert order inside each: order[0..n) a permutation of 0..n-1. */
 cvm_status cvm__tet3_brio_order(cvm__ctx *ctx, const double *xyz, size_t n, uint64_t seed,

@@ -204,27 +204,6 @@ static void mark_vanished(cvm__tet3 *T, int32_t p)
         }
 }
 
-/* Replace the cavity by the tetrahedra joining p to its boundary faces. */
-static void fill_cavity(cvm__tet3 *T)
-{
-    size_t i;
-    for (i = 0; i < T->nbf; i++) {
-        cvm__t3_bface *b = &T->bf[i];
-        int32_t nt = cvm__tet3_take_slot(T);
-        int32_t *v = T->tt + 8 * (size_t)nt;
-        v[0] = b->v[0], v[1] = b->v[1], v[2] = b->v[2], v[3] = b->v[3];
-        CVM__T3_TN(T, 4 * (size_t)nt + b->f) = b->out;
-        CVM__T3_TN(T, b->out) = 4 * nt + b->f;
-        T->tmark[b->out >> 2] = 0;
-        b->tet = nt;
-        if (v[3] != CVM__T3_GHOST)
-            T->last = nt;
-    }
-    while (T->ndead > 0)
-        cvm__tet3_release_slot(T, T->dead[--T->ndead]);
-    cvm__tet3_link_around(T);
-}
-
 cvm_status cvm__tet3_insert(cvm__tet3 *T, int32_t p)
 {
     int32_t t = locate(T, p);
@@ -260,7 +239,7 @@ cvm_status cvm__tet3_insert(cvm__tet3 *T, int32_t p)
     }
     if (T->w)
         mark_vanished(T, p);
-    fill_cavity(T);
+    cvm__tet3_fill_around(T);
     T->fate[p] = CVM__T3_VERTEX;
     return CVM_OK;
 }
@@ -638,7 +617,7 @@ cvm_status cvm__tet3_insert_point(cvm__tet3 *T, const double *x, int32_t sos, do
         T->ndead = T->nbf = 0;
         return s;
     }
-    fill_cavity(T);
+    cvm__tet3_fill_around(T);
     clear_excluded(T);
     for (i = 0; i < T->nbf; i++) {
         const cvm__t3_bface *b = &T->bf[i];

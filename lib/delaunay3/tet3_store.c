@@ -144,49 +144,56 @@ static uint64_t edge_key(int32_t a, int32_t b)
  * face f, that of q1 is q2 -> q0 and that of q2 is q0 -> q1. */
 static const int8_t cyc[4][3] = { { 1, 2, 3 }, { 0, 3, 2 }, { 0, 1, 3 }, { 0, 2, 1 } };
 
-/* The usual cavity: at most CVM__T3_ETAB - 1 vertices on its boundary. Each
- * gets a local id (the ghost 0), a directed edge indexes a small table
- * directly: the first pass files each side face under its edge, the second
- * reads the face filed under the reversed edge (no branch on which came
- * first). Returns 0 (nothing linked) when the boundary has too many vertices. */
-static int link_small(cvm__tet3 *T)
+/* A new stamp for the local ids of link_small / cvm__tet3_fill_around. */
+static uint32_t next_lstamp(cvm__tet3 *T)
 {
-    cvm__t3_point *pt = T->pt;
-    int32_t *etab = T->etab;
-    uint32_t stamp, nv = 1;
-    size_t i;
     if (++T->lstamp >= (UINT32_C(1) << 25)) { /* wrapped: forget every old id */
         size_t v;
         for (v = 0; v < T->np; v++)
-            pt[v].loc = 0;
+            T->pt[v].loc = 0;
         T->lstamp = 1;
     }
-    stamp = T->lstamp;
-    for (i = 0; i < T->nbf; i++) {
-        cvm__t3_bface *b = &T->bf[i];
-        const int8_t *q = cyc[b->f];
-        int32_t slot = 4 * b->tet;
-        uint32_t l[3];
-        int j;
-        for (j = 0; j < 3; j++) {
-            int32_t x = b->v[q[j]];
-            uint32_t id = 0;
-            if (x >= 0) { /* not the ghost (local id 0) */
-                uint32_t loc = pt[x].loc;
-                uint32_t fresh = loc >> 7 != stamp;
-                id = fresh ? nv : loc & 127u;
-                pt[x].loc = (stamp << 7) | id;
-                nv += fresh;
-            }
-            l[j] = id;
+    return T->lstamp;
+}
+
+/* The first pass of the edge table for one new tetrahedron: local ids of its
+ * face vertices (the ghost is 0; *nv is the next free id), then each side
+ * face filed under its edge. Returns 0 when the ids ran out (nothing filed). */
+static inline int file_sides(cvm__tet3 *T, cvm__t3_bface *b, uint32_t stamp, uint32_t *nv)
+{
+    cvm__t3_point *pt = T->pt;
+    int32_t *etab = T->etab;
+    const int8_t *q = cyc[b->f];
+    int32_t slot = 4 * b->tet;
+    uint32_t l[3], n = *nv;
+    int j;
+    for (j = 0; j < 3; j++) {
+        int32_t x = b->v[q[j]];
+        uint32_t id = 0;
+        if (x >= 0) { /* not the ghost (local id 0) */
+            uint32_t loc = pt[x].loc;
+            uint32_t fresh = loc >> 7 != stamp;
+            id = fresh ? n : loc & 127u;
+            pt[x].loc = (stamp << 7) | id;
+            n += fresh;
         }
-        if (nv > CVM__T3_ETAB)
-            return 0;
-        etab[l[1] * CVM__T3_ETAB + l[2]] = slot + q[0];
-        etab[l[2] * CVM__T3_ETAB + l[0]] = slot + q[1];
-        etab[l[0] * CVM__T3_ETAB + l[1]] = slot + q[2];
-        b->lid[0] = (uint8_t)l[0], b->lid[1] = (uint8_t)l[1], b->lid[2] = (uint8_t)l[2];
+        l[j] = id;
     }
+    *nv = n;
+    if (n > CVM__T3_ETAB)
+        return 0;
+    etab[l[1] * CVM__T3_ETAB + l[2]] = slot + q[0];
+    etab[l[2] * CVM__T3_ETAB + l[0]] = slot + q[1];
+    etab[l[0] * CVM__T3_ETAB + l[1]] = slot + q[2];
+    b->lid[0] = (uint8_t)l[0], b->lid[1] = (uint8_t)l[1], b->lid[2] = (uint8_t)l[2];
+    return 1;
+}
+
+/* The second pass: each side face reads the face filed under its reversed edge. */
+static void read_sides(cvm__tet3 *T)
+{
+    const int32_t *etab = T->etab;
+    size_t i;
     for (i = 0; i < T->nbf; i++) {
         const cvm__t3_bface *b = &T->bf[i];
         const int8_t *q = cyc[b->f];
@@ -196,15 +203,74 @@ static int link_small(cvm__tet3 *T)
         int32_t n2 = etab[l1 * CVM__T3_ETAB + l0];
         nb[q[0]] = n0, nb[q[1]] = n1, nb[q[2]] = n2;
     }
+}
+
+/* Pairing through a hash table of undirected edges (any cavity size). */
+static void link_hash(cvm__tet3 *T);
+
+/* The usual cavity: at most CVM__T3_ETAB - 1 vertices on its boundary. Each
+ * gets a local id (the ghost 0), a directed edge indexes a small table
+ * directly: the first pass files each side face under its edge, the second
+ * reads the face filed under the reversed edge (no branch on which came
+ * first). Returns 0 (nothing linked) when the boundary has too many vertices. */
+static int link_small(cvm__tet3 *T)
+{
+    uint32_t stamp = next_lstamp(T), nv = 1;
+    size_t i;
+    for (i = 0; i < T->nbf; i++)
+        if (!file_sides(T, &T->bf[i], stamp, &nv))
+            return 0;
+    read_sides(T);
     return 1;
+}
+
+void cvm__tet3_fill_around(cvm__tet3 *T)
+{
+    size_t i, nb = T->nbf, nd = T->ndead, nreuse = nd < nb ? nd : nb;
+    int32_t *tt = T->tt, last = T->last;
+    uint8_t *tmark = T->tmark;
+    uint32_t stamp = next_lstamp(T), nv = 1;
+    int small = T->etab != NULL;
+    for (i = 0; i < nb; i++) {
+        cvm__t3_bface *b = &T->bf[i];
+        int32_t nt, *v, out = b->out;
+        if (i < nreuse) /* the slots of the cavity first, last dug first */
+            nt = T->dead[nd - 1 - i];
+        else if (T->nfree > 0)
+            nt = T->freeslot[--T->nfree];
+        else
+            nt = (int32_t)T->nslot++;
+        v = tt + 8 * (size_t)nt;
+        v[0] = b->v[0], v[1] = b->v[1], v[2] = b->v[2], v[3] = b->v[3];
+        v[4 + b->f] = out;
+        CVM__T3_TN(T, out) = 4 * nt + b->f;
+        tmark[nt] = 0;
+        tmark[out >> 2] = 0;
+        b->tet = nt;
+        last = v[3] != CVM__T3_GHOST ? nt : last;
+        if (small)
+            small = file_sides(T, b, stamp, &nv);
+    }
+    T->last = last;
+    for (i = nreuse; i < nd; i++)
+        cvm__tet3_release_slot(T, T->dead[nd - 1 - i]);
+    T->ndead = 0;
+    if (small)
+        read_sides(T);
+    else
+        link_hash(T);
 }
 
 void cvm__tet3_link_around(cvm__tet3 *T)
 {
+    if (!T->etab || !link_small(T))
+        link_hash(T);
+}
+
+static void link_hash(cvm__tet3 *T)
+{
     size_t i, mask = T->hashcap - 1;
     uint32_t stamp;
-    if (T->etab && link_small(T))
-        return;
     T->n_big_cavities++;
     if (++T->stamp == 0) { /* wrapped: forget every old entry */
         memset(T->hash, 0, T->hashcap * sizeof *T->hash);
