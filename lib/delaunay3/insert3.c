@@ -118,59 +118,106 @@ static void unmark(cvm__tet3 *T)
         (arr)[(cnt)++] = (val);                                                                \
     } while (0)
 
-/* The tetrahedra in conflict with p, grown from t0 across faces: dead[] (and
- * marked 1); the faces where the growth stopped: bf[] (outside marked 2). */
-static cvm_status dig_cavity(cvm__tet3 *T, int32_t t0, int32_t p)
+/* Room for one more item in a workspace array of the cavity search; the
+ * caller's local copies of the pointer and capacity are refreshed. */
+#define DIG_ROOM(arr, cnt, capv, loc_arr, loc_cap)                                             \
+    do {                                                                                       \
+        if ((cnt) == (loc_cap)) {                                                              \
+            if (cvm__grow(T->ctx, (void **)&T->arr, &T->capv, (cnt) + 1, sizeof *T->arr)       \
+                != CVM_OK)                                                                     \
+                goto nomem;                                                                    \
+            (loc_arr) = T->arr, (loc_cap) = T->capv;                                           \
+        }                                                                                      \
+    } while (0)
+
+/* Conflict of p with slot u; plain: an unweighted store without the
+ * small-integer path, where a finite tetrahedron needs only insphere. */
+static T3_HOT int dig_conflict(const cvm__tet3 *T, const cvm__t3_point *pt, const int32_t *v,
+                               int32_t u, int32_t p, int plain)
 {
-    size_t nstack = 0;
-    int f;
-    T->ndead = 0;
-    T->nbf = 0;
-    T->tmark[t0] = 1;
-    PUSH(T->dead, T->ndead, T->deadcap, t0);
-    PUSH(T->stack, nstack, T->stackcap, t0);
-    for (f = 0; f < 4; f++) {
-        int32_t u = CVM__T3_TN(T, 4 * t0 + f) >> 2;
-        CVM__PREFETCH(T->tt + 8 * (size_t)u);
-        CVM__PREFETCH(T->tmark + u);
+    if (plain && v[3] != CVM__T3_GHOST) {
+        const double *e = pt[p].x;
+        double det = cvm__insphere_inline(pt[v[0]].x, pt[v[1]].x, pt[v[2]].x, pt[v[3]].x, e);
+        const int32_t *o = T->orig;
+        if (det != 0.0)
+            return det > 0.0;
+        return cvm__insphere_sos(pt[v[0]].x, pt[v[1]].x, pt[v[2]].x, pt[v[3]].x, e, o[v[0]],
+                                 o[v[1]], o[v[2]], o[v[3]], o[p])
+               > 0;
     }
-    while (nstack > 0) {
-        int32_t c = T->stack[--nstack];
+    return in_conflict(T, u, p);
+}
+
+/* The tetrahedra in conflict with p, grown from t0 across faces: dead[] (and
+ * marked 1); the faces where the growth stopped: bf[] (outside marked 2).
+ * The store's arrays are read through local copies: the byte stores of the
+ * marks would otherwise make the compiler reload every field of T. */
+static T3_HOT cvm_status dig_mode(cvm__tet3 *T, int32_t t0, int32_t p, int plain)
+{
+    const cvm__t3_point *pt = T->pt;
+    int32_t *tt = T->tt, *dead = T->dead, *stack = T->stack;
+    uint8_t *tm = T->tmark;
+    cvm__t3_bface *bf = T->bf;
+    size_t nd = 0, ns = 0, nb = 0;
+    size_t deadcap = T->deadcap, stackcap = T->stackcap, bfcap = T->bfcap;
+    int f;
+    DIG_ROOM(dead, nd, deadcap, dead, deadcap);
+    DIG_ROOM(stack, ns, stackcap, stack, stackcap);
+    tm[t0] = 1;
+    dead[nd++] = t0;
+    stack[ns++] = t0;
+    for (f = 0; f < 4; f++) {
+        int32_t u = tt[8 * (size_t)t0 + 4 + f] >> 2;
+        CVM__PREFETCH(tt + 8 * (size_t)u);
+        CVM__PREFETCH(tm + u);
+    }
+    while (ns > 0) {
+        int32_t c = stack[--ns];
+        const int32_t *vc = tt + 8 * (size_t)c;
         for (f = 0; f < 4; f++) {
-            int32_t s = CVM__T3_TN(T, 4 * (size_t)c + f), u = s >> 2;
-            if (T->tmark[u] == 1)
+            int32_t s = vc[4 + f], u = s >> 2;
+            const int32_t *vu = tt + 8 * (size_t)u;
+            uint8_t mu = tm[u];
+            if (mu == 1)
                 continue;
-            if (T->tmark[u] == 0 && in_conflict(T, u, p)) {
+            if (mu == 0 && dig_conflict(T, pt, vu, u, p, plain)) {
                 int g;
                 /* u's record is in cache now: start loading its neighbours */
                 for (g = 0; g < 4; g++) {
-                    int32_t w = CVM__T3_TN(T, 4 * u + g) >> 2;
-                    CVM__PREFETCH(T->tt + 8 * (size_t)w);
-                    CVM__PREFETCH(T->tmark + w);
+                    int32_t w = vu[4 + g] >> 2;
+                    CVM__PREFETCH(tt + 8 * (size_t)w);
+                    CVM__PREFETCH(tm + w);
                 }
-                T->tmark[u] = 1;
-                PUSH(T->dead, T->ndead, T->deadcap, u);
-                PUSH(T->stack, nstack, T->stackcap, u);
+                DIG_ROOM(dead, nd, deadcap, dead, deadcap);
+                DIG_ROOM(stack, ns, stackcap, stack, stackcap);
+                tm[u] = 1;
+                dead[nd++] = u;
+                stack[ns++] = u;
             } else {
                 cvm__t3_bface *b;
-                if (T->nbf == T->bfcap
-                    && cvm__grow(T->ctx, (void **)&T->bf, &T->bfcap, T->nbf + 1, sizeof *T->bf)
-                           != CVM_OK)
-                    goto nomem;
-                T->tmark[u] = 2;
-                b = &T->bf[T->nbf++];
-                b->v[0] = T->tt[8 * (size_t)c], b->v[1] = T->tt[8 * (size_t)c + 1];
-                b->v[2] = T->tt[8 * (size_t)c + 2], b->v[3] = T->tt[8 * (size_t)c + 3];
+                DIG_ROOM(bf, nb, bfcap, bf, bfcap);
+                tm[u] = 2;
+                b = &bf[nb++];
+                b->v[0] = vc[0], b->v[1] = vc[1], b->v[2] = vc[2], b->v[3] = vc[3];
                 b->v[f] = p;
                 b->f = f;
                 b->out = s;
             }
         }
     }
+    T->ndead = nd;
+    T->nbf = nb;
     return CVM_OK;
 nomem:
+    T->ndead = nd;
+    T->nbf = nb;
     unmark(T);
     return CVM_E_NOMEM;
+}
+
+static cvm_status dig_cavity(cvm__tet3 *T, int32_t t0, int32_t p)
+{
+    return T->w || T->small_int ? dig_mode(T, t0, p, 0) : dig_mode(T, t0, p, 1);
 }
 
 /* Weighted only: vertices of the cavity that are on no boundary face lose
