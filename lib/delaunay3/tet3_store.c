@@ -159,10 +159,9 @@ static uint32_t next_lstamp(cvm__tet3 *T)
 /* The first pass of the edge table for one new tetrahedron: local ids of its
  * face vertices (the ghost is 0; *nv is the next free id), then each side
  * face filed under its edge. Returns 0 when the ids ran out (nothing filed). */
-static inline int file_sides(cvm__tet3 *T, cvm__t3_bface *b, uint32_t stamp, uint32_t *nv)
+static inline int file_sides(cvm__t3_point *pt, int32_t *etab, cvm__t3_bface *b, uint32_t stamp,
+                             uint32_t *nv)
 {
-    cvm__t3_point *pt = T->pt;
-    int32_t *etab = T->etab;
     const int8_t *q = cyc[b->f];
     int32_t slot = 4 * b->tet;
     uint32_t l[3], n = *nv;
@@ -218,7 +217,7 @@ static int link_small(cvm__tet3 *T)
     uint32_t stamp = next_lstamp(T), nv = 1;
     size_t i;
     for (i = 0; i < T->nbf; i++)
-        if (!file_sides(T, &T->bf[i], stamp, &nv))
+        if (!file_sides(T->pt, T->etab, &T->bf[i], stamp, &nv))
             return 0;
     read_sides(T);
     return 1;
@@ -226,32 +225,38 @@ static int link_small(cvm__tet3 *T)
 
 void cvm__tet3_fill_around(cvm__tet3 *T)
 {
+    /* local copies: the byte stores of the marks would make every field reload */
     size_t i, nb = T->nbf, nd = T->ndead, nreuse = nd < nb ? nd : nb;
-    int32_t *tt = T->tt, last = T->last;
+    size_t nfree = T->nfree, nslot = T->nslot;
+    int32_t *tt = T->tt, *etab = T->etab, last = T->last;
+    const int32_t *dead = T->dead, *freeslot = T->freeslot;
+    cvm__t3_point *pt = T->pt;
+    cvm__t3_bface *bf = T->bf;
     uint8_t *tmark = T->tmark;
     uint32_t stamp = next_lstamp(T), nv = 1;
-    int small = T->etab != NULL;
+    int small = etab != NULL;
     for (i = 0; i < nb; i++) {
-        cvm__t3_bface *b = &T->bf[i];
-        int32_t nt, *v, out = b->out;
+        cvm__t3_bface *b = &bf[i];
+        int32_t nt, *v, out = b->out, f = b->f;
         if (i < nreuse) /* the slots of the cavity first, last dug first */
-            nt = T->dead[nd - 1 - i];
-        else if (T->nfree > 0)
-            nt = T->freeslot[--T->nfree];
+            nt = dead[nd - 1 - i];
+        else if (nfree > 0)
+            nt = freeslot[--nfree];
         else
-            nt = (int32_t)T->nslot++;
+            nt = (int32_t)nslot++;
         v = tt + 8 * (size_t)nt;
         v[0] = b->v[0], v[1] = b->v[1], v[2] = b->v[2], v[3] = b->v[3];
-        v[4 + b->f] = out;
-        CVM__T3_TN(T, out) = 4 * nt + b->f;
+        v[4 + f] = out;
+        tt[(size_t)out + ((size_t)out & ~(size_t)3) + 4] = 4 * nt + f;
         tmark[nt] = 0;
         tmark[out >> 2] = 0;
         b->tet = nt;
         last = v[3] != CVM__T3_GHOST ? nt : last;
         if (small)
-            small = file_sides(T, b, stamp, &nv);
+            small = file_sides(pt, etab, b, stamp, &nv);
     }
     T->last = last;
+    T->nfree = nfree, T->nslot = nslot;
     for (i = nreuse; i < nd; i++)
         cvm__tet3_release_slot(T, T->dead[nd - 1 - i]);
     T->ndead = 0;
