@@ -132,15 +132,15 @@ static void unmark(cvm__tet3 *T)
 
 /* Conflict of p with slot u; plain: an unweighted store without the
  * small-integer path, where a finite tetrahedron needs only insphere. */
-static T3_HOT int dig_conflict(const cvm__tet3 *T, const cvm__t3_point *pt, const int32_t *v,
-                               int32_t u, int32_t p, int plain)
+static T3_HOT int dig_conflict(const cvm__tet3 *T, const cvm__t3_point *pt, const double *e,
+                               const int32_t *v, int32_t u, int32_t p, int plain)
 {
     if (plain && v[3] != CVM__T3_GHOST) {
-        const double *e = pt[p].x;
         double det = cvm__insphere_inline(pt[v[0]].x, pt[v[1]].x, pt[v[2]].x, pt[v[3]].x, e);
-        const int32_t *o = T->orig;
+        const int32_t *o;
         if (det != 0.0)
             return det > 0.0;
+        o = T->orig;
         return cvm__insphere_sos(pt[v[0]].x, pt[v[1]].x, pt[v[2]].x, pt[v[3]].x, e, o[v[0]],
                                  o[v[1]], o[v[2]], o[v[3]], o[p])
                > 0;
@@ -155,6 +155,7 @@ static T3_HOT int dig_conflict(const cvm__tet3 *T, const cvm__t3_point *pt, cons
 static T3_HOT cvm_status dig_mode(cvm__tet3 *T, int32_t t0, int32_t p, int plain)
 {
     const cvm__t3_point *pt = T->pt;
+    const double *e = pt[p].x;
     int32_t *tt = T->tt, *dead = T->dead, *stack = T->stack;
     uint8_t *tm = T->tmark;
     cvm__t3_bface *bf = T->bf;
@@ -180,7 +181,7 @@ static T3_HOT cvm_status dig_mode(cvm__tet3 *T, int32_t t0, int32_t p, int plain
             uint8_t mu = tm[u];
             if (mu == 1)
                 continue;
-            if (mu == 0 && dig_conflict(T, pt, vu, u, p, plain)) {
+            if (mu == 0 && dig_conflict(T, pt, e, vu, u, p, plain)) {
                 int g;
                 /* u's record is in cache now: start loading its neighbours */
                 for (g = 0; g < 4; g++) {

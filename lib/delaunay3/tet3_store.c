@@ -164,16 +164,16 @@ static inline int file_sides(cvm__t3_point *pt, int32_t *etab, cvm__t3_bface *b,
 {
     const int8_t *q = cyc[b->f];
     int32_t slot = 4 * b->tet;
-    uint32_t l[3], n = *nv;
+    uint32_t l[3], n = *nv, st = stamp << 7;
     int j;
     for (j = 0; j < 3; j++) {
         int32_t x = b->v[q[j]];
         uint32_t id = 0;
         if (x >= 0) { /* not the ghost (local id 0) */
-            uint32_t loc = pt[x].loc;
-            uint32_t fresh = loc >> 7 != stamp;
-            id = fresh ? n : loc & 127u;
-            pt[x].loc = (stamp << 7) | id;
+            uint32_t mine = pt[x].loc ^ st; /* the id when below 128: stamped this time */
+            uint32_t fresh = mine > 127u;
+            id = fresh ? n : mine;
+            pt[x].loc = st | id;
             n += fresh;
         }
         l[j] = id;
