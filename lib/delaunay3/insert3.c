@@ -156,24 +156,23 @@ static T3_HOT cvm_status dig_mode(cvm__tet3 *T, int32_t t0, int32_t p, int plain
 {
     const cvm__t3_point *pt = T->pt;
     const double *e = pt[p].x;
-    int32_t *tt = T->tt, *dead = T->dead, *stack = T->stack;
+    int32_t *tt = T->tt, *dead = T->dead;
     uint8_t *tm = T->tmark;
     cvm__t3_bface *bf = T->bf;
-    size_t nd = 0, ns = 0, nb = 0;
-    size_t deadcap = T->deadcap, stackcap = T->stackcap, bfcap = T->bfcap;
+    size_t nd = 0, head = 0, nb = 0, deadcap = T->deadcap, bfcap = T->bfcap;
     int f;
     DIG_ROOM(dead, nd, deadcap, dead, deadcap);
-    DIG_ROOM(stack, ns, stackcap, stack, stackcap);
     tm[t0] = 1;
     dead[nd++] = t0;
-    stack[ns++] = t0;
     for (f = 0; f < 4; f++) {
         int32_t u = tt[8 * (size_t)t0 + 4 + f] >> 2;
         CVM__PREFETCH(tt + 8 * (size_t)u);
         CVM__PREFETCH(tm + u);
     }
-    while (ns > 0) {
-        int32_t c = stack[--ns];
+    /* breadth first, dead[] is the queue: a tetrahedron's neighbours are
+     * prefetched when it joins, and used only after everything queued before it */
+    while (head < nd) {
+        int32_t c = dead[head++];
         const int32_t *vc = tt + 8 * (size_t)c;
         for (f = 0; f < 4; f++) {
             int32_t s = vc[4 + f], u = s >> 2;
@@ -183,17 +182,14 @@ static T3_HOT cvm_status dig_mode(cvm__tet3 *T, int32_t t0, int32_t p, int plain
                 continue;
             if (mu == 0 && dig_conflict(T, pt, e, vu, u, p, plain)) {
                 int g;
-                /* u's record is in cache now: start loading its neighbours */
                 for (g = 0; g < 4; g++) {
                     int32_t w = vu[4 + g] >> 2;
                     CVM__PREFETCH(tt + 8 * (size_t)w);
                     CVM__PREFETCH(tm + w);
                 }
                 DIG_ROOM(dead, nd, deadcap, dead, deadcap);
-                DIG_ROOM(stack, ns, stackcap, stack, stackcap);
                 tm[u] = 1;
                 dead[nd++] = u;
-                stack[ns++] = u;
             } else {
                 cvm__t3_bface *b;
                 DIG_ROOM(bf, nb, bfcap, bf, bfcap);
