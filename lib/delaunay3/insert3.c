@@ -182,11 +182,9 @@ static T3_HOT cvm_status dig_mode(cvm__tet3 *T, int32_t t0, int32_t p, int plain
                 continue;
             if (mu == 0 && dig_conflict(T, pt, e, vu, u, p, plain)) {
                 int g;
-                for (g = 0; g < 4; g++) {
-                    int32_t w = vu[4 + g] >> 2;
-                    CVM__PREFETCH(tt + 8 * (size_t)w);
-                    CVM__PREFETCH(tm + w);
-                }
+                /* (the marks, 64 to a cache line, are mostly in cache already) */
+                for (g = 0; g < 4; g++)
+                    CVM__PREFETCH(tt + 8 * (size_t)(vu[4 + g] >> 2));
                 DIG_ROOM(dead, nd, deadcap, dead, deadcap);
                 tm[u] = 1;
                 dead[nd++] = u;
