@@ -12,7 +12,7 @@
  * root of a weight) at least 2^-100 times the largest. */
 static cvm_status check_input(cvm__tet3 *T, const double *xyz, const double *w, size_t n)
 {
-    double big = 0.0;
+    double big = 0.0, tiny;
     size_t i;
     int k;
     for (i = 0; i < n; i++) {
@@ -29,11 +29,12 @@ static cvm_status check_input(cvm__tet3 *T, const double *xyz, const double *w, 
         if (w && sqrt(fabs(w[i])) > big)
             big = sqrt(fabs(w[i]));
     }
+    tiny = ldexp(big, -100);
     for (i = 0; i < n; i++) {
         const double *p = xyz + 3 * i;
         for (k = 0; k < 4; k++) {
             double c = k < 3 ? fabs(p[k]) : w ? sqrt(fabs(w[i])) : 0.0;
-            if (c != 0.0 && c < ldexp(big, -100))
+            if (c != 0.0 && c < tiny)
                 return cvm__error(T->ctx, CVM_E_INPUT_DEGENERATE, CVM_ENT_INPUT_POINT,
                                   (int64_t)i,
                                   "point %zu has a %s of magnitude %g, more than 2^100 below the "

@@ -55,7 +55,8 @@ typedef struct cvm__t3_bface {
     int32_t f;
     int32_t out;
     int32_t tet;
-    uint8_t lid[4]; /* small local ids of the vertices, for the edge table */
+    uint8_t lid[4]; /* edge table: local ids of the three face vertices, in the cyclic order of
+                     * cvm__tet3_link_around (tet3_store.c) */
 } cvm__t3_bface;
 
 /* A point, with the scratch word of the edge table next to its coordinates
@@ -163,7 +164,9 @@ void cvm__tet3_point_fates(const cvm__tet3 *T, uint8_t *fate_out, int32_t *into_
  * (orientation kept) so that its smallest index comes first and the smallest
  * of the other three second; the list is then sorted lexicographically.
  * Identical input gives identical bytes whatever the seed or insertion order.
- * @return CVM_OK or CVM_E_NOMEM (a temporary copy of the output and n / 2048 + 2048 counters). */
+ * @return CVM_OK or CVM_E_NOMEM (temporaries: n / 2048 + 2048 counters and a buffer of
+ *         the tetrahedra whose first index shares its high bits with the most others,
+ *         about 6.75 * 2048 for uniform input). */
 cvm_status cvm__tet3_copy_tets(cvm__tet3 *T, int32_t *dst);
 /* The canonical turn of one tetrahedron used by cvm__tet3_copy_tets(). */
 void cvm__tet3_canonical_turn(int32_t *t);
@@ -184,6 +187,12 @@ void cvm__tet3_release_slot(cvm__tet3 *T, int32_t t);
  * another along the edge of the two vertices at neither k nor f. The hash
  * holds at least 4 nbf entries (cvm__tet3_reserve_hash). */
 void cvm__tet3_link_around(cvm__tet3 *T);
+/* Replace a dug cavity (dead[], ndead) by the tetrahedra joining the apex to
+ * its boundary faces bf[] (slots of the cavity first, then free ones, then
+ * fresh ones; cvm__tet3_reserve and cvm__tet3_reserve_hash made room), link
+ * them to the outside and around the apex, clear the marks, free the dead
+ * slots left over. T->last becomes a finite new tetrahedron. */
+void cvm__tet3_fill_around(cvm__tet3 *T);
 cvm_status cvm__tet3_reserve_hash(cvm__tet3 *T, size_t nfaces);
 /* BRIO rounds, Hilbert order inside each: order[0..n) a permutation of 0..n-1. */
 cvm_status cvm__tet3_brio_order(cvm__ctx *ctx, const double *xyz, size_t n, uint64_t seed,

@@ -3,38 +3,44 @@
 
 #define HILBERT_BITS 10 /* per axis: a 1024^3 grid over the bounding box */
 
-/* Index of cell x[0..2] along the 3D Hilbert curve, after Skilling's
+/* The HILBERT_BITS bits of v spread to every third bit (bit k -> bit 3 k). */
+static uint32_t spread3(uint32_t v)
+{
+    v &= (1u << HILBERT_BITS) - 1;
+    v = (v | (v << 16)) & 0x030000ffu;
+    v = (v | (v << 8)) & 0x0300f00fu;
+    v = (v | (v << 4)) & 0x030c30c3u;
+    v = (v | (v << 2)) & 0x09249249u;
+    return v;
+}
+
+/* Index of cell (x0, x1, x2) along the 3D Hilbert curve, after Skilling's
  * "Programming the Hilbert curve" (2004): undo the excess work of the
- * transpose form, Gray-encode, then interleave the bits (x[0] most significant). */
+ * transpose form, Gray-encode, then interleave the bits (x0 most
+ * significant). Without branches (the bits of random points are random):
+ * each "if bit q is set: invert, else: exchange" goes through masks. */
 static uint32_t hilbert3(uint32_t x0, uint32_t x1, uint32_t x2)
 {
-    uint32_t x[3], m = 1u << (HILBERT_BITS - 1), q, p, t, key = 0;
-    int i, b;
-    x[0] = x0, x[1] = x1, x[2] = x2;
-    for (q = m; q > 1; q >>= 1) {
-        p = q - 1;
-        for (i = 0; i < 3; i++) {
-            if (x[i] & q) {
-                x[0] ^= p;
-            } else {
-                t = (x[0] ^ x[i]) & p;
-                x[0] ^= t;
-                x[i] ^= t;
-            }
-        }
+    uint32_t q, t, set;
+    for (q = 1u << (HILBERT_BITS - 1); q > 1; q >>= 1) {
+        uint32_t p = q - 1;
+        x0 ^= p & (0u - (uint32_t)((x0 & q) != 0)); /* exchanging x0 with itself does nothing */
+        set = 0u - (uint32_t)((x1 & q) != 0);
+        t = (x0 ^ x1) & p & ~set;
+        x0 ^= (p & set) | t;
+        x1 ^= t;
+        set = 0u - (uint32_t)((x2 & q) != 0);
+        t = (x0 ^ x2) & p & ~set;
+        x0 ^= (p & set) | t;
+        x2 ^= t;
     }
-    for (i = 1; i < 3; i++)
-        x[i] ^= x[i - 1];
+    x1 ^= x0;
+    x2 ^= x1;
     t = 0;
-    for (q = m; q > 1; q >>= 1)
-        if (x[2] & q)
-            t ^= q - 1;
-    for (i = 0; i < 3; i++)
-        x[i] ^= t;
-    for (b = HILBERT_BITS - 1; b >= 0; b--)
-        for (i = 0; i < 3; i++)
-            key = (key << 1) | ((x[i] >> b) & 1u);
-    return key;
+    for (q = 1u << (HILBERT_BITS - 1); q > 1; q >>= 1)
+        t ^= (q - 1) & (0u - (uint32_t)((x2 & q) != 0));
+    x0 ^= t, x1 ^= t, x2 ^= t;
+    return (spread3(x0) << 2) | (spread3(x1) << 1) | spread3(x2);
 }
 
 /* Grid cell of coordinate c: the scaled offset clamped to the grid. */

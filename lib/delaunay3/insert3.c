@@ -7,13 +7,15 @@
 #define PT(T, v) ((T)->pt[v].x)
 #if defined(__GNUC__)
 #define CVM__PREFETCH(p) __builtin_prefetch(p)
+#define T3_HOT inline __attribute__((always_inline))
 #else
 #define CVM__PREFETCH(p) ((void)(p))
+#define T3_HOT inline
 #endif
 
 /* Is p in conflict with the finite tetrahedron of vertices v (circumsphere /
  * orthosphere strictly containing p after symbolic perturbation)? */
-static inline int finite_conflict(const cvm__tet3 *T, const int32_t *v, int32_t p)
+static T3_HOT int finite_conflict(const cvm__tet3 *T, const int32_t *v, int32_t p)
 {
     const double *a = PT(T, v[0]), *b = PT(T, v[1]), *c = PT(T, v[2]), *d = PT(T, v[3]);
     const double *e = PT(T, p);
@@ -38,7 +40,7 @@ static inline int finite_conflict(const cvm__tet3 *T, const int32_t *v, int32_t 
 /* Conflict of p with slot t. A ghost tetrahedron conflicts when p lies
  * strictly beyond its hull face, or in the face's plane and in conflict with
  * the finite tetrahedron behind the face (the limit of a far-away apex). */
-static inline int in_conflict(const cvm__tet3 *T, int32_t t, int32_t p)
+static T3_HOT int in_conflict(const cvm__tet3 *T, int32_t t, int32_t p)
 {
     const int32_t *v = T->tt + 8 * (size_t)t;
     int32_t n;
@@ -116,53 +118,101 @@ static void unmark(cvm__tet3 *T)
         (arr)[(cnt)++] = (val);                                                                \
     } while (0)
 
-/* The tetrahedra in conflict with p, grown from t0 across faces: dead[] (and
- * marked 1); the faces where the growth stopped: bf[] (outside marked 2). */
-static cvm_status dig_cavity(cvm__tet3 *T, int32_t t0, int32_t p)
+/* Room for one more item in a workspace array of the cavity search; the
+ * caller's local copies of the pointer and capacity are refreshed. */
+#define DIG_ROOM(arr, cnt, capv, loc_arr, loc_cap)                                             \
+    do {                                                                                       \
+        if ((cnt) == (loc_cap)) {                                                              \
+            if (cvm__grow(T->ctx, (void **)&T->arr, &T->capv, (cnt) + 1, sizeof *T->arr)       \
+                != CVM_OK)                                                                     \
+                goto nomem;                                                                    \
+            (loc_arr) = T->arr, (loc_cap) = T->capv;                                           \
+        }                                                                                      \
+    } while (0)
+
+/* Conflict of p with slot u; plain: an unweighted store without the
+ * small-integer path, where a finite tetrahedron needs only insphere. */
+static T3_HOT int dig_conflict(const cvm__tet3 *T, const cvm__t3_point *pt, const double *e,
+                               const int32_t *v, int32_t u, int32_t p, int plain)
 {
-    size_t nstack = 0;
-    T->ndead = 0;
-    T->nbf = 0;
-    T->tmark[t0] = 1;
-    PUSH(T->dead, T->ndead, T->deadcap, t0);
-    PUSH(T->stack, nstack, T->stackcap, t0);
-    while (nstack > 0) {
-        int32_t c = T->stack[--nstack];
-        int f;
-        /* the neighbours are mostly cold: start all four loads before using one */
+    if (plain && v[3] != CVM__T3_GHOST) {
+        double det = cvm__insphere_inline(pt[v[0]].x, pt[v[1]].x, pt[v[2]].x, pt[v[3]].x, e);
+        const int32_t *o;
+        if (det != 0.0)
+            return det > 0.0;
+        o = T->orig;
+        return cvm__insphere_sos(pt[v[0]].x, pt[v[1]].x, pt[v[2]].x, pt[v[3]].x, e, o[v[0]],
+                                 o[v[1]], o[v[2]], o[v[3]], o[p])
+               > 0;
+    }
+    return in_conflict(T, u, p);
+}
+
+/* The tetrahedra in conflict with p, grown from t0 across faces: dead[] (and
+ * marked 1); the faces where the growth stopped: bf[] (outside marked 2).
+ * The store's arrays are read through local copies: the byte stores of the
+ * marks would otherwise make the compiler reload every field of T. */
+static T3_HOT cvm_status dig_mode(cvm__tet3 *T, int32_t t0, int32_t p, int plain)
+{
+    const cvm__t3_point *pt = T->pt;
+    const double *e = pt[p].x;
+    int32_t *tt = T->tt, *dead = T->dead;
+    uint8_t *tm = T->tmark;
+    cvm__t3_bface *bf = T->bf;
+    size_t nd = 0, head = 0, nb = 0, deadcap = T->deadcap, bfcap = T->bfcap;
+    int f;
+    DIG_ROOM(dead, nd, deadcap, dead, deadcap);
+    tm[t0] = 1;
+    dead[nd++] = t0;
+    for (f = 0; f < 4; f++) {
+        int32_t u = tt[8 * (size_t)t0 + 4 + f] >> 2;
+        CVM__PREFETCH(tt + 8 * (size_t)u);
+        CVM__PREFETCH(tm + u);
+    }
+    /* breadth first, dead[] is the queue: a tetrahedron's neighbours are
+     * prefetched when it joins, and used only after everything queued before it */
+    while (head < nd) {
+        int32_t c = dead[head++];
+        const int32_t *vc = tt + 8 * (size_t)c;
         for (f = 0; f < 4; f++) {
-            int32_t u = CVM__T3_TN(T, 4 * c + f) >> 2;
-            CVM__PREFETCH(T->tt + 8 * (size_t)u);
-            CVM__PREFETCH(T->tmark + u);
-        }
-        for (f = 0; f < 4; f++) {
-            int32_t s = CVM__T3_TN(T, 4 * (size_t)c + f), u = s >> 2;
-            if (T->tmark[u] == 1)
+            int32_t s = vc[4 + f], u = s >> 2;
+            const int32_t *vu = tt + 8 * (size_t)u;
+            uint8_t mu = tm[u];
+            if (mu == 1)
                 continue;
-            if (T->tmark[u] == 0 && in_conflict(T, u, p)) {
-                T->tmark[u] = 1;
-                PUSH(T->dead, T->ndead, T->deadcap, u);
-                PUSH(T->stack, nstack, T->stackcap, u);
+            if (mu == 0 && dig_conflict(T, pt, e, vu, u, p, plain)) {
+                int g;
+                /* (the marks, 64 to a cache line, are mostly in cache already) */
+                for (g = 0; g < 4; g++)
+                    CVM__PREFETCH(tt + 8 * (size_t)(vu[4 + g] >> 2));
+                DIG_ROOM(dead, nd, deadcap, dead, deadcap);
+                tm[u] = 1;
+                dead[nd++] = u;
             } else {
                 cvm__t3_bface *b;
-                if (T->nbf == T->bfcap
-                    && cvm__grow(T->ctx, (void **)&T->bf, &T->bfcap, T->nbf + 1, sizeof *T->bf)
-                           != CVM_OK)
-                    goto nomem;
-                T->tmark[u] = 2;
-                b = &T->bf[T->nbf++];
-                b->v[0] = T->tt[8 * (size_t)c], b->v[1] = T->tt[8 * (size_t)c + 1];
-                b->v[2] = T->tt[8 * (size_t)c + 2], b->v[3] = T->tt[8 * (size_t)c + 3];
+                DIG_ROOM(bf, nb, bfcap, bf, bfcap);
+                tm[u] = 2;
+                b = &bf[nb++];
+                b->v[0] = vc[0], b->v[1] = vc[1], b->v[2] = vc[2], b->v[3] = vc[3];
                 b->v[f] = p;
                 b->f = f;
                 b->out = s;
             }
         }
     }
+    T->ndead = nd;
+    T->nbf = nb;
     return CVM_OK;
 nomem:
+    T->ndead = nd;
+    T->nbf = nb;
     unmark(T);
     return CVM_E_NOMEM;
+}
+
+static cvm_status dig_cavity(cvm__tet3 *T, int32_t t0, int32_t p)
+{
+    return T->w || T->small_int ? dig_mode(T, t0, p, 0) : dig_mode(T, t0, p, 1);
 }
 
 /* Weighted only: vertices of the cavity that are on no boundary face lose
@@ -194,27 +244,6 @@ static void mark_vanished(cvm__tet3 *T, int32_t p)
             if (v >= 0 && v != p && T->vkeep[v] != cur && T->fate[v] == CVM__T3_VERTEX)
                 T->fate[v] = CVM__T3_REDUNDANT;
         }
-}
-
-/* Replace the cavity by the tetrahedra joining p to its boundary faces. */
-static void fill_cavity(cvm__tet3 *T)
-{
-    size_t i;
-    for (i = 0; i < T->nbf; i++) {
-        cvm__t3_bface *b = &T->bf[i];
-        int32_t nt = cvm__tet3_take_slot(T);
-        int32_t *v = T->tt + 8 * (size_t)nt;
-        v[0] = b->v[0], v[1] = b->v[1], v[2] = b->v[2], v[3] = b->v[3];
-        CVM__T3_TN(T, 4 * (size_t)nt + b->f) = b->out;
-        CVM__T3_TN(T, b->out) = 4 * nt + b->f;
-        T->tmark[b->out >> 2] = 0;
-        b->tet = nt;
-        if (v[3] != CVM__T3_GHOST)
-            T->last = nt;
-    }
-    while (T->ndead > 0)
-        cvm__tet3_release_slot(T, T->dead[--T->ndead]);
-    cvm__tet3_link_around(T);
 }
 
 cvm_status cvm__tet3_insert(cvm__tet3 *T, int32_t p)
@@ -252,7 +281,7 @@ cvm_status cvm__tet3_insert(cvm__tet3 *T, int32_t p)
     }
     if (T->w)
         mark_vanished(T, p);
-    fill_cavity(T);
+    cvm__tet3_fill_around(T);
     T->fate[p] = CVM__T3_VERTEX;
     return CVM_OK;
 }
@@ -630,7 +659,7 @@ cvm_status cvm__tet3_insert_point(cvm__tet3 *T, const double *x, int32_t sos, do
         T->ndead = T->nbf = 0;
         return s;
     }
-    fill_cavity(T);
+    cvm__tet3_fill_around(T);
     clear_excluded(T);
     for (i = 0; i < T->nbf; i++) {
         const cvm__t3_bface *b = &T->bf[i];

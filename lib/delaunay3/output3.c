@@ -5,23 +5,24 @@
 #include "delaunay3/delaunay3_internal.h"
 
 /* Turn t[4] by an even permutation (orientation kept): smallest first, then
- * the smallest of the other three by a cyclic turn of the last three. */
+ * the smallest of the other three by a cyclic turn of the last three. Table
+ * driven, without branches: the order of the indices is random. */
 static void canonical_turn(int32_t *t)
 {
-    int32_t a = t[0], b = t[1], c = t[2], d = t[3], x;
-    int m = 0, k;
-    for (k = 1; k < 4; k++)
-        if (t[k] < t[m])
-            m = k;
-    /* the double transpositions bring position m to the front */
-    if (m == 1)
-        t[0] = b, t[1] = a, t[2] = d, t[3] = c;
-    else if (m == 2)
-        t[0] = c, t[1] = d, t[2] = a, t[3] = b;
-    else if (m == 3)
-        t[0] = d, t[1] = c, t[2] = b, t[3] = a;
-    while (t[1] > t[2] || t[1] > t[3])
-        x = t[1], t[1] = t[2], t[2] = t[3], t[3] = x;
+    /* front[m]: a double transposition (or none) bringing position m first */
+    static const int8_t front[4][4] = {
+        { 0, 1, 2, 3 }, { 1, 0, 3, 2 }, { 2, 3, 0, 1 }, { 3, 2, 1, 0 }
+    };
+    static const int8_t turn[3][3] = { { 0, 1, 2 }, { 1, 2, 0 }, { 2, 0, 1 } };
+    int32_t q[3];
+    int m01 = t[1] < t[0], m23 = 2 + (t[3] < t[2]), m, r;
+    int32_t v01 = t[m01], v23 = t[m23], lo;
+    m = v23 < v01 ? m23 : m01;
+    lo = v23 < v01 ? v23 : v01;
+    q[0] = t[front[m][1]], q[1] = t[front[m][2]], q[2] = t[front[m][3]];
+    r = q[1] < q[0] ? (q[2] < q[1] ? 2 : 1) : (q[2] < q[0] ? 2 : 0);
+    t[0] = lo;
+    t[1] = q[turn[r][0]], t[2] = q[turn[r][1]], t[3] = q[turn[r][2]];
 }
 
 void cvm__tet3_canonical_turn(int32_t *t)
@@ -29,13 +30,15 @@ void cvm__tet3_canonical_turn(int32_t *t)
     canonical_turn(t);
 }
 
+/* In a valid tetrahedralisation two tetrahedra never share their first three
+ * canonical indices (they would lie on one side of the same face), so a run
+ * of equal first index sorts on (second, third) as one 64-bit key; the
+ * fourth only breaks ties that cannot occur, to keep the order total. */
 static int tail_less(const int32_t *a, const int32_t *b)
 {
-    if (a[1] != b[1])
-        return a[1] < b[1];
-    if (a[2] != b[2])
-        return a[2] < b[2];
-    return a[3] < b[3];
+    uint64_t ka = ((uint64_t)(uint32_t)a[1] << 32) | (uint32_t)a[2];
+    uint64_t kb = ((uint64_t)(uint32_t)b[1] << 32) | (uint32_t)b[2];
+    return ka < kb || (ka == kb && a[3] < b[3]);
 }
 
 static int cmp_tet(const void *pa, const void *pb)
@@ -101,48 +104,57 @@ static void sort_runs(int32_t *dst, size_t nt)
     }
 }
 
-/* Two-level sort on the first vertex: one streaming scatter by its high bits
- * (counted while the canonical forms are written), then a counting sort of
- * each bucket by the low bits in cache, then the runs. */
+/* Two-level sort on the first vertex: the buckets of its high bits are
+ * counted first (the first canonical index is the smallest), then each
+ * tetrahedron is written in canonical form straight into its bucket of dst
+ * (one streaming scatter), then each bucket is sorted in cache by the low
+ * bits and its runs by the rest, through a buffer of the largest bucket. */
 cvm_status cvm__tet3_copy_tets(cvm__tet3 *T, int32_t *dst)
 {
-    size_t nt = T->n_finite, nhigh = (T->np >> LOW_BITS) + 1, i, m = 0, sum = 0;
+    size_t nhigh = (T->np >> LOW_BITS) + 1, i, sum = 0, big = 0;
+    const int32_t *out = T->outid;
     size_t *start, *low;
-    int32_t *tmp;
+    int32_t *buf = NULL, o[4];
     start = cvm__calloc(T->ctx, nhigh + 1, sizeof *start);
     low = cvm__malloc(T->ctx, ((size_t)1 << LOW_BITS) * sizeof *low);
-    tmp = cvm__malloc(T->ctx, 4 * nt * sizeof *tmp + 1);
-    if (!start || !low || !tmp) {
-        cvm__free(T->ctx, start);
-        cvm__free(T->ctx, low);
-        cvm__free(T->ctx, tmp);
-        return cvm__nomem(T->ctx);
+    if (!start || !low)
+        goto nomem;
+    for (i = 0; i < T->nslot; i++) {
+        const int32_t *v = T->tt + 8 * i;
+        int32_t a, b;
+        if (v[0] == CVM__T3_DEAD || v[3] == CVM__T3_GHOST)
+            continue;
+        a = out[v[0]] < out[v[1]] ? out[v[0]] : out[v[1]];
+        b = out[v[2]] < out[v[3]] ? out[v[2]] : out[v[3]];
+        start[(size_t)(a < b ? a : b) >> LOW_BITS]++;
     }
-    for (i = 0; i < T->nslot; i++)
-        if (canonical_tet(T, i, tmp + 4 * m)) {
-            start[(size_t)tmp[4 * m] >> LOW_BITS]++;
-            m++;
-        }
     for (i = 0; i <= nhigh; i++) {
         size_t c = start[i];
         start[i] = sum;
         sum += c;
+        big = c > big ? c : big;
     }
-    for (i = 0; i < nt; i++) { /* after this, bucket h spans [start[h - 1], start[h]) */
-        size_t h = (size_t)tmp[4 * i] >> LOW_BITS;
-        memcpy(dst + 4 * start[h]++, tmp + 4 * i, 4 * sizeof *tmp);
-    }
+    buf = cvm__malloc(T->ctx, 4 * big * sizeof *buf + 1);
+    if (!buf)
+        goto nomem;
+    for (i = 0; i < T->nslot; i++)
+        if (canonical_tet(T, i, o)) /* after this, bucket h spans [start[h - 1], start[h]) */
+            memcpy(dst + 4 * start[(size_t)o[0] >> LOW_BITS]++, o, sizeof o);
     for (i = 0, sum = 0; i < nhigh; i++) {
         size_t lo = sum, hi = start[i];
         sum = hi;
         if (hi - lo < 2)
             continue;
-        sort_low(dst + 4 * lo, tmp + 4 * lo, hi - lo, low);
-        memcpy(dst + 4 * lo, tmp + 4 * lo, 4 * (hi - lo) * sizeof *tmp);
+        sort_low(dst + 4 * lo, buf, hi - lo, low);
+        sort_runs(buf, hi - lo);
+        memcpy(dst + 4 * lo, buf, 4 * (hi - lo) * sizeof *buf);
     }
-    sort_runs(dst, nt);
     cvm__free(T->ctx, start);
     cvm__free(T->ctx, low);
-    cvm__free(T->ctx, tmp);
+    cvm__free(T->ctx, buf);
     return CVM_OK;
+nomem:
+    cvm__free(T->ctx, start);
+    cvm__free(T->ctx, low);
+    return cvm__nomem(T->ctx);
 }

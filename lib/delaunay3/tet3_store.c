@@ -138,14 +138,74 @@ static uint64_t edge_key(int32_t a, int32_t b)
  * (-1)^f: face 0 = (1 2 3), 1 = (2 0 3), 2 = (0 1 3), 3 = (1 0 2). The new
  * tetrahedra around a point are positively oriented (ghosts included), so the
  * cavity boundary is a closed surface on which every edge appears once in each
- * direction. dir[f][k]: the positions (from, to) of the edge of face f that
- * does not hold position k, directed as in face f. */
-static const int8_t dir[4][4][2] = {
-    { { -1, -1 }, { 2, 3 }, { 3, 1 }, { 1, 2 } },
-    { { 3, 2 }, { -1, -1 }, { 0, 3 }, { 2, 0 } },
-    { { 1, 3 }, { 3, 0 }, { -1, -1 }, { 0, 1 } },
-    { { 2, 1 }, { 0, 2 }, { 1, 0 }, { -1, -1 } },
-};
+ * direction. cyc[f] = (q0, q1, q2): the three positions other than f in the
+ * order that makes the edges uniform: the edge of side face q0 (opposite q0,
+ * through the apex at f) on the boundary face f is q1 -> q2 as directed in
+ * face f, that of q1 is q2 -> q0 and that of q2 is q0 -> q1. */
+static const int8_t cyc[4][3] = { { 1, 2, 3 }, { 0, 3, 2 }, { 0, 1, 3 }, { 0, 2, 1 } };
+
+/* A new stamp for the local ids of link_small / cvm__tet3_fill_around. */
+static uint32_t next_lstamp(cvm__tet3 *T)
+{
+    if (++T->lstamp >= (UINT32_C(1) << 25)) { /* wrapped: forget every old id */
+        size_t v;
+        for (v = 0; v < T->np; v++)
+            T->pt[v].loc = 0;
+        T->lstamp = 1;
+    }
+    return T->lstamp;
+}
+
+/* The first pass of the edge table for one new tetrahedron: local ids of its
+ * face vertices (the ghost is 0; *nv is the next free id), then each side
+ * face filed under its edge. Returns 0 when the ids ran out (nothing filed). */
+static inline int file_sides(cvm__t3_point *pt, int32_t *etab, cvm__t3_bface *b, uint32_t stamp,
+                             uint32_t *nv)
+{
+    const int8_t *q = cyc[b->f];
+    int32_t slot = 4 * b->tet;
+    uint32_t l[3], n = *nv, st = stamp << 7;
+    int j;
+    for (j = 0; j < 3; j++) {
+        int32_t x = b->v[q[j]];
+        uint32_t id = 0;
+        if (x >= 0) { /* not the ghost (local id 0) */
+            uint32_t mine = pt[x].loc ^ st; /* the id when below 128: stamped this time */
+            uint32_t fresh = mine > 127u;
+            id = fresh ? n : mine;
+            pt[x].loc = st | id;
+            n += fresh;
+        }
+        l[j] = id;
+    }
+    *nv = n;
+    if (n > CVM__T3_ETAB)
+        return 0;
+    etab[l[1] * CVM__T3_ETAB + l[2]] = slot + q[0];
+    etab[l[2] * CVM__T3_ETAB + l[0]] = slot + q[1];
+    etab[l[0] * CVM__T3_ETAB + l[1]] = slot + q[2];
+    b->lid[0] = (uint8_t)l[0], b->lid[1] = (uint8_t)l[1], b->lid[2] = (uint8_t)l[2];
+    return 1;
+}
+
+/* The second pass: each side face reads the face filed under its reversed edge. */
+static void read_sides(cvm__tet3 *T)
+{
+    const int32_t *etab = T->etab;
+    size_t i;
+    for (i = 0; i < T->nbf; i++) {
+        const cvm__t3_bface *b = &T->bf[i];
+        const int8_t *q = cyc[b->f];
+        int32_t *nb = T->tt + 8 * (size_t)b->tet + 4;
+        uint32_t l0 = b->lid[0], l1 = b->lid[1], l2 = b->lid[2];
+        int32_t n0 = etab[l2 * CVM__T3_ETAB + l1], n1 = etab[l0 * CVM__T3_ETAB + l2];
+        int32_t n2 = etab[l1 * CVM__T3_ETAB + l0];
+        nb[q[0]] = n0, nb[q[1]] = n1, nb[q[2]] = n2;
+    }
+}
+
+/* Pairing through a hash table of undirected edges (any cavity size). */
+static void link_hash(cvm__tet3 *T);
 
 /* The usual cavity: at most CVM__T3_ETAB - 1 vertices on its boundary. Each
  * gets a local id (the ghost 0), a directed edge indexes a small table
@@ -154,60 +214,68 @@ static const int8_t dir[4][4][2] = {
  * first). Returns 0 (nothing linked) when the boundary has too many vertices. */
 static int link_small(cvm__tet3 *T)
 {
-    uint32_t stamp;
+    uint32_t stamp = next_lstamp(T), nv = 1;
     size_t i;
-    int nv = 1;
-    if (++T->lstamp >= (UINT32_C(1) << 25)) { /* wrapped: forget every old id */
-        size_t v;
-        for (v = 0; v < T->np; v++)
-            T->pt[v].loc = 0;
-        T->lstamp = 1;
-    }
-    stamp = T->lstamp;
-    for (i = 0; i < T->nbf; i++) {
-        cvm__t3_bface *b = &T->bf[i];
-        int j;
-        for (j = 0; j < 4; j++) {
-            int32_t x = b->v[j];
-            if (j == b->f)
-                continue;
-            if (x < 0) {
-                b->lid[j] = 0;
-                continue;
-            }
-            if (T->pt[x].loc >> 7 != stamp) {
-                if (nv == CVM__T3_ETAB)
-                    return 0;
-                T->pt[x].loc = (stamp << 7) | (uint32_t)nv++;
-            }
-            b->lid[j] = (uint8_t)(T->pt[x].loc & 127u);
-        }
-    }
-    for (i = 0; i < T->nbf; i++) {
-        const cvm__t3_bface *b = &T->bf[i];
-        int k;
-        for (k = 0; k < 4; k++)
-            if (k != b->f)
-                T->etab[b->lid[dir[b->f][k][0]] * CVM__T3_ETAB + b->lid[dir[b->f][k][1]]] =
-                    4 * b->tet + k;
-    }
-    for (i = 0; i < T->nbf; i++) {
-        const cvm__t3_bface *b = &T->bf[i];
-        int k;
-        for (k = 0; k < 4; k++)
-            if (k != b->f)
-                CVM__T3_TN(T, 4 * b->tet + k) =
-                    T->etab[b->lid[dir[b->f][k][1]] * CVM__T3_ETAB + b->lid[dir[b->f][k][0]]];
-    }
+    for (i = 0; i < T->nbf; i++)
+        if (!file_sides(T->pt, T->etab, &T->bf[i], stamp, &nv))
+            return 0;
+    read_sides(T);
     return 1;
+}
+
+void cvm__tet3_fill_around(cvm__tet3 *T)
+{
+    /* local copies: the byte stores of the marks would make every field reload */
+    size_t i, nb = T->nbf, nd = T->ndead, nreuse = nd < nb ? nd : nb;
+    size_t nfree = T->nfree, nslot = T->nslot;
+    int32_t *tt = T->tt, *etab = T->etab, last = T->last;
+    const int32_t *dead = T->dead, *freeslot = T->freeslot;
+    cvm__t3_point *pt = T->pt;
+    cvm__t3_bface *bf = T->bf;
+    uint8_t *tmark = T->tmark;
+    uint32_t stamp = next_lstamp(T), nv = 1;
+    int small = etab != NULL;
+    for (i = 0; i < nb; i++) {
+        cvm__t3_bface *b = &bf[i];
+        int32_t nt, *v, out = b->out, f = b->f;
+        if (i < nreuse) /* the slots of the cavity first, last dug first */
+            nt = dead[nd - 1 - i];
+        else if (nfree > 0)
+            nt = freeslot[--nfree];
+        else
+            nt = (int32_t)nslot++;
+        v = tt + 8 * (size_t)nt;
+        v[0] = b->v[0], v[1] = b->v[1], v[2] = b->v[2], v[3] = b->v[3];
+        v[4 + f] = out;
+        tt[(size_t)out + ((size_t)out & ~(size_t)3) + 4] = 4 * nt + f;
+        tmark[nt] = 0;
+        tmark[out >> 2] = 0;
+        b->tet = nt;
+        last = v[3] != CVM__T3_GHOST ? nt : last;
+        if (small)
+            small = file_sides(pt, etab, b, stamp, &nv);
+    }
+    T->last = last;
+    T->nfree = nfree, T->nslot = nslot;
+    for (i = nreuse; i < nd; i++)
+        cvm__tet3_release_slot(T, T->dead[nd - 1 - i]);
+    T->ndead = 0;
+    if (small)
+        read_sides(T);
+    else
+        link_hash(T);
 }
 
 void cvm__tet3_link_around(cvm__tet3 *T)
 {
+    if (!T->etab || !link_small(T))
+        link_hash(T);
+}
+
+static void link_hash(cvm__tet3 *T)
+{
     size_t i, mask = T->hashcap - 1;
     uint32_t stamp;
-    if (T->etab && link_small(T))
-        return;
     T->n_big_cavities++;
     if (++T->stamp == 0) { /* wrapped: forget every old entry */
         memset(T->hash, 0, T->hashcap * sizeof *T->hash);

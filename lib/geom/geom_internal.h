@@ -236,15 +236,36 @@ static inline double cvm__insphere_fp(const double *a, const double *b, const do
     return (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
 }
 
-/* cvm__insphere with its filter inlined into the caller (hot loops). */
+/* cvm__insphere with its filter inlined into the caller (hot loops). A
+ * semi-static stage comes first: every product in the permanent of
+ * cvm__insphere_fp is at most m^2 or m^3 and every lift at most 3 m^2, m the
+ * largest magnitude of the twelve differences to e, so the permanent is at
+ * most 72 m^5 <= 72 L^(5/2), L the largest lift (m^2 <= L); 73 covers the
+ * rounding of both sides. The bound costs three max, a square root and three
+ * products instead of the permanent's ~50 operations; the permanent's filter
+ * decides when it is too loose. L > 2^-400 keeps L^(5/2) normal. */
 static inline double cvm__insphere_inline(const double *a, const double *b, const double *c,
                                           const double *d, const double *e)
 {
-    double permanent, det = cvm__insphere_fp(a, b, c, d, e, &permanent);
-    double errbound = cvm__isp_errbound_a * permanent + cvm__filter_floor;
-    if (fabs(det) > errbound)
+    double aex = a[0] - e[0], bex = b[0] - e[0], cex = c[0] - e[0], dex = d[0] - e[0];
+    double aey = a[1] - e[1], bey = b[1] - e[1], cey = c[1] - e[1], dey = d[1] - e[1];
+    double aez = a[2] - e[2], bez = b[2] - e[2], cez = c[2] - e[2], dez = d[2] - e[2];
+    double ab = aex * bey - bex * aey, bc = bex * cey - cex * bey, cd = cex * dey - dex * cey;
+    double da = dex * aey - aex * dey, ac = aex * cey - cex * aey, bd = bex * dey - dex * bey;
+    double abc = aez * bc - bez * ac + cez * ab;
+    double bcd = bez * cd - cez * bd + dez * bc;
+    double cda = cez * da + dez * ac + aez * cd;
+    double dab = dez * ab + aez * bd + bez * da;
+    double alift = aex * aex + aey * aey + aez * aez;
+    double blift = bex * bex + bey * bey + bez * bez;
+    double clift = cex * cex + cey * cey + cez * cez;
+    double dlift = dex * dex + dey * dey + dez * dez;
+    double det = (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
+    double l1 = alift > blift ? alift : blift, l2 = clift > dlift ? clift : dlift;
+    double l = l1 > l2 ? l1 : l2;
+    if (l > 0x1p-400 && fabs(det) > cvm__isp_errbound_a * 73.0 * (l * l * sqrt(l)) + cvm__filter_floor)
         return det;
-    return cvm__insphere_adapt(a, b, c, d, e);
+    return cvm__insphere(a, b, c, d, e); /* the permanent's filter, then the exact stages */
 }
 
 /* The orient3d determinant in plain floating point: exact when every

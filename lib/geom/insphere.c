@@ -123,7 +123,10 @@ CVM__NOINLINE double cvm__insphere_adapt(const double *a, const double *b, const
 double cvm__insphere(const double *a, const double *b, const double *c, const double *d,
                      const double *e)
 {
-    return cvm__insphere_inline(a, b, c, d, e);
+    double permanent, det = cvm__insphere_fp(a, b, c, d, e, &permanent);
+    if (fabs(det) > cvm__isp_errbound_a * permanent + cvm__filter_floor)
+        return det;
+    return cvm__insphere_adapt(a, b, c, d, e);
 }
 
 /* The 5x5 determinant [x y z |x|^2 1] expanded along the lifted column:
