@@ -87,28 +87,14 @@ static void drop_triangles(cvm__tri2 *T)
         T->vtri[v] = -1;
 }
 
-cvm_status cvm__tri2_build(cvm__tri2 *T, uint64_t seed, int32_t *dup_of)
+/* The first triangle from order[0] and the next two points that make one, then every other
+ * point in order; duplicates into dup_of. CVM_OK, a degenerate-input error (message set), or the
+ * insertion's and the run control's statuses (no message). */
+static cvm_status insert_in_order(cvm__tri2 *T, const int32_t *order, int32_t *dup_of)
 {
     size_t n = T->nv, i, i1 = 0, i2 = 0;
-    int32_t *order;
-    cvm_status s;
     double o = 0;
-
-    drop_triangles(T);
-    for (i = 0; i < n; i++)
-        dup_of[i] = -1;
-    if (n < 3)
-        return cvm__error(T->ctx, CVM_E_INPUT_DEGENERATE, CVM_ENT_INPUT_POINT, -1,
-                          "need at least 3 points, got %lu", (unsigned long)n);
-    order = cvm__malloc(T->ctx, n * sizeof *order);
-    if (!order)
-        return cvm__nomem(T->ctx);
-    s = cvm__brio_order(T->ctx, T->xy, n, seed, order);
-    if (s)
-        goto fail;
-    s = cvm__tri2_reserve_triangles(T, 2 * n + 8);
-    if (s)
-        goto fail;
+    cvm_status s;
     for (i1 = 1; i1 < n && same_point(T, order[0], order[i1]); i1++)
         ;
     for (i2 = i1 + 1; i2 < n; i2++) {
@@ -117,14 +103,12 @@ cvm_status cvm__tri2_build(cvm__tri2 *T, uint64_t seed, int32_t *dup_of)
         if (o != 0)
             break;
     }
-    if (i1 >= n || i2 >= n) {
-        cvm__free(T->ctx, order);
-        if (i1 >= n)
-            return cvm__error(T->ctx, CVM_E_INPUT_DEGENERATE, CVM_ENT_INPUT_POINT, 0,
-                              "all %lu points coincide", (unsigned long)n);
+    if (i1 >= n)
+        return cvm__error(T->ctx, CVM_E_INPUT_DEGENERATE, CVM_ENT_INPUT_POINT, 0,
+                          "all %lu points coincide", (unsigned long)n);
+    if (i2 >= n)
         return cvm__error(T->ctx, CVM_E_INPUT_DEGENERATE, CVM_ENT_INPUT_POINT, -1,
                           "all %lu points are collinear", (unsigned long)n);
-    }
     if (o > 0)
         make_first(T, order[0], order[i1], order[i2]);
     else
@@ -137,10 +121,76 @@ cvm_status cvm__tri2_build(cvm__tri2 *T, uint64_t seed, int32_t *dup_of)
             continue;
         s = cvm__tri2_insert_vertex(T, v, T->last, 0, 0.0, &res, &other);
         if (s)
-            goto fail;
+            return s;
         if (res == CVM__INS_DUPLICATE)
             dup_of[v] = other;
         s = cvm__tick(T->ctx, 1, CVM_STAGE_INSERT, (double)i / (double)n);
+        if (s)
+            return s;
+    }
+    return CVM_OK;
+}
+
+/* Exact duplicates: the first of a group to be inserted became its vertex and its index decided
+ * every perturbed test, so the result could depend on the order (the seed). Swap in the order
+ * each group's lowest index into the place of the vertex inserted first; 1 when any moved.
+ * pos: n entries of scratch. */
+static int lowest_first(const cvm__tri2 *T, int32_t *order, const int32_t *dup_of, int32_t *pos)
+{
+    size_t n = T->nv, i;
+    int any = 0;
+    for (i = 0; i < n; i++)
+        pos[order[i]] = (int32_t)i;
+    for (i = 0; i < n; i++) {
+        int32_t g = dup_of[i];
+        if (g >= 0 && (int32_t)i < g) { /* i is lower than its vertex: i takes g's place */
+            int32_t pi = pos[i], pg = pos[g];
+            order[pg] = (int32_t)i;
+            order[pi] = g;
+            pos[i] = pg;
+            pos[g] = pi;
+            any = 1;
+        }
+    }
+    return any;
+}
+
+cvm_status cvm__tri2_build(cvm__tri2 *T, uint64_t seed, int32_t *dup_of)
+{
+    size_t n = T->nv, i;
+    int32_t *order;
+    cvm_status s;
+
+    drop_triangles(T);
+    for (i = 0; i < n; i++)
+        dup_of[i] = -1;
+    if (n < 3)
+        return cvm__error(T->ctx, CVM_E_INPUT_DEGENERATE, CVM_ENT_INPUT_POINT, -1,
+                          "need at least 3 points, got %lu", (unsigned long)n);
+    order = cvm__malloc(T->ctx, 2 * n * sizeof *order);
+    if (!order)
+        return cvm__nomem(T->ctx);
+    s = cvm__brio_order(T->ctx, T->xy, n, seed, order);
+    if (s)
+        goto fail;
+    s = cvm__tri2_reserve_triangles(T, 2 * n + 8);
+    if (s)
+        goto fail;
+    s = insert_in_order(T, order, dup_of);
+    if (s == CVM_E_INPUT_DEGENERATE) {
+        cvm__free(T->ctx, order);
+        drop_triangles(T);
+        return s;
+    }
+    if (s)
+        goto fail;
+    /* dup_of names the vertex each duplicate met, which is the first of its group; ties of a
+     * group with a lower index: again in the order with the lowest first */
+    if (lowest_first(T, order, dup_of, order + n)) {
+        drop_triangles(T);
+        for (i = 0; i < n; i++)
+            dup_of[i] = -1;
+        s = insert_in_order(T, order, dup_of);
         if (s)
             goto fail;
     }

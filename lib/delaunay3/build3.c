@@ -213,10 +213,46 @@ static cvm_status alloc_points(cvm__tet3 *T, const double *xyz, const double *w,
     return CVM_OK;
 }
 
+/* Exact duplicates: the first of a group to be inserted became its vertex and carried its own
+ * input index into every perturbed decision, so the result could depend on the insertion order
+ * (the seed). Give each group's vertex the group's lowest input index (the points are identical,
+ * so this only renames them) and report whether any changed. */
+static int lowest_index_first(cvm__tet3 *T)
+{
+    size_t i;
+    int any = 0;
+    for (i = 0; i < T->np; i++)
+        if (T->fate[i] == CVM__T3_DUPLICATE && T->orig[i] < T->orig[T->merged[i]]) {
+            int32_t g = T->merged[i], x = T->orig[i];
+            T->orig[i] = T->orig[g];
+            T->orig[g] = x;
+            any = 1;
+        }
+    return any;
+}
+
+/* Insert every pending point in order, from the first tetrahedron. */
+static cvm_status insert_all(cvm__tet3 *T, uint64_t seed)
+{
+    int32_t first[4];
+    size_t i;
+    cvm_status s = find_first(T, first);
+    if (s != CVM_OK)
+        return s;
+    /* about 6.5 finite tetrahedra per point for uniform input: reserve once */
+    s = cvm__tet3_reserve(T, T->np < 1000 ? 64 + 8 * T->np : 7 * T->np);
+    if (s == CVM_OK)
+        s = make_first(T, first);
+    T->walk = (UINT64_C(0x9E3779B97F4A7C15) ^ seed) | 1u; /* xorshift needs a nonzero state */
+    for (i = 0; i < T->np && s == CVM_OK; i++)
+        if (T->fate[i] == CVM__T3_PENDING)
+            s = cvm__tet3_insert(T, (int32_t)i);
+    return s;
+}
+
 cvm_status cvm__tet3_build(cvm__tet3 *T, const double *xyz, const double *w, size_t n,
                            uint64_t seed)
 {
-    int32_t first[4];
     size_t i;
     cvm_status s;
 
@@ -232,21 +268,21 @@ cvm_status cvm__tet3_build(cvm__tet3 *T, const double *xyz, const double *w, siz
                           "%zu points: a 3D triangulation needs 4 points not in one plane", n);
     s = alloc_points(T, xyz, w, n, seed);
     if (s == CVM_OK)
-        s = find_first(T, first);
+        s = insert_all(T, seed);
+    if (s == CVM_OK && lowest_index_first(T)) {
+        /* again from scratch, in the same order, under the new names */
+        T->nslot = T->nfree = T->ndead = 0;
+        T->n_big_cavities = 0;
+        for (i = 0; i < n; i++) {
+            T->fate[i] = CVM__T3_PENDING;
+            T->merged[i] = -1;
+        }
+        s = insert_all(T, seed);
+    }
     if (s == CVM_E_NOMEM)
         return cvm__nomem(T->ctx);
-    if (s != CVM_OK)
-        return s;
-    /* about 6.5 finite tetrahedra per point for uniform input: reserve once */
-    s = cvm__tet3_reserve(T, n < 1000 ? 64 + 8 * n : 7 * n);
-    if (s == CVM_OK)
-        s = make_first(T, first);
-    T->walk = (UINT64_C(0x9E3779B97F4A7C15) ^ seed) | 1u; /* xorshift needs a nonzero state */
-    for (i = 0; i < n && s == CVM_OK; i++)
-        if (T->fate[i] == CVM__T3_PENDING)
-            s = cvm__tet3_insert(T, (int32_t)i);
-    if (s == CVM_E_NOMEM)
-        return cvm__nomem(T->ctx);
+    if (s != CVM_OK && T->nslot == 0)
+        return s; /* find_first's errors: nothing was built */
     finish(T);
     return s;
 }

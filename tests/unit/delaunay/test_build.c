@@ -88,6 +88,54 @@ START_TEST(cocircular_lattice_is_consistent_for_any_insertion_order)
 }
 END_TEST
 
+/* The same cocircular lattice with 300 exact copies of its points, shuffled so that copies come
+ * before their originals: the first of a group to be inserted depends on the seed, the
+ * triangles do not (each group's vertex takes the lowest index of the group in the
+ * perturbation). */
+START_TEST(duplicates_on_a_cocircular_lattice_are_consistent_for_any_seed)
+{
+    size_t k = 30, ng = k * k, nd = 300, n = ng + nd, i, nt0, nt;
+    double *g = lattice(k, 1.0, 0), *xy = malloc(2 * n * sizeof *xy);
+    double seeds[3] = {1, 3, 99};
+    uint64_t r = 777;
+    cvm_index *t0 = NULL, *t;
+    int s;
+    memcpy(xy, g, 2 * ng * sizeof *xy);
+    for (i = ng; i < n; i++) {
+        r ^= r << 13, r ^= r >> 7, r ^= r << 17;
+        memcpy(xy + 2 * i, g + 2 * (size_t)(r % ng), 2 * sizeof *xy);
+    }
+    for (i = n - 1; i > 0; i--) {
+        size_t j;
+        double tx, ty;
+        r ^= r << 13, r ^= r >> 7, r ^= r << 17;
+        j = (size_t)(r % (i + 1));
+        tx = xy[2 * i], ty = xy[2 * i + 1];
+        xy[2 * i] = xy[2 * j], xy[2 * i + 1] = xy[2 * j + 1];
+        xy[2 * j] = tx, xy[2 * j + 1] = ty;
+    }
+    for (s = 0; s < 3; s++) {
+        cvm_mesh *m = mesh_of(xy, n, seeds[s]);
+        t = dtest_triangles(m, &nt);
+        dtest_canonical(t, nt);
+        ck_assert_uint_eq(nt, 2 * (k - 1) * (k - 1));
+        if (s == 0) {
+            t0 = t;
+            nt0 = nt;
+        } else {
+            ck_assert_uint_eq(nt, nt0);
+            ck_assert_msg(memcmp(t, t0, 3 * nt * sizeof *t) == 0, "seed %g: other triangles",
+                          seeds[s]);
+            free(t);
+        }
+        cvm_mesh_free(m);
+    }
+    free(t0);
+    free(xy);
+    free(g);
+}
+END_TEST
+
 START_TEST(lattice_one_ulp_off_is_delaunay)
 {
     size_t k = 40, n = k * k, i;
@@ -299,6 +347,7 @@ TCase *delaunay_build_tcase(void)
     tcase_set_timeout(tc, 120);
     tcase_add_test(tc, random_points_are_delaunay);
     tcase_add_test(tc, cocircular_lattice_is_consistent_for_any_insertion_order);
+    tcase_add_test(tc, duplicates_on_a_cocircular_lattice_are_consistent_for_any_seed);
     tcase_add_test(tc, lattice_one_ulp_off_is_delaunay);
     tcase_add_test(tc, huge_and_tiny_scales);
     tcase_add_test(tc, points_on_a_line_then_one_off);

@@ -216,6 +216,67 @@ START_TEST(same_bytes_for_any_seed_and_scale)
 }
 END_TEST
 
+/* Exact duplicates, shuffled among a degenerate (co-spherical) grid: the first of a group to be
+ * inserted depends on the seed, yet the output is the same bytes for every seed, unweighted and
+ * weighted (each group's vertex takes the group's lowest input index in the perturbation). */
+START_TEST(duplicates_give_the_same_bytes_for_any_seed)
+{
+    size_t ng = 12 * 12 * 12, nd = 300, n = ng + nd, i, nt0 = 0, nt;
+    double *xyz = malloc(3 * n * sizeof *xyz), *w = malloc(n * sizeof *w);
+    uint64_t r = 12345;
+    static const uint64_t seeds[] = {1, 3, 99, 4242};
+    int weighted, k;
+    for (i = 0; i < ng; i++) {
+        xyz[3 * i] = 0.3 * (double)(i % 12);
+        xyz[3 * i + 1] = 0.7 * (double)((i / 12) % 12);
+        xyz[3 * i + 2] = 1.1 * (double)(i / 144);
+        w[i] = 0.01 * (double)(i % 3);
+    }
+    for (i = ng; i < n; i++) { /* copies of grid points, weight included */
+        size_t j;
+        r ^= r << 13, r ^= r >> 7, r ^= r << 17;
+        j = (size_t)(r % ng);
+        memcpy(xyz + 3 * i, xyz + 3 * j, 3 * sizeof *xyz);
+        w[i] = w[j];
+    }
+    for (i = n - 1; i > 0; i--) { /* shuffle, so copies come before their originals too */
+        size_t j;
+        double t[3], tw;
+        r ^= r << 13, r ^= r >> 7, r ^= r << 17;
+        j = (size_t)(r % (i + 1));
+        memcpy(t, xyz + 3 * i, sizeof t);
+        memcpy(xyz + 3 * i, xyz + 3 * j, sizeof t);
+        memcpy(xyz + 3 * j, t, sizeof t);
+        tw = w[i], w[i] = w[j], w[j] = tw;
+    }
+    for (weighted = 0; weighted < 2; weighted++) {
+        int32_t *first = NULL;
+        for (k = 0; k < 4; k++) {
+            cvm__ctx ctx;
+            cvm__tet3 T;
+            int32_t *t;
+            cvm__ctx_init_default(&ctx);
+            t = d3test_build(&T, &ctx, xyz, weighted ? w : NULL, n, seeds[k], &nt);
+            ck_assert_uint_eq(T.n_dup, nd);
+            cvm__tet3_free(&T);
+            if (k == 0) {
+                first = t;
+                nt0 = nt;
+                continue;
+            }
+            ck_assert_msg(nt == nt0, "seed %lu: %zu tetrahedra, seed 1: %zu",
+                          (unsigned long)seeds[k], nt, nt0);
+            ck_assert_msg(memcmp(first, t, 4 * nt * sizeof *t) == 0, "seed %lu: other tetrahedra",
+                          (unsigned long)seeds[k]);
+            free(t);
+        }
+        free(first);
+    }
+    free(xyz);
+    free(w);
+}
+END_TEST
+
 TCase *delaunay3_build_tcase(void)
 {
     TCase *tc = tcase_create("build3");
@@ -227,5 +288,6 @@ TCase *delaunay3_build_tcase(void)
     tcase_add_test(tc, points_on_a_sphere);
     tcase_add_test(tc, centre_of_a_sphere_has_the_whole_ball_as_cavity);
     tcase_add_test(tc, same_bytes_for_any_seed_and_scale);
+    tcase_add_test(tc, duplicates_give_the_same_bytes_for_any_seed);
     return tc;
 }
