@@ -8,6 +8,7 @@
 #include "cvmesh.h"
 #include "common/common_internal.h"
 #include "quad/matching.h"
+#include "quad/quad_internal.h"
 #include "support/failing_alloc.h"
 
 TCase *quad_matching_tcase(void);  /* lib/quad/matching*.c */
@@ -52,6 +53,10 @@ TCase *quad_quadmesh_tcase(void);  /* lib/api/quadmesh.c, cvm_mesh_quadmesh() */
 /* The boundary of the box [x0, x1] x [y0, y1] with n pieces a side, counter-clockwise from
  * (x0, y0), into xy (8 n values). */
 void qtest_box(double *xy, double x0, double y0, double x1, double y1, int n);
+/* A sizing *s holding the built-in metric b (not copied: it must outlive *s) and mt over the
+ * nc corners of the polygon corners; ctx initialised with the default allocator. */
+void qtest_metric(cvm_sizing **s, cvm__metric *mt, cvm__ctx *ctx, const cvm__metric_builtin *b,
+                  const double *corners, size_t nc);
 /* A deterministic uniform double in [0, 1) from *state (splitmix64). */
 double qtest_uniform(unsigned long long *state);
 

@@ -155,12 +155,7 @@ START_TEST(lpcvt_frontal_sites_reproduce_a_lattice)
     cvm_sizing *s;
     cvm__ctx ctx;
     cvm__metric mt;
-    cvm__ctx_init_default(&ctx);
-    ck_assert_int_eq(cvm_sizing_create(&s), CVM_OK);
-    cvm_sizing_set_metric_fn(s, cvm__metric_builtin_fn, 1, &b);
-    mt.s = s;
-    mt.bnd = corners;
-    mt.nbnd = 4;
+    qtest_metric(&s, &mt, &ctx, &b, corners, 4);
     ck_assert_int_eq(cvm__boundary_discretise(&bxy, &nb, &mt, corners, 4, &ctx), CVM_OK);
     ck_assert_int_eq(cvm__lpcvt_frontal_sites(&x1, &n1, &mt, bxy, nb, corners, 4, 1000, &ctx),
                      CVM_OK);

@@ -227,3 +227,14 @@ void qtest_ctx(cvm__ctx *ctx, cvmtest_alloc *a)
     ctx->free_fn = cvmtest_free;
     ctx->payload = a;
 }
+
+void qtest_metric(cvm_sizing **s, cvm__metric *mt, cvm__ctx *ctx, const cvm__metric_builtin *b,
+                  const double *corners, size_t nc)
+{
+    cvm__ctx_init_default(ctx);
+    ck_assert_int_eq(cvm_sizing_create(s), CVM_OK);
+    ck_assert_int_eq(cvm_sizing_set_metric_fn(*s, cvm__metric_builtin_fn, 1, (void *)b), CVM_OK);
+    mt->s = *s;
+    mt->bnd = corners;
+    mt->nbnd = nc;
+}
