@@ -24,6 +24,8 @@ Runs per case:
 
 CVM_BENCH_QUAD_FLAGS adds flags to the cvmesh command (e.g. "--mean-metric-voronoi 1");
 CVM_BENCH_QUAD_CASES=a,b runs only those cases.
+CVM_BENCH_QUAD_SVG=DIR also writes each mesh as DIR/CASE_MESHER.svg (quads blue, triangles red;
+optionally only the window CVM_BENCH_QUAD_SVG_WINDOW=x0,y0,x1,y1).
 
 The measure (one function for every mesh; nothing read from a mesher's own report):
   quads %          quads / cells, by count
@@ -315,6 +317,31 @@ def run_gmsh(gmsh, name, box, scale, algo):
     return xy, T, Q, t
 
 
+def write_svg(path, xy, T, Q, width=800):
+    """The cells as an SVG picture: quads light blue, triangles red, edges black."""
+    win = os.environ.get("CVM_BENCH_QUAD_SVG_WINDOW")
+    if win:
+        x0, y0, x1, y1 = (float(v) for v in win.split(","))
+    else:
+        (x0, y0), (x1, y1) = xy.min(axis=0), xy.max(axis=0)
+    sc = width / (x1 - x0)
+    height = int((y1 - y0) * sc) + 1
+    out = ['<svg xmlns="http://www.w3.org/2000/svg" width="%d" height="%d">' % (width, height),
+           '<rect width="100%" height="100%" fill="white"/>']
+    for cells, fill in ((Q, "#cfe0f0"), (T, "#f08a8a")):
+        for c in cells:
+            P = xy[c]
+            if (P[:, 0].max() < x0 or P[:, 0].min() > x1 or P[:, 1].max() < y0
+                    or P[:, 1].min() > y1):
+                continue
+            pts = " ".join("%.2f,%.2f" % ((x - x0) * sc, (y1 - y) * sc) for x, y in P)
+            out.append('<polygon points="%s" fill="%s" stroke="black" stroke-width="0.4"/>'
+                       % (pts, fill))
+    out.append("</svg>")
+    with open(path, "w") as f:
+        f.write("\n".join(out))
+
+
 def main():
     try:
         if os.environ.get("CVM_BENCH_NO_GMSH"):
@@ -352,6 +379,9 @@ def main():
                         continue
                     runs.append((label, xy, T, Q, t))
             for label, xy, T, Q, t in runs:
+                if os.environ.get("CVM_BENCH_QUAD_SVG"):
+                    write_svg(os.path.join(os.environ["CVM_BENCH_QUAD_SVG"],
+                                           "%s_%s.svg" % (name, label)), xy, T, Q)
                 r = measure(name, scale, xy, T, Q)
                 row = "%-9s %-10s %9.4g %7d %7.1f %7.1f %7.1f %7.1f %7.1f %8.1f %8.2f  %s" % (
                     name, label, scale, r["vertices"], r["quads_pct"], r["dev_mean"],
