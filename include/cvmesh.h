@@ -2224,10 +2224,12 @@ CVM_API cvm_status cvm_mesh_view_points_nd(const double **ptr_out, size_t *count
  * marker as physical groups, named from the marker names (see "Marker
  * names")), .node (writes PREFIX.node, PREFIX.ele and
  * PREFIX.edge beside each other, 0-based), .svg (a picture).
- * A 3D mesh: .vtu (VTK_TETRA cells, cell data "attribute" with regions), .msh
- * (Gmsh 4.1: tetrahedra in one volume per regional attribute, boundary
- * triangles in one surface per marker, physical group m "marker_m" for m > 0),
- * .node (TetGen's PREFIX.node, PREFIX.ele and PREFIX.face, 0-based); not .svg.
+ * A 3D mesh: .vtu (VTK_TETRA cells, cell data "attribute" with regions, and
+ * point data "weight" when the mesh has power weights), .msh (Gmsh 4.1:
+ * tetrahedra in one volume per regional attribute, boundary triangles in one
+ * surface per marker, physical group m "marker_m" for m > 0), .node (TetGen's
+ * PREFIX.node, PREFIX.ele and PREFIX.face, 0-based; the weight, when set, as the
+ * one point attribute, where TetGen's -w reads it); not .svg.
  * Every file is written to a temporary name and renamed, so a failure never
  * leaves a partial file; the three files of .node replace their old versions
  * together (cvm_mesh_commit_writes()). A replaced file keeps its permissions

@@ -92,6 +92,7 @@ cvm_status cvm__mesh3_write_to_set(cvm_mesh *m, const char *path, cvm__write_set
     memset(&mo, 0, sizeof mo);
     mo.xyz = g->xyz;
     mo.nv = g->nv;
+    mo.w = g->w;
     mo.tet = g->tet;
     mo.ntet = g->ntet;
     mo.tattr = g->tattr;

@@ -304,6 +304,7 @@ typedef struct cvm__mesh3_cells {
 typedef struct cvm__mesh3_out {
     const double *xyz;    /* 3*nv */
     size_t nv;
+    const double *w;      /* nv or NULL: power weights (.vtu point data "weight", .node attribute) */
     const int32_t *tet;   /* 4*ntet, positively oriented */
     size_t ntet;
     const double *tattr;  /* ntet or NULL: regional attribute */

@@ -1,10 +1,11 @@
 /*
  * write_mesh3.c - writes a tetrahedral mesh: VTK XML UnstructuredGrid (.vtu,
- * VTK_TETRA cells, cell data "attribute" with regions; or merged cells as
- * VTK_POLYHEDRON), Gmsh MSH 4.1 (.msh:
+ * VTK_TETRA cells, cell data "attribute" with regions, point data "weight"
+ * when weighted; or merged cells as VTK_POLYHEDRON), Gmsh MSH 4.1 (.msh:
  * tetrahedra, type 4, in one volume per regional attribute; boundary
  * triangles, type 2, on one surface per face marker, physical group m
- * "marker_m" when m > 0), and TetGen's .node/.ele/.face (0-based). All ASCII,
+ * "marker_m" when m > 0), and TetGen's .node/.ele/.face (0-based; the weight
+ * as the point attribute). All ASCII,
  * doubles in the shortest form that reads back exactly.
  */
 #include <stdio.h>
@@ -79,6 +80,15 @@ static void vtu(cvm__writer *w, const cvm__mesh3_out *mo)
                         "  <UnstructuredGrid>\n");
     cvm__writer_printf(w, "    <Piece NumberOfPoints=\"%lu\" NumberOfCells=\"%lu\">\n",
                        (unsigned long)mo->nv, (unsigned long)(mo->cells ? mo->cells->ncell : mo->ntet));
+    if (mo->w) { /* the power weights: what the dual cells need besides the points */
+        cvm__writer_puts(w, "      <PointData Scalars=\"weight\">\n"
+                            "        <DataArray type=\"Float64\" Name=\"weight\" format=\"ascii\">\n");
+        for (i = 0; i < mo->nv; i++) {
+            cvm__writer_double(w, mo->w[i]);
+            cvm__writer_putc(w, '\n');
+        }
+        cvm__writer_puts(w, "        </DataArray>\n      </PointData>\n");
+    }
     cvm__writer_puts(w, "      <Points>\n        <DataArray type=\"Float64\" NumberOfComponents=\"3\" "
                         "format=\"ascii\">\n");
     for (i = 0; i < mo->nv; i++) {
@@ -276,7 +286,8 @@ static cvm_status msh(cvm__writer *w, cvm__ctx *ctx, const cvm__mesh3_out *mo)
 static void tet_node(cvm__writer *w, const cvm__mesh3_out *mo)
 {
     size_t i;
-    cvm__writer_printf(w, "%lu 3 0 0\n", (unsigned long)mo->nv);
+    /* the weight as the one point attribute, where TetGen's -w reads it */
+    cvm__writer_printf(w, "%lu 3 %d 0\n", (unsigned long)mo->nv, mo->w ? 1 : 0);
     for (i = 0; i < mo->nv; i++) {
         cvm__writer_printf(w, "%lu ", (unsigned long)i);
         cvm__writer_double(w, mo->xyz[3 * i]);
@@ -284,6 +295,10 @@ static void tet_node(cvm__writer *w, const cvm__mesh3_out *mo)
         cvm__writer_double(w, mo->xyz[3 * i + 1]);
         cvm__writer_putc(w, ' ');
         cvm__writer_double(w, mo->xyz[3 * i + 2]);
+        if (mo->w) {
+            cvm__writer_putc(w, ' ');
+            cvm__writer_double(w, mo->w[i]);
+        }
         cvm__writer_putc(w, '\n');
     }
 }

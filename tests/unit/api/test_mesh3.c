@@ -403,6 +403,24 @@ START_TEST(files_are_written_in_each_format)
     free(text);
     snprintf(path, sizeof path, "%s/t.svg", dir);
     ck_assert_int_eq(cvm_mesh_write(m, path), CVM_E_UNSUPPORTED);
+    { /* a weighted mesh carries its weights: .vtu point data, .node attribute */
+        double w[100];
+        size_t i;
+        for (i = 0; i < n; i++)
+            w[i] = 0.25 * (double)(i % 4) * 1e-3;
+        ck_assert_int_eq(cvm_mesh_set_weights(m, w, n), CVM_OK);
+        snprintf(path, sizeof path, "%s/w.vtu", dir);
+        ck_assert_int_eq(cvm_mesh_write(m, path), CVM_OK);
+        text = iotest_slurp(path, NULL);
+        ck_assert_ptr_nonnull(strstr(text, "<PointData Scalars=\"weight\">"));
+        ck_assert_ptr_nonnull(strstr(text, "\n0.00075\n"));
+        free(text);
+        snprintf(path, sizeof path, "%s/w.node", dir);
+        ck_assert_int_eq(cvm_mesh_write(m, path), CVM_OK);
+        text = iotest_slurp(path, NULL);
+        ck_assert_msg(strncmp(text, "100 3 1 0\n", 10) == 0, "%.40s", text);
+        free(text);
+    }
     cvm_mesh_free(m);
     iotest_rmdir(dir);
     free(dir);
