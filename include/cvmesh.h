@@ -958,8 +958,7 @@ typedef enum cvm_option {
      *  metric of each site over its whole cell (every integral exact, a C^1 energy, about
      *  half the time). Integer, bounds [0, 1]. @since 0.2 */
     CVM_OPT_QUAD_CELLWISE_METRIC = 807,
-    /** Escapes from a local minimum after convergence, integer, default 0 (8 before the
-     *  frontal start of CVM_OPT_QUAD_INITIAL_SITES, which made them pay no more), bounds
+    /** Escapes from a local minimum after convergence, integer, default 0, bounds
      *  [0, 64]: the site of least cell energy moves into the cell of most energy and the
      *  sites are optimised again; kept only when E drops. @since 0.2 */
     CVM_OPT_QUAD_RELOCATIONS = 808,

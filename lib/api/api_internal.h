@@ -180,6 +180,10 @@ cvm_status cvm__cdt_fault_message(cvm__ctx *ctx, const cvm__pslg *in, cvm_status
  * hull) as the engine's triangulation input (lib/api/cdt_input.c); out
  * borrows p's arrays. */
 void cvm__mesh_cdt_input(cvm__cdt_input *out, const cvm_mesh *m, const cvm__pslg *p);
+/* cvm__cdt_build() of in into m's store, the input map, duplicate count, vertex markers and
+ * attributes it makes handed to m also on failure (lib/api/cdt_input.c). The engine's status;
+ * its fault in *f, for cvm__cdt_fault_message(). */
+cvm_status cvm__mesh_cdt_build(cvm_mesh *m, const cvm__cdt_input *in, cvm__cdt_fault *f);
 
 /* Forget the quad cells and report of cvm_mesh_quadmesh() (quadmesh.c); a no-op without. */
 void cvm__mesh_forget_quads(cvm_mesh *m);

@@ -1,6 +1,10 @@
-/* cdt_input.c - a mesh handle's input and options as the CDT engine's input, and the engine's
- * input faults as messages naming the items in the user's terms. */
+/* cdt_input.c - a mesh handle's input and options as the CDT engine's input, the build that
+ * hands the engine's outputs back to the handle, and the engine's input faults as messages
+ * naming the items in the user's terms. */
+#include <string.h>
+
 #include "api_internal.h"
+#include "store.h"
 
 /* Number naming input point i of in in messages (i in range). */
 static long long in_point_num(const cvm__pslg *in, size_t i)
@@ -92,4 +96,25 @@ void cvm__mesh_cdt_input(cvm__cdt_input *out, const cvm_mesh *m, const cvm__pslg
     out->reject_duplicates = cvm__opt(m, CVM_OPT_REJECT_DUPLICATES) != 0;
     out->split = cvm__opt(m, CVM_OPT_SPLIT_INTERSECTIONS) != 0;
     out->keep_hull = cvm__opt(m, CVM_OPT_KEEP_CONVEX_HULL) != 0;
+}
+
+cvm_status cvm__mesh_cdt_build(cvm_mesh *m, const cvm__cdt_input *in, cvm__cdt_fault *f)
+{
+    cvm__cdt_out out;
+    cvm_status s;
+    memset(f, 0, sizeof *f);
+    out.input_map = m->input_map;
+    out.n_dup = m->n_dup;
+    out.vmark = m->vmark;
+    out.vattr = m->vattr;
+    out.cap_vmark = m->cap_vmark;
+    out.cap_vattr = m->cap_vattr;
+    s = cvm__cdt_build(cvm__store_tri2(m), in, &out, f);
+    m->input_map = out.input_map;
+    m->n_dup = out.n_dup;
+    m->vmark = out.vmark;
+    m->vattr = out.vattr;
+    m->cap_vmark = out.cap_vmark;
+    m->cap_vattr = out.cap_vattr;
+    return s;
 }

@@ -26,7 +26,6 @@ cvm_status cvm__qm_triangulate_sites(cvm_mesh *m, const int32_t *loop, const int
     int32_t *v2in = NULL, *seg = NULL, *smark = NULL, *pmark = NULL, *bid = NULL, *pseg = NULL;
     double *xy = NULL, *pattr = NULL;
     cvm__cdt_input in;
-    cvm__cdt_out out;
     cvm__cdt_fault f;
     cvm_status s;
     total = np + nb + ni;
@@ -122,19 +121,7 @@ cvm_status cvm__qm_triangulate_sites(cvm_mesh *m, const int32_t *loop, const int
     in.reject_duplicates = 0;
     in.keep_hull = 0;
     cvm__mesh_drop_output(m);
-    memset(&out, 0, sizeof out);
-    memset(&f, 0, sizeof f);
-    out.vmark = m->vmark;
-    out.vattr = m->vattr;
-    out.cap_vmark = m->cap_vmark;
-    out.cap_vattr = m->cap_vattr;
-    s = cvm__cdt_build(cvm__store_tri2(m), &in, &out, &f);
-    m->input_map = out.input_map;
-    m->n_dup = out.n_dup;
-    m->vmark = out.vmark;
-    m->vattr = out.vattr;
-    m->cap_vmark = out.cap_vmark;
-    m->cap_vattr = out.cap_vattr;
+    s = cvm__mesh_cdt_build(m, &in, &f);
     if (!s) /* the pieces name the input segments they lie on */
         cvm__store_remap_segments(m, pseg, nb);
     if (s)

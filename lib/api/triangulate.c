@@ -51,25 +51,12 @@ cvm_status cvm__mesh_carve(cvm_mesh *m)
 static cvm_status triangulate(cvm_mesh *m)
 {
     cvm__cdt_input in;
-    cvm__cdt_out out;
     cvm__cdt_fault f;
     cvm_status s;
     if ((s = check_segments(m)))
         return s;
     cvm__mesh_cdt_input(&in, m, &m->in);
-    out.input_map = m->input_map;
-    out.n_dup = m->n_dup;
-    out.vmark = m->vmark;
-    out.vattr = m->vattr;
-    out.cap_vmark = m->cap_vmark;
-    out.cap_vattr = m->cap_vattr;
-    s = cvm__cdt_build(cvm__store_tri2(m), &in, &out, &f);
-    m->input_map = out.input_map;
-    m->n_dup = out.n_dup;
-    m->vmark = out.vmark;
-    m->vattr = out.vattr;
-    m->cap_vmark = out.cap_vmark;
-    m->cap_vattr = out.cap_vattr;
+    s = cvm__mesh_cdt_build(m, &in, &f);
     return s ? cvm__cdt_fault_message(&m->ctx, &m->in, s, &f) : CVM_OK;
 }
 

@@ -187,6 +187,7 @@ cvm_status cvm__lpcvt_frontal_sites(double **xi_out, size_t *ni_out, const cvm__
     double hi[2], A, rmax, area = 0;
     size_t k, q, ncell, nq = 0, qcap;
     int32_t *qu = NULL;
+    uint8_t *aligned = NULL;
     int phase;
     cvm_status st;
     *xi_out = NULL;
@@ -230,13 +231,14 @@ cvm_status cvm__lpcvt_frontal_sites(double **xi_out, size_t *ni_out, const cvm__
      * the lattice grows along the frame field instead of copying the boundary's direction
      * where the two disagree; then from the other boundary sites, into what is left */
     qcap = 0;
-    if (cvm__grow(ctx, (void **)&qu, &qcap, nb + 1, sizeof *qu)) {
+    aligned = cvm__malloc(ctx, nb + 1);
+    if (!st && (!aligned || cvm__grow(ctx, (void **)&qu, &qcap, nb + 1, sizeof *qu)))
         st = cvm__nomem(ctx);
-    }
     for (k = 0; k < nb && !st; k++) {
         int al;
         if ((st = fs_aligned(&S, bxy, nb, k, &al)))
             break;
+        aligned[k] = (uint8_t)al;
         if (al)
             qu[nq++] = (int32_t)k;
     }
@@ -249,12 +251,11 @@ cvm_status cvm__lpcvt_frontal_sites(double **xi_out, size_t *ni_out, const cvm__
                 break;
             phase = 1; /* the boundary sites not taken yet */
             for (k = 0; k < nb && !st; k++) {
-                int al;
-                if ((st = fs_aligned(&S, bxy, nb, k, &al)))
-                    break;
-                if (!al && cvm__grow(ctx, (void **)&qu, &qcap, nq + 1, sizeof *qu))
+                if (aligned[k])
+                    continue;
+                if (cvm__grow(ctx, (void **)&qu, &qcap, nq + 1, sizeof *qu))
                     st = cvm__nomem(ctx);
-                else if (!al)
+                else
                     qu[nq++] = (int32_t)k;
             }
             if (st || q == nq)
@@ -287,6 +288,7 @@ cvm_status cvm__lpcvt_frontal_sites(double **xi_out, size_t *ni_out, const cvm__
         }
     }
     cvm__free(ctx, qu);
+    cvm__free(ctx, aligned);
     cvm__free(ctx, S.head);
     cvm__free(ctx, S.next);
     if (st) {
