@@ -8,13 +8,23 @@ Rows: uniform random points in the unit cube (1e5 and CVM_BENCH3_N, default
 (default 40: about 1.3e5 points); then the large rows, one run each
 (CVM_BENCH3_BIG=0 leaves them out): 1e7 uniform points and the exact and
 perturbed 100^3 lattices (about 2e6 points).
-Gmsh (the gmsh wheel from PyPI) runs gmsh.algorithm.tetrahedralize, its API
-call for the tetrahedralisation of a point set, with General.NumThreads 1 and
-2, up to CVM_BENCH3_GMSH_MAX points (default 2e6): wall seconds of the call in
-a child process, the conversion of its arguments included; gmsh1/gmsh2 =
-cvmesh's wall time over Gmsh's. This call is not HXT (Mesh.Algorithm3D 10
-meshes volumes bounded by surfaces, not bare point sets), and its tetrahedra
-differ in number from the Delaunay tetrahedralisation's (a line says so).
+Gmsh (the gmsh wheel from PyPI) runs HXT (Marot, Pellerin and Remacle) two ways,
+with General.NumThreads 1 and 2:
+- wall_g1/wall_g2: gmsh.algorithm.tetrahedralize, Gmsh's API call for the
+  tetrahedralisation of a point set (it calls HXT's hxtDelaunaySteadyVertices,
+  as Gmsh's log line "Tetrahedrizing N nodes" shows, then makes one Gmsh object
+  per tetrahedron), up to CVM_BENCH3_GMSH_MAX points (default 2e6): wall
+  seconds of the call in a child process, the conversion of its arguments
+  included; gmsh1/gmsh2 = cvmesh's wall time over it. Its tetrahedra differ in
+  number from the Delaunay tetrahedralisation's (it drops those on a bounding
+  box it adds; a line says so).
+- hxt1/hxt2: HXT's own timer of its Delaunay stage ("tEmptyMesh" in Gmsh's log
+  at verbosity 99) when Gmsh meshes a box with Mesh.Algorithm3D = 10 and the
+  points embedded in it (the 8 corners and 12 triangles of the box added): the
+  bare insertion, without reading the points in or writing tetrahedra out,
+  which is the strictest time to compare with; hx_r1/hx_r2 = cvmesh's build
+  (cpu of "build", one core) over it. Up to CVM_BENCH3_HXT_MAX points (default
+  1e6; setting the points up through the API takes about 25 s per 1e6).
 CVM_BENCH_NO_GMSH=1 leaves it out.
 Each timing is the median of CVM_BENCH3_REPS runs (default 3) of the build
 and its output arrays; both wall and process CPU seconds are given, because on
@@ -35,6 +45,7 @@ REPS = int(os.environ.get("CVM_BENCH3_REPS", "3"))
 QHULL_MAX = int(float(os.environ.get("CVM_BENCH3_QHULL_MAX", "2e5")))
 BIG = os.environ.get("CVM_BENCH3_BIG", "1") != "0"
 GMSH_MAX = int(float(os.environ.get("CVM_BENCH3_GMSH_MAX", "2e6")))
+HXT_MAX = int(float(os.environ.get("CVM_BENCH3_HXT_MAX", "1e6")))
 NO_GMSH = os.environ.get("CVM_BENCH_NO_GMSH", "0") == "1"
 CVM = os.path.join(BUILD, "bench", "bench_delaunay3")
 TETGEN = os.path.join(BUILD, "bench", "bench_tetgen3")
@@ -89,6 +100,41 @@ def gmsh_time(pts, threads):
     return float(w), int(n)
 
 
+def hxt_core_time(pts, threads):
+    """HXT's own wall seconds for the Delaunay tetrahedralisation of the points
+    embedded in a box (Gmsh's tEmptyMesh timer), in a child process."""
+    code = ("import sys, numpy as np, gmsh\n"
+            "p = np.fromfile(sys.argv[1]).reshape(-1, 3)\n"
+            "gmsh.initialize(['-noenv'])\n"
+            "gmsh.option.setNumber('General.Terminal', 1)\n"
+            "gmsh.option.setNumber('General.Verbosity', 99)\n"
+            "gmsh.option.setNumber('General.NumThreads', %d)\n"
+            "gmsh.option.setNumber('Mesh.MaxNumThreads3D', %d)\n"
+            "gmsh.option.setNumber('Mesh.Algorithm3D', 10)\n"
+            "gmsh.option.setNumber('Mesh.Optimize', 0)\n"
+            "lo = p.min(0); hi = p.max(0); e = 1e-3 * (hi - lo).max()\n"
+            "big = 10 * (hi - lo).max()\n"
+            "for k in ('Mesh.MeshSizeMin', 'Mesh.MeshSizeMax'): gmsh.option.setNumber(k, big)\n"
+            "gmsh.option.setNumber('Mesh.MeshSizeFromPoints', 0)\n"
+            "gmsh.option.setNumber('Mesh.MeshSizeExtendFromBoundary', 0)\n"
+            "gmsh.model.add('b')\n"
+            "b = gmsh.model.occ.addBox(*(lo - e), *(hi - lo + 2 * e))\n"
+            "gmsh.model.occ.synchronize()\n"
+            "tags = []\n"
+            "for i in range(len(p)):\n"
+            "    t = gmsh.model.addDiscreteEntity(0, 100 + i)\n"
+            "    gmsh.model.mesh.addNodes(0, t, [], p[i].tolist())\n"
+            "    tags.append(t)\n"
+            "gmsh.model.mesh.embed(0, tags, 3, b)\n"
+            "gmsh.model.mesh.generate(3)\n"
+            "gmsh.finalize()\n" % (threads, threads))
+    r = subprocess.run([sys.executable, "-c", code, pts], capture_output=True, text=True)
+    for line in (r.stdout + r.stderr).splitlines():
+        if "tEmptyMesh" in line:
+            return float(line.split("=")[-1])
+    return None
+
+
 def have_gmsh():
     if NO_GMSH:
         return False
@@ -122,9 +168,9 @@ def main():
         print("# TetGen driver not built (no /usr/include/tetgen.h or no C++ compiler): its columns are -")
     if not use_gmsh:
         print("# gmsh not importable (or CVM_BENCH_NO_GMSH=1): its columns are -")
-    print("%-20s %8s %4s %8s %8s %8s %8s %8s %8s %8s %8s %8s %8s %8s %8s %9s %9s %7s %7s" % (
+    print("%-20s %8s %4s %8s %8s %8s %8s %8s %8s %8s %8s %8s %8s %8s %8s %8s %8s %8s %8s %9s %9s %7s %7s" % (
         "case", "n", "reps", "cpu_cvm", "cpu_tg", "ratio", "build", "b_ratio", "wall_cvm",
-        "wall_tg", "wall_g1", "gmsh1", "wall_g2", "gmsh2", "cpu_qh", "tets_cvm", "tets_tg",
+        "wall_tg", "wall_g1", "gmsh1", "wall_g2", "gmsh2", "hxt1", "hx_r1", "hxt2", "hx_r2", "cpu_qh", "tets_cvm", "tets_tg",
         "B/t_cvm", "B/t_tg"))
     for name, pts, reps in cases():
         pts = np.ascontiguousarray(pts, dtype=np.float64)
@@ -134,14 +180,17 @@ def main():
         t = run(TETGEN, path, reps) if have_tetgen else None
         g1 = gmsh_time(path, 1) if use_gmsh and len(pts) <= GMSH_MAX else None
         g2 = gmsh_time(path, 2) if use_gmsh and len(pts) <= GMSH_MAX else None
+        h1 = hxt_core_time(path, 1) if use_gmsh and len(pts) <= HXT_MAX else None
+        h2 = hxt_core_time(path, 2) if use_gmsh and len(pts) <= HXT_MAX else None
         q = qhull_time(pts) if len(pts) <= QHULL_MAX else None
         fmt = lambda x, f="%8.3f": (f % x) if x is not None else "%8s" % "-"
-        print("%-20s %8d %4d %s %s %s %s %s %s %s %s %s %s %s %s %9d %9s %7.0f %7s" % (
+        print("%-20s %8d %4d %s %s %s %s %s %s %s %s %s %s %s %s %s %s %s %s %9d %9s %7.0f %7s" % (
             name, len(pts), reps, fmt(c["cpu"]), fmt(t and t["cpu"]),
             fmt(t and c["cpu"] / t["cpu"]), fmt(c["cpu_build"]),
             fmt(t and c["cpu_build"] / t["cpu"]), fmt(c["wall"]), fmt(t and t["wall"]),
             fmt(g1 and g1[0]), fmt(g1 and c["wall"] / g1[0]),
             fmt(g2 and g2[0]), fmt(g2 and c["wall"] / g2[0]),
+            fmt(h1), fmt(h1 and c["cpu_build"] / h1), fmt(h2), fmt(h2 and c["cpu_build"] / h2),
             fmt(q and q[0]), c["tets"],
             t["tets"] if t else "-", c["peak_bytes"] / c["tets"],
             ("%7.0f" % (t["peak_bytes"] / t["tets"])) if t else "-"), flush=True)
