@@ -39,11 +39,10 @@ static cvm_status check_call(cvm_mesh *m, double size)
         return cvm__error(&m->ctx, CVM_E_UNSUPPORTED, CVM_ENT_OPTION, CVM_OPT_GEN3_LAYERS,
                           "CVM_OPT_GEN3_LAYERS = %g is unsupported: only one near-field layer is implemented "
                           "in this version", layers);
-    if (fs != CVM_GEN3_FREESPACE_LATTICE)
+    if (fs == CVM_GEN3_FREESPACE_REFINE)
         return cvm__error(&m->ctx, CVM_E_UNSUPPORTED, CVM_ENT_OPTION, CVM_OPT_GEN3_FREESPACE,
-                          "CVM_OPT_GEN3_FREESPACE = %g (%s) is unsupported: only the lattice (0) is implemented "
-                          "in this version", fs, fs == CVM_GEN3_FREESPACE_OCTREE ? "octree"
-                                                                                  : "refine");
+                          "CVM_OPT_GEN3_FREESPACE = %g (refine) is unsupported: the lattice (0) and "
+                          "the octree (1) are implemented in this version", fs);
     return CVM_OK;
 }
 
@@ -130,6 +129,9 @@ static cvm_status generate(cvm_mesh *m, double size, const cvm_sizing *sizing)
     p.follow_surface = cvm__opt(m, CVM_OPT_GEN3_SIZE_FROM_SURFACE) != 0;
     p.layers = 1;
     p.sizing = sizing;
+    p.freespace = (int)cvm__opt(m, CVM_OPT_GEN3_FREESPACE);
+    p.octree_balance = 6; /* 26 measured no better: see g3_octree.c */
+    p.refine_max = 0;
     if (sizing && sizing->bgrad > 0) {
         /* min(l + g1 d, l + g2 d) = l + min(g1, g2) d: one field, the smaller slope */
         p.grading = p.follow_surface && p.grading < sizing->bgrad ? p.grading : sizing->bgrad;
@@ -222,6 +224,8 @@ static cvm_status generate(cvm_mesh *m, double size, const cvm_sizing *sizing)
     g->gen3[17] = rm_count[0];
     g->gen3[18] = rm_count[1];
     g->gen3[19] = rm_count[2];
+    g->gen3[21] = (double)rep.octree_leaves;
+    g->gen3[22] = (double)rep.octree_points;
     return s;
 }
 

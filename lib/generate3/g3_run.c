@@ -38,7 +38,9 @@ cvm_status cvm__g3_generate(cvm__ctx *ctx, const cvm__g3_surface *s, const cvm__
         if ((st = cvm__g3_recover(ctx, s, &Q, seed, rep, bad_face)) == CVM_E_UNSUPPORTED)
             rep->surface_not_delaunay = 1;
     }
-    if (!st)
+    if (!st && p->freespace == CVM_GEN3_FREESPACE_OCTREE)
+        st = cvm__g3_octree(ctx, s, z, p->h, p->octree_balance, in, &P, rep);
+    else if (!st)
         st = cvm__g3_lattice(ctx, s, z, p->h, in, &P, rep);
     if (!st && check_faces)
         st = cvm__g3_recover(ctx, s, &P, seed, rep, bad_face);

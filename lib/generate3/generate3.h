@@ -55,6 +55,9 @@ typedef struct cvm__g3_params {
     int follow_surface; /* 1: size from the surface's triangles; 0: uniform h */
     int layers;         /* near-field layers; only 1 in this version */
     const cvm_sizing *sizing; /* NULL, or a 3D sizing (cvm__sizing_check3 passed) */
+    int freespace;      /* CVM_GEN3_FREESPACE_*: lattice, octree or Delaunay refinement */
+    int octree_balance; /* 6: 2:1 across faces; 26: across faces, edges and corners */
+    size_t refine_max;  /* refinement: at most this many points inserted (0: no limit) */
 } cvm__g3_params;
 
 typedef struct cvm__g3_report {
@@ -67,6 +70,10 @@ typedef struct cvm__g3_report {
     size_t lattice_levels;  /* lattice levels that contributed a point */
     size_t recovery_dropped; /* generated points removed so that every surface triangle is
                                 a face of the Delaunay tetrahedralisation */
+    size_t octree_leaves;   /* leaves of the balanced octree (free space octree) */
+    size_t octree_points;   /* octree centroids kept */
+    size_t refine_points;   /* circumcentres inserted (free space refine) */
+    size_t refine_rounds;   /* rounds of refinement run */
     int surface_not_delaunay; /* check_faces: the surface's own points already miss a triangle */
 } cvm__g3_report;
 
@@ -133,6 +140,16 @@ cvm_status cvm__g3_lattice(cvm__ctx *ctx, const cvm__g3_surface *s, const cvm__g
 /* The rejection distance of a lattice point of size hs: 0.55 hs (chosen by
  * measurement, see g3_lattice.c). */
 double cvm__g3_lattice_dm(double hs);
+
+/* ---- g3_octree.c ---- */
+/* Append the free-space octree's centroids to P (see g3_octree.c): the
+ * surface's bounding cube split while an octant's edge exceeds the size at
+ * its centre, 2:1-balanced across faces (balance 6) or faces, edges and
+ * corners (26); a leaf's centroid kept as a lattice point is. CVM_E_TOO_LARGE
+ * past CVM__T3_MAX_POINTS, CVM_E_NOMEM, or a sizing callback's status. */
+cvm_status cvm__g3_octree(cvm__ctx *ctx, const cvm__g3_surface *s, const cvm__g3_size *z,
+                          double h, int balance, const cvm__g3_inside *in, cvm__g3_points *P,
+                          cvm__g3_report *rep);
 
 /* ---- g3_recover.c ---- */
 /* Remove generated points (P beyond the first s->np) until every surface
