@@ -3320,6 +3320,9 @@ typedef enum cvm_measure {
     CVM_MEASURE_GEN3_OCTREE_LEAVES = 761,   /**< leaves of the balanced octree
                                                  (CVM_GEN3_FREESPACE_OCTREE; else 0) */
     CVM_MEASURE_GEN3_OCTREE_POINTS = 762,   /**< octree centroids placed (else 0) */
+    CVM_MEASURE_GEN3_REFINE_POINTS = 763,   /**< circumcentres placed by the Delaunay-refinement
+                                                 free space (CVM_GEN3_FREESPACE_REFINE; else 0) */
+    CVM_MEASURE_GEN3_REFINE_ROUNDS = 764,   /**< its rounds that had candidates (else 0) */
     /* ---- 800-899: the quad measures are reports of the last cvm_mesh_quadmesh() (the
      * metric is not kept with the mesh): cvm_mesh_get_measure() accepts the
      * CVM_REPORT_QUAD_* values (800-821) and gives the same numbers ---- */
@@ -3448,6 +3451,9 @@ typedef enum cvm_report {
     /* the last cvm_mesh_generate3() again: its octree (CVM_GEN3_FREESPACE_OCTREE) */
     CVM_REPORT_GEN3_OCTREE_LEAVES = 761,      /**< = CVM_MEASURE_GEN3_OCTREE_LEAVES @since 0.2 */
     CVM_REPORT_GEN3_OCTREE_POINTS = 762,      /**< = CVM_MEASURE_GEN3_OCTREE_POINTS @since 0.2 */
+    /* ... and its Delaunay refinement (CVM_GEN3_FREESPACE_REFINE) */
+    CVM_REPORT_GEN3_REFINE_POINTS = 763,      /**< = CVM_MEASURE_GEN3_REFINE_POINTS @since 0.2 */
+    CVM_REPORT_GEN3_REFINE_ROUNDS = 764,      /**< = CVM_MEASURE_GEN3_REFINE_ROUNDS @since 0.2 */
     /* the last cvm_mesh_quadmesh() (0 before any, and after any call that drops the quads).
        Corner angles and edge lengths are measured in the metric: a corner's angle with g at
        its quad's centroid, an edge's metric length sqrt(e^T g e) with g at its midpoint. */

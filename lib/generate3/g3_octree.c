@@ -38,7 +38,6 @@
 
 #include "delaunay3/delaunay3_internal.h"
 #include "generate3/generate3.h"
-#include "geom/measure3.h"
 
 #define OCT_MAX_LEVEL 19 /* 19 index bits per axis and 5 for the level fit a key */
 #define OCT_AXIS_BITS 19
@@ -211,54 +210,6 @@ static cvm_status balance_leaf(oct_tree *T, size_t v, int balance)
     return CVM_OK;
 }
 
-/* The squared distance from p to triangle abc (closest point by region,
- * Ericson's "Real-Time Collision Detection" 5.1.5). */
-static double oct_tri_dist2(const double *p, const double *a, const double *b, const double *c)
-{
-    double ab[3], ac[3], ap[3], bp[3], cp[3], q[3], d1 = 0, d2 = 0, d3 = 0, d4 = 0, d5 = 0,
-                                                       d6 = 0, va, vb, vc, v, w, den;
-    int k;
-    for (k = 0; k < 3; k++) {
-        ab[k] = b[k] - a[k];
-        ac[k] = c[k] - a[k];
-        ap[k] = p[k] - a[k];
-        bp[k] = p[k] - b[k];
-        cp[k] = p[k] - c[k];
-        d1 += ab[k] * ap[k];
-        d2 += ac[k] * ap[k];
-        d3 += ab[k] * bp[k];
-        d4 += ac[k] * bp[k];
-        d5 += ab[k] * cp[k];
-        d6 += ac[k] * cp[k];
-    }
-    vc = d1 * d4 - d3 * d2;
-    vb = d5 * d2 - d1 * d6;
-    va = d3 * d6 - d5 * d4;
-    if (d1 <= 0 && d2 <= 0)
-        v = 0, w = 0;
-    else if (d3 >= 0 && d4 <= d3)
-        v = 1, w = 0;
-    else if (d6 >= 0 && d5 <= d6)
-        v = 0, w = 1;
-    else if (vc <= 0 && d1 >= 0 && d3 <= 0)
-        v = d1 / (d1 - d3), w = 0;
-    else if (vb <= 0 && d2 >= 0 && d6 <= 0)
-        v = 0, w = d2 / (d2 - d6);
-    else if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0) {
-        w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
-        v = 1 - w;
-    } else {
-        den = va + vb + vc;
-        if (!(den > 0))
-            return cvm__dist2_3(p, a); /* a degenerate triangle: near enough */
-        v = vb / den;
-        w = vc / den;
-    }
-    for (k = 0; k < 3; k++)
-        q[k] = a[k] + v * ab[k] + w * ac[k] - p[k];
-    return q[0] * q[0] + q[1] * q[1] + q[2] * q[2];
-}
-
 /* Mark (leaf 2) the leaves whose centroid lies within its dm of triangle f:
  * down the tree through the nodes whose cube, grown by 0.55 of its edge (no
  * leaf below has a larger dm), meets the triangle's bounding box. */
@@ -294,7 +245,7 @@ static cvm_status mark_near(oct_tree *T, const oct_run *R, size_t f)
         if (T->leaf[v]) {
             double dm = cvm__g3_lattice_dm(T->hs[v] < e ? T->hs[v] : e);
             centre_of(R, lv, ijk, x);
-            if (oct_tri_dist2(x, a, b, c) < dm * dm)
+            if (cvm__g3_tri_dist2(x, a, b, c) < dm * dm)
                 T->leaf[v] = 2;
             continue;
         }
