@@ -92,7 +92,7 @@ typedef struct rf_cellref {
 
 typedef struct rf_tris {
     const cvm__g3_surface *s;
-    double lo[3], cell;
+    double lo[3], hi[3], cell; /* the surface's bounding box; cell edge */
     rf_cellref *ref; /* sorted by cell, then triangle */
     size_t n;
 } rf_tris;
@@ -126,10 +126,13 @@ static cvm_status rf_tris_build(cvm__ctx *ctx, const cvm__g3_surface *s, rf_tris
     memset(G, 0, sizeof *G);
     G->s = s;
     for (ax = 0; ax < 3; ax++)
-        G->lo[ax] = s->xyz[ax];
+        G->lo[ax] = G->hi[ax] = s->xyz[ax];
     for (f = 0; f < s->np; f++)
-        for (ax = 0; ax < 3; ax++)
-            G->lo[ax] = s->xyz[3 * f + ax] < G->lo[ax] ? s->xyz[3 * f + ax] : G->lo[ax];
+        for (ax = 0; ax < 3; ax++) {
+            double v = s->xyz[3 * f + ax];
+            G->lo[ax] = v < G->lo[ax] ? v : G->lo[ax];
+            G->hi[ax] = v > G->hi[ax] ? v : G->hi[ax];
+        }
     for (f = 0; f < s->nt; f++)
         len += sqrt(cvm__dist2_3(s->xyz + 3 * s->tri[3 * f], s->xyz + 3 * s->tri[3 * f + 1]));
     G->cell = len / (double)s->nt;
@@ -233,13 +236,17 @@ static int rf_cand_cmp(const void *pa, const void *pb)
 /* The candidates of one round into *out (count *nout): circumcentres of the
  * tetrahedra of P whose circumradius exceeds the size there. */
 static cvm_status rf_candidates(cvm__ctx *ctx, const cvm__g3_points *P, const cvm__g3_size *z,
-                                double h, uint64_t seed, rf_cand **out, size_t *nout)
+                                const rf_tris *G, double h, uint64_t seed, rf_cand **out,
+                                size_t *nout)
 {
     cvm__tet3 T;
     int32_t *tet = NULL;
     rf_cand *c = NULL;
     size_t t, n = 0;
     cvm_status st;
+    const cvm_sizing *u = cvm__g3_size_user(z);
+    int user_fn = u && u->fn_nd;
+    double lmin = cvm__g3_size_min(z);
     *out = NULL;
     *nout = 0;
     cvm__tet3_init(&T, ctx);
@@ -263,12 +270,15 @@ static cvm_status rf_candidates(cvm__ctx *ctx, const cvm__g3_points *P, const cv
                                   P->xyz + 3 * (size_t)tet[4 * t + 3], NULL, q->x) != 0)
             continue;
         r2 = cvm__dist2_3(q->x, a);
-        if (!(r2 < INFINITY))
-            continue;
+        if (!(r2 < INFINITY) || (!user_fn && r2 <= lmin * lmin))
+            continue; /* no size can be that small (a callback's is not bounded) */
         for (k = 0; k < 3; k++)
             q->g[k] = (a[k] + P->xyz[3 * (size_t)tet[4 * t + 1] + (size_t)k] +
                        P->xyz[3 * (size_t)tet[4 * t + 2] + (size_t)k] +
                        P->xyz[3 * (size_t)tet[4 * t + 3] + (size_t)k]) / 4;
+        if (q->x[0] < G->lo[0] || q->x[0] > G->hi[0] || q->x[1] < G->lo[1] ||
+            q->x[1] > G->hi[1] || q->x[2] < G->lo[2] || q->x[2] > G->hi[2])
+            memcpy(q->x, q->g, sizeof q->x); /* outside anyway: the centroid at once */
         if (cvm__g3_size_at(z, q->x, &q->hs)) {
             st = ctx->status;
             goto done;
@@ -366,7 +376,7 @@ cvm_status cvm__g3_refine(cvm__ctx *ctx, const cvm__g3_surface *s, const cvm__g3
     for (round = 0; round < REFINE_MAX_ROUNDS && !st; round++) {
         rf_cand *c = NULL;
         size_t n = 0, kept = 0;
-        if ((st = rf_candidates(ctx, P, z, h, seed, &c, &n)))
+        if ((st = rf_candidates(ctx, P, z, &G, h, seed, &c, &n)))
             break;
         if (n > 0) {
             rep->refine_rounds++;

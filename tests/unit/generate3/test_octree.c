@@ -319,7 +319,7 @@ START_TEST(octree_same_bytes_for_every_run_seed_and_thread_count)
 }
 END_TEST
 
-/* Option values, sizes and the unimplemented refinement give statuses. */
+/* Option values and sizes give statuses. */
 START_TEST(octree_options_and_sizes_give_statuses)
 {
     cvm_mesh *m = read_octree("tetra.off");
