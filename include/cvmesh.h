@@ -699,7 +699,9 @@ typedef enum cvm_option {
     CVM_OPT_TIME_LIMIT_S = 400,
     /** Seed of the handle's random stream, integer, default 1, bounds [0, 2^53]. */
     CVM_OPT_SEED = 401,
-    /** Maximum Steiner points a refinement may add, integer, 0 = none (default), [0, 2^31-1]. */
+    /** Maximum Steiner points a refinement may add, integer, 0 = none (default), [0, 2^31-1].
+     *  Also bounds the points of cvm_mesh_generate3()'s refinement free space
+     *  (CVM_GEN3_FREESPACE_REFINE). */
     CVM_OPT_MAX_STEINER = 402,
     /** Threads for parallel stages, integer, 0 = OpenMP default (default), [0, 1024].
      *  Output does not depend on it. In version 0.1 only cvm_mesh_optimise_dual()
@@ -878,8 +880,9 @@ typedef enum cvm_option {
     CVM_OPT_GEN3_LAYERS = 741,
     /** Free-space method: CVM_GEN3_FREESPACE_LATTICE (0, default: BCC lattice),
      *  CVM_GEN3_FREESPACE_OCTREE (1: centroids of a 2:1-balanced octree) or
-     *  CVM_GEN3_FREESPACE_REFINE (2). Integer, bounds [0, 2]; 0 and 1 are implemented
-     *  in this version (2: CVM_E_UNSUPPORTED). See cvm_mesh_generate3(). @since 0.2 */
+     *  CVM_GEN3_FREESPACE_REFINE (2: Delaunay refinement by circumcentres, at most
+     *  CVM_OPT_MAX_STEINER points when that is set). Integer, bounds [0, 2]. See
+     *  cvm_mesh_generate3(). @since 0.2 */
     CVM_OPT_GEN3_FREESPACE = 742,
     /** 1 (default): the size follows the surface's own triangles (see
      *  CVM_OPT_GEN3_GRADING); 0: the size is uniform. Integer, bounds [0, 1]. @since 0.2 */
@@ -1015,7 +1018,7 @@ typedef enum cvm_option {
 typedef enum cvm_gen3_freespace {
     CVM_GEN3_FREESPACE_LATTICE = 0, /**< body-centred cubic lattice (implemented) */
     CVM_GEN3_FREESPACE_OCTREE = 1,  /**< centroids of a 2:1-balanced octree (implemented) */
-    CVM_GEN3_FREESPACE_REFINE = 2   /**< reserved: Delaunay refinement */
+    CVM_GEN3_FREESPACE_REFINE = 2   /**< Delaunay refinement by circumcentres (implemented) */
 } cvm_gen3_freespace;
 
 /** Values of CVM_OPT_GEN3_SURFACE. */
@@ -2935,21 +2938,28 @@ CVM_API cvm_status cvm_mesh_optimise_dual(cvm_mesh *m, const cvm_sizing *sizing)
  *    the lattice), 2:1-balanced across faces, one point at each leaf's centroid
  *    (corners are not used); where the tree is uniform the points form a cubic
  *    lattice, whose cospherical tetrahedra the merged dual cells join
- *    (cvm_mesh_copy_dual3_merge_groups(); CVM_REPORT_GEN3_OCTREE_*);
+ *    (cvm_mesh_copy_dual3_merge_groups(); CVM_REPORT_GEN3_OCTREE_*); or (2) Delaunay
+ *    refinement, the baseline: rounds of tetrahedralising the points so far and
+ *    placing the circumcentre of each tetrahedron whose circumradius exceeds h there
+ *    (its centroid when the circumcentre is outside the domain or at the surface),
+ *    until a round places none (at most 100 rounds, and at most CVM_OPT_MAX_STEINER
+ *    points when that is set; CVM_REPORT_GEN3_REFINE_*);
  *  - every placed point lies strictly inside the domain (exact ray parity) and
  *    farther than its rejection distance from every earlier point (half its
  *    near-field offset; 0.55 h(x) for a lattice point, h(x) the size there;
  *    0.55 min(h(x), e) for an octree centroid, which also keeps that far from
+ *    every surface triangle; 0.55 h(x) for a refinement point, and half that from
  *    every surface triangle).
  * Without TetGen (cvm_build_string()), placed points that keep a surface
  * triangle from being a Delaunay face are removed again, a few rounds
  * (CVM_MEASURE_GEN3_RECOVERY_DROPPED). Not in this version: more than one
- * near-field layer, Delaunay-refinement free space (CVM_GEN3_FREESPACE_REFINE), the
- * octree's optional split of octants with face-hanging nodes, a lattice grown in a
- * local frame, internal facets between regions.
+ * near-field layer, the octree's optional split of octants with face-hanging nodes,
+ * splitting surface triangles in the refinement (the surface is kept as given), a
+ * lattice grown in a local frame, internal facets between regions.
  * The report of the run: CVM_REPORT_GEN3_* (cvm_mesh_get_report()); the mesh's
  * measures as after cvm_mesh_triangulate(). Vertices: the surface's points,
- * then the near-field points, then the lattice (or octree) points.
+ * then the near-field points, then the free-space points (lattice, octree or
+ * refinement, in placement order).
  *
  * @param m     mesh handle holding a closed 3D surface; not NULL.
  * @param size  largest size (length unit of the coordinates), positive and finite.
@@ -2958,14 +2968,15 @@ CVM_API cvm_status cvm_mesh_optimise_dual(cvm_mesh *m, const cvm_sizing *sizing)
  * Thread-safety: one call at a time on @p m. The result does not depend on the seed or
  *               on the number of threads.
  * Stops:        the time limit and progress callback act in the tetrahedralisation only,
- *               as in cvm_mesh_triangulate() (a stop leaves the mesh empty).
+ *               as in cvm_mesh_triangulate() (a stop leaves the mesh empty). The
+ *               refinement free space stops at CVM_OPT_MAX_STEINER points (0: no limit)
+ *               with a valid mesh of the points so far: CVM_INCOMPLETE_STEINER_LIMIT.
  * @return CVM_OK
  *         CVM_E_NULL_ARG
  *         CVM_E_INPUT_NONFINITE   size is NaN or infinite (message gives it)
  *         CVM_E_ARGUMENT          size is zero or negative (message gives it)
  *         CVM_E_STATE             the handle holds no 3D surface (2D input, or a 3D point set)
- *         CVM_E_UNSUPPORTED       CVM_OPT_GEN3_LAYERS above 1, CVM_OPT_GEN3_FREESPACE 2
- *                                 (refinement), a surface with internal facets (an edge
+ *         CVM_E_UNSUPPORTED       CVM_OPT_GEN3_LAYERS above 1, a surface with internal facets (an edge
  *                                 of other than two triangles; message names its points),
  *                                 or, without TetGen, a surface triangle that is no Delaunay
  *                                 face of the surface's own points (as in
@@ -2982,6 +2993,8 @@ CVM_API cvm_status cvm_mesh_optimise_dual(cvm_mesh *m, const cvm_sizing *sizing)
  *                                 input checks (a bug; the message says so)
  *         CVM_E_NOMEM             (the handle keeps its input; the output is dropped)
  *         CVM_INCOMPLETE_TIME_LIMIT, CVM_INCOMPLETE_CANCELLED (as cvm_mesh_triangulate())
+ *         CVM_INCOMPLETE_STEINER_LIMIT the refinement free space met CVM_OPT_MAX_STEINER (the
+ *                                 mesh is valid; the message gives the count)
  * @since 0.2
  */
 CVM_API cvm_status cvm_mesh_generate3(cvm_mesh *m, double size);
@@ -2996,7 +3009,11 @@ CVM_API cvm_status cvm_mesh_generate3(cvm_mesh *m, double size);
  * down to the smallest size of the sizing's sources (a callback: while a level
  * meets points below its range, up to 2^-23 size) and visits, per level, only the
  * boxes where a source can reach that level's size (everywhere for a uniform size,
- * a zero growth or a callback). With @p sizing NULL or empty the call is
+ * a zero growth or a callback). The octree goes down to the level whose edge is at
+ * most 2^(2/3) times the sources' smallest size (a callback: 19 levels), splitting
+ * by the size at each octant's centre (a source smaller than an octant but outside
+ * its centre's reach, growth above about 1, may be missed); the refinement reads the
+ * size at each circumcentre. With @p sizing NULL or empty the call is
  * cvm_mesh_generate3(m, size), the same bytes.
  *
  * @param m       mesh handle holding a closed 3D surface; not NULL.
