@@ -3,8 +3,9 @@
  *
  * The root is the surface's bounding cube (corner at the bounding box's lower
  * corner, edge its largest extent). An octant of edge e splits while e exceeds
- * OCT_SPLIT times the size at its centre, down to the level where the field's
- * smallest size is met (OCT_MAX_LEVEL with a callback). The tree is then
+ * OCT_SPLIT times the size at its centre (or may, by a user source's reach),
+ * down to the level where the field's smallest size is met (OCT_MAX_LEVEL with
+ * a callback). The tree is then
  * balanced: two leaves that share a face (with balance 26: a face, an edge or
  * a corner) differ by at most one level, the finest leaves first so that one
  * sweep per level suffices (a split only makes leaves coarser than the level
@@ -262,23 +263,61 @@ static cvm_status mark_near(oct_tree *T, const oct_run *R, size_t f)
     return CVM_OK;
 }
 
-/* Refine by the size, then balance. */
+/* 1 when the octant (lv, ijk) meets one of the nb finite boxes of box. */
+static int meets_box(const oct_run *R, int lv, const uint64_t *ijk, const double *box, size_t nb)
+{
+    double e = ldexp(R->edge, -lv);
+    size_t q;
+    int ax;
+    for (q = 0; q < nb; q++) {
+        const double *b = box + 6 * q;
+        for (ax = 0; ax < 3; ax++) {
+            double lo = R->lo[ax] + e * (double)ijk[ax];
+            if (!(b[ax] > -HUGE_VAL && b[3 + ax] < HUGE_VAL) || lo > b[3 + ax] || lo + e < b[ax])
+                break;
+        }
+        if (ax == 3)
+            return 1;
+    }
+    return 0;
+}
+
+/* Refine by the size, then balance. An octant splits while its edge e exceeds
+ * OCT_SPLIT times the size at its centre or, with a user sizing, while it
+ * meets a bounded box where a source can reach e / OCT_SPLIT
+ * (cvm__sizing_boxes3(): a source inside an octant whose centre it does not
+ * reach is still met). Nodes come in level order, so the boxes are made once
+ * per level. */
 static cvm_status build_tree(oct_tree *T, const oct_run *R, int balance, int maxlv)
 {
-    size_t v;
-    int lv;
+    const cvm_sizing *u = cvm__g3_size_user(R->z);
+    double *box = NULL;
+    size_t v, nb = 0;
+    int lv, boxes_lv = -1;
     cvm_status st = oct_add(T, oct_key(0, 0, 0, 0));
+    if (u && !st && !(box = cvm__malloc(T->ctx, 6 * CVM__SIZING_MAX_BOXES3(u) * sizeof *box)))
+        st = cvm__nomem(T->ctx);
     for (v = 0; v < T->n && !st; v++) {
         uint64_t ijk[3];
-        double x[3], hs;
+        double x[3], hs, e;
         oct_unkey(T->key[v], &lv, ijk);
+        e = ldexp(R->edge, -lv);
         centre_of(R, lv, ijk, x);
-        if (cvm__g3_size_at(R->z, x, &hs))
+        if (cvm__g3_size_at(R->z, x, &hs)) {
+            cvm__free(T->ctx, box);
             return R->ctx->status;
+        }
         T->hs[v] = hs;
-        if (lv < maxlv && ldexp(R->edge, -lv) > OCT_SPLIT * hs)
+        if (lv >= maxlv)
+            continue;
+        if (box && boxes_lv != lv) {
+            nb = cvm__sizing_boxes3(u, e / OCT_SPLIT, box);
+            boxes_lv = lv;
+        }
+        if (e > OCT_SPLIT * hs || (box && meets_box(R, lv, ijk, box, nb)))
             st = oct_split(T, v);
     }
+    cvm__free(T->ctx, box);
     for (lv = maxlv; lv >= 2 && !st; lv--)
         for (v = 0; v < T->n && !st; v++)
             if (T->leaf[v] && (int)(T->key[v] >> (3 * OCT_AXIS_BITS)) == lv)
