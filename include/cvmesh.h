@@ -3010,10 +3010,10 @@ CVM_API cvm_status cvm_mesh_generate3(cvm_mesh *m, double size);
  * meets points below its range, up to 2^-23 size) and visits, per level, only the
  * boxes where a source can reach that level's size (everywhere for a uniform size,
  * a zero growth or a callback). The octree goes down to the level whose edge is at
- * most 2^(2/3) times the sources' smallest size (a callback: 19 levels), splitting
- * by the size at each octant's centre (a source smaller than an octant but outside
- * its centre's reach, growth above about 1, may be missed); the refinement reads the
- * size at each circumcentre. With @p sizing NULL or empty the call is
+ * most 2^(2/3) times the sources' smallest size (a callback: 19 levels), and also
+ * splits an octant of edge e that meets a bounded box where a source can reach
+ * e / 2^(2/3) (so no source is missed; a callback is read at the centres only); the
+ * refinement reads the size at each circumcentre. With @p sizing NULL or empty the call is
  * cvm_mesh_generate3(m, size), the same bytes.
  *
  * @param m       mesh handle holding a closed 3D surface; not NULL.
