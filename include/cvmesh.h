@@ -3011,8 +3011,9 @@ CVM_API cvm_status cvm_mesh_generate3(cvm_mesh *m, double size);
  * boxes where a source can reach that level's size (everywhere for a uniform size,
  * a zero growth or a callback). The octree goes down to the level whose edge is at
  * most 2^(2/3) times the sources' smallest size (a callback: 19 levels), and also
- * splits an octant of edge e that meets a bounded box where a source can reach
- * e / 2^(2/3) (so no source is missed; a callback is read at the centres only); the
+ * splits an octant of edge e that meets a bounded box where a point, line or
+ * triangle source can reach e / 2^(2/3) (so none is missed; a background mesh and a
+ * callback are read at the octants' centres only); the
  * refinement reads the size at each circumcentre. With @p sizing NULL or empty the call is
  * cvm_mesh_generate3(m, size), the same bytes.
  *

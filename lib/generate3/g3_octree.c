@@ -285,9 +285,10 @@ static int meets_box(const oct_run *R, int lv, const uint64_t *ijk, const double
 
 /* Refine by the size, then balance. An octant splits while its edge e exceeds
  * OCT_SPLIT times the size at its centre or, with a user sizing, while it
- * meets a bounded box where a source can reach e / OCT_SPLIT
- * (cvm__sizing_boxes3(): a source inside an octant whose centre it does not
- * reach is still met). Nodes come in level order, so the boxes are made once
+ * meets a bounded box where a point, line or triangle source can reach
+ * e / OCT_SPLIT (cvm__sizing_boxes3(): a source inside an octant whose centre
+ * it does not reach is still met; a background mesh and a callback are read at
+ * the centres only). Nodes come in level order, so the boxes are made once
  * per level. */
 static cvm_status build_tree(oct_tree *T, const oct_run *R, int balance, int maxlv)
 {
@@ -313,6 +314,10 @@ static cvm_status build_tree(oct_tree *T, const oct_run *R, int balance, int max
             continue;
         if (box && boxes_lv != lv) {
             nb = cvm__sizing_boxes3(u, e / OCT_SPLIT, box);
+            /* the last is a background mesh's whole box once its least size is met:
+             * that would refine all of it to its least size (read at centres instead) */
+            if (nb > 0 && u->bg3 && cvm__background3_min(u->bg3) <= e / OCT_SPLIT)
+                nb--;
             boxes_lv = lv;
         }
         if (e > OCT_SPLIT * hs || (box && meets_box(R, lv, ijk, box, nb)))

@@ -356,6 +356,55 @@ START_TEST(octree_options_and_sizes_give_statuses)
 }
 END_TEST
 
+static double octree_radial(void *payload, const double *x, int dim)
+{
+    (void)payload;
+    (void)dim;
+    return 0.1 + 0.3 * sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
+}
+
+static double octree_negative(void *payload, const double *x, int dim)
+{
+    (void)payload;
+    (void)dim;
+    return x[0] > 0.2 ? -1.0 : 0.3;
+}
+
+/* A callback and a point source both reach the octree; a callback's bad value
+ * is the call's status. */
+START_TEST(octree_reads_the_sizing)
+{
+    cvm_mesh *m = read_octree("tetra.off");
+    cvm_sizing *sz;
+    const double c[3] = {0.1, -0.1, 0.05};
+    double pts_cb, pts_src, pts_plain;
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_GEN3_SIZE_FROM_SURFACE, 0), CVM_OK);
+    ck_assert_msg(cvm_mesh_generate3(m, 0.6) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    pts_plain = report(m, CVM_REPORT_GEN3_OCTREE_POINTS);
+    ck_assert_int_eq(cvm_sizing_create(&sz), CVM_OK);
+    ck_assert_int_eq(cvm_sizing_set_callback_nd(sz, octree_radial, NULL), CVM_OK);
+    ck_assert_msg(cvm_mesh_generate3_sized(m, 0.6, sz) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    ck_assert_int_eq(cvm_mesh_check(m), CVM_OK);
+    pts_cb = report(m, CVM_REPORT_GEN3_OCTREE_POINTS);
+    ck_assert_double_gt(pts_cb, pts_plain);
+    cvm_sizing_free(sz);
+    /* a source of size 0.02 smaller than the octant around it, growth 2: its
+     * octant's centre misses it, its box does not */
+    ck_assert_int_eq(cvm_sizing_create(&sz), CVM_OK);
+    ck_assert_int_eq(cvm_sizing_add_point_source_nd(sz, c, 3, 0.02, 2.0), CVM_OK);
+    ck_assert_msg(cvm_mesh_generate3_sized(m, 0.6, sz) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    pts_src = report(m, CVM_REPORT_GEN3_OCTREE_POINTS);
+    ck_assert_double_gt(pts_src, pts_plain);
+    cvm_sizing_free(sz);
+    ck_assert_int_eq(cvm_sizing_create(&sz), CVM_OK);
+    ck_assert_int_eq(cvm_sizing_set_callback_nd(sz, octree_negative, NULL), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_generate3_sized(m, 0.6, sz), CVM_E_ARGUMENT);
+    ck_assert_ptr_nonnull(strstr(cvm_mesh_errmsg(m), "callback"));
+    cvm_sizing_free(sz);
+    cvm_mesh_free(m);
+}
+END_TEST
+
 static void oom_setup(cvm_mesh *m, void *arg)
 {
     char path[1024];
@@ -386,6 +435,7 @@ TCase *generate3_octree_tcase(void)
     tcase_add_test(tc, octree_point_source_is_well_centred_after_merging);
     tcase_add_test(tc, octree_same_bytes_for_every_run_seed_and_thread_count);
     tcase_add_test(tc, octree_options_and_sizes_give_statuses);
+    tcase_add_test(tc, octree_reads_the_sizing);
     tcase_add_test(tc, octree_oom_at_every_allocation);
     return tc;
 }
