@@ -411,8 +411,9 @@ cvm_status cvm__g3_octree(cvm__ctx *ctx, const cvm__g3_surface *s, const cvm__g3
         R.edge = hi[ax] - R.lo[ax] > R.edge ? hi[ax] - R.lo[ax] : R.edge;
     if (!(R.edge > 0))
         return CVM_OK;
-    /* the size never exceeds h, so the leaves number at least (edge / h)^3 */
-    cells = R.edge / h;
+    /* the size never exceeds h, so a leaf's edge is at most OCT_SPLIT h, and the
+     * leaves number at least (edge / (OCT_SPLIT h))^3 */
+    cells = R.edge / (OCT_SPLIT * h);
     if (cells * cells * cells > (double)CVM__T3_MAX_POINTS)
         return cvm__error(ctx, CVM_E_TOO_LARGE, CVM_ENT_NONE, -1,
                           "size %.17g is too small for the surface's extent %.17g: its octree "

@@ -120,8 +120,8 @@ static int rf_cmp(const void *pa, const void *pb)
  * length, grown while that would file more than 64 references per triangle. */
 static cvm_status rf_tris_build(cvm__ctx *ctx, const cvm__g3_surface *s, rf_tris *G)
 {
-    size_t f, total;
-    double len = 0;
+    size_t f;
+    double len = 0, total;
     int ax, pass;
     memset(G, 0, sizeof *G);
     G->s = s;
@@ -154,7 +154,8 @@ static cvm_status rf_tris_build(cvm__ctx *ctx, const cvm__g3_surface *s, rf_tris
                 b1[ax] = rf_coord(G, mx, ax);
             }
             if (pass == 0) {
-                total += (size_t)((b1[0] - b0[0] + 1) * (b1[1] - b0[1] + 1) * (b1[2] - b0[2] + 1));
+                total += (double)(b1[0] - b0[0] + 1) * (double)(b1[1] - b0[1] + 1) *
+                         (double)(b1[2] - b0[2] + 1);
                 continue;
             }
             for (k = b0[2]; k <= b1[2]; k++)
@@ -165,12 +166,12 @@ static cvm_status rf_tris_build(cvm__ctx *ctx, const cvm__g3_surface *s, rf_tris
                     }
         }
         if (pass == 0) {
-            if (total > 64 * s->nt + 4096) {
-                G->cell *= cbrt((double)total / (double)(64 * s->nt + 4096)) * 1.01;
+            if (total > (double)(64 * s->nt + 4096)) {
+                G->cell *= cbrt(total / (double)(64 * s->nt + 4096)) * 1.01;
                 pass = -1; /* count again with the larger cells */
                 continue;
             }
-            if (!(G->ref = cvm__malloc(ctx, (total + 1) * sizeof *G->ref)))
+            if (!(G->ref = cvm__malloc(ctx, ((size_t)total + 1) * sizeof *G->ref)))
                 return cvm__nomem(ctx);
         }
     }
