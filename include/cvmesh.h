@@ -699,7 +699,9 @@ typedef enum cvm_option {
     CVM_OPT_TIME_LIMIT_S = 400,
     /** Seed of the handle's random stream, integer, default 1, bounds [0, 2^53]. */
     CVM_OPT_SEED = 401,
-    /** Maximum Steiner points a refinement may add, integer, 0 = none (default), [0, 2^31-1]. */
+    /** Maximum Steiner points a refinement may add, integer, 0 = none (default), [0, 2^31-1].
+     *  Also bounds the points of cvm_mesh_generate3()'s refinement free space
+     *  (CVM_GEN3_FREESPACE_REFINE). */
     CVM_OPT_MAX_STEINER = 402,
     /** Threads for parallel stages, integer, 0 = OpenMP default (default), [0, 1024].
      *  Output does not depend on it. In version 0.1 only cvm_mesh_optimise_dual()
@@ -877,8 +879,10 @@ typedef enum cvm_option {
      *  1 is implemented in this version (more: CVM_E_UNSUPPORTED). @since 0.2 */
     CVM_OPT_GEN3_LAYERS = 741,
     /** Free-space method: CVM_GEN3_FREESPACE_LATTICE (0, default: BCC lattice),
-     *  CVM_GEN3_FREESPACE_OCTREE (1) or CVM_GEN3_FREESPACE_REFINE (2). Integer, bounds
-     *  [0, 2]; only 0 is implemented in this version (others: CVM_E_UNSUPPORTED). @since 0.2 */
+     *  CVM_GEN3_FREESPACE_OCTREE (1: centroids of a 2:1-balanced octree) or
+     *  CVM_GEN3_FREESPACE_REFINE (2: Delaunay refinement by circumcentres, at most
+     *  CVM_OPT_MAX_STEINER points when that is set). Integer, bounds [0, 2]. See
+     *  cvm_mesh_generate3(). @since 0.2 */
     CVM_OPT_GEN3_FREESPACE = 742,
     /** 1 (default): the size follows the surface's own triangles (see
      *  CVM_OPT_GEN3_GRADING); 0: the size is uniform. Integer, bounds [0, 1]. @since 0.2 */
@@ -1013,8 +1017,8 @@ typedef enum cvm_option {
 /** Values of CVM_OPT_GEN3_FREESPACE. */
 typedef enum cvm_gen3_freespace {
     CVM_GEN3_FREESPACE_LATTICE = 0, /**< body-centred cubic lattice (implemented) */
-    CVM_GEN3_FREESPACE_OCTREE = 1,  /**< reserved: 2:1-balanced octree */
-    CVM_GEN3_FREESPACE_REFINE = 2   /**< reserved: Delaunay refinement */
+    CVM_GEN3_FREESPACE_OCTREE = 1,  /**< centroids of a 2:1-balanced octree (implemented) */
+    CVM_GEN3_FREESPACE_REFINE = 2   /**< Delaunay refinement by circumcentres (implemented) */
 } cvm_gen3_freespace;
 
 /** Values of CVM_OPT_GEN3_SURFACE. */
@@ -2926,20 +2930,36 @@ CVM_API cvm_status cvm_mesh_optimise_dual(cvm_mesh *m, const cvm_sizing *sizing)
  *    triangle c + 1.1 R n; pairs whose well-centred regions may not meet are
  *    dropped first (a sufficient test: the edge is not reflex and x lies on the
  *    inner side of, and outside the diametral sphere of, both triangles);
- *  - free space: a body-centred cubic lattice, axis-aligned from the surface's
- *    bounding-box corner, cube edge size / 2^k where the size falls in
- *    (size / 2^(k+1), size / 2^k] (edges a and 0.866 a);
+ *  - free space (CVM_OPT_GEN3_FREESPACE): by default a body-centred cubic lattice,
+ *    axis-aligned from the surface's bounding-box corner, cube edge size / 2^k
+ *    where the size falls in (size / 2^(k+1), size / 2^k] (edges a and 0.866 a);
+ *    or (1) an octree: the surface's bounding cube, an octant of edge e split while
+ *    e > 2^(2/3) h(c) (h(c) the size at its centre: as many points per volume as
+ *    the lattice), 2:1-balanced across faces, one point at each leaf's centroid
+ *    (corners are not used); where the tree is uniform the points form a cubic
+ *    lattice, whose cospherical tetrahedra the merged dual cells join
+ *    (cvm_mesh_copy_dual3_merge_groups(); CVM_REPORT_GEN3_OCTREE_*); or (2) Delaunay
+ *    refinement, the baseline: rounds of tetrahedralising the points so far and
+ *    placing the circumcentre of each tetrahedron whose circumradius exceeds h there
+ *    (its centroid when the circumcentre is outside the domain or at the surface),
+ *    until a round places none (at most 100 rounds, and at most CVM_OPT_MAX_STEINER
+ *    points when that is set; CVM_REPORT_GEN3_REFINE_*);
  *  - every placed point lies strictly inside the domain (exact ray parity) and
  *    farther than its rejection distance from every earlier point (half its
- *    near-field offset; 0.55 h(x) for a lattice point, h(x) the size there).
+ *    near-field offset; 0.55 h(x) for a lattice point, h(x) the size there;
+ *    0.55 min(h(x), e) for an octree centroid, which also keeps that far from
+ *    every surface triangle; 0.55 h(x) for a refinement point, and half that from
+ *    every surface triangle).
  * Without TetGen (cvm_build_string()), placed points that keep a surface
  * triangle from being a Delaunay face are removed again, a few rounds
  * (CVM_MEASURE_GEN3_RECOVERY_DROPPED). Not in this version: more than one
- * near-field layer, octree or refinement free space, a lattice grown in a local
- * frame, optimisation and merging, internal facets between regions.
+ * near-field layer, the octree's optional split of octants with face-hanging nodes,
+ * splitting surface triangles in the refinement (the surface is kept as given), a
+ * lattice grown in a local frame, internal facets between regions.
  * The report of the run: CVM_REPORT_GEN3_* (cvm_mesh_get_report()); the mesh's
  * measures as after cvm_mesh_triangulate(). Vertices: the surface's points,
- * then the near-field points, then the lattice points.
+ * then the near-field points, then the free-space points (lattice, octree or
+ * refinement, in placement order).
  *
  * @param m     mesh handle holding a closed 3D surface; not NULL.
  * @param size  largest size (length unit of the coordinates), positive and finite.
@@ -2948,14 +2968,15 @@ CVM_API cvm_status cvm_mesh_optimise_dual(cvm_mesh *m, const cvm_sizing *sizing)
  * Thread-safety: one call at a time on @p m. The result does not depend on the seed or
  *               on the number of threads.
  * Stops:        the time limit and progress callback act in the tetrahedralisation only,
- *               as in cvm_mesh_triangulate() (a stop leaves the mesh empty).
+ *               as in cvm_mesh_triangulate() (a stop leaves the mesh empty). The
+ *               refinement free space stops at CVM_OPT_MAX_STEINER points (0: no limit)
+ *               with a valid mesh of the points so far: CVM_INCOMPLETE_STEINER_LIMIT.
  * @return CVM_OK
  *         CVM_E_NULL_ARG
  *         CVM_E_INPUT_NONFINITE   size is NaN or infinite (message gives it)
  *         CVM_E_ARGUMENT          size is zero or negative (message gives it)
  *         CVM_E_STATE             the handle holds no 3D surface (2D input, or a 3D point set)
- *         CVM_E_UNSUPPORTED       CVM_OPT_GEN3_LAYERS above 1, CVM_OPT_GEN3_FREESPACE other
- *                                 than the lattice, a surface with internal facets (an edge
+ *         CVM_E_UNSUPPORTED       CVM_OPT_GEN3_LAYERS above 1, a surface with internal facets (an edge
  *                                 of other than two triangles; message names its points),
  *                                 or, without TetGen, a surface triangle that is no Delaunay
  *                                 face of the surface's own points (as in
@@ -2964,13 +2985,16 @@ CVM_API cvm_status cvm_mesh_optimise_dual(cvm_mesh *m, const cvm_sizing *sizing)
  *                                 file's numbering)
  *         CVM_E_TOO_LARGE         size so small against the surface's extent that the
  *                                 lattice would pass 2^19 cells along an axis or about
- *                                 240,000,000 candidates, or the points would pass the 3D
+ *                                 240,000,000 candidates, the octree (extent / size)^3 or
+ *                                 its nodes 60,000,000, or the points would pass the 3D
  *                                 limit of 60,000,000 (message gives the numbers)
  *         the surface's statuses of cvm_mesh_triangulate() (not closed, self-intersecting, ...)
  *         CVM_E_INTERNAL          CVM_OPT_GEN3_SURFACE 1 made a surface that fails the
  *                                 input checks (a bug; the message says so)
  *         CVM_E_NOMEM             (the handle keeps its input; the output is dropped)
  *         CVM_INCOMPLETE_TIME_LIMIT, CVM_INCOMPLETE_CANCELLED (as cvm_mesh_triangulate())
+ *         CVM_INCOMPLETE_STEINER_LIMIT the refinement free space met CVM_OPT_MAX_STEINER (the
+ *                                 mesh is valid; the message gives the count)
  * @since 0.2
  */
 CVM_API cvm_status cvm_mesh_generate3(cvm_mesh *m, double size);
@@ -2985,7 +3009,12 @@ CVM_API cvm_status cvm_mesh_generate3(cvm_mesh *m, double size);
  * down to the smallest size of the sizing's sources (a callback: while a level
  * meets points below its range, up to 2^-23 size) and visits, per level, only the
  * boxes where a source can reach that level's size (everywhere for a uniform size,
- * a zero growth or a callback). With @p sizing NULL or empty the call is
+ * a zero growth or a callback). The octree goes down to the level whose edge is at
+ * most 2^(2/3) times the sources' smallest size (a callback: 19 levels), and also
+ * splits an octant of edge e that meets a bounded box where a point, line or
+ * triangle source can reach e / 2^(2/3) (so none is missed; a background mesh and a
+ * callback are read at the octants' centres only); the
+ * refinement reads the size at each circumcentre. With @p sizing NULL or empty the call is
  * cvm_mesh_generate3(m, size), the same bytes.
  *
  * @param m       mesh handle holding a closed 3D surface; not NULL.
@@ -3306,6 +3335,12 @@ typedef enum cvm_measure {
     CVM_MEASURE_GEN3_SURFACE_TRIS_BEFORE = 758, /**< surface triangles read */
     CVM_MEASURE_GEN3_SURFACE_TRIS_AFTER = 759,  /**< surface triangles meshed (= before when
                                                      the surface is used as given) */
+    CVM_MEASURE_GEN3_OCTREE_LEAVES = 761,   /**< leaves of the balanced octree
+                                                 (CVM_GEN3_FREESPACE_OCTREE; else 0) */
+    CVM_MEASURE_GEN3_OCTREE_POINTS = 762,   /**< octree centroids placed (else 0) */
+    CVM_MEASURE_GEN3_REFINE_POINTS = 763,   /**< circumcentres placed by the Delaunay-refinement
+                                                 free space (CVM_GEN3_FREESPACE_REFINE; else 0) */
+    CVM_MEASURE_GEN3_REFINE_ROUNDS = 764,   /**< its rounds that had candidates (else 0) */
     /* ---- 800-899: the quad measures are reports of the last cvm_mesh_quadmesh() (the
      * metric is not kept with the mesh): cvm_mesh_get_measure() accepts the
      * CVM_REPORT_QUAD_* values (800-821) and gives the same numbers ---- */
@@ -3431,6 +3466,12 @@ typedef enum cvm_report {
     /* the last cvm_mesh_optimise_dual3() again */
     CVM_REPORT_DUAL3_FLIPS = 760,             /**< flips kept (CVM_OPT_DUAL3_FLIPS), the first
                                                    pass over the input's faces included */
+    /* the last cvm_mesh_generate3() again: its octree (CVM_GEN3_FREESPACE_OCTREE) */
+    CVM_REPORT_GEN3_OCTREE_LEAVES = 761,      /**< = CVM_MEASURE_GEN3_OCTREE_LEAVES @since 0.2 */
+    CVM_REPORT_GEN3_OCTREE_POINTS = 762,      /**< = CVM_MEASURE_GEN3_OCTREE_POINTS @since 0.2 */
+    /* ... and its Delaunay refinement (CVM_GEN3_FREESPACE_REFINE) */
+    CVM_REPORT_GEN3_REFINE_POINTS = 763,      /**< = CVM_MEASURE_GEN3_REFINE_POINTS @since 0.2 */
+    CVM_REPORT_GEN3_REFINE_ROUNDS = 764,      /**< = CVM_MEASURE_GEN3_REFINE_ROUNDS @since 0.2 */
     /* the last cvm_mesh_quadmesh() (0 before any, and after any call that drops the quads).
        Corner angles and edge lengths are measured in the metric: a corner's angle with g at
        its quad's centroid, an edge's metric length sqrt(e^T g e) with g at its midpoint. */

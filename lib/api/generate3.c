@@ -24,7 +24,7 @@ cvm_status cvm__mesh3_gen3_report(double *out, const cvm_mesh *m, int which)
 
 static cvm_status check_call(cvm_mesh *m, double size)
 {
-    double layers = cvm__opt(m, CVM_OPT_GEN3_LAYERS), fs = cvm__opt(m, CVM_OPT_GEN3_FREESPACE);
+    double layers = cvm__opt(m, CVM_OPT_GEN3_LAYERS);
     if (isnan(size) || isinf(size))
         return cvm__error(&m->ctx, CVM_E_INPUT_NONFINITE, CVM_ENT_NONE, -1,
                           "size %g is not finite", size);
@@ -39,11 +39,6 @@ static cvm_status check_call(cvm_mesh *m, double size)
         return cvm__error(&m->ctx, CVM_E_UNSUPPORTED, CVM_ENT_OPTION, CVM_OPT_GEN3_LAYERS,
                           "CVM_OPT_GEN3_LAYERS = %g is unsupported: only one near-field layer is implemented "
                           "in this version", layers);
-    if (fs != CVM_GEN3_FREESPACE_LATTICE)
-        return cvm__error(&m->ctx, CVM_E_UNSUPPORTED, CVM_ENT_OPTION, CVM_OPT_GEN3_FREESPACE,
-                          "CVM_OPT_GEN3_FREESPACE = %g (%s) is unsupported: only the lattice (0) is implemented "
-                          "in this version", fs, fs == CVM_GEN3_FREESPACE_OCTREE ? "octree"
-                                                                                  : "refine");
     return CVM_OK;
 }
 
@@ -130,6 +125,9 @@ static cvm_status generate(cvm_mesh *m, double size, const cvm_sizing *sizing)
     p.follow_surface = cvm__opt(m, CVM_OPT_GEN3_SIZE_FROM_SURFACE) != 0;
     p.layers = 1;
     p.sizing = sizing;
+    p.freespace = (int)cvm__opt(m, CVM_OPT_GEN3_FREESPACE);
+    p.octree_balance = 6; /* 26 measured no better: see g3_octree.c */
+    p.refine_max = (size_t)cvm__opt(m, CVM_OPT_MAX_STEINER);
     if (sizing && sizing->bgrad > 0) {
         /* min(l + g1 d, l + g2 d) = l + min(g1, g2) d: one field, the smaller slope */
         p.grading = p.follow_surface && p.grading < sizing->bgrad ? p.grading : sizing->bgrad;
@@ -222,6 +220,15 @@ static cvm_status generate(cvm_mesh *m, double size, const cvm_sizing *sizing)
     g->gen3[17] = rm_count[0];
     g->gen3[18] = rm_count[1];
     g->gen3[19] = rm_count[2];
+    g->gen3[21] = (double)rep.octree_leaves;
+    g->gen3[22] = (double)rep.octree_points;
+    g->gen3[23] = (double)rep.refine_points;
+    g->gen3[24] = (double)rep.refine_rounds;
+    if (s == CVM_OK && rep.refine_limited)
+        s = cvm__error(&m->ctx, CVM_INCOMPLETE_STEINER_LIMIT, CVM_ENT_OPTION, CVM_OPT_MAX_STEINER,
+                       "the free-space refinement stopped at CVM_OPT_MAX_STEINER = %lu points; "
+                       "the mesh is valid, its free space coarser than the size asks",
+                       (unsigned long)rep.refine_points);
     return s;
 }
 

@@ -8,8 +8,9 @@
 #include "common/surf3.h"
 #include "delaunay3/delaunay3_internal.h"
 
-/* CVM_REPORT_GEN3_* (740-748, 757-759) and CVM_REPORT_DUAL3_* (750-756, 760), at which - 740 */
-#define CVM__GEN3_NREPORT 21
+/* CVM_REPORT_GEN3_* (740-748, 757-759, 761-764) and CVM_REPORT_DUAL3_* (750-756, 760),
+ * at which - 740 */
+#define CVM__GEN3_NREPORT 25
 
 struct cvm__mesh3 {
     cvm__surf3 in;           /* the input: points, and facets when a surface was read */

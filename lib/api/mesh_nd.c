@@ -122,7 +122,7 @@ cvm_status cvm_mesh_get_report(double *out, const cvm_mesh *m, cvm_report which)
         *out = m->read_flips;
         return CVM_OK;
     }
-    if (w >= (int)CVM_REPORT_GEN3_MATCHED_PAIRS && w <= (int)CVM_REPORT_DUAL3_FLIPS)
+    if (w >= (int)CVM_REPORT_GEN3_MATCHED_PAIRS && w <= (int)CVM_REPORT_GEN3_REFINE_ROUNDS)
         return cvm__mesh3_gen3_report(out, m, w);
     return cvm__quad_report(out, m, w);
 }

@@ -1,5 +1,5 @@
 /*
- * cmd_mesh3.c - `cvmesh mesh3 IN --size H [--grading G] [--uniform] [--freespace lattice]
+ * cmd_mesh3.c - `cvmesh mesh3 IN --size H [--grading G] [--uniform] [--freespace lattice|octree|refine]
  * [--layers N] [--point-source X,Y,Z,H[,G]]... [--optimise] -o OUT.{vtu,msh,node}
  * [--dual DUAL.vtu] [--quality] [--timings]`: a co-volume tetrahedral mesh inside a
  * closed surface (cvm_mesh_generate3(), or cvm_mesh_generate3_sized() with sources),
@@ -29,14 +29,18 @@ void cli_mesh3_help(FILE *f)
 {
     fprintf(f,
             "usage: cvmesh mesh3 IN.off|IN.stl|IN.poly|IN.smesh --size H [--grading G] [--uniform]\n"
-            "                    [--freespace lattice] [--layers N] [--point-source X,Y,Z,H[,G]]\n"
+            "                    [--freespace lattice|octree|refine] [--layers N]\n"
+            "                    [--point-source X,Y,Z,H[,G]]\n"
             "                    [--optimise] [-o OUT] [--dual DUAL.vtu] [--quality]\n"
             "                    [--timings] [option flags]\n"
             "\n"
             "A tetrahedral co-volume mesh inside a closed surface: one near-field point per\n"
             "pair of surface triangles matched across an edge (or per unmatched triangle),\n"
-            "then a body-centred cubic lattice in the free space, every point strictly inside\n"
-            "the domain, tetrahedralised with the surface as `cvmesh tetrahedralize` does.\n"
+            "then a body-centred cubic lattice in the free space (--freespace octree: the\n"
+            "centroids of a 2:1-balanced octree instead; refine: rounds of circumcentres of\n"
+            "the tetrahedra larger than the size, at most --max-steiner N of them), every\n"
+            "point strictly inside the domain, tetrahedralised with the surface as\n"
+            "`cvmesh tetrahedralize` does.\n"
             "H is the largest size; by default the size near the surface follows its own\n"
             "triangles and grows away from them by the grading G (--uniform: H everywhere).\n"
             "--point-source X,Y,Z,H[,G] (repeatable, up to 64): size H at (X, Y, Z), growing\n"
@@ -47,7 +51,7 @@ void cli_mesh3_help(FILE *f)
             "bounds it; --dual writes the weighted power cells. --quality also reports the\n"
             "tetrahedra merged into polyhedral dual cells (--merge-tol F, see\n"
             "cvm_mesh_copy_dual3_merge_groups()) and those non-compliant after merging.\n"
-            "Not yet implemented: --freespace octree|refine, --layers above 1.\n"
+            "Not yet implemented: --layers above 1.\n"
             "\n"
             "Outputs and reports (--timings: read, generate, optimise, write, quality):\n");
     cli_print_output_help(f, 0, 1);
@@ -156,6 +160,10 @@ static void report(FILE *f, cvm_mesh *m)
         {CVM_REPORT_GEN3_NEAR_REJECTED, 1, "near-field points rejected", "%.0f"},
         {CVM_REPORT_GEN3_LATTICE_POINTS, 1, "lattice points", "%.0f"},
         {CVM_REPORT_GEN3_LATTICE_LEVELS, 1, "lattice levels", "%.0f"},
+        {CVM_REPORT_GEN3_OCTREE_LEAVES, 3, "octree leaves", "%.0f"},
+        {CVM_REPORT_GEN3_OCTREE_POINTS, 3, "octree points", "%.0f"},
+        {CVM_REPORT_GEN3_REFINE_POINTS, 4, "refinement points", "%.0f"},
+        {CVM_REPORT_GEN3_REFINE_ROUNDS, 4, "refinement rounds", "%.0f"},
         {CVM_REPORT_GEN3_RECOVERY_DROPPED, 1, "points dropped for recovery", "%.0f"},
         {CVM_REPORT_DUAL3_SWEEPS, 2, "optimiser sweeps", "%.0f"},
         {CVM_REPORT_DUAL3_MOVES, 2, "optimiser moves", "%.0f"},
@@ -179,8 +187,14 @@ static void report(FILE *f, cvm_mesh *m)
         {CVM_MEASURE_RECOVERY_STEINER, 0, "recovery steiner points", "%.0f"},
     };
     size_t i, n;
-    double sw = 0;
+    double sw = 0, leaves = 0, rounds = 0;
+    /* report 2: optimiser rows, shown after an optimisation; 3: octree rows, after an
+     * octree; 4: refinement rows, after a refinement */
     int optimised = cvm_mesh_get_report(&sw, m, CVM_REPORT_DUAL3_SECONDS) == CVM_OK && sw > 0;
+    int octree = cvm_mesh_get_report(&leaves, m, CVM_REPORT_GEN3_OCTREE_LEAVES) == CVM_OK &&
+                 leaves > 0;
+    int refined = cvm_mesh_get_report(&rounds, m, CVM_REPORT_GEN3_REFINE_ROUNDS) == CVM_OK &&
+                  rounds > 0;
     for (i = 0; i < sizeof counts / sizeof counts[0]; i++)
         if (cvm_mesh_count(&n, m, counts[i].kind) == CVM_OK)
             fprintf(f, "%-28s %lu\n", counts[i].label, (unsigned long)n);
@@ -188,7 +202,8 @@ static void report(FILE *f, cvm_mesh *m)
         double v;
         cvm_status s = rows[i].is_report ? cvm_mesh_get_report(&v, m, (cvm_report)rows[i].which)
                                          : cvm_mesh_get_measure(&v, m, (cvm_measure)rows[i].which);
-        if (s != CVM_OK || (rows[i].is_report == 2 && !optimised))
+        if (s != CVM_OK || (rows[i].is_report == 2 && !optimised) ||
+            (rows[i].is_report == 3 && !octree) || (rows[i].is_report == 4 && !refined))
             continue;
         fprintf(f, "%-28s ", rows[i].label);
         fprintf(f, rows[i].fmt, v);
@@ -256,8 +271,10 @@ static int run(margs *a)
     cli_budget_apply(&budget, m);
     cli_phase("generating", a->in);
     gs = sz ? cvm_mesh_generate3_sized(m, a->size, sz) : cvm_mesh_generate3(m, a->size);
-    if (gs != CVM_OK || cli_interrupted())
+    if (cvm_status_is_error(gs) || cli_interrupted())
         return cli_fail(m, sz, a->in);
+    if (gs != CVM_OK)
+        fprintf(stderr, "cvmesh: mesh3: %s\n", cvm_mesh_errmsg(m));
     cvm_sizing_free(sz);
     cli_timing_mark(&a->o, "generate");
     if (a->optimise) {

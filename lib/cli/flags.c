@@ -50,7 +50,7 @@ static const cli_option_flag k_flags[] = {
     {"--time-limit", "SECONDS", CVM_OPT_TIME_LIMIT_S, 0, TRI | REF | OPT | TET | M3 | QUA, "stop the whole command after this time (0: none)"},
     {"--min-angle", "DEG", CVM_OPT_MIN_ANGLE_DEG, 0, REF | OPT, "smallest angle wanted (default 30)"},
     {"--max-area", "A", CVM_OPT_MAX_AREA, 0, REF | OPT, "largest triangle area (0 or negative: none, as in a .poly region)"},
-    {"--max-steiner", "N", CVM_OPT_MAX_STEINER, 0, REF | OPT, "stop after adding N points (0: no limit)"},
+    {"--max-steiner", "N", CVM_OPT_MAX_STEINER, 0, REF | OPT | M3, "stop after adding N points (0: no limit; mesh3: --freespace refine)"},
     {"--lens", NULL, CVM_OPT_ENCROACH_LENS, 1, REF | OPT, "diametral lenses instead of circles"},
     {"--no-march", NULL, CVM_OPT_MARCH_SEGMENTS, 0, REF | OPT,
      "split segments only when encroached (no marching with the size)"},

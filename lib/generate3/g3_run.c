@@ -1,6 +1,6 @@
 /*
  * g3_run.c - the sequence of 3D point generation: size field, inside test,
- * near field, lattice, and (without TetGen) the check that every surface
+ * near field, free space (lattice, octree or refinement), and (without TetGen) the check that every surface
  * triangle stays a Delaunay face.
  */
 #include <string.h>
@@ -38,7 +38,12 @@ cvm_status cvm__g3_generate(cvm__ctx *ctx, const cvm__g3_surface *s, const cvm__
         if ((st = cvm__g3_recover(ctx, s, &Q, seed, rep, bad_face)) == CVM_E_UNSUPPORTED)
             rep->surface_not_delaunay = 1;
     }
-    if (!st)
+    if (!st && p->freespace == CVM_GEN3_FREESPACE_OCTREE)
+        st = cvm__g3_octree(ctx, s, z, p->h, p->octree_balance, in, &P, rep);
+    else if (!st && p->freespace == CVM_GEN3_FREESPACE_REFINE)
+        st = cvm__g3_refine(ctx, s, z, p->h, in, p->refine_max, seed, &P, rep,
+                            &rep->refine_limited);
+    else if (!st)
         st = cvm__g3_lattice(ctx, s, z, p->h, in, &P, rep);
     if (!st && check_faces)
         st = cvm__g3_recover(ctx, s, &P, seed, rep, bad_face);

@@ -8,7 +8,8 @@
  *
  * Files: g3_sizing.c (the size field), g3_grid.c (range queries), g3_inside.c
  * (exact point-in-domain test), g3_near.c (matching and near-field placement),
- * g3_lattice.c (the free-space lattice), g3_recover.c (dropping generated
+ * g3_lattice.c (the free-space lattice), g3_octree.c and g3_refine.c (the
+ * other free-space methods), g3_recover.c (dropping generated
  * points that hide a surface triangle from the Delaunay tetrahedralisation),
  * g3_surface.c (planar facets re-meshed in 2D), g3_run.c (the sequence).
  *
@@ -55,6 +56,9 @@ typedef struct cvm__g3_params {
     int follow_surface; /* 1: size from the surface's triangles; 0: uniform h */
     int layers;         /* near-field layers; only 1 in this version */
     const cvm_sizing *sizing; /* NULL, or a 3D sizing (cvm__sizing_check3 passed) */
+    int freespace;      /* CVM_GEN3_FREESPACE_*: lattice, octree or Delaunay refinement */
+    int octree_balance; /* 6: 2:1 across faces; 26: across faces, edges and corners */
+    size_t refine_max;  /* refinement: at most this many points inserted (0: no limit) */
 } cvm__g3_params;
 
 typedef struct cvm__g3_report {
@@ -67,6 +71,11 @@ typedef struct cvm__g3_report {
     size_t lattice_levels;  /* lattice levels that contributed a point */
     size_t recovery_dropped; /* generated points removed so that every surface triangle is
                                 a face of the Delaunay tetrahedralisation */
+    size_t octree_leaves;   /* leaves of the balanced octree (free space octree) */
+    size_t octree_points;   /* octree centroids kept */
+    size_t refine_points;   /* circumcentres inserted (free space refine) */
+    size_t refine_rounds;   /* rounds of refinement that had candidates */
+    int refine_limited;     /* refinement stopped at the point limit (refine_max) */
     int surface_not_delaunay; /* check_faces: the surface's own points already miss a triangle */
 } cvm__g3_report;
 
@@ -134,6 +143,28 @@ cvm_status cvm__g3_lattice(cvm__ctx *ctx, const cvm__g3_surface *s, const cvm__g
  * measurement, see g3_lattice.c). */
 double cvm__g3_lattice_dm(double hs);
 
+/* ---- g3_octree.c ---- */
+/* Append the free-space octree's centroids to P (see g3_octree.c): the
+ * surface's bounding cube split while an octant's edge exceeds the size at
+ * its centre, 2:1-balanced across faces (balance 6) or faces, edges and
+ * corners (26); a leaf's centroid kept as a lattice point is. CVM_E_TOO_LARGE
+ * past CVM__T3_MAX_POINTS, CVM_E_NOMEM, or a sizing callback's status. */
+cvm_status cvm__g3_octree(cvm__ctx *ctx, const cvm__g3_surface *s, const cvm__g3_size *z,
+                          double h, int balance, const cvm__g3_inside *in, cvm__g3_points *P,
+                          cvm__g3_report *rep);
+
+/* ---- g3_refine.c ---- */
+/* The squared distance from p to the triangle abc (plain doubles). */
+double cvm__g3_tri_dist2(const double *p, const double *a, const double *b, const double *c);
+/* Append the free space by Delaunay refinement to P (see g3_refine.c): rounds
+ * of circumcentres of the tetrahedra of P whose circumradius exceeds the
+ * size, kept by the lattice's rules and away from the surface triangles.
+ * limit: at most this many points (0: none); *limited is 1 when it stopped
+ * the rounds. CVM_E_TOO_LARGE, CVM_E_NOMEM, a kernel or sizing callback status. */
+cvm_status cvm__g3_refine(cvm__ctx *ctx, const cvm__g3_surface *s, const cvm__g3_size *z,
+                          double h, const cvm__g3_inside *in, size_t limit, uint64_t seed,
+                          cvm__g3_points *P, cvm__g3_report *rep, int *limited);
+
 /* ---- g3_recover.c ---- */
 /* Remove generated points (P beyond the first s->np) until every surface
  * triangle is a face of the Delaunay tetrahedralisation of P (at most a few
@@ -164,7 +195,7 @@ cvm_status cvm__g3_remesh_planar(cvm__ctx *ctx, const cvm__g3_surface *s, const 
 void cvm__g3_remeshed_free(cvm__ctx *ctx, cvm__g3_remeshed *r);
 
 /* ---- g3_run.c ---- */
-/* The generated points (near field, then lattice) in *out, without the
+/* The generated points (near field, then free space) in *out, without the
  * surface's points. check_faces: also run cvm__g3_recover (a build without
  * TetGen, whose boundary recovery needs every surface triangle as a Delaunay
  * face). */

@@ -7,7 +7,10 @@ Rows: the unit cube (8 x 8 squares per face) at uniform size 1/8, and at
 1/16 (finer than its surface, which is used as given), the sphere of radius
 0.5 in the box [-2, 2]^3 and the swept NACA 0012 wing slab, both graded from
 their surfaces (size 0.5 and 1.0, grading 0.3); the last three rows again with
---remesh-planar (planar facets re-meshed at the 3D size first).
+--remesh-planar (planar facets re-meshed at the 3D size first); then the first
+four again with each other free-space method (--freespace octree, refine;
+cvmesh only). cvmesh rows also give the % of tetrahedra not compliant after
+merging (`--quality`, exact, CVM_MEASURE_DUAL3_NONCOMPLIANT_PCT).
 Both meshes are measured here by the same numpy code from their .node/.ele
 files: tetrahedra, % whose circumcentre lies outside them (all, and those
 with a face on the boundary; floating point, as CVM_MEASURE 704/705), the
@@ -35,6 +38,12 @@ CASES = [
     ("wing_slab graded remesh-planar", "wing_slab.poly",
      ["--size", "1.0", "--grading", "0.3", "--remesh-planar"]),
 ]
+# Each free-space method on the first four surfaces (cvmesh rows only: the TetGen rows
+# above are the peer at the lattice's density).
+for _fs in ("octree", "refine"):
+    CASES += [(name + " " + _fs, surf, args + ["--freespace", _fs], False)
+              for name, surf, args in CASES[:4]]
+CASES = [c if len(c) == 4 else c + (True,) for c in CASES]
 
 
 def read_mesh(base):
@@ -94,18 +103,22 @@ def main():
         print("# bench_generate3: no %s (tests/bench/run.sh builds it when tetgen.h exists):"
               " cvmesh rows only" % TETGEN)
     tmp = tempfile.mkdtemp(prefix="bench_g3_")
-    for name, surf, args in CASES:
+    for name, surf, args, peer in CASES:
         src = os.path.join(DATA3D, surf)
         base = os.path.join(tmp, "cvm")
-        r = subprocess.run([CLI, "mesh3", src] + args + ["-o", base + ".node", "--timings"],
+        r = subprocess.run([CLI, "mesh3", src] + args + ["-o", base + ".node", "--timings",
+                                                         "--quality"],
                            capture_output=True, text=True)
         if r.returncode != 0:
             print(json.dumps({"case": name, "mesher": "cvmesh", "error": r.stderr.strip()}))
             continue
         t = [float(l.split()[1]) for l in r.stdout.splitlines() if l.startswith("generate:")][0]
+        nc = [float(l.split()[-2]) for l in r.stdout.splitlines()
+              if l.startswith("non-compliant after merging")][0]
         row = measure(*read_mesh(base))
-        print(json.dumps(dict(case=name, mesher="cvmesh mesh3", seconds=round(t, 3), **row)))
-        if os.path.exists(TETGEN):
+        print(json.dumps(dict(case=name, mesher="cvmesh mesh3", seconds=round(t, 3),
+                              noncompliant_after_merge_pct=nc, **row)))
+        if peer and os.path.exists(TETGEN):
             sw = "pq1.414a%.6gQ" % row["mean_volume"]
             tb = os.path.join(tmp, "tg")
             r = subprocess.run([TETGEN, src, sw, tb], capture_output=True, text=True)

@@ -332,9 +332,20 @@ if cmp -s "$OUT/tetra_1.node" "$OUT/tetra_2.node" && cmp -s "$OUT/tetra_1.ele" "
 else
     fail "mesh3: other bytes with 2 threads"
 fi
-expect_exit 1 "mesh3 --freespace octree" "$CLI" mesh3 "$D3/tetra.off" --size 0.5 --freespace octree
-expect_one_line "mesh3 --freespace octree"
-expect_grep "mesh3 --freespace octree" "$TMP/err" "unsupported"
+expect_exit 0 "mesh3 --freespace octree" "$CLI" mesh3 "$D3/tetra.off" --size 0.3 --uniform \
+    --freespace octree --quality -o "$OUT/octree.vtu"
+expect_grep "mesh3 --freespace octree" "$TMP/out" "octree points"
+expect_grep "mesh3 --freespace octree" "$TMP/out" "lattice points               0"
+if [ -s "$OUT/octree.vtu" ]; then pass; else fail "mesh3 --freespace octree wrote no file"; fi
+expect_exit 0 "mesh3 --freespace lattice" "$CLI" mesh3 "$D3/tetra.off" --size 0.3 --uniform --quality
+if grep -q "octree" "$TMP/out"; then fail "mesh3 --freespace lattice reports an octree"; else pass; fi
+expect_exit 0 "mesh3 --freespace refine" "$CLI" mesh3 "$D3/tetra.off" --size 0.3 --uniform \
+    --freespace refine --quality
+expect_grep "mesh3 --freespace refine" "$TMP/out" "refinement points"
+expect_exit 0 "mesh3 --freespace refine --max-steiner" "$CLI" mesh3 "$D3/tetra.off" --size 0.3 \
+    --uniform --freespace refine --max-steiner 5 --quality
+expect_grep "mesh3 --freespace refine --max-steiner" "$TMP/out" "refinement points            5"
+expect_grep "mesh3 --freespace refine --max-steiner" "$TMP/err" "CVM_OPT_MAX_STEINER"
 expect_exit 0 "mesh3 --optimise" "$CLI" mesh3 "$D3/tetra.off" --size 0.3 --optimise --opt-sweeps 3 \
     -o "$OUT/o.vtu" --quality
 expect_grep "mesh3 --optimise" "$TMP/out" "outside before optimising"

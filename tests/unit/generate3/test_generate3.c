@@ -66,10 +66,6 @@ START_TEST(options_and_states_are_checked)
     ck_assert_int_eq(cvm_mesh_generate3(m, 1), CVM_E_UNSUPPORTED);
     ck_assert_ptr_nonnull(strstr(cvm_mesh_errmsg(m), "unsupported"));
     ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_GEN3_LAYERS, 1), CVM_OK);
-    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_GEN3_FREESPACE, CVM_GEN3_FREESPACE_OCTREE),
-                     CVM_OK);
-    ck_assert_int_eq(cvm_mesh_generate3(m, 1), CVM_E_UNSUPPORTED);
-    ck_assert_ptr_nonnull(strstr(cvm_mesh_errmsg(m), "octree"));
     ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_GEN3_GRADING, 0), CVM_E_OPTION_RANGE);
     cvm_mesh_free(m);
     /* internal facets (two regions sharing a face): not in this version */
