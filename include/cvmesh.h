@@ -704,7 +704,7 @@ typedef enum cvm_option {
     /** Threads for parallel stages, integer, 0 = OpenMP default (default), [0, 1024].
      *  Output does not depend on it. Parallel: cvm_mesh_optimise_dual() (its local
      *  problems), the quad mesher's energy, and the point insertion of an unweighted 3D
-     *  Delaunay tetrahedralisation of a point set (from 2^15 points; weighted builds are
+     *  Delaunay tetrahedralisation of a large point set (weighted builds are
      *  serial); 2D triangulation and refinement are serial. */
     CVM_OPT_THREADS = 403,
 

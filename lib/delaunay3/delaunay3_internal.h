@@ -180,7 +180,10 @@ void cvm__tet3_free(cvm__tet3 *T);
  * rounds; the result (as cvm__tet3_copy_tets() writes it) does not depend on
  * it. Points with the same coordinates (and, weighted, the same weight) are
  * merged into the one of lowest index and counted in n_dup; weighted points
- * whose power cell is empty are left out and counted in n_redundant.
+ * whose power cell is empty are left out and counted in n_redundant. With
+ * T->threads other than 1, an unweighted build of at least T->par_min points
+ * inserts in parallel (see the top of this file); everything it reports and
+ * cvm__tet3_copy_tets() writes is the same as with one thread.
  * @return CVM_OK
  *         CVM_E_INPUT_NONFINITE  a coordinate or weight is NaN or infinite (message names the point)
  *         CVM_E_INPUT_DEGENERATE fewer than 4 distinct points, or all collinear or coplanar,
@@ -191,7 +194,7 @@ void cvm__tet3_free(cvm__tet3 *T);
  */
 #define CVM__T3_ETAB 64
 #define CVM__T3_MAX_POINTS ((size_t)60000000)
-#define CVM__T3_PAR_MIN ((size_t)1 << 15) /* default T->par_min */
+#define CVM__T3_PAR_MIN ((size_t)1 << 13) /* default T->par_min */
 #define CVM__T3_HBITS 30                  /* Hilbert index bits of a key */
 cvm_status cvm__tet3_build(cvm__tet3 *T, const double *xyz, const double *w, size_t n,
                            uint64_t seed);
