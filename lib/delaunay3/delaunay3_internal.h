@@ -209,9 +209,11 @@ void cvm__tet3_point_fates(const cvm__tet3 *T, uint8_t *fate_out, int32_t *into_
  * (orientation kept) so that its smallest index comes first and the smallest
  * of the other three second; the list is then sorted lexicographically.
  * Identical input gives identical bytes whatever the seed or insertion order.
+ * With T->threads other than 1 (unweighted) and 8 T->par_min slots or more, the
+ * scatter and the bucket sorts run on that many threads (the same bytes).
  * @return CVM_OK or CVM_E_NOMEM (temporaries: n / 2048 + 2048 counters and a buffer of
  *         the tetrahedra whose first index shares its high bits with the most others,
- *         about 6.75 * 2048 for uniform input). */
+ *         about 6.75 * 2048 for uniform input; each times the threads when parallel). */
 cvm_status cvm__tet3_copy_tets(cvm__tet3 *T, int32_t *dst);
 /* The canonical turn of one tetrahedron used by cvm__tet3_copy_tets(). */
 void cvm__tet3_canonical_turn(int32_t *t);

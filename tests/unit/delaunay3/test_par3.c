@@ -151,7 +151,8 @@ START_TEST(par_duplicates_merge_into_the_lowest_index)
 }
 END_TEST
 
-/* Out of memory at every allocation of a 2-thread build with parallel rounds. */
+/* Out of memory at every allocation of a 2-thread build with parallel rounds
+ * and of its parallel output. */
 START_TEST(par_oom_at_every_allocation)
 {
     const size_t n = 800;
@@ -175,6 +176,13 @@ START_TEST(par_oom_at_every_allocation)
             T.par_min = 128;
             s = cvm__tet3_build(&T, xyz, NULL, n, 3);
             ck_assert_msg(s == CVM_OK || s == CVM_E_NOMEM, "fail at %ld: status %d", at, (int)s);
+            if (s == CVM_OK) { /* the parallel output too (8 par_min slots and more) */
+                int32_t *tets = malloc(4 * T.n_finite * sizeof *tets + 16);
+                ck_assert_ptr_nonnull(tets);
+                s = cvm__tet3_copy_tets(&T, tets);
+                ck_assert(s == CVM_OK || s == CVM_E_NOMEM);
+                free(tets);
+            }
             failed = a.n_failed;
             cvmtest_alloc_arm(&a, 0, 0); /* the store is reusable once memory is back */
             if (s == CVM_E_NOMEM)
