@@ -252,7 +252,7 @@ static cvm_status insert_all(cvm__tet3 *T, uint64_t seed)
         return s;
     /* about 6.5 finite tetrahedra per point for uniform input: reserve once (the
      * threads of a parallel build leave some slots free between them) */
-    s = cvm__tet3_reserve(T, T->np < 1000 ? 64 + 8 * T->np : (T->key ? 15 : 14) * (T->np / 2));
+    s = cvm__tet3_reserve(T, T->np < 1000 ? 64 + 8 * T->np : T->key ? 15 * T->np / 2 : 7 * T->np);
     if (s == CVM_OK)
         s = make_first(T, first);
     T->walk = (UINT64_C(0x9E3779B97F4A7C15) ^ seed) | 1u; /* xorshift needs a nonzero state */
