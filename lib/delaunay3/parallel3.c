@@ -260,7 +260,7 @@ static int par3_insert(cvm__t3_worker *W, int32_t p, const uint8_t *part, uint8_
     if (v[3] != CVM__T3_GHOST) {
         const double *pp = V->pt[p].x;
         int k;
-        for (k = 0; k < 4; k++) { /* (merged ahead; kept as the serial path has it) */
+        for (k = 0; k < 4; k++) { /* (duplicates were merged before: only a guard) */
             const double *q = V->pt[v[k]].x;
             if (q[0] == pp[0] && q[1] == pp[1] && q[2] == pp[2]) {
                 V->merged[p] = v[k];
@@ -312,11 +312,15 @@ static uint8_t par3_part_of(const cvm__t3_par *P, uint64_t key)
     return (uint8_t)(h < P->cut[0] ? P->nt - 1 : j);
 }
 
+/* Is slot s live with x among its vertices (a vertex's recorded tetrahedron
+ * may have been dug out and its slot reused since)? */
 static int par3_holds(const cvm__tet3 *T, int32_t s, int32_t x)
 {
-    const int32_t *v = T->tt + 8 * (size_t)s;
-    return (size_t)s < T->nslot && v[0] != CVM__T3_DEAD
-           && (v[0] == x || v[1] == x || v[2] == x || v[3] == x);
+    const int32_t *v;
+    if (s < 0 || (size_t)s >= T->nslot)
+        return 0;
+    v = T->tt + 8 * (size_t)s;
+    return v[0] != CVM__T3_DEAD && (v[0] == x || v[1] == x || v[2] == x || v[3] == x);
 }
 
 /* An owned finite tetrahedron near point p (of partition me): one made with
@@ -324,7 +328,7 @@ static int par3_holds(const cvm__tet3 *T, int32_t s, int32_t x)
  * the first in slot order. -1 when the partition owns none. Runs before the
  * threads start (it reads slots any of them may write). */
 static int32_t par3_find_start(const cvm__tet3 *T, const cvm__t3_par *P, size_t plo, size_t lo,
-                          int32_t p, uint8_t me)
+                               int32_t p, uint8_t me)
 {
     uint64_t h = T->key[p] & PAR3_HMASK;
     size_t a = plo, b = lo, d, s;
