@@ -35,7 +35,8 @@
  * shared face, which only the owner of the other side ever writes. Slots,
  * free lists and the workspace (a per-thread copy of this struct, sharing its
  * arrays) are handed out before the threads start, so nothing is allocated
- * while they run. The next pass rotates the cuts by half a run; what is left
+ * while they run. The next pass moves the cuts (by half a run, then a
+ * quarter, ...), as the points left wait near the old ones; what is left
  * after a few passes is inserted serially. Duplicate points are merged before
  * insertion, into the lowest input index.
  *
@@ -45,9 +46,10 @@
  * is the Delaunay tetrahedralisation of the points, unique under the
  * perturbation by input index; cvm__tet3_copy_tets() writes it in canonical
  * order. Duplicates are resolved before any insertion, by coordinates and
- * input index only. A thread reads and writes only what it owns (plus the
- * fixed vertex words of cross-partition tetrahedra), so even the store's
- * internal state is a function of the input and the thread count alone.
+ * input index only. A thread reads and writes only what it owns, plus the
+ * vertex words of cross-partition tetrahedra (which no one changes during a
+ * pass) and their neighbour words facing its own tetrahedra, so even the
+ * store's internal state is a function of the input and the thread count.
  *
  * Memory: every allocation goes through the context's allocator; an
  * allocation failure returns CVM_E_NOMEM and leaves a store that
