@@ -704,8 +704,10 @@ typedef enum cvm_option {
      *  (CVM_GEN3_FREESPACE_REFINE). */
     CVM_OPT_MAX_STEINER = 402,
     /** Threads for parallel stages, integer, 0 = OpenMP default (default), [0, 1024].
-     *  Output does not depend on it. In version 0.1 only cvm_mesh_optimise_dual()
-     *  runs in parallel (its local problems); triangulation and refinement are serial. */
+     *  Output does not depend on it. Parallel: cvm_mesh_optimise_dual() (its local
+     *  problems), the quad mesher's energy, and the point insertion of an unweighted 3D
+     *  Delaunay tetrahedralisation of a large point set (weighted builds are
+     *  serial); 2D triangulation and refinement are serial. */
     CVM_OPT_THREADS = 403,
 
     /** Dual optimisation (500..599): read by cvm_mesh_optimise_dual(). */

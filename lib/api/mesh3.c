@@ -200,6 +200,7 @@ static cvm_status tetrahedralise_points(cvm_mesh *m, const double *xyz, const do
     size_t i, k;
     cvm_status s;
     cvm__tet3_init(&T, &m->ctx);
+    T.threads = (int)cvm__opt(m, CVM_OPT_THREADS); /* parallel insertion, same output */
     s = cvm__tet3_build(&T, xyz, w, n, (uint64_t)cvm__opt(m, CVM_OPT_SEED));
     if (!s && T.n_dup && cvm__opt(m, CVM_OPT_REJECT_DUPLICATES) != 0)
         s = cvm__error(&m->ctx, CVM_E_INPUT_DUPLICATE, CVM_ENT_INPUT_POINT, T.dup_first[1],

@@ -136,8 +136,11 @@ static cvm_status make_first(cvm__tet3 *T, int32_t *f)
     cvm__tet3_link_around(T);
     T->nbf = 0;
     T->last = t0;
-    for (k = 0; k < 4; k++)
+    for (k = 0; k < 4; k++) {
         T->fate[f[k]] = CVM__T3_VERTEX;
+        if (T->vtet)
+            T->vtet[f[k]] = t0;
+    }
     return CVM_OK;
 }
 
@@ -175,6 +178,24 @@ static void finish(cvm__tet3 *T)
             T->n_finite++;
 }
 
+/* Exact duplicates: the first of a group to be inserted became its vertex and carried its own
+ * input index into every perturbed decision, so the result could depend on the insertion order
+ * (the seed). Give each group's vertex the group's lowest input index (the points are identical,
+ * so this only renames them) and report whether any changed. */
+static int lowest_index_first(cvm__tet3 *T)
+{
+    size_t i;
+    int any = 0;
+    for (i = 0; i < T->np; i++)
+        if (T->fate[i] == CVM__T3_DUPLICATE && T->orig[i] < T->orig[T->merged[i]]) {
+            int32_t g = T->merged[i], x = T->orig[i];
+            T->orig[i] = T->orig[g];
+            T->orig[g] = x;
+            any = 1;
+        }
+    return any;
+}
+
 static cvm_status alloc_points(cvm__tet3 *T, const double *xyz, const double *w, size_t n,
                                uint64_t seed)
 {
@@ -200,7 +221,13 @@ static cvm_status alloc_points(cvm__tet3 *T, const double *xyz, const double *w,
     T->small_int = w == NULL;
     for (i = 0; i < 3 * n && T->small_int; i++)
         T->small_int = fabs(xyz[i]) <= 256.0 && xyz[i] == (double)(int)xyz[i];
-    s = cvm__tet3_brio_order(ctx, xyz, n, seed, T->orig);
+    if (cvm__tet3_build_threads(T) > 1 && n >= T->par_min) {
+        T->key = cvm__malloc(ctx, n * sizeof *T->key);
+        T->vtet = cvm__malloc(ctx, n * sizeof *T->vtet);
+        if (!T->key || !T->vtet)
+            return CVM_E_NOMEM;
+    }
+    s = cvm__tet3_brio_keys(ctx, xyz, n, seed, T->orig, T->key);
     if (s != CVM_OK)
         return s;
     for (i = 0; i < n; i++) {
@@ -210,25 +237,9 @@ static cvm_status alloc_points(cvm__tet3 *T, const double *xyz, const double *w,
             T->w[i] = w[T->orig[i]];
         T->merged[i] = -1;
     }
-    return CVM_OK;
-}
-
-/* Exact duplicates: the first of a group to be inserted became its vertex and carried its own
- * input index into every perturbed decision, so the result could depend on the insertion order
- * (the seed). Give each group's vertex the group's lowest input index (the points are identical,
- * so this only renames them) and report whether any changed. */
-static int lowest_index_first(cvm__tet3 *T)
-{
-    size_t i;
-    int any = 0;
-    for (i = 0; i < T->np; i++)
-        if (T->fate[i] == CVM__T3_DUPLICATE && T->orig[i] < T->orig[T->merged[i]]) {
-            int32_t g = T->merged[i], x = T->orig[i];
-            T->orig[i] = T->orig[g];
-            T->orig[g] = x;
-            any = 1;
-        }
-    return any;
+    if (T->key && (s = cvm__tet3_merge_duplicates(T)) == CVM_OK)
+        lowest_index_first(T);
+    return s;
 }
 
 /* Insert every pending point in order, from the first tetrahedron. */
@@ -239,11 +250,14 @@ static cvm_status insert_all(cvm__tet3 *T, uint64_t seed)
     cvm_status s = find_first(T, first);
     if (s != CVM_OK)
         return s;
-    /* about 6.5 finite tetrahedra per point for uniform input: reserve once */
-    s = cvm__tet3_reserve(T, T->np < 1000 ? 64 + 8 * T->np : 7 * T->np);
+    /* about 6.5 finite tetrahedra per point for uniform input: reserve once (the
+     * threads of a parallel build leave some slots free between them) */
+    s = cvm__tet3_reserve(T, T->np < 1000 ? 64 + 8 * T->np : T->key ? 15 * T->np / 2 : 7 * T->np);
     if (s == CVM_OK)
         s = make_first(T, first);
     T->walk = (UINT64_C(0x9E3779B97F4A7C15) ^ seed) | 1u; /* xorshift needs a nonzero state */
+    if (s == CVM_OK && T->key)
+        return cvm__tet3_insert_rounds(T);
     for (i = 0; i < T->np && s == CVM_OK; i++)
         if (T->fate[i] == CVM__T3_PENDING)
             s = cvm__tet3_insert(T, (int32_t)i);

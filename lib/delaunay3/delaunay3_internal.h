@@ -22,9 +22,40 @@
  * order: with distinct points the tetrahedralisation is unique, and
  * cvm__tet3_copy_tets() numbers it canonically.
  *
+ * Parallel insertion (parallel3.c, T->threads > 1, unweighted builds): a
+ * BRIO round of at least T->par_min points is cut into T->threads runs of
+ * equal count along its Hilbert order; the Hilbert keys at the cuts split
+ * space into partitions, and every vertex belongs to the partition of its
+ * key. A thread owns the tetrahedra whose finite vertices all lie in its
+ * partition (the ghost belongs to everyone) and inserts the points of its
+ * partition touching only those: a walk or a cavity that meets a tetrahedron
+ * it does not own gives the point up before anything is written, and the
+ * point waits for the next pass. Tetrahedra across partitions stay as they
+ * are; a new tetrahedron links to one by writing the neighbour word of the
+ * shared face, which only the owner of the other side ever writes. Slots,
+ * free lists and the workspace (a per-thread copy of this struct, sharing its
+ * arrays) are handed out before the threads start, so nothing is allocated
+ * while they run. The next pass moves the cuts (by half a run, then a
+ * quarter, ...), as the points left wait near the old ones; what is left
+ * after a few passes is inserted serially. Duplicate points are merged before
+ * insertion, into the lowest input index.
+ *
+ * Why the output does not depend on the thread count: each insertion digs the
+ * whole conflict cavity (a partial one is given up), so every step is a
+ * Bowyer-Watson insertion into a Delaunay tetrahedralisation and the result
+ * is the Delaunay tetrahedralisation of the points, unique under the
+ * perturbation by input index; cvm__tet3_copy_tets() writes it in canonical
+ * order. Duplicates are resolved before any insertion, by coordinates and
+ * input index only. A thread reads and writes only what it owns, plus the
+ * vertex words of cross-partition tetrahedra (which no one changes during a
+ * pass) and their neighbour words facing its own tetrahedra, so even the
+ * store's internal state is a function of the input and the thread count.
+ *
  * Memory: every allocation goes through the context's allocator; an
  * allocation failure returns CVM_E_NOMEM and leaves a store that
- * cvm__tet3_free() releases. Thread-safety: one store per thread; pure C99.
+ * cvm__tet3_free() releases. No allocation happens inside a parallel region.
+ * Thread-safety: one store per call; the threads of a parallel build are its
+ * own (OpenMP; without OpenMP the partitions run one after another). Pure C99.
  */
 #ifndef CVM_DELAUNAY3_INTERNAL_H
 #define CVM_DELAUNAY3_INTERNAL_H
@@ -120,6 +151,17 @@ typedef struct cvm__tet3 {
     int32_t last;     /* a finite tetrahedron made by the last insertion: next walk's start */
     uint64_t walk;    /* xorshift state of the walk's face order (deterministic) */
 
+    /* settings, kept by cvm__tet3_free(): threads of a build (0: OpenMP's default; 1:
+     * serial; the output does not depend on it), and the smallest BRIO round run in
+     * parallel (tests lower it) */
+    int threads;
+    size_t par_min;
+    /* parallel builds only (else NULL): per internal id its insertion key (BRIO round
+     * << 30 | Hilbert index, ascending), and a tetrahedron made when it was inserted
+     * (a walk's start; checked before use, the slot may have been reused) */
+    uint64_t *key;
+    int32_t *vtet;
+
     /* report of the last build, in input indices */
     size_t n_dup;          /* points merged into an identical vertex */
     int64_t dup_first[2];  /* (kept, merged) pair with the smallest merged index, or -1 */
@@ -140,7 +182,10 @@ void cvm__tet3_free(cvm__tet3 *T);
  * rounds; the result (as cvm__tet3_copy_tets() writes it) does not depend on
  * it. Points with the same coordinates (and, weighted, the same weight) are
  * merged into the one of lowest index and counted in n_dup; weighted points
- * whose power cell is empty are left out and counted in n_redundant.
+ * whose power cell is empty are left out and counted in n_redundant. With
+ * T->threads other than 1, an unweighted build of at least T->par_min points
+ * inserts in parallel (see the top of this file); everything it reports and
+ * cvm__tet3_copy_tets() writes is the same as with one thread.
  * @return CVM_OK
  *         CVM_E_INPUT_NONFINITE  a coordinate or weight is NaN or infinite (message names the point)
  *         CVM_E_INPUT_DEGENERATE fewer than 4 distinct points, or all collinear or coplanar,
@@ -151,6 +196,8 @@ void cvm__tet3_free(cvm__tet3 *T);
  */
 #define CVM__T3_ETAB 64
 #define CVM__T3_MAX_POINTS ((size_t)60000000)
+#define CVM__T3_PAR_MIN ((size_t)1 << 13) /* default T->par_min */
+#define CVM__T3_HBITS 30                  /* Hilbert index bits of a key */
 cvm_status cvm__tet3_build(cvm__tet3 *T, const double *xyz, const double *w, size_t n,
                            uint64_t seed);
 
@@ -164,9 +211,11 @@ void cvm__tet3_point_fates(const cvm__tet3 *T, uint8_t *fate_out, int32_t *into_
  * (orientation kept) so that its smallest index comes first and the smallest
  * of the other three second; the list is then sorted lexicographically.
  * Identical input gives identical bytes whatever the seed or insertion order.
+ * With T->threads other than 1 (unweighted) and 8 T->par_min slots or more, the
+ * scatter and the bucket sorts run on that many threads (the same bytes).
  * @return CVM_OK or CVM_E_NOMEM (temporaries: n / 2048 + 2048 counters and a buffer of
  *         the tetrahedra whose first index shares its high bits with the most others,
- *         about 6.75 * 2048 for uniform input). */
+ *         about 6.75 * 2048 for uniform input; each times the threads when parallel). */
 cvm_status cvm__tet3_copy_tets(cvm__tet3 *T, int32_t *dst);
 /* The canonical turn of one tetrahedron used by cvm__tet3_copy_tets(). */
 void cvm__tet3_canonical_turn(int32_t *t);
@@ -194,9 +243,20 @@ void cvm__tet3_link_around(cvm__tet3 *T);
  * slots left over. T->last becomes a finite new tetrahedron. */
 void cvm__tet3_fill_around(cvm__tet3 *T);
 cvm_status cvm__tet3_reserve_hash(cvm__tet3 *T, size_t nfaces);
-/* BRIO rounds, Hilbert order inside each: order[0..n) a permutation of 0..n-1. */
+/* BRIO rounds, Hilbert order inside each: order[0..n) a permutation of 0..n-1.
+ * key, when not NULL, receives the n sorted keys (round << CVM__T3_HBITS | Hilbert index). */
 cvm_status cvm__tet3_brio_order(cvm__ctx *ctx, const double *xyz, size_t n, uint64_t seed,
                                 int32_t *order);
+cvm_status cvm__tet3_brio_keys(cvm__ctx *ctx, const double *xyz, size_t n, uint64_t seed,
+                               int32_t *order, uint64_t *key);
+/* The thread count a build runs with (T->threads resolved; 1 for weighted input). */
+int cvm__tet3_build_threads(const cvm__tet3 *T);
+/* Parallel builds: mark every point with the coordinates of an earlier one (internal
+ * order) a duplicate of the first of its group (CVM_OK or CVM_E_NOMEM). */
+cvm_status cvm__tet3_merge_duplicates(cvm__tet3 *T);
+/* Parallel builds: insert every pending point after the first tetrahedron, round by
+ * round (parallel3.c). CVM_OK or CVM_E_NOMEM. */
+cvm_status cvm__tet3_insert_rounds(cvm__tet3 *T);
 /* Insert internal point p into a store that already has a first tetrahedron. */
 cvm_status cvm__tet3_insert(cvm__tet3 *T, int32_t p);
 

@@ -1,4 +1,6 @@
 /* hilbert3.c - 3D insertion order: biased randomised rounds (BRIO) sorted along a Hilbert curve inside each round. */
+#include <string.h>
+
 #include "delaunay3/delaunay3_internal.h"
 
 #define HILBERT_BITS 10 /* per axis: a 1024^3 grid over the bounding box */
@@ -54,6 +56,12 @@ static uint32_t cell(double c, double lo, double sc)
 cvm_status cvm__tet3_brio_order(cvm__ctx *ctx, const double *xyz, size_t n, uint64_t seed,
                                 int32_t *order)
 {
+    return cvm__tet3_brio_keys(ctx, xyz, n, seed, order, NULL);
+}
+
+cvm_status cvm__tet3_brio_keys(cvm__ctx *ctx, const double *xyz, size_t n, uint64_t seed,
+                               int32_t *order, uint64_t *keep)
+{
     double lo[3], sc[3];
     uint64_t *key;
     cvm__brio b;
@@ -69,11 +77,13 @@ cvm_status cvm__tet3_brio_order(cvm__ctx *ctx, const double *xyz, size_t n, uint
     cvm__brio_init(&b, n, 1024, seed);
     for (i = 0; i < n; i++) {
         const double *p = xyz + 3 * i;
-        key[i] = ((uint64_t)cvm__brio_next_round(&b) << 30)
+        key[i] = ((uint64_t)cvm__brio_next_round(&b) << CVM__T3_HBITS)
                  | hilbert3(cell(p[0], lo[0], sc[0]), cell(p[1], lo[1], sc[1]),
                             cell(p[2], lo[2], sc[2]));
     }
     s = cvm__sort_by_key(ctx, key, order, n, 36);
+    if (s == CVM_OK && keep)
+        memcpy(keep, key, n * sizeof *key);
     cvm__free(ctx, key);
     return s;
 }

@@ -2,40 +2,16 @@
 #include <string.h>
 
 #include "delaunay3/delaunay3_internal.h"
+#include "delaunay3/conflict3.h"
 #include "geom/geom_internal.h"
 
 #define PT(T, v) ((T)->pt[v].x)
+#define T3_HOT CVM__T3_HOT
 #if defined(__GNUC__)
 #define CVM__PREFETCH(p) __builtin_prefetch(p)
-#define T3_HOT inline __attribute__((always_inline))
 #else
 #define CVM__PREFETCH(p) ((void)(p))
-#define T3_HOT inline
 #endif
-
-/* Is p in conflict with the finite tetrahedron of vertices v (circumsphere /
- * orthosphere strictly containing p after symbolic perturbation)? */
-static T3_HOT int finite_conflict(const cvm__tet3 *T, const int32_t *v, int32_t p)
-{
-    const double *a = PT(T, v[0]), *b = PT(T, v[1]), *c = PT(T, v[2]), *d = PT(T, v[3]);
-    const double *e = PT(T, p);
-    const int32_t *o = T->orig;
-    if (T->small_int) { /* lattices: exact in doubles, ties straight to the perturbation */
-        double perm, det = cvm__insphere_fp(a, b, c, d, e, &perm);
-        if (det != 0.0)
-            return det > 0.0;
-        return cvm__sos3d_tie(a, b, c, d, e, o[v[0]], o[v[1]], o[v[2]], o[v[3]], o[p], 1) > 0;
-    }
-    if (!T->w) {
-        double det = cvm__insphere_inline(a, b, c, d, e);
-        if (det != 0.0)
-            return det > 0.0;
-        return cvm__insphere_sos(a, b, c, d, e, o[v[0]], o[v[1]], o[v[2]], o[v[3]], o[p]) > 0;
-    }
-    return cvm__power3d_sos(a, b, c, d, e, T->w[v[0]], T->w[v[1]], T->w[v[2]], T->w[v[3]],
-                            T->w[p], o[v[0]], o[v[1]], o[v[2]], o[v[3]], o[p])
-           > 0;
-}
 
 /* Conflict of p with slot t. A ghost tetrahedron conflicts when p lies
  * strictly beyond its hull face, or in the face's plane and in conflict with
@@ -46,7 +22,7 @@ static T3_HOT int in_conflict(const cvm__tet3 *T, int32_t t, int32_t p)
     int32_t n;
     double o;
     if (v[3] != CVM__T3_GHOST)
-        return finite_conflict(T, v, p);
+        return cvm__t3_finite_conflict(T, v, p);
     o = T->small_int ? cvm__orient3d_fp(PT(T, v[0]), PT(T, v[1]), PT(T, v[2]), PT(T, p))
                      : cvm__orient3d_inline(PT(T, v[0]), PT(T, v[1]), PT(T, v[2]), PT(T, p));
     if (o != 0.0)
@@ -54,7 +30,7 @@ static T3_HOT int in_conflict(const cvm__tet3 *T, int32_t t, int32_t p)
     n = CVM__T3_TN(T, 4 * (size_t)t + 3) >> 2;
     if (T->tmark[n])
         return T->tmark[n] == 1;
-    return finite_conflict(T, T->tt + 8 * (size_t)n, p);
+    return cvm__t3_finite_conflict(T, T->tt + 8 * (size_t)n, p);
 }
 
 /* Visibility walk from T->last to a tetrahedron whose closure holds p, or to
@@ -263,7 +239,7 @@ cvm_status cvm__tet3_insert(cvm__tet3 *T, int32_t p)
                 return CVM_OK;
             }
         }
-        if (T->w && !finite_conflict(T, v, p)) {
+        if (T->w && !cvm__t3_finite_conflict(T, v, p)) {
             T->fate[p] = CVM__T3_REDUNDANT;
             return CVM_OK;
         }
@@ -283,6 +259,8 @@ cvm_status cvm__tet3_insert(cvm__tet3 *T, int32_t p)
         mark_vanished(T, p);
     cvm__tet3_fill_around(T);
     T->fate[p] = CVM__T3_VERTEX;
+    if (T->vtet)
+        T->vtet[p] = T->last;
     return CVM_OK;
 }
 
@@ -381,7 +359,7 @@ static cvm_status dig_constrained(cvm__tet3 *T, int32_t t0, int32_t p)
             if (!wall && T->tmark[u] == 1)
                 continue;
             if (!wall && T->tmark[u] == 0 && T->tt[8 * (size_t)u + 3] != CVM__T3_GHOST
-                && finite_conflict(T, T->tt + 8 * (size_t)u, p)) {
+                && cvm__t3_finite_conflict(T, T->tt + 8 * (size_t)u, p)) {
                 T->tmark[u] = 1;
                 PUSH(T->dead, T->ndead, T->deadcap, u);
                 PUSH(T->stack, nstack, T->stackcap, u);
@@ -611,7 +589,7 @@ cvm_status cvm__tet3_insert_point(cvm__tet3 *T, const double *x, int32_t sos, do
             return CVM_OK;
         }
     }
-    if (T->w && !finite_conflict(T, v, p)) {
+    if (T->w && !cvm__t3_finite_conflict(T, v, p)) {
         *res = CVM__T3_INS_REDUNDANT;
         return CVM_OK;
     }

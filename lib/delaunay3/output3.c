@@ -2,6 +2,10 @@
 #include <stdlib.h>
 #include <string.h>
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 #include "delaunay3/delaunay3_internal.h"
 
 /* Turn t[4] by an even permutation (orientation kept): smallest first, then
@@ -104,6 +108,97 @@ static void sort_runs(int32_t *dst, size_t nt)
     }
 }
 
+/* The first canonical index of the finite tetrahedron in slot i, or -1. */
+static int32_t first_index(const cvm__tet3 *T, size_t i)
+{
+    const int32_t *v = T->tt + 8 * i, *out = T->outid;
+    int32_t a, b;
+    if (v[0] == CVM__T3_DEAD || v[3] == CVM__T3_GHOST)
+        return -1;
+    a = out[v[0]] < out[v[1]] ? out[v[0]] : out[v[1]];
+    b = out[v[2]] < out[v[3]] ? out[v[2]] : out[v[3]];
+    return a < b ? a : b;
+}
+
+/* cvm__tet3_copy_tets() on nt threads: each counts and scatters a run of
+ * slots (into its own part of every bucket), then the buckets are sorted in
+ * parallel. The order inside a bucket before its sort depends on the runs,
+ * the sorted order does not (the sort key is total). */
+static cvm_status copy_tets_parallel(cvm__tet3 *T, int32_t *dst, int nt)
+{
+    size_t nhigh = (T->np >> LOW_BITS) + 1, sum = 0, big = 0, h;
+    size_t *cnt = cvm__calloc(T->ctx, (size_t)nt * nhigh, sizeof *cnt), *end, *low = NULL;
+    int32_t *buf = NULL;
+    long b, nb = (long)nhigh;
+    int t;
+    end = cvm__malloc(T->ctx, nhigh * sizeof *end);
+    if (!cnt || !end)
+        goto nomem;
+#ifdef _OPENMP
+#pragma omp parallel for schedule(static, 1) num_threads(nt)
+#endif
+    for (t = 0; t < nt; t++) {
+        size_t i, *c = cnt + (size_t)t * nhigh;
+        for (i = T->nslot * (size_t)t / (size_t)nt; i < T->nslot * (size_t)(t + 1) / (size_t)nt; i++) {
+            int32_t f = first_index(T, i);
+            if (f >= 0)
+                c[(size_t)f >> LOW_BITS]++;
+        }
+    }
+    for (h = 0; h < nhigh; h++) { /* bucket h: thread 0's part, thread 1's, ... */
+        size_t lo = sum;
+        for (t = 0; t < nt; t++) {
+            size_t c = cnt[(size_t)t * nhigh + h];
+            cnt[(size_t)t * nhigh + h] = sum;
+            sum += c;
+        }
+        end[h] = sum;
+        big = sum - lo > big ? sum - lo : big;
+    }
+    buf = cvm__malloc(T->ctx, (size_t)nt * (4 * big + 1) * sizeof *buf);
+    low = cvm__malloc(T->ctx, ((size_t)nt << LOW_BITS) * sizeof *low);
+    if (!buf || !low)
+        goto nomem;
+#ifdef _OPENMP
+#pragma omp parallel for schedule(static, 1) num_threads(nt)
+#endif
+    for (t = 0; t < nt; t++) {
+        size_t i, *c = cnt + (size_t)t * nhigh;
+        int32_t o[4];
+        for (i = T->nslot * (size_t)t / (size_t)nt; i < T->nslot * (size_t)(t + 1) / (size_t)nt; i++)
+            if (canonical_tet(T, i, o))
+                memcpy(dst + 4 * c[(size_t)o[0] >> LOW_BITS]++, o, sizeof o);
+    }
+#ifdef _OPENMP
+#pragma omp parallel for schedule(dynamic, 16) num_threads(nt)
+#endif
+    for (b = 0; b < nb; b++) {
+        size_t lo = b > 0 ? end[b - 1] : 0, hi = end[b];
+#ifdef _OPENMP
+        int me = omp_get_thread_num();
+#else
+        int me = 0;
+#endif
+        int32_t *mine = buf + (size_t)me * (4 * big + 1);
+        if (hi - lo < 2)
+            continue;
+        sort_low(dst + 4 * lo, mine, hi - lo, low + ((size_t)me << LOW_BITS));
+        sort_runs(mine, hi - lo);
+        memcpy(dst + 4 * lo, mine, 4 * (hi - lo) * sizeof *mine);
+    }
+    cvm__free(T->ctx, cnt);
+    cvm__free(T->ctx, end);
+    cvm__free(T->ctx, buf);
+    cvm__free(T->ctx, low);
+    return CVM_OK;
+nomem:
+    cvm__free(T->ctx, cnt);
+    cvm__free(T->ctx, end);
+    cvm__free(T->ctx, buf);
+    cvm__free(T->ctx, low);
+    return cvm__nomem(T->ctx);
+}
+
 /* Two-level sort on the first vertex: the buckets of its high bits are
  * counted first (the first canonical index is the smallest), then each
  * tetrahedron is written in canonical form straight into its bucket of dst
@@ -112,21 +207,19 @@ static void sort_runs(int32_t *dst, size_t nt)
 cvm_status cvm__tet3_copy_tets(cvm__tet3 *T, int32_t *dst)
 {
     size_t nhigh = (T->np >> LOW_BITS) + 1, i, sum = 0, big = 0;
-    const int32_t *out = T->outid;
     size_t *start, *low;
     int32_t *buf = NULL, o[4];
+    int nt = cvm__tet3_build_threads(T);
+    if (nt > 1 && T->nslot >= 8 * T->par_min)
+        return copy_tets_parallel(T, dst, nt);
     start = cvm__calloc(T->ctx, nhigh + 1, sizeof *start);
     low = cvm__malloc(T->ctx, ((size_t)1 << LOW_BITS) * sizeof *low);
     if (!start || !low)
         goto nomem;
     for (i = 0; i < T->nslot; i++) {
-        const int32_t *v = T->tt + 8 * i;
-        int32_t a, b;
-        if (v[0] == CVM__T3_DEAD || v[3] == CVM__T3_GHOST)
-            continue;
-        a = out[v[0]] < out[v[1]] ? out[v[0]] : out[v[1]];
-        b = out[v[2]] < out[v[3]] ? out[v[2]] : out[v[3]];
-        start[(size_t)(a < b ? a : b) >> LOW_BITS]++;
+        int32_t f = first_index(T, i);
+        if (f >= 0)
+            start[(size_t)f >> LOW_BITS]++;
     }
     for (i = 0; i <= nhigh; i++) {
         size_t c = start[i];

@@ -7,6 +7,8 @@ void cvm__tet3_init(cvm__tet3 *T, cvm__ctx *ctx)
 {
     memset(T, 0, sizeof *T);
     T->ctx = ctx;
+    T->threads = 1;
+    T->par_min = CVM__T3_PAR_MIN;
     T->last = -1;
     T->dup_first[0] = T->dup_first[1] = -1;
     T->redundant_first = -1;
@@ -15,6 +17,8 @@ void cvm__tet3_init(cvm__tet3 *T, cvm__ctx *ctx)
 void cvm__tet3_free(cvm__tet3 *T)
 {
     cvm__ctx *ctx = T->ctx;
+    size_t par_min;
+    int threads;
     cvm__free(ctx, T->pt);
     cvm__free(ctx, T->w);
     cvm__free(ctx, T->orig);
@@ -34,7 +38,11 @@ void cvm__tet3_free(cvm__tet3 *T)
     cvm__free(ctx, T->etab);
     cvm__free(ctx, T->vseen);
     cvm__free(ctx, T->vkeep);
+    cvm__free(ctx, T->key);
+    cvm__free(ctx, T->vtet);
+    threads = T->threads, par_min = T->par_min;
     cvm__tet3_init(T, ctx);
+    T->threads = threads, T->par_min = par_min; /* settings, not contents */
 }
 
 /* Grow the two per-slot arrays together to ncap slots. */
@@ -249,7 +257,8 @@ void cvm__tet3_fill_around(cvm__tet3 *T)
         v[4 + f] = out;
         tt[(size_t)out + ((size_t)out & ~(size_t)3) + 4] = 4 * nt + f;
         tmark[nt] = 0;
-        tmark[out >> 2] = 0;
+        if (tmark[out >> 2]) /* a tetrahedron another thread may also border stays unwritten */
+            tmark[out >> 2] = 0;
         b->tet = nt;
         last = v[3] != CVM__T3_GHOST ? nt : last;
         if (small)

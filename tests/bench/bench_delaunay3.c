@@ -1,12 +1,13 @@
 /*
  * bench_delaunay3.c - times the 3D engine (lib/delaunay3) on one point file.
- * Usage: bench_delaunay3 POINTS.bin REPS
+ * Usage: bench_delaunay3 POINTS.bin REPS [THREADS]
  * POINTS.bin holds n * 3 doubles (x y z per point, native byte order). Prints
  * one JSON object: median wall and CPU seconds of REPS builds (build plus
  * canonical output, as a caller would get it), median CPU seconds of the
  * build alone (cpu_build), finite tetrahedra, peak heap
  * bytes through a counting allocator, and the status of cvm__tet3_check() on
- * the last run (speed on a wrong mesh does not count).
+ * the last run (speed on a wrong mesh does not count). THREADS (default 1) is
+ * the build's thread count (cvm__tet3.threads; 0: OpenMP's default).
  * The engine has no public handle yet, so this driver includes its internal
  * header and links the static library.
  */
@@ -84,12 +85,14 @@ int main(int argc, char **argv)
     long bytes;
     size_t n, nt = 0;
     double *xyz, wall[64], cpu[64], cpu_build[64];
-    int reps, r, check = -1;
+    int reps, r, check = -1, threads = 1;
     counter cnt = { 0, 0 };
-    if (argc != 3 || !(f = fopen(argv[1], "rb"))) {
-        fprintf(stderr, "usage: bench_delaunay3 POINTS.bin REPS\n");
+    if ((argc != 3 && argc != 4) || !(f = fopen(argv[1], "rb"))) {
+        fprintf(stderr, "usage: bench_delaunay3 POINTS.bin REPS [THREADS]\n");
         return 2;
     }
+    if (argc == 4)
+        threads = atoi(argv[3]);
     reps = atoi(argv[2]);
     reps = reps < 1 ? 1 : reps > 64 ? 64 : reps;
     fseek(f, 0, SEEK_END);
@@ -112,6 +115,7 @@ int main(int argc, char **argv)
         ctx.alloc_fn = count_malloc, ctx.realloc_fn = count_realloc, ctx.free_fn = count_free;
         ctx.payload = &cnt;
         cvm__tet3_init(&T, &ctx);
+        T.threads = threads;
         w0 = clock_s(CLOCK_MONOTONIC), c0 = clock_s(CLOCK_PROCESS_CPUTIME_ID);
         s = cvm__tet3_build(&T, xyz, NULL, n, 1);
         cpu_build[r] = clock_s(CLOCK_PROCESS_CPUTIME_ID) - c0;
@@ -135,9 +139,9 @@ int main(int argc, char **argv)
     qsort(wall, (size_t)reps, sizeof *wall, cmp_double);
     qsort(cpu, (size_t)reps, sizeof *cpu, cmp_double);
     qsort(cpu_build, (size_t)reps, sizeof *cpu_build, cmp_double);
-    printf("{\"n\": %zu, \"wall\": %.4f, \"cpu\": %.4f, \"cpu_build\": %.4f, \"tets\": %zu, "
+    printf("{\"n\": %zu, \"threads\": %d, \"wall\": %.4f, \"cpu\": %.4f, \"cpu_build\": %.4f, \"tets\": %zu, "
            "\"peak_bytes\": %zu, \"check\": %d}\n",
-           n, wall[reps / 2], cpu[reps / 2], cpu_build[reps / 2], nt, cnt.peak, check);
+           n, threads, wall[reps / 2], cpu[reps / 2], cpu_build[reps / 2], nt, cnt.peak, check);
     free(xyz);
     return check == CVM_OK ? 0 : 1;
 }

@@ -34,6 +34,8 @@ canonical sorted output (TetGen's time always includes its output arrays). qhull
 (default 2e5; it took 93 s for 1e6 here). B/tet: cvmesh's peak heap through a
 counting allocator (points, store, workspace and output); TetGen's growth of
 the peak RSS during its run. Every cvmesh row passes cvm__tet3_check().
+wall_2t / cpu_2t: cvmesh built with 2 threads (parallel insertion, the same
+tetrahedra); speedup = wall_cvm / wall_2t (CVM_BENCH3_THREADS=0 leaves it out).
 """
 import json, os, subprocess, sys, tempfile, time
 import numpy as np
@@ -47,6 +49,7 @@ BIG = os.environ.get("CVM_BENCH3_BIG", "1") != "0"
 GMSH_MAX = int(float(os.environ.get("CVM_BENCH3_GMSH_MAX", "2e6")))
 HXT_MAX = int(float(os.environ.get("CVM_BENCH3_HXT_MAX", "1e6")))
 NO_GMSH = os.environ.get("CVM_BENCH_NO_GMSH", "0") == "1"
+THREADS2 = os.environ.get("CVM_BENCH3_THREADS", "1") != "0"
 CVM = os.path.join(BUILD, "bench", "bench_delaunay3")
 TETGEN = os.path.join(BUILD, "bench", "bench_tetgen3")
 
@@ -74,8 +77,9 @@ def cases():
         yield "bcc_perturbed_1e-9", lat + 1e-9 * (rng.random(lat.shape) - 0.5), 1
 
 
-def run(binary, path, reps):
-    r = subprocess.run([binary, path, str(reps)], capture_output=True, text=True)
+def run(binary, path, reps, *extra):
+    r = subprocess.run([binary, path, str(reps)] + [str(x) for x in extra],
+                       capture_output=True, text=True)
     if r.returncode != 0:
         raise SystemExit("%s failed on %s: %s %s" % (binary, path, r.stdout, r.stderr))
     return json.loads(r.stdout)
@@ -168,26 +172,30 @@ def main():
         print("# TetGen driver not built (no /usr/include/tetgen.h or no C++ compiler): its columns are -")
     if not use_gmsh:
         print("# gmsh not importable (or CVM_BENCH_NO_GMSH=1): its columns are -")
-    print("%-20s %8s %4s %8s %8s %8s %8s %8s %8s %8s %8s %8s %8s %8s %8s %8s %8s %8s %8s %9s %9s %7s %7s" % (
+    print("%-20s %8s %4s %8s %8s %8s %8s %8s %8s %8s %8s %8s %8s %8s %8s %8s %8s %8s %8s %8s %8s %8s %9s %9s %7s %7s" % (
         "case", "n", "reps", "cpu_cvm", "cpu_tg", "ratio", "build", "b_ratio", "wall_cvm",
-        "wall_tg", "wall_g1", "gmsh1", "wall_g2", "gmsh2", "hxt1", "hx_r1", "hxt2", "hx_r2", "cpu_qh", "tets_cvm", "tets_tg",
-        "B/t_cvm", "B/t_tg"))
+        "wall_tg", "wall_2t", "cpu_2t", "speedup", "wall_g1", "gmsh1", "wall_g2", "gmsh2",
+        "hxt1", "hx_r1", "hxt2", "hx_r2", "cpu_qh", "tets_cvm", "tets_tg", "B/t_cvm", "B/t_tg"))
     for name, pts, reps in cases():
         pts = np.ascontiguousarray(pts, dtype=np.float64)
         path = os.path.join(tmp, "pts.bin")
         pts.tofile(path)
         c = run(CVM, path, reps)
         t = run(TETGEN, path, reps) if have_tetgen else None
+        c2 = run(CVM, path, reps, 2) if THREADS2 else None
+        if c2 and c2["tets"] != c["tets"]:
+            raise SystemExit("2 threads made %d tetrahedra, 1 thread %d" % (c2["tets"], c["tets"]))
         g1 = gmsh_time(path, 1) if use_gmsh and len(pts) <= GMSH_MAX else None
         g2 = gmsh_time(path, 2) if use_gmsh and len(pts) <= GMSH_MAX else None
         h1 = hxt_core_time(path, 1) if use_gmsh and len(pts) <= HXT_MAX else None
         h2 = hxt_core_time(path, 2) if use_gmsh and len(pts) <= HXT_MAX else None
         q = qhull_time(pts) if len(pts) <= QHULL_MAX else None
         fmt = lambda x, f="%8.3f": (f % x) if x is not None else "%8s" % "-"
-        print("%-20s %8d %4d %s %s %s %s %s %s %s %s %s %s %s %s %s %s %s %s %9d %9s %7.0f %7s" % (
+        print("%-20s %8d %4d %s %s %s %s %s %s %s %s %s %s %s %s %s %s %s %s %s %s %s %9d %9s %7.0f %7s" % (
             name, len(pts), reps, fmt(c["cpu"]), fmt(t and t["cpu"]),
             fmt(t and c["cpu"] / t["cpu"]), fmt(c["cpu_build"]),
             fmt(t and c["cpu_build"] / t["cpu"]), fmt(c["wall"]), fmt(t and t["wall"]),
+            fmt(c2 and c2["wall"]), fmt(c2 and c2["cpu"]), fmt(c2 and c["wall"] / c2["wall"]),
             fmt(g1 and g1[0]), fmt(g1 and c["wall"] / g1[0]),
             fmt(g2 and g2[0]), fmt(g2 and c["wall"] / g2[0]),
             fmt(h1), fmt(h1 and c["cpu_build"] / h1), fmt(h2), fmt(h2 and c["cpu_build"] / h2),

@@ -188,6 +188,39 @@ START_TEST(bcc_lattice_is_tetrahedralised_exactly)
 }
 END_TEST
 
+/* CVM_OPT_THREADS 1, 2, 4 (parallel insertion from 2^13 points) give the same
+ * bytes, duplicates included. */
+START_TEST(output_does_not_depend_on_the_thread_count)
+{
+    size_t n = 20000, nt[3], i;
+    double *p = random_points(n, 8);
+    cvm_index *t[3];
+    cvm_mesh *m;
+    int k;
+    for (i = 0; i < 200; i++) /* exact duplicates, some listed before their twin */
+        memcpy(p + 3 * (i * 97 % n), p + 3 * (i * 31 % n + 1), 3 * sizeof *p);
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_points(m, p, n, 3), CVM_OK);
+    for (k = 0; k < 3; k++) {
+        ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_THREADS, k == 0 ? 1 : 2 * k), CVM_OK);
+        ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+        ck_assert_int_eq(cvm_mesh_check(m), CVM_OK);
+        ck_assert_int_eq(cvm_mesh_count(&nt[k], m, CVM_ENT_TETRAHEDRON), CVM_OK);
+        t[k] = malloc(4 * nt[k] * sizeof *t[k]);
+        ck_assert_ptr_nonnull(t[k]);
+        ck_assert_int_eq(cvm_mesh_copy_cells(t[k], 4 * nt[k], m, CVM_ENT_TETRAHEDRON), CVM_OK);
+    }
+    for (k = 1; k < 3; k++) {
+        ck_assert_uint_eq(nt[k], nt[0]);
+        ck_assert(memcmp(t[k], t[0], 4 * nt[0] * sizeof *t[0]) == 0);
+    }
+    for (k = 0; k < 3; k++)
+        free(t[k]);
+    free(p);
+    cvm_mesh_free(m);
+}
+END_TEST
+
 /* The same input gives the same bytes, whatever the seed. */
 START_TEST(output_does_not_depend_on_the_seed)
 {
@@ -526,6 +559,7 @@ TCase *api_mesh3_tcase(void)
     tcase_add_test(tc, random_points_give_an_exact_delaunay_ball);
     tcase_add_test(tc, bcc_lattice_is_tetrahedralised_exactly);
     tcase_add_test(tc, output_does_not_depend_on_the_seed);
+    tcase_add_test(tc, output_does_not_depend_on_the_thread_count);
     tcase_add_test(tc, duplicates_merge_and_degenerate_input_is_refused);
     tcase_add_test(tc, weights_give_a_regular_tetrahedralisation);
     tcase_add_test(tc, two_dimensional_calls_are_refused_on_a_3d_mesh);

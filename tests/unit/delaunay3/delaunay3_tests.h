@@ -11,6 +11,7 @@ TCase *delaunay3_build_tcase(void);    /* test_build3.c: random, lattices, spher
 TCase *delaunay3_input_tcase(void);    /* test_input3.c: duplicates, degenerate and bad input, check */
 TCase *delaunay3_weighted_tcase(void); /* test_weighted3.c: regular tetrahedralisation */
 TCase *delaunay3_oom_tcase(void);      /* test_oom3.c: out of memory at every allocation */
+TCase *delaunay3_par_tcase(void);      /* test_par3.c: parallel insertion, same output for any thread count */
 
 /* Build (weights w may be NULL) on a fresh store over ctx, assert CVM_OK and
  * that cvm__tet3_check() passes; returns the canonical tetrahedra (caller

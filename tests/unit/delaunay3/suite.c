@@ -9,5 +9,6 @@ Suite *delaunay3_suite(void)
     suite_add_tcase(s, delaunay3_input_tcase());
     suite_add_tcase(s, delaunay3_weighted_tcase());
     suite_add_tcase(s, delaunay3_oom_tcase());
+    suite_add_tcase(s, delaunay3_par_tcase());
     return s;
 }

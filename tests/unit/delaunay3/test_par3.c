@@ -1,0 +1,211 @@
+/* test_par3.c - parallel insertion: 1, 2, 3 and 4 threads give the same bytes, the same point fates and a valid store. */
+#include <stdlib.h>
+#include <string.h>
+
+#include "delaunay3/delaunay3_tests.h"
+#include "support/failing_alloc.h"
+
+/* What a build hands out, to compare across thread counts. */
+typedef struct par3_out {
+    int32_t *tets;
+    size_t nt;
+    uint8_t *fate;
+    int32_t *into;
+    size_t n_dup;
+    int64_t dup_first[2];
+} par3_out;
+
+static par3_out build_with(const double *xyz, size_t n, int threads, size_t par_min, uint64_t seed,
+                           int check)
+{
+    par3_out o;
+    cvm__ctx ctx;
+    cvm__tet3 T;
+    cvm_status s;
+    cvm__ctx_init_default(&ctx);
+    cvm__tet3_init(&T, &ctx);
+    T.threads = threads;
+    T.par_min = par_min;
+    s = cvm__tet3_build(&T, xyz, NULL, n, seed);
+    ck_assert_msg(s == CVM_OK, "%d threads: status %d: %s", threads, (int)s, ctx.errmsg);
+    s = check ? cvm__tet3_check(&T) : CVM_OK;
+    ck_assert_msg(s == CVM_OK, "%d threads: check: %s", threads, ctx.errmsg);
+    o.nt = T.n_finite;
+    o.tets = malloc(4 * (o.nt + 1) * sizeof *o.tets);
+    o.fate = malloc(n);
+    o.into = malloc(n * sizeof *o.into);
+    ck_assert(o.tets && o.fate && o.into);
+    ck_assert_int_eq(cvm__tet3_copy_tets(&T, o.tets), CVM_OK);
+    cvm__tet3_point_fates(&T, o.fate, o.into);
+    o.n_dup = T.n_dup;
+    o.dup_first[0] = T.dup_first[0], o.dup_first[1] = T.dup_first[1];
+    cvm__tet3_free(&T);
+    return o;
+}
+
+static void out_free(par3_out *o)
+{
+    free(o->tets);
+    free(o->fate);
+    free(o->into);
+}
+
+/* Threads 1 (the serial path), 2, 4 and, when odd, 3 (parallel rounds from
+ * par_min points) give byte-identical tetrahedra, identical fates and
+ * duplicate reports, and a store that passes cvm__tet3_check(). */
+static void same_for_every_thread_count(const double *xyz, size_t n, size_t par_min, int odd)
+{
+    static const int counts[] = { 2, 4, 3 };
+    par3_out ref = build_with(xyz, n, 1, par_min, 5, 1);
+    int i;
+    for (i = 0; i < (odd ? 3 : 2); i++) {
+        int k = counts[i];
+        par3_out o = build_with(xyz, n, k, par_min, 5, 1);
+        ck_assert_msg(o.nt == ref.nt, "%d threads: %zu tetrahedra, 1 thread %zu", k, o.nt, ref.nt);
+        ck_assert_msg(memcmp(o.tets, ref.tets, 4 * o.nt * sizeof *o.tets) == 0,
+                      "%d threads: other tetrahedra", k);
+        ck_assert(memcmp(o.fate, ref.fate, n) == 0);
+        ck_assert(memcmp(o.into, ref.into, n * sizeof *o.into) == 0);
+        ck_assert_uint_eq(o.n_dup, ref.n_dup);
+        ck_assert(o.dup_first[0] == ref.dup_first[0] && o.dup_first[1] == ref.dup_first[1]);
+        out_free(&o);
+    }
+    out_free(&ref);
+}
+
+START_TEST(par_uniform_same_bytes_for_1_2_4_threads)
+{
+    const size_t n = 200000;
+    double *xyz = malloc(3 * n * sizeof *xyz);
+    par3_out a, b, c;
+    ck_assert_ptr_nonnull(xyz);
+    d3test_random(xyz, n, 71);
+    a = build_with(xyz, n, 1, CVM__T3_PAR_MIN, 5, 0); /* (the serial path has its own tests) */
+    b = build_with(xyz, n, 2, CVM__T3_PAR_MIN, 5, 1);
+    c = build_with(xyz, n, 4, CVM__T3_PAR_MIN, 5, 1);
+    ck_assert(a.nt == b.nt && a.nt == c.nt);
+    ck_assert(memcmp(a.tets, b.tets, 4 * a.nt * sizeof *a.tets) == 0);
+    ck_assert(memcmp(a.tets, c.tets, 4 * a.nt * sizeof *a.tets) == 0);
+    out_free(&a);
+    out_free(&b);
+    out_free(&c);
+    free(xyz);
+}
+END_TEST
+
+START_TEST(par_small_rounds_many_passes)
+{
+    const size_t n = 10000;
+    double *xyz = malloc(3 * n * sizeof *xyz);
+    ck_assert_ptr_nonnull(xyz);
+    d3test_random(xyz, n, 72);
+    same_for_every_thread_count(xyz, n, 256, 1);
+    free(xyz);
+}
+END_TEST
+
+START_TEST(par_bcc_exact_and_perturbed)
+{
+    double *xyz = malloc(3 * 22 * 22 * 22 * 2 * sizeof *xyz), *jit;
+    size_t n, i;
+    ck_assert_ptr_nonnull(xyz);
+    n = d3test_bcc(xyz, 22);
+    same_for_every_thread_count(xyz, n, 2048, 0); /* every point co-spherical with 7 others */
+    jit = malloc(3 * n * sizeof *jit);
+    ck_assert_ptr_nonnull(jit);
+    d3test_random(jit, n, 73);
+    for (i = 0; i < 3 * n; i++)
+        xyz[i] += 1e-9 * (jit[i] - 0.5);
+    same_for_every_thread_count(xyz, n, 2048, 0);
+    free(jit);
+    free(xyz);
+}
+END_TEST
+
+START_TEST(par_duplicates_merge_into_the_lowest_index)
+{
+    const size_t base = 10000, n = 15000;
+    double *xyz = malloc(3 * n * sizeof *xyz);
+    uint64_t s = 99;
+    size_t i;
+    ck_assert_ptr_nonnull(xyz);
+    d3test_random(xyz, n, 74);
+    /* points base.. copy random earlier ones, and each copy then swaps places with a
+     * random point, so a group's lowest index is anywhere in the input */
+    for (i = base; i < n; i++) {
+        size_t j, k;
+        double t[3];
+        s = s * 6364136223846793005u + 1442695040888963407u;
+        j = (size_t)(s >> 33) % i;
+        memcpy(xyz + 3 * i, xyz + 3 * j, sizeof t);
+        s = s * 6364136223846793005u + 1442695040888963407u;
+        k = (size_t)(s >> 33) % (i + 1);
+        memcpy(t, xyz + 3 * k, sizeof t);
+        memcpy(xyz + 3 * k, xyz + 3 * i, sizeof t);
+        memcpy(xyz + 3 * i, t, sizeof t);
+    }
+    xyz[3 * 17] = -0.0, xyz[3 * 17 + 1] = 0.5, xyz[3 * 17 + 2] = 0.5; /* -0 duplicates +0 */
+    xyz[3 * 18] = 0.0, xyz[3 * 18 + 1] = 0.5, xyz[3 * 18 + 2] = 0.5;
+    same_for_every_thread_count(xyz, n, 1024, 1);
+    free(xyz);
+}
+END_TEST
+
+/* Out of memory at every allocation of a 2-thread build with parallel rounds
+ * and of its parallel output. */
+START_TEST(par_oom_at_every_allocation)
+{
+    const size_t n = 800;
+    double xyz[3 * 800];
+    long at;
+    int persistent;
+    d3test_random(xyz, n, 75);
+    for (persistent = 0; persistent < 2; persistent++)
+        for (at = 1;; at++) {
+            cvmtest_alloc a;
+            cvm__ctx ctx;
+            cvm__tet3 T;
+            cvm_status s;
+            long failed;
+            cvmtest_alloc_init(&a, at, persistent);
+            cvm__ctx_init_default(&ctx);
+            ctx.alloc_fn = cvmtest_malloc, ctx.realloc_fn = cvmtest_realloc;
+            ctx.free_fn = cvmtest_free, ctx.payload = &a;
+            cvm__tet3_init(&T, &ctx);
+            T.threads = 2;
+            T.par_min = 128;
+            s = cvm__tet3_build(&T, xyz, NULL, n, 3);
+            ck_assert_msg(s == CVM_OK || s == CVM_E_NOMEM, "fail at %ld: status %d", at, (int)s);
+            if (s == CVM_OK) { /* the parallel output too (8 par_min slots and more) */
+                int32_t *tets = malloc(4 * T.n_finite * sizeof *tets + 16);
+                ck_assert_ptr_nonnull(tets);
+                s = cvm__tet3_copy_tets(&T, tets);
+                ck_assert(s == CVM_OK || s == CVM_E_NOMEM);
+                free(tets);
+            }
+            failed = a.n_failed;
+            cvmtest_alloc_arm(&a, 0, 0); /* the store is reusable once memory is back */
+            if (s == CVM_E_NOMEM)
+                ck_assert_int_eq(cvm__tet3_build(&T, xyz, NULL, n, 3), CVM_OK);
+            ck_assert_int_eq(cvm__tet3_check(&T), CVM_OK);
+            cvm__tet3_free(&T);
+            ck_assert_int_eq(a.live_blocks, 0);
+            if (failed == 0) {
+                ck_assert(s == CVM_OK);
+                break;
+            }
+        }
+}
+END_TEST
+
+TCase *delaunay3_par_tcase(void)
+{
+    TCase *tc = tcase_create("par3");
+    tcase_set_timeout(tc, 120);
+    tcase_add_test(tc, par_uniform_same_bytes_for_1_2_4_threads);
+    tcase_add_test(tc, par_small_rounds_many_passes);
+    tcase_add_test(tc, par_bcc_exact_and_perturbed);
+    tcase_add_test(tc, par_duplicates_merge_into_the_lowest_index);
+    tcase_add_test(tc, par_oom_at_every_allocation);
+    return tc;
+}
