@@ -63,12 +63,24 @@ static uint64_t par3_coord_bits(double c)
     return u;
 }
 
+/* splitmix64's finaliser: every input bit reaches every output bit, which
+ * coordinates need (small integers and short binary fractions have their
+ * low mantissa bits all zero). */
+static uint64_t par3_mix(uint64_t z)
+{
+    z ^= z >> 30;
+    z *= UINT64_C(0xBF58476D1CE4E5B9);
+    z ^= z >> 27;
+    z *= UINT64_C(0x94D049BB133111EB);
+    return z ^ (z >> 31);
+}
+
 static size_t par3_coord_hash(const double *x, size_t mask)
 {
-    uint64_t h = par3_coord_bits(x[0]) * UINT64_C(0x9E3779B97F4A7C15);
-    h = (h ^ par3_coord_bits(x[1])) * UINT64_C(0xC2B2AE3D27D4EB4F);
-    h = (h ^ par3_coord_bits(x[2])) * UINT64_C(0x165667B19E3779F9);
-    return (size_t)(h >> 32) & mask;
+    uint64_t h = par3_mix(par3_coord_bits(x[2]));
+    h = par3_mix(h ^ par3_coord_bits(x[1]));
+    h = par3_mix(h ^ par3_coord_bits(x[0]));
+    return (size_t)h & mask;
 }
 
 cvm_status cvm__tet3_merge_duplicates(cvm__tet3 *T)
