@@ -893,8 +893,9 @@ typedef enum cvm_option {
      *  CVM_GEN3_SURFACE_REMESH_PLANAR (1: every planar facet of two or more coplanar
      *  triangles re-meshed by the 2D frontal refiner at the 3D size, the points on edges
      *  shared by two facets made once for both; other triangles kept as given, and a facet
-     *  whose refinement would put a point on one of their edges is only re-triangulated).
-     *  Integer, bounds [0, 1]. @since 0.2 */
+     *  whose refinement would put a point on one of their edges is only re-triangulated),
+     *  or CVM_GEN3_SURFACE_REMESH_ALL (2: every triangle, curved ones too, re-meshed
+     *  isotropically; see cvm_gen3_surface). Integer, bounds [0, 2]. @since 0.2 */
     CVM_OPT_GEN3_SURFACE = 744,
     /** 3D dual optimisation (cvm_mesh_optimise_dual3()), 750-759. Sweep limit, integer,
      *  default 50, bounds [0, 1e6] (0: measure only). @since 0.2 */
@@ -1026,7 +1027,16 @@ typedef enum cvm_gen3_freespace {
 /** Values of CVM_OPT_GEN3_SURFACE. */
 typedef enum cvm_gen3_surface {
     CVM_GEN3_SURFACE_AS_GIVEN = 0,      /**< the surface's triangles are used as read */
-    CVM_GEN3_SURFACE_REMESH_PLANAR = 1  /**< planar facets re-meshed in 2D at the 3D size */
+    CVM_GEN3_SURFACE_REMESH_PLANAR = 1, /**< planar facets re-meshed in 2D at the 3D size */
+    /** The whole surface re-meshed with near-equilateral triangles (edge splits, collapses,
+     *  Delaunay flips and smoothing projected back onto the input): target edge length the
+     *  least of the size, the user sizing and 0.3 / curvature (radians of normal turn per
+     *  edge), graded by CVM_OPT_GEN3_GRADING along the surface; edges between facets of
+     *  different markers or sharper than 35 degrees are kept as feature lines (split, never
+     *  flipped; their bends never move). New points lie on the input triangles. For
+     *  surfaces whose triangles are needles (a wing with fine chordwise and coarse spanwise
+     *  spacing). @since 0.2 */
+    CVM_GEN3_SURFACE_REMESH_ALL = 2
 } cvm_gen3_surface;
 
 /** Values of CVM_OPT_VTU_ENCODING. */

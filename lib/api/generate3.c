@@ -86,8 +86,8 @@ static cvm_status remeshed_surface(cvm_mesh *m, const cvm__g3_remeshed *r, const
     cvm__surf3_tris_free(&m->ctx, &chk);
     if (s && s != CVM_E_NOMEM)
         s = cvm__error(&m->ctx, CVM_E_INTERNAL, CVM_ENT_NONE, -1,
-                       "the surface with its planar facets re-meshed fails validation (%s): "
-                       "use CVM_OPT_GEN3_SURFACE = 0", cvm_status_str(s));
+                       "the re-meshed surface fails validation (%s: %s): "
+                       "use CVM_OPT_GEN3_SURFACE = 0", cvm_status_str(s), m->ctx.errmsg);
     return s;
 }
 
@@ -135,7 +135,7 @@ static cvm_status generate(cvm_mesh *m, double size, const cvm_sizing *sizing)
     }
     memset(&rm, 0, sizeof rm);
     rm.tris_before = rm.tris_after = st.nt;
-    if (cvm__opt(m, CVM_OPT_GEN3_SURFACE) == CVM_GEN3_SURFACE_REMESH_PLANAR) {
+    if (cvm__opt(m, CVM_OPT_GEN3_SURFACE) != CVM_GEN3_SURFACE_AS_GIVEN) {
         int32_t *key = cvm__malloc(&m->ctx, (st.nt ? st.nt : 1) * sizeof *key);
         size_t t;
         if (!key) {
@@ -144,7 +144,10 @@ static cvm_status generate(cvm_mesh *m, double size, const cvm_sizing *sizing)
         }
         for (t = 0; t < st.nt; t++)
             key[t] = g->in.fmark[g->in.pfacet[st.tpoly[t]]];
-        s = cvm__g3_remesh_planar(&m->ctx, &surf, key, &p, &rm);
+        if (cvm__opt(m, CVM_OPT_GEN3_SURFACE) == CVM_GEN3_SURFACE_REMESH_ALL)
+            s = cvm__g3_remesh_all(&m->ctx, &surf, key, &p, &rm);
+        else
+            s = cvm__g3_remesh_planar(&m->ctx, &surf, key, &p, &rm);
         cvm__free(&m->ctx, key);
         if (!s && rm.xyz)
             s = remeshed_surface(m, &rm, &st, &ns);

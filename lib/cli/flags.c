@@ -39,6 +39,8 @@ static const cli_option_flag k_flags[] = {
      "uniform size H everywhere instead of following the surface's triangles"},
     {"--remesh-planar", NULL, CVM_OPT_GEN3_SURFACE, 1, M3,
      "re-mesh the surface's planar facets at the size H (2D frontal refiner) before meshing"},
+    {"--remesh-surface", NULL, CVM_OPT_GEN3_SURFACE, 2, M3,
+     "re-mesh the whole surface (curved parts too) with near-equilateral triangles at a size that follows its curvature, before meshing"},
     {"--keep-hull", NULL, CVM_OPT_KEEP_CONVEX_HULL, 1, TRI | REF | OPT,
      "keep every triangle of the convex hull (holes are still removed)"},
     {"--no-split-intersections", NULL, CVM_OPT_SPLIT_INTERSECTIONS, 0, TRI | REF | OPT,

@@ -194,6 +194,15 @@ cvm_status cvm__g3_remesh_planar(cvm__ctx *ctx, const cvm__g3_surface *s, const 
                                  const cvm__g3_params *p, cvm__g3_remeshed *out);
 void cvm__g3_remeshed_free(cvm__ctx *ctx, cvm__g3_remeshed *r);
 
+/* ---- g3_remesh.c: the whole surface re-meshed isotropically ---- */
+/* Re-mesh every triangle of s (see g3_remesh.c) at a size that follows its
+ * curvature, capped by p->h and the user sizing, graded by p->grading;
+ * features (key changes, edges sharper than 35 degrees) kept. The result in
+ * out (out->xyz NULL when s is no closed oriented 2-manifold); facets_remeshed
+ * counts the smooth patches. CVM_E_NOMEM, or a user sizing's status. */
+cvm_status cvm__g3_remesh_all(cvm__ctx *ctx, const cvm__g3_surface *s, const int32_t *key,
+                              const cvm__g3_params *p, cvm__g3_remeshed *out);
+
 /* ---- g3_run.c ---- */
 /* The generated points (near field, then free space) in *out, without the
  * surface's points. check_faces: also run cvm__g3_recover (a build without

@@ -37,6 +37,11 @@ CASES = [
      ["--size", "0.5", "--grading", "0.3", "--remesh-planar"]),
     ("wing_slab graded remesh-planar", "wing_slab.poly",
      ["--size", "1.0", "--grading", "0.3", "--remesh-planar"]),
+    ("cube h=1/8 remesh-surface", "cube.poly", ["--size", "0.125", "--uniform", "--remesh-surface"]),
+    ("sphere_in_box graded remesh-surface", "sphere_in_box.poly",
+     ["--size", "0.5", "--grading", "0.3", "--remesh-surface"]),
+    ("wing_slab graded remesh-surface", "wing_slab.poly",
+     ["--size", "1.0", "--grading", "0.3", "--remesh-surface"]),
 ]
 # Each free-space method on the first four surfaces (cvmesh rows only: the TetGen rows
 # above are the peer at the lattice's density).

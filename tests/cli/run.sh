@@ -339,6 +339,14 @@ expect_grep "mesh3 --freespace octree" "$TMP/out" "lattice points               
 if [ -s "$OUT/octree.vtu" ]; then pass; else fail "mesh3 --freespace octree wrote no file"; fi
 expect_exit 0 "mesh3 --freespace lattice" "$CLI" mesh3 "$D3/tetra.off" --size 0.3 --uniform --quality
 if grep -q "octree" "$TMP/out"; then fail "mesh3 --freespace lattice reports an octree"; else pass; fi
+"$CLI" mesh3 --help > "$TMP/out" 2>&1
+expect_grep "mesh3 --help lists --remesh-surface" "$TMP/out" "--remesh-surface"
+if "$CLI" --version | grep -q "TetGen 1.5"; then
+    expect_exit 0 "mesh3 --remesh-surface" "$CLI" mesh3 "$D3/cube.off" --size 0.25 \
+        --remesh-surface -o "$OUT/remeshed.vtu" --quality
+    expect_grep "mesh3 --remesh-surface" "$TMP/out" "boundary faces"
+    if [ -s "$OUT/remeshed.vtu" ]; then pass; else fail "mesh3 --remesh-surface wrote no file"; fi
+fi
 expect_exit 0 "mesh3 --freespace refine" "$CLI" mesh3 "$D3/tetra.off" --size 0.3 --uniform \
     --freespace refine --quality
 expect_grep "mesh3 --freespace refine" "$TMP/out" "refinement points"

@@ -9,6 +9,7 @@ Suite *generate3_suite(void)
     suite_add_tcase(s, generate3_api_tcase());
     suite_add_tcase(s, generate3_sized_tcase());
     suite_add_tcase(s, generate3_surface_tcase());
+    suite_add_tcase(s, generate3_remesh_tcase());
     suite_add_tcase(s, generate3_octree_tcase());
     suite_add_tcase(s, generate3_refine_tcase());
     return s;

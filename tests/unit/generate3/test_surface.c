@@ -220,8 +220,8 @@ START_TEST(surface_option_bounds_and_statuses)
     double v;
     ck_assert_int_eq(cvm_option_bounds(&b, CVM_OPT_GEN3_SURFACE), CVM_OK);
     ck_assert_double_eq(b.def, CVM_GEN3_SURFACE_AS_GIVEN);
-    ck_assert_double_eq(b.hi, CVM_GEN3_SURFACE_REMESH_PLANAR);
-    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_GEN3_SURFACE, 2), CVM_E_OPTION_RANGE);
+    ck_assert_double_eq(b.hi, CVM_GEN3_SURFACE_REMESH_ALL);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_GEN3_SURFACE, 3), CVM_E_OPTION_RANGE);
     ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_GEN3_SURFACE, 0.5), CVM_E_OPTION_RANGE);
     /* the tetrahedron has no two coplanar faces: nothing to re-mesh, the surface as given */
     ck_assert_msg(cvm_mesh_generate3(m, 0.5) == CVM_OK, "%s", cvm_mesh_errmsg(m));

@@ -1,0 +1,225 @@
+/*
+ * test_remesh.c - CVM_OPT_GEN3_SURFACE = CVM_GEN3_SURFACE_REMESH_ALL: the wing
+ * slab's needle triangles re-meshed (closed, consistently oriented, far fewer
+ * thin triangles, the volume kept to the chords' error, its tetrahedra at the
+ * boundary better centred than with the surface as given); the cube's faces
+ * stay exactly in their planes; the same bytes on every run; OOM at every
+ * allocation.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "generate3/g3_util.h"
+#include "generate3/generate3_tests.h"
+#include "support/oom_sweep.h"
+#include "support/skip.h"
+
+static cvm_mesh *read_with(const char *name, double surface)
+{
+    cvm_mesh *m;
+    char path[1024];
+    g3_data3d(path, sizeof path, name);
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_msg(cvm_mesh_read(m, path) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_GEN3_SURFACE, surface), CVM_OK);
+    return m;
+}
+
+static double volume(const g3_mesh *g)
+{
+    double v = 0;
+    size_t t;
+    for (t = 0; t < g->nt; t++) {
+        const double *a = g->xyz + 3 * g->tet[4 * t], *b = g->xyz + 3 * g->tet[4 * t + 1],
+                     *c = g->xyz + 3 * g->tet[4 * t + 2], *d = g->xyz + 3 * g->tet[4 * t + 3];
+        double u[3], w[3], x[3];
+        int k;
+        for (k = 0; k < 3; k++)
+            u[k] = b[k] - a[k], w[k] = c[k] - a[k], x[k] = d[k] - a[k];
+        v += fabs(u[0] * (w[1] * x[2] - w[2] * x[1]) - u[1] * (w[0] * x[2] - w[2] * x[0]) +
+                  u[2] * (w[0] * x[1] - w[1] * x[0])) / 6;
+    }
+    return v;
+}
+
+static double smallest_angle(const double *p0, const double *p1, const double *p2)
+{
+    const double *p[3];
+    double best = 180;
+    int k;
+    p[0] = p0, p[1] = p1, p[2] = p2;
+    for (k = 0; k < 3; k++) {
+        const double *o = p[k], *q = p[(k + 1) % 3], *r = p[(k + 2) % 3];
+        double uv = 0, uu = 0, vv = 0, a;
+        int j;
+        for (j = 0; j < 3; j++) {
+            double u = q[j] - o[j], v = r[j] - o[j];
+            uv += u * v, uu += u * u, vv += v * v;
+        }
+        a = acos(uv / sqrt(uu * vv)) * 180 / 3.14159265358979323846;
+        best = a < best ? a : best;
+    }
+    return best;
+}
+
+/* Share of boundary triangles whose smallest angle is below deg. */
+static double thin_share(const g3_mesh *g, double deg)
+{
+    size_t f, n = 0;
+    for (f = 0; f < g->nf; f++)
+        n += smallest_angle(g->xyz + 3 * g->face[3 * f], g->xyz + 3 * g->face[3 * f + 1],
+                            g->xyz + 3 * g->face[3 * f + 2]) < deg;
+    return g->nf ? (double)n / (double)g->nf : 0;
+}
+
+static int cmp_i64(const void *a, const void *b)
+{
+    int64_t x = *(const int64_t *)a, y = *(const int64_t *)b;
+    return (x > y) - (x < y);
+}
+
+static void assert_closed_oriented(const g3_mesh *g)
+{
+    int64_t *e = malloc(3 * g->nf * sizeof *e);
+    size_t f, i;
+    int k;
+    ck_assert_ptr_nonnull(e);
+    for (f = 0; f < g->nf; f++)
+        for (k = 0; k < 3; k++)
+            e[3 * f + (size_t)k] = (int64_t)g->face[3 * f + (size_t)k] * (int64_t)g->nv +
+                                   g->face[3 * f + (size_t)(k + 1) % 3];
+    qsort(e, 3 * g->nf, sizeof *e, cmp_i64);
+    for (i = 0; i < 3 * g->nf; i++) {
+        int64_t a = e[i] / (int64_t)g->nv, b = e[i] % (int64_t)g->nv, rev = b * (int64_t)g->nv + a;
+        ck_assert_msg(i == 0 || e[i] != e[i - 1], "directed edge %lld-%lld twice", (long long)a,
+                      (long long)b);
+        ck_assert_msg(bsearch(&rev, e, 3 * g->nf, sizeof *e, cmp_i64) != NULL,
+                      "edge %lld-%lld has no twin", (long long)a, (long long)b);
+    }
+    free(e);
+}
+
+START_TEST(wing_slab_needles_remeshed)
+{
+    cvm_mesh *m0 = read_with("wing_slab.off", CVM_GEN3_SURFACE_AS_GIVEN);
+    cvm_mesh *m1 = read_with("wing_slab.off", CVM_GEN3_SURFACE_REMESH_ALL);
+    double before, after, out0, out1, v0, v1, thin0, thin1;
+    g3_mesh g0, g1;
+    cvm_status s0, s1;
+    if (!g3_with_tetgen()) {
+        cvm_mesh_free(m0);
+        cvm_mesh_free(m1);
+        CVMTEST_SKIP("needs TetGen (a TETGEN=1 build)");
+    }
+    ck_assert_int_eq(cvm_mesh_set_option(m0, CVM_OPT_GEN3_GRADING, 0.3), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m1, CVM_OPT_GEN3_GRADING, 0.3), CVM_OK);
+    s0 = cvm_mesh_generate3(m0, 1.0);
+    s1 = cvm_mesh_generate3(m1, 1.0);
+    ck_assert_msg(s0 == CVM_OK, "%s", cvm_mesh_errmsg(m0));
+    ck_assert_msg(s1 == CVM_OK, "%s", cvm_mesh_errmsg(m1));
+    ck_assert_int_eq(cvm_mesh_get_report(&before, m1, CVM_REPORT_GEN3_SURFACE_TRIS_BEFORE), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_get_report(&after, m1, CVM_REPORT_GEN3_SURFACE_TRIS_AFTER), CVM_OK);
+    ck_assert_double_eq(before, 3164);
+    ck_assert_msg(after > 2000 && after < 8000, "%g triangles after", after);
+    g3_mesh_get(&g0, m0);
+    g3_mesh_get(&g1, m1);
+    assert_closed_oriented(&g1);
+    ck_assert_uint_eq(g1.nf, (size_t)after);
+    /* the input's needles (below 5 degrees) are gone but for a few at the fixed ends of
+     * its trailing edge */
+    thin0 = thin_share(&g0, 5);
+    thin1 = thin_share(&g1, 5);
+    ck_assert_msg(thin0 > 0.15 && thin1 < 0.01, "thin share %g -> %g", thin0, thin1);
+    /* chords of a curved surface: the volume moves by a tiny fraction only */
+    v0 = volume(&g0);
+    v1 = volume(&g1);
+    ck_assert_msg(fabs(v1 - v0) <= 1e-4 * v0, "volume %.17g, as given %.17g", v1, v0);
+    /* the point of it: boundary tetrahedra far better centred */
+    ck_assert_int_eq(cvm_mesh_get_measure(&out0, m0, CVM_MEASURE_CIRCUMCENTRE_OUTSIDE_BOUNDARY_PCT),
+                     CVM_OK);
+    ck_assert_int_eq(cvm_mesh_get_measure(&out1, m1, CVM_MEASURE_CIRCUMCENTRE_OUTSIDE_BOUNDARY_PCT),
+                     CVM_OK);
+    ck_assert_msg(out0 > 60 && out1 < 30, "boundary outside %g %% -> %g %%", out0, out1);
+    g3_mesh_free(&g0);
+    g3_mesh_free(&g1);
+    cvm_mesh_free(m0);
+    cvm_mesh_free(m1);
+}
+END_TEST
+
+static void copy_out(double **xyz, size_t *nv, cvm_index **tet, size_t *nt, double seed)
+{
+    cvm_mesh *m = read_with("sphere_in_box.off", CVM_GEN3_SURFACE_REMESH_ALL);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_SEED, seed), CVM_OK);
+    ck_assert_msg(cvm_mesh_generate3(m, 1.0) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    ck_assert_int_eq(cvm_mesh_count(nv, m, CVM_ENT_VERTEX), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_count(nt, m, CVM_ENT_TETRAHEDRON), CVM_OK);
+    *xyz = malloc(3 * *nv * sizeof **xyz);
+    *tet = malloc(4 * *nt * sizeof **tet);
+    ck_assert_int_eq(cvm_mesh_copy_points_nd(*xyz, 3 * *nv, 3, m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_copy_cells(*tet, 4 * *nt, m, CVM_ENT_TETRAHEDRON), CVM_OK);
+    cvm_mesh_free(m);
+}
+
+START_TEST(remesh_all_same_bytes_and_box_sides_exact)
+{
+    double *x0, *x1;
+    cvm_index *t0, *t1;
+    size_t nv0, nt0, nv1, nt1, v, on_side = 0;
+    if (!g3_with_tetgen())
+        CVMTEST_SKIP("needs TetGen (a TETGEN=1 build)");
+    copy_out(&x0, &nv0, &t0, &nt0, 1);
+    copy_out(&x1, &nv1, &t1, &nt1, 9);
+    ck_assert_uint_eq(nv0, nv1);
+    ck_assert_uint_eq(nt0, nt1);
+    ck_assert(memcmp(x0, x1, 3 * nv0 * sizeof *x0) == 0);
+    ck_assert(memcmp(t0, t1, 4 * nt0 * sizeof *t0) == 0);
+    /* box [-2, 2]^3: the re-meshed sides' points lie exactly in their planes (and none
+     * beyond them) */
+    for (v = 0; v < nv0; v++) {
+        int k, side = 0;
+        for (k = 0; k < 3; k++) {
+            ck_assert(fabs(x0[3 * v + (size_t)k]) <= 2.0);
+            side |= fabs(x0[3 * v + (size_t)k]) == 2.0;
+        }
+        on_side += (size_t)side;
+    }
+    ck_assert_msg(on_side > 100, "%zu points on the box", on_side);
+    free(x0);
+    free(x1);
+    free(t0);
+    free(t1);
+}
+END_TEST
+
+static void oom_setup(cvm_mesh *m, void *arg)
+{
+    char path[1024];
+    g3_data3d(path, sizeof path, (const char *)arg);
+    ck_assert_int_eq(cvm_mesh_read(m, path), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_GEN3_SURFACE, CVM_GEN3_SURFACE_REMESH_ALL),
+                     CVM_OK);
+}
+
+static cvm_status oom_run(cvm_mesh *m, void *arg)
+{
+    (void)arg;
+    return cvm_mesh_generate3(m, 0.5);
+}
+
+START_TEST(remesh_all_oom_at_every_allocation)
+{
+    cvmtest_oom_sweep(oom_setup, oom_run, NULL, (void *)(g3_with_tetgen() ? "cube.off" : "tetra.off"));
+}
+END_TEST
+
+TCase *generate3_remesh_tcase(void)
+{
+    TCase *tc = tcase_create("remesh_all");
+    tcase_set_timeout(tc, 300);
+    tcase_add_test(tc, wing_slab_needles_remeshed);
+    tcase_add_test(tc, remesh_all_same_bytes_and_box_sides_exact);
+    tcase_add_test(tc, remesh_all_oom_at_every_allocation);
+    return tc;
+}
