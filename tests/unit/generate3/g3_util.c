@@ -1,4 +1,5 @@
 /* g3_util.c - see g3_util.h. */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -129,4 +130,48 @@ void g3_data3d(char *buf, size_t len, const char *name)
 int g3_with_tetgen(void)
 {
     return strstr(cvm_build_string(), "TetGen 1.5") != NULL;
+}
+
+double g3_tet_volume(const g3_mesh *g)
+{
+    double v = 0;
+    size_t t;
+    for (t = 0; t < g->nt; t++) {
+        const double *a = g->xyz + 3 * g->tet[4 * t], *b = g->xyz + 3 * g->tet[4 * t + 1],
+                     *c = g->xyz + 3 * g->tet[4 * t + 2], *d = g->xyz + 3 * g->tet[4 * t + 3];
+        double u[3], w[3], x[3];
+        int k;
+        for (k = 0; k < 3; k++)
+            u[k] = b[k] - a[k], w[k] = c[k] - a[k], x[k] = d[k] - a[k];
+        v += fabs(u[0] * (w[1] * x[2] - w[2] * x[1]) - u[1] * (w[0] * x[2] - w[2] * x[0]) +
+                  u[2] * (w[0] * x[1] - w[1] * x[0])) / 6;
+    }
+    return v;
+}
+
+static int g3u_cmp_i64(const void *a, const void *b)
+{
+    int64_t x = *(const int64_t *)a, y = *(const int64_t *)b;
+    return (x > y) - (x < y);
+}
+
+void g3_assert_closed_oriented(const g3_mesh *g)
+{
+    int64_t *e = malloc(3 * g->nf * sizeof *e);
+    size_t f, i;
+    int k;
+    ck_assert_ptr_nonnull(e);
+    for (f = 0; f < g->nf; f++)
+        for (k = 0; k < 3; k++)
+            e[3 * f + (size_t)k] = (int64_t)g->face[3 * f + (size_t)k] * (int64_t)g->nv +
+                                   g->face[3 * f + (size_t)(k + 1) % 3];
+    qsort(e, 3 * g->nf, sizeof *e, g3u_cmp_i64);
+    for (i = 0; i < 3 * g->nf; i++) {
+        int64_t a = e[i] / (int64_t)g->nv, b = e[i] % (int64_t)g->nv, rev = b * (int64_t)g->nv + a;
+        ck_assert_msg(i == 0 || e[i] != e[i - 1], "directed edge %lld-%lld twice", (long long)a,
+                      (long long)b);
+        ck_assert_msg(bsearch(&rev, e, 3 * g->nf, sizeof *e, g3u_cmp_i64) != NULL,
+                      "edge %lld-%lld has no twin", (long long)a, (long long)b);
+    }
+    free(e);
 }

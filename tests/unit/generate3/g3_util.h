@@ -34,5 +34,10 @@ int g3_face_on_boundary(const g3_mesh *g, cvm_index a, cvm_index b, cvm_index c)
 void g3_data3d(char *buf, size_t len, const char *name);
 /* 1 when this build recovers boundaries with TetGen. */
 int g3_with_tetgen(void);
+/* The sum of the tetrahedra's volumes. */
+double g3_tet_volume(const g3_mesh *g);
+/* Asserts that the boundary faces as directed edges hold each edge once and
+ * its reverse once (closed and consistently oriented). */
+void g3_assert_closed_oriented(const g3_mesh *g);
 
 #endif

@@ -26,23 +26,6 @@ static cvm_mesh *read_with(const char *name, double surface)
     return m;
 }
 
-static double volume(const g3_mesh *g)
-{
-    double v = 0;
-    size_t t;
-    for (t = 0; t < g->nt; t++) {
-        const double *a = g->xyz + 3 * g->tet[4 * t], *b = g->xyz + 3 * g->tet[4 * t + 1],
-                     *c = g->xyz + 3 * g->tet[4 * t + 2], *d = g->xyz + 3 * g->tet[4 * t + 3];
-        double u[3], w[3], x[3];
-        int k;
-        for (k = 0; k < 3; k++)
-            u[k] = b[k] - a[k], w[k] = c[k] - a[k], x[k] = d[k] - a[k];
-        v += fabs(u[0] * (w[1] * x[2] - w[2] * x[1]) - u[1] * (w[0] * x[2] - w[2] * x[0]) +
-                  u[2] * (w[0] * x[1] - w[1] * x[0])) / 6;
-    }
-    return v;
-}
-
 static double smallest_angle(const double *p0, const double *p1, const double *p2)
 {
     const double *p[3];
@@ -73,33 +56,6 @@ static double thin_share(const g3_mesh *g, double deg)
     return g->nf ? (double)n / (double)g->nf : 0;
 }
 
-static int cmp_i64(const void *a, const void *b)
-{
-    int64_t x = *(const int64_t *)a, y = *(const int64_t *)b;
-    return (x > y) - (x < y);
-}
-
-static void assert_closed_oriented(const g3_mesh *g)
-{
-    int64_t *e = malloc(3 * g->nf * sizeof *e);
-    size_t f, i;
-    int k;
-    ck_assert_ptr_nonnull(e);
-    for (f = 0; f < g->nf; f++)
-        for (k = 0; k < 3; k++)
-            e[3 * f + (size_t)k] = (int64_t)g->face[3 * f + (size_t)k] * (int64_t)g->nv +
-                                   g->face[3 * f + (size_t)(k + 1) % 3];
-    qsort(e, 3 * g->nf, sizeof *e, cmp_i64);
-    for (i = 0; i < 3 * g->nf; i++) {
-        int64_t a = e[i] / (int64_t)g->nv, b = e[i] % (int64_t)g->nv, rev = b * (int64_t)g->nv + a;
-        ck_assert_msg(i == 0 || e[i] != e[i - 1], "directed edge %lld-%lld twice", (long long)a,
-                      (long long)b);
-        ck_assert_msg(bsearch(&rev, e, 3 * g->nf, sizeof *e, cmp_i64) != NULL,
-                      "edge %lld-%lld has no twin", (long long)a, (long long)b);
-    }
-    free(e);
-}
-
 START_TEST(wing_slab_needles_remeshed)
 {
     cvm_mesh *m0 = read_with("wing_slab.off", CVM_GEN3_SURFACE_AS_GIVEN);
@@ -124,7 +80,7 @@ START_TEST(wing_slab_needles_remeshed)
     ck_assert_msg(after > 2000 && after < 8000, "%g triangles after", after);
     g3_mesh_get(&g0, m0);
     g3_mesh_get(&g1, m1);
-    assert_closed_oriented(&g1);
+    g3_assert_closed_oriented(&g1);
     ck_assert_uint_eq(g1.nf, (size_t)after);
     /* the input's needles (below 5 degrees) are gone but for a few at the fixed ends of
      * its trailing edge */
@@ -132,8 +88,8 @@ START_TEST(wing_slab_needles_remeshed)
     thin1 = thin_share(&g1, 5);
     ck_assert_msg(thin0 > 0.15 && thin1 < 0.01, "thin share %g -> %g", thin0, thin1);
     /* chords of a curved surface: the volume moves by a tiny fraction only */
-    v0 = volume(&g0);
-    v1 = volume(&g1);
+    v0 = g3_tet_volume(&g0);
+    v1 = g3_tet_volume(&g1);
     ck_assert_msg(fabs(v1 - v0) <= 1e-4 * v0, "volume %.17g, as given %.17g", v1, v0);
     /* the point of it: boundary tetrahedra far better centred */
     ck_assert_int_eq(cvm_mesh_get_measure(&out0, m0, CVM_MEASURE_CIRCUMCENTRE_OUTSIDE_BOUNDARY_PCT),

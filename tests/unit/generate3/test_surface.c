@@ -29,52 +29,6 @@ static cvm_mesh *read_remesh(const char *name, int remesh)
     return m;
 }
 
-static double tet_volume(const g3_mesh *g)
-{
-    double v = 0;
-    size_t t;
-    for (t = 0; t < g->nt; t++) {
-        const double *a = g->xyz + 3 * g->tet[4 * t], *b = g->xyz + 3 * g->tet[4 * t + 1],
-                     *c = g->xyz + 3 * g->tet[4 * t + 2], *d = g->xyz + 3 * g->tet[4 * t + 3];
-        double u[3], w[3], x[3];
-        int k;
-        for (k = 0; k < 3; k++)
-            u[k] = b[k] - a[k], w[k] = c[k] - a[k], x[k] = d[k] - a[k];
-        v += fabs(u[0] * (w[1] * x[2] - w[2] * x[1]) - u[1] * (w[0] * x[2] - w[2] * x[0]) +
-                  u[2] * (w[0] * x[1] - w[1] * x[0])) / 6;
-    }
-    return v;
-}
-
-static int cmp_i64(const void *a, const void *b)
-{
-    int64_t x = *(const int64_t *)a, y = *(const int64_t *)b;
-    return (x > y) - (x < y);
-}
-
-/* The boundary faces as directed edges: each appears once, and its reverse once
- * (closed, and consistently oriented). */
-static void assert_closed_oriented(const g3_mesh *g)
-{
-    int64_t *e = malloc(3 * g->nf * sizeof *e);
-    size_t f, i;
-    int k;
-    ck_assert_ptr_nonnull(e);
-    for (f = 0; f < g->nf; f++)
-        for (k = 0; k < 3; k++)
-            e[3 * f + (size_t)k] = (int64_t)g->face[3 * f + (size_t)k] * (int64_t)g->nv +
-                                   g->face[3 * f + (size_t)(k + 1) % 3];
-    qsort(e, 3 * g->nf, sizeof *e, cmp_i64);
-    for (i = 0; i < 3 * g->nf; i++) {
-        int64_t a = e[i] / (int64_t)g->nv, b = e[i] % (int64_t)g->nv, rev = b * (int64_t)g->nv + a;
-        ck_assert_msg(i == 0 || e[i] != e[i - 1], "directed edge %lld-%lld twice", (long long)a,
-                      (long long)b);
-        ck_assert_msg(bsearch(&rev, e, 3 * g->nf, sizeof *e, cmp_i64) != NULL,
-                      "edge %lld-%lld has no twin", (long long)a, (long long)b);
-    }
-    free(e);
-}
-
 static double min_angle_deg(const double *a, const double *b, const double *c)
 {
     const double *p[3];
@@ -119,8 +73,8 @@ START_TEST(cube_faces_remeshed_closed_exact_and_volume_kept)
     g3_mesh_get(&g, m);
     ck_assert_double_eq(after, (double)g.nf);
     ck_assert_uint_eq(g.nf, g.nbnd);
-    assert_closed_oriented(&g);
-    v = tet_volume(&g);
+    g3_assert_closed_oriented(&g);
+    v = g3_tet_volume(&g);
     ck_assert_msg(fabs(v - 1) <= 1e-12, "volume %.17g", v);
     for (f = 0; f < g.nf; f++) {
         const double *p[3];
@@ -165,9 +119,9 @@ START_TEST(sphere_kept_box_remeshed_volume_equal)
     ck_assert_double_eq(after, before);
     g3_mesh_get(&g0, m0);
     g3_mesh_get(&g1, m1);
-    assert_closed_oriented(&g1);
-    v0 = tet_volume(&g0);
-    v1 = tet_volume(&g1);
+    g3_assert_closed_oriented(&g1);
+    v0 = g3_tet_volume(&g0);
+    v1 = g3_tet_volume(&g1);
     ck_assert_msg(fabs(v1 - v0) <= 1e-12 * v0, "volume %.17g, as given %.17g", v1, v0);
     g3_mesh_free(&g0);
     g3_mesh_free(&g1);
