@@ -2999,7 +2999,9 @@ CVM_API cvm_status cvm_mesh_optimise_dual(cvm_mesh *m, const cvm_sizing *sizing)
  *                                 lattice would pass 2^19 cells along an axis or about
  *                                 240,000,000 candidates, the octree (extent / size)^3 or
  *                                 its nodes 60,000,000, or the points would pass the 3D
- *                                 limit of 60,000,000 (message gives the numbers)
+ *                                 limit of 60,000,000, or the re-meshed surface
+ *                                 (CVM_GEN3_SURFACE_REMESH_ALL) would pass 4,000,000
+ *                                 triangles (message gives the numbers)
  *         the surface's statuses of cvm_mesh_triangulate() (not closed, self-intersecting, ...)
  *         CVM_E_INTERNAL          CVM_OPT_GEN3_SURFACE 1 made a surface that fails the
  *                                 input checks (a bug; the message says so)

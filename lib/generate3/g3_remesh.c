@@ -475,7 +475,7 @@ static cvm_status g3r_smooth(g3r_state *R, int32_t v)
 
 /* ---- the passes ---- */
 
-#define G3R_MAX_TRIS ((size_t)4000000) /* splits stop here */
+#define G3R_MAX_TRIS ((size_t)4000000) /* beyond: CVM_E_TOO_LARGE */
 
 static int g3r_live(const g3r_state *R, int32_t h) { return R->tv[3 * G3R_T(h)] >= 0; }
 
@@ -586,6 +586,11 @@ cvm_status cvm__g3_remesh_all(cvm__ctx *ctx, const cvm__g3_surface *s, const int
         goto done;
     for (i = 0; i < G3R_PASSES && !st; i++)
         st = g3r_pass(&R);
+    if (!st && R.nt >= G3R_MAX_TRIS)
+        st = cvm__error(ctx, CVM_E_TOO_LARGE, CVM_ENT_NONE, -1,
+                        "re-meshing the surface needs more than %zu triangles at this size: "
+                        "give a larger size, or use CVM_OPT_GEN3_SURFACE = 0",
+                        (size_t)G3R_MAX_TRIS);
     if (st)
         goto done;
     /* compact into the output */

@@ -105,8 +105,9 @@ int cvm__g3r_ring(g3r_state *R, int32_t v, size_t *n);
 /* The store from the input surface: triangles, twins, feature edges. R->ok = 0
  * when an edge is not shared by exactly two oppositely oriented triangles. */
 cvm_status cvm__g3r_build(g3r_state *R, const cvm__g3_surface *s, const int32_t *key);
-/* Sort n (key, value) pairs by key, then value (deterministic). */
-void cvm__g3r_sort_pairs(int64_t *key, int32_t *val, size_t n);
+/* Sort n pairs by their non-negative key, ties in their order (stable); CVM_E_NOMEM
+ * (recorded on ctx) leaves them in an unspecified order. */
+cvm_status cvm__g3r_sort_pairs(cvm__ctx *ctx, int64_t *key, int32_t *val, size_t n);
 
 /* ---- g3_remesh_field.c ---- */
 /* Vertex classes, smooth patches, the target sizes of the input's vertices

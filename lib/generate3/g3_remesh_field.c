@@ -304,8 +304,7 @@ static cvm_status g3r_grid(g3r_state *R)
                 }
     }
     R->ng = n;
-    cvm__g3r_sort_pairs(key, R->gtri, n);
-    return CVM_OK;
+    return cvm__g3r_sort_pairs(R->ctx, key, R->gtri, n);
 }
 
 cvm_status cvm__g3r_field(g3r_state *R, const cvm__g3_params *p)

@@ -120,7 +120,11 @@ cvm_status cvm__g3r_build(g3r_state *R, const cvm__g3_surface *s, const int32_t 
         eh[i] = (int32_t)i;
         R->opp[i] = -1;
     }
-    cvm__g3r_sort_pairs(ek, eh, 3 * nt);
+    if (cvm__g3r_sort_pairs(R->ctx, ek, eh, 3 * nt)) {
+        cvm__free(R->ctx, ek);
+        cvm__free(R->ctx, eh);
+        return CVM_E_NOMEM;
+    }
     R->ok = 1;
     for (i = 0; i < 3 * nt;) {
         k = i + 1;
@@ -163,49 +167,34 @@ cvm_status cvm__g3r_build(g3r_state *R, const cvm__g3_surface *s, const int32_t 
     return CVM_OK;
 }
 
-void cvm__g3r_sort_pairs(int64_t *key, int32_t *val, size_t n)
+cvm_status cvm__g3r_sort_pairs(cvm__ctx *ctx, int64_t *key, int32_t *val, size_t n)
 {
-    /* heapsort on (key, val): no allocation, deterministic */
-    size_t i, end;
-#define G3R_GT(i, j) (key[i] > key[j] || (key[i] == key[j] && val[i] > val[j]))
-#define G3R_SWAP(i, j)                                                                      \
-    do {                                                                                    \
-        int64_t tk = key[i];                                                                \
-        int32_t tv_ = val[i];                                                               \
-        key[i] = key[j], val[i] = val[j], key[j] = tk, val[j] = tv_;                        \
-    } while (0)
-    if (n < 2)
-        return;
-    for (i = n / 2; i-- > 0;) {
-        size_t r = i;
-        for (;;) {
-            size_t c = 2 * r + 1, m = r;
-            if (c < n && G3R_GT(c, m))
-                m = c;
-            if (c + 1 < n && G3R_GT(c + 1, m))
-                m = c + 1;
-            if (m == r)
-                break;
-            G3R_SWAP(r, m);
-            r = m;
-        }
+    /* the library's stable radix sort on the key; val is in ascending order within each
+     * run of equal keys wherever the callers use this, so ties keep it */
+    int32_t *ord = cvm__malloc(ctx, (n ? n : 1) * sizeof *ord);
+    int32_t *tmp = cvm__malloc(ctx, (n ? n : 1) * sizeof *tmp);
+    uint64_t top = 0;
+    size_t i;
+    int bits = 0;
+    cvm_status s = CVM_OK;
+    if (!ord || !tmp) {
+        s = cvm__nomem(ctx);
+        goto done;
     }
-    for (end = n - 1; end > 0; end--) {
-        size_t r = 0;
-        G3R_SWAP(0, end);
-        for (;;) {
-            size_t c = 2 * r + 1, m = r;
-            if (c < end && G3R_GT(c, m))
-                m = c;
-            if (c + 1 < end && G3R_GT(c + 1, m))
-                m = c + 1;
-            if (m == r)
-                break;
-            G3R_SWAP(r, m);
-            r = m;
-        }
+    for (i = 0; i < n; i++)
+        top |= (uint64_t)key[i];
+    while (bits < 64 && (top >> bits))
+        bits++;
+    if (cvm__sort_by_key(ctx, (uint64_t *)key, ord, n, bits)) {
+        s = cvm__nomem(ctx);
+        goto done;
     }
-#undef G3R_GT
-#undef G3R_SWAP
+    for (i = 0; i < n; i++)
+        tmp[i] = val[ord[i]];
+    memcpy(val, tmp, n * sizeof *val);
+done:
+    cvm__free(ctx, ord);
+    cvm__free(ctx, tmp);
+    return s;
 }
 
