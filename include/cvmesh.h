@@ -933,6 +933,18 @@ typedef enum cvm_option {
      *  lost, but tetrahedra are renumbered and their count changes. 0: the connectivity
      *  is kept. Integer, bounds [0, 1]. @since 0.2 */
     CVM_OPT_DUAL3_FLIPS = 756,
+    /** The per-vertex search of cvm_mesh_optimise_dual3(): 1 (default) compass search
+     *  (CVM_OPT_DUAL3_BUDGET trials); 2 Modified Cuckoo Search (Walton et al. 2011;
+     *  population 10 x the vertex's degrees of freedom, 40 for an interior vertex,
+     *  CVM_OPT_DUAL3_CUCKOO_BUDGET evaluations, streams keyed by (CVM_OPT_SEED, sweep,
+     *  vertex)), whose best points are then tried under the same exact checks; 3 the
+     *  compass search, then the cuckoo search at the vertices where it found no move.
+     *  Integer, bounds [1, 3]. @since 0.2 */
+    CVM_OPT_DUAL3_SOLVER = 757,
+    /** Evaluations of the star's penalty per vertex and sweep of the cuckoo search
+     *  (CVM_OPT_DUAL3_SOLVER 2 or 3), integer, default 300, bounds [40, 1000000].
+     *  @since 0.2 */
+    CVM_OPT_DUAL3_CUCKOO_BUDGET = 758,
     /* ---- quad-dominant meshing (800-899): read by cvm_mesh_quadmesh() ---- */
     /** Exponent p of the Lp-CVT energy, even integer, default 6, bounds [2, 12]. p = 2 is
      *  the classic CVT (hexagonal cells); larger p pulls the cells towards squares of unit

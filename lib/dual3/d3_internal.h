@@ -54,7 +54,15 @@ typedef struct cvm__d3_work {
     size_t nout;     /* sum of out */
     size_t flips;    /* flips kept */
     size_t mflips;   /* flips of the last cvm__d3_restore() */
+    size_t sweep;    /* the current sweep (keys the cuckoo streams) */
 } cvm__d3_work;
+
+/* One nest of the cuckoo search: offsets u over the free degrees of freedom,
+ * the point x = (x, y, z, w) they give, its fitness f. */
+typedef struct cvm__d3_nest {
+    double u[4], x[4], f;
+} cvm__d3_nest;
+#define CVM__D3_NESTS 40
 
 /* The penalty of one tetrahedron (dual3.h); HUGE_VAL when it is flat or
  * inverted in floating point. dist_out (may be NULL): |centroid - power vertex|. */
@@ -85,6 +93,15 @@ int cvm__d3_face_regular(const cvm__d3_mesh *M, size_t t, int f);
  * perturbed as cvm__d3_face_regular(); 0: a tie is regular (strict test). */
 int cvm__d3_face_conflict_at(const cvm__d3_mesh *M, size_t t, int f, int32_t v, const double *x,
                              double wv, int sos);
+
+/* Modified Cuckoo Search (d3_cuckoo.c) for v from cur = (x, y, z, w) over its free
+ * coordinates (those the compass search uses) and its weight, about budget
+ * evaluations of the fixed star's penalty (HUGE_VAL where a tetrahedron is flat or
+ * inverted, or a dihedral cosine exceeds cfloor), the stream seeded by key. Fills
+ * ns[0..n) (n returned, at most CVM__D3_NESTS; ns[0] is cur) best first: ns[i].x the
+ * point, ns[i].f its fitness; order is scratch of CVM__D3_NESTS. No exact test. */
+int cvm__d3_cuckoo(const cvm__d3_work *K, int32_t v, const double *cur, double cfloor,
+                   int budget, uint64_t key, cvm__d3_nest *ns, int *order);
 
 /* ---- mutable connectivity (d3_flip.c) ---- */
 /* Allocate the arrays above for M (capacity for growth) and copy its tetrahedra. */

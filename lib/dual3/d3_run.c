@@ -1,6 +1,7 @@
 /*
  * d3_run.c - the sweeps of the 3D power-dual optimiser (dual3.h): the
- * vertex stars, the sweep order, the compass search per vertex.
+ * vertex stars, the sweep order, the compass search per vertex (and the
+ * cuckoo search's use, d3_cuckoo.c).
  */
 #include <math.h>
 #include <stdlib.h>
@@ -230,63 +231,63 @@ static int d3_flip_move(cvm__d3_work *K, int32_t v, const double *cand, double c
     return 1;
 }
 
-/* Compass search for v over (x, y, z, w): the coordinates its position may
- * change in (all for an interior vertex, the two in-plane ones for one inside
- * an axis-aligned planar facet with slide on, none otherwise) and w; writes the
- * best valid point found; 1 when v moved. With flips, a trial that breaks local
- * regularity gets its faces repaired (d3_flip_move) and is judged on the result. */
-static int solve_vertex(cvm__d3_work *K, int32_t v)
+/* The state of one vertex's search: its current point, the penalty there, the
+ * dihedral floor (cosines: larger is worse) and the speculative repairs left. */
+typedef struct d3_search {
+    double cur[4], best, cfloor, cmin;
+    int spec;
+} d3_search;
+
+/* Try v at cand, whose fixed-star penalty is f: kept when the exact checks pass on
+ * the fixed star, or (with flips) on the star the repair makes. 1 when kept (S
+ * then describes cand). */
+static int d3_try(cvm__d3_work *K, int32_t v, const double *cand, double f, int posmove,
+                  d3_search *S)
 {
-    cvm__d3_mesh *M = &K->W;
-    double *x0 = M->xyz + 3 * (size_t)v;
-    double cur[4], cand[4], best, cmax0, cfloor, cmin, hs, hw;
-    int evals = 0, dir, first = 0, nd = 0, moved = 0, a, dirs[8], spec = 0;
-    if (K->lv[v] <= 0 || K->stuck[v] || cvm__d3_gather_star(K, v))
-        return 0;
-    for (a = 0; a < 3; a++)
-        if (!K->fixpos[v] || (K->slide[v] >> a & 1))
-            dirs[nd++] = 2 * a, dirs[nd++] = 2 * a + 1;
-    dirs[nd++] = 6, dirs[nd++] = 7;
-    cur[0] = x0[0], cur[1] = x0[1], cur[2] = x0[2], cur[3] = M->w[v];
-    best = cvm__d3_star_penalty(K, v, cur, cur[3], HUGE_VAL);
-    if (best == HUGE_VAL)
-        return 0;
-    /* no angle below min(the floor, the smallest now): cosines, larger is worse */
-    cmax0 = cvm__d3_star_max_cos(K, v, cur);
-    cmin = cos(K->p->min_dihedral_deg * (CVM__PI / 180));
-    cfloor = cmax0 > cmin ? cmax0 : cmin;
-    hs = 0.08 * K->lv[v];
-    hw = 0.16 * K->lv[v] * K->lv[v];
+    int st = -1;
+    if (f < S->best && (!posmove || cvm__d3_star_max_cos(K, v, cand) <= S->cfloor))
+        st = cvm__d3_star_check(K, v, cand, cand[3], 1);
+    else if (K->p->flips && S->spec++ < CVM__D3_SPECULATIVE &&
+             cvm__d3_star_check(K, v, cand, cand[3], 0) == 1)
+        st = 1; /* the fixed star's penalty and angles say nothing about the flipped
+                   one: d3_flip_move judges it */
+    if (st == 0) { /* v itself moves at the end */
+        memcpy(S->cur, cand, sizeof S->cur);
+        S->best = f;
+        return 1;
+    }
+    if (st == 1 && K->p->flips && d3_flip_move(K, v, cand, S->cmin)) {
+        /* a new star: its penalty and smallest angle are the new reference */
+        double cmax0;
+        memcpy(S->cur, cand, sizeof S->cur);
+        S->best = cvm__d3_star_penalty(K, v, S->cur, S->cur[3], HUGE_VAL);
+        cmax0 = cvm__d3_star_max_cos(K, v, S->cur);
+        S->cfloor = cmax0 > S->cmin ? cmax0 : S->cmin;
+        return 1;
+    }
+    return 0;
+}
+
+/* Compass search over the directions dirs[0..nd) (2a, 2a + 1: +-axis a; 6, 7: +-w)
+ * from steps 0.08 l_v and 0.16 l_v^2, halved when no direction helps. 1 when v moved. */
+static int d3_compass(cvm__d3_work *K, int32_t v, const int *dirs, int nd, d3_search *S)
+{
+    double cand[4], hs = 0.08 * K->lv[v], hw = 0.16 * K->lv[v] * K->lv[v];
+    int evals = 0, first = 0, moved = 0;
     while (evals < K->p->budget && hs > 1e-3 * K->lv[v]) {
         int improved = 0, k;
         for (k = 0; k < nd && evals < K->p->budget; k++) {
+            int dir = dirs[(first + k) % nd];
             double f;
-            int st = -1;
-            dir = dirs[(first + k) % nd];
-            memcpy(cand, cur, sizeof cand);
+            memcpy(cand, S->cur, sizeof cand);
             if (dir >= 6)
                 cand[3] += (dir & 1) ? -hw : hw;
             else
                 cand[dir >> 1] += (dir & 1) ? -hs : hs;
-            f = cvm__d3_star_penalty(K, v, cand, cand[3], best);
+            f = cvm__d3_star_penalty(K, v, cand, cand[3], S->best);
             evals++;
-            if (f < best && (dir >= 6 || cvm__d3_star_max_cos(K, v, cand) <= cfloor))
-                st = cvm__d3_star_check(K, v, cand, cand[3], 1);
-            else if (K->p->flips && spec++ < CVM__D3_SPECULATIVE && cvm__d3_star_check(K, v, cand, cand[3], 0) == 1)
-                st = 1; /* the fixed star's penalty and angles say nothing about the flipped
-                           one: d3_flip_move judges it */
-            if (st == 0) { /* v itself moves at the end */
-                memcpy(cur, cand, sizeof cur);
-                best = f;
-            } else if (st == 1 && K->p->flips && d3_flip_move(K, v, cand, cmin)) {
-                /* a new star: its penalty and smallest angle are the new reference */
-                memcpy(cur, cand, sizeof cur);
-                best = cvm__d3_star_penalty(K, v, cur, cur[3], HUGE_VAL);
-                cmax0 = cvm__d3_star_max_cos(K, v, cur);
-                cfloor = cmax0 > cmin ? cmax0 : cmin;
-            } else {
+            if (!d3_try(K, v, cand, f, dir < 6, S))
                 continue;
-            }
             first = (first + k) % nd;
             improved = moved = 1;
             break;
@@ -294,10 +295,61 @@ static int solve_vertex(cvm__d3_work *K, int32_t v)
         if (!improved)
             hs *= 0.5, hw *= 0.5;
     }
+    return moved;
+}
+
+/* Cuckoo search from S->cur, then its best nests (better than the current point)
+ * tried in order until one is kept. 1 when v moved. */
+static int d3_cuckoo_move(cvm__d3_work *K, int32_t v, d3_search *S)
+{
+    cvm__d3_nest ns[CVM__D3_NESTS];
+    int order[CVM__D3_NESTS], n, i, tried = 0;
+    uint64_t key = K->p->seed ^ (0x9e3779b97f4a7c15ULL * (uint64_t)(K->sweep + 1)) ^
+                   (0xbf58476d1ce4e5b9ULL * (uint64_t)((uint32_t)v + 1));
+    n = cvm__d3_cuckoo(K, v, S->cur, S->cfloor, K->p->cuckoo_budget, key, ns, order);
+    for (i = 0; i < n && tried < 8; i++) {
+        if (!(ns[i].f < S->best))
+            break;
+        tried++;
+        if (d3_try(K, v, ns[i].x, ns[i].f, 1, S))
+            return 1;
+    }
+    return 0;
+}
+
+/* The search for v over (x, y, z, w): the coordinates its position may change in
+ * (all for an interior vertex, the two in-plane ones for one inside an
+ * axis-aligned planar facet with slide on, none otherwise) and w, by the solver
+ * of K->p; v ends at the best valid point found. 1 when v moved. */
+static int solve_vertex(cvm__d3_work *K, int32_t v)
+{
+    cvm__d3_mesh *M = &K->W;
+    double *x0 = M->xyz + 3 * (size_t)v, cmax0;
+    int nd = 0, moved = 0, a, dirs[8];
+    d3_search S;
+    if (K->lv[v] <= 0 || K->stuck[v] || cvm__d3_gather_star(K, v))
+        return 0;
+    for (a = 0; a < 3; a++)
+        if (!K->fixpos[v] || (K->slide[v] >> a & 1))
+            dirs[nd++] = 2 * a, dirs[nd++] = 2 * a + 1;
+    dirs[nd++] = 6, dirs[nd++] = 7;
+    S.cur[0] = x0[0], S.cur[1] = x0[1], S.cur[2] = x0[2], S.cur[3] = M->w[v];
+    S.best = cvm__d3_star_penalty(K, v, S.cur, S.cur[3], HUGE_VAL);
+    if (S.best == HUGE_VAL)
+        return 0;
+    /* no angle below min(the floor, the smallest now): cosines, larger is worse */
+    cmax0 = cvm__d3_star_max_cos(K, v, S.cur);
+    S.cmin = cos(K->p->min_dihedral_deg * (CVM__PI / 180));
+    S.cfloor = cmax0 > S.cmin ? cmax0 : S.cmin;
+    S.spec = 0;
+    if (K->p->solver != 2)
+        moved = d3_compass(K, v, dirs, nd, &S);
+    if (K->p->solver >= 2 && !moved)
+        moved = d3_cuckoo_move(K, v, &S);
     if (moved) {
         size_t s;
-        x0[0] = cur[0], x0[1] = cur[1], x0[2] = cur[2];
-        M->w[v] = cur[3];
+        x0[0] = S.cur[0], x0[1] = S.cur[1], x0[2] = S.cur[2];
+        M->w[v] = S.cur[3];
         for (s = 0; s < K->nstar; s++) {
             int32_t t = K->star[s];
             K->nout -= K->out[t];
@@ -418,6 +470,7 @@ cvm_status cvm__d3_optimise(cvm__ctx *ctx, cvm__d3_mesh *M, const cvm__d3_params
     low = r->out_after;
     for (sweep = 0; sweep < (size_t)p->max_sweeps && r->out_after > 0 && !s; sweep++) {
         size_t n = sweep_order(&K, rk, vs, p->seed, sweep), moved = 0;
+        K.sweep = sweep;
         for (i = 0; i < n && !s; i++) {
             moved += (size_t)solve_vertex(&K, rk[i].v);
             s = cvm__tick(ctx, 1, CVM_STAGE_OPTIMISE_DUAL,

@@ -33,8 +33,11 @@
  * Score (sweep order) F_k = W_k L_k |C_k - V_k|, W_k 1 when non-compliant
  * (exact) else 0, L_k 2 at the boundary else 1.
  *
- * Solver: compass search over (x, y, z, w) from steps l_v / 4 and l_v^2 / 2
- * (l_v the mean edge at v), halved on failure, budget evaluations per vertex.
+ * Solver (params.solver): compass search over (x, y, z, w) from steps l_v / 4 and l_v^2 / 2
+ * (l_v the mean edge at v), halved on failure, budget evaluations per vertex;
+ * or Modified Cuckoo Search (d3_cuckoo.c, cuckoo_budget evaluations), whose best
+ * nests are then tried in order under the same checks; or both, the cuckoo
+ * search only where the compass search found no move.
  * Sweeps visit the vertices of the non-compliant tetrahedra, worst score
  * first, in min(20, n / 25 + 1) bins shuffled within by a stream keyed by
  * (seed, sweep). One thread: the result depends only on the mesh and params.
@@ -72,6 +75,9 @@ typedef struct cvm__d3_params {
     uint64_t seed;
     int slide;              /* 1: vertices inside an axis-aligned planar facet move in it */
     int flips;              /* 1: the connectivity may change (d3_flip.c) */
+    int solver;             /* 1 compass search; 2 cuckoo search; 3 compass, then cuckoo
+                               where the compass search found no move */
+    int cuckoo_budget;      /* evaluations per vertex and sweep of the cuckoo search */
 } cvm__d3_params;
 
 typedef struct cvm__d3_report {

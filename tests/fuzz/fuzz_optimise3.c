@@ -23,7 +23,7 @@
  *   0      points: 5 + b % 40
  *   1      bits 0-1 sweeps 1 + b % 4; bit 2 slide; bit 3 weights; bits 4-7 budget 1 + 4 (b >> 4)
  *   2      min dihedral (b % 61) degrees, merge tol (b / 61 % 5) / 4
- *   3      margin (b % 21) / 100, flips (b / 21 % 2)
+ *   3      margin (b % 21) / 100, flips (b / 21 % 2), solver 1 + b / 42 % 3 (cuckoo budget 60)
  *   4..    per point: 3 coordinates (b % 8) / 4 (a grid), then, with weights, (b % 16) / 64
  */
 #include <math.h>
@@ -139,7 +139,7 @@ static void check_merge(cvm_mesh *m, const o3_state *st, double tol)
 }
 
 /* A mesh of the points, optimised; NULL when the points have no tetrahedralisation. */
-static cvm_mesh *run(const double *xyz, const double *w, size_t n, const double opt[6],
+static cvm_mesh *run(const double *xyz, const double *w, size_t n, const double opt[7],
                      o3_state *before)
 {
     cvm_mesh *m;
@@ -166,6 +166,8 @@ static cvm_mesh *run(const double *xyz, const double *w, size_t n, const double 
     FUZZ_REQUIRE(cvm_mesh_set_option(m, CVM_OPT_DUAL3_MIN_DIHEDRAL_DEG, opt[3]) == CVM_OK, "option");
     FUZZ_REQUIRE(cvm_mesh_set_option(m, CVM_OPT_DUAL3_MARGIN, opt[4]) == CVM_OK, "option");
     FUZZ_REQUIRE(cvm_mesh_set_option(m, CVM_OPT_DUAL3_FLIPS, opt[5]) == CVM_OK, "option");
+    FUZZ_REQUIRE(cvm_mesh_set_option(m, CVM_OPT_DUAL3_SOLVER, opt[6]) == CVM_OK, "option");
+    FUZZ_REQUIRE(cvm_mesh_set_option(m, CVM_OPT_DUAL3_CUCKOO_BUDGET, 60) == CVM_OK, "option");
     FUZZ_REQUIRE(cvm_mesh_count(&nt0, m, CVM_ENT_TETRAHEDRON) == CVM_OK, "count");
     FUZZ_REQUIRE(cvm_mesh_get_measure(&vol0, m, CVM_MEASURE_VOLUME) == CVM_OK, "volume");
     FUZZ_REQUIRE(cvm_mesh_get_measure(&out0, m, CVM_MEASURE_CIRCUMCENTRE_OUTSIDE_PCT) == CVM_OK,
@@ -192,7 +194,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     size_t n = 5 + byte_at(data, size, 0) % 40, i, pos = 4;
     uint8_t b1 = byte_at(data, size, 1);
     int weighted = (b1 >> 3) & 1;
-    double opt[6], *xyz, *w;
+    double opt[7], *xyz, *w;
     cvm_mesh *m1, *m2;
     o3_state a, b, c;
     opt[0] = 1 + (b1 & 3);
@@ -201,6 +203,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     opt[3] = byte_at(data, size, 2) % 61;
     opt[4] = (byte_at(data, size, 3) % 21) / 100.0;
     opt[5] = byte_at(data, size, 3) / 21 % 2;
+    opt[6] = 1 + byte_at(data, size, 3) / 42 % 3;
     xyz = malloc(3 * n * sizeof *xyz);
     w = malloc(n * sizeof *w);
     FUZZ_REQUIRE(xyz && w, "malloc");

@@ -207,6 +207,11 @@ START_TEST(statuses_and_options)
     ck_assert_int_eq(cvm_option_bounds(&b, CVM_OPT_DUAL3_MAX_SWEEPS), CVM_OK);
     ck_assert_double_eq(b.def, 50);
     ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_DUAL3_FLIPS, 2), CVM_E_OPTION_RANGE);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_DUAL3_SOLVER, 0), CVM_E_OPTION_RANGE);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_DUAL3_SOLVER, 4), CVM_E_OPTION_RANGE);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_DUAL3_CUCKOO_BUDGET, 39), CVM_E_OPTION_RANGE);
+    ck_assert_int_eq(cvm_option_bounds(&b, CVM_OPT_DUAL3_SOLVER), CVM_OK);
+    ck_assert_double_eq(b.def, 1);
     ck_assert_int_eq(cvm_option_bounds(&b, CVM_OPT_DUAL3_FLIPS), CVM_OK);
     ck_assert_double_eq(b.def, 1);
     ck_assert_int_eq(cvm_option_bounds(&b, CVM_OPT_DUAL3_MIN_DIHEDRAL_DEG), CVM_OK);
@@ -400,6 +405,42 @@ START_TEST(tetra_keeps_faces_and_regularity)
         m = generated("tetra.off", 0.3, 0);
         optimise_and_check(m, 3, 1, flips);
         cvm_mesh_free(m);
+    }
+}
+END_TEST
+
+/* The cuckoo search alone (2) and after the compass search (3): the same exact
+ * guarantees, and the same bytes from run to run (streams keyed by seed, sweep,
+ * vertex). */
+START_TEST(cuckoo_keeps_faces_and_regularity)
+{
+    int solver;
+    for (solver = 2; solver <= 3; solver++) {
+        cvm_mesh *m = generated("tetra.off", 0.3, 0), *m2;
+        double *w, *w2;
+        g3_mesh a, b;
+        ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_DUAL3_SOLVER, solver), CVM_OK);
+        ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_DUAL3_CUCKOO_BUDGET, 80), CVM_OK);
+        optimise_and_check(m, 3, 1, 1);
+        m2 = generated("tetra.off", 0.3, 0);
+        ck_assert_int_eq(cvm_mesh_set_option(m2, CVM_OPT_DUAL3_SOLVER, solver), CVM_OK);
+        ck_assert_int_eq(cvm_mesh_set_option(m2, CVM_OPT_DUAL3_CUCKOO_BUDGET, 80), CVM_OK);
+        ck_assert_int_eq(cvm_mesh_set_option(m2, CVM_OPT_DUAL3_MAX_SWEEPS, 3), CVM_OK);
+        ck_assert_int_eq(cvm_mesh_optimise_dual3(m2), CVM_OK);
+        g3_mesh_get(&a, m);
+        g3_mesh_get(&b, m2);
+        w = weights_of(m, a.nv);
+        w2 = weights_of(m2, b.nv);
+        ck_assert(a.nv == b.nv && a.nt == b.nt);
+        ck_assert(memcmp(a.xyz, b.xyz, 3 * a.nv * sizeof *a.xyz) == 0);
+        ck_assert(memcmp(w, w2, a.nv * sizeof *w) == 0);
+        ck_assert(memcmp(a.tet, b.tet, 4 * a.nt * sizeof *a.tet) == 0);
+        free(w);
+        free(w2);
+        g3_mesh_free(&a);
+        g3_mesh_free(&b);
+        cvm_mesh_free(m);
+        cvm_mesh_free(m2);
     }
 }
 END_TEST
@@ -631,6 +672,7 @@ TCase *dual3_optimise_tcase(void)
     tcase_add_test(tc, tetra_keeps_faces_and_regularity);
     tcase_add_test(tc, cube_keeps_faces_and_regularity);
     tcase_add_test(tc, same_bytes_for_every_run_and_thread_count);
+    tcase_add_test(tc, cuckoo_keeps_faces_and_regularity);
     tcase_add_test(tc, cancel_and_time_limit_leave_a_valid_mesh);
     tcase_add_test(tc, flips_cancel_and_time_limit_leave_a_valid_mesh);
     tcase_add_test(tc, flips_keep_a_point_set_regular);
