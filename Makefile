@@ -104,11 +104,11 @@ TEST_ENV = CVM_DATA_DIR=$(DATA_DIR) CVM_TEST_DATA=$(CURDIR)/tests/data CVM_DATA3
 DATA3D := $(BUILD)/data3d
 
 # Fuzz targets: tests/fuzz/fuzz_<name>.c, seeds in tests/fuzz/corpus/<name>/.
-FUZZ_TARGETS := poly_read node_read cdt vtu_read vtk_read msh_read refine optimise off_read stl_read tetpoly_read delaunay3 generate3 quadmesh insert3 optimise3
+FUZZ_TARGETS := poly_read node_read cdt vtu_read vtk_read msh_read refine optimise off_read stl_read tetpoly_read delaunay3 generate3 quadmesh insert3 optimise3 ele_read
 # The targets make check runs for FUZZ_TIME seconds with a fixed seed. A
 # target leaves this list while its fixed-seed run reaches one of its open
 # findings (tests/fuzz/open/<target>/): it would fail on those known inputs.
-FUZZ_CHECK_TARGETS := poly_read node_read cdt vtu_read vtk_read msh_read refine optimise off_read stl_read tetpoly_read delaunay3 generate3 quadmesh insert3 optimise3
+FUZZ_CHECK_TARGETS := poly_read node_read cdt vtu_read vtk_read msh_read refine optimise off_read stl_read tetpoly_read delaunay3 generate3 quadmesh insert3 optimise3 ele_read
 FUZZ_BINS := $(FUZZ_TARGETS:%=$(BUILD)/fuzz/fuzz_%)
 REPLAY_BINS := $(FUZZ_TARGETS:%=$(BUILD)/fuzz/replay_%)
 FUZZ_SUPPORT_OBJ := $(BUILD)/obj/tests/fuzz/mesh_oracle.o $(BUILD)/obj/tests/fuzz/fuzz_input.o \
@@ -209,6 +209,7 @@ FUZZ_RUNS_optimise ?= 1000
 FUZZ_RUNS_off_read ?= 200000
 FUZZ_RUNS_stl_read ?= 200000
 FUZZ_RUNS_tetpoly_read ?= 200000
+FUZZ_RUNS_ele_read ?= 100000
 FUZZ_RUNS_delaunay3 ?= 600
 FUZZ_RUNS_generate3 ?= 2000
 FUZZ_RUNS_quadmesh ?= 300

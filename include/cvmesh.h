@@ -462,10 +462,15 @@ CVM_API cvm_status cvm_mesh_set_regions_nd(cvm_mesh *m, const double *r, size_t 
  * exact coordinates) or TetGen .poly/.smesh (facets of convex polygons with
  * markers, hole and region points; a .poly is 3D when its first line says
  * dimension 3), or a 3D point set in a TetGen .node. The surface is checked
- * by cvm_mesh_triangulate(), which meshes its inside.
+ * by cvm_mesh_triangulate(), which meshes its inside. A TetGen .ele (4 corners
+ * per tetrahedron; the first attribute, if any, as the region attribute) with
+ * the points of the .node of the same stem is a tetrahedral mesh: it is taken
+ * as the handle's mesh as by cvm_mesh_set_tetrahedra(), with its checks and
+ * statuses (messages in the files' numbering); quadratic (10-node) tetrahedra
+ * give CVM_E_UNSUPPORTED. @since 0.2 for .ele.
  *
  * @param path  file name; the format follows the extension (.poly, .node, .vtu,
- *              .vtk, .msh, .smesh, .off, .stl; case-insensitive).
+ *              .vtk, .msh, .smesh, .off, .stl, .ele; case-insensitive).
  * Atomicity:   on error or cancellation the previous input (and, for .vtu, the
  *              previous mesh) is kept unchanged.
  * Stops:       the progress callback (stage CVM_STAGE_READ, fraction 0) is asked
@@ -2395,6 +2400,54 @@ CVM_API cvm_status cvm_mesh_copy_marker_name_keys(int32_t *dst, size_t dst_len,
  * @since 0.1
  */
 CVM_API cvm_status cvm_mesh_set_weights(cvm_mesh *m, const double *w, size_t count);
+
+/**
+ * Take a tetrahedral mesh made elsewhere (TetGen, Gmsh, a solver's own) as the
+ * handle's mesh, on the handle's 3D points, so that the 3D measures, checks,
+ * outputs and cvm_mesh_optimise_dual3() work on it ("bring your own mesh").
+ *
+ * @param m      a 3D handle with points (cvm_mesh_set_points() with dim 3, or
+ *               cvm_mesh_read() of a 3D .node); every point must be a corner of
+ *               some tetrahedron.
+ * @param tets   4 * count point ids (0-based), any orientation: a negatively
+ *               oriented tetrahedron gets two corners swapped.
+ * @param count  the number of tetrahedra, at least 1.
+ * @param tet_attr  count region attributes (finite), or NULL. Faces between
+ *               tetrahedra of different attributes become internal facets, which
+ *               the optimiser keeps, as it keeps the boundary.
+ * Checks (exact orient3d): ids in range and distinct per tetrahedron, no flat
+ * tetrahedron, each face shared by at most two tetrahedra and then from
+ * opposite sides, and the boundary (the faces of one tetrahedron, with the
+ * internal facets) a closed, manifold, consistently oriented surface without
+ * self-intersections, as cvm_mesh_triangulate() demands of a surface. The
+ * vertices are the points in order (no duplicate merging); the mesh is not
+ * assumed Delaunay (cvm_mesh_check() checks conformity and the boundary, not
+ * the Delaunay property; cvm_mesh_optimise_dual3() first flips the faces that
+ * are not locally regular). The holes and regions of the input are not used.
+ * Ownership:    @p tets and @p tet_attr are copied.
+ * Thread-safety: must not run concurrently with any other call on @p m.
+ * Atomicity:    on error the handle's mesh and input are unchanged.
+ * Cost:         O(count log count), plus the surface's intersection test (a grid).
+ * @return CVM_OK
+ *         CVM_E_NULL_ARG            m is NULL, or tets is NULL while count > 0
+ *         CVM_E_STATE               no 3D points on the handle
+ *         CVM_E_INPUT_EMPTY         count is 0
+ *         CVM_E_TOO_LARGE           count above INT32_MAX / 4
+ *         CVM_E_INPUT_INDEX         a tetrahedron names a point that does not exist
+ *         CVM_E_INPUT_DEGENERATE    a tetrahedron repeats a point or is flat, a face
+ *                                   belongs to three or more tetrahedra, or a point
+ *                                   is in no tetrahedron (message names it;
+ *                                   cvm_mesh_error_item() gives the tetrahedron or point)
+ *         CVM_E_INPUT_NONFINITE     an attribute is NaN or infinite
+ *         CVM_E_INPUT_INTERSECTING  two tetrahedra overlap (on one side of their shared
+ *                                   face), or the boundary is not manifold or
+ *                                   intersects itself (message names the faces)
+ *         CVM_E_INPUT_NOT_CLOSED    the boundary is not closed or not consistently oriented
+ *         CVM_E_NOMEM
+ * @since 0.2
+ */
+CVM_API cvm_status cvm_mesh_set_tetrahedra(cvm_mesh *m, const cvm_index *tets, size_t count,
+                                           const double *tet_attr);
 
 /**
  * Copy the weight of each vertex (0 for every vertex when none were set).

@@ -14,6 +14,8 @@
  *   (const double *ends, int dim)                     (2, d) float64 segment ends
  *   (const double *corners, int dim)                  (3, d) float64 triangle corners
  *   (const cvm_index *segs, size_t count)             (m, 2) integer pairs
+ *   (const cvm_index *tets, size_t count)             (m, 4) integer tetrahedra
+ *   const double *tet_attr                            None or (m,) float64
  *   (const int32_t *markers, size_t count)            (n,) integers
  * Any array-like is accepted; it is converted without a Python loop. Integer
  * arrays of another width are range-checked, never wrapped around. An empty
@@ -363,6 +365,21 @@ CVMPY_IN_ROWS(double, r, cvmpy_in_double, 4, "regions")
 CVMPY_IN_ROWS(cvm_index, segs, cvmpy_in_int32, 2, "segments")
 CVMPY_IN_ROWS(int32_t, markers, cvmpy_in_int32, 0, "markers")
 CVMPY_IN_ROWS(double, w, cvmpy_in_double, 0, "weights")
+CVMPY_IN_ROWS(cvm_index, tets, cvmpy_in_int32, 4, "tetrahedra")
+
+/* const double *tet_attr: None (NULL) or float64 values; the Python wrapper checks
+ * that there is one per tetrahedron. */
+%typemap(in, fragment="cvmpy_numpy") const double *tet_attr (PyArrayObject *arr = NULL) {
+    if ($input == Py_None) {
+        $1 = NULL;
+    } else {
+        arr = cvmpy_in_double($input, 0, "tetrahedron attributes");
+        if (!arr)
+            SWIG_fail;
+        $1 = (double *)PyArray_DATA(arr);
+    }
+}
+%typemap(freearg) const double *tet_attr { Py_XDECREF(arr$argnum); }
 
 /* CVMPY_IN_ROWS_N: the same with another name for the count. */
 %define CVMPY_IN_ROWS_N(CTYPE, NAME, COUNT, CONVERT, NCOLS, WHAT)

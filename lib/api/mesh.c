@@ -341,7 +341,7 @@ cvm_status cvm_mesh_read(cvm_mesh *m, const char *path)
     if (!path)
         return cvm__error(&m->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "path is NULL");
     if (cvm__path_has_ext(path, ".off") || cvm__path_has_ext(path, ".stl") ||
-        cvm__path_has_ext(path, ".smesh") ||
+        cvm__path_has_ext(path, ".smesh") || cvm__path_has_ext(path, ".ele") ||
         ((cvm__path_has_ext(path, ".poly") || cvm__path_has_ext(path, ".node")) &&
          cvm__file_dimension(path) == 3)) {
         s = cvm__mesh3_read(m, path); /* lib/api/mesh3.c */

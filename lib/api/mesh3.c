@@ -147,10 +147,94 @@ cvm_status cvm__mesh3_set_regions(cvm_mesh *m, const double *r, size_t n)
     return replace_seeds(m, r, n, 5);
 }
 
+void cvm__mesh3_take_tets(cvm_mesh *m, cvm__mesh3 *b)
+{
+    cvm__mesh3 *g = m->m3;
+    drop_output(&m->ctx, g);
+    g->xyz = b->xyz;
+    g->nv = b->nv;
+    g->tet = b->tet;
+    g->ntet = b->ntet;
+    g->tattr = b->tattr;
+    g->face = b->face;
+    g->nface = b->nface;
+    g->input_map = b->input_map;
+    g->have = 1;
+    memset(b, 0, sizeof *b);
+}
+
+cvm_status cvm_mesh_set_tetrahedra(cvm_mesh *m, const cvm_index *tets, size_t count,
+                                   const double *tet_attr)
+{
+    cvm__mesh3 *g, b;
+    cvm_status s;
+    if (!m)
+        return CVM_E_NULL_ARG;
+    CVM__BEGIN(m);
+    if (!tets && count)
+        return cvm__error(&m->ctx, CVM_E_NULL_ARG, CVM_ENT_NONE, -1, "tets is NULL");
+    g = m->m3;
+    if (!g || g->in.np == 0)
+        return cvm__error(&m->ctx, CVM_E_STATE, CVM_ENT_NONE, -1,
+                          "cvm_mesh_set_tetrahedra() needs the 3D points first: "
+                          "cvm_mesh_set_points(m, xyz, n, 3) or cvm_mesh_read() of a .node");
+    if ((s = cvm__mesh3_tets_build(&m->ctx, g->in.xyz, g->in.np, tets, tet_attr, count, 0, 0,
+                                   &b)))
+        return s;
+    cvm__mesh3_take_tets(m, &b);
+    return CVM_OK;
+}
+
+/* STEM.ele with the points of STEM.node: both read, the mesh built, then (only
+ * then) the handle's input and mesh replaced. */
+static cvm_status read_ele(cvm_mesh *m, const char *path)
+{
+    size_t stem = strlen(path) - 4;
+    char *node = cvm__malloc(&m->ctx, stem + 6);
+    cvm__surf3 in;
+    cvm__tetele te;
+    cvm__mesh3 b;
+    cvm__reader r;
+    cvm_status s;
+    cvm__surf3_init(&in);
+    memset(&te, 0, sizeof te);
+    memset(&b, 0, sizeof b);
+    if (!node)
+        return cvm__nomem(&m->ctx);
+    memcpy(node, path, stem);
+    memcpy(node + stem, ".node", 6);
+    if (!(s = cvm__file_reader_open(&m->ctx, &r, node))) {
+        s = cvm__read_tetnode(&m->ctx, &r, node, &in);
+        cvm__file_reader_close(&r);
+    }
+    if (!s && !(s = cvm__file_reader_open(&m->ctx, &r, path))) {
+        s = cvm__read_tetele(&m->ctx, &r, path, in.point_base, in.np, &te);
+        cvm__file_reader_close(&r);
+    }
+    if (!s)
+        s = cvm__mesh3_tets_build(&m->ctx, in.xyz, in.np, te.tet, te.attr, te.nt, te.first,
+                                  in.point_base, &b);
+    if (!s)
+        s = ensure(m);
+    cvm__tetele_free(&m->ctx, &te);
+    cvm__free(&m->ctx, node);
+    if (s) {
+        cvm__mesh3_tets_free(&m->ctx, &b);
+        cvm__surf3_free(&m->ctx, &in);
+        return s;
+    }
+    cvm__surf3_free(&m->ctx, &m->m3->in);
+    m->m3->in = in;
+    cvm__mesh3_take_tets(m, &b);
+    return CVM_OK;
+}
+
 cvm_status cvm__mesh3_read(cvm_mesh *m, const char *path)
 {
     cvm__surf3 in;
     cvm_status s;
+    if (cvm__path_has_ext(path, ".ele"))
+        return read_ele(m, path);
     if (cvm__path_has_ext(path, ".node")) {
         cvm__reader r;
         cvm__surf3_init(&in);

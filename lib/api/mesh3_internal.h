@@ -63,4 +63,21 @@ cvm_status cvm__mesh3_constrained_faces(cvm__ctx *ctx, const cvm__mesh3 *g, cons
 cvm_status cvm__mesh3_carve_by_orientation(cvm__ctx *ctx, cvm__mesh3 *g, const int32_t *tri,
                                            size_t nt, size_t *removed);
 
+/* A tetrahedral mesh given by the caller (mesh3_tets.c): the nt tetrahedra tets (4 point
+ * ids each, 0-based) on the np points xyz, with attributes attr (or NULL), checked and
+ * built into out's output fields (vertices = the points in order, tetrahedra positively
+ * oriented, boundary and attribute-interface faces in out->face, have 1). Messages
+ * number tetrahedra from tbase and points from pbase (the file's numbering). Statuses:
+ * CVM_E_INPUT_EMPTY, CVM_E_TOO_LARGE, CVM_E_INPUT_INDEX, CVM_E_INPUT_DEGENERATE (a
+ * repeated or unused point, a flat tetrahedron, a face of three tetrahedra),
+ * CVM_E_INPUT_NONFINITE (an attribute), CVM_E_INPUT_INTERSECTING (two tetrahedra on one
+ * side of a shared face; a boundary that intersects itself or is not manifold),
+ * CVM_E_INPUT_NOT_CLOSED, CVM_E_NOMEM; out is empty on error. */
+cvm_status cvm__mesh3_tets_build(cvm__ctx *ctx, const double *xyz, size_t np, const int32_t *tets,
+                                 const double *attr, size_t nt, long long tbase, long long pbase,
+                                 cvm__mesh3 *out);
+void cvm__mesh3_tets_free(cvm__ctx *ctx, cvm__mesh3 *out);
+/* Replace m's mesh by the one built in b (mesh3.c); b is emptied. */
+void cvm__mesh3_take_tets(cvm_mesh *m, cvm__mesh3 *b);
+
 #endif

@@ -209,6 +209,9 @@ void cli_outputs_committed(void);
 /* The end of a 3D command whose mesh m is made (cli_finish() is the 2D one): write o's
  * outputs, print report(f, m) on the report stream under --quality, mark the timings, note when nothing was asked (name: the
  * command, in: its input) and free m. Returns the command's exit status. */
+/* The quality report of a 3D mesh (cmd_mesh3.c): counts, the generator's and the
+ * optimiser's reports when they ran, the measures. */
+void cli_mesh3_report(FILE *f, cvm_mesh *m);
 int cli_finish3(cvm_mesh *m, cli_outputs *o, const char *name, const char *in,
                void (*report)(FILE *f, cvm_mesh *m));
 

@@ -141,7 +141,7 @@ static int parse(margs *a, int argc, char **argv)
     return CLI_EXIT_OK;
 }
 
-static void report(FILE *f, cvm_mesh *m)
+void cli_mesh3_report(FILE *f, cvm_mesh *m)
 {
     static const struct {
         cvm_entity kind;
@@ -188,6 +188,7 @@ static void report(FILE *f, cvm_mesh *m)
     };
     size_t i, n;
     double sw = 0, leaves = 0, rounds = 0;
+    int generated = 0;
     /* report 2: optimiser rows, shown after an optimisation; 3: octree rows, after an
      * octree; 4: refinement rows, after a refinement */
     int optimised = cvm_mesh_get_report(&sw, m, CVM_REPORT_DUAL3_SECONDS) == CVM_OK && sw > 0;
@@ -195,6 +196,12 @@ static void report(FILE *f, cvm_mesh *m)
                  leaves > 0;
     int refined = cvm_mesh_get_report(&rounds, m, CVM_REPORT_GEN3_REFINE_ROUNDS) == CVM_OK &&
                   rounds > 0;
+    /* report 1: generator rows, shown after cvm_mesh_generate3() (which always reports
+     * near-field or free-space points); not for a mesh read or tetrahedralised */
+    for (i = 0; i < 7 && !generated; i++) {
+        double v = 0;
+        generated = cvm_mesh_get_report(&v, m, (cvm_report)rows[i].which) == CVM_OK && v > 0;
+    }
     for (i = 0; i < sizeof counts / sizeof counts[0]; i++)
         if (cvm_mesh_count(&n, m, counts[i].kind) == CVM_OK)
             fprintf(f, "%-28s %lu\n", counts[i].label, (unsigned long)n);
@@ -202,7 +209,8 @@ static void report(FILE *f, cvm_mesh *m)
         double v;
         cvm_status s = rows[i].is_report ? cvm_mesh_get_report(&v, m, (cvm_report)rows[i].which)
                                          : cvm_mesh_get_measure(&v, m, (cvm_measure)rows[i].which);
-        if (s != CVM_OK || (rows[i].is_report == 2 && !optimised) ||
+        if (s != CVM_OK || (rows[i].is_report == 1 && !generated) ||
+            (rows[i].is_report == 2 && !optimised) ||
             (rows[i].is_report == 3 && !octree) || (rows[i].is_report == 4 && !refined))
             continue;
         fprintf(f, "%-28s ", rows[i].label);
@@ -288,7 +296,7 @@ static int run(margs *a)
             fprintf(stderr, "cvmesh: mesh3: %s\n", cvm_mesh_errmsg(m));
         cli_timing_mark(&a->o, "optimise");
     }
-    return cli_finish3(m, &a->o, "mesh3", a->in, report);
+    return cli_finish3(m, &a->o, "mesh3", a->in, cli_mesh3_report);
 }
 
 int cli_mesh3(int argc, char **argv)

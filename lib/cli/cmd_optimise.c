@@ -27,7 +27,7 @@ typedef struct oargs {
 void cli_optimise_help(FILE *f)
 {
     fprintf(f,
-            "usage: cvmesh optimise IN.poly|IN.node|IN.vtu [--algo delaunay|frontal] [--size H]\n"
+            "usage: cvmesh optimise IN.poly|IN.node|IN.vtu|IN.ele [--algo delaunay|frontal] [--size H]\n"
             "                       [--boundary-grading G] [-o OUT] [--dual DUAL.vtu]\n"
             "                       [--quality] [option flags]\n"
             "\n"
@@ -36,6 +36,9 @@ void cli_optimise_help(FILE *f)
             "vertices and set their power weights so that every triangle contains its power\n"
             "(weighted Voronoi) vertex or is merged with a neighbour, and dual edges are not\n"
             "tiny. Segments and input points are kept; the result is a regular triangulation.\n"
+            "3D input: a tetrahedral mesh made elsewhere (TetGen's IN.ele with IN.node), or a\n"
+            "closed surface or 3D point set tetrahedralised first (as `cvmesh tetrahedralize`),\n"
+            "is optimised by cvm_mesh_optimise_dual3() (the --opt-* flags; the 3D report).\n"
             "\n"
             "  --algo NAME                refine first: frontal (default when --size is given)\n"
             "                             or delaunay\n"
@@ -135,9 +138,40 @@ static void print_dual_report(FILE *f, cvm_mesh *m)
     }
 }
 
+/* A 3D input: a tetrahedral mesh (.ele) as it is, or a surface or point set
+ * tetrahedralised first; then cvm_mesh_optimise_dual3(). */
+static int run3(oargs *a, cvm_mesh *m, cvm_sizing *sz, cli_budget *budget)
+{
+    size_t nt = 0;
+    cvm_status s;
+    cvm_sizing_free(sz);
+    if (a->refine) {
+        fprintf(stderr, "cvmesh: optimise: %s is 3D: --algo and --size refine 2D meshes only "
+                        "(cvmesh mesh3 generates 3D ones)\n", a->in);
+        cvm_mesh_free(m);
+        return CLI_EXIT_USAGE;
+    }
+    if (cvm_mesh_count(&nt, m, CVM_ENT_TETRAHEDRON) != CVM_OK || nt == 0) {
+        cli_phase("tetrahedralizing", a->in);
+        if (cvm_mesh_triangulate(m) != CVM_OK || cli_interrupted())
+            return cli_fail(m, NULL, a->in);
+        cli_timing_mark(&a->o, "triangulate");
+        cli_budget_apply(budget, m);
+    }
+    cli_phase("optimising the dual of", a->in);
+    s = cvm_mesh_optimise_dual3(m);
+    if (cvm_status_is_error(s) || cli_interrupted())
+        return cli_fail(m, NULL, a->in);
+    if (s != CVM_OK)
+        fprintf(stderr, "cvmesh: note: %s: %s\n", a->in, cvm_mesh_errmsg(m));
+    cli_timing_mark(&a->o, "optimise");
+    return cli_finish3(m, &a->o, "optimise", a->in, cli_mesh3_report);
+}
+
 static int run(oargs *a)
 {
     cvm_mesh *m;
+    int32_t dim = 2;
     cvm_sizing *sz = NULL;
     cli_budget budget;
     cvm_status s;
@@ -164,6 +198,8 @@ static int run(oargs *a)
     }
     cli_timing_mark(&a->o, "read");
     cli_budget_apply(&budget, m);
+    if (cvm_mesh_dim(&dim, m) == CVM_OK && dim == 3)
+        return run3(a, m, sz, &budget);
     cli_phase("triangulating", a->in);
     if ((!cli_is_triangulated(m) && cvm_mesh_triangulate(m) != CVM_OK) || /* a .vtu is a mesh */
         cli_interrupted())

@@ -47,6 +47,21 @@ cvm_status cvm__read_tetpoly(cvm__ctx *ctx, cvm__reader *r, const char *name, in
 /* TetGen .node, 3D (the point section of a .poly alone). */
 cvm_status cvm__read_tetnode(cvm__ctx *ctx, cvm__reader *r, const char *name, cvm__surf3 *out);
 
+/* TetGen .ele (read_tetele.c): the tetrahedra of a mesh on the np points of a
+ * .node numbered from base. tet: 4 nt corners, 0-based; attr: the first
+ * attribute of each tetrahedron, or NULL when the file has none; first: the
+ * file's number of tetrahedron 0 (for messages). Corners are only checked to
+ * name points; CVM_E_UNSUPPORTED for quadratic (10-node) tetrahedra. */
+typedef struct cvm__tetele {
+    int32_t *tet;
+    double *attr;
+    size_t nt;
+    long long first;
+} cvm__tetele;
+cvm_status cvm__read_tetele(cvm__ctx *ctx, cvm__reader *r, const char *name, long long base,
+                            size_t np, cvm__tetele *out);
+void cvm__tetele_free(cvm__ctx *ctx, cvm__tetele *t);
+
 /* Open path and read it by extension (.off, .stl, .poly, .smesh; a .poly or
  * .smesh with 0 points reads them from STEM.node). CVM_E_IO_OPEN when it cannot
  * be opened, CVM_E_UNSUPPORTED for another extension. */

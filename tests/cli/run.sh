@@ -332,6 +332,18 @@ if cmp -s "$OUT/tetra_1.node" "$OUT/tetra_2.node" && cmp -s "$OUT/tetra_1.ele" "
 else
     fail "mesh3: other bytes with 2 threads"
 fi
+# a mesh made elsewhere: the .node + .ele just written, optimised as it is
+expect_exit 0 "optimise a .ele" "$CLI" optimise "$OUT/tetra_1.ele" --quality --opt-sweeps 5 \
+    -o "$OUT/tetra_opt.vtu"
+for want in "non-compliant after merging" "outside before optimising" "optimiser sweeps"; do
+    expect_grep "optimise a .ele --quality" "$TMP/out" "$want"
+done
+if grep -q "matched face pairs" "$TMP/out"; then fail "optimise .ele: generator rows printed"; else pass; fi
+printf '1 4 0\n1 1 2 3 999\n' > "$OUT/tetra_1bad.ele"
+cp "$OUT/tetra_1.node" "$OUT/tetra_1bad.node"
+expect_exit 1 "optimise a bad .ele" "$CLI" optimise "$OUT/tetra_1bad.ele"
+expect_grep "optimise a bad .ele" "$TMP/err" "names point 999"
+expect_exit 2 "optimise a .ele with --size" "$CLI" optimise "$OUT/tetra_1.ele" --size 0.1
 expect_exit 0 "mesh3 --freespace octree" "$CLI" mesh3 "$D3/tetra.off" --size 0.3 --uniform \
     --freespace octree --quality -o "$OUT/octree.vtu"
 expect_grep "mesh3 --freespace octree" "$TMP/out" "octree points"

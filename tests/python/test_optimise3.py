@@ -77,3 +77,30 @@ def test_optimise_dual3_with_flips_keeps_vertices_and_volume():
         runs.append((m.points.copy(), m.weights.copy(), m.tetrahedra.copy()))
     for a, b in zip(runs[0], runs[1]):
         assert np.array_equal(a, b)
+
+
+def test_a_mesh_from_elsewhere_is_taken_and_optimised():
+    """Bring your own mesh: another mesh's points and tetrahedra (reversed, so
+    negatively oriented) given through Mesh.set_tetrahedra, then optimised."""
+    src = Mesh.read(data3d("tetra.off"))
+    src.generate3(0.25, gen3_size_from_surface=0)
+    p, t = src.points.copy(), src.tetrahedra[:, ::-1].copy()
+    m = Mesh()
+    m.set_points(p)
+    m.set_tetrahedra(t, attributes=np.ones(len(t)))
+    assert m.check()
+    assert np.array_equal(np.sort(m.tetrahedra, 1), np.sort(t, 1))
+    assert abs(volume(m.points, m.tetrahedra) - volume(p, t)) <= 1e-12 * volume(p, t)
+    m.optimise_dual3(seed=3)
+    assert m.check()
+    assert m.report("dual3_outside_after_pct") < m.report("dual3_outside_before_pct")
+    bad = t.copy()
+    bad[0, 1] = len(p)
+    m2 = Mesh()
+    m2.set_points(p)
+    try:
+        m2.set_tetrahedra(bad)
+    except Exception as e:  # CVMError naming the tetrahedron
+        assert "tetrahedron 0" in str(e)
+    else:
+        raise AssertionError("a bad index was accepted")

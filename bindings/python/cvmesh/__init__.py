@@ -438,6 +438,21 @@ class Mesh:
             if markers is not None:
                 capi.cvm_mesh_set_segment_markers(m, markers)
 
+    def set_tetrahedra(self, tets: npt.ArrayLike,
+                       attributes: Optional[npt.ArrayLike] = None) -> None:
+        """Take a tetrahedral mesh made elsewhere ((m, 4) 0-based point indices, any
+        orientation; optional (m,) region attributes) on the 3D points already set;
+        see cvm_mesh_set_tetrahedra() (the checks, and CVMError on a bad mesh)."""
+        t = np.ascontiguousarray(tets, dtype=np.int32)
+        a = None
+        if attributes is not None:
+            a = np.ascontiguousarray(attributes, dtype=np.float64).reshape(-1)
+            if t.ndim != 2 or a.shape[0] != t.shape[0]:
+                raise ValueError("attributes: %d values for %d tetrahedra"
+                                 % (a.shape[0], t.shape[0] if t.ndim == 2 else -1))
+        with self._handle() as m:
+            capi.cvm_mesh_set_tetrahedra(m, t, a)
+
     def set_holes(self, holes: npt.ArrayLike) -> None:
         """Set hole seed points ((k, 2))."""
         with self._handle() as m:

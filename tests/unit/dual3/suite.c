@@ -7,5 +7,6 @@ Suite *dual3_suite(void)
     Suite *s = suite_create("dual3");
     suite_add_tcase(s, dual3_optimise_tcase());
     suite_add_tcase(s, dual3_merge_tcase());
+    suite_add_tcase(s, dual3_own_mesh_tcase());
     return s;
 }
