@@ -916,9 +916,14 @@ typedef enum cvm_option {
     CVM_OPT_DUAL3_MARGIN = 753,
     /** 1 (default): a boundary vertex all of whose boundary faces lie in one axis-aligned
      *  plane (inside a planar facet such as a box side) moves within that plane, exactly;
-     *  0: every boundary vertex keeps its position (its weight is free either way). Edges,
-     *  corners and vertices of curved or oblique surfaces never move. Integer, bounds
-     *  [0, 1]. @since 0.2 */
+     *  0: every boundary vertex keeps its position (its weight is free either way); 2: as
+     *  1, and also a vertex of the boundary (no internal facet at it) whose boundary
+     *  faces all turn less than 25 degrees from their mean normal (inside a smooth curved
+     *  patch or an oblique plane) slides: trial points in that normal's tangent plane are
+     *  put on the nearest point of its faces as they were when the run began, so every
+     *  vertex stays on the input surface; the new chords change the volume slightly on
+     *  curved patches. Edges and corners (sharper bends) never move. Integer, bounds
+     *  [0, 2] (2 since 0.2 as well). @since 0.2 */
     CVM_OPT_DUAL3_SLIDE_BOUNDARY = 754,
     /** Merge tolerance of the 3D dual (cvm_mesh_copy_dual3_merge_groups(), measures
      *  725-728), a fraction of the local ideal dual edge l_V = 0.38 x l; default 0.1,

@@ -38,7 +38,7 @@ cvm_status cvm_mesh_optimise_dual3(cvm_mesh *m)
     p.budget = (int)cvm__opt(m, CVM_OPT_DUAL3_BUDGET);
     p.margin = cvm__opt(m, CVM_OPT_DUAL3_MARGIN);
     p.seed = (uint64_t)cvm__opt(m, CVM_OPT_SEED);
-    p.slide = cvm__opt(m, CVM_OPT_DUAL3_SLIDE_BOUNDARY) != 0;
+    p.slide = (int)cvm__opt(m, CVM_OPT_DUAL3_SLIDE_BOUNDARY);
     p.flips = cvm__opt(m, CVM_OPT_DUAL3_FLIPS) != 0;
     p.solver = (int)cvm__opt(m, CVM_OPT_DUAL3_SOLVER);
     p.cuckoo_budget = (int)cvm__opt(m, CVM_OPT_DUAL3_CUCKOO_BUDGET);

@@ -27,6 +27,8 @@ static const cli_option_flag k_flags[] = {
      "--optimise: no move takes a dihedral angle below min(DEG, before) (default 10)"},
     {"--opt-fixed-boundary", NULL, CVM_OPT_DUAL3_SLIDE_BOUNDARY, 0, M3 | OPT,
      "--optimise: no boundary vertex moves (by default those inside an axis-aligned planar facet slide in it)"},
+    {"--opt-slide-surface", NULL, CVM_OPT_DUAL3_SLIDE_BOUNDARY, 2, M3 | OPT,
+     "--optimise: boundary vertices of smooth curved or oblique surface patches also slide, on the surface as it was"},
     {"--opt-no-flips", NULL, CVM_OPT_DUAL3_FLIPS, 0, M3 | OPT,
      "--optimise: keep the connectivity (by default flips repair the faces a move leaves not locally regular)"},
     {"--opt-solver", "N", CVM_OPT_DUAL3_SOLVER, 0, M3 | OPT,

@@ -55,6 +55,11 @@ typedef struct cvm__d3_work {
     size_t flips;    /* flips kept */
     size_t mflips;   /* flips of the last cvm__d3_restore() */
     size_t sweep;    /* the current sweep (keys the cuckoo streams) */
+    /* params.slide 2 (d3_slide.c): vertices sliding on the surface as it was */
+    uint8_t *curved; /* nv: 1 when the vertex slides on its ring */
+    double *tan;     /* 6 nv: the tangent basis of such a vertex */
+    int32_t *rstart, *rface; /* its ring: the faces rface[rstart[v] .. rstart[v + 1]) */
+    double *rxyz;    /* 9 per ring face: its corners when the run began */
 } cvm__d3_work;
 
 /* One nest of the cuckoo search: offsets u over the free degrees of freedom,
@@ -102,6 +107,13 @@ int cvm__d3_face_conflict_at(const cvm__d3_mesh *M, size_t t, int f, int32_t v, 
  * point, ns[i].f its fitness; order is scratch of CVM__D3_NESTS. No exact test. */
 int cvm__d3_cuckoo(const cvm__d3_work *K, int32_t v, const double *cur, double cfloor,
                    int budget, uint64_t key, cvm__d3_nest *ns, int *order);
+
+/* ---- sliding on the surface (d3_slide.c) ---- */
+/* Find the vertices that slide on their ring (params.slide 2) and keep the rings. */
+cvm_status cvm__d3_slide_init(cvm__ctx *ctx, cvm__d3_work *K, const cvm__d3_mesh *M);
+void cvm__d3_slide_free(cvm__ctx *ctx, cvm__d3_work *K);
+/* x (3) := the nearest point of v's ring. */
+void cvm__d3_slide_project(const cvm__d3_work *K, int32_t v, double *x);
 
 /* ---- mutable connectivity (d3_flip.c) ---- */
 /* Allocate the arrays above for M (capacity for growth) and copy its tetrahedra. */

@@ -32,6 +32,7 @@ static void work_free(cvm__ctx *ctx, cvm__d3_work *K)
     cvm__free(ctx, K->lv);
     cvm__free(ctx, K->stuck);
     cvm__free(ctx, K->slide);
+    cvm__d3_slide_free(ctx, K);
     memset(K, 0, sizeof *K);
 }
 
@@ -88,6 +89,10 @@ static cvm_status work_init(cvm__ctx *ctx, cvm__d3_work *K, const cvm__d3_mesh *
          * coordinates (exactly in the plane); else (an edge, a corner, a curved surface) not */
         K->slide[i] = K->p->slide && (K->slide[i] == 1 || K->slide[i] == 2 || K->slide[i] == 4)
                           ? (uint8_t)(~K->slide[i] & 7) : 0;
+    }
+    if (K->p->slide == 2 && cvm__d3_slide_init(ctx, K, M) != CVM_OK) {
+        work_free(ctx, K);
+        return CVM_E_NOMEM;
     }
     return CVM_OK;
 }
@@ -268,7 +273,8 @@ static int d3_try(cvm__d3_work *K, int32_t v, const double *cand, double f, int 
     return 0;
 }
 
-/* Compass search over the directions dirs[0..nd) (2a, 2a + 1: +-axis a; 6, 7: +-w)
+/* Compass search over the directions dirs[0..nd) (2a, 2a + 1: +-axis a; 6, 7: +-w;
+ * 8 + 2a, 9 + 2a: +-tangent a of a vertex sliding on its ring, then put on the ring)
  * from steps 0.08 l_v and 0.16 l_v^2, halved when no direction helps. 1 when v moved. */
 static int d3_compass(cvm__d3_work *K, int32_t v, const int *dirs, int nd, d3_search *S)
 {
@@ -280,13 +286,19 @@ static int d3_compass(cvm__d3_work *K, int32_t v, const int *dirs, int nd, d3_se
             int dir = dirs[(first + k) % nd];
             double f;
             memcpy(cand, S->cur, sizeof cand);
-            if (dir >= 6)
+            if (dir >= 8) {
+                const double *t = K->tan + 6 * (size_t)v + 3 * (size_t)((dir - 8) >> 1);
+                double h = (dir & 1) ? -hs : hs;
+                cand[0] += h * t[0], cand[1] += h * t[1], cand[2] += h * t[2];
+                cvm__d3_slide_project(K, v, cand);
+            } else if (dir >= 6) {
                 cand[3] += (dir & 1) ? -hw : hw;
-            else
+            } else {
                 cand[dir >> 1] += (dir & 1) ? -hs : hs;
+            }
             f = cvm__d3_star_penalty(K, v, cand, cand[3], S->best);
             evals++;
-            if (!d3_try(K, v, cand, f, dir < 6, S))
+            if (!d3_try(K, v, cand, f, dir < 6 || dir >= 8, S))
                 continue;
             first = (first + k) % nd;
             improved = moved = 1;
@@ -325,13 +337,15 @@ static int solve_vertex(cvm__d3_work *K, int32_t v)
 {
     cvm__d3_mesh *M = &K->W;
     double *x0 = M->xyz + 3 * (size_t)v, cmax0;
-    int nd = 0, moved = 0, a, dirs[8];
+    int nd = 0, moved = 0, a, dirs[12];
     d3_search S;
     if (K->lv[v] <= 0 || K->stuck[v] || cvm__d3_gather_star(K, v))
         return 0;
     for (a = 0; a < 3; a++)
         if (!K->fixpos[v] || (K->slide[v] >> a & 1))
             dirs[nd++] = 2 * a, dirs[nd++] = 2 * a + 1;
+    if (K->curved && K->curved[v])
+        dirs[nd++] = 8, dirs[nd++] = 9, dirs[nd++] = 10, dirs[nd++] = 11;
     dirs[nd++] = 6, dirs[nd++] = 7;
     S.cur[0] = x0[0], S.cur[1] = x0[1], S.cur[2] = x0[2], S.cur[3] = M->w[v];
     S.best = cvm__d3_star_penalty(K, v, S.cur, S.cur[3], HUGE_VAL);

@@ -73,7 +73,9 @@ typedef struct cvm__d3_params {
     int budget;             /* evaluations per vertex and sweep */
     double margin;          /* power vertex wanted margin x mean edge inside every face */
     uint64_t seed;
-    int slide;              /* 1: vertices inside an axis-aligned planar facet move in it */
+    int slide;              /* 1: vertices inside an axis-aligned planar facet move in it;
+                               2: also those of smooth boundary patches, on the surface
+                               as it was (d3_slide.c) */
     int flips;              /* 1: the connectivity may change (d3_flip.c) */
     int solver;             /* 1 compass search; 2 cuckoo search; 3 compass, then cuckoo
                                where the compass search found no move */

@@ -9,7 +9,8 @@
  *     tetrahedralisation, which the check verifies face by face);
  *   - the vertices and boundary faces are the same as before, and so are the
  *     tetrahedra without flips (with flips every vertex is still used), the
- *     volume the same (to 1e-9 relative), and the outside count did not grow;
+ *     volume the same (to 1e-9 relative; 10 % with slide 2), and the outside
+ *     count did not grow;
  *   - a second run on a fresh handle gives identical points, weights and
  *     tetrahedra;
  *   - the merged dual cells of the result (cvm_mesh_copy_dual3_merge_groups(),
@@ -21,7 +22,8 @@
  *
  * Bytes (missing ones read as 0):
  *   0      points: 5 + b % 40
- *   1      bits 0-1 sweeps 1 + b % 4; bit 2 slide; bit 3 weights; bits 4-7 budget 1 + 4 (b >> 4)
+ *   1      bits 0-1 sweeps 1 + b % 4; bit 2 slide (1, or 2 when byte 3 / 126 is odd);
+ *          bit 3 weights; bits 4-7 budget 1 + 4 (b >> 4)
  *   2      min dihedral (b % 61) degrees, merge tol (b / 61 % 5) / 4
  *   3      margin (b % 21) / 100, flips (b / 21 % 2), solver 1 + b / 42 % 3 (cuckoo budget 60)
  *   4..    per point: 3 coordinates (b % 8) / 4 (a grid), then, with weights, (b % 16) / 64
@@ -178,7 +180,10 @@ static cvm_mesh *run(const double *xyz, const double *w, size_t n, const double 
     FUZZ_REQUIRE(s == CVM_OK, "optimise_dual3 status %d: %s", (int)s, cvm_mesh_errmsg(m));
     FUZZ_REQUIRE(cvm_mesh_check(m) == CVM_OK, "check: %s", cvm_mesh_errmsg(m));
     FUZZ_REQUIRE(cvm_mesh_get_measure(&vol1, m, CVM_MEASURE_VOLUME) == CVM_OK, "volume");
-    FUZZ_REQUIRE(fabs(vol1 - vol0) <= 1e-9 * vol0, "volume %.17g -> %.17g", vol0, vol1);
+    /* slide 2 moves vertices of bent hull patches on the hull as it was: the chords
+       between them change the volume a little */
+    FUZZ_REQUIRE(fabs(vol1 - vol0) <= (opt[1] == 2 ? 0.1 : 1e-9) * vol0, "volume %.17g -> %.17g",
+                 vol0, vol1);
     FUZZ_REQUIRE(cvm_mesh_get_measure(&out1, m, CVM_MEASURE_CIRCUMCENTRE_OUTSIDE_PCT) == CVM_OK,
                  "outside");
     FUZZ_REQUIRE(cvm_mesh_count(&nt1, m, CVM_ENT_TETRAHEDRON) == CVM_OK, "count");
@@ -198,7 +203,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     cvm_mesh *m1, *m2;
     o3_state a, b, c;
     opt[0] = 1 + (b1 & 3);
-    opt[1] = (b1 >> 2) & 1;
+    opt[1] = (b1 >> 2) & 1 ? 1 + byte_at(data, size, 3) / 126 % 2 : 0;
     opt[2] = 1 + 4 * (b1 >> 4);
     opt[3] = byte_at(data, size, 2) % 61;
     opt[4] = (byte_at(data, size, 3) % 21) / 100.0;

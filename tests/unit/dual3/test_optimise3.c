@@ -210,6 +210,7 @@ START_TEST(statuses_and_options)
     ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_DUAL3_SOLVER, 0), CVM_E_OPTION_RANGE);
     ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_DUAL3_SOLVER, 4), CVM_E_OPTION_RANGE);
     ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_DUAL3_CUCKOO_BUDGET, 39), CVM_E_OPTION_RANGE);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_DUAL3_SLIDE_BOUNDARY, 3), CVM_E_OPTION_RANGE);
     ck_assert_int_eq(cvm_option_bounds(&b, CVM_OPT_DUAL3_SOLVER), CVM_OK);
     ck_assert_double_eq(b.def, 1);
     ck_assert_int_eq(cvm_option_bounds(&b, CVM_OPT_DUAL3_FLIPS), CVM_OK);
@@ -445,6 +446,71 @@ START_TEST(cuckoo_keeps_faces_and_regularity)
 }
 END_TEST
 
+/* The distance from p to the plane of the triangle abc. */
+static double plane_dist(const double *p, const double *a, const double *b, const double *c)
+{
+    double u[3], w[3], n[3], len;
+    int k;
+    for (k = 0; k < 3; k++)
+        u[k] = b[k] - a[k], w[k] = c[k] - a[k];
+    n[0] = u[1] * w[2] - u[2] * w[1], n[1] = u[2] * w[0] - u[0] * w[2], n[2] = u[0] * w[1] - u[1] * w[0];
+    len = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    return fabs(n[0] * (p[0] - a[0]) + n[1] * (p[1] - a[1]) + n[2] * (p[2] - a[2])) / len;
+}
+
+/* CVM_OPT_DUAL3_SLIDE_BOUNDARY 2 on the tetrahedron (oblique planar faces, which slide 1
+ * keeps fixed): boundary vertices inside a face move, and stay in its plane (to rounding);
+ * edges and corners stay; the surface triangles stay faces; the volume stays. */
+START_TEST(slide_surface_keeps_vertices_on_the_surface)
+{
+    cvm_mesh *m;
+    g3_mesh a, b;
+    double vol0, vol1;
+    size_t i, j, moved = 0;
+    char path[1024];
+    g3_data3d(path, sizeof path, "tetra.off");
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_msg(cvm_mesh_read(m, path) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    /* the faces re-meshed: vertices inside them */
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_GEN3_SURFACE, CVM_GEN3_SURFACE_REMESH_ALL),
+                     CVM_OK);
+    ck_assert_msg(cvm_mesh_generate3(m, 0.4) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_DUAL3_SLIDE_BOUNDARY, 2), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_DUAL3_MAX_SWEEPS, 4), CVM_OK);
+    g3_mesh_get(&a, m);
+    vol0 = g3_tet_volume(&a);
+    ck_assert_msg(cvm_mesh_optimise_dual3(m) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    ck_assert_msg(cvm_mesh_check(m) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    g3_mesh_get(&b, m);
+    vol1 = g3_tet_volume(&b);
+    ck_assert_double_eq_tol(vol1, vol0, 1e-12 * vol0);
+    ck_assert_uint_eq(a.nf, b.nf);
+    for (i = 0; i < a.nf; i++)
+        ck_assert(g3_face_on_boundary(&b, a.face[3 * i], a.face[3 * i + 1], a.face[3 * i + 2]));
+    for (i = 0; i < a.nv; i++) {
+        int on = 0, bnd = 0;
+        if (memcmp(a.xyz + 3 * i, b.xyz + 3 * i, 3 * sizeof *a.xyz) == 0)
+            continue;
+        /* a boundary vertex that moved lies in the plane of every face it had */
+        for (j = 0; j < a.nf; j++) {
+            const cvm_index *f = a.face + 3 * j;
+            if (f[0] != (cvm_index)i && f[1] != (cvm_index)i && f[2] != (cvm_index)i)
+                continue;
+            bnd = 1;
+            on += plane_dist(b.xyz + 3 * i, a.xyz + 3 * f[0], a.xyz + 3 * f[1],
+                             a.xyz + 3 * f[2]) <= 1e-12;
+            ck_assert(plane_dist(b.xyz + 3 * i, a.xyz + 3 * f[0], a.xyz + 3 * f[1],
+                                 a.xyz + 3 * f[2]) <= 1e-12);
+        }
+        moved += bnd && on;
+    }
+    ck_assert_uint_gt(moved, 0); /* some vertex inside a face slid */
+    g3_mesh_free(&a);
+    g3_mesh_free(&b);
+    cvm_mesh_free(m);
+}
+END_TEST
+
 static void run_bytes(double threads, double **xyz, double **w, size_t *nv, cvm_index **tet,
                       size_t *nt)
 {
@@ -673,6 +739,7 @@ TCase *dual3_optimise_tcase(void)
     tcase_add_test(tc, cube_keeps_faces_and_regularity);
     tcase_add_test(tc, same_bytes_for_every_run_and_thread_count);
     tcase_add_test(tc, cuckoo_keeps_faces_and_regularity);
+    tcase_add_test(tc, slide_surface_keeps_vertices_on_the_surface);
     tcase_add_test(tc, cancel_and_time_limit_leave_a_valid_mesh);
     tcase_add_test(tc, flips_cancel_and_time_limit_leave_a_valid_mesh);
     tcase_add_test(tc, flips_keep_a_point_set_regular);
