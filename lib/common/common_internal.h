@@ -102,6 +102,13 @@ uint64_t cvm__rng_next(cvm__rng *r);
 uint64_t cvm__rng_below(cvm__rng *r, uint64_t n);
 /* Uniform double in [0, 1). */
 double cvm__rng_uniform(cvm__rng *r);
+/* Standard normal (Box-Muller, two uniforms). */
+double cvm__rng_gauss(cvm__rng *r);
+/* A Levy-stable step of index 1.5 (Mantegna's algorithm, two normals). */
+double cvm__rng_levy(cvm__rng *r);
+/* order[0..n) := 0..n-1 sorted by the double at byte offset i * stride from key,
+ * ties by index (insertion sort: for small n, deterministic). */
+void cvm__order_small(const double *key, size_t stride, int *order, int n);
 
 /* ---- insertion order (brio.c): biased randomised rounds (BRIO, Amenta, Choi
  * and Rote 2003) with a space-filling curve inside each round; both kernels

@@ -1,4 +1,7 @@
-/* rng.c - the per-handle deterministic random stream (xoshiro256**, Blackman & Vigna). */
+/* rng.c - the per-handle deterministic random stream (xoshiro256**, Blackman & Vigna),
+ * and the normal and Levy variates the cuckoo searches draw from it. */
+#include <math.h>
+
 #include "common_internal.h"
 
 static uint64_t splitmix64(uint64_t *x)
@@ -50,4 +53,18 @@ uint64_t cvm__rng_below(cvm__rng *r, uint64_t n)
 double cvm__rng_uniform(cvm__rng *r)
 {
     return (double)(cvm__rng_next(r) >> 11) * (1.0 / 9007199254740992.0);
+}
+
+double cvm__rng_gauss(cvm__rng *r)
+{
+    double u1 = cvm__rng_uniform(r), u2 = cvm__rng_uniform(r);
+    return sqrt(-2.0 * log(1.0 - u1)) * cos(6.283185307179586 * u2);
+}
+
+double cvm__rng_levy(cvm__rng *r)
+{
+    /* Mantegna's algorithm for beta = 1.5: sigma_u, then u / |v|^(1 / beta) */
+    const double sigma = 0.69657450255769682;
+    double uu = cvm__rng_gauss(r) * sigma, vv = fabs(cvm__rng_gauss(r));
+    return uu / pow(vv > 1e-300 ? vv : 1e-300, 1.0 / 1.5);
 }

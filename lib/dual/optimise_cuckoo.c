@@ -22,22 +22,7 @@
 #define NEST_MAX (10 * CVM__DOPT_MAXDOF)
 #define A_POS 0.2     /* initial spread and step scale, units of the local size */
 #define A_W 0.1       /* the same for the weight, units of its square */
-#define BETA 1.5
 #define PHI 1.6180339887498949
-
-static double gauss(cvm__rng *r)
-{
-    double u1 = cvm__rng_uniform(r), u2 = cvm__rng_uniform(r);
-    return sqrt(-2.0 * log(1.0 - u1)) * cos(6.283185307179586 * u2);
-}
-
-static double levy(cvm__rng *r)
-{
-    /* sigma_u of Mantegna's algorithm for beta = 1.5 */
-    static const double sigma = 0.69657450255769682;
-    double uu = gauss(r) * sigma, vv = fabs(gauss(r));
-    return uu / pow(vv > 1e-300 ? vv : 1e-300, 1.0 / BETA);
-}
 
 typedef struct nest {
     double x[CVM__DOPT_MAXDOF];
@@ -49,24 +34,8 @@ static void levy_from(cvm__dopt_local *L, cvm__rng *r, const nest *from, double 
 {
     int d;
     for (d = 0; d < L->ndof; d++)
-        out->x[d] = from->x[d] + a * scale[d] * levy(r);
+        out->x[d] = from->x[d] + a * scale[d] * cvm__rng_levy(r);
     out->f = cvm__dopt_eval(L, out->x);
-}
-
-/* Insertion sort of order[] by (f, index): deterministic, n <= 30. */
-static void sort_nests(const nest *ns, int *order, int n)
-{
-    int i, j;
-    for (i = 0; i < n; i++)
-        order[i] = i;
-    for (i = 1; i < n; i++) {
-        int k = order[i];
-        for (j = i; j > 0 && (ns[order[j - 1]].f > ns[k].f ||
-                              (ns[order[j - 1]].f == ns[k].f && order[j - 1] > k));
-             j--)
-            order[j] = order[j - 1];
-        order[j] = k;
-    }
 }
 
 void cvm__dopt_cuckoo(cvm__dopt_local *L, int budget, cvm__rng *r, double f0, double *u, double *f)
@@ -86,7 +55,7 @@ void cvm__dopt_cuckoo(cvm__dopt_local *L, int budget, cvm__rng *r, double f0, do
         ns[i].f = cvm__dopt_eval(L, ns[i].x);
     }
     while (L->evals - start < (size_t)budget) {
-        sort_nests(ns, order, n);
+        cvm__order_small(&ns[0].f, sizeof ns[0], order, n);
         for (i = ntop; i < n && L->evals - start < (size_t)budget; i++) {
             nest egg;
             levy_from(L, r, &ns[order[i]], 1.0 / sqrt((double)G), scale, &egg);

@@ -22,7 +22,6 @@
 
 #define D3C_A_POS 0.2 /* initial spread and step scale, x the mean edge at v */
 #define D3C_A_W 0.1   /* the same for the weight, x its square */
-#define D3C_BETA 1.5
 #define D3C_PHI 1.6180339887498949
 
 typedef struct d3c_ctx {
@@ -34,20 +33,6 @@ typedef struct d3c_ctx {
     double cfloor;
     size_t evals;
 } d3c_ctx;
-
-static double d3c_gauss(cvm__rng *r)
-{
-    double u1 = cvm__rng_uniform(r), u2 = cvm__rng_uniform(r);
-    return sqrt(-2.0 * log(1.0 - u1)) * cos(6.283185307179586 * u2);
-}
-
-static double d3c_levy(cvm__rng *r)
-{
-    /* sigma_u of Mantegna's algorithm for beta = 1.5 */
-    const double sigma = 0.69657450255769682;
-    double uu = d3c_gauss(r) * sigma, vv = fabs(d3c_gauss(r));
-    return uu / pow(vv > 1e-300 ? vv : 1e-300, 1.0 / D3C_BETA);
-}
 
 static void d3c_point(const d3c_ctx *C, const double *u, double *cand)
 {
@@ -73,24 +58,8 @@ static void d3c_levy_from(d3c_ctx *C, cvm__rng *r, const cvm__d3_nest *from, dou
 {
     int d;
     for (d = 0; d < C->ndof; d++)
-        out->u[d] = from->u[d] + a * C->scale[d] * d3c_levy(r);
+        out->u[d] = from->u[d] + a * C->scale[d] * cvm__rng_levy(r);
     out->f = d3c_eval(C, out->u);
-}
-
-/* Insertion sort of order[] by (f, index): deterministic, n <= 40. */
-static void d3c_sort(const cvm__d3_nest *ns, int *order, int n)
-{
-    int i, j;
-    for (i = 0; i < n; i++)
-        order[i] = i;
-    for (i = 1; i < n; i++) {
-        int k = order[i];
-        for (j = i; j > 0 && (ns[order[j - 1]].f > ns[k].f ||
-                              (ns[order[j - 1]].f == ns[k].f && order[j - 1] > k));
-             j--)
-            order[j] = order[j - 1];
-        order[j] = k;
-    }
 }
 
 int cvm__d3_cuckoo(const cvm__d3_work *K, int32_t v, const double *cur, double cfloor,
@@ -117,7 +86,7 @@ int cvm__d3_cuckoo(const cvm__d3_work *K, int32_t v, const double *cur, double c
         ns[i].f = d3c_eval(&C, ns[i].u);
     }
     while (C.evals < (size_t)budget) {
-        d3c_sort(ns, order, n);
+        cvm__order_small(&ns[0].f, sizeof ns[0], order, n);
         for (i = ntop; i < n && C.evals < (size_t)budget; i++) {
             cvm__d3_nest egg;
             d3c_levy_from(&C, &r, &ns[order[i]], 1.0 / sqrt((double)G), &egg);
@@ -142,7 +111,7 @@ int cvm__d3_cuckoo(const cvm__d3_work *K, int32_t v, const double *cur, double c
         }
         G++;
     }
-    d3c_sort(ns, order, n);
+    cvm__order_small(&ns[0].f, sizeof ns[0], order, n);
     for (i = 0; i < n; i++) /* the nests as points, best first */
         d3c_point(&C, ns[i].u, ns[i].x);
     return n;
