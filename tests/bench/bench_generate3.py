@@ -16,7 +16,8 @@ their surfaces (size 0.5 and 1.0, grading 0.3); the last three rows again with
 re-meshed surfaces again with --optimise (cvm_mesh_optimise_dual3(), defaults;
 its seconds are "generate" + "optimise"); after each TetGen row of a surface as
 given, cvmesh's optimiser on TetGen's mesh (`cvmesh optimise TETGEN.ele`: the
-mesh read as it is, its seconds the optimiser's); then the first
+mesh read as it is, its seconds the optimiser's; again with --opt-slide-surface,
+boundary vertices of smooth patches sliding on the surface); then the first
 four again with each other free-space method (--freespace octree, refine;
 cvmesh only). cvmesh rows also give the exact % of tetrahedra whose power vertex lies
 strictly outside them, all and at the boundary (`--quality`, with the weights
@@ -120,21 +121,22 @@ def gmsh_row(name, src, hmax, tmp, algo):
                 **measure(*read_mesh(base)))
 
 
-def optimise_row(name, base, tmp):
+def optimise_row(name, base, tmp, extra=()):
     """cvmesh's optimiser on a mesh made elsewhere (`cvmesh optimise BASE.ele`): the
     exact outside and non-compliant shares its --quality prints, the optimiser's
     seconds, and the numpy measures of the result."""
     out = os.path.join(tmp, "opt")
+    label = " ".join(("tetgen + cvmesh optimise",) + tuple(extra))
     r = subprocess.run([CLI, "optimise", base + ".ele", "-o", out + ".node", "--timings",
-                        "--quality", "--quiet"], capture_output=True, text=True)
+                        "--quality", "--quiet"] + list(extra), capture_output=True, text=True)
     if r.returncode != 0:
-        return {"case": name, "mesher": "tetgen + cvmesh optimise", "error": r.stderr.strip()}
+        return {"case": name, "mesher": label, "error": r.stderr.strip()}
     lines = r.stdout.splitlines()
     val = {l.split(":")[0]: float(l.split()[1]) for l in lines if l.startswith("optimise:")}
     k = [i for i, l in enumerate(lines) if l.startswith("circumcentre outside")][0]
     nc = [float(l.split()[-2]) for l in lines if l.startswith("non-compliant after merging")][0]
     bef = [float(l.split()[-2]) for l in lines if l.startswith("outside before optimising")][0]
-    return dict(case=name, mesher="tetgen + cvmesh optimise", seconds=round(val["optimise"], 3),
+    return dict(case=name, mesher=label, seconds=round(val["optimise"], 3),
                 exact_outside_before_pct=bef,
                 exact_outside_pct=[float(lines[k].split()[-2]), float(lines[k + 1].split()[-2])],
                 noncompliant_after_merge_pct=nc, **measure(*read_mesh(out)))
@@ -232,7 +234,8 @@ def main():
             print(json.dumps(dict(case=name, mesher="tetgen -" + sw, seconds=round(info["seconds"], 3),
                                   **row2)))
             if not any(a.startswith("--remesh") for a in args):
-                print(json.dumps(optimise_row(name, tb, tmp)))
+                for extra in ((), ("--opt-slide-surface",)):
+                    print(json.dumps(optimise_row(name, tb, tmp, extra)))
 
 
 if __name__ == "__main__":
