@@ -229,6 +229,61 @@ START_TEST(bad_meshes_give_statuses)
 }
 END_TEST
 
+/* CVM_OPT_DUAL3_SLIDE_BOUNDARY 2 on the Kuhn cube turned by an arbitrary rotation (so its
+ * sides are oblique planes, which slide 1 keeps fixed): vertices inside the sides move,
+ * and stay in their side's plane to rounding; edges and corners stay; the volume stays. */
+START_TEST(slide_surface_on_a_rotated_cube)
+{
+    double xyz[3 * OWN_NP], rot[3 * OWN_NP], R[9], v, *x1;
+    cvm_index tet[4 * OWN_NT];
+    const double a = 0.5, b = 0.3; /* rotation about z by a, then about x by b */
+    size_t i, moved = 0;
+    int k;
+    cvm_mesh *m;
+    own_mesh(xyz, tet, NULL);
+    R[0] = cos(a), R[1] = -sin(a), R[2] = 0;
+    R[3] = cos(b) * sin(a), R[4] = cos(b) * cos(a), R[5] = -sin(b);
+    R[6] = sin(b) * sin(a), R[7] = sin(b) * cos(a), R[8] = cos(b);
+    for (i = 0; i < OWN_NP; i++)
+        for (k = 0; k < 3; k++)
+            rot[3 * i + k] = R[3 * k] * xyz[3 * i] + R[3 * k + 1] * xyz[3 * i + 1] +
+                             R[3 * k + 2] * xyz[3 * i + 2];
+    m = own_handle(rot);
+    ck_assert_int_eq(cvm_mesh_set_tetrahedra(m, tet, OWN_NT, NULL), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_DUAL3_SLIDE_BOUNDARY, 2), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_DUAL3_MAX_SWEEPS, 6), CVM_OK);
+    ck_assert_msg(cvm_mesh_optimise_dual3(m) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    ck_assert_msg(cvm_mesh_check(m) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    ck_assert_int_eq(cvm_mesh_get_measure(&v, m, CVM_MEASURE_VOLUME), CVM_OK);
+    ck_assert_double_eq_tol(v, 1.0, 1e-12);
+    x1 = malloc(sizeof rot);
+    ck_assert_ptr_nonnull(x1);
+    ck_assert_int_eq(cvm_mesh_copy_points_nd(x1, 3 * OWN_NP, 3, m), CVM_OK);
+    for (i = 0; i < OWN_NP; i++) {
+        const double *p0 = xyz + 3 * i;
+        double q[3];
+        int nside = 0, c;
+        for (c = 0; c < 3; c++) /* the sides of the unrotated cube the point lies on */
+            nside += p0[c] == 0 || p0[c] == 1;
+        if (memcmp(x1 + 3 * i, rot + 3 * i, 3 * sizeof *x1) == 0)
+            continue;
+        ck_assert_msg(nside <= 1, "point %lu on an edge or corner moved", (unsigned long)i);
+        if (nside == 0)
+            continue;
+        for (k = 0; k < 3; k++) /* back in the cube's frame: R is orthogonal */
+            q[k] = R[k] * x1[3 * i] + R[3 + k] * x1[3 * i + 1] + R[6 + k] * x1[3 * i + 2];
+        for (c = 0; c < 3; c++)
+            if (p0[c] == 0 || p0[c] == 1)
+                ck_assert_msg(fabs(q[c] - p0[c]) <= 1e-12, "point %lu left its side by %g",
+                              (unsigned long)i, fabs(q[c] - p0[c]));
+        moved++;
+    }
+    ck_assert_uint_gt(moved, 0);
+    free(x1);
+    cvm_mesh_free(m);
+}
+END_TEST
+
 /* The mesh as TetGen files, numbered from 1, with the attribute. */
 static void write_files(const char *dir, const double *xyz, const cvm_index *tet, const double *attr)
 {
@@ -372,6 +427,7 @@ TCase *dual3_own_mesh_tcase(void)
     tcase_set_timeout(tc, 120);
     tcase_add_test(tc, kuhn_cube_is_taken_and_optimised);
     tcase_add_test(tc, bad_meshes_give_statuses);
+    tcase_add_test(tc, slide_surface_on_a_rotated_cube);
     tcase_add_test(tc, tetgen_ele_is_read);
     tcase_add_test(tc, oom_at_every_allocation);
     return tc;
