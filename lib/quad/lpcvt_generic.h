@@ -188,9 +188,17 @@ static cvm_status CVM__G(fan)(CVM__R *e, cvm__lpcvt *L, cvm__ctx *err, const CVM
 #if CVM__GRAD
         {
             /* u^p as u^(p-1) u: the same products in the same order as ipow(u, p) */
-            double v0 = CVM__G(ipow)(u0, p - 1), v1 = CVM__G(ipow)(u1, p - 1);
-            double r0 = r[3] * p * v0, r1 = r[3] * p * v1;
+            double v0, v1, r0, r1;
             int m;
+            if (p == 6) { /* the default, unrolled: the same left-to-right products */
+                v0 = u0 * u0 * u0 * u0 * u0;
+                v1 = u1 * u1 * u1 * u1 * u1;
+            } else {
+                v0 = CVM__G(ipow)(u0, p - 1);
+                v1 = CVM__G(ipow)(u1, p - 1);
+            }
+            r0 = r[3] * p * v0;
+            r1 = r[3] * p * v1;
             sum += r[3] * (v0 * u0 + v1 * u1);
             for (m = 0; m < 2; m++) {
                 /* d f / d y_m = sum_k r_k (M_km + sum_l dM_kl/dy_m d_l) with M at y, and the direct

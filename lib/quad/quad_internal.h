@@ -203,6 +203,8 @@ typedef struct cvm__lpcvt {
     size_t cap_gpv;
     int32_t *star;
     size_t cap_star;
+    int kept;           /* 1: T and the polygons are those of a valid configuration, and the next
+                           topology keeps them when T is still Delaunay (reconstruction only) */
     int valid;          /* the last topology: 1, or 0 when the energy is not defined there: a
                            moving site on another, beyond the ghosts (an unbounded cell) or, with
                            clipping, not strictly inside the domain */
