@@ -375,10 +375,11 @@ static void factor_from_eig(double M[4], double dM[8], double cs, double sn, con
     }
 }
 
-/* A built-in field at y whose eigen-structure is known in closed form: g and dg (for the checks)
- * and M, dM straight from its own eigen-directions, without decomposing g again. That M may
- * differ from cvm__metric_factor()'s by the sign or the order of its rows, which the energy
- * (|M d|_p^p, p even) does not see. 0 when the field is not one of these. */
+/* A built-in field at y whose eigen-structure is known in closed form: M, dM straight from its
+ * own eigen-directions, without decomposing g again. That M may differ from
+ * cvm__metric_factor()'s by the sign or the order of its rows, which the energy (|M d|_p^p, p
+ * even) does not see. Returns 1 (M, dM written, the checks pass), 2 (g and dg written: they
+ * may fail check_tensor(), which says why), or 0 when the field is not one of these. */
 static int builtin_M(const cvm__metric_builtin *b, const double *y, double g[3], double dg[6],
                      double M[4], double dM[8])
 {
@@ -422,13 +423,23 @@ static int builtin_M(const cvm__metric_builtin *b, const double *y, double g[3],
     case CVM__METRIC_SSHOCK: {
         cvm__eig2 e;
         double H[3], dH[6];
+        int ok;
         sshock_hessian(H, dH, y[0], y[1]);
         hessian_abs_eig(&e, mu, dmu, H, dH, 0.005, 0.2, 50);
-        cvm__eig2_compose(g, dg, e.cs, e.sn, mu, dmu, e.dth);
-        for (k = 0; k < 3; k++) {
-            g[k] *= sc;
-            dg[k] *= sc;
-            dg[3 + k] *= sc;
+        /* g itself only for a failing check's message: finite positive eigenvalues and finite
+         * derivatives and directions make a finite SPD g with finite derivatives */
+        ok = mu[0] > 0 && mu[1] > 0 && isfinite(sc * mu[0]) && isfinite(sc * mu[1]) &&
+             isfinite(e.cs) && isfinite(e.sn) && isfinite(e.dth[0]) && isfinite(e.dth[1]);
+        for (k = 0; k < 4; k++)
+            ok = ok && isfinite(sc * dmu[k]);
+        if (!ok) {
+            cvm__eig2_compose(g, dg, e.cs, e.sn, mu, dmu, e.dth);
+            for (k = 0; k < 3; k++) {
+                g[k] *= sc;
+                dg[k] *= sc;
+                dg[3 + k] *= sc;
+            }
+            return 2;
         }
         for (k = 0; k < 4; k++)
             dmu[k] *= sc;
@@ -446,7 +457,7 @@ static int builtin_M(const cvm__metric_builtin *b, const double *y, double g[3],
         return 0;
     }
     factor_from_eig(M, dM, cs, sn, mu, dmu, dth);
-    return 1;
+    return b->kind == CVM__METRIC_SSHOCK || tensor_ok(g, dg) ? 1 : 2;
 }
 
 cvm_status cvm__metric_eval_M_batch(const cvm__metric *mt, const double *y, size_t n, double *M,
@@ -460,17 +471,16 @@ cvm_status cvm__metric_eval_M_batch(const cvm__metric *mt, const double *y, size
         return cvm__error(err, CVM_E_INTERNAL, CVM_ENT_NONE, -1,
                           "metric batch of %lu points (at most %d)", (unsigned long)n,
                           CVM__QUAD_MAXQ);
-    for (q = 0; s && s->metric == cvm__metric_builtin_fn && s->metric_has_dg && q < n; q++)
-        if (!builtin_M((const cvm__metric_builtin *)s->metric_payload, y + 2 * q, g + 3 * q,
-                       dg + 6 * q, M + 4 * q, dM + 8 * q))
+    for (q = 0; s && s->metric == cvm__metric_builtin_fn && s->metric_has_dg && q < n; q++) {
+        int r = builtin_M((const cvm__metric_builtin *)s->metric_payload, y + 2 * q, g + 3 * q,
+                          dg + 6 * q, M + 4 * q, dM + 8 * q);
+        if (r == 0)
             break;
-    if (q == n && n > 0) { /* M and dM written; the same checks as every evaluation */
-        for (q = 0; q < n; q++)
-            if (!tensor_ok(g + 3 * q, dg + 6 * q) &&
-                (st = check_tensor(y + 2 * q, g + 3 * q, dg + 6 * q, err)))
-                return st;
-        return CVM_OK;
+        if (r == 2 && (st = check_tensor(y + 2 * q, g + 3 * q, dg + 6 * q, err)))
+            return st; /* the first point (in order) that fails the checks */
     }
+    if (q == n && n > 0)
+        return CVM_OK;
     for (q = 0; s && s->metric == cvm__metric_builtin_fn && s->metric_has_dg && q < n; q++)
         if (cvm__metric_builtin_fn(s->metric_payload, y + 2 * q, 2, g + 3 * q, dg + 6 * q) != 0)
             break; /* not a field of this version: the checked path says so */
