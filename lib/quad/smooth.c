@@ -19,6 +19,7 @@ typedef struct qs_work {
     double *cost;            /* per cell: its quad cost at the current points, when known */
     uint8_t *known;          /* per cell: 1 when cost[c] is that of the current points */
     double *trial;           /* per cell of the vertex being moved: its cost at the trial point */
+    uint8_t *dirty;          /* per vertex: 0 when nothing in its cells moved since it last stayed */
 } qs_work;
 
 /* 1 when cell c is strictly convex (every corner turns left, exact). */
@@ -107,6 +108,7 @@ static void qs_free(cvm__ctx *ctx, qs_work *W)
     cvm__free(ctx, W->cost);
     cvm__free(ctx, W->known);
     cvm__free(ctx, W->trial);
+    cvm__free(ctx, W->dirty);
 }
 
 /* The mean of v's parallelogram points into t, and the mean of its neighbours along quad edges
@@ -174,15 +176,22 @@ cvm_status cvm__quad_smooth(cvm__ctx *ctx, double *xy, const cvm__quad_smooth_in
         if ((size_t)(W.vstart[v + 1] - W.vstart[v]) > maxstar)
             maxstar = (size_t)(W.vstart[v + 1] - W.vstart[v]);
     W.trial = cvm__malloc(ctx, maxstar * sizeof *W.trial);
-    if (!W.trial) {
+    W.dirty = cvm__malloc(ctx, in->nv + 1);
+    if (!W.trial || !W.dirty) {
         qs_free(ctx, &W);
         return cvm__nomem(ctx);
     }
+    memset(W.dirty, 1, in->nv + 1);
     for (sweep = 0; sweep < in->sweeps; sweep++) {
         size_t moved = 0;
         for (v = in->first_free; v < in->nv; v++) {
             double t[2], lap[2], old[2], before, after;
             int j;
+            /* a vertex that stayed, with every point of its cells where it was then, would stay
+             * again: the same targets, costs and tests */
+            if (!W.dirty[v])
+                continue;
+            W.dirty[v] = 0;
             if (!qs_target(&W, v, t, lap) || !qs_star(&W, v, &before, 1))
                 continue;
             old[0] = xy[2 * v];
@@ -202,11 +211,15 @@ cvm_status cvm__quad_smooth(cvm__ctx *ctx, double *xy, const cvm__quad_smooth_in
                 xy[2 * v] = old[0];
                 xy[2 * v + 1] = old[1];
             } else { /* the trial's costs are those of v's quads now */
-                for (k = W.vstart[v]; k < W.vstart[v + 1]; k++)
-                    if (in->types[W.vcell[k]] == CVM_CELL_QUAD) {
-                        W.cost[W.vcell[k]] = W.trial[k - W.vstart[v]];
-                        W.known[W.vcell[k]] = 1;
+                for (k = W.vstart[v]; k < W.vstart[v + 1]; k++) {
+                    int32_t c = W.vcell[k], i;
+                    if (in->types[c] == CVM_CELL_QUAD) {
+                        W.cost[c] = W.trial[k - W.vstart[v]];
+                        W.known[c] = 1;
                     }
+                    for (i = in->off[c]; i < in->off[c + 1]; i++)
+                        W.dirty[in->conn[i]] = 1; /* v itself too: it may move on */
+                }
                 moved++;
             }
         }
