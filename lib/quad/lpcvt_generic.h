@@ -136,6 +136,7 @@ static cvm_status CVM__G(fan)(CVM__R *e, cvm__lpcvt *L, cvm__ctx *err, const CVM
     CVM__R area = 0.5 * ((a[0] - x[0]) * (b[1] - x[1]) - (a[1] - x[1]) * (b[0] - x[0])), sum = 0;
     CVM__R Me[4] = {0, 0, 0, 0};
     double M[4] = {0, 0, 0, 0}, dM[8] = {0, 0, 0, 0, 0, 0, 0, 0};
+    double Mb[4 * CVM__QUAD_MAXQ], dMb[8 * CVM__QUAD_MAXQ];
     size_t q;
     int p = L->p, k;
 #if CVM__GRAD
@@ -162,42 +163,57 @@ static cvm_status CVM__G(fan)(CVM__R *e, cvm__lpcvt *L, cvm__ctx *err, const CVM
                                  , M, dM, gx, ga, gb
 #endif
         );
+    { /* the metric at every quadrature point first: one batch, independent evaluations */
+        double yr[2 * CVM__QUAD_MAXQ];
+        cvm_status st;
+        for (q = 0; q < L->nq; q++) {
+            const double *r = L->rule[q];
+            yr[2 * q] = CVM__RE(r[0] * x[0] + r[1] * a[0] + r[2] * b[0]);
+            yr[2 * q + 1] = CVM__RE(r[0] * x[1] + r[1] * a[1] + r[2] * b[1]);
+        }
+        if ((st = cvm__metric_eval_M_batch(&L->metric, yr, L->nq, Mb, dMb, err)))
+            return st;
+    }
     for (q = 0; q < L->nq; q++) {
-        const double *r = L->rule[q];
+        const double *r = L->rule[q], *Mp = Mb + 4 * q, *dMp = dMb + 8 * q;
         CVM__R y[2], d[2], u0, u1;
         y[0] = r[0] * x[0] + r[1] * a[0] + r[2] * b[0];
         y[1] = r[0] * x[1] + r[1] * a[1] + r[2] * b[1];
-        if (!L->cellwise && !L->mconst) { /* M(y) at every quadrature point */
-            double yr[2];
-            cvm_status st;
-            yr[0] = CVM__RE(y[0]);
-            yr[1] = CVM__RE(y[1]);
-            if ((st = cvm__metric_eval_M(&L->metric, yr, M, dM, err)))
-                return st;
-            for (k = 0; k < 4; k++)
-                Me[k] = CVM__MK(M[k], CVM__IM(y[0]) * dM[k] + CVM__IM(y[1]) * dM[4 + k]);
-        }
+        for (k = 0; k < 4; k++) /* M(y) and, for a complex step, its first-order extension */
+            Me[k] = CVM__MK(Mp[k], CVM__IM(y[0]) * dMp[k] + CVM__IM(y[1]) * dMp[4 + k]);
         d[0] = y[0] - x[0];
         d[1] = y[1] - x[1];
         u0 = Me[0] * d[0] + Me[1] * d[1];
         u1 = Me[2] * d[0] + Me[3] * d[1];
-        sum += r[3] * (CVM__G(ipow)(u0, p) + CVM__G(ipow)(u1, p));
 #if CVM__GRAD
         {
-            double r0 = r[3] * p * CVM__G(ipow)(u0, p - 1), r1 = r[3] * p * CVM__G(ipow)(u1, p - 1);
+            /* u^p as u^(p-1) u: the same products in the same order as ipow(u, p) */
+            double v0, v1, r0, r1;
             int m;
+            if (p == 6) { /* the default, unrolled: the same left-to-right products */
+                v0 = u0 * u0 * u0 * u0 * u0;
+                v1 = u1 * u1 * u1 * u1 * u1;
+            } else {
+                v0 = CVM__G(ipow)(u0, p - 1);
+                v1 = CVM__G(ipow)(u1, p - 1);
+            }
+            r0 = r[3] * p * v0;
+            r1 = r[3] * p * v1;
+            sum += r[3] * (v0 * u0 + v1 * u1);
             for (m = 0; m < 2; m++) {
                 /* d f / d y_m = sum_k r_k (M_km + sum_l dM_kl/dy_m d_l) with M at y, and the direct
                  * term -r^T M (plus that dM term when M is taken at the site) */
-                double dMd = r0 * (dM[4 * m] * d[0] + dM[4 * m + 1] * d[1]) +
-                             r1 * (dM[4 * m + 2] * d[0] + dM[4 * m + 3] * d[1]);
-                double dy = r0 * M[m] + r1 * M[2 + m] + (L->cellwise ? 0 : dMd);
+                double dMd = r0 * (dMp[4 * m] * d[0] + dMp[4 * m + 1] * d[1]) +
+                             r1 * (dMp[4 * m + 2] * d[0] + dMp[4 * m + 3] * d[1]);
+                double dy = r0 * Mp[m] + r1 * Mp[2 + m] + (L->cellwise ? 0 : dMd);
                 fy[m] += r[0] * dy;
                 fyl0[m] += r[1] * dy;
                 fyl1[m] += r[2] * dy;
-                fx[m] += (L->cellwise ? dMd : 0) - r0 * M[m] - r1 * M[2 + m];
+                fx[m] += (L->cellwise ? dMd : 0) - r0 * Mp[m] - r1 * Mp[2 + m];
             }
         }
+#else
+        sum += r[3] * (CVM__G(ipow)(u0, p) + CVM__G(ipow)(u1, p));
 #endif
     }
     *e = area * sum;

@@ -283,6 +283,35 @@ static cvm_status clipped_cell(cvm__lpcvt *L, int32_t b)
     return push_pv(L, CVM__PV_FIXED, -1, L->bmid + 4 * b + 2);
 }
 
+/* 1 when the triangulation of the last valid topology is still the Delaunay triangulation of the
+ * sites now in L->xy (copied into it): every real triangle strictly counter-clockwise and every
+ * edge between two real triangles locally Delaunay under the builder's own perturbed in-circle
+ * test (exact, one global perturbation: the triangulation it defines is unique, so the builder
+ * would make the same triangles). The hull is the fixed far frame. Reconstruction only. */
+static int lpcvt_still_delaunay(cvm__lpcvt *L)
+{
+    cvm__tri2 *T = &L->T;
+    size_t t;
+    memcpy(T->xy + 2 * L->nb, L->xy + 2 * L->nb, 2 * (L->ns - L->nb) * sizeof *T->xy);
+    for (t = 0; t < T->nt; t++) {
+        const int32_t *v = T->tv + 3 * t;
+        int j;
+        if (!cvm__tri2_is_live(T, (int32_t)t) || cvm__tri2_is_ghost(T, (int32_t)t))
+            continue;
+        if (!(cvm__orient2d(T->xy + 2 * v[0], T->xy + 2 * v[1], T->xy + 2 * v[2]) > 0))
+            return 0;
+        for (j = 0; j < 3; j++) {
+            int32_t h = T->tn[3 * t + j], u = h / 3, d = T->tv[h];
+            if (u <= (int32_t)t || cvm__tri2_is_ghost(T, u))
+                continue; /* each edge once; hull edges are the frame's */
+            if (cvm__incircle_sos(T->xy + 2 * v[0], T->xy + 2 * v[1], T->xy + 2 * v[2],
+                                  T->xy + 2 * d, v[0], v[1], v[2], d) > 0)
+                return 0;
+        }
+    }
+    return 1;
+}
+
 cvm_status cvm__lpcvt_topology(cvm__lpcvt *L, const double *xi)
 {
     cvm__cdt_input in;
@@ -291,10 +320,17 @@ cvm_status cvm__lpcvt_topology(cvm__lpcvt *L, const double *xi)
     cvm_status st;
     memcpy(L->xy + 2 * L->nb, xi, 2 * (ns - L->nb) * sizeof *xi);
     L->valid = 0;
-    L->npv = 0;
     for (i = 0; i < 2 * (ns - L->nb); i++)
-        if (!isfinite(xi[i]))
+        if (!isfinite(xi[i])) {
+            L->kept = 0;
             return CVM_OK;
+        }
+    if (L->kept && !L->clip && lpcvt_still_delaunay(L)) {
+        L->valid = 1; /* the same triangles, so the same cell polygons */
+        return CVM_OK;
+    }
+    L->kept = 0;
+    L->npv = 0;
     /* clipping needs the sites in the domain; with ghosts the energy is defined (and pushes them
      * back) as long as every cell is bounded */
     for (i = L->nb; i < ns && L->clip; i++)
@@ -351,5 +387,6 @@ cvm_status cvm__lpcvt_topology(cvm__lpcvt *L, const double *xi)
         cvm__grow(L->ctx, (void **)&L->gpv, &L->cap_gpv, 2 * L->npv, sizeof *L->gpv))
         return cvm__nomem(L->ctx);
     L->valid = 1;
+    L->kept = 1;
     return CVM_OK;
 }

@@ -80,11 +80,53 @@ void cvm__metric_factor(double M[4], double *dM, const double g[3], const double
     }
 }
 
-void cvm__metric_hessian_abs(double g[3], double *dg, const double H[3], const double *dH,
-                             double hmin, double hmax, double aspect)
+/* cvm__metric_factor() (dM required) with one reciprocal per quantity instead of a division per
+ * use: the same M and dM up to rounding. */
+static void factor_quick(double M[4], double dM[8], const double g[3], const double dg[6])
+{
+    double c = g[0] - g[2], s = 2 * g[1], rho = sqrt(c * c + s * s), m = 0.5 * (g[0] + g[2]);
+    double cs, sn, r0, r1, h0, h1, ir = 0, ir2;
+    int k;
+    if (rho == 0) {
+        cs = 1;
+        sn = 0;
+    } else {
+        ir = 1 / rho;
+        if (c >= 0) {
+            cs = sqrt(0.5 * (1 + c * ir));
+            sn = 0.5 * s * ir / cs;
+        } else {
+            sn = copysign(sqrt(0.5 * (1 - c * ir)), s);
+            cs = 0.5 * s * ir / sn;
+        }
+    }
+    ir2 = ir * ir; /* 0 where the gap closes: the derivatives of th read 0 there */
+    r0 = sqrt(m + 0.5 * rho);
+    r1 = sqrt(m - 0.5 * rho);
+    h0 = 0.5 / r0;
+    h1 = 0.5 / r1;
+    M[0] = r0 * cs;
+    M[1] = r0 * sn;
+    M[2] = -r1 * sn;
+    M[3] = r1 * cs;
+    for (k = 0; k < 2; k++) {
+        double dc = dg[3 * k] - dg[3 * k + 2], ds = 2 * dg[3 * k + 1];
+        double dm = 0.5 * (dg[3 * k] + dg[3 * k + 2]), dr = 0.5 * (c * dc + s * ds) * ir;
+        double t = 0.5 * (c * ds - s * dc) * ir2, a0 = (dm + dr) * h0, a1 = (dm - dr) * h1;
+        dM[4 * k] = a0 * cs - r0 * sn * t;
+        dM[4 * k + 1] = a0 * sn + r0 * cs * t;
+        dM[4 * k + 2] = -a1 * sn - r1 * cs * t;
+        dM[4 * k + 3] = a1 * cs - r1 * sn * t;
+    }
+}
+
+/* The eigen-structure of cvm__metric_hessian_abs(): *e the eigen-decomposition of H (its
+ * directions are those of g), mu and dmu g's eigenvalues along them and their derivatives. */
+static void hessian_abs_eig(cvm__eig2 *ep, double mu[2], double dmu[4], const double H[3],
+                            const double *dH, double hmin, double hmax, double aspect)
 {
     cvm__eig2 e;
-    double h[2], dh[4] = {0, 0, 0, 0}, mu[2], dmu[4];
+    double h[2], dh[4] = {0, 0, 0, 0};
     int k, m, big, small;
     cvm__eig2_of(&e, H, dH);
     for (k = 0; k < 2; k++) {
@@ -110,6 +152,15 @@ void cvm__metric_hessian_abs(double g[3], double *dg, const double H[3], const d
         for (m = 0; m < 2; m++)
             dmu[2 * k + m] = -2 * dh[2 * k + m] / (h[k] * h[k] * h[k]);
     }
+    *ep = e;
+}
+
+void cvm__metric_hessian_abs(double g[3], double *dg, const double H[3], const double *dH,
+                             double hmin, double hmax, double aspect)
+{
+    cvm__eig2 e;
+    double mu[2], dmu[4];
+    hessian_abs_eig(&e, mu, dmu, H, dH, hmin, hmax, aspect);
     cvm__eig2_compose(g, dH ? dg : NULL, e.cs, e.sn, mu, dmu, e.dth);
 }
 
@@ -131,22 +182,28 @@ void cvm__metric_grad_outer(double g[3], double *dg, const double grad[2], const
 }
 
 /* The S-shock field: f = 3/4 tanh(z), z = 2 (sin 5y - 3x); its Hessian and third derivatives. */
-static void sshock(double g[3], double *dg, double x, double y)
+static void sshock_hessian(double H[3], double dH[6], double x, double y)
 {
     double z = 2 * (sin(5 * y) - 3 * x), t = tanh(z), u = 1 - t * t;
     double F1 = 0.75 * u, F2 = -1.5 * t * u, F3 = 0.75 * u * (6 * t * t - 2);
     double zx = -6, zy = 10 * cos(5 * y), zyy = -50 * sin(5 * y), zyyy = -250 * cos(5 * y);
-    double H[3], dH[6];
-    (void)x;
     H[0] = F2 * zx * zx;
     H[1] = F2 * zx * zy;
     H[2] = F2 * zy * zy + F1 * zyy;
+    if (!dH)
+        return;
     dH[0] = F3 * zx * zx * zx;                          /* f_xxx */
     dH[1] = F3 * zx * zx * zy;                          /* f_xxy */
     dH[2] = F3 * zx * zy * zy + F2 * zx * zyy;          /* f_xyy */
     dH[3] = dH[1];                                      /* d/dy: f_xxy, f_xyy, f_yyy */
     dH[4] = dH[2];
     dH[5] = F3 * zy * zy * zy + 3 * F2 * zy * zyy + F1 * zyyy;
+}
+
+static void sshock(double g[3], double *dg, double x, double y)
+{
+    double H[3], dH[6];
+    sshock_hessian(H, dg ? dH : NULL, x, y);
     cvm__metric_hessian_abs(g, dg, H, dg ? dH : NULL, 0.005, 0.2, 50);
 }
 
@@ -180,8 +237,8 @@ int cvm__metric_builtin_fn(void *payload, const double *x, int dim, double *g, d
         cvm__metric_grad_outer(g, d, grad, H);
         break;
     }
-    case CVM__METRIC_SSHOCK:
-        sshock(g, d, x[0], x[1]);
+    case CVM__METRIC_SSHOCK: /* without dg its third derivatives are not computed */
+        sshock(g, dg ? d : NULL, x[0], x[1]);
         break;
     default:
         return 1;
@@ -220,34 +277,11 @@ static void nearest_on_boundary(const cvm__metric *mt, const double y[2], double
     }
 }
 
-cvm_status cvm__metric_eval(const cvm__metric *mt, const double y[2], double g[3], double *dg,
-                            cvm__ctx *err)
+/* The checks of every evaluation: g and its derivatives d finite, g positive definite. */
+static cvm_status check_tensor(const double y[2], const double g[3], const double d[6],
+                               cvm__ctx *err)
 {
-    const cvm_sizing *s = mt->s;
-    double d[6] = {0, 0, 0, 0, 0, 0}, P[2] = {0, 0}, t[2] = {0, 0};
     int k;
-    if (!s || !s->metric)
-        return cvm__error(err, CVM_E_ARGUMENT, CVM_ENT_NONE, -1,
-                          "the sizing has no metric: set one with cvm_sizing_set_metric_fn()");
-    if (!s->metric_has_dg)
-        return cvm__error(err, CVM_E_ARGUMENT, CVM_ENT_NONE, -1,
-                          "the metric callback gives no derivatives: the Lp-CVT gradient needs "
-                          "them (cvm_sizing_set_metric_fn() with has_derivatives = 1)");
-    if (s->metric(s->metric_payload, y, 2, g, d) != 0) {
-        if (!mt->bnd || mt->nbnd < 2)
-            return cvm__error(err, CVM_E_ARGUMENT, CVM_ENT_NONE, -1,
-                              "the metric callback refused the point (%.17g, %.17g)", y[0], y[1]);
-        nearest_on_boundary(mt, y, P, t);
-        if (s->metric(s->metric_payload, P, 2, g, d) != 0)
-            return cvm__error(err, CVM_E_ARGUMENT, CVM_ENT_NONE, -1,
-                              "the metric callback refused the point (%.17g, %.17g) and its "
-                              "nearest boundary point (%.17g, %.17g)", y[0], y[1], P[0], P[1]);
-        for (k = 0; k < 3; k++) { /* chain rule through the projection P(y): dP/dy = t t^T */
-            double along = d[k] * t[0] + d[3 + k] * t[1];
-            d[k] = along * t[0];
-            d[3 + k] = along * t[1];
-        }
-    }
     for (k = 0; k < 6; k++)
         if (!isfinite(d[k]) || (k < 3 && !isfinite(g[k])))
             return cvm__error(err, CVM_E_ARGUMENT, CVM_ENT_NONE, -1,
@@ -258,6 +292,52 @@ cvm_status cvm__metric_eval(const cvm__metric *mt, const double y[2], double g[3
         return cvm__error(err, CVM_E_ARGUMENT, CVM_ENT_NONE, -1,
                           "the metric at (%.17g, %.17g) is not positive definite: g11 = %.17g, "
                           "g12 = %.17g, g22 = %.17g", y[0], y[1], g[0], g[1], g[2]);
+    return CVM_OK;
+}
+
+/* 1 when check_tensor() passes (no message): the quick test of the hot path. */
+static int tensor_ok(const double g[3], const double d[6])
+{
+    int ok = g[0] > 0 && g[0] * g[2] - g[1] * g[1] > 0, k; /* false for NaN too */
+    for (k = 0; k < 3; k++)
+        ok &= isfinite(g[k]) != 0;
+    for (k = 0; k < 6; k++)
+        ok &= isfinite(d[k]) != 0;
+    return ok;
+}
+
+cvm_status cvm__metric_eval(const cvm__metric *mt, const double y[2], double g[3], double *dg,
+                            cvm__ctx *err)
+{
+    const cvm_sizing *s = mt->s;
+    double d[6] = {0, 0, 0, 0, 0, 0}, P[2] = {0, 0}, t[2] = {0, 0};
+    int k;
+    cvm_status st;
+    if (!s || !s->metric)
+        return cvm__error(err, CVM_E_ARGUMENT, CVM_ENT_NONE, -1,
+                          "the sizing has no metric: set one with cvm_sizing_set_metric_fn()");
+    if (!s->metric_has_dg)
+        return cvm__error(err, CVM_E_ARGUMENT, CVM_ENT_NONE, -1,
+                          "the metric callback gives no derivatives: the Lp-CVT gradient needs "
+                          "them (cvm_sizing_set_metric_fn() with has_derivatives = 1)");
+    /* dg NULL: the callback may skip its derivatives (d stays 0 for the checks) */
+    if (s->metric(s->metric_payload, y, 2, g, dg ? d : NULL) != 0) {
+        if (!mt->bnd || mt->nbnd < 2)
+            return cvm__error(err, CVM_E_ARGUMENT, CVM_ENT_NONE, -1,
+                              "the metric callback refused the point (%.17g, %.17g)", y[0], y[1]);
+        nearest_on_boundary(mt, y, P, t);
+        if (s->metric(s->metric_payload, P, 2, g, dg ? d : NULL) != 0)
+            return cvm__error(err, CVM_E_ARGUMENT, CVM_ENT_NONE, -1,
+                              "the metric callback refused the point (%.17g, %.17g) and its "
+                              "nearest boundary point (%.17g, %.17g)", y[0], y[1], P[0], P[1]);
+        for (k = 0; k < 3; k++) { /* chain rule through the projection P(y): dP/dy = t t^T */
+            double along = d[k] * t[0] + d[3 + k] * t[1];
+            d[k] = along * t[0];
+            d[3 + k] = along * t[1];
+        }
+    }
+    if ((st = check_tensor(y, g, d, err)))
+        return st;
     if (dg)
         for (k = 0; k < 6; k++)
             dg[k] = d[k];
@@ -272,5 +352,148 @@ cvm_status cvm__metric_eval_M(const cvm__metric *mt, const double y[2], double M
     if (st)
         return st;
     cvm__metric_factor(M, dM, g, dg);
+    return CVM_OK;
+}
+
+/* M = diag(sqrt mu) [q1 q2]^T, q1 = (cs, sn), q2 = (-sn, cs), and dM from dmu (dmu[2k + m] =
+ * d mu_k / d x_m) and dth, as cvm__metric_factor() writes them. */
+static void factor_from_eig(double M[4], double dM[8], double cs, double sn, const double mu[2],
+                            const double dmu[4], const double dth[2])
+{
+    double r0 = sqrt(mu[0]), r1 = sqrt(mu[1]), h0 = 0.5 / r0, h1 = 0.5 / r1;
+    int k;
+    M[0] = r0 * cs;
+    M[1] = r0 * sn;
+    M[2] = -r1 * sn;
+    M[3] = r1 * cs;
+    for (k = 0; k < 2; k++) {
+        double a0 = dmu[k] * h0, a1 = dmu[2 + k] * h1, t = dth[k];
+        dM[4 * k] = a0 * cs - r0 * sn * t;
+        dM[4 * k + 1] = a0 * sn + r0 * cs * t;
+        dM[4 * k + 2] = -a1 * sn - r1 * cs * t;
+        dM[4 * k + 3] = a1 * cs - r1 * sn * t;
+    }
+}
+
+/* A built-in field at y whose eigen-structure is known in closed form: M, dM straight from its
+ * own eigen-directions, without decomposing g again. That M may differ from
+ * cvm__metric_factor()'s by the sign or the order of its rows, which the energy (|M d|_p^p, p
+ * even) does not see. Returns 1 (M, dM written, the checks pass), 2 (g and dg written: they
+ * may fail check_tensor(), which says why), or 0 when the field is not one of these. */
+static int builtin_M(const cvm__metric_builtin *b, const double *y, double g[3], double dg[6],
+                     double M[4], double dM[8])
+{
+    double sc = b->scale, mu[2], dmu[4] = {0, 0, 0, 0}, dth[2] = {0, 0}, cs = 1, sn = 0;
+    int k;
+    switch (b->kind) {
+    case CVM__METRIC_STRETCH: /* diag(1, 1 + 4 y^2): the axes */
+        g[0] = sc;
+        g[1] = 0;
+        g[2] = sc * (1 + 4 * y[1] * y[1]);
+        for (k = 0; k < 5; k++)
+            dg[k] = 0;
+        dg[5] = sc * 8 * y[1];
+        mu[0] = g[0];
+        mu[1] = g[2];
+        dmu[3] = dg[5];
+        break;
+    case CVM__METRIC_SADDLE: { /* I + v v^T, v = grad f = (2x, -2y): 1 + |v|^2 along v, 1 across */
+        double v0 = 2 * y[0], v1 = -2 * y[1], n2 = v0 * v0 + v1 * v1, grad[2], H[3] = {2, 0, -2};
+        grad[0] = v0;
+        grad[1] = v1;
+        cvm__metric_grad_outer(g, dg, grad, H);
+        for (k = 0; k < 3; k++) {
+            g[k] *= sc;
+            dg[k] *= sc;
+            dg[3 + k] *= sc;
+        }
+        mu[0] = sc * (1 + n2);
+        mu[1] = sc;
+        dmu[0] = sc * 4 * v0; /* d|v|^2/dx = 2 v0 dv0/dx, dv0/dx = 2 */
+        dmu[1] = -sc * 4 * v1;
+        if (n2 > 0) { /* th = atan2(v1, v0); isotropic at v = 0, derivatives 0 there */
+            double n = sqrt(n2);
+            cs = v0 / n;
+            sn = v1 / n;
+            dth[0] = -2 * v1 / n2;
+            dth[1] = -2 * v0 / n2;
+        }
+        break;
+    }
+    case CVM__METRIC_SSHOCK: {
+        cvm__eig2 e;
+        double H[3], dH[6];
+        int ok;
+        sshock_hessian(H, dH, y[0], y[1]);
+        hessian_abs_eig(&e, mu, dmu, H, dH, 0.005, 0.2, 50);
+        /* g itself only for a failing check's message: finite positive eigenvalues and finite
+         * derivatives and directions make a finite SPD g with finite derivatives */
+        ok = mu[0] > 0 && mu[1] > 0 && isfinite(sc * mu[0]) && isfinite(sc * mu[1]) &&
+             isfinite(e.cs) && isfinite(e.sn) && isfinite(e.dth[0]) && isfinite(e.dth[1]);
+        for (k = 0; k < 4; k++)
+            ok = ok && isfinite(sc * dmu[k]);
+        if (!ok) {
+            cvm__eig2_compose(g, dg, e.cs, e.sn, mu, dmu, e.dth);
+            for (k = 0; k < 3; k++) {
+                g[k] *= sc;
+                dg[k] *= sc;
+                dg[3 + k] *= sc;
+            }
+            return 2;
+        }
+        for (k = 0; k < 4; k++)
+            dmu[k] *= sc;
+        mu[0] *= sc;
+        mu[1] *= sc;
+        if (mu[0] != mu[1]) { /* isotropic (both sizes clamped alike): the axes, as g's own */
+            cs = e.cs;
+            sn = e.sn;
+            dth[0] = e.dth[0];
+            dth[1] = e.dth[1];
+        }
+        break;
+    }
+    default:
+        return 0;
+    }
+    factor_from_eig(M, dM, cs, sn, mu, dmu, dth);
+    return b->kind == CVM__METRIC_SSHOCK || tensor_ok(g, dg) ? 1 : 2;
+}
+
+cvm_status cvm__metric_eval_M_batch(const cvm__metric *mt, const double *y, size_t n, double *M,
+                                    double *dM, cvm__ctx *err)
+{
+    const cvm_sizing *s = mt->s;
+    double g[3 * CVM__QUAD_MAXQ], dg[6 * CVM__QUAD_MAXQ];
+    size_t q;
+    cvm_status st;
+    if (n > CVM__QUAD_MAXQ)
+        return cvm__error(err, CVM_E_INTERNAL, CVM_ENT_NONE, -1,
+                          "metric batch of %lu points (at most %d)", (unsigned long)n,
+                          CVM__QUAD_MAXQ);
+    for (q = 0; s && s->metric == cvm__metric_builtin_fn && s->metric_has_dg && q < n; q++) {
+        int r = builtin_M((const cvm__metric_builtin *)s->metric_payload, y + 2 * q, g + 3 * q,
+                          dg + 6 * q, M + 4 * q, dM + 8 * q);
+        if (r == 0)
+            break;
+        if (r == 2 && (st = check_tensor(y + 2 * q, g + 3 * q, dg + 6 * q, err)))
+            return st; /* the first point (in order) that fails the checks */
+    }
+    if (q == n && n > 0)
+        return CVM_OK;
+    for (q = 0; s && s->metric == cvm__metric_builtin_fn && s->metric_has_dg && q < n; q++)
+        if (cvm__metric_builtin_fn(s->metric_payload, y + 2 * q, 2, g + 3 * q, dg + 6 * q) != 0)
+            break; /* not a field of this version: the checked path says so */
+    if (q == n) { /* a built-in field, called directly: it accepts every point */
+        for (q = 0; q < n; q++)
+            if ((st = check_tensor(y + 2 * q, g + 3 * q, dg + 6 * q, err)))
+                return st;
+    } else {
+        for (q = 0; q < n; q++)
+            if ((st = cvm__metric_eval(mt, y + 2 * q, g + 3 * q, dg + 6 * q, err)))
+                return st;
+    }
+    for (q = 0; q < n; q++)
+        factor_quick(M + 4 * q, dM + 8 * q, g + 3 * q, dg + 6 * q);
     return CVM_OK;
 }

@@ -81,7 +81,8 @@ typedef struct cvm__metric {
     const double *bnd; /* 2 per corner; may be NULL */
     size_t nbnd;
 } cvm__metric;
-/* CVM_E_ARGUMENT (message on err naming the point) when the metric has no
+/* With dg NULL the callback is called with dg NULL too (it may skip its derivatives).
+ * CVM_E_ARGUMENT (message on err naming the point) when the metric has no
  * derivatives (installed with has_derivatives = 0: the optimiser needs them,
  * never finite differences), is not finite, is not positive definite, or is
  * refused with no boundary to fall back on. dg may be NULL. */
@@ -90,6 +91,18 @@ cvm_status cvm__metric_eval(const cvm__metric *mt, const double y[2], double g[3
 /* The same, factored: M and dM (8) as cvm__metric_factor(). */
 cvm_status cvm__metric_eval_M(const cvm__metric *mt, const double y[2], double M[4], double *dM,
                               cvm__ctx *err);
+/* The most points of one cvm__metric_eval_M_batch() (the degree-12 Dunavant rule has 33). */
+#define CVM__QUAD_MAXQ 36
+/* M (4 per point) and dM (8 per point) at the n <= CVM__QUAD_MAXQ points y (2 each): the
+ * energy's quadrature points, its hot path. Each evaluation is checked as cvm__metric_eval()'s,
+ * the first failing point (in order) naming the error. The same M as cvm__metric_eval_M() up to
+ * rounding and, for the stretch, saddle and S-shock built-ins (M from their own
+ * eigen-directions), up to the sign and order of its rows, which the energy |M d|_p^p (p even)
+ * does not see; where g is isotropic both take the axes. Not used where a result must not move
+ * with the rounding (constant metrics, the boundary, the measures). CVM_OK, the errors of
+ * cvm__metric_eval(), CVM_E_INTERNAL when n is too large. */
+cvm_status cvm__metric_eval_M_batch(const cvm__metric *mt, const double *y, size_t n, double *M,
+                                    double *dM, cvm__ctx *err);
 
 /* ---- log-Euclidean interpolation on a background triangulation (metric_background.c) ---- */
 
@@ -190,6 +203,8 @@ typedef struct cvm__lpcvt {
     size_t cap_gpv;
     int32_t *star;
     size_t cap_star;
+    int kept;           /* 1: T and the polygons are those of a valid configuration, and the next
+                           topology keeps them when T is still Delaunay (reconstruction only) */
     int valid;          /* the last topology: 1, or 0 when the energy is not defined there: a
                            moving site on another, beyond the ghosts (an unbounded cell) or, with
                            clipping, not strictly inside the domain */

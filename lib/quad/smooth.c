@@ -16,6 +16,10 @@ typedef struct qs_work {
     const cvm__quad_smooth_in *in;
     double *xy;
     int32_t *vstart, *vcell; /* CSR: the cells of each vertex */
+    double *cost;            /* per cell: its quad cost at the current points, when known */
+    uint8_t *known;          /* per cell: 1 when cost[c] is that of the current points */
+    double *trial;           /* per cell of the vertex being moved: its cost at the trial point */
+    uint8_t *dirty;          /* per vertex: 0 when nothing in its cells moved since it last stayed */
 } qs_work;
 
 /* 1 when cell c is strictly convex (every corner turns left, exact). */
@@ -67,19 +71,44 @@ static double qs_quad_cost(const qs_work *W, int32_t c)
     return s;
 }
 
-/* The summed cost of v's quads and 1 when every cell of v is strictly convex. */
-static int qs_star(const qs_work *W, size_t v, double *cost)
+/* The summed cost of v's quads and 1 when every cell of v is strictly convex. cached: the points
+ * are the current ones, a quad's known cost serves (the same value, computed when its points
+ * last changed) and a computed one is kept; else (a trial point) each is computed into
+ * W->trial. */
+static int qs_star(const qs_work *W, size_t v, double *cost, int cached)
 {
     int32_t k;
     *cost = 0;
     for (k = W->vstart[v]; k < W->vstart[v + 1]; k++) {
         int32_t c = W->vcell[k];
+        double q;
         if (!qs_convex(W, c))
             return 0;
-        if (W->in->types[c] == CVM_CELL_QUAD)
-            *cost += qs_quad_cost(W, c);
+        if (W->in->types[c] != CVM_CELL_QUAD)
+            continue;
+        if (cached && W->known[c]) {
+            q = W->cost[c];
+        } else {
+            q = qs_quad_cost(W, c);
+            if (cached) {
+                W->cost[c] = q;
+                W->known[c] = 1;
+            }
+        }
+        W->trial[k - W->vstart[v]] = q;
+        *cost += q;
     }
     return 1;
+}
+
+static void qs_free(cvm__ctx *ctx, qs_work *W)
+{
+    cvm__free(ctx, W->vstart);
+    cvm__free(ctx, W->vcell);
+    cvm__free(ctx, W->cost);
+    cvm__free(ctx, W->known);
+    cvm__free(ctx, W->trial);
+    cvm__free(ctx, W->dirty);
 }
 
 /* The mean of v's parallelogram points into t, and the mean of its neighbours along quad edges
@@ -118,7 +147,7 @@ cvm_status cvm__quad_smooth(cvm__ctx *ctx, double *xy, const cvm__quad_smooth_in
                             size_t *moves_out)
 {
     qs_work W;
-    size_t v, moves = 0;
+    size_t v, moves = 0, maxstar = 1;
     int32_t c, k;
     int sweep;
     *moves_out = 0;
@@ -127,9 +156,10 @@ cvm_status cvm__quad_smooth(cvm__ctx *ctx, double *xy, const cvm__quad_smooth_in
     W.xy = xy;
     W.vstart = cvm__calloc(ctx, in->nv + 1, sizeof *W.vstart);
     W.vcell = cvm__malloc(ctx, ((size_t)in->off[in->ncell] + 1) * sizeof *W.vcell);
-    if (!W.vstart || !W.vcell) {
-        cvm__free(ctx, W.vstart);
-        cvm__free(ctx, W.vcell);
+    W.cost = cvm__malloc(ctx, (in->ncell + 1) * sizeof *W.cost);
+    W.known = cvm__calloc(ctx, in->ncell + 1, 1);
+    if (!W.vstart || !W.vcell || !W.cost || !W.known) {
+        qs_free(ctx, &W);
         return cvm__nomem(ctx);
     }
     for (k = 0; k < in->off[in->ncell]; k++)
@@ -142,12 +172,27 @@ cvm_status cvm__quad_smooth(cvm__ctx *ctx, double *xy, const cvm__quad_smooth_in
     for (v = in->nv; v > 0; v--)
         W.vstart[v] = W.vstart[v - 1];
     W.vstart[0] = 0;
+    for (v = 0; v < in->nv; v++)
+        if ((size_t)(W.vstart[v + 1] - W.vstart[v]) > maxstar)
+            maxstar = (size_t)(W.vstart[v + 1] - W.vstart[v]);
+    W.trial = cvm__malloc(ctx, maxstar * sizeof *W.trial);
+    W.dirty = cvm__malloc(ctx, in->nv + 1);
+    if (!W.trial || !W.dirty) {
+        qs_free(ctx, &W);
+        return cvm__nomem(ctx);
+    }
+    memset(W.dirty, 1, in->nv + 1);
     for (sweep = 0; sweep < in->sweeps; sweep++) {
         size_t moved = 0;
         for (v = in->first_free; v < in->nv; v++) {
             double t[2], lap[2], old[2], before, after;
             int j;
-            if (!qs_target(&W, v, t, lap) || !qs_star(&W, v, &before))
+            /* a vertex that stayed, with every point of its cells where it was then, would stay
+             * again: the same targets, costs and tests */
+            if (!W.dirty[v])
+                continue;
+            W.dirty[v] = 0;
+            if (!qs_target(&W, v, t, lap) || !qs_star(&W, v, &before, 1))
                 continue;
             old[0] = xy[2 * v];
             old[1] = xy[2 * v + 1];
@@ -159,13 +204,22 @@ cvm_status cvm__quad_smooth(cvm__ctx *ctx, double *xy, const cvm__quad_smooth_in
                 double f = j < 0 ? 1 : ldexp(1.0, -j);
                 xy[2 * v] = old[0] + f * (to[0] - old[0]);
                 xy[2 * v + 1] = old[1] + f * (to[1] - old[1]);
-                if (qs_star(&W, v, &after) && after < before)
+                if (qs_star(&W, v, &after, 0) && after < before)
                     break;
             }
             if (j == 3) {
                 xy[2 * v] = old[0];
                 xy[2 * v + 1] = old[1];
-            } else {
+            } else { /* the trial's costs are those of v's quads now */
+                for (k = W.vstart[v]; k < W.vstart[v + 1]; k++) {
+                    int32_t c = W.vcell[k], i;
+                    if (in->types[c] == CVM_CELL_QUAD) {
+                        W.cost[c] = W.trial[k - W.vstart[v]];
+                        W.known[c] = 1;
+                    }
+                    for (i = in->off[c]; i < in->off[c + 1]; i++)
+                        W.dirty[in->conn[i]] = 1; /* v itself too: it may move on */
+                }
                 moved++;
             }
         }
@@ -173,8 +227,7 @@ cvm_status cvm__quad_smooth(cvm__ctx *ctx, double *xy, const cvm__quad_smooth_in
         if (moved == 0)
             break;
     }
-    cvm__free(ctx, W.vstart);
-    cvm__free(ctx, W.vcell);
+    qs_free(ctx, &W);
     *moves_out = moves;
     for (c = 0; in->quality && c < (int32_t)in->ncell; c++) {
         const int32_t *p = in->conn + in->off[c];
