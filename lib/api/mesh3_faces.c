@@ -147,3 +147,12 @@ cvm_status cvm__mesh3_constrained_faces(cvm__ctx *ctx, const cvm__mesh3 *g, cons
     *out = cf;
     return CVM_OK;
 }
+
+int cvm__mesh3_faces_opposite(const int32_t *f, const int32_t *o)
+{
+    int k;
+    for (k = 0; k < 3; k++)
+        if (f[0] == o[k])
+            return f[1] == o[(k + 2) % 3] && f[2] == o[(k + 1) % 3];
+    return 0;
+}

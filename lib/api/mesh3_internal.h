@@ -49,6 +49,9 @@ int32_t cvm__mesh3_find_face(const cvm__face_key *index, size_t n, int32_t a, in
 /* The corners of face f of tet t, oriented outwards (seen from outside
  * counter-clockwise): for f = 0..3. */
 void cvm__mesh3_face_corners(const int32_t *t, int f, int32_t out[3]);
+/* 1 when the oriented faces f (of one tetrahedron) and o (of its neighbour, both from
+ * cvm__mesh3_face_corners()) are the same triangle seen from opposite sides. */
+int cvm__mesh3_faces_opposite(const int32_t *f, const int32_t *o);
 /* cf[4 t + f] = 1 for the faces with no neighbour (nbr, from cvm__mesh3_adjacency) and
  * the faces in g->face (the surface and its internal facets), else 0 (mesh3_faces.c).
  * CVM_OK or CVM_E_NOMEM (message set). */

@@ -104,17 +104,6 @@ cvm_status cvm__mesh3_write_to_set(cvm_mesh *m, const char *path, cvm__write_set
     return cvm__write_file3_to_set(ws, path, &mo);
 }
 
-/* Whether the oriented faces f (of one tet) and o (of its neighbour) are the
- * same triangle seen from opposite sides. */
-static int opposite(const int32_t *f, const int32_t *o)
-{
-    int k;
-    for (k = 0; k < 3; k++)
-        if (f[0] == o[k])
-            return f[1] == o[(k + 2) % 3] && f[2] == o[(k + 1) % 3];
-    return 0;
-}
-
 cvm_status cvm__mesh3_check(cvm_mesh *m)
 {
     cvm__mesh3 *g = m->m3;
@@ -152,7 +141,7 @@ cvm_status cvm__mesh3_check(cvm_mesh *m)
         }
         cvm__mesh3_face_corners(g->tet + 4 * (i / 4), (int)(i % 4), f);
         cvm__mesh3_face_corners(g->tet + 4 * (nbr[i] / 4), nbr[i] % 4, o);
-        if (!opposite(f, o)) {
+        if (!cvm__mesh3_faces_opposite(f, o)) {
             s = cvm__error(&m->ctx, CVM_E_INTERNAL, CVM_ENT_TETRAHEDRON, (int64_t)(i / 4),
                            "check: tetrahedra %lu and %ld see their shared face the same way",
                            (unsigned long)(i / 4), (long)(nbr[i] / 4));

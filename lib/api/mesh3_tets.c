@@ -12,17 +12,6 @@
 #include "geom/geom_internal.h"
 #include "surface3/surface3_internal.h"
 
-/* Whether the oriented faces f (of one tetrahedron) and o (of its neighbour)
- * are the same triangle seen from opposite sides. */
-static int m3t_opposite(const int32_t *f, const int32_t *o)
-{
-    int k;
-    for (k = 0; k < 3; k++)
-        if (f[0] == o[k])
-            return f[1] == o[(k + 2) % 3] && f[2] == o[(k + 1) % 3];
-    return 0;
-}
-
 /* The tetrahedra one by one: corners in range and distinct, not flat (exact),
  * positively oriented (two corners swapped otherwise), attributes finite; every
  * point used. Writes out->tet, out->tattr. */
@@ -97,7 +86,7 @@ static cvm_status m3t_faces(cvm__ctx *ctx, cvm__mesh3 *out, long long tbase)
         }
         cvm__mesh3_face_corners(out->tet + 4 * (i / 4), (int)(i % 4), f);
         cvm__mesh3_face_corners(out->tet + 4 * (size_t)(nbr[i] / 4), nbr[i] % 4, o);
-        if (!m3t_opposite(f, o)) {
+        if (!cvm__mesh3_faces_opposite(f, o)) {
             s = cvm__error(ctx, CVM_E_INPUT_INTERSECTING, CVM_ENT_TETRAHEDRON, (int64_t)(i / 4),
                            "tetrahedra %lld and %lld overlap: they lie on the same side of their "
                            "shared face (points %ld %ld %ld, 0-based)",
