@@ -237,7 +237,11 @@ static cvm_status alloc_points(cvm__tet3 *T, const double *xyz, const double *w,
             T->w[i] = w[T->orig[i]];
         T->merged[i] = -1;
     }
-    if (T->key && (s = cvm__tet3_merge_duplicates(T)) == CVM_OK)
+    /* weighted: a copy of a hidden point would otherwise be tested on its own and could
+     * come out differently on an exact tie; merged, the group shares one fate whatever
+     * the insertion order (the lowest index has the largest perturbed weight, so the
+     * others are hidden by it in the perturbed order anyway) */
+    if ((T->key || w) && (s = cvm__tet3_merge_duplicates(T)) == CVM_OK)
         lowest_index_first(T);
     return s;
 }

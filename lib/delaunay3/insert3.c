@@ -191,9 +191,7 @@ static cvm_status dig_cavity(cvm__tet3 *T, int32_t t0, int32_t p)
     return T->w || T->small_int ? dig_mode(T, t0, p, 0) : dig_mode(T, t0, p, 1);
 }
 
-/* Weighted only: vertices of the cavity that are on no boundary face lose
- * their power cell to p. */
-static void mark_vanished(cvm__tet3 *T, int32_t p)
+void cvm__tet3_mark_vanished(cvm__tet3 *T, int32_t p)
 {
     uint32_t cur;
     size_t i;
@@ -256,7 +254,7 @@ cvm_status cvm__tet3_insert(cvm__tet3 *T, int32_t p)
         return s;
     }
     if (T->w)
-        mark_vanished(T, p);
+        cvm__tet3_mark_vanished(T, p);
     cvm__tet3_fill_around(T);
     T->fate[p] = CVM__T3_VERTEX;
     if (T->vtet)

@@ -44,8 +44,6 @@ typedef struct cvm__t3_par {
 int cvm__tet3_build_threads(const cvm__tet3 *T)
 {
     int n = T->threads;
-    if (T->w)
-        return 1;
 #ifdef _OPENMP
     if (n == 0)
         n = omp_get_max_threads();
@@ -106,7 +104,10 @@ cvm_status cvm__tet3_merge_duplicates(cvm__tet3 *T)
                 break;
             }
             y = T->pt[tab[at]].x;
-            if (y[0] == x[0] && y[1] == x[1] && y[2] == x[2]) {
+            /* weighted: the same point with another weight is no duplicate (the
+             * power test decides between them); it takes the next free slot */
+            if (y[0] == x[0] && y[1] == x[1] && y[2] == x[2]
+                && (!T->w || T->w[tab[at]] == T->w[i])) {
                 T->fate[i] = CVM__T3_DUPLICATE;
                 T->merged[i] = tab[at];
                 break;
@@ -274,11 +275,18 @@ static int par3_insert(cvm__t3_worker *W, int32_t p, const uint8_t *part, uint8_
         int k;
         for (k = 0; k < 4; k++) { /* (duplicates were merged before: only a guard) */
             const double *q = V->pt[v[k]].x;
-            if (q[0] == pp[0] && q[1] == pp[1] && q[2] == pp[2]) {
+            if (q[0] == pp[0] && q[1] == pp[1] && q[2] == pp[2]
+                && (!V->w || V->w[v[k]] == V->w[p])) {
                 V->merged[p] = v[k];
                 V->fate[p] = CVM__T3_DUPLICATE;
                 return 1;
             }
+        }
+        /* weighted: no conflict with the owned tetrahedron holding p means an
+         * empty power cell now, so in the end too (cells only shrink) */
+        if (V->w && !cvm__t3_finite_conflict(V, v, p)) {
+            V->fate[p] = CVM__T3_REDUNDANT;
+            return 1;
         }
     }
     if (!par3_dig(V, t, p, part, me))
@@ -292,6 +300,10 @@ static int par3_insert(cvm__t3_worker *W, int32_t p, const uint8_t *part, uint8_
         V->ndead = V->nbf = 0;
         return 0;
     }
+    /* a vertex losing its cell has every tetrahedron around it in the (owned)
+     * cavity, so it is of this partition: its fate and stamps are this thread's */
+    if (V->w)
+        cvm__tet3_mark_vanished(V, p);
     cvm__tet3_fill_around(V);
     V->fate[p] = CVM__T3_VERTEX;
     V->vtet[p] = V->last;
@@ -456,6 +468,14 @@ static cvm_status par3_pass_setup(cvm__tet3 *T, cvm__t3_par *P, size_t m, int pa
             T->pt[i].loc = 0;
         T->lstamp = 0;
     }
+    /* weighted: the same for the stamps of vanished vertices; every worker
+     * starts from T->vstamp (each stamps only vertices of its own partition,
+     * and the next pass starts above them all) */
+    if (T->w && (uint64_t)T->vstamp + m + 2 > UINT32_MAX) {
+        memset(T->vseen, 0, T->np * sizeof *T->vseen);
+        memset(T->vkeep, 0, T->np * sizeof *T->vkeep);
+        T->vstamp = 0;
+    }
     at = T->nslot;
     for (t = 0; t < P->nt; t++) {
         cvm__t3_worker *W = &P->wk[t];
@@ -507,6 +527,7 @@ static size_t par3_pass_gather(cvm__tet3 *T, cvm__t3_par *P)
         end = W->fresh_end;
         T->n_big_cavities += W->v.n_big_cavities;
         T->lstamp = W->v.lstamp > T->lstamp ? W->v.lstamp : T->lstamp;
+        T->vstamp = W->v.vstamp > T->vstamp ? W->v.vstamp : T->vstamp;
         if (W->start >= 0 && done == 0)
             T->last = W->v.last; /* finite and live: only this worker could change it */
         done += W->done;
