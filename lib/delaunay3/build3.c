@@ -290,7 +290,7 @@ cvm_status cvm__tet3_build(cvm__tet3 *T, const double *xyz, const double *w, siz
     if (s == CVM_OK && lowest_index_first(T)) {
         /* again from scratch, in the same order, under the new names */
         T->nslot = T->nfree = T->ndead = 0;
-        T->n_big_cavities = 0;
+        T->n_big_cavities = T->n_par_done = 0;
         for (i = 0; i < n; i++) {
             T->fate[i] = CVM__T3_PENDING;
             T->merged[i] = -1;

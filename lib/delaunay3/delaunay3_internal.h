@@ -178,6 +178,8 @@ typedef struct cvm__tet3 {
     int64_t redundant_first; /* the smallest such index, or -1 */
     size_t n_finite;       /* finite tetrahedra */
     size_t n_big_cavities; /* cavities with more than 63 boundary vertices (hash-linked) */
+    size_t n_par_done;     /* points settled (inserted, or found hidden) by parallel passes; how
+                            * many does depend on the thread count, the output does not */
 } cvm__tet3;
 
 /* An empty store on ctx (not owned). */

@@ -567,6 +567,7 @@ static cvm_status par3_round(cvm__tet3 *T, cvm__t3_par *P, size_t plo, size_t lo
         for (t = 0; t < P->nt; t++)
             par3_run_worker(P, t, m);
         done = par3_pass_gather(T, P);
+        T->n_par_done += done;
         if (done < m / 8)
             break;
     }
