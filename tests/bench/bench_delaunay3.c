@@ -5,7 +5,8 @@
  * WEIGHTS.bin, when given, n doubles (a regular tetrahedralisation). Prints
  * one JSON object: median wall and CPU seconds of REPS builds (build plus
  * canonical output, as a caller would get it), median CPU seconds of the
- * build alone (cpu_build), finite tetrahedra, redundant (hidden) points, peak heap
+ * build alone (cpu_build), finite tetrahedra, redundant (hidden) points, points
+ * settled by parallel passes (par_done; the rest went serially), peak heap
  * bytes through a counting allocator, an FNV-1a digest of the canonical
  * tetrahedra and the points' fates (to compare builds byte for byte), and the
  * status of cvm__tet3_check() on
@@ -114,7 +115,7 @@ static int cmp_double(const void *a, const void *b)
 
 int main(int argc, char **argv)
 {
-    size_t n, nw = 0, nt = 0, red = 0;
+    size_t n, nw = 0, nt = 0, red = 0, par = 0;
     double *xyz, *w = NULL, wall[64], cpu[64], cpu_build[64];
     int reps, r, check = -1, threads = 1;
     uint64_t digest = UINT64_C(0xCBF29CE484222325);
@@ -158,6 +159,7 @@ int main(int argc, char **argv)
         }
         nt = T.n_finite;
         red = T.n_redundant;
+        par = T.n_par_done;
         if (r == reps - 1) {
             unsigned char *fate = malloc(n + 1);
             digest = fnv1a(digest, tets, 4 * nt * sizeof *tets);
@@ -177,8 +179,8 @@ int main(int argc, char **argv)
     qsort(cpu, (size_t)reps, sizeof *cpu, cmp_double);
     qsort(cpu_build, (size_t)reps, sizeof *cpu_build, cmp_double);
     printf("{\"n\": %zu, \"threads\": %d, \"wall\": %.4f, \"cpu\": %.4f, \"cpu_build\": %.4f, \"tets\": %zu, "
-           "\"redundant\": %zu, \"peak_bytes\": %zu, \"digest\": \"%016llx\", \"check\": %d}\n",
-           n, threads, wall[reps / 2], cpu[reps / 2], cpu_build[reps / 2], nt, red, cnt.peak,
+           "\"redundant\": %zu, \"par_done\": %zu, \"peak_bytes\": %zu, \"digest\": \"%016llx\", \"check\": %d}\n",
+           n, threads, wall[reps / 2], cpu[reps / 2], cpu_build[reps / 2], nt, red, par, cnt.peak,
            (unsigned long long)digest, check);
     free(xyz);
     free(w);
