@@ -54,8 +54,10 @@
  * weighted points, and its vertex set is unique too: a point with an empty
  * power cell at some step has one at every later step, so the points
  * reported redundant (hidden on insertion or vanished later) are exactly
- * those that are no vertex of the result, in any order. Duplicates are resolved before any insertion, by coordinates and
- * input index only. A thread reads and writes only what it owns, plus the
+ * those that are no vertex of the result, in any order. Duplicates are
+ * resolved before any insertion, by coordinates (and weight) and input index
+ * only; the lowest index of a group has the largest perturbed weight, so the
+ * others would be hidden by it anyway. A thread reads and writes only what it owns, plus the
  * vertex words of cross-partition tetrahedra (which no one changes during a
  * pass) and their neighbour words facing its own tetrahedra, so even the
  * store's internal state is a function of the input and the thread count.
