@@ -710,9 +710,9 @@ typedef enum cvm_option {
     CVM_OPT_MAX_STEINER = 402,
     /** Threads for parallel stages, integer, 0 = OpenMP default (default), [0, 1024].
      *  Output does not depend on it. Parallel: cvm_mesh_optimise_dual() (its local
-     *  problems), the quad mesher's energy, and the point insertion of an unweighted 3D
-     *  Delaunay tetrahedralisation of a large point set (weighted builds are
-     *  serial); 2D triangulation and refinement are serial. */
+     *  problems), the quad mesher's energy, and the point insertion of a 3D Delaunay or
+     *  regular (weighted, cvm_mesh_set_weights()) tetrahedralisation of a large point
+     *  set; 2D triangulation and refinement are serial. */
     CVM_OPT_THREADS = 403,
 
     /** Dual optimisation (500..599): read by cvm_mesh_optimise_dual(). */

@@ -237,7 +237,11 @@ static cvm_status alloc_points(cvm__tet3 *T, const double *xyz, const double *w,
             T->w[i] = w[T->orig[i]];
         T->merged[i] = -1;
     }
-    if (T->key && (s = cvm__tet3_merge_duplicates(T)) == CVM_OK)
+    /* weighted: a copy of a hidden point would otherwise be tested on its own and could
+     * come out differently on an exact tie; merged, the group shares one fate whatever
+     * the insertion order (the lowest index has the largest perturbed weight, so the
+     * others are hidden by it in the perturbed order anyway) */
+    if ((T->key || w) && (s = cvm__tet3_merge_duplicates(T)) == CVM_OK)
         lowest_index_first(T);
     return s;
 }
@@ -286,7 +290,7 @@ cvm_status cvm__tet3_build(cvm__tet3 *T, const double *xyz, const double *w, siz
     if (s == CVM_OK && lowest_index_first(T)) {
         /* again from scratch, in the same order, under the new names */
         T->nslot = T->nfree = T->ndead = 0;
-        T->n_big_cavities = 0;
+        T->n_big_cavities = T->n_par_done = 0;
         for (i = 0; i < n; i++) {
             T->fate[i] = CVM__T3_PENDING;
             T->merged[i] = -1;

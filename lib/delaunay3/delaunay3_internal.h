@@ -22,7 +22,7 @@
  * order: with distinct points the tetrahedralisation is unique, and
  * cvm__tet3_copy_tets() numbers it canonically.
  *
- * Parallel insertion (parallel3.c, T->threads > 1, unweighted builds): a
+ * Parallel insertion (parallel3.c, T->threads > 1, Delaunay or regular): a
  * BRIO round of at least T->par_min points is cut into T->threads runs of
  * equal count along its Hilbert order; the Hilbert keys at the cuts split
  * space into partitions, and every vertex belongs to the partition of its
@@ -38,15 +38,26 @@
  * while they run. The next pass moves the cuts (by half a run, then a
  * quarter, ...), as the points left wait near the old ones; what is left
  * after a few passes is inserted serially. Duplicate points are merged before
- * insertion, into the lowest input index.
+ * insertion, into the lowest input index (weighted builds do so with any thread
+ * count: same coordinates and same weight).
+ * Weighted: a point whose owned located tetrahedron does not conflict with it
+ * is hidden (redundant); a vertex of a cavity on none of its boundary faces
+ * vanishes, and since every tetrahedron around it was dug it lies in the
+ * thread's partition, whose fates and stamps the thread alone writes.
  *
  * Why the output does not depend on the thread count: each insertion digs the
  * whole conflict cavity (a partial one is given up), so every step is a
  * Bowyer-Watson insertion into a Delaunay tetrahedralisation and the result
  * is the Delaunay tetrahedralisation of the points, unique under the
  * perturbation by input index; cvm__tet3_copy_tets() writes it in canonical
- * order. Duplicates are resolved before any insertion, by coordinates and
- * input index only. A thread reads and writes only what it owns, plus the
+ * order. Weighted, it is the regular tetrahedralisation of the perturbed
+ * weighted points, and its vertex set is unique too: a point with an empty
+ * power cell at some step has one at every later step, so the points
+ * reported redundant (hidden on insertion or vanished later) are exactly
+ * those that are no vertex of the result, in any order. Duplicates are
+ * resolved before any insertion, by coordinates (and weight) and input index
+ * only; the lowest index of a group has the largest perturbed weight, so the
+ * others would be hidden by it anyway. A thread reads and writes only what it owns, plus the
  * vertex words of cross-partition tetrahedra (which no one changes during a
  * pass) and their neighbour words facing its own tetrahedra, so even the
  * store's internal state is a function of the input and the thread count.
@@ -169,6 +180,8 @@ typedef struct cvm__tet3 {
     int64_t redundant_first; /* the smallest such index, or -1 */
     size_t n_finite;       /* finite tetrahedra */
     size_t n_big_cavities; /* cavities with more than 63 boundary vertices (hash-linked) */
+    size_t n_par_done;     /* points settled (inserted, or found hidden) by parallel passes; how
+                            * many does depend on the thread count, the output does not */
 } cvm__tet3;
 
 /* An empty store on ctx (not owned). */
@@ -183,7 +196,7 @@ void cvm__tet3_free(cvm__tet3 *T);
  * it. Points with the same coordinates (and, weighted, the same weight) are
  * merged into the one of lowest index and counted in n_dup; weighted points
  * whose power cell is empty are left out and counted in n_redundant. With
- * T->threads other than 1, an unweighted build of at least T->par_min points
+ * T->threads other than 1, a build (weighted or not) of at least T->par_min points
  * inserts in parallel (see the top of this file); everything it reports and
  * cvm__tet3_copy_tets() writes is the same as with one thread.
  * @return CVM_OK
@@ -211,7 +224,7 @@ void cvm__tet3_point_fates(const cvm__tet3 *T, uint8_t *fate_out, int32_t *into_
  * (orientation kept) so that its smallest index comes first and the smallest
  * of the other three second; the list is then sorted lexicographically.
  * Identical input gives identical bytes whatever the seed or insertion order.
- * With T->threads other than 1 (unweighted) and 8 T->par_min slots or more, the
+ * With T->threads other than 1 and 8 T->par_min slots or more, the
  * scatter and the bucket sorts run on that many threads (the same bytes).
  * @return CVM_OK or CVM_E_NOMEM (temporaries: n / 2048 + 2048 counters and a buffer of
  *         the tetrahedra whose first index shares its high bits with the most others,
@@ -249,16 +262,22 @@ cvm_status cvm__tet3_brio_order(cvm__ctx *ctx, const double *xyz, size_t n, uint
                                 int32_t *order);
 cvm_status cvm__tet3_brio_keys(cvm__ctx *ctx, const double *xyz, size_t n, uint64_t seed,
                                int32_t *order, uint64_t *key);
-/* The thread count a build runs with (T->threads resolved; 1 for weighted input). */
+/* The thread count a build runs with (T->threads resolved, at most 64). */
 int cvm__tet3_build_threads(const cvm__tet3 *T);
-/* Parallel builds: mark every point with the coordinates of an earlier one (internal
- * order) a duplicate of the first of its group (CVM_OK or CVM_E_NOMEM). */
+/* Parallel and weighted builds: mark every point with the coordinates (and, weighted,
+ * the weight) of an earlier one (internal order) a duplicate of the first of its group
+ * (CVM_OK or CVM_E_NOMEM). */
 cvm_status cvm__tet3_merge_duplicates(cvm__tet3 *T);
 /* Parallel builds: insert every pending point after the first tetrahedron, round by
  * round (parallel3.c). CVM_OK or CVM_E_NOMEM. */
 cvm_status cvm__tet3_insert_rounds(cvm__tet3 *T);
 /* Insert internal point p into a store that already has a first tetrahedron. */
 cvm_status cvm__tet3_insert(cvm__tet3 *T, int32_t p);
+/* Weighted: before the dug cavity of p (dead[], bf[]) is filled, mark REDUNDANT
+ * every vertex of it on none of its boundary faces (its power cell goes to p).
+ * Touches vseen / vkeep of the cavity's vertices only; restarts the stamps (all
+ * np of them) when T->vstamp wraps, which a parallel pass rules out beforehand. */
+void cvm__tet3_mark_vanished(cvm__tet3 *T, int32_t p);
 
 /*
  * Load an existing mesh for point insertion (cvm__tet3_insert_point()): nv

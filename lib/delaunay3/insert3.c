@@ -6,32 +6,6 @@
 #include "geom/geom_internal.h"
 
 #define PT(T, v) ((T)->pt[v].x)
-#define T3_HOT CVM__T3_HOT
-#if defined(__GNUC__)
-#define CVM__PREFETCH(p) __builtin_prefetch(p)
-#else
-#define CVM__PREFETCH(p) ((void)(p))
-#endif
-
-/* Conflict of p with slot t. A ghost tetrahedron conflicts when p lies
- * strictly beyond its hull face, or in the face's plane and in conflict with
- * the finite tetrahedron behind the face (the limit of a far-away apex). */
-static T3_HOT int in_conflict(const cvm__tet3 *T, int32_t t, int32_t p)
-{
-    const int32_t *v = T->tt + 8 * (size_t)t;
-    int32_t n;
-    double o;
-    if (v[3] != CVM__T3_GHOST)
-        return cvm__t3_finite_conflict(T, v, p);
-    o = T->small_int ? cvm__orient3d_fp(PT(T, v[0]), PT(T, v[1]), PT(T, v[2]), PT(T, p))
-                     : cvm__orient3d_inline(PT(T, v[0]), PT(T, v[1]), PT(T, v[2]), PT(T, p));
-    if (o != 0.0)
-        return o > 0.0;
-    n = CVM__T3_TN(T, 4 * (size_t)t + 3) >> 2;
-    if (T->tmark[n])
-        return T->tmark[n] == 1;
-    return cvm__t3_finite_conflict(T, T->tt + 8 * (size_t)n, p);
-}
 
 /* Visibility walk from T->last to a tetrahedron whose closure holds p, or to
  * a ghost tetrahedron whose hull face p lies strictly beyond. Faces are tried
@@ -78,11 +52,7 @@ static int32_t locate(cvm__tet3 *T, int32_t p)
 /* Undo the marks of a cavity that will not be committed. */
 static void unmark(cvm__tet3 *T)
 {
-    size_t i;
-    for (i = 0; i < T->ndead; i++)
-        T->tmark[T->dead[i]] = 0;
-    for (i = 0; i < T->nbf; i++)
-        T->tmark[T->bf[i].out >> 2] = 0;
+    cvm__t3_unmark_cavity(T, T->ndead, T->nbf);
 }
 
 /* Grow-on-demand pushes of the cavity search; CVM_E_NOMEM on failure. */
@@ -94,106 +64,15 @@ static void unmark(cvm__tet3 *T)
         (arr)[(cnt)++] = (val);                                                                \
     } while (0)
 
-/* Room for one more item in a workspace array of the cavity search; the
- * caller's local copies of the pointer and capacity are refreshed. */
-#define DIG_ROOM(arr, cnt, capv, loc_arr, loc_cap)                                             \
-    do {                                                                                       \
-        if ((cnt) == (loc_cap)) {                                                              \
-            if (cvm__grow(T->ctx, (void **)&T->arr, &T->capv, (cnt) + 1, sizeof *T->arr)       \
-                != CVM_OK)                                                                     \
-                goto nomem;                                                                    \
-            (loc_arr) = T->arr, (loc_cap) = T->capv;                                           \
-        }                                                                                      \
-    } while (0)
-
-/* Conflict of p with slot u; plain: an unweighted store without the
- * small-integer path, where a finite tetrahedron needs only insphere. */
-static T3_HOT int dig_conflict(const cvm__tet3 *T, const cvm__t3_point *pt, const double *e,
-                               const int32_t *v, int32_t u, int32_t p, int plain)
-{
-    if (plain && v[3] != CVM__T3_GHOST) {
-        double det = cvm__insphere_inline(pt[v[0]].x, pt[v[1]].x, pt[v[2]].x, pt[v[3]].x, e);
-        const int32_t *o;
-        if (det != 0.0)
-            return det > 0.0;
-        o = T->orig;
-        return cvm__insphere_sos(pt[v[0]].x, pt[v[1]].x, pt[v[2]].x, pt[v[3]].x, e, o[v[0]],
-                                 o[v[1]], o[v[2]], o[v[3]], o[p])
-               > 0;
-    }
-    return in_conflict(T, u, p);
-}
-
-/* The tetrahedra in conflict with p, grown from t0 across faces: dead[] (and
- * marked 1); the faces where the growth stopped: bf[] (outside marked 2).
- * The store's arrays are read through local copies: the byte stores of the
- * marks would otherwise make the compiler reload every field of T. */
-static T3_HOT cvm_status dig_mode(cvm__tet3 *T, int32_t t0, int32_t p, int plain)
-{
-    const cvm__t3_point *pt = T->pt;
-    const double *e = pt[p].x;
-    int32_t *tt = T->tt, *dead = T->dead;
-    uint8_t *tm = T->tmark;
-    cvm__t3_bface *bf = T->bf;
-    size_t nd = 0, head = 0, nb = 0, deadcap = T->deadcap, bfcap = T->bfcap;
-    int f;
-    DIG_ROOM(dead, nd, deadcap, dead, deadcap);
-    tm[t0] = 1;
-    dead[nd++] = t0;
-    for (f = 0; f < 4; f++) {
-        int32_t u = tt[8 * (size_t)t0 + 4 + f] >> 2;
-        CVM__PREFETCH(tt + 8 * (size_t)u);
-        CVM__PREFETCH(tm + u);
-    }
-    /* breadth first, dead[] is the queue: a tetrahedron's neighbours are
-     * prefetched when it joins, and used only after everything queued before it */
-    while (head < nd) {
-        int32_t c = dead[head++];
-        const int32_t *vc = tt + 8 * (size_t)c;
-        for (f = 0; f < 4; f++) {
-            int32_t s = vc[4 + f], u = s >> 2;
-            const int32_t *vu = tt + 8 * (size_t)u;
-            uint8_t mu = tm[u];
-            if (mu == 1)
-                continue;
-            if (mu == 0 && dig_conflict(T, pt, e, vu, u, p, plain)) {
-                int g;
-                /* (the marks, 64 to a cache line, are mostly in cache already) */
-                for (g = 0; g < 4; g++)
-                    CVM__PREFETCH(tt + 8 * (size_t)(vu[4 + g] >> 2));
-                DIG_ROOM(dead, nd, deadcap, dead, deadcap);
-                tm[u] = 1;
-                dead[nd++] = u;
-            } else {
-                cvm__t3_bface *b;
-                DIG_ROOM(bf, nb, bfcap, bf, bfcap);
-                tm[u] = 2;
-                b = &bf[nb++];
-                b->v[0] = vc[0], b->v[1] = vc[1], b->v[2] = vc[2], b->v[3] = vc[3];
-                b->v[f] = p;
-                b->f = f;
-                b->out = s;
-            }
-        }
-    }
-    T->ndead = nd;
-    T->nbf = nb;
-    return CVM_OK;
-nomem:
-    T->ndead = nd;
-    T->nbf = nb;
-    unmark(T);
-    return CVM_E_NOMEM;
-}
-
+/* The cavity of p grown from t0 (cvm__t3_dig, conflict3.h): CVM_OK or CVM_E_NOMEM. */
 static cvm_status dig_cavity(cvm__tet3 *T, int32_t t0, int32_t p)
 {
-    return T->w || T->small_int ? dig_mode(T, t0, p, 0) : dig_mode(T, t0, p, 1);
+    int ok = T->w || T->small_int ? cvm__t3_dig(T, t0, p, 0, NULL, 0)
+                                   : cvm__t3_dig(T, t0, p, 1, NULL, 0);
+    return ok > 0 ? CVM_OK : CVM_E_NOMEM;
 }
 
-/* Weighted only: vertices of the cavity that are on no boundary face lose
- * their power cell to p. */
-static void mark_vanished(cvm__tet3 *T, int32_t p)
+void cvm__tet3_mark_vanished(cvm__tet3 *T, int32_t p)
 {
     uint32_t cur;
     size_t i;
@@ -256,7 +135,7 @@ cvm_status cvm__tet3_insert(cvm__tet3 *T, int32_t p)
         return s;
     }
     if (T->w)
-        mark_vanished(T, p);
+        cvm__tet3_mark_vanished(T, p);
     cvm__tet3_fill_around(T);
     T->fate[p] = CVM__T3_VERTEX;
     if (T->vtet)

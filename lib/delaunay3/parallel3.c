@@ -15,11 +15,6 @@
 #define PAR3_PASSES 6
 #define PAR3_START_TRIES 64
 #define PAR3_HMASK ((UINT64_C(1) << CVM__T3_HBITS) - 1)
-#if defined(__GNUC__)
-#define PAR3_PREFETCH(p) __builtin_prefetch(p)
-#else
-#define PAR3_PREFETCH(p) ((void)(p))
-#endif
 
 /* One thread's share of a pass: a copy of the store struct (same arrays, own
  * workspace, free list and run of fresh slots). */
@@ -44,8 +39,6 @@ typedef struct cvm__t3_par {
 int cvm__tet3_build_threads(const cvm__tet3 *T)
 {
     int n = T->threads;
-    if (T->w)
-        return 1;
 #ifdef _OPENMP
     if (n == 0)
         n = omp_get_max_threads();
@@ -98,7 +91,7 @@ cvm_status cvm__tet3_merge_duplicates(cvm__tet3 *T)
         const double *x = T->pt[i].x;
         size_t at;
         if (i + 16 < T->np) /* the table is far larger than the caches */
-            PAR3_PREFETCH(tab + par3_coord_hash(T->pt[i + 16].x, mask));
+            CVM__T3_PREFETCH(tab + par3_coord_hash(T->pt[i + 16].x, mask));
         for (at = par3_coord_hash(x, mask);; at = (at + 1) & mask) {
             const double *y;
             if (tab[at] < 0) {
@@ -106,7 +99,10 @@ cvm_status cvm__tet3_merge_duplicates(cvm__tet3 *T)
                 break;
             }
             y = T->pt[tab[at]].x;
-            if (y[0] == x[0] && y[1] == x[1] && y[2] == x[2]) {
+            /* weighted: the same point with another weight is no duplicate (the
+             * power test decides between them); it takes the next free slot */
+            if (y[0] == x[0] && y[1] == x[1] && y[2] == x[2]
+                && (!T->w || T->w[tab[at]] == T->w[i])) {
                 T->fate[i] = CVM__T3_DUPLICATE;
                 T->merged[i] = tab[at];
                 break;
@@ -123,14 +119,6 @@ static inline int par3_owned(const int32_t *v, const uint8_t *part, uint8_t t)
 {
     return part[v[0]] == t && part[v[1]] == t && part[v[2]] == t
            && (v[3] == CVM__T3_GHOST || part[v[3]] == t);
-}
-
-/* par3_owned() for the tetrahedron across slot s of an owned one: the three
- * vertices of the shared face are owned, only the one facing it is left. */
-static inline int par3_owned_across(const int32_t *tt, int32_t s, const uint8_t *part, uint8_t t)
-{
-    int32_t x = tt[8 * (size_t)(s >> 2) + (s & 3)];
-    return x == CVM__T3_GHOST || part[x] == t;
 }
 
 /* The walk of insert3.c's locate(), which gives up (-1) on leaving the owned tetrahedra. */
@@ -161,7 +149,7 @@ static int32_t par3_locate(cvm__tet3 *V, int32_t p, const uint8_t *part, uint8_t
             if (o < 0.0) {
                 came = CVM__T3_TN(V, slot);
                 t = came >> 2;
-                if (!par3_owned_across(V->tt, came, part, me)) {
+                if (!cvm__t3_owned_across(V->tt, came, part, me)) {
                     V->walk = r;
                     return -1;
                 }
@@ -173,90 +161,6 @@ static int32_t par3_locate(cvm__tet3 *V, int32_t p, const uint8_t *part, uint8_t
     }
     V->walk = r;
     return t;
-}
-
-/* Conflict of p with tetrahedron u: 1, 0, or -1 when the answer would need a
- * word another thread may be writing (a ghost not owned, p in its plane). */
-static int par3_conflict(const cvm__tet3 *V, const int32_t *vu, int32_t u, int32_t p, int mine)
-{
-    double o;
-    int32_t n;
-    if (vu[3] != CVM__T3_GHOST)
-        return cvm__t3_finite_conflict(V, vu, p);
-    o = cvm__t3_orient(V, V->pt[vu[0]].x, V->pt[vu[1]].x, V->pt[vu[2]].x, V->pt[p].x);
-    if (o != 0.0)
-        return o > 0.0;
-    if (!mine)
-        return -1;
-    n = CVM__T3_TN(V, 4 * (size_t)u + 3) >> 2; /* owned ghost: its neighbour word is ours */
-    if (V->tmark[n]) /* marks are only ever set on owned tetrahedra */
-        return V->tmark[n] == 1;
-    return cvm__t3_finite_conflict(V, V->tt + 8 * (size_t)n, p);
-}
-
-/* Clear the marks of an abandoned cavity (owned tetrahedra only carry marks). */
-static void par3_unmark(cvm__tet3 *V, size_t nd, size_t nb)
-{
-    size_t i;
-    for (i = 0; i < nd; i++)
-        V->tmark[V->dead[i]] = 0;
-    for (i = 0; i < nb; i++)
-        if (V->tmark[V->bf[i].out >> 2])
-            V->tmark[V->bf[i].out >> 2] = 0;
-}
-
-/* insert3.c's dig_mode() on owned tetrahedra only, in the fixed workspace: 1
- * with the cavity in dead[] / bf[], 0 (nothing marked) when it reaches a
- * tetrahedron not owned that is in conflict, or outgrows the workspace. */
-static int par3_dig(cvm__tet3 *V, int32_t t0, int32_t p, const uint8_t *part, uint8_t me)
-{
-    int32_t *tt = V->tt, *dead = V->dead;
-    uint8_t *tm = V->tmark;
-    cvm__t3_bface *bf = V->bf;
-    size_t nd = 0, head = 0, nb = 0;
-    int f;
-    tm[t0] = 1;
-    dead[nd++] = t0;
-    for (f = 0; f < 4; f++)
-        PAR3_PREFETCH(tt + 8 * (size_t)(tt[8 * (size_t)t0 + 4 + f] >> 2));
-    while (head < nd) {
-        int32_t c = dead[head++];
-        const int32_t *vc = tt + 8 * (size_t)c;
-        for (f = 0; f < 4; f++) {
-            int32_t s = vc[4 + f], u = s >> 2;
-            const int32_t *vu = tt + 8 * (size_t)u;
-            int mine = par3_owned_across(tt, s, part, me), in;
-            if (mine && tm[u] == 1)
-                continue;
-            in = mine && tm[u] == 2 ? 0 : par3_conflict(V, vu, u, p, mine);
-            if (in != 0 && (!mine || in < 0 || nd == PAR3_DEAD_CAP))
-                goto give_up;
-            if (in) {
-                int g;
-                for (g = 0; g < 4; g++) /* used only after everything queued before */
-                    PAR3_PREFETCH(tt + 8 * (size_t)(vu[4 + g] >> 2));
-                tm[u] = 1;
-                dead[nd++] = u;
-            } else {
-                cvm__t3_bface *b;
-                if (nb == PAR3_BF_CAP)
-                    goto give_up;
-                if (mine)
-                    tm[u] = 2;
-                b = &bf[nb++];
-                b->v[0] = vc[0], b->v[1] = vc[1], b->v[2] = vc[2], b->v[3] = vc[3];
-                b->v[f] = p;
-                b->f = f;
-                b->out = s;
-            }
-        }
-    }
-    V->ndead = nd;
-    V->nbf = nb;
-    return 1;
-give_up:
-    par3_unmark(V, nd, nb);
-    return 0;
 }
 
 /* Insert p if everything it touches is owned and fits the thread's slots: 1, else 0. */
@@ -274,24 +178,37 @@ static int par3_insert(cvm__t3_worker *W, int32_t p, const uint8_t *part, uint8_
         int k;
         for (k = 0; k < 4; k++) { /* (duplicates were merged before: only a guard) */
             const double *q = V->pt[v[k]].x;
-            if (q[0] == pp[0] && q[1] == pp[1] && q[2] == pp[2]) {
+            if (q[0] == pp[0] && q[1] == pp[1] && q[2] == pp[2]
+                && (!V->w || V->w[v[k]] == V->w[p])) {
                 V->merged[p] = v[k];
                 V->fate[p] = CVM__T3_DUPLICATE;
                 return 1;
             }
         }
+        /* weighted: no conflict with the owned tetrahedron holding p means an
+         * empty power cell now, so in the end too (cells only shrink) */
+        if (V->w && !cvm__t3_finite_conflict(V, v, p)) {
+            V->fate[p] = CVM__T3_REDUNDANT;
+            return 1;
+        }
     }
-    if (!par3_dig(V, t, p, part, me))
+    /* (the serial search grows its arrays; this one gives up) */
+    if (!(V->w || V->small_int ? cvm__t3_dig(V, t, p, 0, part, me)
+                               : cvm__t3_dig(V, t, p, 1, part, me)))
         return 0;
     nd = V->ndead, nb = V->nbf;
     grow = nb > nd ? nb - nd : 0;
     shrink = nd > nb ? nd - nb : 0;
     if (grow > V->nfree + (W->fresh_end - V->nslot) || V->nfree + shrink > W->free_lim
         || 4 * nb > V->hashcap) {
-        par3_unmark(V, nd, nb);
+        cvm__t3_unmark_cavity(V, nd, nb);
         V->ndead = V->nbf = 0;
         return 0;
     }
+    /* a vertex losing its cell has every tetrahedron around it in the (owned)
+     * cavity, so it is of this partition: its fate and stamps are this thread's */
+    if (V->w)
+        cvm__tet3_mark_vanished(V, p);
     cvm__tet3_fill_around(V);
     V->fate[p] = CVM__T3_VERTEX;
     V->vtet[p] = V->last;
@@ -456,6 +373,14 @@ static cvm_status par3_pass_setup(cvm__tet3 *T, cvm__t3_par *P, size_t m, int pa
             T->pt[i].loc = 0;
         T->lstamp = 0;
     }
+    /* weighted: the same for the stamps of vanished vertices; every worker
+     * starts from T->vstamp (each stamps only vertices of its own partition,
+     * and the next pass starts above them all) */
+    if (T->w && (uint64_t)T->vstamp + m + 2 > UINT32_MAX) {
+        memset(T->vseen, 0, T->np * sizeof *T->vseen);
+        memset(T->vkeep, 0, T->np * sizeof *T->vkeep);
+        T->vstamp = 0;
+    }
     at = T->nslot;
     for (t = 0; t < P->nt; t++) {
         cvm__t3_worker *W = &P->wk[t];
@@ -507,6 +432,7 @@ static size_t par3_pass_gather(cvm__tet3 *T, cvm__t3_par *P)
         end = W->fresh_end;
         T->n_big_cavities += W->v.n_big_cavities;
         T->lstamp = W->v.lstamp > T->lstamp ? W->v.lstamp : T->lstamp;
+        T->vstamp = W->v.vstamp > T->vstamp ? W->v.vstamp : T->vstamp;
         if (W->start >= 0 && done == 0)
             T->last = W->v.last; /* finite and live: only this worker could change it */
         done += W->done;
@@ -546,6 +472,7 @@ static cvm_status par3_round(cvm__tet3 *T, cvm__t3_par *P, size_t plo, size_t lo
         for (t = 0; t < P->nt; t++)
             par3_run_worker(P, t, m);
         done = par3_pass_gather(T, P);
+        T->n_par_done += done;
         if (done < m / 8)
             break;
     }

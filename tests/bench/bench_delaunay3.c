@@ -1,11 +1,15 @@
 /*
  * bench_delaunay3.c - times the 3D engine (lib/delaunay3) on one point file.
- * Usage: bench_delaunay3 POINTS.bin REPS [THREADS]
- * POINTS.bin holds n * 3 doubles (x y z per point, native byte order). Prints
+ * Usage: bench_delaunay3 POINTS.bin REPS [THREADS [WEIGHTS.bin]]
+ * POINTS.bin holds n * 3 doubles (x y z per point, native byte order);
+ * WEIGHTS.bin, when given, n doubles (a regular tetrahedralisation). Prints
  * one JSON object: median wall and CPU seconds of REPS builds (build plus
  * canonical output, as a caller would get it), median CPU seconds of the
- * build alone (cpu_build), finite tetrahedra, peak heap
- * bytes through a counting allocator, and the status of cvm__tet3_check() on
+ * build alone (cpu_build), finite tetrahedra, redundant (hidden) points, points
+ * settled by parallel passes (par_done; the rest went serially), peak heap
+ * bytes through a counting allocator, an FNV-1a digest of the canonical
+ * tetrahedra and the points' fates (to compare builds byte for byte), and the
+ * status of cvm__tet3_check() on
  * the last run (speed on a wrong mesh does not count). THREADS (default 1) is
  * the build's thread count (cvm__tet3.threads; 0: OpenMP's default).
  * The engine has no public handle yet, so this driver includes its internal
@@ -66,6 +70,36 @@ static void *count_realloc(void *payload, void *ptr, size_t size)
     return p + 16;
 }
 
+static uint64_t fnv1a(uint64_t h, const void *data, size_t len)
+{
+    const unsigned char *b = data;
+    size_t i;
+    for (i = 0; i < len; i++)
+        h = (h ^ b[i]) * UINT64_C(0x100000001B3);
+    return h;
+}
+
+/* n doubles from path into a fresh buffer (NULL on failure), their count in *n. */
+static double *read_doubles(const char *path, size_t *n)
+{
+    FILE *f = fopen(path, "rb");
+    long bytes;
+    double *d;
+    if (!f)
+        return NULL;
+    fseek(f, 0, SEEK_END);
+    bytes = ftell(f);
+    fseek(f, 0, SEEK_SET);
+    *n = bytes > 0 ? (size_t)bytes / sizeof(double) : 0;
+    d = malloc(*n * sizeof *d + 1);
+    if (d && fread(d, sizeof(double), *n, f) != *n) {
+        free(d);
+        d = NULL;
+    }
+    fclose(f);
+    return d;
+}
+
 static double clock_s(clockid_t id)
 {
     struct timespec t;
@@ -81,30 +115,26 @@ static int cmp_double(const void *a, const void *b)
 
 int main(int argc, char **argv)
 {
-    FILE *f;
-    long bytes;
-    size_t n, nt = 0;
-    double *xyz, wall[64], cpu[64], cpu_build[64];
+    size_t n, nw = 0, nt = 0, red = 0, par = 0;
+    double *xyz, *w = NULL, wall[64], cpu[64], cpu_build[64];
     int reps, r, check = -1, threads = 1;
+    uint64_t digest = UINT64_C(0xCBF29CE484222325);
     counter cnt = { 0, 0 };
-    if ((argc != 3 && argc != 4) || !(f = fopen(argv[1], "rb"))) {
-        fprintf(stderr, "usage: bench_delaunay3 POINTS.bin REPS [THREADS]\n");
+    if (argc < 3 || argc > 5) {
+        fprintf(stderr, "usage: bench_delaunay3 POINTS.bin REPS [THREADS [WEIGHTS.bin]]\n");
         return 2;
     }
-    if (argc == 4)
+    if (argc >= 4)
         threads = atoi(argv[3]);
     reps = atoi(argv[2]);
     reps = reps < 1 ? 1 : reps > 64 ? 64 : reps;
-    fseek(f, 0, SEEK_END);
-    bytes = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    n = (size_t)bytes / (3 * sizeof(double));
-    xyz = malloc(3 * n * sizeof *xyz + 1);
-    if (!xyz || fread(xyz, sizeof(double), 3 * n, f) != 3 * n) {
-        fprintf(stderr, "bench_delaunay3: cannot read %s\n", argv[1]);
+    xyz = read_doubles(argv[1], &n);
+    n /= 3;
+    if (!xyz || (argc == 5 && (!(w = read_doubles(argv[4], &nw)) || nw != n))) {
+        fprintf(stderr, "bench_delaunay3: cannot read %s (or %zu weights for %zu points)\n",
+                argv[1], nw, n);
         return 2;
     }
-    fclose(f);
     for (r = 0; r < reps; r++) {
         cvm__ctx ctx;
         cvm__tet3 T;
@@ -117,7 +147,7 @@ int main(int argc, char **argv)
         cvm__tet3_init(&T, &ctx);
         T.threads = threads;
         w0 = clock_s(CLOCK_MONOTONIC), c0 = clock_s(CLOCK_PROCESS_CPUTIME_ID);
-        s = cvm__tet3_build(&T, xyz, NULL, n, 1);
+        s = cvm__tet3_build(&T, xyz, w, n, 1);
         cpu_build[r] = clock_s(CLOCK_PROCESS_CPUTIME_ID) - c0;
         tets = s == CVM_OK ? count_malloc(&cnt, 4 * T.n_finite * sizeof *tets) : NULL;
         if (s == CVM_OK)
@@ -128,7 +158,16 @@ int main(int argc, char **argv)
             return 1;
         }
         nt = T.n_finite;
+        red = T.n_redundant;
+        par = T.n_par_done;
         if (r == reps - 1) {
+            unsigned char *fate = malloc(n + 1);
+            digest = fnv1a(digest, tets, 4 * nt * sizeof *tets);
+            if (fate) {
+                cvm__tet3_point_fates(&T, fate, NULL);
+                digest = fnv1a(digest, fate, n);
+                free(fate);
+            }
             check = (int)cvm__tet3_check(&T);
             if (check != CVM_OK)
                 fprintf(stderr, "bench_delaunay3: check failed: %s\n", ctx.errmsg);
@@ -140,8 +179,10 @@ int main(int argc, char **argv)
     qsort(cpu, (size_t)reps, sizeof *cpu, cmp_double);
     qsort(cpu_build, (size_t)reps, sizeof *cpu_build, cmp_double);
     printf("{\"n\": %zu, \"threads\": %d, \"wall\": %.4f, \"cpu\": %.4f, \"cpu_build\": %.4f, \"tets\": %zu, "
-           "\"peak_bytes\": %zu, \"check\": %d}\n",
-           n, threads, wall[reps / 2], cpu[reps / 2], cpu_build[reps / 2], nt, cnt.peak, check);
+           "\"redundant\": %zu, \"par_done\": %zu, \"peak_bytes\": %zu, \"digest\": \"%016llx\", \"check\": %d}\n",
+           n, threads, wall[reps / 2], cpu[reps / 2], cpu_build[reps / 2], nt, red, par, cnt.peak,
+           (unsigned long long)digest, check);
     free(xyz);
+    free(w);
     return check == CVM_OK ? 0 : 1;
 }

@@ -183,8 +183,9 @@ def main():
         c = run(CVM, path, reps)
         t = run(TETGEN, path, reps) if have_tetgen else None
         c2 = run(CVM, path, reps, 2) if THREADS2 else None
-        if c2 and c2["tets"] != c["tets"]:
-            raise SystemExit("2 threads made %d tetrahedra, 1 thread %d" % (c2["tets"], c["tets"]))
+        if c2 and (c2["tets"] != c["tets"] or c2.get("digest") != c.get("digest")):
+            raise SystemExit("2 threads made %d tetrahedra (digest %s), 1 thread %d (%s)"
+                             % (c2["tets"], c2.get("digest"), c["tets"], c.get("digest")))
         g1 = gmsh_time(path, 1) if use_gmsh and len(pts) <= GMSH_MAX else None
         g2 = gmsh_time(path, 2) if use_gmsh and len(pts) <= GMSH_MAX else None
         h1 = hxt_core_time(path, 1) if use_gmsh and len(pts) <= HXT_MAX else None

@@ -221,6 +221,47 @@ START_TEST(output_does_not_depend_on_the_thread_count)
 }
 END_TEST
 
+/* Weighted: CVM_OPT_THREADS 1, 2, 4 give the same regular tetrahedralisation
+ * (exact power check), the same bytes and the same vanished vertices. */
+START_TEST(weighted_output_does_not_depend_on_the_thread_count)
+{
+    size_t n = 20000, nv, nt[3], i;
+    double *p = random_points(n, 9), *w, van[3];
+    cvm_index *t[3];
+    cvm_mesh *m;
+    int k;
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_points(m, p, n, 3), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_triangulate(m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_count(&nv, m, CVM_ENT_VERTEX), CVM_OK);
+    w = malloc(nv * sizeof *w);
+    ck_assert_ptr_nonnull(w);
+    for (i = 0; i < nv; i++) /* the squared spacing is about 1.4e-3 */
+        w[i] = 1e-4 * (double)(i % 7) - (i % 13 == 0 ? 2e-3 : 0.0);
+    for (k = 0; k < 3; k++) {
+        ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_THREADS, k == 0 ? 1 : 2 * k), CVM_OK);
+        ck_assert_int_eq(cvm_mesh_set_weights(m, w, nv), CVM_OK);
+        ck_assert_int_eq(cvm_mesh_get_measure(&van[k], m, CVM_MEASURE_VANISHED_VERTICES), CVM_OK);
+        ck_assert_msg(cvm_mesh_check(m) == CVM_OK, "%d: %s", k, cvm_mesh_errmsg(m));
+        ck_assert_int_eq(cvm_mesh_count(&nt[k], m, CVM_ENT_TETRAHEDRON), CVM_OK);
+        t[k] = malloc(4 * nt[k] * sizeof *t[k]);
+        ck_assert_ptr_nonnull(t[k]);
+        ck_assert_int_eq(cvm_mesh_copy_cells(t[k], 4 * nt[k], m, CVM_ENT_TETRAHEDRON), CVM_OK);
+    }
+    ck_assert(van[0] > 10);
+    for (k = 1; k < 3; k++) {
+        ck_assert(van[k] == van[0]);
+        ck_assert_uint_eq(nt[k], nt[0]);
+        ck_assert(memcmp(t[k], t[0], 4 * nt[0] * sizeof *t[0]) == 0);
+    }
+    for (k = 0; k < 3; k++)
+        free(t[k]);
+    free(w);
+    free(p);
+    cvm_mesh_free(m);
+}
+END_TEST
+
 /* The same input gives the same bytes, whatever the seed. */
 START_TEST(output_does_not_depend_on_the_seed)
 {
@@ -562,6 +603,7 @@ TCase *api_mesh3_tcase(void)
     tcase_add_test(tc, output_does_not_depend_on_the_thread_count);
     tcase_add_test(tc, duplicates_merge_and_degenerate_input_is_refused);
     tcase_add_test(tc, weights_give_a_regular_tetrahedralisation);
+    tcase_add_test(tc, weighted_output_does_not_depend_on_the_thread_count);
     tcase_add_test(tc, two_dimensional_calls_are_refused_on_a_3d_mesh);
     tcase_add_test(tc, surfaces_are_tetrahedralised_or_refused_clearly);
     tcase_add_test(tc, every_failed_allocation_gives_nomem_and_the_handle_goes_on);
