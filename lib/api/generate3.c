@@ -128,6 +128,8 @@ static cvm_status generate(cvm_mesh *m, double size, const cvm_sizing *sizing)
     p.freespace = (int)cvm__opt(m, CVM_OPT_GEN3_FREESPACE);
     p.octree_balance = 6; /* 26 measured no better: see g3_octree.c */
     p.refine_max = (size_t)cvm__opt(m, CVM_OPT_MAX_STEINER);
+    p.lattice_dmf = cvm__opt(m, CVM_OPT_GEN3_SURFACE) == CVM_GEN3_SURFACE_REMESH_ALL
+                        ? CVM__G3_DM_REMESHED : 0;
     if (sizing && sizing->bgrad > 0) {
         /* min(l + g1 d, l + g2 d) = l + min(g1, g2) d: one field, the smaller slope */
         p.grading = p.follow_surface && p.grading < sizing->bgrad ? p.grading : sizing->bgrad;

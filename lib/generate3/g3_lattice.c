@@ -26,7 +26,9 @@
  * measured on the sphere in a box (size 0.5, grading 0.3), boundary
  * tetrahedra with their circumcentre outside 14.4 -> 5.7 %, smallest dihedral
  * 0.9 -> 5.0 degrees (0.45: 6.9 %, 0.9; 0.65: 5.7 %, 1.2). It stays below
- * the lattice's shortest edge, 0.866 a >= 0.866 size. */
+ * the lattice's shortest edge, 0.866 a >= 0.866 size. Behind a re-meshed
+ * surface (near-equilateral triangles, so a near field in one layer at 2/3
+ * of the size) the lattice uses CVM__G3_DM_REMESHED instead (g3_params). */
 #define G3_DM_FACTOR 0.55
 
 double cvm__g3_lattice_dm(double hs)
@@ -84,6 +86,7 @@ typedef struct lat_ctx {
     cvm__g3_points *P;
     cvm__g3_grid *grid;
     double lo[3], a, h;
+    double dmf;     /* rejection distance over size */
     int level, last;
     int small;      /* a candidate's size fell below this level's range */
     size_t kept;
@@ -104,7 +107,7 @@ static cvm_status candidate(lat_ctx *L, int64_t i, int64_t j, int64_t k, int sub
         L->small = 1;
         return CVM_OK;
     }
-    dm = cvm__g3_lattice_dm(hs);
+    dm = L->dmf * hs;
     if (cvm__g3_grid_near(L->grid, L->P->xyz, x, dm) || !cvm__g3_is_inside(L->in, x))
         return CVM_OK;
     if (L->P->n >= CVM__T3_MAX_POINTS)
@@ -187,7 +190,7 @@ static uint64_t lattice_key(int64_t i, int64_t j, int64_t k, int sub)
 }
 
 cvm_status cvm__g3_lattice(cvm__ctx *ctx, const cvm__g3_surface *s, const cvm__g3_size *z,
-                           double h, const cvm__g3_inside *in, cvm__g3_points *P,
+                           double h, double dmf, const cvm__g3_inside *in, cvm__g3_points *P,
                            cvm__g3_report *rep)
 {
     lat_ctx L;
@@ -204,6 +207,7 @@ cvm_status cvm__g3_lattice(cvm__ctx *ctx, const cvm__g3_surface *s, const cvm__g
     L.P = P;
     L.grid = NULL;
     L.h = h;
+    L.dmf = dmf > 0 ? dmf : G3_DM_FACTOR;
     if (s->np == 0 || s->nt == 0)
         return CVM_OK;
     for (ax = 0; ax < 3; ax++)
@@ -266,7 +270,7 @@ cvm_status cvm__g3_lattice(cvm__ctx *ctx, const cvm__g3_surface *s, const cvm__g
         L.last = lv == levels - 1;
         L.kept = 0;
         L.small = 0;
-        if ((st = cvm__g3_grid_create(&L.grid, ctx, cvm__g3_lattice_dm(L.a))))
+        if ((st = cvm__g3_grid_create(&L.grid, ctx, L.dmf * L.a)))
             break;
         for (f = 0; f < P->n && !st; f++)
             st = cvm__g3_grid_add(L.grid, P->xyz, (int32_t)f);

@@ -44,7 +44,7 @@ cvm_status cvm__g3_generate(cvm__ctx *ctx, const cvm__g3_surface *s, const cvm__
         st = cvm__g3_refine(ctx, s, z, p->h, in, p->refine_max, seed, &P, rep,
                             &rep->refine_limited);
     else if (!st)
-        st = cvm__g3_lattice(ctx, s, z, p->h, in, &P, rep);
+        st = cvm__g3_lattice(ctx, s, z, p->h, p->lattice_dmf, in, &P, rep);
     if (!st && check_faces)
         st = cvm__g3_recover(ctx, s, &P, seed, rep, bad_face);
     cvm__g3_inside_free(in);
