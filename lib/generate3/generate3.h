@@ -144,10 +144,7 @@ cvm_status cvm__g3_lattice(cvm__ctx *ctx, const cvm__g3_surface *s, const cvm__g
 /* The lattice's rejection distance behind a re-meshed surface, over the size: the
  * near field of near-equilateral triangles lies 2/3 of the size deep, and 0.55 kept
  * lattice points 1/3 of the size behind it, between its points (flat tetrahedra).
- * Measured with CVM_GEN3_SURFACE_REMESH_ALL and the optimiser: wing slab (H = 1,
- * g = 0.3) smallest dihedral 1.5 -> 8.0 degrees, boundary outside before optimising
- * 17.2 -> 14.2 %; (H = 0.7, g = 0.2) 5.7 -> 10.0 degrees, non-compliant 0.349 ->
- * 0.325 %; sphere in a box 0.350 -> 0.341 % (0.60: 6.6 degrees; 0.70: 8.0; 0.80: 5.7). */
+ * Chosen by measurement (README, "3D mesh generation"; docs/benchmarks.md). */
 #define CVM__G3_DM_REMESHED 0.65
 /* The rejection distance of a lattice point of size hs: 0.55 hs (chosen by
  * measurement, see g3_lattice.c). */

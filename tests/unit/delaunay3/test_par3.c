@@ -174,15 +174,13 @@ START_TEST(par_duplicates_merge_into_the_lowest_index)
 }
 END_TEST
 
-/* Out of memory at every allocation of a 2-thread build with parallel rounds
- * and of its parallel output. */
-START_TEST(par_oom_at_every_allocation)
+/* Out of memory at every allocation, transient then persistent, of a 2-thread build
+ * of the n points xyz (weights w, or NULL) with parallel rounds, and of its output;
+ * with weights the parallel passes and the hidden points are also asserted. */
+static void par_oom_sweep(const double *xyz, const double *w, size_t n)
 {
-    const size_t n = 800;
-    double xyz[3 * 800];
     long at;
     int persistent;
-    d3test_random(xyz, n, 75);
     for (persistent = 0; persistent < 2; persistent++)
         for (at = 1;; at++) {
             cvmtest_alloc a;
@@ -197,11 +195,15 @@ START_TEST(par_oom_at_every_allocation)
             cvm__tet3_init(&T, &ctx);
             T.threads = 2;
             T.par_min = 128;
-            s = cvm__tet3_build(&T, xyz, NULL, n, 3);
+            s = cvm__tet3_build(&T, xyz, w, n, 3);
             ck_assert_msg(s == CVM_OK || s == CVM_E_NOMEM, "fail at %ld: status %d", at, (int)s);
             if (s == CVM_OK) { /* the parallel output too (8 par_min slots and more) */
                 int32_t *tets = malloc(4 * T.n_finite * sizeof *tets + 16);
                 ck_assert_ptr_nonnull(tets);
+                if (w) {
+                    ck_assert_uint_gt(T.n_par_done, 0);
+                    ck_assert_uint_gt(T.n_redundant, 0);
+                }
                 s = cvm__tet3_copy_tets(&T, tets);
                 ck_assert(s == CVM_OK || s == CVM_E_NOMEM);
                 free(tets);
@@ -209,7 +211,7 @@ START_TEST(par_oom_at_every_allocation)
             failed = a.n_failed;
             cvmtest_alloc_arm(&a, 0, 0); /* the store is reusable once memory is back */
             if (s == CVM_E_NOMEM)
-                ck_assert_int_eq(cvm__tet3_build(&T, xyz, NULL, n, 3), CVM_OK);
+                ck_assert_int_eq(cvm__tet3_build(&T, xyz, w, n, 3), CVM_OK);
             ck_assert_int_eq(cvm__tet3_check(&T), CVM_OK);
             cvm__tet3_free(&T);
             ck_assert_int_eq(a.live_blocks, 0);
@@ -218,6 +220,15 @@ START_TEST(par_oom_at_every_allocation)
                 break;
             }
         }
+}
+
+/* Out of memory at every allocation of a 2-thread build with parallel rounds
+ * and of its parallel output. */
+START_TEST(par_oom_at_every_allocation)
+{
+    double xyz[3 * 800];
+    d3test_random(xyz, 800, 75);
+    par_oom_sweep(xyz, NULL, 800);
 }
 END_TEST
 
@@ -354,8 +365,6 @@ START_TEST(par_weighted_oom_at_every_allocation)
 {
     const size_t n = 800;
     double xyz[3 * 800], w[800], r[3 * 267];
-    long at;
-    int persistent;
     size_t i;
     d3test_random(xyz, n, 76);
     d3test_random(r, 267, 77);
@@ -365,43 +374,7 @@ START_TEST(par_weighted_oom_at_every_allocation)
         memcpy(xyz + 3 * i, xyz + 3 * (i - 700), 3 * sizeof *xyz), w[i] = w[i - 700];
         memcpy(xyz + 3 * i + 3, xyz + 3 * (i - 699), 3 * sizeof *xyz), w[i + 1] = w[i - 699] - 1.0;
     }
-    for (persistent = 0; persistent < 2; persistent++)
-        for (at = 1;; at++) {
-            cvmtest_alloc a;
-            cvm__ctx ctx;
-            cvm__tet3 T;
-            cvm_status s;
-            long failed;
-            cvmtest_alloc_init(&a, at, persistent);
-            cvm__ctx_init_default(&ctx);
-            ctx.alloc_fn = cvmtest_malloc, ctx.realloc_fn = cvmtest_realloc;
-            ctx.free_fn = cvmtest_free, ctx.payload = &a;
-            cvm__tet3_init(&T, &ctx);
-            T.threads = 2;
-            T.par_min = 128;
-            s = cvm__tet3_build(&T, xyz, w, n, 3);
-            ck_assert_msg(s == CVM_OK || s == CVM_E_NOMEM, "fail at %ld: status %d", at, (int)s);
-            if (s == CVM_OK) {
-                int32_t *tets = malloc(4 * T.n_finite * sizeof *tets + 16);
-                ck_assert_ptr_nonnull(tets);
-                ck_assert_uint_gt(T.n_par_done, 0);
-                ck_assert_uint_gt(T.n_redundant, 0);
-                s = cvm__tet3_copy_tets(&T, tets);
-                ck_assert(s == CVM_OK || s == CVM_E_NOMEM);
-                free(tets);
-            }
-            failed = a.n_failed;
-            cvmtest_alloc_arm(&a, 0, 0);
-            if (s == CVM_E_NOMEM)
-                ck_assert_int_eq(cvm__tet3_build(&T, xyz, w, n, 3), CVM_OK);
-            ck_assert_int_eq(cvm__tet3_check(&T), CVM_OK);
-            cvm__tet3_free(&T);
-            ck_assert_int_eq(a.live_blocks, 0);
-            if (failed == 0) {
-                ck_assert(s == CVM_OK);
-                break;
-            }
-        }
+    par_oom_sweep(xyz, w, n);
 }
 END_TEST
 
