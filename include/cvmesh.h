@@ -902,6 +902,12 @@ typedef enum cvm_option {
      *  or CVM_GEN3_SURFACE_REMESH_ALL (2: every triangle, curved ones too, re-meshed
      *  isotropically; see cvm_gen3_surface). Integer, bounds [0, 2]. @since 0.2 */
     CVM_OPT_GEN3_SURFACE = 744,
+    /** CVM_GEN3_FREESPACE_OCTREE only: 1 splits once, after the 2:1 balance, every leaf
+     *  octant with a split octant of its own size across a face (the finer leaves' corners
+     *  hang on its face), then balances again: more points (about 1.4x on the sphere in a
+     *  box) and a smoother transition between sizes. 0 (default): the balanced tree as it
+     *  is. Integer, bounds [0, 1]. @since 0.2 */
+    CVM_OPT_GEN3_OCTREE_SPLIT_HANGING = 745,
     /** 3D dual optimisation (cvm_mesh_optimise_dual3()), 750-759. Sweep limit, integer,
      *  default 50, bounds [0, 1e6] (0: measure only). @since 0.2 */
     CVM_OPT_DUAL3_MAX_SWEEPS = 750,

@@ -43,6 +43,8 @@ static const cli_option_flag k_flags[] = {
      ".vtu output: each merged dual cell (--merge-tol) as one VTK_POLYHEDRON instead of its tetrahedra"},
     {"--uniform", NULL, CVM_OPT_GEN3_SIZE_FROM_SURFACE, 0, M3,
      "uniform size H everywhere instead of following the surface's triangles"},
+    {"--octree-split-hanging", NULL, CVM_OPT_GEN3_OCTREE_SPLIT_HANGING, 1, M3,
+     "--freespace octree: split once every leaf with finer leaves across a face, then balance again"},
     {"--remesh-planar", NULL, CVM_OPT_GEN3_SURFACE, 1, M3,
      "re-mesh the surface's planar facets at the size H (2D frontal refiner) before meshing"},
     {"--remesh-surface", NULL, CVM_OPT_GEN3_SURFACE, 2, M3,

@@ -12,6 +12,10 @@
  * in hand). Measured on the sphere in a box (size 0.5, grading 0.3): balance
  * 26 gives 4 % more tetrahedra and 19.5 % non-compliant after merging against
  * 20.4 % with 6; around a point source both gave the same tree.
+ * Optionally (split_hanging) every leaf with a split octant of its own level
+ * across a face, whose children's corners hang on the leaf's face, is then
+ * split once (all such leaves found before any split, so nothing cascades)
+ * and the tree balanced again.
  *
  * One candidate per leaf, at its centroid, level by level from the root down:
  * kept when it lies farther than its rejection distance dm (the lattice's
@@ -212,6 +216,26 @@ static cvm_status balance_leaf(oct_tree *T, size_t v, int balance)
     return CVM_OK;
 }
 
+/* 1 when the octant of node v has a split octant of its own level across a
+ * face: finer leaves, whose corners hang on v's face. */
+static int hanging_face(const oct_tree *T, size_t v)
+{
+    uint64_t ijk[3];
+    int lv, d;
+    oct_unkey(T->key[v], &lv, ijk);
+    for (d = 0; d < 6; d++) {
+        int64_t q[3] = {(int64_t)ijk[0], (int64_t)ijk[1], (int64_t)ijk[2]};
+        long w;
+        q[d >> 1] += (d & 1) ? 1 : -1;
+        if (q[d >> 1] < 0 || q[d >> 1] >= (int64_t)1 << lv)
+            continue;
+        w = oct_find(T, oct_key(lv, (uint64_t)q[0], (uint64_t)q[1], (uint64_t)q[2]));
+        if (w >= 0 && !T->leaf[w])
+            return 1;
+    }
+    return 0;
+}
+
 /* Mark (leaf 2) the leaves whose centroid lies within its dm of triangle f:
  * down the tree through the nodes whose cube, grown by 0.55 of its edge (no
  * leaf below has a larger dm), meets the triangle's bounding box. */
@@ -290,7 +314,8 @@ static int meets_box(const oct_run *R, int lv, const uint64_t *ijk, const double
  * it does not reach is still met; a background mesh and a callback are read at
  * the centres only). Nodes come in level order, so the boxes are made once
  * per level. */
-static cvm_status build_tree(oct_tree *T, const oct_run *R, int balance, int maxlv)
+static cvm_status build_tree(oct_tree *T, const oct_run *R, int balance, int split_hanging,
+                             int maxlv)
 {
     const cvm_sizing *u = cvm__g3_size_user(R->z);
     double *box = NULL;
@@ -328,6 +353,24 @@ static cvm_status build_tree(oct_tree *T, const oct_run *R, int balance, int max
         for (v = 0; v < T->n && !st; v++)
             if (T->leaf[v] && (int)(T->key[v] >> (3 * OCT_AXIS_BITS)) == lv)
                 st = balance_leaf(T, v, balance);
+    if (split_hanging && !st) {
+        /* the leaves with a finer neighbour across a face, all found first (so
+         * that a split does not cascade), split once; then balanced again */
+        size_t n0 = T->n;
+        uint8_t *hang = cvm__calloc(T->ctx, n0 + 1, 1);
+        if (!hang)
+            return cvm__nomem(T->ctx);
+        for (v = 0; v < n0; v++)
+            hang[v] = T->leaf[v] && hanging_face(T, v);
+        for (v = 0; v < n0 && !st; v++)
+            if (hang[v])
+                st = oct_split(T, v);
+        cvm__free(T->ctx, hang);
+        for (lv = maxlv; lv >= 2 && !st; lv--)
+            for (v = 0; v < T->n && !st; v++)
+                if (T->leaf[v] && (int)(T->key[v] >> (3 * OCT_AXIS_BITS)) == lv)
+                    st = balance_leaf(T, v, balance);
+    }
     /* the sizes of the nodes the balance made */
     for (v = 0; v < T->n && !st; v++) {
         uint64_t ijk[3];
@@ -382,8 +425,8 @@ static cvm_status place_level(const oct_tree *T, const oct_run *R, int lv,
 }
 
 cvm_status cvm__g3_octree(cvm__ctx *ctx, const cvm__g3_surface *s, const cvm__g3_size *z,
-                          double h, int balance, const cvm__g3_inside *in, cvm__g3_points *P,
-                          cvm__g3_report *rep)
+                          double h, int balance, int split_hanging, const cvm__g3_inside *in,
+                          cvm__g3_points *P, cvm__g3_report *rep)
 {
     oct_tree T;
     oct_run R;
@@ -428,7 +471,7 @@ cvm_status cvm__g3_octree(cvm__ctx *ctx, const cvm__g3_surface *s, const cvm__g3
             maxlv++;
     }
     T.limit = CVM__T3_MAX_POINTS;
-    st = build_tree(&T, &R, balance, maxlv);
+    st = build_tree(&T, &R, balance, split_hanging, maxlv);
     for (v = 0; v < s->nt && !st; v++)
         st = mark_near(&T, &R, v);
     for (v = 0; v < T.n && !st; v++)

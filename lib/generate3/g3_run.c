@@ -39,7 +39,8 @@ cvm_status cvm__g3_generate(cvm__ctx *ctx, const cvm__g3_surface *s, const cvm__
             rep->surface_not_delaunay = 1;
     }
     if (!st && p->freespace == CVM_GEN3_FREESPACE_OCTREE)
-        st = cvm__g3_octree(ctx, s, z, p->h, p->octree_balance, in, &P, rep);
+        st = cvm__g3_octree(ctx, s, z, p->h, p->octree_balance, p->octree_split_hanging, in, &P,
+                            rep);
     else if (!st && p->freespace == CVM_GEN3_FREESPACE_REFINE)
         st = cvm__g3_refine(ctx, s, z, p->h, in, p->refine_max, seed, &P, rep,
                             &rep->refine_limited);

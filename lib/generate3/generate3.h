@@ -58,6 +58,7 @@ typedef struct cvm__g3_params {
     const cvm_sizing *sizing; /* NULL, or a 3D sizing (cvm__sizing_check3 passed) */
     int freespace;      /* CVM_GEN3_FREESPACE_*: lattice, octree or Delaunay refinement */
     int octree_balance; /* 6: 2:1 across faces; 26: across faces, edges and corners */
+    int octree_split_hanging; /* 1: leaves with finer face neighbours split once */
     size_t refine_max;  /* refinement: at most this many points inserted (0: no limit) */
     double lattice_dmf; /* the lattice's rejection distance over size (<= 0: 0.55) */
 } cvm__g3_params;
@@ -157,8 +158,8 @@ double cvm__g3_lattice_dm(double hs);
  * corners (26); a leaf's centroid kept as a lattice point is. CVM_E_TOO_LARGE
  * past CVM__T3_MAX_POINTS, CVM_E_NOMEM, or a sizing callback's status. */
 cvm_status cvm__g3_octree(cvm__ctx *ctx, const cvm__g3_surface *s, const cvm__g3_size *z,
-                          double h, int balance, const cvm__g3_inside *in, cvm__g3_points *P,
-                          cvm__g3_report *rep);
+                          double h, int balance, int split_hanging, const cvm__g3_inside *in,
+                          cvm__g3_points *P, cvm__g3_report *rep);
 
 /* ---- g3_refine.c ---- */
 /* The squared distance from p to the triangle abc (plain doubles). */

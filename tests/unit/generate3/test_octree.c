@@ -187,8 +187,9 @@ static void circumcentre_bary(const g3_mesh *g, size_t t, double *lam)
  * tetrahedron of its own merged group (cvm_mesh_copy_dual3_merge_groups()).
  * Measured: 1,640 tetrahedra, all merged, none non-compliant: the paper's
  * 100 %; the lattice at the same sizes leaves 23 % (the octree without the
- * sources' boxes in its split rule, 0.31 %, at corners of 2:1 transitions). */
-START_TEST(octree_point_source_is_well_centred_after_merging)
+ * sources' boxes in its split rule, 0.31 %, at corners of 2:1 transitions).
+ * With CVM_OPT_GEN3_OCTREE_SPLIT_HANGING: 1,870 tetrahedra, the same result. */
+static void point_source_well_centred(int split_hanging)
 {
     cvm_mesh *m = read_octree("cube.off");
     cvm_sizing *sz;
@@ -200,6 +201,8 @@ START_TEST(octree_point_source_is_well_centred_after_merging)
     size_t t, i, near = 0, bad = 0, merged = 0;
     cvm_status s;
     ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_GEN3_SIZE_FROM_SURFACE, 0), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_GEN3_OCTREE_SPLIT_HANGING, split_hanging),
+                     CVM_OK);
     ck_assert_int_eq(cvm_sizing_create(&sz), CVM_OK);
     ck_assert_int_eq(cvm_sizing_add_point_source_nd(sz, c, 3, 0.02, 0.2), CVM_OK);
     s = cvm_mesh_generate3_sized(m, 0.25, sz);
@@ -275,6 +278,17 @@ START_TEST(octree_point_source_is_well_centred_after_merging)
     free(fr);
     free(nb);
     cvm_mesh_free(m);
+}
+
+START_TEST(octree_point_source_is_well_centred_after_merging)
+{
+    point_source_well_centred(0);
+}
+END_TEST
+
+START_TEST(octree_split_hanging_point_source_is_well_centred_after_merging)
+{
+    point_source_well_centred(1);
 }
 END_TEST
 
@@ -426,6 +440,64 @@ START_TEST(octree_oom_at_every_allocation)
 }
 END_TEST
 
+static void oom_setup_split(cvm_mesh *m, void *arg)
+{
+    oom_setup(m, arg);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_GEN3_OCTREE_SPLIT_HANGING, 1), CVM_OK);
+}
+
+/* The tetrahedron with a point source at its centre: a graded tree. */
+static cvm_status generate_graded(cvm_mesh *m)
+{
+    const double c[3] = {0.05, -0.03, 0.02};
+    cvm_sizing *sz;
+    cvm_status s = cvm_sizing_create(&sz);
+    if (s)
+        return s;
+    s = cvm_sizing_add_point_source_nd(sz, c, 3, 0.05, 0.3);
+    if (!s)
+        s = cvm_mesh_generate3_sized(m, 0.5, sz);
+    cvm_sizing_free(sz);
+    return s;
+}
+
+static cvm_status oom_run_split(cvm_mesh *m, void *arg)
+{
+    (void)arg;
+    return generate_graded(m);
+}
+
+/* Splitting the leaves with hanging faces: more leaves and points than the
+ * balanced tree alone, a valid mesh of the same volume, the option's bounds,
+ * and OOM at every allocation of the split. */
+START_TEST(octree_split_hanging_adds_leaves)
+{
+    cvm_mesh *m = read_octree("tetra.off");
+    cvm_bounds b;
+    double leaves0, pts0, vol0, vol1;
+    ck_assert_int_eq(cvm_option_bounds(&b, CVM_OPT_GEN3_OCTREE_SPLIT_HANGING), CVM_OK);
+    ck_assert_double_eq(b.lo, 0);
+    ck_assert_double_eq(b.hi, 1);
+    ck_assert_double_eq(b.def, 0);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_GEN3_OCTREE_SPLIT_HANGING, 2),
+                     CVM_E_OPTION_RANGE);
+    ck_assert_msg(generate_graded(m) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    ck_assert_int_eq(cvm_mesh_check(m), CVM_OK);
+    leaves0 = report(m, CVM_REPORT_GEN3_OCTREE_LEAVES);
+    pts0 = report(m, CVM_REPORT_GEN3_OCTREE_POINTS);
+    ck_assert_int_eq(cvm_mesh_get_measure(&vol0, m, CVM_MEASURE_VOLUME), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_GEN3_OCTREE_SPLIT_HANGING, 1), CVM_OK);
+    ck_assert_msg(generate_graded(m) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    ck_assert_int_eq(cvm_mesh_check(m), CVM_OK);
+    ck_assert_double_gt(report(m, CVM_REPORT_GEN3_OCTREE_LEAVES), leaves0);
+    ck_assert_double_gt(report(m, CVM_REPORT_GEN3_OCTREE_POINTS), pts0);
+    ck_assert_int_eq(cvm_mesh_get_measure(&vol1, m, CVM_MEASURE_VOLUME), CVM_OK);
+    ck_assert_double_eq_tol(vol1, vol0, 1e-12 * vol0);
+    cvm_mesh_free(m);
+    cvmtest_oom_sweep(oom_setup_split, oom_run_split, NULL, (void *)"tetra.off");
+}
+END_TEST
+
 TCase *generate3_octree_tcase(void)
 {
     TCase *tc = tcase_create("octree");
@@ -433,9 +505,11 @@ TCase *generate3_octree_tcase(void)
     tcase_add_test(tc, octree_points_are_centroids_inside_and_apart);
     tcase_add_test(tc, octree_graded_points_stay_inside);
     tcase_add_test(tc, octree_point_source_is_well_centred_after_merging);
+    tcase_add_test(tc, octree_split_hanging_point_source_is_well_centred_after_merging);
     tcase_add_test(tc, octree_same_bytes_for_every_run_seed_and_thread_count);
     tcase_add_test(tc, octree_options_and_sizes_give_statuses);
     tcase_add_test(tc, octree_reads_the_sizing);
     tcase_add_test(tc, octree_oom_at_every_allocation);
+    tcase_add_test(tc, octree_split_hanging_adds_leaves);
     return tc;
 }
