@@ -129,6 +129,7 @@ static cvm_status generate(cvm_mesh *m, double size, const cvm_sizing *sizing)
     p.octree_balance = 6; /* 26 measured no better: see g3_octree.c */
     p.octree_split_hanging = cvm__opt(m, CVM_OPT_GEN3_OCTREE_SPLIT_HANGING) != 0;
     p.refine_max = (size_t)cvm__opt(m, CVM_OPT_MAX_STEINER);
+    p.near_wall = CVM__G3_NEAR_WALL;
     p.lattice_dmf = cvm__opt(m, CVM_OPT_GEN3_SURFACE) == CVM_GEN3_SURFACE_REMESH_ALL
                         ? CVM__G3_DM_REMESHED : 0;
     if (sizing && sizing->bgrad > 0) {

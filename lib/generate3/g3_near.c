@@ -5,6 +5,12 @@
  *   x = 0.5 (c_ABC + c_BDC + delta (n_ABC + n_BDC)),  delta = 1.1 max(R_ABC, R_BDC),
  * c the circumcentre, R the circumradius, n the inward unit normal; an
  * unmatched triangle gets c + 1.1 R n. Rejection distance dm = 0.5 delta.
+ * A point is not placed when it lies closer than wallf delta (CVM__G3_NEAR_WALL,
+ * 0.7) to any surface triangle: a triangle at a convex edge whose circumcentre
+ * lies on or near that edge (a right triangle's hypotenuse) sends its point
+ * along the face next to it, a hair inside the other face (0.0015 of a unit
+ * cube re-meshed at 0.05), which makes slivers and tetrahedra no optimisation
+ * repairs. A pair on one plane keeps delta from it, so only such points go.
  *
  * Pairs whose well-centred regions may not intersect are dropped before the
  * matching, by a cheap sufficient test of intersection: the pair is kept when
@@ -107,13 +113,14 @@ static int pair_point(const face_geo *g1, const face_geo *g2, const double *a, c
 #define P3(i) (s->xyz + 3 * (size_t)(i))
 
 cvm_status cvm__g3_near_field(cvm__ctx *ctx, const cvm__g3_surface *s, const cvm__g3_inside *in,
-                              cvm__g3_points *P, cvm__g3_report *rep)
+                              double wallf, cvm__g3_points *P, cvm__g3_report *rep)
 {
     face_geo *geo = NULL;
     edge_rec *er = NULL;
     cvm_index *ends = NULL, *mate = NULL;
     int64_t *w = NULL;
     cvm__g3_grid *grid = NULL;
+    cvm__g3_trigrid *tg = NULL;
     size_t f, i, m = 0, ne = 3 * s->nt;
     double dmax = 0;
     cvm_status st = CVM_OK;
@@ -180,6 +187,8 @@ cvm_status cvm__g3_near_field(cvm__ctx *ctx, const cvm__g3_surface *s, const cvm
     }
     if ((st = cvm__g3_grid_create(&grid, ctx, dmax)))
         goto done;
+    if (wallf > 0 && (st = cvm__g3_trigrid_create(&tg, ctx, s, 2 * wallf * dmax)))
+        goto done;
     for (i = 0; i < P->n; i++)
         if ((st = cvm__g3_grid_add(grid, P->xyz, (int32_t)i)))
             goto done;
@@ -204,7 +213,8 @@ cvm_status cvm__g3_near_field(cvm__ctx *ctx, const cvm__g3_surface *s, const cvm
             dm = 0.5 * 1.1 * geo[f].R;
             rep->unmatched_faces++;
         }
-        if (!cvm__g3_is_inside(in, x) || cvm__g3_grid_near(grid, P->xyz, x, dm)) {
+        if (!cvm__g3_is_inside(in, x) || cvm__g3_grid_near(grid, P->xyz, x, dm) ||
+            (tg && cvm__g3_trigrid_near(tg, x, 2 * wallf * dm))) {
             rep->near_rejected++;
             continue;
         }
@@ -214,6 +224,7 @@ cvm_status cvm__g3_near_field(cvm__ctx *ctx, const cvm__g3_surface *s, const cvm
         rep->near_points++;
     }
 done:
+    cvm__g3_trigrid_free(tg);
     cvm__g3_grid_free(grid);
     cvm__free(ctx, geo);
     cvm__free(ctx, er);

@@ -28,7 +28,7 @@ cvm_status cvm__g3_generate(cvm__ctx *ctx, const cvm__g3_surface *s, const cvm__
     if (!st)
         st = cvm__g3_inside_create(&in, ctx, s);
     if (!st)
-        st = cvm__g3_near_field(ctx, s, in, &P, rep);
+        st = cvm__g3_near_field(ctx, s, in, p->near_wall, &P, rep);
     /* without boundary recovery, a surface whose own points miss one of its
      * triangles cannot be helped by removing generated points: say so (the
      * check sees the surface's points only, and changes nothing) */

@@ -61,6 +61,8 @@ typedef struct cvm__g3_params {
     int octree_split_hanging; /* 1: leaves with finer face neighbours split once */
     size_t refine_max;  /* refinement: at most this many points inserted (0: no limit) */
     double lattice_dmf; /* the lattice's rejection distance over size (<= 0: 0.55) */
+    double near_wall;   /* a near-field point closer than this x delta to a surface triangle
+                           is not placed (0: no such test) */
 } cvm__g3_params;
 
 typedef struct cvm__g3_report {
@@ -109,6 +111,16 @@ cvm_status cvm__g3_grid_add(cvm__g3_grid *g, const double *xyz, int32_t id);
 /* 1 when some added point lies strictly closer than r to x. */
 int cvm__g3_grid_near(const cvm__g3_grid *g, const double *xyz, const double *x, double r);
 
+/* ---- g3_trigrid.c: surface triangles in a uniform grid, for "is any triangle within r" ---- */
+typedef struct cvm__g3_trigrid cvm__g3_trigrid;
+/* A grid answering queries of radius at most reach about s (which it keeps a pointer
+ * to). CVM_E_NOMEM, CVM_E_TOO_LARGE. */
+cvm_status cvm__g3_trigrid_create(cvm__g3_trigrid **out, cvm__ctx *ctx, const cvm__g3_surface *s,
+                                  double reach);
+void cvm__g3_trigrid_free(cvm__g3_trigrid *g);
+/* 1 when a triangle of the surface lies closer than r (<= reach) to x. */
+int cvm__g3_trigrid_near(const cvm__g3_trigrid *g, const double *x, double r);
+
 /* ---- g3_inside.c: exact point-in-domain by ray parity ---- */
 typedef struct cvm__g3_inside cvm__g3_inside;
 cvm_status cvm__g3_inside_create(cvm__g3_inside **out, cvm__ctx *ctx, const cvm__g3_surface *s);
@@ -134,7 +146,10 @@ void cvm__g3_points_free(cvm__ctx *ctx, cvm__g3_points *P);
  * from every point of P. CVM_E_UNSUPPORTED when an edge has other than two
  * triangles (internal facets); CVM_E_NOMEM. */
 cvm_status cvm__g3_near_field(cvm__ctx *ctx, const cvm__g3_surface *s, const cvm__g3_inside *in,
-                              cvm__g3_points *P, cvm__g3_report *rep);
+                              double wallf, cvm__g3_points *P, cvm__g3_report *rep);
+/* The near field's distance from the surface over its offset delta, below which a
+ * point is not placed (see g3_near.c). */
+#define CVM__G3_NEAR_WALL 0.7
 
 /* ---- g3_lattice.c ---- */
 /* Append the free-space lattice points to P; a point of size hs is rejected within

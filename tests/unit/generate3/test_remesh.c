@@ -149,6 +149,57 @@ START_TEST(remesh_all_same_bytes_and_box_sides_exact)
 }
 END_TEST
 
+/* A near-field point closer than 0.7 delta to a surface triangle is not placed
+ * (g3_near.c): on the re-meshed cube every near-field point keeps at least
+ * 0.7 x 1.1 x (half the longest edge of a triangle) >= 0.385 x the shortest
+ * surface edge from every side, where the points of unmatched triangles at the
+ * cube's edges came within 0.0015 of a side at size 0.05 without the test. */
+START_TEST(remesh_all_near_field_keeps_off_the_sides)
+{
+    cvm_mesh *m = read_with("cube.off", CVM_GEN3_SURFACE_REMESH_ALL);
+    double near_pts, emin = HUGE_VAL, dmin = HUGE_VAL;
+    size_t np, v, i, first = 0;
+    g3_mesh g;
+    if (!g3_with_tetgen()) {
+        cvm_mesh_free(m);
+        CVMTEST_SKIP("needs TetGen (a TETGEN=1 build)");
+    }
+    ck_assert_msg(cvm_mesh_generate3(m, 0.05) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    ck_assert_int_eq(cvm_mesh_get_report(&near_pts, m, CVM_REPORT_GEN3_NEAR_POINTS), CVM_OK);
+    g3_mesh_get(&g, m);
+    for (i = 0; i < g.nf; i++) {
+        int k;
+        for (k = 0; k < 3; k++) {
+            const double *a = g.xyz + 3 * g.face[3 * i + (size_t)k],
+                         *b = g.xyz + 3 * g.face[3 * i + (size_t)(k + 1) % 3];
+            double d = sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
+                            (a[2] - b[2]) * (a[2] - b[2]));
+            emin = d < emin ? d : emin;
+        }
+    }
+    /* the surface's points come first, then the near field */
+    ck_assert_int_eq(cvm_mesh_count(&np, m, CVM_ENT_INPUT_POINT), CVM_OK);
+    for (v = 0; v < g.nv; v++) {
+        const double *x = g.xyz + 3 * v;
+        if (x[0] == 0 || x[0] == 1 || x[1] == 0 || x[1] == 1 || x[2] == 0 || x[2] == 1)
+            first = v + 1;
+    }
+    ck_assert_uint_ge(first, np);
+    ck_assert_double_gt(near_pts, 100);
+    for (v = first; v < first + (size_t)near_pts; v++) {
+        int k;
+        for (k = 0; k < 3; k++) {
+            double c = g.xyz[3 * v + (size_t)k], d = c < 1 - c ? c : 1 - c;
+            dmin = d < dmin ? d : dmin;
+        }
+    }
+    ck_assert_msg(dmin >= 0.385 * emin, "a near-field point %.17g from a side (shortest edge %.17g)",
+                  dmin, emin);
+    g3_mesh_free(&g);
+    cvm_mesh_free(m);
+}
+END_TEST
+
 static void oom_setup(cvm_mesh *m, void *arg)
 {
     char path[1024];
@@ -176,6 +227,7 @@ TCase *generate3_remesh_tcase(void)
     tcase_set_timeout(tc, 300);
     tcase_add_test(tc, wing_slab_needles_remeshed);
     tcase_add_test(tc, remesh_all_same_bytes_and_box_sides_exact);
+    tcase_add_test(tc, remesh_all_near_field_keeps_off_the_sides);
     tcase_add_test(tc, remesh_all_oom_at_every_allocation);
     return tc;
 }
