@@ -961,6 +961,13 @@ typedef enum cvm_option {
      *  (CVM_OPT_DUAL3_SOLVER 2 or 3), integer, default 300, bounds [40, 1000000].
      *  @since 0.2 */
     CVM_OPT_DUAL3_CUCKOO_BUDGET = 758,
+    /** What cvm_mesh_optimise_dual3() does when its sweeps stall (three sweeps without a
+     *  new least count of tetrahedra outside, or a sweep without a move): with 1 (default)
+     *  it stops; with E > 1 it doubles the compass search's budget (CVM_OPT_DUAL3_BUDGET)
+     *  and searches every vertex again, until the budget has reached E times its start
+     *  and stalls once more. CVM_OPT_DUAL3_MAX_SWEEPS and the time limit still bound the
+     *  run. Integer, bounds [1, 64]. @since 0.2 */
+    CVM_OPT_DUAL3_ESCALATE = 759,
     /* ---- quad-dominant meshing (800-899): read by cvm_mesh_quadmesh() ---- */
     /** Exponent p of the Lp-CVT energy, even integer, default 6, bounds [2, 12]. p = 2 is
      *  the classic CVT (hexagonal cells); larger p pulls the cells towards squares of unit

@@ -42,6 +42,7 @@ cvm_status cvm_mesh_optimise_dual3(cvm_mesh *m)
     p.flips = cvm__opt(m, CVM_OPT_DUAL3_FLIPS) != 0;
     p.solver = (int)cvm__opt(m, CVM_OPT_DUAL3_SOLVER);
     p.cuckoo_budget = (int)cvm__opt(m, CVM_OPT_DUAL3_CUCKOO_BUDGET);
+    p.escalate = (int)cvm__opt(m, CVM_OPT_DUAL3_ESCALATE);
     memset(&topo, 0, sizeof topo);
     cvm__run_begin(&m->ctx, cvm__opt(m, CVM_OPT_TIME_LIMIT_S));
     if ((s = cvm__mesh3_adjacency(&m->ctx, g->tet, g->ntet, &nbr)))

@@ -33,6 +33,8 @@ static const cli_option_flag k_flags[] = {
      "--optimise: keep the connectivity (by default flips repair the faces a move leaves not locally regular)"},
     {"--opt-solver", "N", CVM_OPT_DUAL3_SOLVER, 0, M3 | OPT,
      "--optimise: per-vertex search: 1 compass (default), 2 cuckoo, 3 compass then cuckoo where it found no move"},
+    {"--opt-escalate", "E", CVM_OPT_DUAL3_ESCALATE, 0, M3 | OPT,
+     "--optimise: when the sweeps stall, double the search budget and search every vertex again, up to E times the budget (default 1: stop)"},
     {"--opt-cuckoo-budget", "N", CVM_OPT_DUAL3_CUCKOO_BUDGET, 0, M3 | OPT,
      "--optimise: evaluations per vertex and sweep of the cuckoo search (default 300)"},
     {"--opt-margin", "F", CVM_OPT_DUAL3_MARGIN, 0, M3 | OPT,

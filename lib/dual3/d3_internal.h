@@ -55,6 +55,7 @@ typedef struct cvm__d3_work {
     size_t flips;    /* flips kept */
     size_t mflips;   /* flips of the last cvm__d3_restore() */
     size_t sweep;    /* the current sweep (keys the cuckoo streams) */
+    int budget;      /* the compass search's evaluations per vertex this sweep */
     /* params.slide 2 (d3_slide.c): vertices sliding on the surface as it was */
     uint8_t *curved; /* nv: 1 when the vertex slides on its ring */
     double *tan;     /* 6 nv: the tangent basis of such a vertex */

@@ -280,9 +280,9 @@ static int d3_compass(cvm__d3_work *K, int32_t v, const int *dirs, int nd, d3_se
 {
     double cand[4], hs = 0.08 * K->lv[v], hw = 0.16 * K->lv[v] * K->lv[v];
     int evals = 0, first = 0, moved = 0;
-    while (evals < K->p->budget && hs > 1e-3 * K->lv[v]) {
+    while (evals < K->budget && hs > 1e-3 * K->lv[v]) {
         int improved = 0, k;
-        for (k = 0; k < nd && evals < K->p->budget; k++) {
+        for (k = 0; k < nd && evals < K->budget; k++) {
             int dir = dirs[(first + k) % nd];
             double f;
             memcpy(cand, S->cur, sizeof cand);
@@ -453,6 +453,7 @@ cvm_status cvm__d3_optimise(cvm__ctx *ctx, cvm__d3_mesh *M, const cvm__d3_params
     memset(&K, 0, sizeof K);
     r->ntet = M->ntet;
     K.p = p;
+    K.budget = p->budget;
     if ((s = work_init(ctx, &K, M)))
         return s;
     rk = cvm__malloc(ctx, (M->nv + 1) * sizeof *rk);
@@ -497,10 +498,15 @@ cvm_status cvm__d3_optimise(cvm__ctx *ctx, cvm__d3_mesh *M, const cvm__d3_params
         r->out_after = count_out(&K, &r->bout_after, &r->nbnd_after);
         if (r->out_after < low)
             low = r->out_after, stall = 0;
-        else if (++stall >= 3)
-            break;
-        if (!moved)
-            break;
+        else
+            stall++;
+        if (stall >= 3 || !moved) {
+            if (p->escalate <= 1 || K.budget >= p->escalate * p->budget)
+                break;
+            K.budget *= 2;
+            stall = 0;
+            memset(K.stuck, 0, M->nv);
+        }
     }
     if (p->flips)
         cvm__d3_compact(&K);

@@ -80,6 +80,8 @@ typedef struct cvm__d3_params {
     int solver;             /* 1 compass search; 2 cuckoo search; 3 compass, then cuckoo
                                where the compass search found no move */
     int cuckoo_budget;      /* evaluations per vertex and sweep of the cuckoo search */
+    int escalate;           /* on a stall the budget doubles, up to escalate x budget, and
+                               every vertex is searched again; 1: a stall ends the run */
 } cvm__d3_params;
 
 typedef struct cvm__d3_report {
