@@ -3087,7 +3087,10 @@ CVM_API cvm_status cvm_mesh_optimise_dual(cvm_mesh *m, const cvm_sizing *sizing)
  *                                 triangles (message gives the numbers)
  *         the surface's statuses of cvm_mesh_triangulate() (not closed, self-intersecting, ...)
  *         CVM_E_INTERNAL          CVM_OPT_GEN3_SURFACE 1 made a surface that fails the
- *                                 input checks (a bug; the message says so)
+ *                                 input checks (a bug; the message says so), or 2 did so
+ *                                 at the size, half and a quarter of it (a re-meshing
+ *                                 that folds at a sharp corner is tried again finer; the
+ *                                 generation keeps the size)
  *         CVM_E_NOMEM             (the handle keeps its input; the output is dropped)
  *         CVM_INCOMPLETE_TIME_LIMIT, CVM_INCOMPLETE_CANCELLED (as cvm_mesh_triangulate())
  *         CVM_INCOMPLETE_STEINER_LIMIT the refinement free space met CVM_OPT_MAX_STEINER (the

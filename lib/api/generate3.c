@@ -91,6 +91,9 @@ static cvm_status remeshed_surface(cvm_mesh *m, const cvm__g3_remeshed *r, const
     return s;
 }
 
+/* Re-meshings of the whole surface tried, each at half the size of the last. */
+#define CVM__REMESH_ATTEMPTS 3
+
 /* cvm_mesh_generate3_sized() with sizing NULL or checked for 3D. */
 static cvm_status generate(cvm_mesh *m, double size, const cvm_sizing *sizing)
 {
@@ -148,13 +151,32 @@ static cvm_status generate(cvm_mesh *m, double size, const cvm_sizing *sizing)
         }
         for (t = 0; t < st.nt; t++)
             key[t] = g->in.fmark[g->in.pfacet[st.tpoly[t]]];
-        if (cvm__opt(m, CVM_OPT_GEN3_SURFACE) == CVM_GEN3_SURFACE_REMESH_ALL)
-            s = cvm__g3_remesh_all(&m->ctx, &surf, key, &p, &rm);
-        else
+        if (cvm__opt(m, CVM_OPT_GEN3_SURFACE) == CVM_GEN3_SURFACE_REMESH_ALL) {
+            /* a coarse re-meshing can fold at a sharp corner (two triangles of one point
+             * crossing): then again at half and a quarter of the size, which the
+             * generation itself keeps */
+            double h0 = p.h;
+            int attempt;
+            for (attempt = 0; attempt < CVM__REMESH_ATTEMPTS; attempt++) {
+                p.h = ldexp(h0, -attempt);
+                s = cvm__g3_remesh_all(&m->ctx, &surf, key, &p, &rm);
+                if (!s && rm.xyz)
+                    s = remeshed_surface(m, &rm, &st, &ns);
+                if (s != CVM_E_INTERNAL || attempt + 1 == CVM__REMESH_ATTEMPTS)
+                    break;
+                if (rm.xyz)
+                    cvm__surf3_free(&m->ctx, &ns);
+                cvm__g3_remeshed_free(&m->ctx, &rm);
+                memset(&rm, 0, sizeof rm);
+                rm.tris_before = rm.tris_after = st.nt;
+            }
+            p.h = h0;
+        } else {
             s = cvm__g3_remesh_planar(&m->ctx, &surf, key, &p, &rm);
+            if (!s && rm.xyz)
+                s = remeshed_surface(m, &rm, &st, &ns);
+        }
         cvm__free(&m->ctx, key);
-        if (!s && rm.xyz)
-            s = remeshed_surface(m, &rm, &st, &ns);
         if (s) {
             if (rm.xyz)
                 cvm__surf3_free(&m->ctx, &ns);

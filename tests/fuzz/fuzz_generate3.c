@@ -24,7 +24,9 @@
  *   27     bit 0, with bit 7 of byte 24: CVM_GEN3_SURFACE_REMESH_ALL instead (the
  *          whole surface re-meshed: 4 or more boundary faces, the volume kept to
  *          10 %: a face folded by less than 35 degrees is one smooth patch, and
- *          the coarse re-meshed triangles' chords cut across its crease)
+ *          the coarse re-meshed triangles' chords cut across its crease);
+ *          bit 1: the octree free space (CVM_GEN3_FREESPACE_OCTREE), bit 2 with
+ *          it: CVM_OPT_GEN3_OCTREE_SPLIT_HANGING
  */
 #include <math.h>
 #include <stdint.h>
@@ -50,7 +52,7 @@ static uint8_t byte_at(const uint8_t *data, size_t size, size_t i)
 static const int k_quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
                                   {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
 
-static cvm_mesh *run(const char *path, int uniform, int remesh, double h, double g)
+static cvm_mesh *run(const char *path, int uniform, int remesh, int octree, double h, double g)
 {
     cvm_mesh *m;
     cvm_status s;
@@ -66,6 +68,12 @@ static cvm_mesh *run(const char *path, int uniform, int remesh, double h, double
                  "option");
     FUZZ_REQUIRE(cvm_mesh_set_option(m, CVM_OPT_GEN3_GRADING, g) == CVM_OK, "option");
     FUZZ_REQUIRE(cvm_mesh_set_option(m, CVM_OPT_GEN3_SURFACE, remesh) == CVM_OK, "option");
+    if (octree) {
+        FUZZ_REQUIRE(cvm_mesh_set_option(m, CVM_OPT_GEN3_FREESPACE, CVM_GEN3_FREESPACE_OCTREE) ==
+                         CVM_OK, "option");
+        FUZZ_REQUIRE(cvm_mesh_set_option(m, CVM_OPT_GEN3_OCTREE_SPLIT_HANGING, octree == 2) ==
+                         CVM_OK, "option");
+    }
     s = cvm_mesh_generate3(m, h);
     if (s != CVM_OK) {
         FUZZ_REQUIRE(cvm_status_is_error(s) && cvm_mesh_errmsg(m)[0], "status %d without a message",
@@ -84,7 +92,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     double c[8][3], lo[3], hi[3], vol = 0, v, h, g;
     char dir[] = "/tmp/fuzz_generate3_XXXXXX", path[64];
-    int k, a, uniform, remesh;
+    int k, a, uniform, remesh, octree;
     uint8_t diag = byte_at(data, size, 24);
     FILE *f;
     cvm_mesh *m1, *m2;
@@ -96,6 +104,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     remesh = (diag >> 7) & 1;
     if (remesh && (byte_at(data, size, 27) & 1))
         remesh = 2;
+    octree = (byte_at(data, size, 27) >> 1) & 1 ? 1 + ((byte_at(data, size, 27) >> 2) & 1) : 0;
     h = 0.15 + 0.6 * byte_at(data, size, 25) / 255.0;
     g = 0.05 + 2.0 * byte_at(data, size, 26) / 255.0;
     FUZZ_REQUIRE(mkdtemp(dir) != NULL, "mkdtemp");
@@ -123,8 +132,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         }
     }
     fclose(f);
-    m1 = run(path, uniform, remesh, h, g);
-    m2 = m1 ? run(path, uniform, remesh, h, g) : NULL;
+    m1 = run(path, uniform, remesh, octree, h, g);
+    m2 = m1 ? run(path, uniform, remesh, octree, h, g) : NULL;
     unlink(path);
     rmdir(dir);
     if (!m1)

@@ -7,8 +7,10 @@
  * allocation.
  */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "generate3/g3_util.h"
 #include "generate3/generate3_tests.h"
@@ -200,6 +202,69 @@ START_TEST(remesh_all_near_field_keeps_off_the_sides)
 }
 END_TEST
 
+/* A perturbed hexahedron found by fuzz_generate3 (tests/fuzz/corpus/generate3/
+ * remesh-fold-a13bd50): re-meshed at size 0.291 its surface folded at the sharp
+ * corner (-0.3, -0.3, 0.7), two triangles of one point crossing, and the run
+ * ended in CVM_E_INTERNAL; re-meshing is now tried again at half the size. */
+START_TEST(remesh_all_folded_corner_retried_finer)
+{
+    static const char *k_off =
+        "OFF\n"
+        "8 12 0\n"
+        "0 0.028124999999999997 -0.018749999999999999\n"
+        "1.0515625 0 -0.0046874999999999998\n"
+        "-0.0023437499999999999 1 0\n"
+        "1.0093749999999999 1 -0.19921875\n"
+        "-0.29999999999999999 -0.29999999999999999 0.69999999999999996\n"
+        "1.1171875 -0.29999999999999999 1.121875\n"
+        "-0.29999999999999999 0.69999999999999996 0.69999999999999996\n"
+        "0.99765625000000002 1.20390625 1.2953125000000001\n"
+        "3 2 3 1\n"
+        "3 2 1 0\n"
+        "3 4 5 7\n"
+        "3 4 7 6\n"
+        "3 1 5 4\n"
+        "3 1 4 0\n"
+        "3 2 6 7\n"
+        "3 2 7 3\n"
+        "3 4 6 2\n"
+        "3 4 2 0\n"
+        "3 1 3 7\n"
+        "3 1 7 5\n";
+    char dir[] = "/tmp/cvm_remesh_XXXXXX", path[64];
+    FILE *f;
+    cvm_mesh *m;
+    double v, after;
+    cvm_status s;
+    ck_assert_ptr_nonnull(mkdtemp(dir));
+    snprintf(path, sizeof path, "%s/h.off", dir);
+    ck_assert_ptr_nonnull(f = fopen(path, "w"));
+    fputs(k_off, f);
+    fclose(f);
+    ck_assert_int_eq(cvm_mesh_create(&m), CVM_OK);
+    ck_assert_msg(cvm_mesh_read(m, path) == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    remove(path);
+    rmdir(dir);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_GEN3_SURFACE, CVM_GEN3_SURFACE_REMESH_ALL),
+                     CVM_OK);
+    ck_assert_int_eq(cvm_mesh_set_option(m, CVM_OPT_GEN3_GRADING, 0.5205882352941177), CVM_OK);
+    s = cvm_mesh_generate3(m, 0.29117647058823526);
+    if (s == CVM_E_UNSUPPORTED && !g3_with_tetgen()) {
+        cvm_mesh_free(m);
+        CVMTEST_SKIP("the re-meshed surface needs TetGen's recovery (a TETGEN=1 build)");
+    }
+    ck_assert_msg(s == CVM_OK, "%s", cvm_mesh_errmsg(m));
+    ck_assert_int_eq(cvm_mesh_check(m), CVM_OK);
+    ck_assert_int_eq(cvm_mesh_get_report(&after, m, CVM_REPORT_GEN3_SURFACE_TRIS_AFTER), CVM_OK);
+    ck_assert_double_gt(after, 12);
+    /* the hexahedron's volume (1.4745 by its triangles), to the chords of the re-meshing */
+    ck_assert_int_eq(cvm_mesh_get_measure(&v, m, CVM_MEASURE_VOLUME), CVM_OK);
+    ck_assert_double_gt(v, 0.9 * 1.4745);
+    ck_assert_double_lt(v, 1.1 * 1.4745);
+    cvm_mesh_free(m);
+}
+END_TEST
+
 static void oom_setup(cvm_mesh *m, void *arg)
 {
     char path[1024];
@@ -228,6 +293,7 @@ TCase *generate3_remesh_tcase(void)
     tcase_add_test(tc, wing_slab_needles_remeshed);
     tcase_add_test(tc, remesh_all_same_bytes_and_box_sides_exact);
     tcase_add_test(tc, remesh_all_near_field_keeps_off_the_sides);
+    tcase_add_test(tc, remesh_all_folded_corner_retried_finer);
     tcase_add_test(tc, remesh_all_oom_at_every_allocation);
     return tc;
 }
