@@ -460,6 +460,126 @@ static int builtin_M(const cvm__metric_builtin *b, const double *y, double g[3],
     return b->kind == CVM__METRIC_SSHOCK || tensor_ok(g, dg) ? 1 : 2;
 }
 
+/* builtin_M() and factor_from_eig() of the stretch field over a batch, with the constant
+ * eigenvalue's root and reciprocal taken once: the same bits. 0 when a point would fail the
+ * checks (the caller's point-wise path then names it). */
+static int stretch_M_batch(double sc, const double *y, size_t n, double *M, double *dM)
+{
+    const double cs = 1, sn = 0, t = 0;
+    double r0 = sqrt(sc), h0 = 0.5 / r0;
+    size_t q;
+    if (!(sc > 0) || !isfinite(sc))
+        return 0;
+    for (q = 0; q < n; q++) {
+        double g2 = sc * (1 + 4 * y[2 * q + 1] * y[2 * q + 1]), dg5 = sc * 8 * y[2 * q + 1];
+        double r1, h1, a0, a1, *m = M + 4 * q, *d = dM + 8 * q;
+        if (!(sc * g2 - 0.0 * 0.0 > 0) || !isfinite(g2) || !isfinite(dg5))
+            return 0;
+        r1 = sqrt(g2);
+        h1 = 0.5 / r1;
+        m[0] = r0 * cs;
+        m[1] = r0 * sn;
+        m[2] = -r1 * sn;
+        m[3] = r1 * cs;
+        a0 = 0 * h0; /* d mu0 = 0, d mu1 / dx = 0 */
+        a1 = 0 * h1;
+        d[0] = a0 * cs - r0 * sn * t;
+        d[1] = a0 * sn + r0 * cs * t;
+        d[2] = -a1 * sn - r1 * cs * t;
+        d[3] = a1 * cs - r1 * sn * t;
+        a1 = dg5 * h1; /* d mu1 / dy */
+        d[4] = a0 * cs - r0 * sn * t;
+        d[5] = a0 * sn + r0 * cs * t;
+        d[6] = -a1 * sn - r1 * cs * t;
+        d[7] = a1 * cs - r1 * sn * t;
+    }
+    return 1;
+}
+
+/* The S-shock field's M and dM at y straight from the Hessian's eigen-decomposition, with one
+ * reciprocal per quantity: the roots r_k = sqrt(mu_k) of g's eigenvalues are sqrt|lam_k| of the
+ * Hessian's, clamped to [1 / hmax, 1 / hmin] and to the aspect ratio, and
+ * dr_k = sign(lam_k) dlam_k / (2 r_k) where not clamped. The same M and dM as builtin_M() up to
+ * rounding. 0 when a value is not finite (the point-wise path then says which). */
+static int sshock_M_fast(double rsc, const double *y, double *M, double *dM)
+{
+    const double hmin = 0.005, hmax = 0.2, aspect = 50;
+    double H[3], dH[6], c, s, rho, m, ir = 0, ir2, cs, sn, lam[2], dlam[4], dth[2], r[2], dr[4];
+    int k, j, big;
+    sshock_hessian(H, dH, y[0], y[1]);
+    c = H[0] - H[2];
+    s = 2 * H[1];
+    rho = sqrt(c * c + s * s);
+    m = 0.5 * (H[0] + H[2]);
+    if (rho == 0) {
+        cs = 1;
+        sn = 0;
+    } else {
+        ir = 1 / rho;
+        if (c >= 0) {
+            cs = sqrt(0.5 * (1 + c * ir));
+            sn = 0.5 * s * ir / cs;
+        } else {
+            sn = copysign(sqrt(0.5 * (1 - c * ir)), s);
+            cs = 0.5 * s * ir / sn;
+        }
+    }
+    ir2 = ir * ir;
+    lam[0] = m + 0.5 * rho;
+    lam[1] = m - 0.5 * rho;
+    for (k = 0; k < 2; k++) {
+        double dc = dH[3 * k] - dH[3 * k + 2], ds = 2 * dH[3 * k + 1];
+        double dm = 0.5 * (dH[3 * k] + dH[3 * k + 2]), drh = 0.5 * (c * dc + s * ds) * ir;
+        dth[k] = 0.5 * (c * ds - s * dc) * ir2;
+        dlam[k] = dm + drh;
+        dlam[2 + k] = dm - drh;
+    }
+    for (k = 0; k < 2; k++) {
+        double a = fabs(lam[k]), rk = sqrt(a);
+        dr[2 * k] = dr[2 * k + 1] = 0;
+        if (!(a > 0) || rk <= 1 / hmax) {
+            r[k] = 1 / hmax;
+        } else if (rk >= 1 / hmin) {
+            r[k] = 1 / hmin;
+        } else {
+            double f = (lam[k] < 0 ? -0.5 : 0.5) / rk;
+            r[k] = rk;
+            for (j = 0; j < 2; j++)
+                dr[2 * k + j] = f * dlam[2 * k + j];
+        }
+    }
+    big = r[0] <= r[1] ? 0 : 1; /* the larger size: the smaller root */
+    if (r[big] * aspect < r[1 - big]) {
+        r[big] = r[1 - big] / aspect;
+        for (j = 0; j < 2; j++)
+            dr[2 * big + j] = dr[2 * (1 - big) + j] / aspect;
+    }
+    if (r[0] == r[1]) { /* isotropic: the axes */
+        cs = 1;
+        sn = 0;
+        dth[0] = dth[1] = 0;
+    }
+    for (k = 0; k < 2; k++)
+        r[k] *= rsc;
+    for (k = 0; k < 4; k++)
+        dr[k] *= rsc;
+    M[0] = r[0] * cs;
+    M[1] = r[0] * sn;
+    M[2] = -r[1] * sn;
+    M[3] = r[1] * cs;
+    for (k = 0; k < 2; k++) {
+        double a0 = dr[k], a1 = dr[2 + k], t = dth[k];
+        dM[4 * k] = a0 * cs - r[0] * sn * t;
+        dM[4 * k + 1] = a0 * sn + r[0] * cs * t;
+        dM[4 * k + 2] = -a1 * sn - r[1] * cs * t;
+        dM[4 * k + 3] = a1 * cs - r[1] * sn * t;
+    }
+    for (k = 0; k < 4; k++)
+        if (!isfinite(M[k]) || !isfinite(dM[k]) || !isfinite(dM[4 + k]))
+            return 0;
+    return r[0] > 0 && r[1] > 0;
+}
+
 cvm_status cvm__metric_eval_M_batch(const cvm__metric *mt, const double *y, size_t n, double *M,
                                     double *dM, cvm__ctx *err)
 {
@@ -471,6 +591,22 @@ cvm_status cvm__metric_eval_M_batch(const cvm__metric *mt, const double *y, size
         return cvm__error(err, CVM_E_INTERNAL, CVM_ENT_NONE, -1,
                           "metric batch of %lu points (at most %d)", (unsigned long)n,
                           CVM__QUAD_MAXQ);
+    if (s && s->metric == cvm__metric_builtin_fn && s->metric_has_dg) {
+        /* the stretch and S-shock fields, each its own loop: a point that fails a check leaves
+         * the batch to the point-wise path below, which names it */
+        const cvm__metric_builtin *b = (const cvm__metric_builtin *)s->metric_payload;
+        int done = 0;
+        if (b->kind == CVM__METRIC_STRETCH) {
+            done = stretch_M_batch(b->scale, y, n, M, dM);
+        } else if (b->kind == CVM__METRIC_SSHOCK) {
+            double rsc = sqrt(b->scale);
+            for (q = 0; q < n && sshock_M_fast(rsc, y + 2 * q, M + 4 * q, dM + 8 * q); q++)
+                ;
+            done = q == n;
+        }
+        if (done)
+            return CVM_OK;
+    }
     for (q = 0; s && s->metric == cvm__metric_builtin_fn && s->metric_has_dg && q < n; q++) {
         int r = builtin_M((const cvm__metric_builtin *)s->metric_payload, y + 2 * q, g + 3 * q,
                           dg + 6 * q, M + 4 * q, dM + 8 * q);

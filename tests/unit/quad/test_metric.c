@@ -81,6 +81,72 @@ START_TEST(metric_factor_reproduces_g_and_its_derivative)
 }
 END_TEST
 
+/* The energy's batch of M and dM for the built-in fields (each kind has its own path): M^T M = g,
+ * d(M^T M) = dg, and dM agrees with differences of the batch's own M. */
+START_TEST(metric_batch_factor_matches_the_field)
+{
+    unsigned long long st = 23;
+    size_t kk;
+    cvm__ctx ctx;
+    cvm__ctx_init_default(&ctx);
+    for (kk = 1; kk < sizeof kinds / sizeof kinds[0]; kk++) {
+        cvm__metric_builtin b = {kinds[kk], 2.5, {0, 0, 0}};
+        cvm_sizing *s;
+        cvm__metric mt;
+        int trial;
+        ck_assert_int_eq(cvm_sizing_create(&s), CVM_OK);
+        cvm_sizing_set_metric_fn(s, cvm__metric_builtin_fn, 1, &b);
+        mt.s = s;
+        mt.bnd = NULL;
+        mt.nbnd = 0;
+        for (trial = 0; trial < 40; trial++) {
+            double y[2 * 12], M[4 * 12], dM[8 * 12], yq[2 * 3], Mq[4 * 3], dMq[8 * 3], h = 1e-6;
+            int q, m, k;
+            for (q = 0; q < 12; q++) {
+                y[2 * q] = 2.6 * qtest_uniform(&st) - 1.3;
+                y[2 * q + 1] = 2.6 * qtest_uniform(&st) - 1.3;
+            }
+            ck_assert_int_eq(cvm__metric_eval_M_batch(&mt, y, 12, M, dM, &ctx), CVM_OK);
+            for (q = 0; q < 12; q++) {
+                const double *P = M + 4 * q, *dP = dM + 8 * q;
+                double g[3], dg[6], sc;
+                ck_assert_int_eq(cvm__metric_eval(&mt, y + 2 * q, g, dg, &ctx), CVM_OK);
+                sc = g[0] + g[2];
+                ck_assert(fabs(P[0] * P[0] + P[2] * P[2] - g[0]) <= 1e-12 * sc);
+                ck_assert(fabs(P[0] * P[1] + P[2] * P[3] - g[1]) <= 1e-12 * sc);
+                ck_assert(fabs(P[1] * P[1] + P[3] * P[3] - g[2]) <= 1e-12 * sc);
+                for (m = 0; m < 2; m++) {
+                    const double *D = dP + 4 * m;
+                    double d0 = 2 * (D[0] * P[0] + D[2] * P[2]);
+                    double d1 = D[0] * P[1] + P[0] * D[1] + D[2] * P[3] + P[2] * D[3];
+                    double d2 = 2 * (D[1] * P[1] + D[3] * P[3]);
+                    double ds = 1e-9 * (sc + fabs(dg[3 * m]) + fabs(dg[3 * m + 2]));
+                    ck_assert_msg(fabs(d0 - dg[3 * m]) <= ds && fabs(d1 - dg[3 * m + 1]) <= ds &&
+                                      fabs(d2 - dg[3 * m + 2]) <= ds,
+                                  "kind %d at (%g, %g): d(M^T M)/dx%d differs from dg",
+                                  (int)b.kind, y[2 * q], y[2 * q + 1], m);
+                    /* x - h, x + h and x itself in one batch */
+                    yq[0] = yq[2] = yq[4] = y[2 * q];
+                    yq[1] = yq[3] = yq[5] = y[2 * q + 1];
+                    yq[m] -= h;
+                    yq[2 + m] += h;
+                    ck_assert_int_eq(cvm__metric_eval_M_batch(&mt, yq, 3, Mq, dMq, &ctx), CVM_OK);
+                    for (k = 0; k < 4; k++) {
+                        double fd = (Mq[4 + k] - Mq[k]) / (2 * h), r = sqrt(sc);
+                        if (fabs(Mq[4 + k] - Mq[k]) > 0.1 * r) /* an eigenvector swap */
+                            continue;
+                        ck_assert_msg(fabs(fd - D[k]) <= 1e-5 * r * (1 + fabs(fd) / r),
+                                      "kind %d at (%g, %g): dM%d/dx%d = %.10g, differences %.10g",
+                                      (int)b.kind, y[2 * q], y[2 * q + 1], k, m, D[k], fd);
+                    }
+                }
+            }
+        }
+        cvm_sizing_free(s);
+    }
+}
+END_TEST
+
 /* The S-shock sizes stay in [0.005, 0.2] with aspect ratio <= 50. */
 START_TEST(metric_hessian_sizes_are_clamped)
 {
@@ -216,6 +282,7 @@ TCase *quad_metric_tcase(void)
     TCase *tc = tcase_create("metric");
     tcase_add_test(tc, metric_builtin_derivatives_match_differences);
     tcase_add_test(tc, metric_factor_reproduces_g_and_its_derivative);
+    tcase_add_test(tc, metric_batch_factor_matches_the_field);
     tcase_add_test(tc, metric_hessian_sizes_are_clamped);
     tcase_add_test(tc, metric_bad_values_are_refused_naming_the_point);
     tcase_add_test(tc, metric_background_is_log_euclidean);
