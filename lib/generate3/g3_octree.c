@@ -216,6 +216,19 @@ static cvm_status balance_leaf(oct_tree *T, size_t v, int balance)
     return CVM_OK;
 }
 
+/* Balance every leaf, the finest first, so that one sweep per level suffices. */
+static cvm_status balance_all(oct_tree *T, int balance, int maxlv)
+{
+    size_t v;
+    int lv;
+    cvm_status st = CVM_OK;
+    for (lv = maxlv; lv >= 2 && !st; lv--)
+        for (v = 0; v < T->n && !st; v++)
+            if (T->leaf[v] && (int)(T->key[v] >> (3 * OCT_AXIS_BITS)) == lv)
+                st = balance_leaf(T, v, balance);
+    return st;
+}
+
 /* 1 when the octant of node v has a split octant of its own level across a
  * face: finer leaves, whose corners hang on v's face. */
 static int hanging_face(const oct_tree *T, size_t v)
@@ -349,10 +362,8 @@ static cvm_status build_tree(oct_tree *T, const oct_run *R, int balance, int spl
             st = oct_split(T, v);
     }
     cvm__free(T->ctx, box);
-    for (lv = maxlv; lv >= 2 && !st; lv--)
-        for (v = 0; v < T->n && !st; v++)
-            if (T->leaf[v] && (int)(T->key[v] >> (3 * OCT_AXIS_BITS)) == lv)
-                st = balance_leaf(T, v, balance);
+    if (!st)
+        st = balance_all(T, balance, maxlv);
     if (split_hanging && !st) {
         /* the leaves with a finer neighbour across a face, all found first (so
          * that a split does not cascade), split once; then balanced again */
@@ -366,10 +377,8 @@ static cvm_status build_tree(oct_tree *T, const oct_run *R, int balance, int spl
             if (hang[v])
                 st = oct_split(T, v);
         cvm__free(T->ctx, hang);
-        for (lv = maxlv; lv >= 2 && !st; lv--)
-            for (v = 0; v < T->n && !st; v++)
-                if (T->leaf[v] && (int)(T->key[v] >> (3 * OCT_AXIS_BITS)) == lv)
-                    st = balance_leaf(T, v, balance);
+        if (!st)
+            st = balance_all(T, balance, maxlv);
     }
     /* the sizes of the nodes the balance made */
     for (v = 0; v < T->n && !st; v++) {

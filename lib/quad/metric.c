@@ -80,6 +80,28 @@ void cvm__metric_factor(double M[4], double *dM, const double g[3], const double
     }
 }
 
+/* The cosine and sine of half the angle of (c, s) = (g11 - g22, 2 g12), whose length is rho
+ * (the eigenvector rotation of a symmetric 2x2 tensor), without atan2; returns 1 / rho (0 when
+ * rho is 0: then cs 1, sn 0). */
+static double half_angle(double c, double s, double rho, double *cs, double *sn)
+{
+    double ir;
+    if (rho == 0) {
+        *cs = 1;
+        *sn = 0;
+        return 0;
+    }
+    ir = 1 / rho;
+    if (c >= 0) {
+        *cs = sqrt(0.5 * (1 + c * ir));
+        *sn = 0.5 * s * ir / *cs;
+    } else {
+        *sn = copysign(sqrt(0.5 * (1 - c * ir)), s);
+        *cs = 0.5 * s * ir / *sn;
+    }
+    return ir;
+}
+
 /* cvm__metric_factor() (dM required) with one reciprocal per quantity instead of a division per
  * use: the same M and dM up to rounding. */
 static void factor_quick(double M[4], double dM[8], const double g[3], const double dg[6])
@@ -87,19 +109,7 @@ static void factor_quick(double M[4], double dM[8], const double g[3], const dou
     double c = g[0] - g[2], s = 2 * g[1], rho = sqrt(c * c + s * s), m = 0.5 * (g[0] + g[2]);
     double cs, sn, r0, r1, h0, h1, ir = 0, ir2;
     int k;
-    if (rho == 0) {
-        cs = 1;
-        sn = 0;
-    } else {
-        ir = 1 / rho;
-        if (c >= 0) {
-            cs = sqrt(0.5 * (1 + c * ir));
-            sn = 0.5 * s * ir / cs;
-        } else {
-            sn = copysign(sqrt(0.5 * (1 - c * ir)), s);
-            cs = 0.5 * s * ir / sn;
-        }
-    }
+    ir = half_angle(c, s, rho, &cs, &sn);
     ir2 = ir * ir; /* 0 where the gap closes: the derivatives of th read 0 there */
     r0 = sqrt(m + 0.5 * rho);
     r1 = sqrt(m - 0.5 * rho);
@@ -511,19 +521,7 @@ static int sshock_M_fast(double rsc, const double *y, double *M, double *dM)
     s = 2 * H[1];
     rho = sqrt(c * c + s * s);
     m = 0.5 * (H[0] + H[2]);
-    if (rho == 0) {
-        cs = 1;
-        sn = 0;
-    } else {
-        ir = 1 / rho;
-        if (c >= 0) {
-            cs = sqrt(0.5 * (1 + c * ir));
-            sn = 0.5 * s * ir / cs;
-        } else {
-            sn = copysign(sqrt(0.5 * (1 - c * ir)), s);
-            cs = 0.5 * s * ir / sn;
-        }
-    }
+    ir = half_angle(c, s, rho, &cs, &sn);
     ir2 = ir * ir;
     lam[0] = m + 0.5 * rho;
     lam[1] = m - 0.5 * rho;
