@@ -203,7 +203,7 @@ static cvm_status alloc_points(cvm__tet3 *T, const double *xyz, const double *w,
     size_t i;
     cvm_status s;
     T->np = n;
-    T->pt = cvm__calloc(ctx, n, sizeof *T->pt);
+    cvm__tet3_alloc_points(T, n);
     T->orig = cvm__malloc(ctx, n * sizeof *T->orig);
     T->merged = cvm__malloc(ctx, n * sizeof *T->merged);
     T->outid = cvm__malloc(ctx, n * sizeof *T->outid);

@@ -164,7 +164,7 @@ static CVM__T3_HOT int cvm__t3_dig(cvm__tet3 *T, int32_t t0, int32_t p, int plai
         in = mu == 2 ? 0 : cvm__t3_conflict(T, pt, e, vu, u, p, mine, plain);                  \
         if (part && in && (!mine || in < 0))                                                   \
             goto fail;                                                                         \
-        if (nd < deadcap && nb < bfcap) { /* both records written, one kept */                 \
+        if (mu != 2 && nd < deadcap && nb < bfcap) { /* both records written, one kept */      \
             for (g = 0; g < 4; g++)                                                            \
                 CVM__T3_PREFETCH(tt + 8 * (size_t)(vu[4 + g] >> 2));                           \
             dead[nd] = s;                                                                      \
