@@ -181,6 +181,14 @@ static inline double cvm__incircle_inline(const double *a, const double *b, cons
     return cvm__incircle_adapt(a, b, c, d);
 }
 
+/* Two-lane (SSE2) versions of the hot filters below evaluate each lane with the
+ * scalar operations in the scalar order: the same bits, so the same error
+ * bounds hold. CVM_NO_SSE2 turns them off. */
+#if defined(__SSE2__) && !defined(CVM_NO_SSE2)
+#include <emmintrin.h>
+#define CVM__GEOM_SSE2 1
+#endif
+
 /* cvm__orient3d with its filter inlined into the caller (hot loops). */
 static inline double cvm__orient3d_inline(const double *a, const double *b, const double *c,
                                           const double *d)
@@ -199,6 +207,52 @@ static inline double cvm__orient3d_inline(const double *a, const double *b, cons
     if (fabs(det) > errbound)
         return det;
     return cvm__orient3d_adapt(a, b, c, d);
+}
+
+/* Bit 0: cvm__orient3d_inline(a0, b0, c0, d0) < 0; bit 1: the same for (a1, b1,
+ * c1, d1). With SSE2 both filters run on two lanes (the operations of
+ * cvm__orient3d_inline, so its bound) and a lane the filter cannot decide goes
+ * to the exact stage alone. */
+static inline unsigned cvm__orient3d_neg2(const double *a0, const double *b0, const double *c0,
+                                          const double *d0, const double *a1, const double *b1,
+                                          const double *c1, const double *d1)
+{
+#ifdef CVM__GEOM_SSE2
+    __m128d dx = _mm_set_pd(d1[0], d0[0]), dy = _mm_set_pd(d1[1], d0[1]);
+    __m128d dz = _mm_set_pd(d1[2], d0[2]), sign = _mm_set1_pd(-0.0);
+    __m128d adx = _mm_sub_pd(_mm_set_pd(a1[0], a0[0]), dx), bdx = _mm_sub_pd(_mm_set_pd(b1[0], b0[0]), dx);
+    __m128d cdx = _mm_sub_pd(_mm_set_pd(c1[0], c0[0]), dx), ady = _mm_sub_pd(_mm_set_pd(a1[1], a0[1]), dy);
+    __m128d bdy = _mm_sub_pd(_mm_set_pd(b1[1], b0[1]), dy), cdy = _mm_sub_pd(_mm_set_pd(c1[1], c0[1]), dy);
+    __m128d adz = _mm_sub_pd(_mm_set_pd(a1[2], a0[2]), dz), bdz = _mm_sub_pd(_mm_set_pd(b1[2], b0[2]), dz);
+    __m128d cdz = _mm_sub_pd(_mm_set_pd(c1[2], c0[2]), dz);
+    __m128d bdxcdy = _mm_mul_pd(bdx, cdy), cdxbdy = _mm_mul_pd(cdx, bdy);
+    __m128d cdxady = _mm_mul_pd(cdx, ady), adxcdy = _mm_mul_pd(adx, cdy);
+    __m128d adxbdy = _mm_mul_pd(adx, bdy), bdxady = _mm_mul_pd(bdx, ady);
+    __m128d det = _mm_add_pd(_mm_add_pd(_mm_mul_pd(adz, _mm_sub_pd(bdxcdy, cdxbdy)),
+                                        _mm_mul_pd(bdz, _mm_sub_pd(cdxady, adxcdy))),
+                             _mm_mul_pd(cdz, _mm_sub_pd(adxbdy, bdxady)));
+    __m128d perm = _mm_add_pd(
+        _mm_add_pd(_mm_mul_pd(_mm_add_pd(_mm_andnot_pd(sign, bdxcdy), _mm_andnot_pd(sign, cdxbdy)),
+                              _mm_andnot_pd(sign, adz)),
+                   _mm_mul_pd(_mm_add_pd(_mm_andnot_pd(sign, cdxady), _mm_andnot_pd(sign, adxcdy)),
+                              _mm_andnot_pd(sign, bdz))),
+        _mm_mul_pd(_mm_add_pd(_mm_andnot_pd(sign, adxbdy), _mm_andnot_pd(sign, bdxady)),
+                   _mm_andnot_pd(sign, cdz)));
+    __m128d bound = _mm_add_pd(_mm_mul_pd(_mm_set1_pd(cvm__o3d_errbound_a), perm),
+                               _mm_set1_pd(cvm__filter_floor));
+    unsigned ok = (unsigned)_mm_movemask_pd(_mm_cmpgt_pd(_mm_andnot_pd(sign, det), bound));
+    unsigned neg = (unsigned)_mm_movemask_pd(_mm_cmplt_pd(det, _mm_setzero_pd()));
+    if (ok != 3u) {
+        if (!(ok & 1u))
+            neg = (neg & 2u) | (unsigned)(cvm__orient3d_adapt(a0, b0, c0, d0) < 0.0);
+        if (!(ok & 2u))
+            neg = (neg & 1u) | (unsigned)(cvm__orient3d_adapt(a1, b1, c1, d1) < 0.0) << 1;
+    }
+    return neg;
+#else
+    return (unsigned)(cvm__orient3d_inline(a0, b0, c0, d0) < 0.0)
+           | (unsigned)(cvm__orient3d_inline(a1, b1, c1, d1) < 0.0) << 1;
+#endif
 }
 
 /* The insphere determinant in plain floating point, and the permanent that
@@ -259,9 +313,7 @@ static inline double cvm__insphere_det_scalar(const double *a, const double *b, 
     return (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
 }
 
-#if defined(__SSE2__) && !defined(CVM_NO_SSE2)
-#include <emmintrin.h>
-#define CVM__INSPHERE_SSE2 1
+#ifdef CVM__GEOM_SSE2
 /* cvm__insphere_det_scalar on two lanes: the same IEEE operations on the same
  * operands in the same order (x - y taken as x + (-y), which IEEE 754 defines
  * to be the same), so the same bits, in about half the instructions. Lane
@@ -314,7 +366,7 @@ static inline double cvm__insphere_inline(const double *a, const double *b, cons
                                           const double *d, const double *e)
 {
     double l;
-#ifdef CVM__INSPHERE_SSE2
+#ifdef CVM__GEOM_SSE2
     double det = cvm__insphere_det_sse2(a, b, c, d, e, &l);
 #else
     double det = cvm__insphere_det_scalar(a, b, c, d, e, &l);

@@ -148,7 +148,7 @@ END_TEST
  * (and the same largest lift), on unit, integer, offset and wide-range input. */
 START_TEST(insphere_sse2_determinant_matches_scalar_bits)
 {
-#ifdef CVM__INSPHERE_SSE2
+#ifdef CVM__GEOM_SSE2
     geomtest_rng r = { 67 };
     int i, j, k;
     for (i = 0; i < 200000; i++) {
