@@ -2,6 +2,8 @@
 #ifndef CVM_DELAUNAY3_CONFLICT3_H
 #define CVM_DELAUNAY3_CONFLICT3_H
 
+#include <string.h>
+
 #include "common/common_internal.h"
 #include "delaunay3/delaunay3_internal.h"
 #include "geom/geom_internal.h"
@@ -150,7 +152,7 @@ static CVM__T3_HOT int cvm__t3_dig(cvm__tet3 *T, int32_t t0, int32_t p, int plai
             arr = T->arr, capv = T->capv;                                                      \
         }                                                                                      \
     } while (0)
-/* Test the tetrahedron across face f of c (vertices and neighbours vc) and file
+/* Test the tetrahedron across face fc of c (vertices and neighbours vc) and file
  * it: into dead[] (as the slot 4 u + g reaching it) or, as a boundary face, into bf[]. */
 #define CVM__T3_DIG_VISIT(vc, fc)                                                                \
     do {                                                                                       \
@@ -169,7 +171,7 @@ static CVM__T3_HOT int cvm__t3_dig(cvm__tet3 *T, int32_t t0, int32_t p, int plai
                 CVM__T3_PREFETCH(tt + 8 * (size_t)(vu[4 + g] >> 2));                           \
             dead[nd] = s;                                                                      \
             b = &bf[nb];                                                                       \
-            b->v[0] = (vc)[0], b->v[1] = (vc)[1], b->v[2] = (vc)[2], b->v[3] = (vc)[3];        \
+            memcpy(b->v, (vc), sizeof b->v);                                                   \
             b->v[fc] = p;                                                                       \
             b->f = (fc);                                                                        \
             b->out = s;                                                                        \

@@ -280,7 +280,7 @@ void cvm__tet3_fill_around(cvm__tet3 *T)
         else
             nt = (int32_t)nslot++;
         v = tt + 8 * (size_t)nt;
-        v[0] = b->v[0], v[1] = b->v[1], v[2] = b->v[2], v[3] = b->v[3];
+        memcpy(v, b->v, sizeof b->v);
         v[4 + f] = out;
         tt[(size_t)out + ((size_t)out & ~(size_t)3) + 4] = 4 * nt + f;
         tmark[nt] = 0;
