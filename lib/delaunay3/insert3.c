@@ -20,7 +20,7 @@ static const uint8_t walk_pick[4][16] = {
  * a ghost tetrahedron whose hull face p lies strictly beyond. Faces are tried
  * from a pseudo-random first one (xorshift in the store: deterministic, no
  * global state), which makes the walk terminate. The four sides are tested
- * together (two lanes at a time) and the face is picked from a table: a
+ * together (cvm__orient3d_sides) and the face is picked from a table: a
  * branch on each test would be mispredicted about once a step. The face just
  * crossed needs no exclusion: p is exactly on its positive side. */
 static int32_t locate(cvm__tet3 *T, int32_t p)
@@ -43,8 +43,7 @@ static int32_t locate(cvm__tet3 *T, int32_t p)
                 | (unsigned)(cvm__orient3d_fp(a, b, pp, d) < 0.0) << 2
                 | (unsigned)(cvm__orient3d_fp(a, b, c, pp) < 0.0) << 3;
         else
-            m = cvm__orient3d_neg2(pp, b, c, d, a, pp, c, d)
-                | cvm__orient3d_neg2(a, b, pp, d, a, b, c, pp) << 2;
+            m = cvm__orient3d_sides(a, b, c, d, pp);
         f = walk_pick[r >> 62][m];
         if (f == 4)
             break;

@@ -209,50 +209,51 @@ static inline double cvm__orient3d_inline(const double *a, const double *b, cons
     return cvm__orient3d_adapt(a, b, c, d);
 }
 
-/* Bit 0: cvm__orient3d_inline(a0, b0, c0, d0) < 0; bit 1: the same for (a1, b1,
- * c1, d1). With SSE2 both filters run on two lanes (the operations of
- * cvm__orient3d_inline, so its bound) and a lane the filter cannot decide goes
- * to the exact stage alone. */
-static inline unsigned cvm__orient3d_neg2(const double *a0, const double *b0, const double *c0,
-                                          const double *d0, const double *a1, const double *b1,
-                                          const double *c1, const double *d1)
+/* The four sides of a point-location step at once: bit f set when
+ * orient3d(q0, q1, q2, q3) < 0 with q = (a, b, c, d) and q_f replaced by p
+ * (p strictly beyond face f). Each is an orient3d with p moved last
+ * (orient3d(p, b, c, d) = -orient3d(b, c, d, p), orient3d(a, p, c, d) =
+ * orient3d(a, c, d, p), orient3d(a, b, p, d) = -orient3d(a, b, d, p)), and
+ * orient3d(x, y, z, p) is evaluated by cvm__orient3d_inline's operations on the
+ * differences to p, which the four share: twelve differences, twelve products
+ * x_u y_v, six 2x2 minors (a swapped minor is the exact negative) instead of
+ * four times nine differences and six products. Same values, so the same
+ * filter bound; an undecided side goes to the exact stage alone. */
+static inline unsigned cvm__orient3d_sides(const double *a, const double *b, const double *c,
+                                           const double *d, const double *p)
 {
-#ifdef CVM__GEOM_SSE2
-    __m128d dx = _mm_set_pd(d1[0], d0[0]), dy = _mm_set_pd(d1[1], d0[1]);
-    __m128d dz = _mm_set_pd(d1[2], d0[2]), sign = _mm_set1_pd(-0.0);
-    __m128d adx = _mm_sub_pd(_mm_set_pd(a1[0], a0[0]), dx), bdx = _mm_sub_pd(_mm_set_pd(b1[0], b0[0]), dx);
-    __m128d cdx = _mm_sub_pd(_mm_set_pd(c1[0], c0[0]), dx), ady = _mm_sub_pd(_mm_set_pd(a1[1], a0[1]), dy);
-    __m128d bdy = _mm_sub_pd(_mm_set_pd(b1[1], b0[1]), dy), cdy = _mm_sub_pd(_mm_set_pd(c1[1], c0[1]), dy);
-    __m128d adz = _mm_sub_pd(_mm_set_pd(a1[2], a0[2]), dz), bdz = _mm_sub_pd(_mm_set_pd(b1[2], b0[2]), dz);
-    __m128d cdz = _mm_sub_pd(_mm_set_pd(c1[2], c0[2]), dz);
-    __m128d bdxcdy = _mm_mul_pd(bdx, cdy), cdxbdy = _mm_mul_pd(cdx, bdy);
-    __m128d cdxady = _mm_mul_pd(cdx, ady), adxcdy = _mm_mul_pd(adx, cdy);
-    __m128d adxbdy = _mm_mul_pd(adx, bdy), bdxady = _mm_mul_pd(bdx, ady);
-    __m128d det = _mm_add_pd(_mm_add_pd(_mm_mul_pd(adz, _mm_sub_pd(bdxcdy, cdxbdy)),
-                                        _mm_mul_pd(bdz, _mm_sub_pd(cdxady, adxcdy))),
-                             _mm_mul_pd(cdz, _mm_sub_pd(adxbdy, bdxady)));
-    __m128d perm = _mm_add_pd(
-        _mm_add_pd(_mm_mul_pd(_mm_add_pd(_mm_andnot_pd(sign, bdxcdy), _mm_andnot_pd(sign, cdxbdy)),
-                              _mm_andnot_pd(sign, adz)),
-                   _mm_mul_pd(_mm_add_pd(_mm_andnot_pd(sign, cdxady), _mm_andnot_pd(sign, adxcdy)),
-                              _mm_andnot_pd(sign, bdz))),
-        _mm_mul_pd(_mm_add_pd(_mm_andnot_pd(sign, adxbdy), _mm_andnot_pd(sign, bdxady)),
-                   _mm_andnot_pd(sign, cdz)));
-    __m128d bound = _mm_add_pd(_mm_mul_pd(_mm_set1_pd(cvm__o3d_errbound_a), perm),
-                               _mm_set1_pd(cvm__filter_floor));
-    unsigned ok = (unsigned)_mm_movemask_pd(_mm_cmpgt_pd(_mm_andnot_pd(sign, det), bound));
-    unsigned neg = (unsigned)_mm_movemask_pd(_mm_cmplt_pd(det, _mm_setzero_pd()));
-    if (ok != 3u) {
-        if (!(ok & 1u))
-            neg = (neg & 2u) | (unsigned)(cvm__orient3d_adapt(a0, b0, c0, d0) < 0.0);
-        if (!(ok & 2u))
-            neg = (neg & 1u) | (unsigned)(cvm__orient3d_adapt(a1, b1, c1, d1) < 0.0) << 1;
-    }
-    return neg;
-#else
-    return (unsigned)(cvm__orient3d_inline(a0, b0, c0, d0) < 0.0)
-           | (unsigned)(cvm__orient3d_inline(a1, b1, c1, d1) < 0.0) << 1;
-#endif
+    double ax = a[0] - p[0], bx = b[0] - p[0], cx = c[0] - p[0], dx = d[0] - p[0];
+    double ay = a[1] - p[1], by = b[1] - p[1], cy = c[1] - p[1], dy = d[1] - p[1];
+    double az = a[2] - p[2], bz = b[2] - p[2], cz = c[2] - p[2], dz = d[2] - p[2];
+    double pab = ax * by, pba = bx * ay, pac = ax * cy, pca = cx * ay, pad = ax * dy;
+    double pda = dx * ay, pbc = bx * cy, pcb = cx * by, pbd = bx * dy, pdb = dx * by;
+    double pcd = cx * dy, pdc = dx * cy;
+    double mab = pab - pba, mac = pac - pca, mad = pad - pda, mbc = pbc - pcb;
+    double mbd = pbd - pdb, mcd = pcd - pdc;
+    double sab = fabs(pab) + fabs(pba), sac = fabs(pac) + fabs(pca);
+    double sad = fabs(pad) + fabs(pda), sbc = fabs(pbc) + fabs(pcb);
+    double sbd = fabs(pbd) + fabs(pdb), scd = fabs(pcd) + fabs(pdc);
+    double aza = fabs(az), bza = fabs(bz), cza = fabs(cz), dza = fabs(dz);
+    /* orient3d(x, y, z, p) = xz m(y, z) + yz m(z, x) + zz m(x, y) */
+    double det0 = bz * mcd - cz * mbd + dz * mbc; /* (b, c, d) */
+    double det1 = az * mcd - cz * mad + dz * mac; /* (a, c, d) */
+    double det2 = az * mbd - bz * mad + dz * mab; /* (a, b, d) */
+    double det3 = az * mbc - bz * mac + cz * mab; /* (a, b, c) */
+    double per0 = scd * bza + sbd * cza + sbc * dza;
+    double per1 = scd * aza + sad * cza + sac * dza;
+    double per2 = sbd * aza + sad * bza + sab * dza;
+    double per3 = sbc * aza + sac * bza + sab * cza;
+    unsigned m = (unsigned)(det0 > 0.0) | (unsigned)(det1 < 0.0) << 1
+                 | (unsigned)(det2 > 0.0) << 2 | (unsigned)(det3 < 0.0) << 3;
+    if (!(fabs(det0) > cvm__o3d_errbound_a * per0 + cvm__filter_floor))
+        m = (m & ~1u) | (unsigned)(cvm__orient3d_adapt(b, c, d, p) > 0.0);
+    if (!(fabs(det1) > cvm__o3d_errbound_a * per1 + cvm__filter_floor))
+        m = (m & ~2u) | (unsigned)(cvm__orient3d_adapt(a, c, d, p) < 0.0) << 1;
+    if (!(fabs(det2) > cvm__o3d_errbound_a * per2 + cvm__filter_floor))
+        m = (m & ~4u) | (unsigned)(cvm__orient3d_adapt(a, b, d, p) > 0.0) << 2;
+    if (!(fabs(det3) > cvm__o3d_errbound_a * per3 + cvm__filter_floor))
+        m = (m & ~8u) | (unsigned)(cvm__orient3d_adapt(a, b, c, p) < 0.0) << 3;
+    return m;
 }
 
 /* The insphere determinant in plain floating point, and the permanent that
