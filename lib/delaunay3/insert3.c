@@ -36,6 +36,10 @@ static int32_t locate(cvm__tet3 *T, int32_t p)
         if (v[3] == CVM__T3_GHOST)
             break;
         a = PT(T, v[0]), b = PT(T, v[1]), c = PT(T, v[2]), d = PT(T, v[3]);
+        CVM__T3_PREFETCH(T->tt + 8 * (size_t)(v[4] >> 2));
+        CVM__T3_PREFETCH(T->tt + 8 * (size_t)(v[5] >> 2));
+        CVM__T3_PREFETCH(T->tt + 8 * (size_t)(v[6] >> 2));
+        CVM__T3_PREFETCH(T->tt + 8 * (size_t)(v[7] >> 2));
         r ^= r << 13, r ^= r >> 7, r ^= r << 17;
         if (T->small_int)
             m = (unsigned)(cvm__orient3d_fp(pp, b, c, d) < 0.0)
