@@ -7,6 +7,12 @@
 
 #define PT(T, v) ((T)->pt[v].x)
 
+#if defined(__GNUC__)
+#define B3_PREFETCH(p) __builtin_prefetch(p)
+#else
+#define B3_PREFETCH(p) ((void)(p))
+#endif
+
 /* Finite input, within the range where the predicates' exact stages cannot
  * underflow (lib/geom/geom_internal.h): every nonzero coordinate (and square
  * root of a weight) at least 2^-100 times the largest. */
@@ -203,7 +209,7 @@ static cvm_status alloc_points(cvm__tet3 *T, const double *xyz, const double *w,
     size_t i;
     cvm_status s;
     T->np = n;
-    T->pt = cvm__calloc(ctx, n, sizeof *T->pt);
+    cvm__tet3_alloc_points(T, n);
     T->orig = cvm__malloc(ctx, n * sizeof *T->orig);
     T->merged = cvm__malloc(ctx, n * sizeof *T->merged);
     T->outid = cvm__malloc(ctx, n * sizeof *T->outid);
@@ -232,6 +238,8 @@ static cvm_status alloc_points(cvm__tet3 *T, const double *xyz, const double *w,
         return s;
     for (i = 0; i < n; i++) {
         const double *p = xyz + 3 * (size_t)T->orig[i];
+        if (i + 16 < n) /* the input in insertion order: random reads */
+            B3_PREFETCH(xyz + 3 * (size_t)T->orig[i + 16]);
         T->pt[i].x[0] = p[0], T->pt[i].x[1] = p[1], T->pt[i].x[2] = p[2];
         if (w)
             T->w[i] = w[T->orig[i]];

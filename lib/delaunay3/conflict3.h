@@ -2,6 +2,8 @@
 #ifndef CVM_DELAUNAY3_CONFLICT3_H
 #define CVM_DELAUNAY3_CONFLICT3_H
 
+#include <string.h>
+
 #include "common/common_internal.h"
 #include "delaunay3/delaunay3_internal.h"
 #include "geom/geom_internal.h"
@@ -107,6 +109,9 @@ static inline void cvm__t3_unmark_cavity(cvm__tet3 *T, size_t nd, size_t nb)
             T->tmark[T->bf[i].out >> 2] = 0;
 }
 
+/* The faces of a tetrahedron other than face g, in increasing order. */
+static const uint8_t cvm__t3_other3[4][3] = { { 1, 2, 3 }, { 0, 2, 3 }, { 0, 1, 3 }, { 0, 1, 2 } };
+
 /* The Bowyer-Watson cavity of p grown from t0 across faces: the tetrahedra in
  * conflict into dead[] (marked 1), the faces where the growth stopped into
  * bf[] (their outside marked 2), T->ndead and T->nbf set. Returns 1.
@@ -117,7 +122,13 @@ static inline void cvm__t3_unmark_cavity(cvm__tet3 *T, size_t nd, size_t nb)
  * (or might be), or outgrows the fixed dead[] / bf[]. Inlined with constant
  * part and plain, each caller gets its own loop. The store's arrays are read
  * through local copies: the byte stores of the marks would otherwise make the
- * compiler reload every field of T. */
+ * compiler reload every field of T.
+ * Branches the processor cannot predict cost more here than the arithmetic:
+ * while digging, dead[i > 0] holds the slot through which tetrahedron i was
+ * reached (4 u + g, g its face towards the one that dug it), so face g (in the
+ * cavity) is not visited again, and a tested face writes both its possible
+ * records and keeps one by advancing a counter, without a branch on the test.
+ * The order of dead[] and bf[] is that of the plain breadth-first search. */
 static CVM__T3_HOT int cvm__t3_dig(cvm__tet3 *T, int32_t t0, int32_t p, int plain,
                                    const uint8_t *part, uint8_t me)
 {
@@ -126,8 +137,8 @@ static CVM__T3_HOT int cvm__t3_dig(cvm__tet3 *T, int32_t t0, int32_t p, int plai
     int32_t *tt = T->tt, *dead = T->dead;
     uint8_t *tm = T->tmark;
     cvm__t3_bface *bf = T->bf;
-    size_t nd = 0, head = 0, nb = 0, deadcap = T->deadcap, bfcap = T->bfcap;
-    int f, r = 0;
+    size_t nd = 0, head = 1, nb = 0, deadcap = T->deadcap, bfcap = T->bfcap, i;
+    int f, k, r = 0;
 /* Room for one more item in dead[] or bf[]: grown (serial), or give up (parallel). */
 #define CVM__T3_DIG_ROOM(arr, cnt, capv)                                                        \
     do {                                                                                       \
@@ -141,6 +152,48 @@ static CVM__T3_HOT int cvm__t3_dig(cvm__tet3 *T, int32_t t0, int32_t p, int plai
             arr = T->arr, capv = T->capv;                                                      \
         }                                                                                      \
     } while (0)
+/* Test the tetrahedron across face fc of c (vertices and neighbours vc) and file
+ * it: into dead[] (as the slot 4 u + g reaching it) or, as a boundary face, into bf[]. */
+#define CVM__T3_DIG_VISIT(vc, fc)                                                                \
+    do {                                                                                       \
+        int32_t s = (vc)[4 + (fc)], u = s >> 2;                                                 \
+        const int32_t *vu = tt + 8 * (size_t)u;                                                \
+        int mine = part ? cvm__t3_owned_across(tt, s, part, me) : 1, in, g;                    \
+        uint8_t mu = mine ? tm[u] : 0;                                                         \
+        cvm__t3_bface *b;                                                                      \
+        if (mu == 1)                                                                           \
+            break;                                                                             \
+        in = mu == 2 ? 0 : cvm__t3_conflict(T, pt, e, vu, u, p, mine, plain);                  \
+        if (part && in && (!mine || in < 0))                                                   \
+            goto fail;                                                                         \
+        if (mu != 2 && nd < deadcap && nb < bfcap) { /* both records written, one kept */      \
+            for (g = 0; g < 4; g++)                                                            \
+                CVM__T3_PREFETCH(tt + 8 * (size_t)(vu[4 + g] >> 2));                           \
+            dead[nd] = s;                                                                      \
+            b = &bf[nb];                                                                       \
+            memcpy(b->v, (vc), sizeof b->v);                                                   \
+            b->v[fc] = p;                                                                       \
+            b->f = (fc);                                                                        \
+            b->out = s;                                                                        \
+            if (!part || mine)                                                                 \
+                tm[u] = (uint8_t)(2 - in);                                                     \
+            nd += (size_t)in;                                                                  \
+            nb += (size_t)(1 - in);                                                            \
+        } else if (in) {                                                                       \
+            CVM__T3_DIG_ROOM(dead, nd, deadcap);                                               \
+            tm[u] = 1;                                                                         \
+            dead[nd++] = s;                                                                    \
+        } else {                                                                               \
+            CVM__T3_DIG_ROOM(bf, nb, bfcap);                                                   \
+            if (mine)                                                                          \
+                tm[u] = 2;                                                                     \
+            b = &bf[nb++];                                                                     \
+            b->v[0] = (vc)[0], b->v[1] = (vc)[1], b->v[2] = (vc)[2], b->v[3] = (vc)[3];        \
+            b->v[fc] = p;                                                                       \
+            b->f = (fc);                                                                        \
+            b->out = s;                                                                        \
+        }                                                                                      \
+    } while (0)
     CVM__T3_DIG_ROOM(dead, nd, deadcap);
     tm[t0] = 1;
     dead[nd++] = t0;
@@ -149,47 +202,27 @@ static CVM__T3_HOT int cvm__t3_dig(cvm__tet3 *T, int32_t t0, int32_t p, int plai
         CVM__T3_PREFETCH(tt + 8 * (size_t)u);
         CVM__T3_PREFETCH(tm + u);
     }
+    for (f = 0; f < 4; f++)
+        CVM__T3_DIG_VISIT(tt + 8 * (size_t)t0, f);
     /* breadth first, dead[] is the queue: a tetrahedron's neighbours are
      * prefetched when it joins, and used only after everything queued before it */
     while (head < nd) {
-        int32_t c = dead[head++];
-        const int32_t *vc = tt + 8 * (size_t)c;
-        for (f = 0; f < 4; f++) {
-            int32_t s = vc[4 + f], u = s >> 2;
-            const int32_t *vu = tt + 8 * (size_t)u;
-            int mine = part ? cvm__t3_owned_across(tt, s, part, me) : 1, in;
-            uint8_t mu = mine ? tm[u] : 0;
-            if (mu == 1)
-                continue;
-            in = mu == 2 ? 0 : cvm__t3_conflict(T, pt, e, vu, u, p, mine, plain);
-            if (in) {
-                int g;
-                if (part && (!mine || in < 0))
-                    goto fail;
-                /* (the marks, 64 to a cache line, are mostly in cache already) */
-                for (g = 0; g < 4; g++)
-                    CVM__T3_PREFETCH(tt + 8 * (size_t)(vu[4 + g] >> 2));
-                CVM__T3_DIG_ROOM(dead, nd, deadcap);
-                tm[u] = 1;
-                dead[nd++] = u;
-            } else {
-                cvm__t3_bface *b;
-                CVM__T3_DIG_ROOM(bf, nb, bfcap);
-                if (mine)
-                    tm[u] = 2;
-                b = &bf[nb++];
-                b->v[0] = vc[0], b->v[1] = vc[1], b->v[2] = vc[2], b->v[3] = vc[3];
-                b->v[f] = p;
-                b->f = f;
-                b->out = s;
-            }
-        }
+        int32_t sc = dead[head++];
+        const int32_t *vc = tt + 8 * (size_t)(sc >> 2);
+        const uint8_t *other = cvm__t3_other3[sc & 3];
+        for (k = 0; k < 3; k++)
+            CVM__T3_DIG_VISIT(vc, other[k]);
     }
+#undef CVM__T3_DIG_VISIT
 #undef CVM__T3_DIG_ROOM
+    for (i = 1; i < nd; i++)
+        dead[i] >>= 2;
     T->ndead = nd;
     T->nbf = nb;
     return 1;
 fail:
+    for (i = 1; i < nd; i++)
+        dead[i] >>= 2;
     cvm__t3_unmark_cavity(T, nd, nb);
     T->ndead = T->nbf = 0;
     return r;

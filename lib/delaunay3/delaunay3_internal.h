@@ -11,6 +11,10 @@
  * whose vertex 3 is the ghost, slots of deleted tetrahedra reused, cavity
  * boundaries kept in a flat array. BRIO is Amenta, Choi and Rote (2003); the
  * Hilbert index is Skilling's transpose form (AIP Conf. Proc. 707, 2004).
+ * The time goes to mispredicted branches and cache misses more than to
+ * arithmetic: the cavity search (conflict3.h) and the walk (insert3.c) take no
+ * branch on a geometric test, neighbours are prefetched as the cavity grows,
+ * and tetrahedron and point records are 64-byte aligned.
  *
  * Orientation: a finite tetrahedron (a, b, c, d) has cvm__orient3d(a, b, c, d)
  * > 0. A ghost tetrahedron (a, b, c, G) has its hull face (a, b, c) oriented
@@ -119,7 +123,8 @@ typedef struct cvm__t3_hent {
 typedef struct cvm__tet3 {
     cvm__ctx *ctx;
     size_t np;        /* input points */
-    cvm__t3_point *pt; /* np: the points in insertion order (internal ids) */
+    cvm__t3_point *pt; /* np: the points in insertion order (internal ids), 64-byte aligned */
+    void *pt_block;   /* the allocation holding pt (cvm__tet3_alloc_points) */
     double *w;        /* np weights in insertion order; NULL for Delaunay */
     int32_t *orig;    /* internal id -> input index (the SoS index) */
     int32_t *merged;  /* internal id -> internal id of the vertex a duplicate merged into, or -1 */
@@ -127,8 +132,10 @@ typedef struct cvm__tet3 {
     int32_t *outid;   /* internal id of a vertex -> input index naming it in the output:
                        * the lowest of it and the duplicates merged into it */
 
-    int32_t *tt;      /* 8 per slot (one half cache line): 4 vertex ids (internal, ghost last;
-                       * DEAD in the first when free), then 4 neighbour slots 4 * tet + face */
+    int32_t *tt;      /* 8 per slot (one half cache line; tt is 64-byte aligned, so no slot
+                       * straddles two lines): 4 vertex ids (internal, ghost last; DEAD in the
+                       * first when free), then 4 neighbour slots 4 * tet + face */
+    void *tt_block;   /* the allocation holding tt */
     uint8_t *tmark;   /* per slot: 1 in the current cavity, 2 tested outside it, 3 left out of
                        * it (constrained insertion), else 0 */
     uint8_t *cface;   /* per slot, or NULL: bit f set when face f is constrained (a loaded
@@ -241,6 +248,9 @@ void cvm__tet3_canonical_turn(int32_t *t);
 cvm_status cvm__tet3_check(cvm__tet3 *T);
 
 /* Store internals shared by the engine's files. */
+/* T->pt for cap points, zeroed, 64-byte aligned (a point record never straddles two
+ * cache lines); CVM_OK or CVM_E_NOMEM. cvm__tet3_free() releases it. */
+cvm_status cvm__tet3_alloc_points(cvm__tet3 *T, size_t cap);
 cvm_status cvm__tet3_reserve(cvm__tet3 *T, size_t need_new);
 int32_t cvm__tet3_take_slot(cvm__tet3 *T);
 void cvm__tet3_release_slot(cvm__tet3 *T, int32_t t);

@@ -7,43 +7,51 @@
 
 #define PT(T, v) ((T)->pt[v].x)
 
+/* walk_pick[f0][m]: the first face f in the order f0, f0 + 1, ... (mod 4) with
+ * bit f set in m; 4 when m is 0. */
+static const uint8_t walk_pick[4][16] = {
+    { 4, 0, 1, 0, 2, 0, 1, 0, 3, 0, 1, 0, 2, 0, 1, 0 },
+    { 4, 0, 1, 1, 2, 2, 1, 1, 3, 3, 1, 1, 2, 2, 1, 1 },
+    { 4, 0, 1, 0, 2, 2, 2, 2, 3, 3, 3, 3, 2, 2, 2, 2 },
+    { 4, 0, 1, 0, 2, 0, 1, 0, 3, 3, 3, 3, 3, 3, 3, 3 }
+};
+
 /* Visibility walk from T->last to a tetrahedron whose closure holds p, or to
  * a ghost tetrahedron whose hull face p lies strictly beyond. Faces are tried
  * from a pseudo-random first one (xorshift in the store: deterministic, no
- * global state), which makes the walk terminate. */
+ * global state), which makes the walk terminate. The four sides are tested
+ * together (cvm__orient3d_sides) and the face is picked from a table: a
+ * branch on each test would be mispredicted about once a step. The face just
+ * crossed needs no exclusion: p is exactly on its positive side. */
 static int32_t locate(cvm__tet3 *T, int32_t p)
 {
     const double *pp = PT(T, p);
-    int32_t t = T->last, came = -1;
+    int32_t t = T->last;
     uint64_t r = T->walk;
     for (;;) {
         const int32_t *v = T->tt + 8 * (size_t)t;
-        const double *q[4];
-        int i, f0;
+        const double *a, *b, *c, *d;
+        unsigned m;
+        int f;
         if (v[3] == CVM__T3_GHOST)
             break;
-        q[0] = PT(T, v[0]), q[1] = PT(T, v[1]), q[2] = PT(T, v[2]), q[3] = PT(T, v[3]);
+        a = PT(T, v[0]), b = PT(T, v[1]), c = PT(T, v[2]), d = PT(T, v[3]);
+        CVM__T3_PREFETCH(T->tt + 8 * (size_t)(v[4] >> 2));
+        CVM__T3_PREFETCH(T->tt + 8 * (size_t)(v[5] >> 2));
+        CVM__T3_PREFETCH(T->tt + 8 * (size_t)(v[6] >> 2));
+        CVM__T3_PREFETCH(T->tt + 8 * (size_t)(v[7] >> 2));
         r ^= r << 13, r ^= r >> 7, r ^= r << 17;
-        f0 = (int)(r >> 62);
-        for (i = 0; i < 4; i++) {
-            int f = (f0 + i) & 3;
-            int32_t slot = 4 * t + f;
-            const double *keep;
-            double o;
-            if (slot == came)
-                continue;
-            keep = q[f], q[f] = pp;
-            o = T->small_int ? cvm__orient3d_fp(q[0], q[1], q[2], q[3])
-                             : cvm__orient3d_inline(q[0], q[1], q[2], q[3]);
-            q[f] = keep;
-            if (o < 0.0) {
-                came = CVM__T3_TN(T, slot);
-                t = came >> 2;
-                goto next;
-            }
-        }
-        break;
-    next:;
+        if (T->small_int)
+            m = (unsigned)(cvm__orient3d_fp(pp, b, c, d) < 0.0)
+                | (unsigned)(cvm__orient3d_fp(a, pp, c, d) < 0.0) << 1
+                | (unsigned)(cvm__orient3d_fp(a, b, pp, d) < 0.0) << 2
+                | (unsigned)(cvm__orient3d_fp(a, b, c, pp) < 0.0) << 3;
+        else
+            m = cvm__orient3d_sides(a, b, c, d, pp);
+        f = walk_pick[r >> 62][m];
+        if (f == 4)
+            break;
+        t = CVM__T3_TN(T, 4 * (size_t)t + (size_t)f) >> 2;
     }
     T->walk = r;
     return t;

@@ -19,7 +19,7 @@ cvm_status cvm__tet3_load(cvm__tet3 *T, const double *xyz, const double *w, size
     if (cap < nv || cap > (size_t)INT32_MAX || ntet == 0)
         return CVM_E_NOMEM;
     T->np = nv;
-    T->pt = cvm__calloc(ctx, cap, sizeof *T->pt);
+    cvm__tet3_alloc_points(T, cap);
     T->orig = cvm__malloc(ctx, cap * sizeof *T->orig);
     T->merged = cvm__malloc(ctx, cap * sizeof *T->merged);
     T->outid = cvm__malloc(ctx, cap * sizeof *T->outid);

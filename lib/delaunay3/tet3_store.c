@@ -19,13 +19,13 @@ void cvm__tet3_free(cvm__tet3 *T)
     cvm__ctx *ctx = T->ctx;
     size_t par_min;
     int threads;
-    cvm__free(ctx, T->pt);
+    cvm__free(ctx, T->pt_block);
     cvm__free(ctx, T->w);
     cvm__free(ctx, T->orig);
     cvm__free(ctx, T->merged);
     cvm__free(ctx, T->outid);
     cvm__free(ctx, T->fate);
-    cvm__free(ctx, T->tt);
+    cvm__free(ctx, T->tt_block);
     cvm__free(ctx, T->tmark);
     cvm__free(ctx, T->cface);
     cvm__free(ctx, T->sattr);
@@ -45,17 +45,44 @@ void cvm__tet3_free(cvm__tet3 *T)
     T->threads = threads, T->par_min = par_min; /* settings, not contents */
 }
 
-/* Grow the two per-slot arrays together to ncap slots. */
-static cvm_status grow_slots(cvm__tet3 *T, size_t ncap)
+/* Bytes from p to its next 64-byte boundary. */
+static size_t to_line(const void *p)
+{
+    return (size_t)((64 - (uintptr_t)p % 64) % 64);
+}
+
+cvm_status cvm__tet3_alloc_points(cvm__tet3 *T, size_t cap)
 {
     size_t bytes;
-    void *p;
-    if (ncap > (size_t)INT32_MAX / 4 || !cvm__mul_ok(ncap, 8 * sizeof(int32_t), &bytes))
+    unsigned char *p;
+    if (!cvm__mul_ok(cap, sizeof *T->pt, &bytes) || bytes > SIZE_MAX - 64)
         return CVM_E_NOMEM;
-    p = cvm__realloc(T->ctx, T->tt, bytes);
+    p = cvm__calloc(T->ctx, bytes + 64, 1);
     if (!p)
         return CVM_E_NOMEM;
-    T->tt = p;
+    T->pt_block = p;
+    T->pt = (cvm__t3_point *)(void *)(p + to_line(p));
+    return CVM_OK;
+}
+
+/* Grow the two per-slot arrays together to ncap slots. tt lives at the first
+ * 64-byte boundary of its block; when realloc moves the block to another
+ * offset from a boundary, the slots are moved along. */
+static cvm_status grow_slots(cvm__tet3 *T, size_t ncap)
+{
+    size_t bytes, off_old = T->tt ? (size_t)((unsigned char *)T->tt - (unsigned char *)T->tt_block) : 0;
+    unsigned char *b;
+    void *p;
+    if (ncap > (size_t)INT32_MAX / 4 || !cvm__mul_ok(ncap, 8 * sizeof(int32_t), &bytes)
+        || bytes > SIZE_MAX - 64)
+        return CVM_E_NOMEM;
+    b = cvm__realloc(T->ctx, T->tt_block, bytes + 64);
+    if (!b)
+        return CVM_E_NOMEM;
+    if (T->tt && to_line(b) != off_old)
+        memmove(b + to_line(b), b + off_old, T->cap * 8 * sizeof(int32_t));
+    T->tt_block = b;
+    T->tt = (int32_t *)(void *)(b + to_line(b));
     p = cvm__realloc(T->ctx, T->tmark, ncap);
     if (!p)
         return CVM_E_NOMEM;
@@ -253,7 +280,7 @@ void cvm__tet3_fill_around(cvm__tet3 *T)
         else
             nt = (int32_t)nslot++;
         v = tt + 8 * (size_t)nt;
-        v[0] = b->v[0], v[1] = b->v[1], v[2] = b->v[2], v[3] = b->v[3];
+        memcpy(v, b->v, sizeof b->v);
         v[4 + f] = out;
         tt[(size_t)out + ((size_t)out & ~(size_t)3) + 4] = 4 * nt + f;
         tmark[nt] = 0;

@@ -181,6 +181,14 @@ static inline double cvm__incircle_inline(const double *a, const double *b, cons
     return cvm__incircle_adapt(a, b, c, d);
 }
 
+/* Two-lane (SSE2) versions of the hot filters below evaluate each lane with the
+ * scalar operations in the scalar order: the same bits, so the same error
+ * bounds hold. CVM_NO_SSE2 turns them off. */
+#if defined(__SSE2__) && !defined(CVM_NO_SSE2)
+#include <emmintrin.h>
+#define CVM__GEOM_SSE2 1
+#endif
+
 /* cvm__orient3d with its filter inlined into the caller (hot loops). */
 static inline double cvm__orient3d_inline(const double *a, const double *b, const double *c,
                                           const double *d)
@@ -199,6 +207,53 @@ static inline double cvm__orient3d_inline(const double *a, const double *b, cons
     if (fabs(det) > errbound)
         return det;
     return cvm__orient3d_adapt(a, b, c, d);
+}
+
+/* The four sides of a point-location step at once: bit f set when
+ * orient3d(q0, q1, q2, q3) < 0 with q = (a, b, c, d) and q_f replaced by p
+ * (p strictly beyond face f). Each is an orient3d with p moved last
+ * (orient3d(p, b, c, d) = -orient3d(b, c, d, p), orient3d(a, p, c, d) =
+ * orient3d(a, c, d, p), orient3d(a, b, p, d) = -orient3d(a, b, d, p)), and
+ * orient3d(x, y, z, p) is evaluated by cvm__orient3d_inline's operations on the
+ * differences to p, which the four share: twelve differences, twelve products
+ * x_u y_v, six 2x2 minors (a swapped minor is the exact negative) instead of
+ * four times nine differences and six products. Same values, so the same
+ * filter bound; an undecided side goes to the exact stage alone. */
+static inline unsigned cvm__orient3d_sides(const double *a, const double *b, const double *c,
+                                           const double *d, const double *p)
+{
+    double ax = a[0] - p[0], bx = b[0] - p[0], cx = c[0] - p[0], dx = d[0] - p[0];
+    double ay = a[1] - p[1], by = b[1] - p[1], cy = c[1] - p[1], dy = d[1] - p[1];
+    double az = a[2] - p[2], bz = b[2] - p[2], cz = c[2] - p[2], dz = d[2] - p[2];
+    double pab = ax * by, pba = bx * ay, pac = ax * cy, pca = cx * ay, pad = ax * dy;
+    double pda = dx * ay, pbc = bx * cy, pcb = cx * by, pbd = bx * dy, pdb = dx * by;
+    double pcd = cx * dy, pdc = dx * cy;
+    double mab = pab - pba, mac = pac - pca, mad = pad - pda, mbc = pbc - pcb;
+    double mbd = pbd - pdb, mcd = pcd - pdc;
+    double sab = fabs(pab) + fabs(pba), sac = fabs(pac) + fabs(pca);
+    double sad = fabs(pad) + fabs(pda), sbc = fabs(pbc) + fabs(pcb);
+    double sbd = fabs(pbd) + fabs(pdb), scd = fabs(pcd) + fabs(pdc);
+    double aza = fabs(az), bza = fabs(bz), cza = fabs(cz), dza = fabs(dz);
+    /* orient3d(x, y, z, p) = xz m(y, z) + yz m(z, x) + zz m(x, y) */
+    double det0 = bz * mcd - cz * mbd + dz * mbc; /* (b, c, d) */
+    double det1 = az * mcd - cz * mad + dz * mac; /* (a, c, d) */
+    double det2 = az * mbd - bz * mad + dz * mab; /* (a, b, d) */
+    double det3 = az * mbc - bz * mac + cz * mab; /* (a, b, c) */
+    double per0 = scd * bza + sbd * cza + sbc * dza;
+    double per1 = scd * aza + sad * cza + sac * dza;
+    double per2 = sbd * aza + sad * bza + sab * dza;
+    double per3 = sbc * aza + sac * bza + sab * cza;
+    unsigned m = (unsigned)(det0 > 0.0) | (unsigned)(det1 < 0.0) << 1
+                 | (unsigned)(det2 > 0.0) << 2 | (unsigned)(det3 < 0.0) << 3;
+    if (!(fabs(det0) > cvm__o3d_errbound_a * per0 + cvm__filter_floor))
+        m = (m & ~1u) | (unsigned)(cvm__orient3d_adapt(b, c, d, p) > 0.0);
+    if (!(fabs(det1) > cvm__o3d_errbound_a * per1 + cvm__filter_floor))
+        m = (m & ~2u) | (unsigned)(cvm__orient3d_adapt(a, c, d, p) < 0.0) << 1;
+    if (!(fabs(det2) > cvm__o3d_errbound_a * per2 + cvm__filter_floor))
+        m = (m & ~4u) | (unsigned)(cvm__orient3d_adapt(a, b, d, p) > 0.0) << 2;
+    if (!(fabs(det3) > cvm__o3d_errbound_a * per3 + cvm__filter_floor))
+        m = (m & ~8u) | (unsigned)(cvm__orient3d_adapt(a, b, c, p) < 0.0) << 3;
+    return m;
 }
 
 /* The insphere determinant in plain floating point, and the permanent that
@@ -236,16 +291,10 @@ static inline double cvm__insphere_fp(const double *a, const double *b, const do
     return (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
 }
 
-/* cvm__insphere with its filter inlined into the caller (hot loops). A
- * semi-static stage comes first: every product in the permanent of
- * cvm__insphere_fp is at most m^2 or m^3 and every lift at most 3 m^2, m the
- * largest magnitude of the twelve differences to e, so the permanent is at
- * most 72 m^5 <= 72 L^(5/2), L the largest lift (m^2 <= L); 73 covers the
- * rounding of both sides. The bound costs three max, a square root and three
- * products instead of the permanent's ~50 operations; the permanent's filter
- * decides when it is too loose. L > 2^-400 keeps L^(5/2) normal. */
-static inline double cvm__insphere_inline(const double *a, const double *b, const double *c,
-                                          const double *d, const double *e)
+/* The determinant of cvm__insphere_inline and the largest of its four lifts
+ * (*lmax), in plain doubles, operation for operation as written. */
+static inline double cvm__insphere_det_scalar(const double *a, const double *b, const double *c,
+                                              const double *d, const double *e, double *lmax)
 {
     double aex = a[0] - e[0], bex = b[0] - e[0], cex = c[0] - e[0], dex = d[0] - e[0];
     double aey = a[1] - e[1], bey = b[1] - e[1], cey = c[1] - e[1], dey = d[1] - e[1];
@@ -260,9 +309,69 @@ static inline double cvm__insphere_inline(const double *a, const double *b, cons
     double blift = bex * bex + bey * bey + bez * bez;
     double clift = cex * cex + cey * cey + cez * cez;
     double dlift = dex * dex + dey * dey + dez * dez;
-    double det = (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
     double l1 = alift > blift ? alift : blift, l2 = clift > dlift ? clift : dlift;
-    double l = l1 > l2 ? l1 : l2;
+    *lmax = l1 > l2 ? l1 : l2;
+    return (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
+}
+
+#ifdef CVM__GEOM_SSE2
+/* cvm__insphere_det_scalar on two lanes: the same IEEE operations on the same
+ * operands in the same order (x - y taken as x + (-y), which IEEE 754 defines
+ * to be the same), so the same bits, in about half the instructions. Lane
+ * pairs: x, y, z differences (a, c) and (b, d); minors (ab, cd), (bc, da),
+ * (ac, bd); cofactors (abc, cda) and (dab, bcd); lifts (a, c) and (b, d). */
+static inline double cvm__insphere_det_sse2(const double *a, const double *b, const double *c,
+                                            const double *d, const double *e, double *lmax)
+{
+    __m128d ex = _mm_set1_pd(e[0]), ey = _mm_set1_pd(e[1]), ez = _mm_set1_pd(e[2]);
+    __m128d xac = _mm_sub_pd(_mm_set_pd(c[0], a[0]), ex), xbd = _mm_sub_pd(_mm_set_pd(d[0], b[0]), ex);
+    __m128d yac = _mm_sub_pd(_mm_set_pd(c[1], a[1]), ey), ybd = _mm_sub_pd(_mm_set_pd(d[1], b[1]), ey);
+    __m128d zac = _mm_sub_pd(_mm_set_pd(c[2], a[2]), ez), zbd = _mm_sub_pd(_mm_set_pd(d[2], b[2]), ez);
+    __m128d neg0 = _mm_set_pd(0.0, -0.0), neg1 = _mm_set_pd(-0.0, 0.0);
+    __m128d zca = _mm_shuffle_pd(zac, zac, 1), zdb = _mm_shuffle_pd(zbd, zbd, 1);
+    __m128d abcd = _mm_sub_pd(_mm_mul_pd(xac, ybd), _mm_mul_pd(xbd, yac));
+    __m128d bcda = _mm_sub_pd(_mm_mul_pd(xbd, _mm_shuffle_pd(yac, yac, 1)),
+                              _mm_mul_pd(_mm_shuffle_pd(xac, xac, 1), ybd));
+    __m128d acbd = _mm_sub_pd(_mm_mul_pd(_mm_unpacklo_pd(xac, xbd), _mm_unpackhi_pd(yac, ybd)),
+                              _mm_mul_pd(_mm_unpackhi_pd(xac, xbd), _mm_unpacklo_pd(yac, ybd)));
+    __m128d p1 = _mm_add_pd(
+        _mm_add_pd(_mm_mul_pd(zac, bcda),
+                   _mm_xor_pd(_mm_mul_pd(zbd, _mm_unpacklo_pd(acbd, acbd)), neg0)),
+        _mm_mul_pd(zca, abcd));
+    __m128d p2 = _mm_add_pd(
+        _mm_add_pd(_mm_mul_pd(zdb, abcd),
+                   _mm_xor_pd(_mm_mul_pd(zac, _mm_unpackhi_pd(acbd, acbd)), neg1)),
+        _mm_mul_pd(zbd, _mm_shuffle_pd(bcda, bcda, 1)));
+    __m128d lac = _mm_add_pd(_mm_add_pd(_mm_mul_pd(xac, xac), _mm_mul_pd(yac, yac)),
+                             _mm_mul_pd(zac, zac));
+    __m128d lbd = _mm_add_pd(_mm_add_pd(_mm_mul_pd(xbd, xbd), _mm_mul_pd(ybd, ybd)),
+                             _mm_mul_pd(zbd, zbd));
+    __m128d q = _mm_sub_pd(_mm_mul_pd(_mm_shuffle_pd(lbd, lbd, 1), p1),
+                           _mm_mul_pd(_mm_shuffle_pd(lac, lac, 1), p2));
+    __m128d m = _mm_max_pd(lac, lbd); /* (l1, l2) of the scalar version */
+    *lmax = _mm_cvtsd_f64(_mm_max_sd(m, _mm_unpackhi_pd(m, m)));
+    return _mm_cvtsd_f64(q) + _mm_cvtsd_f64(_mm_unpackhi_pd(q, q));
+}
+#endif
+
+/* cvm__insphere with its filter inlined into the caller (hot loops). A
+ * semi-static stage comes first: every product in the permanent of
+ * cvm__insphere_fp is at most m^2 or m^3 and every lift at most 3 m^2, m the
+ * largest magnitude of the twelve differences to e, so the permanent is at
+ * most 72 m^5 <= 72 L^(5/2), L the largest lift (m^2 <= L); 73 covers the
+ * rounding of both sides. The bound costs three max, a square root and three
+ * products instead of the permanent's ~50 operations; the permanent's filter
+ * decides when it is too loose. L > 2^-400 keeps L^(5/2) normal. With SSE2
+ * the determinant is evaluated two lanes at a time, to the same bits. */
+static inline double cvm__insphere_inline(const double *a, const double *b, const double *c,
+                                          const double *d, const double *e)
+{
+    double l;
+#ifdef CVM__GEOM_SSE2
+    double det = cvm__insphere_det_sse2(a, b, c, d, e, &l);
+#else
+    double det = cvm__insphere_det_scalar(a, b, c, d, e, &l);
+#endif
     if (l > 0x1p-400 && fabs(det) > cvm__isp_errbound_a * 73.0 * (l * l * sqrt(l)) + cvm__filter_floor)
         return det;
     return cvm__insphere(a, b, c, d, e); /* the permanent's filter, then the exact stages */

@@ -1,5 +1,6 @@
 /* test_insphere.c - insphere has the exact sign on integers, cospherical lattices, near-spheres and extreme scales. */
 #include <math.h>
+#include <string.h>
 
 #include "geom/geom_internal.h"
 #include "geom/geom_tests.h"
@@ -143,6 +144,36 @@ START_TEST(insphere_huge_and_tiny_scales_keep_the_sign)
 }
 END_TEST
 
+/* The two-lane determinant of cvm__insphere_inline gives the scalar one's bits
+ * (and the same largest lift), on unit, integer, offset and wide-range input. */
+START_TEST(insphere_sse2_determinant_matches_scalar_bits)
+{
+#ifdef CVM__GEOM_SSE2
+    geomtest_rng r = { 67 };
+    int i, j, k;
+    for (i = 0; i < 200000; i++) {
+        double p[5][3], d1, d2, l1, l2;
+        for (j = 0; j < 5; j++)
+            for (k = 0; k < 3; k++) {
+                double u = geomtest_uniform(&r, 0.0, 1.0);
+                switch (i % 4) {
+                case 0: p[j][k] = u; break;
+                case 1: p[j][k] = geomtest_int(&r, -4, 4); break;
+                case 2: p[j][k] = 1e5 + 1e-3 * u; break;
+                default: p[j][k] = ldexp(u - 0.5, (int)geomtest_int(&r, -300, 300)); break;
+                }
+            }
+        if (i % 8 == 1)
+            p[4][0] = p[0][0], p[4][1] = p[0][1], p[4][2] = p[0][2];
+        d1 = cvm__insphere_det_scalar(p[0], p[1], p[2], p[3], p[4], &l1);
+        d2 = cvm__insphere_det_sse2(p[0], p[1], p[2], p[3], p[4], &l2);
+        ck_assert(memcmp(&d1, &d2, sizeof d1) == 0);
+        ck_assert(memcmp(&l1, &l2, sizeof l1) == 0);
+    }
+#endif
+}
+END_TEST
+
 TCase *geom_insphere_tcase(void)
 {
     TCase *tc = tcase_create("insphere");
@@ -152,6 +183,7 @@ TCase *geom_insphere_tcase(void)
     tcase_add_test(tc, insphere_near_cospherical_doubles_match_the_oracle);
     tcase_add_test(tc, insphere_boxes_of_mixed_magnitude_are_exactly_zero);
     tcase_add_test(tc, insphere_huge_and_tiny_scales_keep_the_sign);
+    tcase_add_test(tc, insphere_sse2_determinant_matches_scalar_bits);
     tcase_set_timeout(tc, 180);
     return tc;
 }

@@ -118,6 +118,38 @@ START_TEST(orient3d_huge_and_tiny_scales_keep_the_sign)
 }
 END_TEST
 
+/* cvm__orient3d_sides gives the exact side of p for each face, on integers
+ * (many exact zeros and filter failures), points on or just off one plane
+ * and wide-range input. */
+START_TEST(orient3d_sides_are_exact)
+{
+    geomtest_rng r = { 57 };
+    int i, j, k, f;
+    for (i = 0; i < 200000; i++) {
+        double q[5][3], s[4][3];
+        unsigned m;
+        for (j = 0; j < 5; j++)
+            for (k = 0; k < 3; k++) {
+                double u = geomtest_uniform(&r, 0.0, 1.0);
+                switch (i % 3) {
+                case 0: q[j][k] = geomtest_int(&r, -3, 3); break;
+                case 1: q[j][k] = ldexp(u - 0.5, (int)geomtest_int(&r, -300, 300)); break;
+                default: /* four points on z = 0.5, the fifth on it or just off it */
+                    q[j][k] = k < 2 ? u : j != 4 || i % 2 ? 0.5 : 0.5 + 0x1p-50 * (u - 0.5);
+                    break;
+                }
+            }
+        m = cvm__orient3d_sides(q[0], q[1], q[2], q[3], q[4]);
+        for (f = 0; f < 4; f++) {
+            for (j = 0; j < 4; j++)
+                for (k = 0; k < 3; k++)
+                    s[j][k] = q[j == f ? 4 : j][k];
+            ck_assert_int_eq((int)((m >> f) & 1u), oracle_orient3d(s[0], s[1], s[2], s[3]) < 0);
+        }
+    }
+}
+END_TEST
+
 TCase *geom_orient3d_tcase(void)
 {
     TCase *tc = tcase_create("orient3d");
@@ -126,6 +158,7 @@ TCase *geom_orient3d_tcase(void)
     tcase_add_test(tc, orient3d_near_coplanar_doubles_match_the_oracle);
     tcase_add_test(tc, orient3d_coplanar_lattice_is_exactly_zero);
     tcase_add_test(tc, orient3d_huge_and_tiny_scales_keep_the_sign);
+    tcase_add_test(tc, orient3d_sides_are_exact);
     tcase_set_timeout(tc, 120);
     return tc;
 }
