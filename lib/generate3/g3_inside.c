@@ -95,12 +95,7 @@ static void unit(double *v)
 
 static int32_t cell_of(const cvm__g3_inside *in, double v, int k)
 {
-    double t = floor((v - in->lo[k]) / in->cell);
-    if (!(t >= 0))
-        return 0;
-    if (t >= (double)in->dim[k])
-        return in->dim[k] - 1;
-    return (int32_t)t;
+    return (int32_t)cvm__g3_cell_at(v, in->lo[k], in->cell, in->dim[k]);
 }
 
 void cvm__g3_inside_free(cvm__g3_inside *in)

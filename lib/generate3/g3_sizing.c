@@ -32,12 +32,7 @@ static double dist(const double *a, const double *b)
 
 static int32_t cell_of(const cvm__g3_size *z, const double *x, int k)
 {
-    double t = floor((x[k] - z->lo[k]) / z->cell);
-    if (!(t >= 0))
-        return 0;
-    if (t >= (double)z->dim[k])
-        return z->dim[k] - 1;
-    return (int32_t)t;
+    return (int32_t)cvm__g3_cell_at(x[k], z->lo[k], z->cell, z->dim[k]);
 }
 
 void cvm__g3_size_free(cvm__g3_size *z)

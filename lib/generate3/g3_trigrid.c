@@ -20,12 +20,7 @@ struct cvm__g3_trigrid {
 
 static int64_t tg_axis(const cvm__g3_trigrid *g, double v, int k)
 {
-    double t = floor((v - g->lo[k]) / g->cell);
-    if (!(t >= 0))
-        return 0;
-    if (t >= (double)g->dim[k])
-        return g->dim[k] - 1;
-    return (int64_t)t;
+    return cvm__g3_cell_at(v, g->lo[k], g->cell, g->dim[k]);
 }
 
 static void tg_box(const cvm__g3_trigrid *g, size_t f, int64_t *c0, int64_t *c1)

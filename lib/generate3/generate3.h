@@ -36,6 +36,7 @@
 #ifndef CVM_GENERATE3_H
 #define CVM_GENERATE3_H
 
+#include <math.h>
 #include <stddef.h>
 #include <stdint.h>
 #include "common/common_internal.h"
@@ -110,6 +111,18 @@ void cvm__g3_grid_free(cvm__g3_grid *g);
 cvm_status cvm__g3_grid_add(cvm__g3_grid *g, const double *xyz, int32_t id);
 /* 1 when some added point lies strictly closer than r to x. */
 int cvm__g3_grid_near(const cvm__g3_grid *g, const double *xyz, const double *x, double r);
+
+/* The cell along one axis of a uniform grid (cells of edge `cell` from lo, dim of
+ * them) holding coordinate v, clamped to [0, dim - 1] (NaN: 0). */
+static inline int64_t cvm__g3_cell_at(double v, double lo, double cell, int64_t dim)
+{
+    double t = floor((v - lo) / cell);
+    if (!(t >= 0))
+        return 0;
+    if (t >= (double)dim)
+        return dim - 1;
+    return (int64_t)t;
+}
 
 /* ---- g3_trigrid.c: surface triangles in a uniform grid, for "is any triangle within r" ---- */
 typedef struct cvm__g3_trigrid cvm__g3_trigrid;
