@@ -8,9 +8,9 @@
  * A point is not placed when it lies closer than wallf delta (CVM__G3_NEAR_WALL,
  * 0.7) to any surface triangle: a triangle at a convex edge whose circumcentre
  * lies on or near that edge (a right triangle's hypotenuse) sends its point
- * along the face next to it, a hair inside the other face (0.0015 of a unit
- * cube re-meshed at 0.05), which makes slivers and tetrahedra no optimisation
- * repairs. A pair on one plane keeps delta from it, so only such points go.
+ * along the face next to it, a hair inside the other face, which makes slivers
+ * and tetrahedra no optimisation repairs (measurements: docs/benchmarks.md).
+ * A pair on one plane keeps delta from it, so only such points go.
  *
  * Pairs whose well-centred regions may not intersect are dropped before the
  * matching, by a cheap sufficient test of intersection: the pair is kept when
